@@ -1,0 +1,55 @@
+//! The `fixed` base: the person's hip point at a given place and heading.
+
+use nalgebra::Point3;
+
+use crate::plugin::{Base, BasePlugin, BasePose, IkProblem, Options, ParamSpec, Placement, Plugin, ReachQuery, Solver};
+
+/// The plugin `fixed`.
+pub struct Fixed;
+
+impl Plugin for Fixed {
+    fn name(&self) -> &'static str {
+        "fixed"
+    }
+
+    fn doc(&self) -> &'static str {
+        "the base (hip point) stays where it is put"
+    }
+
+    fn params(&self) -> Vec<ParamSpec> {
+        vec![
+            ParamSpec::point("at", "the hip point in the room: x, y on the floor and z its height"),
+            ParamSpec::angle("heading", 0.0, "the direction the person faces, counter-clockwise from the room's x axis"),
+        ]
+    }
+}
+
+impl BasePlugin for Fixed {
+    fn build(&self, o: &Options) -> Box<dyn Base> {
+        Box::new(FixedBase {
+            pose: BasePose {
+                position_mm: Point3::from(o.point_mm("at")),
+                heading_rad: o.angle_rad("heading"),
+            },
+        })
+    }
+}
+
+struct FixedBase {
+    pose: BasePose,
+}
+
+impl Base for FixedBase {
+    fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement {
+        let problem = IkProblem {
+            chain: query.chain,
+            target_mm: self.pose.to_base(&query.target_room_mm),
+            tolerance_mm: query.tolerance_mm,
+            seed: query.seed,
+        };
+        Placement {
+            pose: self.pose,
+            solution: solver.solve(&problem),
+        }
+    }
+}

@@ -1,0 +1,5 @@
+//! Bases: where the person stands or sits, each a plugin.
+
+mod fixed;
+
+pub use fixed::Fixed;

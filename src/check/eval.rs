@@ -1,0 +1,175 @@
+//! Evaluating expressions: `let` constants (in any order, cycles are
+//! errors), arithmetic with unit checking, and conversion to the kind of
+//! value the place of use expects.
+
+use nalgebra::Vector3;
+
+use super::Checker;
+use crate::error::{Error, ErrorKind};
+use crate::names::suggest;
+use crate::span::Span;
+use crate::syntax::ast::{BinOp, Expr, ExprKind, Vec3Expr};
+use crate::units::{Dim, Quantity, QuantityError};
+
+impl Checker<'_> {
+    /// Evaluate every `let` once, so that an error in a definition is
+    /// reported there, once, whether or not it is used.
+    pub(super) fn evaluate_lets(&mut self) {
+        let names: Vec<String> = self.lets.names().map(str::to_string).collect();
+        for name in names {
+            self.let_value(&name, None);
+        }
+    }
+
+    /// The value of constant `name`; `use_span` is where it is used.
+    fn let_value(&mut self, name: &str, use_span: Option<Span>) -> Option<Quantity> {
+        if let Some(v) = self.let_values.get(name) {
+            return *v;
+        }
+        let (decl, file) = self.lets.get(name)?;
+        if self.let_stack.iter().any(|n| n == name) {
+            let span = use_span.unwrap_or(decl.name.span);
+            self.error(Error::new(ErrorKind::LetCycle { name: name.to_string() }, span));
+            return None;
+        }
+        self.let_stack.push(name.to_string());
+        let value = self.in_file(file, |c| c.eval(&decl.value));
+        self.let_stack.pop();
+        // A cycle may already have recorded the value as failed.
+        self.let_values.entry(name.to_string()).or_insert(value);
+        self.let_values[name]
+    }
+
+    /// Evaluate an expression; errors are recorded and give `None`.
+    pub(super) fn eval(&mut self, e: &Expr) -> Option<Quantity> {
+        let q = match &e.kind {
+            ExprKind::Number { value, unit } => match unit {
+                Some(u) => Quantity::dimensioned(value * u.to_internal(), u.dim()),
+                None => Quantity::Bare {
+                    value: *value,
+                    defaults: self.defaults,
+                },
+            },
+            ExprKind::Name(name) => return self.name_value(name, e.span),
+            ExprKind::Neg(inner) => self.eval(inner)?.neg(),
+            ExprKind::Binary(op, l, r) => {
+                let (l, r) = (self.eval(l), self.eval(r));
+                let (l, r) = (l?, r?);
+                let result = match op {
+                    BinOp::Add => l.add(r, 1.0),
+                    BinOp::Sub => l.add(r, -1.0),
+                    BinOp::Mul => l.mul(r),
+                    BinOp::Div => l.div(r),
+                };
+                match result {
+                    Ok(q) => q,
+                    Err(err) => {
+                        self.error(Error::new(quantity_error(err), e.span));
+                        return None;
+                    }
+                }
+            }
+        };
+        if !q.raw().is_finite() {
+            self.error(Error::new(ErrorKind::NotFinite, e.span));
+            return None;
+        }
+        Some(q)
+    }
+
+    fn name_value(&mut self, name: &str, span: Span) -> Option<Quantity> {
+        if self.lets.get(name).is_some() {
+            return self.let_value(name, Some(span));
+        }
+        let suggestion = suggest(name, self.lets.names());
+        self.error(Error::new(
+            ErrorKind::UnknownName {
+                what: "constant",
+                name: name.to_string(),
+                suggestion,
+            },
+            span,
+        ));
+        None
+    }
+
+    /// Evaluate `e` as a quantity of dimension `want`.
+    fn eval_as(&mut self, e: &Expr, want: Dim) -> Option<f64> {
+        let q = self.eval(e)?;
+        match q.as_dim(want) {
+            Some(v) => Some(v),
+            None => {
+                self.error(Error::new(
+                    ErrorKind::Dimension {
+                        expected: want.to_string(),
+                        found: q.describe(),
+                    },
+                    e.span,
+                ));
+                None
+            }
+        }
+    }
+
+    pub(super) fn length(&mut self, e: &Expr) -> Option<f64> {
+        self.eval_as(e, Dim::LENGTH)
+    }
+
+    pub(super) fn angle(&mut self, e: &Expr) -> Option<f64> {
+        self.eval_as(e, Dim::ANGLE)
+    }
+
+    pub(super) fn number(&mut self, e: &Expr) -> Option<f64> {
+        self.eval_as(e, Dim::NONE)
+    }
+
+    /// A point or size `(x, y, z)` of lengths.
+    pub(super) fn point(&mut self, v: &Vec3Expr) -> Option<Vector3<f64>> {
+        let [x, y, z] = &v.parts;
+        let (x, y, z) = (self.length(x), self.length(y), self.length(z));
+        Some(Vector3::new(x?, y?, z?))
+    }
+
+    /// A size: a point whose parts must all be positive.
+    pub(super) fn size(&mut self, v: &Vec3Expr, what: &str) -> Option<Vector3<f64>> {
+        let size = self.point(v)?;
+        let mut ok = true;
+        for (i, part) in v.parts.iter().enumerate() {
+            if size[i] <= 0.0 {
+                self.out_of_range(part.span, what, "positive", &format!("{} mm", fmt_num(size[i])));
+                ok = false;
+            }
+        }
+        ok.then_some(size)
+    }
+
+    pub(super) fn out_of_range(&mut self, span: Span, what: &str, bound: &str, value: &str) {
+        self.error(Error::new(
+            ErrorKind::OutOfRange {
+                what: what.to_string(),
+                bound: bound.to_string(),
+                value: value.to_string(),
+            },
+            span,
+        ));
+    }
+}
+
+fn quantity_error(e: QuantityError) -> ErrorKind {
+    match e {
+        QuantityError::Operands { verb, left, right } => ErrorKind::Operands { verb, left, right },
+        QuantityError::DivisionByZero => ErrorKind::DivisionByZero,
+        QuantityError::MixedDefaults => ErrorKind::MixedDefaults,
+    }
+}
+
+/// A number for a message: up to three decimals, no trailing zeros.
+pub(super) fn fmt_num(v: f64) -> String {
+    let s = format!("{v:.3}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" {
+        "0".to_string()
+    } else {
+        s.to_string()
+    }
+}

@@ -1,0 +1,231 @@
+//! Mannequins: Denavit-Hartenberg joints with limits, neutral values and
+//! comfort weights, and the effector.
+
+use nalgebra::Vector3;
+
+use super::eval::fmt_num;
+use super::Checker;
+use crate::error::{Error, ErrorKind};
+use crate::kinematics::{Chain, Dh, Joint, JointKind};
+use crate::names::suggest;
+use crate::span::Span;
+use crate::syntax::ast::{self, Expr, JointDecl, LimitsExpr, MannequinDecl};
+
+const DH_PARAMS: [&str; 4] = ["theta", "d", "alpha", "a"];
+/// The largest joint range a revolute limit may name: one full turn.
+const MAX_ANGLE_RAD: f64 = 2.0 * std::f64::consts::PI;
+
+impl Checker<'_> {
+    /// Build every mannequin's chain once, so its errors are reported once.
+    pub(super) fn build_mannequins(&mut self) {
+        let decls: Vec<_> = self.mannequins.iter().map(|(n, d, f)| (n.to_string(), d, f)).collect();
+        for (name, decl, file) in decls {
+            let chain = self.in_file(file, |c| c.chain(decl));
+            self.chains.insert(name, chain);
+        }
+    }
+
+    fn chain(&mut self, decl: &MannequinDecl) -> Option<Chain> {
+        if decl.joints.is_empty() {
+            self.error(Error::new(
+                ErrorKind::Missing {
+                    owner: format!("mannequin `{}`", decl.name.value),
+                    what: "joints",
+                },
+                decl.name.span,
+            ));
+        }
+        let mut joints = Vec::new();
+        let mut names: Vec<&crate::span::Name> = Vec::new();
+        for j in &decl.joints {
+            if let Some(first) = names.iter().find(|n| n.value == j.name.value) {
+                let e = Error::new(
+                    ErrorKind::Duplicate {
+                        what: "joint",
+                        name: j.name.value.clone(),
+                    },
+                    j.name.span,
+                );
+                self.error(e.with_note(first.span, "first defined here"));
+            }
+            names.push(&j.name);
+            joints.push(self.joint(j));
+        }
+        let effector = self.effector(decl);
+        let joints: Option<Vec<Joint>> = joints.into_iter().collect();
+        let (effector_name, effector_mm) = effector?;
+        let joints = joints?;
+        if joints.is_empty() {
+            return None;
+        }
+        Some(Chain {
+            joints,
+            effector_name,
+            effector_mm,
+        })
+    }
+
+    fn effector(&mut self, decl: &MannequinDecl) -> Option<(String, Vector3<f64>)> {
+        match decl.effectors.as_slice() {
+            [] => Some(("end".to_string(), Vector3::zeros())),
+            [e] => Some((e.name.value.clone(), self.point(&e.at)?)),
+            [_, second, ..] => {
+                self.error(Error::new(
+                    ErrorKind::Unsupported {
+                        what: "more than one effector per mannequin".into(),
+                        help: "declare one effector; the others need the tree solver of a later version".into(),
+                    },
+                    second.name.span,
+                ));
+                None
+            }
+        }
+    }
+
+    fn joint(&mut self, j: &JointDecl) -> Option<Joint> {
+        let dh = self.dh(j);
+        let limits = match j.limits.as_slice() {
+            [] => {
+                self.error(Error::new(
+                    ErrorKind::Missing {
+                        owner: format!("joint `{}`", j.name.value),
+                        what: "limits",
+                    },
+                    j.name.span,
+                ));
+                None
+            }
+            [l, rest @ ..] => {
+                self.repeated(rest.iter().map(|r| r.span), "`limits`");
+                self.limits(l, j.kind)
+            }
+        };
+        let neutral = self.single(&j.neutral, "`neutral`").map(|e| (self.joint_value(e, j.kind), e.span));
+        let weight = match self.single(&j.weight, "`weight`") {
+            Some(e) => self.weight(e),
+            None => Some(1.0),
+        };
+        let (min, max) = limits?;
+        let neutral = match neutral {
+            None => 0.0_f64.clamp(min, max),
+            Some((value, span)) => self.neutral_within(value?, min, max, j.kind, span)?,
+        };
+        Some(Joint {
+            name: j.name.value.clone(),
+            kind: match j.kind {
+                ast::JointKind::Revolute => JointKind::Revolute,
+                ast::JointKind::Prismatic => JointKind::Prismatic,
+            },
+            dh: dh?,
+            min,
+            max,
+            neutral,
+            weight: weight?,
+        })
+    }
+
+    fn dh(&mut self, j: &JointDecl) -> Option<Dh> {
+        let mut values: [Option<f64>; 4] = [Some(0.0); 4];
+        let mut seen = [false; 4];
+        let mut ok = true;
+        for (key, expr) in &j.dh {
+            let Some(i) = DH_PARAMS.iter().position(|p| *p == key.value) else {
+                self.error(Error::new(
+                    ErrorKind::UnknownName {
+                        what: "DH parameter",
+                        name: key.value.clone(),
+                        suggestion: suggest(&key.value, DH_PARAMS),
+                    },
+                    key.span,
+                ));
+                ok = false;
+                continue;
+            };
+            if seen[i] {
+                self.repeated(std::iter::once(key.span), &format!("`{}`", key.value));
+            }
+            seen[i] = true;
+            values[i] = if i % 2 == 0 { self.angle(expr) } else { self.length(expr) };
+        }
+        let [theta_rad, d_mm, alpha_rad, a_mm] = values;
+        let dh = Dh {
+            theta_rad: theta_rad?,
+            d_mm: d_mm?,
+            alpha_rad: alpha_rad?,
+            a_mm: a_mm?,
+        };
+        ok.then_some(dh)
+    }
+
+    /// A joint value: an angle for revolute joints, a length for prismatic.
+    fn joint_value(&mut self, e: &Expr, kind: ast::JointKind) -> Option<f64> {
+        match kind {
+            ast::JointKind::Revolute => self.angle(e),
+            ast::JointKind::Prismatic => self.length(e),
+        }
+    }
+
+    pub(super) fn limits(&mut self, l: &LimitsExpr, kind: ast::JointKind) -> Option<(f64, f64)> {
+        let min = self.joint_value(&l.min, kind);
+        let max = self.joint_value(&l.max, kind);
+        let (min, max) = (min?, max?);
+        let mut ok = true;
+        if kind == ast::JointKind::Revolute {
+            for (v, e) in [(min, &l.min), (max, &l.max)] {
+                if v.abs() > MAX_ANGLE_RAD + 1e-12 {
+                    self.out_of_range(e.span, "a joint limit", "between -360deg and 360deg", &show(v, kind));
+                    ok = false;
+                }
+            }
+        }
+        if min > max {
+            self.error(Error::new(
+                ErrorKind::LimitsReversed {
+                    min: show(min, kind),
+                    max: show(max, kind),
+                },
+                l.span,
+            ));
+            ok = false;
+        }
+        ok.then_some((min, max))
+    }
+
+    pub(super) fn neutral_within(&mut self, v: f64, min: f64, max: f64, kind: ast::JointKind, span: Span) -> Option<f64> {
+        if v < min || v > max {
+            let bound = format!("within the joint's limits, {} to {}", show(min, kind), show(max, kind));
+            self.out_of_range(span, "the neutral value", &bound, &show(v, kind));
+            return None;
+        }
+        Some(v)
+    }
+
+    pub(super) fn weight(&mut self, e: &Expr) -> Option<f64> {
+        let w = self.number(e)?;
+        if w < 0.0 {
+            self.out_of_range(e.span, "a comfort weight", "zero or more", &fmt_num(w));
+            return None;
+        }
+        Some(w)
+    }
+
+    /// The first of `exprs`, with an error on each further one.
+    fn single<'e>(&mut self, exprs: &'e [Expr], what: &str) -> Option<&'e Expr> {
+        self.repeated(exprs.iter().skip(1).map(|e| e.span), what);
+        exprs.first()
+    }
+
+    fn repeated(&mut self, spans: impl Iterator<Item = Span>, what: &str) {
+        for span in spans {
+            self.error(Error::new(ErrorKind::Repeated { what: what.to_string() }, span));
+        }
+    }
+}
+
+/// A joint value in the unit a user reads: degrees or millimetres.
+pub(super) fn show(v: f64, kind: ast::JointKind) -> String {
+    match kind {
+        ast::JointKind::Revolute => format!("{}deg", fmt_num(v.to_degrees())),
+        ast::JointKind::Prismatic => format!("{}mm", fmt_num(v)),
+    }
+}

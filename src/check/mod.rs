@@ -1,0 +1,147 @@
+//! The semantic pass: from the syntax trees of the loaded files to a
+//! [`Scenario`]. Resolves every name, evaluates every expression with unit
+//! checking, validates every plugin option block against the plugin's
+//! declared parameters, and reports every error it finds, not just the
+//! first.
+
+mod eval;
+mod mannequin;
+mod options;
+mod person;
+mod room;
+mod table;
+mod task;
+
+use std::collections::HashMap;
+
+use crate::error::{Diagnostics, Error, ErrorKind};
+use crate::kinematics::Chain;
+use crate::loader::LoadedFile;
+use crate::plugin::Registry;
+use crate::scene::Scenario;
+use crate::source::Sources;
+use crate::span::{FileId, Spanned};
+use crate::syntax::ast::{Item, LetDecl};
+use crate::units::{Quantity, Unit, UnitDefaults};
+
+use table::Table;
+
+/// Check the loaded files (dependencies first, the root file last).
+pub fn check(sources: &Sources, files: &[LoadedFile], registry: &Registry) -> Result<Scenario, Diagnostics> {
+    let root = files.last().map(|f| f.id).unwrap_or_default();
+    let mut c = Checker::new(registry);
+    for f in files {
+        let defaults = c.file_defaults(&f.ast.items);
+        c.defaults_of.insert(f.id, defaults);
+        c.collect(f, f.id == root);
+    }
+    c.evaluate_lets();
+    let rooms = c.rooms();
+    c.build_mannequins();
+    let persons = c.persons();
+    let tasks = c.tasks(&rooms, &persons);
+    if c.errors.is_empty() {
+        Ok(Scenario {
+            file: sources.get(root).name.clone(),
+            rooms,
+            persons,
+            tasks,
+        })
+    } else {
+        Err(Diagnostics { errors: c.errors })
+    }
+}
+
+/// The state of the pass: declarations by name, evaluated constants, and
+/// the errors found so far.
+struct Checker<'a> {
+    registry: &'a Registry,
+    errors: Vec<Error>,
+    defaults_of: HashMap<FileId, UnitDefaults>,
+    /// The default units of the file whose text is being evaluated.
+    defaults: UnitDefaults,
+    lets: Table<'a, LetDecl>,
+    let_values: HashMap<String, Option<Quantity>>,
+    let_stack: Vec<String>,
+    rooms: Table<'a, crate::syntax::ast::RoomDecl>,
+    mannequins: Table<'a, crate::syntax::ast::MannequinDecl>,
+    chains: HashMap<String, Option<Chain>>,
+    persons: Table<'a, crate::syntax::ast::PersonDecl>,
+    tasks: Vec<(&'a crate::syntax::ast::TaskDecl, FileId)>,
+}
+
+impl<'a> Checker<'a> {
+    fn new(registry: &'a Registry) -> Self {
+        Checker {
+            registry,
+            errors: Vec::new(),
+            defaults_of: HashMap::new(),
+            defaults: UnitDefaults::default(),
+            lets: Table::new("constant"),
+            let_values: HashMap::new(),
+            let_stack: Vec::new(),
+            rooms: Table::new("room"),
+            mannequins: Table::new("mannequin"),
+            chains: HashMap::new(),
+            persons: Table::new("person"),
+            tasks: Vec::new(),
+        }
+    }
+
+    fn error(&mut self, e: Error) {
+        self.errors.push(e);
+    }
+
+    /// Run `f` with the default units of `file`.
+    fn in_file<T>(&mut self, file: FileId, f: impl FnOnce(&mut Self) -> T) -> T {
+        let saved = self.defaults;
+        self.defaults = self.defaults_of.get(&file).copied().unwrap_or_default();
+        let out = f(self);
+        self.defaults = saved;
+        out
+    }
+
+    /// The file's `units` line: at most one length and one angle unit.
+    fn file_defaults(&mut self, items: &[Item]) -> UnitDefaults {
+        let mut defaults = UnitDefaults::default();
+        let mut seen: Vec<Spanned<Unit>> = Vec::new();
+        for item in items {
+            let Item::Units(units) = item else { continue };
+            for u in units {
+                if seen.iter().any(|s| s.value.is_length() == u.value.is_length()) {
+                    let dimension = if u.value.is_length() { "length" } else { "angle" };
+                    self.error(Error::new(ErrorKind::UnitsRepeated { dimension }, u.span));
+                    continue;
+                }
+                seen.push(*u);
+                if u.value.is_length() {
+                    defaults.length = u.value;
+                } else {
+                    defaults.angle = u.value;
+                }
+            }
+        }
+        defaults
+    }
+
+    /// Enter the file's declarations into the tables.
+    fn collect(&mut self, f: &'a LoadedFile, is_root: bool) {
+        for item in &f.ast.items {
+            let dup = match item {
+                Item::Let(d) => self.lets.insert(&d.name, d, f.id),
+                Item::Room(d) => self.rooms.insert(&d.name, d, f.id),
+                Item::Mannequin(d) => self.mannequins.insert(&d.name, d, f.id),
+                Item::Person(d) => self.persons.insert(&d.name, d, f.id),
+                Item::Task(d) if is_root => {
+                    self.tasks.push((d, f.id));
+                    None
+                }
+                Item::Task(d) => Some(Error::new(ErrorKind::Misplaced { what: "tasks" }, d.span)),
+                Item::Units(_) | Item::Use(_) => None,
+            };
+            if let Some(e) = dup {
+                self.error(e);
+            }
+        }
+    }
+}

@@ -1,0 +1,142 @@
+//! Option blocks, validated against the plugin's declared parameters: the
+//! same rules for every solver, base, task and format.
+
+use super::eval::fmt_num;
+use super::Checker;
+use crate::error::{Error, ErrorKind};
+use crate::names::suggest;
+use crate::plugin::{Options, ParamKind, ParamSpec, Value};
+use crate::span::Span;
+use crate::syntax::ast::{ExprKind, OptionDecl, OptionValue, PluginUse};
+
+/// Whole numbers up to this size are exact in f64.
+const MAX_INTEGER: f64 = 9_007_199_254_740_992.0;
+
+impl Checker<'_> {
+    /// Validate `given` against `params` of the plugin called `label`;
+    /// missing options take their defaults.
+    pub(super) fn options(&mut self, label: &str, params: &[ParamSpec], given: &[OptionDecl], at: Span) -> Option<Options> {
+        let mut values: Vec<(&'static str, Option<Value>)> = Vec::new();
+        let mut seen: Vec<&OptionDecl> = Vec::new();
+        let mut ok = true;
+        for opt in given {
+            let Some(spec) = params.iter().find(|p| p.name == opt.name.value) else {
+                let names: Vec<&str> = params.iter().map(|p| p.name).collect();
+                self.error(Error::new(
+                    ErrorKind::UnknownOption {
+                        plugin: label.to_string(),
+                        name: opt.name.value.clone(),
+                        suggestion: suggest(&opt.name.value, names.iter().copied()),
+                        available: if names.is_empty() { "none".into() } else { names.join(", ") },
+                    },
+                    opt.name.span,
+                ));
+                ok = false;
+                continue;
+            };
+            if let Some(first) = seen.iter().find(|s| s.name.value == opt.name.value) {
+                let e = Error::new(ErrorKind::Repeated { what: format!("option `{}`", spec.name) }, opt.name.span);
+                self.error(e.with_note(first.name.span, "first given here"));
+                ok = false;
+                continue;
+            }
+            seen.push(opt);
+            values.push((spec.name, self.option_value(spec, opt)));
+        }
+        let mut options = Vec::new();
+        for spec in params {
+            match values.iter().find(|(n, _)| *n == spec.name) {
+                Some((_, Some(v))) => options.push((spec.name, v.clone())),
+                Some((_, None)) => ok = false,
+                None => match &spec.default {
+                    Some(d) => options.push((spec.name, d.clone())),
+                    None => {
+                        self.error(Error::new(
+                            ErrorKind::MissingOption {
+                                plugin: label.to_string(),
+                                name: spec.name.to_string(),
+                            },
+                            at,
+                        ));
+                        ok = false;
+                    }
+                },
+            }
+        }
+        ok.then(|| Options::new(options))
+    }
+
+    fn option_value(&mut self, spec: &ParamSpec, opt: &OptionDecl) -> Option<Value> {
+        let value = match (spec.kind, &opt.value) {
+            (ParamKind::Length, OptionValue::Expr(e)) => Value::Length(self.length(e)?),
+            (ParamKind::Angle, OptionValue::Expr(e)) => Value::Angle(self.angle(e)?),
+            (ParamKind::Number, OptionValue::Expr(e)) => Value::Number(self.number(e)?),
+            (ParamKind::Integer, OptionValue::Expr(e)) => {
+                let v = self.number(e)?;
+                if v.fract() != 0.0 || v.abs() > MAX_INTEGER {
+                    self.mismatch(spec, "a fractional number", e.span);
+                    return None;
+                }
+                Value::Integer(v as i64)
+            }
+            (ParamKind::Bool, OptionValue::Bool(b)) => Value::Bool(*b),
+            (ParamKind::Point, OptionValue::Vec3(v)) => Value::Point(self.point(v)?),
+            (ParamKind::Plugin(kind), OptionValue::Plugin(p)) => Value::Plugin(self.plugin_config(kind, p)?),
+            (ParamKind::Plugin(kind), OptionValue::Expr(e)) => match &e.kind {
+                ExprKind::Name(name) => {
+                    let use_ = PluginUse {
+                        name: crate::span::Spanned::new(name.clone(), e.span),
+                        options: Vec::new(),
+                        span: e.span,
+                    };
+                    Value::Plugin(self.plugin_config(kind, &use_)?)
+                }
+                _ => return self.mismatch(spec, "an expression", opt.value_span),
+            },
+            (_, other) => return self.mismatch(spec, describe(other), opt.value_span),
+        };
+        self.in_range(spec, &value, opt.value_span).then_some(value)
+    }
+
+    fn mismatch(&mut self, spec: &ParamSpec, found: &str, span: Span) -> Option<Value> {
+        self.error(Error::new(
+            ErrorKind::Dimension {
+                expected: spec.kind.describe(),
+                found: found.to_string(),
+            },
+            span,
+        ));
+        None
+    }
+
+    fn in_range(&mut self, spec: &ParamSpec, value: &Value, span: Span) -> bool {
+        let Some((min, max)) = spec.range else { return true };
+        let v = match value {
+            Value::Length(v) | Value::Angle(v) | Value::Number(v) => *v,
+            Value::Integer(i) => *i as f64,
+            _ => return true,
+        };
+        if v >= min && v <= max {
+            return true;
+        }
+        let show = |x: f64| match spec.kind {
+            ParamKind::Length => format!("{}mm", fmt_num(x)),
+            ParamKind::Angle => format!("{}deg", fmt_num(x.to_degrees())),
+            _ => fmt_num(x),
+        };
+        let bound = format!("between {} and {}", show(min), show(max));
+        self.out_of_range(span, &format!("option `{}`", spec.name), &bound, &show(v));
+        false
+    }
+}
+
+fn describe(v: &OptionValue) -> &'static str {
+    match v {
+        OptionValue::Expr(_) => "a number",
+        OptionValue::Vec3(_) => "a point",
+        OptionValue::Bool(_) => "true or false",
+        OptionValue::String(_) => "a string",
+        OptionValue::Plugin(_) => "a plugin block",
+    }
+}
+

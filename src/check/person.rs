@@ -1,0 +1,142 @@
+//! Persons: a mannequin with this person's own joint limits, neutral values
+//! and weights, and a base.
+
+use super::Checker;
+use crate::error::{Error, ErrorKind};
+use crate::kinematics::{Chain, JointKind};
+use crate::names::suggest;
+use crate::plugin::{PluginConfig, PluginKind};
+use crate::scene::Person;
+use crate::span::Name;
+use crate::syntax::ast::{self, JointOverride, PersonDecl, PersonMannequin};
+
+impl Checker<'_> {
+    pub(super) fn persons(&mut self) -> Vec<Person> {
+        let decls: Vec<_> = self.persons.iter().map(|(_, d, f)| (d, f)).collect();
+        decls
+            .into_iter()
+            .filter_map(|(d, f)| self.in_file(f, |c| c.person(d)))
+            .collect()
+    }
+
+    fn person(&mut self, decl: &PersonDecl) -> Option<Person> {
+        let owner = format!("person `{}`", decl.name.value);
+        let mannequin = self.one_of(&decl.mannequins, |m| m.name.span, &owner, "mannequin", decl.name.span);
+        let base = self.one_of(&decl.bases, |b| b.span, &owner, "base", decl.name.span);
+        let chain = mannequin.and_then(|m| self.person_chain(m));
+        let base = base.and_then(|b| self.plugin_config(PluginKind::Base, b));
+        Some(Person {
+            name: decl.name.value.clone(),
+            mannequin: mannequin?.name.value.clone(),
+            chain: chain?,
+            base: base?,
+        })
+    }
+
+    /// Exactly one of `items`: errors for none and for each extra one.
+    fn one_of<'i, T>(
+        &mut self,
+        items: &'i [T],
+        span_of: impl Fn(&T) -> crate::span::Span,
+        owner: &str,
+        what: &'static str,
+        owner_span: crate::span::Span,
+    ) -> Option<&'i T> {
+        for extra in items.iter().skip(1) {
+            self.error(Error::new(ErrorKind::Repeated { what: format!("`{what}`") }, span_of(extra)));
+        }
+        if items.is_empty() {
+            self.error(Error::new(
+                ErrorKind::Missing {
+                    owner: owner.to_string(),
+                    what,
+                },
+                owner_span,
+            ));
+        }
+        items.first()
+    }
+
+    fn person_chain(&mut self, m: &PersonMannequin) -> Option<Chain> {
+        if let Err(e) = self.mannequins.resolve(&m.name) {
+            self.error(e);
+            return None;
+        }
+        // A mannequin that failed to build has reported its own errors.
+        let mut chain = self.chains.get(&m.name.value).cloned().flatten()?;
+        let mut ok = true;
+        for o in &m.overrides {
+            ok &= self.apply_override(&mut chain, o).is_some();
+        }
+        // Limits may have moved past the neutral values left in place.
+        for j in &mut chain.joints {
+            j.neutral = j.neutral.clamp(j.min, j.max);
+        }
+        ok.then_some(chain)
+    }
+
+    fn apply_override(&mut self, chain: &mut Chain, o: &JointOverride) -> Option<()> {
+        let (JointOverride::Limits { joint, .. } | JointOverride::Neutral { joint, .. } | JointOverride::Weight { joint, .. }) = o;
+        let i = self.joint_index(chain, joint)?;
+        let kind = match chain.joints[i].kind {
+            JointKind::Revolute => ast::JointKind::Revolute,
+            JointKind::Prismatic => ast::JointKind::Prismatic,
+        };
+        let j = &chain.joints[i];
+        let (min, max) = (j.min, j.max);
+        match o {
+            JointOverride::Limits { limits, .. } => {
+                let (min, max) = self.limits(limits, kind)?;
+                chain.joints[i].min = min;
+                chain.joints[i].max = max;
+            }
+            JointOverride::Neutral { value, .. } => {
+                let v = match kind {
+                    ast::JointKind::Revolute => self.angle(value)?,
+                    ast::JointKind::Prismatic => self.length(value)?,
+                };
+                chain.joints[i].neutral = self.neutral_within(v, min, max, kind, value.span)?;
+            }
+            JointOverride::Weight { value, .. } => chain.joints[i].weight = self.weight(value)?,
+        }
+        Some(())
+    }
+
+    fn joint_index(&mut self, chain: &Chain, joint: &Name) -> Option<usize> {
+        let found = chain.joints.iter().position(|j| j.name == joint.value);
+        if found.is_none() {
+            self.error(Error::new(
+                ErrorKind::UnknownName {
+                    what: "joint",
+                    name: joint.value.clone(),
+                    suggestion: suggest(&joint.value, chain.joints.iter().map(|j| j.name.as_str())),
+                },
+                joint.span,
+            ));
+        }
+        found
+    }
+
+    /// A plugin by name with its options validated.
+    pub(super) fn plugin_config(&mut self, kind: PluginKind, use_: &ast::PluginUse) -> Option<PluginConfig> {
+        let Some(params) = self.registry.params(kind, &use_.name.value) else {
+            let names = self.registry.names(kind);
+            self.error(Error::new(
+                ErrorKind::UnknownPlugin {
+                    kind: kind.noun(),
+                    name: use_.name.value.clone(),
+                    suggestion: suggest(&use_.name.value, names.iter().copied()),
+                    available: names.join(", "),
+                },
+                use_.name.span,
+            ));
+            return None;
+        };
+        let label = format!("{} `{}`", kind.noun(), use_.name.value);
+        let options = self.options(&label, &params, &use_.options, use_.span)?;
+        Some(PluginConfig {
+            name: use_.name.value.clone(),
+            options,
+        })
+    }
+}

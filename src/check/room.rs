@@ -1,0 +1,127 @@
+//! Rooms: size, box obstacles and targets.
+
+use nalgebra::{Point3, Vector3};
+
+use super::eval::fmt_num;
+use super::Checker;
+use crate::error::{Error, ErrorKind};
+use crate::scene::{BoxObstacle, Room, Target};
+use crate::syntax::ast::{BoxDecl, RoomDecl, RoomItem};
+
+impl Checker<'_> {
+    pub(super) fn rooms(&mut self) -> Vec<Room> {
+        let decls: Vec<_> = self.rooms.iter().map(|(_, d, f)| (d, f)).collect();
+        let mut rooms = Vec::new();
+        let mut target_names: Vec<&crate::span::Name> = Vec::new();
+        for (decl, file) in decls {
+            for item in &decl.items {
+                if let RoomItem::Target(t) = item {
+                    if let Some(first) = target_names.iter().find(|n| n.value == t.name.value) {
+                        let e = Error::new(
+                            ErrorKind::Duplicate {
+                                what: "target",
+                                name: t.name.value.clone(),
+                            },
+                            t.name.span,
+                        );
+                        self.error(e.with_note(first.span, "first defined here"));
+                    } else {
+                        target_names.push(&t.name);
+                    }
+                }
+            }
+            if let Some(room) = self.in_file(file, |c| c.room(decl)) {
+                rooms.push(room);
+            }
+        }
+        rooms
+    }
+
+    fn room(&mut self, decl: &RoomDecl) -> Option<Room> {
+        let sizes: Vec<_> = decl
+            .items
+            .iter()
+            .filter_map(|i| match i {
+                RoomItem::Size(s) => Some(s),
+                _ => None,
+            })
+            .collect();
+        let size = match sizes.as_slice() {
+            [] => {
+                self.error(Error::new(
+                    ErrorKind::Missing {
+                        owner: format!("room `{}`", decl.name.value),
+                        what: "size",
+                    },
+                    decl.name.span,
+                ));
+                None
+            }
+            [s, rest @ ..] => {
+                for r in rest {
+                    self.error(Error::new(ErrorKind::Repeated { what: "the room's size".into() }, r.span));
+                }
+                self.size(s, "a room's size")
+            }
+        };
+        let mut boxes = Vec::new();
+        let mut targets = Vec::new();
+        for item in &decl.items {
+            match item {
+                RoomItem::Size(_) => {}
+                RoomItem::Box(b) => boxes.extend(self.box_obstacle(b)),
+                RoomItem::Target(t) => {
+                    let Some(p) = self.point(&t.at) else { continue };
+                    let position_mm = Point3::from(p);
+                    if let Some(size) = size {
+                        self.check_inside(&decl.name.value, &t.name.value, &position_mm, size, t.at.span);
+                    }
+                    targets.push(Target {
+                        name: t.name.value.clone(),
+                        position_mm,
+                    });
+                }
+            }
+        }
+        Some(Room {
+            name: decl.name.value.clone(),
+            size_mm: size?,
+            boxes,
+            targets,
+        })
+    }
+
+    fn check_inside(&mut self, room: &str, target: &str, p: &Point3<f64>, size: Vector3<f64>, span: crate::span::Span) {
+        let inside = (0..3).all(|i| p[i] >= 0.0 && p[i] <= size[i]);
+        if !inside {
+            self.error(Error::new(
+                ErrorKind::TargetOutsideRoom {
+                    name: target.to_string(),
+                    room: room.to_string(),
+                    bounds: format!(
+                        "(0, 0, 0) to ({}, {}, {}) mm",
+                        fmt_num(size.x),
+                        fmt_num(size.y),
+                        fmt_num(size.z)
+                    ),
+                },
+                span,
+            ));
+        }
+    }
+
+    fn box_obstacle(&mut self, b: &BoxDecl) -> Option<BoxObstacle> {
+        let corner = self.point(&b.at);
+        let size = self.size(&b.size, "a box's size");
+        let yaw = match &b.rotate {
+            Some(e) => self.angle(e),
+            None => Some(0.0),
+        };
+        Some(BoxObstacle {
+            name: b.name.value.clone(),
+            corner_mm: Point3::from(corner?),
+            size_mm: size?,
+            yaw_rad: yaw?,
+        })
+    }
+}

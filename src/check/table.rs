@@ -1,0 +1,66 @@
+//! Named declarations of one kind, in declaration order, with duplicate
+//! detection and did-you-mean lookups.
+
+use crate::error::{Error, ErrorKind};
+use crate::names::suggest;
+use crate::span::{FileId, Name, Span};
+
+pub struct Table<'a, T> {
+    what: &'static str,
+    entries: Vec<(String, Span, &'a T, FileId)>,
+}
+
+impl<'a, T> Table<'a, T> {
+    pub fn new(what: &'static str) -> Self {
+        Table {
+            what,
+            entries: Vec::new(),
+        }
+    }
+
+    /// Add a declaration; a second one of the same name is an error that
+    /// points at both.
+    pub fn insert(&mut self, name: &Name, decl: &'a T, file: FileId) -> Option<Error> {
+        if let Some((_, first, _, _)) = self.entries.iter().find(|(n, ..)| *n == name.value) {
+            let e = Error::new(
+                ErrorKind::Duplicate {
+                    what: self.what,
+                    name: name.value.clone(),
+                },
+                name.span,
+            );
+            return Some(e.with_note(*first, "first defined here"));
+        }
+        self.entries.push((name.value.clone(), name.span, decl, file));
+        None
+    }
+
+    pub fn get(&self, name: &str) -> Option<(&'a T, FileId)> {
+        self.entries
+            .iter()
+            .find(|(n, ..)| n == name)
+            .map(|(_, _, d, f)| (*d, *f))
+    }
+
+    /// Look up `name`, or the error for an unknown name with a suggestion.
+    pub fn resolve(&self, name: &Name) -> Result<(&'a T, FileId), Error> {
+        self.get(&name.value).ok_or_else(|| {
+            Error::new(
+                ErrorKind::UnknownName {
+                    what: self.what,
+                    name: name.value.clone(),
+                    suggestion: suggest(&name.value, self.names()),
+                },
+                name.span,
+            )
+        })
+    }
+
+    pub fn names(&self) -> impl Iterator<Item = &str> {
+        self.entries.iter().map(|(n, ..)| n.as_str())
+    }
+
+    pub fn iter(&self) -> impl Iterator<Item = (&str, &'a T, FileId)> + '_ {
+        self.entries.iter().map(|(n, _, d, f)| (n.as_str(), *d, *f))
+    }
+}

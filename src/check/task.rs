@@ -1,0 +1,102 @@
+//! Tasks: `KIND subjects by persons { options }`, one task per subject and
+//! person, each validated against its task plugin.
+
+use super::Checker;
+use crate::error::{Error, ErrorKind};
+use crate::names::suggest;
+use crate::plugin::{PluginKind, SubjectKind};
+use crate::scene::{Person, Room, TaskSpec};
+use crate::span::Spanned;
+use crate::syntax::ast::TaskDecl;
+
+impl Checker<'_> {
+    pub(super) fn tasks(&mut self, rooms: &[Room], persons: &[Person]) -> Vec<TaskSpec> {
+        let decls = std::mem::take(&mut self.tasks);
+        let mut out = Vec::new();
+        for (decl, file) in decls {
+            if let Some(tasks) = self.in_file(file, |c| c.task(decl, rooms, persons)) {
+                out.extend(tasks);
+            }
+        }
+        out
+    }
+
+    fn task(&mut self, decl: &TaskDecl, rooms: &[Room], persons: &[Person]) -> Option<Vec<TaskSpec>> {
+        let kind = &decl.kind;
+        let Some(plugin) = self.registry.task(&kind.value).cloned() else {
+            let names = self.registry.names(PluginKind::Task);
+            self.error(Error::new(
+                ErrorKind::UnknownPlugin {
+                    kind: "task",
+                    name: kind.value.clone(),
+                    suggestion: suggest(&kind.value, names.iter().copied()),
+                    available: names.join(", "),
+                },
+                kind.span,
+            ));
+            return None;
+        };
+        let label = format!("task `{}`", kind.value);
+        let options = self.options(&label, &plugin.params(), &decl.options, decl.span);
+        let subjects: Vec<Option<String>> = decl
+            .subjects
+            .iter()
+            .map(|s| self.subject(plugin.subject(), s, rooms))
+            .collect();
+        let people: Vec<Option<String>> = decl.persons.iter().map(|p| self.person_ref(p, persons)).collect();
+        let options = options?;
+        let subjects: Vec<String> = subjects.into_iter().collect::<Option<_>>()?;
+        let people: Vec<String> = people.into_iter().collect::<Option<_>>()?;
+        let mut tasks = Vec::new();
+        for subject in &subjects {
+            for person in &people {
+                tasks.push(TaskSpec {
+                    kind: kind.value.clone(),
+                    subject: subject.clone(),
+                    person: person.clone(),
+                    options: options.clone(),
+                    span: decl.span,
+                });
+            }
+        }
+        Some(tasks)
+    }
+
+    fn subject(&mut self, kind: SubjectKind, s: &Spanned<Vec<String>>, rooms: &[Room]) -> Option<String> {
+        let SubjectKind::Target = kind;
+        let name = s.value.join(".");
+        let targets = || rooms.iter().flat_map(|r| r.targets.iter().map(|t| t.name.as_str()));
+        if targets().any(|t| t == name) {
+            return Some(name);
+        }
+        // A target whose room failed to check has reported its own errors.
+        let declared = self
+            .rooms
+            .iter()
+            .flat_map(|(_, d, _)| d.items.iter())
+            .any(|i| matches!(i, crate::syntax::ast::RoomItem::Target(t) if t.name.value == name));
+        if !declared {
+            self.error(Error::new(
+                ErrorKind::UnknownName {
+                    what: "target",
+                    name: name.clone(),
+                    suggestion: suggest(&name, targets()),
+                },
+                s.span,
+            ));
+        }
+        None
+    }
+
+    fn person_ref(&mut self, name: &crate::span::Name, persons: &[Person]) -> Option<String> {
+        if persons.iter().any(|p| p.name == name.value) {
+            return Some(name.value.clone());
+        }
+        if self.persons.get(&name.value).is_none() {
+            if let Err(e) = self.persons.resolve(name) {
+                self.error(e);
+            }
+        }
+        None
+    }
+}

@@ -1,0 +1,136 @@
+//! Command-line interface. Exit codes: 0 when the scenario evaluated (even
+//! if targets are unreachable), 1 on diagnostics, 2 on usage errors.
+
+use std::io::{IsTerminal, Write};
+use std::path::{Path, PathBuf};
+
+use clap::{Parser, Subcommand};
+use reach::plugin::{PluginKind, Registry};
+use reach::{Diagnostics, Error, ErrorKind, Input};
+
+#[derive(Parser)]
+#[command(name = "reach", version, about = "Can this person reach and see the things in this room?")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Evaluate a scenario and print its report.
+    Run {
+        /// The .reach scenario file.
+        file: PathBuf,
+        /// Output format (see `reach plugins`).
+        #[arg(long, default_value = "text")]
+        format: String,
+        /// Also write the report to DIR/report.json.
+        #[arg(long, value_name = "DIR")]
+        out: Option<PathBuf>,
+    },
+    /// Parse and check a scenario without running it.
+    Check {
+        /// The .reach scenario file.
+        file: PathBuf,
+    },
+    /// List every plugin with its parameters.
+    Plugins,
+}
+
+pub fn main() -> i32 {
+    let cli = Cli::parse();
+    let registry = Registry::builtin();
+    match cli.command {
+        Command::Run { file, format, out } => run(&registry, &file, &format, out.as_deref()),
+        Command::Check { file } => check(&registry, &file),
+        Command::Plugins => {
+            print!("{}", plugins_listing(&registry));
+            0
+        }
+    }
+}
+
+fn run(registry: &Registry, file: &Path, format: &str, out: Option<&Path>) -> i32 {
+    let Some(formatter) = registry.format(format) else {
+        eprintln!(
+            "error: unknown format `{format}` (formats: {})",
+            registry.names(PluginKind::Format).join(", ")
+        );
+        return 2;
+    };
+    let (_, checked) = reach::check(Input::Path(file), registry);
+    let scenario = match checked {
+        Ok(s) => s,
+        Err(d) => return report_diagnostics(&d),
+    };
+    let report = reach::run(&scenario, registry);
+    if let Some(dir) = out {
+        let json = registry.format("json").expect("json is built in").render(&report);
+        if let Err(e) = write_atomically(&dir.join("report.json"), json.as_bytes()) {
+            return report_diagnostics(&Diagnostics::single(e));
+        }
+    }
+    let mut stdout = std::io::stdout().lock();
+    let _ = stdout.write_all(formatter.render(&report).as_bytes());
+    0
+}
+
+fn check(registry: &Registry, file: &Path) -> i32 {
+    let (_, checked) = reach::check(Input::Path(file), registry);
+    match checked {
+        Ok(s) => {
+            println!("{}: ok ({} tasks)", file.display(), s.tasks.len());
+            0
+        }
+        Err(d) => report_diagnostics(&d),
+    }
+}
+
+fn report_diagnostics(d: &Diagnostics) -> i32 {
+    let plain = !std::io::stderr().is_terminal() || std::env::var_os("NO_COLOR").is_some();
+    eprint!("{}", d.render(plain));
+    1
+}
+
+/// Write `bytes` to a temporary file beside `path`, then rename it over
+/// `path`: a reader sees the old file or the new one, never half of one.
+fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
+    let fail = |e: std::io::Error| {
+        Error::unplaced(ErrorKind::WriteFile {
+            path: path.display().to_string(),
+            reason: e.to_string(),
+        })
+    };
+    let dir = path.parent().unwrap_or(Path::new("."));
+    std::fs::create_dir_all(dir).map_err(fail)?;
+    let mut tmp = tempfile::NamedTempFile::new_in(dir).map_err(fail)?;
+    tmp.write_all(bytes).map_err(fail)?;
+    tmp.as_file().sync_all().map_err(fail)?;
+    tmp.persist(path).map_err(|e| fail(e.error))?;
+    Ok(())
+}
+
+fn plugins_listing(registry: &Registry) -> String {
+    let mut out = String::new();
+    for kind in PluginKind::ALL {
+        out.push_str(&format!("{}s:\n", kind.noun()));
+        for p in registry.of_kind(kind) {
+            out.push_str(&format!("  {:<12} {}\n", p.name(), p.doc()));
+            for param in p.params() {
+                let default = match &param.default {
+                    Some(v) => format!("default {}", v.display()),
+                    None => "required".to_string(),
+                };
+                out.push_str(&format!(
+                    "      {:<12} {:<8} {:<22} {}\n",
+                    param.name,
+                    param.kind.short(),
+                    default,
+                    param.doc
+                ));
+            }
+        }
+        out.push('\n');
+    }
+    out
+}

@@ -1,0 +1,415 @@
+//! Errors as types: every problem the tool reports about its input is an
+//! [`Error`] with an [`ErrorKind`] that carries the offending token, a span
+//! on the offending text, and optional extra labels. A run collects them in
+//! [`Diagnostics`], which renders them with miette.
+
+use std::fmt;
+use std::sync::Arc;
+
+use miette::{Diagnostic, LabeledSpan, NamedSource, SourceCode};
+use thiserror::Error as ThisError;
+
+use crate::source::Sources;
+use crate::span::Span;
+
+/// What went wrong. Each variant carries what the message needs.
+#[derive(Clone, Debug, PartialEq, ThisError)]
+pub enum ErrorKind {
+    // ------------------------------------------------------------ syntax
+    #[error("expected {expected}, found {found}")]
+    Syntax { expected: String, found: String },
+    #[error("unknown unit `{unit}`")]
+    UnknownUnit { unit: String },
+    #[error("`{text}` is not a finite number")]
+    BadNumber { text: String },
+    #[error("`units` names the {dimension} unit twice")]
+    UnitsRepeated { dimension: &'static str },
+
+    // ------------------------------------------------------------ files
+    #[error("cannot read `{path}`: {reason}")]
+    ReadFile { path: String, reason: String },
+    #[error("`{path}` is not UTF-8 text")]
+    NotUtf8 { path: String },
+    #[error("`{path}` uses itself")]
+    ImportCycle { path: String, chain: Vec<String> },
+    #[error("there is no standard library module `std::{name}`")]
+    UnknownStdModule {
+        name: String,
+        suggestion: Option<String>,
+        available: String,
+    },
+    #[error("cannot write `{path}`: {reason}")]
+    WriteFile { path: String, reason: String },
+
+    // ------------------------------------------------------------ names
+    #[error("unknown {what} `{name}`")]
+    UnknownName {
+        what: &'static str,
+        name: String,
+        suggestion: Option<String>,
+    },
+    #[error("{what} `{name}` is defined twice")]
+    Duplicate { what: &'static str, name: String },
+    #[error("`{name}` is defined in terms of itself")]
+    LetCycle { name: String },
+
+    // ------------------------------------------------------------ values
+    #[error("expected {expected}, found {found}")]
+    Dimension { expected: String, found: String },
+    #[error("cannot {verb} {left} and {right}")]
+    Operands {
+        verb: &'static str,
+        left: String,
+        right: String,
+    },
+    #[error("division by zero")]
+    DivisionByZero,
+    #[error("this value is not finite")]
+    NotFinite,
+    #[error("{what} must be {bound}, found {value}")]
+    OutOfRange {
+        what: String,
+        bound: String,
+        value: String,
+    },
+    #[error("lower limit {min} is above upper limit {max}")]
+    LimitsReversed { min: String, max: String },
+    #[error("{owner} has no {what}")]
+    Missing { owner: String, what: &'static str },
+    #[error("{what} is given more than once")]
+    Repeated { what: String },
+    #[error("target `{name}` lies outside room `{room}`")]
+    TargetOutsideRoom {
+        name: String,
+        room: String,
+        bounds: String,
+    },
+    #[error("mixing bare numbers from files with different default units")]
+    MixedDefaults,
+    #[error("{what} is not supported yet")]
+    Unsupported { what: String, help: String },
+    #[error("{what} belong in the scenario file, not in a file it uses")]
+    Misplaced { what: &'static str },
+
+    // ------------------------------------------------------------ plugins
+    #[error("unknown {kind} `{name}`")]
+    UnknownPlugin {
+        kind: &'static str,
+        name: String,
+        suggestion: Option<String>,
+        available: String,
+    },
+    #[error("{plugin} has no option `{name}`")]
+    UnknownOption {
+        plugin: String,
+        name: String,
+        suggestion: Option<String>,
+        available: String,
+    },
+    #[error("option `{name}` of {plugin} must be given")]
+    MissingOption { plugin: String, name: String },
+}
+
+impl ErrorKind {
+    /// A stable code, shown by miette and usable by tools.
+    pub fn code(&self) -> &'static str {
+        use ErrorKind::*;
+        match self {
+            Syntax { .. } => "reach::syntax",
+            UnknownUnit { .. } | UnitsRepeated { .. } => "reach::unit",
+            BadNumber { .. } | NotFinite | DivisionByZero => "reach::number",
+            ReadFile { .. } | NotUtf8 { .. } | WriteFile { .. } => "reach::file",
+            ImportCycle { .. } | UnknownStdModule { .. } => "reach::use",
+            UnknownName { .. } | Duplicate { .. } | LetCycle { .. } => "reach::name",
+            Dimension { .. } | Operands { .. } | MixedDefaults => "reach::unit",
+            OutOfRange { .. } | LimitsReversed { .. } => "reach::range",
+            Missing { .. } | Repeated { .. } | TargetOutsideRoom { .. } => "reach::scene",
+            Unsupported { .. } | Misplaced { .. } => "reach::scene",
+            UnknownPlugin { .. } | UnknownOption { .. } | MissingOption { .. } => "reach::plugin",
+        }
+    }
+
+    /// The text of the label under the offending span.
+    pub fn label(&self) -> String {
+        use ErrorKind::*;
+        match self {
+            Syntax { expected, .. } => format!("expected {expected}"),
+            UnknownUnit { .. } => "not a unit".into(),
+            BadNumber { .. } => "too large or malformed".into(),
+            UnitsRepeated { .. } => "second unit of this kind".into(),
+            ReadFile { .. } | NotUtf8 { .. } => "used here".into(),
+            ImportCycle { .. } => "this `use` closes the cycle".into(),
+            UnknownStdModule { .. } => "no such module".into(),
+            WriteFile { .. } => "here".into(),
+            UnknownName { what, .. } => format!("no {what} of this name"),
+            Duplicate { .. } => "defined again here".into(),
+            LetCycle { .. } => "used in its own definition".into(),
+            Dimension { found, .. } => format!("this is {found}"),
+            Operands { .. } => "incompatible units".into(),
+            DivisionByZero => "this is zero".into(),
+            NotFinite => "overflows".into(),
+            OutOfRange { value, .. } => format!("{value}"),
+            LimitsReversed { .. } => "min > max".into(),
+            Missing { what, .. } => format!("no {what} given here"),
+            Repeated { .. } => "given again here".into(),
+            TargetOutsideRoom { .. } => "outside the room".into(),
+            MixedDefaults => "bare numbers with different default units".into(),
+            Unsupported { .. } => "not supported".into(),
+            Misplaced { .. } => "in a used file".into(),
+            UnknownPlugin { kind, .. } => format!("no {kind} of this name"),
+            UnknownOption { .. } => "unknown option".into(),
+            MissingOption { .. } => "needs this option".into(),
+        }
+    }
+
+    /// A line of advice, where one helps.
+    pub fn help(&self) -> Option<String> {
+        use ErrorKind::*;
+        match self {
+            UnknownUnit { .. } | UnitsRepeated { .. } => Some(
+                "lengths: mm, cm, m, in; angles: deg, rad, arcmin (write the unit right after the number: `90deg`)"
+                    .into(),
+            ),
+            BadNumber { .. } | NotFinite => Some("numbers must be finite and below 1e15".into()),
+            ImportCycle { chain, .. } => Some(format!("the cycle: {}", chain.join(" -> "))),
+            UnknownStdModule {
+                suggestion,
+                available,
+                ..
+            } => Some(did_you_mean(suggestion, &format!("modules: {available}"))),
+            UnknownName { suggestion, .. } => suggestion.as_ref().map(|s| format!("did you mean `{s}`?")),
+            Dimension { expected, .. } => Some(format!("write {expected}, such as {}", example_of(expected))),
+            Operands { .. } => Some("both sides of + and - must have the same kind of unit".into()),
+            OutOfRange { bound, .. } => Some(format!("use a value {bound}")),
+            TargetOutsideRoom { bounds, .. } => Some(format!("the room spans {bounds}")),
+            MixedDefaults => Some("write the units on these numbers".into()),
+            Unsupported { help, .. } => Some(help.clone()),
+            Misplaced { .. } => Some("move it to the file you run, which can `use` this one".into()),
+            UnknownPlugin {
+                suggestion,
+                available,
+                ..
+            }
+            | UnknownOption {
+                suggestion,
+                available,
+                ..
+            } => Some(did_you_mean(suggestion, &format!("available: {available}"))),
+            LetCycle { .. } => Some("a `let` cannot depend on itself, directly or through others".into()),
+            _ => None,
+        }
+    }
+}
+
+fn did_you_mean(suggestion: &Option<String>, otherwise: &str) -> String {
+    match suggestion {
+        Some(s) => format!("did you mean `{s}`? ({otherwise})"),
+        None => otherwise.to_string(),
+    }
+}
+
+fn example_of(expected: &str) -> &'static str {
+    if expected.contains("length") {
+        "`900mm`"
+    } else if expected.contains("angle") {
+        "`45deg`"
+    } else if expected.contains("whole number") {
+        "`6`"
+    } else if expected.contains("true or false") {
+        "`true`"
+    } else {
+        "`0.5`"
+    }
+}
+
+/// One diagnostic: a kind, where it is, and extra labelled places.
+#[derive(Clone, Debug)]
+pub struct Error {
+    pub kind: ErrorKind,
+    pub span: Option<Span>,
+    /// Further labels in the same file, such as "first defined here".
+    pub notes: Vec<(Span, String)>,
+    source: Option<NamedSource<Arc<String>>>,
+}
+
+impl Error {
+    pub fn new(kind: ErrorKind, span: Span) -> Self {
+        Error {
+            kind,
+            span: Some(span),
+            notes: Vec::new(),
+            source: None,
+        }
+    }
+
+    /// An error that belongs to no place in a file (a missing input file).
+    pub fn unplaced(kind: ErrorKind) -> Self {
+        Error {
+            kind,
+            span: None,
+            notes: Vec::new(),
+            source: None,
+        }
+    }
+
+    pub fn with_note(mut self, span: Span, text: impl Into<String>) -> Self {
+        self.notes.push((span, text.into()));
+        self
+    }
+
+    /// The file name this error points into, once sources are attached.
+    pub fn file_name(&self) -> Option<&str> {
+        self.source.as_ref().map(|s| s.name())
+    }
+
+    fn attach(&mut self, sources: &Sources) {
+        if let Some(span) = self.span {
+            if (span.file.0 as usize) < sources.len() {
+                self.source = Some(sources.get(span.file).named_source());
+                let file = span.file;
+                self.notes.retain(|(s, _)| s.file == file);
+            }
+        }
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        self.kind.fmt(f)
+    }
+}
+
+impl std::error::Error for Error {}
+
+impl Diagnostic for Error {
+    fn code<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
+        Some(Box::new(self.kind.code()))
+    }
+
+    fn help<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
+        self.kind.help().map(|h| Box::new(h) as Box<dyn fmt::Display>)
+    }
+
+    fn source_code(&self) -> Option<&dyn SourceCode> {
+        self.source.as_ref().map(|s| s as &dyn SourceCode)
+    }
+
+    fn labels(&self) -> Option<Box<dyn Iterator<Item = LabeledSpan> + '_>> {
+        let span = self.span?;
+        self.source.as_ref()?;
+        let primary = LabeledSpan::new_primary_with_span(Some(self.kind.label()), span);
+        let notes = self
+            .notes
+            .iter()
+            .map(|(s, text)| LabeledSpan::new_with_span(Some(text.clone()), *s));
+        Some(Box::new(std::iter::once(primary).chain(notes)))
+    }
+}
+
+/// Every error one step found, in the order of the text.
+#[derive(Clone, Debug, Default)]
+pub struct Diagnostics {
+    pub errors: Vec<Error>,
+}
+
+impl Diagnostics {
+    pub fn single(error: Error) -> Self {
+        Diagnostics {
+            errors: vec![error],
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.errors.is_empty()
+    }
+
+    pub fn len(&self) -> usize {
+        self.errors.len()
+    }
+
+    /// Attach each error's file so it can be rendered on its own, and sort
+    /// them by file and position.
+    pub fn attach(mut self, sources: &Sources) -> Self {
+        for e in &mut self.errors {
+            e.attach(sources);
+        }
+        self.errors
+            .sort_by_key(|e| e.span.map(|s| (s.file, s.start, s.end)));
+        self
+    }
+
+    /// The diagnostics rendered as text: without colour and at a fixed width
+    /// when `plain` (files and tests), with colour for a terminal otherwise.
+    pub fn render(&self, plain: bool) -> String {
+        use miette::{GraphicalReportHandler, GraphicalTheme};
+        let theme = if plain {
+            GraphicalTheme::unicode_nocolor()
+        } else {
+            GraphicalTheme::unicode()
+        };
+        let handler = GraphicalReportHandler::new_themed(theme)
+            .with_width(100)
+            .with_links(false);
+        let mut out = String::new();
+        for e in &self.errors {
+            let _ = handler.render_report(&mut out, e);
+        }
+        let n = self.errors.len();
+        out.push_str(&format!(
+            "{} error{} found\n",
+            n,
+            if n == 1 { "" } else { "s" }
+        ));
+        out
+    }
+}
+
+impl fmt::Display for Diagnostics {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} error(s) in the scenario", self.errors.len())
+    }
+}
+
+impl std::error::Error for Diagnostics {}
+
+impl Diagnostic for Diagnostics {
+    fn related<'a>(&'a self) -> Option<Box<dyn Iterator<Item = &'a dyn Diagnostic> + 'a>> {
+        Some(Box::new(self.errors.iter().map(|e| e as &dyn Diagnostic)))
+    }
+}
+
+impl From<Error> for Diagnostics {
+    fn from(e: Error) -> Self {
+        Diagnostics::single(e)
+    }
+}
+
+/// A collector the checking passes push errors into, so that one pass
+/// reports every problem it finds.
+#[derive(Default)]
+pub struct Sink {
+    pub errors: Vec<Error>,
+}
+
+impl Sink {
+    pub fn push(&mut self, e: Error) {
+        self.errors.push(e);
+    }
+
+    /// Keep the value or record the error.
+    pub fn take<T>(&mut self, r: Result<T, Error>) -> Option<T> {
+        match r {
+            Ok(v) => Some(v),
+            Err(e) => {
+                self.push(e);
+                None
+            }
+        }
+    }
+
+    pub fn into_diagnostics(self) -> Diagnostics {
+        Diagnostics {
+            errors: self.errors,
+        }
+    }
+}

@@ -1,0 +1,173 @@
+//! A serial chain of joints from the base (the hip) to one effector, with
+//! each joint's limits, neutral value and comfort weight, and its forward
+//! kinematics as the plain product of DH matrices (eq. 4-5).
+
+use nalgebra::{IsometryMatrix3, Point3, Vector3};
+
+use super::dh::Dh;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum JointKind {
+    /// The variable is an angle added to theta (radians).
+    Revolute,
+    /// The variable is a length added to d (millimetres).
+    Prismatic,
+}
+
+/// One joint. `min`, `max` and `neutral` are in radians for revolute joints
+/// and millimetres for prismatic ones, relative to the DH table's values.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Joint {
+    pub name: String,
+    pub kind: JointKind,
+    pub dh: Dh,
+    pub min: f64,
+    pub max: f64,
+    pub neutral: f64,
+    pub weight: f64,
+}
+
+impl Joint {
+    /// The pose of this joint's frame in the previous one at value `q`.
+    pub fn transform(&self, q: f64) -> IsometryMatrix3<f64> {
+        match self.kind {
+            JointKind::Revolute => self.dh.transform(self.dh.theta_rad + q, self.dh.d_mm),
+            JointKind::Prismatic => self.dh.transform(self.dh.theta_rad, self.dh.d_mm + q),
+        }
+    }
+
+    pub fn range(&self) -> f64 {
+        self.max - self.min
+    }
+
+    /// `q` moved into the limits.
+    pub fn clamp(&self, q: f64) -> f64 {
+        q.clamp(self.min, self.max)
+    }
+
+    /// The comfort cost of value `q`: weight times distance from neutral,
+    /// radians for revolute joints and metres for prismatic ones.
+    pub fn discomfort(&self, q: f64) -> f64 {
+        let scale = match self.kind {
+            JointKind::Revolute => 1.0,
+            JointKind::Prismatic => 1e-3,
+        };
+        self.weight * (self.neutral - q).abs() * scale
+    }
+}
+
+/// A chain of joints ending in an effector.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Chain {
+    pub joints: Vec<Joint>,
+    pub effector_name: String,
+    /// The effector point in the frame of the last joint.
+    pub effector_mm: Vector3<f64>,
+}
+
+impl Chain {
+    pub fn dof(&self) -> usize {
+        self.joints.len()
+    }
+
+    /// The pose of the last frame in the base frame: `DH_0,n`.
+    pub fn end_frame(&self, q: &[f64]) -> IsometryMatrix3<f64> {
+        self.joints
+            .iter()
+            .zip(q)
+            .fold(IsometryMatrix3::identity(), |acc, (j, &qi)| acc * j.transform(qi))
+    }
+
+    /// The effector point in the base frame (eq. 5).
+    pub fn effector(&self, q: &[f64]) -> Point3<f64> {
+        self.end_frame(q) * Point3::from(self.effector_mm)
+    }
+
+    /// The comfort criterion `C = sum_i w_i |theta_i^N - theta_i|` of
+    /// section 5.3.4: smaller is more comfortable.
+    pub fn discomfort(&self, q: &[f64]) -> f64 {
+        self.joints.iter().zip(q).map(|(j, &qi)| j.discomfort(qi)).sum()
+    }
+
+    pub fn within_limits(&self, q: &[f64]) -> bool {
+        self.joints.iter().zip(q).all(|(j, &qi)| qi >= j.min && qi <= j.max)
+    }
+
+    pub fn neutral(&self) -> Vec<f64> {
+        self.joints.iter().map(|j| j.neutral).collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::FRAC_PI_2;
+
+    fn revolute(name: &str, theta_rad: f64, d_mm: f64, alpha_rad: f64, a_mm: f64) -> Joint {
+        Joint {
+            name: name.into(),
+            kind: JointKind::Revolute,
+            dh: Dh {
+                theta_rad,
+                d_mm,
+                alpha_rad,
+                a_mm,
+            },
+            min: -3.0,
+            max: 3.0,
+            neutral: 0.0,
+            weight: 1.0,
+        }
+    }
+
+    /// A planar two-link arm (both axes along z, links 300 and 200 mm):
+    /// the effector is at (300 cos q1 + 200 cos(q1 + q2), 300 sin q1 +
+    /// 200 sin(q1 + q2), 0), worked out by hand.
+    fn planar() -> Chain {
+        Chain {
+            joints: vec![revolute("j1", 0.0, 0.0, 0.0, 300.0), revolute("j2", 0.0, 0.0, 0.0, 200.0)],
+            effector_name: "tip".into(),
+            effector_mm: Vector3::zeros(),
+        }
+    }
+
+    #[test]
+    fn planar_arm_matches_the_closed_form() {
+        let chain = planar();
+        for &(q1, q2) in &[(0.0, 0.0), (0.5, -0.3), (FRAC_PI_2, FRAC_PI_2), (-1.2, 2.5)] {
+            let p = chain.effector(&[q1, q2]);
+            let x = 300.0 * f64::cos(q1) + 200.0 * f64::cos(q1 + q2);
+            let y = 300.0 * f64::sin(q1) + 200.0 * f64::sin(q1 + q2);
+            assert!((p - Point3::new(x, y, 0.0)).norm() < 1e-9, "{q1} {q2}: {p}");
+        }
+    }
+
+    #[test]
+    fn effector_offset_is_carried_by_the_last_frame() {
+        let mut chain = planar();
+        chain.effector_mm = Vector3::new(50.0, 0.0, 10.0);
+        let p = chain.effector(&[0.0, FRAC_PI_2]);
+        // The last frame points along +y at (300, 200, 0).
+        assert!((p - Point3::new(300.0, 250.0, 10.0)).norm() < 1e-9, "{p}");
+    }
+
+    #[test]
+    fn prismatic_joint_slides_along_z() {
+        let mut j = revolute("slide", 0.0, 100.0, 0.0, 0.0);
+        j.kind = JointKind::Prismatic;
+        let chain = Chain {
+            joints: vec![j],
+            effector_name: "tip".into(),
+            effector_mm: Vector3::zeros(),
+        };
+        assert!((chain.effector(&[25.0]) - Point3::new(0.0, 0.0, 125.0)).norm() < 1e-12);
+    }
+
+    #[test]
+    fn discomfort_is_the_weighted_distance_from_neutral() {
+        let mut chain = planar();
+        chain.joints[1].weight = 2.0;
+        chain.joints[1].neutral = 0.5;
+        assert!((chain.discomfort(&[-0.25, 1.0]) - (0.25 + 2.0 * 0.5)).abs() < 1e-15);
+    }
+}

@@ -1,0 +1,76 @@
+//! reach: can this person reach and see the things in this room?
+//!
+//! The pipeline, from text to report (ARCHITECTURE.md has the map):
+//! [`load`] reads the scenario file and everything it `use`s and parses
+//! each; [`check`] resolves names, evaluates expressions with units and
+//! validates plugin options into a [`scene::Scenario`]; [`run`] runs its
+//! tasks with the plugins of a [`plugin::Registry`] into a
+//! [`report::Report`], which an output format renders.
+//!
+//! ```no_run
+//! let registry = reach::plugin::Registry::builtin();
+//! let (_sources, checked) = reach::check(reach::Input::Path("kitchen.reach".as_ref()), &registry);
+//! match checked {
+//!     Ok(scenario) => println!("{:?}", reach::run(&scenario, &registry).tasks),
+//!     Err(diagnostics) => eprintln!("{}", diagnostics.render(true)),
+//! }
+//! ```
+
+pub mod bases;
+mod check;
+pub mod error;
+pub mod kinematics;
+mod loader;
+mod names;
+pub mod output;
+pub mod plugin;
+pub mod report;
+pub mod scene;
+pub mod solvers;
+pub mod source;
+pub mod span;
+pub mod stdlib;
+pub mod syntax;
+pub mod tasks;
+pub mod units;
+
+use rayon::prelude::*;
+
+pub use error::{Diagnostics, Error, ErrorKind};
+pub use loader::Input;
+
+use plugin::{Registry, TaskContext};
+use report::Report;
+use scene::Scenario;
+use source::Sources;
+
+/// Load and check a scenario. The sources come back either way, so that a
+/// caller can show or watch the files; the diagnostics are ready to render.
+pub fn check(input: Input<'_>, registry: &Registry) -> (Sources, Result<Scenario, Diagnostics>) {
+    let (sources, loaded) = loader::load(input);
+    let result = loaded.and_then(|files| check::check(&sources, &files, registry));
+    let result = result.map_err(|d| d.attach(&sources));
+    (sources, result)
+}
+
+/// Run every task of a checked scenario, in parallel; the report lists them
+/// in the order of the file whatever the number of threads.
+pub fn run(scenario: &Scenario, registry: &Registry) -> Report {
+    let tasks = scenario
+        .tasks
+        .par_iter()
+        .map(|task| {
+            let plugin = registry.task(&task.kind).expect("the checker resolved every task kind");
+            plugin.run(&TaskContext {
+                scenario,
+                task,
+                registry,
+            })
+        })
+        .collect();
+    Report {
+        schema: report::SCHEMA_VERSION,
+        file: scenario.file.clone(),
+        tasks,
+    }
+}

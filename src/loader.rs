@@ -1,0 +1,187 @@
+//! Loading a scenario: the root file and, depth first, every file it `use`s
+//! (relative to the using file) or standard library module (`use std::x`).
+//! Each file is read and parsed once; a `use` that leads back to a file still
+//! being loaded is an import cycle.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+use crate::error::{Diagnostics, Error, ErrorKind};
+use crate::names::suggest;
+use crate::source::{Origin, Sources};
+use crate::span::{FileId, Span};
+use crate::stdlib;
+use crate::syntax::ast::{File, Item, UseTarget};
+use crate::syntax::parse_file;
+
+/// One parsed file of the scenario.
+#[derive(Debug)]
+pub struct LoadedFile {
+    pub id: FileId,
+    pub ast: File,
+}
+
+/// The scenario's files, each after the files it uses; the root file last.
+#[derive(Debug, Default)]
+pub struct Loaded {
+    pub sources: Sources,
+    pub files: Vec<LoadedFile>,
+}
+
+/// Where the root of a scenario comes from.
+pub enum Input<'a> {
+    Path(&'a Path),
+    Text { name: &'a str, text: &'a str },
+}
+
+/// Load the scenario. On failure the diagnostics come with the sources they
+/// point into.
+pub fn load(input: Input<'_>) -> (Sources, Result<Vec<LoadedFile>, Diagnostics>) {
+    let mut loader = Loader::default();
+    match input {
+        Input::Path(path) => {
+            let key = Key::Disk(canonical(path));
+            loader.load_disk(path, key, None);
+        }
+        Input::Text { name, text } => {
+            let id = loader
+                .loaded
+                .sources
+                .add(name.to_string(), Origin::Memory, text.to_string());
+            loader.parse_and_follow(id, Key::Memory, None);
+        }
+    }
+    let Loader { loaded, errors, .. } = loader;
+    let result = if errors.is_empty() {
+        Ok(loaded.files)
+    } else {
+        Err(Diagnostics { errors })
+    };
+    (loaded.sources, result)
+}
+
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+enum Key {
+    Disk(PathBuf),
+    Std(String),
+    Memory,
+}
+
+#[derive(Default)]
+struct Loader {
+    loaded: Loaded,
+    errors: Vec<Error>,
+    /// Files fully loaded, by identity.
+    done: HashMap<Key, FileId>,
+    /// Files being loaded, outermost first, with their display names.
+    stack: Vec<(Key, String)>,
+}
+
+fn canonical(path: &Path) -> PathBuf {
+    path.canonicalize().unwrap_or_else(|_| path.to_path_buf())
+}
+
+impl Loader {
+    fn load_disk(&mut self, path: &Path, key: Key, used_at: Option<Span>) {
+        let shown = path.display().to_string();
+        let text = match std::fs::read(path) {
+            Ok(bytes) => match String::from_utf8(bytes) {
+                Ok(t) => t,
+                Err(_) => return self.fail(ErrorKind::NotUtf8 { path: shown }, used_at),
+            },
+            Err(e) => {
+                let reason = e.kind().to_string();
+                return self.fail(ErrorKind::ReadFile { path: shown, reason }, used_at);
+            }
+        };
+        let id = self
+            .loaded
+            .sources
+            .add(shown, Origin::Path(path.to_path_buf()), text);
+        self.parse_and_follow(id, key, used_at);
+    }
+
+    fn fail(&mut self, kind: ErrorKind, at: Option<Span>) {
+        self.errors.push(match at {
+            Some(span) => Error::new(kind, span),
+            None => Error::unplaced(kind),
+        });
+    }
+
+    fn parse_and_follow(&mut self, id: FileId, key: Key, _used_at: Option<Span>) {
+        let text = std::sync::Arc::clone(&self.loaded.sources.get(id).text);
+        let ast = match parse_file(id, &text) {
+            Ok(ast) => ast,
+            Err(d) => {
+                self.errors.extend(d.errors);
+                return;
+            }
+        };
+        let name = self.loaded.sources.get(id).name.clone();
+        self.stack.push((key.clone(), name));
+        for item in &ast.items {
+            if let Item::Use(target) = item {
+                self.follow(id, &target.value, target.span);
+            }
+        }
+        self.stack.pop();
+        self.done.insert(key, id);
+        self.loaded.files.push(LoadedFile { id, ast });
+    }
+
+    fn follow(&mut self, from: FileId, target: &UseTarget, span: Span) {
+        let (key, disk_path) = match target {
+            UseTarget::Std(name) => (Key::Std(name.clone()), None),
+            UseTarget::Path(rel) => {
+                let path = self.relative_to(from, rel);
+                (Key::Disk(canonical(&path)), Some(path))
+            }
+        };
+        if self.done.contains_key(&key) {
+            return;
+        }
+        if let Some(pos) = self.stack.iter().position(|(k, _)| *k == key) {
+            let mut chain: Vec<String> = self.stack[pos..].iter().map(|(_, n)| n.clone()).collect();
+            chain.push(self.stack[pos].1.clone());
+            let path = self.stack[pos].1.clone();
+            self.errors
+                .push(Error::new(ErrorKind::ImportCycle { path, chain }, span));
+            return;
+        }
+        match (target, disk_path) {
+            (_, Some(path)) => self.load_disk(&path, key, Some(span)),
+            (UseTarget::Std(name), None) => self.load_std(name, key, span),
+            _ => unreachable!("a path use always has a disk path"),
+        }
+    }
+
+    fn load_std(&mut self, name: &str, key: Key, span: Span) {
+        let Some(text) = stdlib::module(name) else {
+            let names: Vec<&str> = stdlib::MODULES.iter().map(|(n, _)| *n).collect();
+            self.errors.push(Error::new(
+                ErrorKind::UnknownStdModule {
+                    name: name.to_string(),
+                    suggestion: suggest(name, names.iter().copied()),
+                    available: names.join(", "),
+                },
+                span,
+            ));
+            return;
+        };
+        let id = self.loaded.sources.add(
+            format!("std::{name}"),
+            Origin::Std(name.to_string()),
+            text.to_string(),
+        );
+        self.parse_and_follow(id, key, Some(span));
+    }
+
+    /// `rel` as seen from the directory of file `from`.
+    fn relative_to(&self, from: FileId, rel: &str) -> PathBuf {
+        let base = match &self.loaded.sources.get(from).origin {
+            Origin::Path(p) => p.parent().map(Path::to_path_buf).unwrap_or_default(),
+            _ => PathBuf::new(),
+        };
+        base.join(rel)
+    }
+}

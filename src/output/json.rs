@@ -1,0 +1,32 @@
+//! The `json` format: the report as pretty-printed JSON (docs/report.md).
+
+use crate::plugin::{FormatPlugin, ParamSpec, Plugin};
+use crate::report::Report;
+
+pub struct Json;
+
+impl Plugin for Json {
+    fn name(&self) -> &'static str {
+        "json"
+    }
+
+    fn doc(&self) -> &'static str {
+        "the report as JSON, for tools and golden files (schema: docs/report.md)"
+    }
+
+    fn params(&self) -> Vec<ParamSpec> {
+        Vec::new()
+    }
+}
+
+impl FormatPlugin for Json {
+    fn render(&self, report: &Report) -> String {
+        let mut s = serde_json::to_string_pretty(report).expect("reports hold only finite numbers");
+        s.push('\n');
+        s
+    }
+
+    fn extension(&self) -> &'static str {
+        "json"
+    }
+}

@@ -1,0 +1,101 @@
+//! The `text` format: a table a person scans in seconds, then one line of
+//! detail per task (where the base stood, the posture).
+
+use std::fmt::Write;
+
+use crate::plugin::{FormatPlugin, ParamSpec, Plugin};
+use crate::report::{ReachReport, Report, TaskReport};
+
+pub struct Text;
+
+impl Plugin for Text {
+    fn name(&self) -> &'static str {
+        "text"
+    }
+
+    fn doc(&self) -> &'static str {
+        "a readable table of results, then the posture of each task"
+    }
+
+    fn params(&self) -> Vec<ParamSpec> {
+        Vec::new()
+    }
+}
+
+impl FormatPlugin for Text {
+    fn render(&self, report: &Report) -> String {
+        let mut out = String::new();
+        let ok = report.tasks.iter().filter(|t| t.ok()).count();
+        let _ = writeln!(out, "{}: {} tasks, {} ok\n", report.file, report.tasks.len(), ok);
+        out.push_str(&table(report));
+        for task in &report.tasks {
+            match task {
+                TaskReport::Reach(r) => detail(&mut out, r),
+            }
+        }
+        out
+    }
+
+    fn extension(&self) -> &'static str {
+        "txt"
+    }
+}
+
+fn table(report: &Report) -> String {
+    let header = ["task", "target", "person", "result", "distance", "sweeps", "comfort"];
+    let rows: Vec<[String; 7]> = report
+        .tasks
+        .iter()
+        .map(|t| match t {
+            TaskReport::Reach(r) => [
+                "reach".to_string(),
+                r.name.clone(),
+                r.person.clone(),
+                if r.ok { "reachable".into() } else { "NOT reachable".into() },
+                format!("{:.1} mm", r.distance_mm),
+                r.iterations.to_string(),
+                format!("{:.2}", r.comfort),
+            ],
+        })
+        .collect();
+    let mut widths = header.map(str::len);
+    for row in &rows {
+        for (w, cell) in widths.iter_mut().zip(row) {
+            *w = (*w).max(cell.chars().count());
+        }
+    }
+    let mut out = String::new();
+    let line = |cells: &[String], out: &mut String| {
+        let mut s = String::new();
+        for (i, cell) in cells.iter().enumerate() {
+            let pad = widths[i] - cell.chars().count();
+            // Text columns to the left, numbers to the right.
+            if i >= 4 {
+                s.push_str(&" ".repeat(pad));
+                s.push_str(cell);
+            } else {
+                s.push_str(cell);
+                s.push_str(&" ".repeat(pad));
+            }
+            s.push_str("  ");
+        }
+        out.push_str(s.trim_end());
+        out.push('\n');
+    };
+    line(&header.map(String::from), &mut out);
+    for row in &rows {
+        line(row, &mut out);
+    }
+    out
+}
+
+fn detail(out: &mut String, r: &ReachReport) {
+    let b = &r.base;
+    let _ = writeln!(
+        out,
+        "\n{} by {} ({}): {} base at ({:.0}, {:.0}, {:.0}) mm, heading {:.0} deg",
+        r.name, r.person, r.solver, b.kind, b.x_mm, b.y_mm, b.z_mm, b.heading_deg
+    );
+    let posture: Vec<String> = r.posture.0.iter().map(|(j, v)| format!("{j} {v:.1}")).collect();
+    let _ = writeln!(out, "  posture: {}", posture.join(", "));
+}

@@ -1,0 +1,165 @@
+//! Plugins: solvers, bases, tasks and output formats. Each implements
+//! [`Plugin`] (a name, a one-line doc and declared parameters) and the trait
+//! of its kind; all are registered by name in one [`Registry`].
+
+mod params;
+mod registry;
+
+pub use params::{Options, ParamKind, ParamSpec, PluginConfig, Value};
+pub use registry::Registry;
+
+use nalgebra::Point3;
+
+use crate::kinematics::Chain;
+use crate::report::{Report, TaskReport};
+use crate::scene::{Room, Scenario, TaskSpec};
+
+/// The four kinds of plugin.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PluginKind {
+    Solver,
+    Base,
+    Task,
+    Format,
+}
+
+impl PluginKind {
+    pub const ALL: [PluginKind; 4] = [
+        PluginKind::Solver,
+        PluginKind::Base,
+        PluginKind::Task,
+        PluginKind::Format,
+    ];
+
+    pub fn noun(self) -> &'static str {
+        match self {
+            PluginKind::Solver => "solver",
+            PluginKind::Base => "base",
+            PluginKind::Task => "task",
+            PluginKind::Format => "format",
+        }
+    }
+}
+
+/// What every plugin declares.
+pub trait Plugin: Send + Sync {
+    fn name(&self) -> &'static str;
+    /// One line for `reach plugins`.
+    fn doc(&self) -> &'static str;
+    /// The options its block accepts.
+    fn params(&self) -> Vec<ParamSpec>;
+}
+
+// ------------------------------------------------------------------ solvers
+
+/// An inverse kinematics problem: bring the chain's effector to a point
+/// given in the chain's base frame.
+#[derive(Clone, Copy, Debug)]
+pub struct IkProblem<'a> {
+    pub chain: &'a Chain,
+    pub target_mm: Point3<f64>,
+    pub tolerance_mm: f64,
+    /// Seeds every random choice the solver makes.
+    pub seed: u64,
+}
+
+/// A solver's answer: a posture within the joint limits and how far its
+/// effector is from the target.
+#[derive(Clone, Debug, PartialEq)]
+pub struct IkSolution {
+    /// Joint values in chain order (rad or mm).
+    pub q: Vec<f64>,
+    pub distance_mm: f64,
+    /// Sweeps over all joints (or solver iterations), summed over starts.
+    pub iterations: u64,
+}
+
+/// A solver configured from its option block.
+pub trait Solver: Send + Sync {
+    fn solve(&self, problem: &IkProblem<'_>) -> IkSolution;
+}
+
+pub trait SolverPlugin: Plugin {
+    fn build(&self, options: &Options) -> Box<dyn Solver>;
+}
+
+// ------------------------------------------------------------------ bases
+
+/// Where the base stands: its origin (the hip point) in the room, and the
+/// direction it faces, counter-clockwise from the room's x axis.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BasePose {
+    pub position_mm: Point3<f64>,
+    pub heading_rad: f64,
+}
+
+impl BasePose {
+    /// A point of the room in the base frame.
+    pub fn to_base(&self, room_point: &Point3<f64>) -> Point3<f64> {
+        let d = room_point - self.position_mm;
+        let (s, c) = self.heading_rad.sin_cos();
+        Point3::new(c * d.x + s * d.y, -s * d.x + c * d.y, d.z)
+    }
+
+    /// A point of the base frame in the room.
+    pub fn to_room(&self, base_point: &Point3<f64>) -> Point3<f64> {
+        let (s, c) = self.heading_rad.sin_cos();
+        let p = base_point;
+        self.position_mm + nalgebra::Vector3::new(c * p.x - s * p.y, s * p.x + c * p.y, p.z)
+    }
+}
+
+/// A reach question for a base: this chain, this target in this room.
+pub struct ReachQuery<'a> {
+    pub room: &'a Room,
+    pub chain: &'a Chain,
+    pub target_room_mm: Point3<f64>,
+    pub tolerance_mm: f64,
+    pub seed: u64,
+}
+
+/// Where the base stood and the posture the solver found from there.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Placement {
+    pub pose: BasePose,
+    pub solution: IkSolution,
+}
+
+/// A base configured from its option block: it decides where the person
+/// stands (or sits) and asks the solver for the posture.
+pub trait Base: Send + Sync {
+    fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement;
+}
+
+pub trait BasePlugin: Plugin {
+    fn build(&self, options: &Options) -> Box<dyn Base>;
+}
+
+// ------------------------------------------------------------------ tasks
+
+/// Everything a task needs to run.
+pub struct TaskContext<'a> {
+    pub scenario: &'a Scenario,
+    pub task: &'a TaskSpec,
+    pub registry: &'a Registry,
+}
+
+pub trait TaskPlugin: Plugin {
+    /// Whether the task's subjects are targets (reach, gaze) rather than
+    /// surfaces; the checker resolves them accordingly.
+    fn subject(&self) -> SubjectKind;
+    fn run(&self, ctx: &TaskContext<'_>) -> TaskReport;
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SubjectKind {
+    Target,
+}
+
+// ------------------------------------------------------------------ formats
+
+pub trait FormatPlugin: Plugin {
+    fn render(&self, report: &Report) -> String;
+    /// The file extension when written with `--out`.
+    fn extension(&self) -> &'static str;
+}

@@ -1,0 +1,247 @@
+//! Declared parameters of plugins and the validated values of an option
+//! block. Every plugin declares its parameters the same way, so the checker
+//! validates every option block the same way.
+
+use nalgebra::Vector3;
+
+use super::PluginKind;
+
+/// What kind of value a parameter takes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ParamKind {
+    /// Millimetres inside; any length unit in the file.
+    Length,
+    /// Radians inside; any angle unit in the file.
+    Angle,
+    /// A number without unit.
+    Number,
+    /// A whole number.
+    Integer,
+    Bool,
+    /// A point `(x, y, z)` of lengths.
+    Point,
+    /// Another plugin, by name, with its own option block.
+    Plugin(PluginKind),
+}
+
+impl ParamKind {
+    /// With an article, for messages: "a length".
+    pub fn describe(self) -> String {
+        match self {
+            ParamKind::Length => "a length".into(),
+            ParamKind::Angle => "an angle".into(),
+            ParamKind::Number => "a number without unit".into(),
+            ParamKind::Integer => "a whole number".into(),
+            ParamKind::Bool => "true or false".into(),
+            ParamKind::Point => "a point (x, y, z)".into(),
+            ParamKind::Plugin(k) => format!("the name of a {}", k.noun()),
+        }
+    }
+
+    /// Short form for `reach plugins`.
+    pub fn short(self) -> &'static str {
+        match self {
+            ParamKind::Length => "length",
+            ParamKind::Angle => "angle",
+            ParamKind::Number => "number",
+            ParamKind::Integer => "integer",
+            ParamKind::Bool => "bool",
+            ParamKind::Point => "point",
+            ParamKind::Plugin(PluginKind::Solver) => "solver",
+            ParamKind::Plugin(PluginKind::Base) => "base",
+            ParamKind::Plugin(PluginKind::Task) => "task",
+            ParamKind::Plugin(PluginKind::Format) => "format",
+        }
+    }
+}
+
+/// A validated option value, in internal units.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Value {
+    Length(f64),
+    Angle(f64),
+    Number(f64),
+    Integer(i64),
+    Bool(bool),
+    Point(Vector3<f64>),
+    Plugin(PluginConfig),
+}
+
+impl Value {
+    /// How `reach plugins` shows a default: in mm and degrees.
+    pub fn display(&self) -> String {
+        match self {
+            Value::Length(v) => format!("{}mm", trim(*v)),
+            Value::Angle(v) => format!("{}deg", trim(v.to_degrees())),
+            Value::Number(v) => trim(*v),
+            Value::Integer(v) => v.to_string(),
+            Value::Bool(v) => v.to_string(),
+            Value::Point(p) => format!("({}, {}, {})", trim(p.x), trim(p.y), trim(p.z)),
+            Value::Plugin(c) => c.name.clone(),
+        }
+    }
+}
+
+fn trim(v: f64) -> String {
+    let s = format!("{v:.6}");
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
+}
+
+/// One declared parameter.
+#[derive(Clone, Debug)]
+pub struct ParamSpec {
+    pub name: &'static str,
+    pub kind: ParamKind,
+    /// `None`: the option must be given.
+    pub default: Option<Value>,
+    /// Inclusive bounds in internal units, for numeric kinds.
+    pub range: Option<(f64, f64)>,
+    pub doc: &'static str,
+}
+
+impl ParamSpec {
+    fn new(name: &'static str, kind: ParamKind, default: Option<Value>, doc: &'static str) -> Self {
+        ParamSpec {
+            name,
+            kind,
+            default,
+            range: None,
+            doc,
+        }
+    }
+
+    pub fn length(name: &'static str, default_mm: f64, doc: &'static str) -> Self {
+        Self::new(name, ParamKind::Length, Some(Value::Length(default_mm)), doc)
+    }
+
+    pub fn angle(name: &'static str, default_rad: f64, doc: &'static str) -> Self {
+        Self::new(name, ParamKind::Angle, Some(Value::Angle(default_rad)), doc)
+    }
+
+    pub fn number(name: &'static str, default: f64, doc: &'static str) -> Self {
+        Self::new(name, ParamKind::Number, Some(Value::Number(default)), doc)
+    }
+
+    pub fn integer(name: &'static str, default: i64, doc: &'static str) -> Self {
+        Self::new(name, ParamKind::Integer, Some(Value::Integer(default)), doc)
+    }
+
+    pub fn boolean(name: &'static str, default: bool, doc: &'static str) -> Self {
+        Self::new(name, ParamKind::Bool, Some(Value::Bool(default)), doc)
+    }
+
+    /// A point that must be given.
+    pub fn point(name: &'static str, doc: &'static str) -> Self {
+        Self::new(name, ParamKind::Point, None, doc)
+    }
+
+    /// Another plugin, with the named default.
+    pub fn plugin(name: &'static str, kind: PluginKind, default: &str, doc: &'static str) -> Self {
+        let default = PluginConfig {
+            name: default.to_string(),
+            options: Options::default(),
+        };
+        Self::new(name, ParamKind::Plugin(kind), Some(Value::Plugin(default)), doc)
+    }
+
+    /// Bounds, inclusive, in internal units (mm, rad).
+    pub fn range(mut self, min: f64, max: f64) -> Self {
+        self.range = Some((min, max));
+        self
+    }
+}
+
+/// A plugin chosen by name with its validated options.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PluginConfig {
+    pub name: String,
+    pub options: Options,
+}
+
+/// The validated values of an option block: every declared parameter, the
+/// given value or its default, in declaration order.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Options {
+    values: Vec<(&'static str, Value)>,
+}
+
+impl Options {
+    pub fn new(values: Vec<(&'static str, Value)>) -> Self {
+        Options { values }
+    }
+
+    /// Options with every parameter at its default (parameters without a
+    /// default are left out).
+    pub fn defaults(params: &[ParamSpec]) -> Self {
+        Options {
+            values: params
+                .iter()
+                .filter_map(|p| p.default.clone().map(|d| (p.name, d)))
+                .collect(),
+        }
+    }
+
+    pub fn iter(&self) -> impl Iterator<Item = &(&'static str, Value)> {
+        self.values.iter()
+    }
+
+    pub fn get(&self, name: &str) -> Option<&Value> {
+        self.values.iter().find(|(n, _)| *n == name).map(|(_, v)| v)
+    }
+
+    /// The value of a declared parameter. The checker has filled in every
+    /// declared parameter, so a miss is a bug in the plugin, not bad input.
+    fn expect(&self, name: &str) -> &Value {
+        self.get(name)
+            .unwrap_or_else(|| panic!("plugin asked for undeclared option `{name}`"))
+    }
+
+    pub fn length_mm(&self, name: &str) -> f64 {
+        match self.expect(name) {
+            Value::Length(v) => *v,
+            v => panic!("option `{name}` is not a length: {v:?}"),
+        }
+    }
+
+    pub fn angle_rad(&self, name: &str) -> f64 {
+        match self.expect(name) {
+            Value::Angle(v) => *v,
+            v => panic!("option `{name}` is not an angle: {v:?}"),
+        }
+    }
+
+    pub fn number(&self, name: &str) -> f64 {
+        match self.expect(name) {
+            Value::Number(v) => *v,
+            v => panic!("option `{name}` is not a number: {v:?}"),
+        }
+    }
+
+    pub fn integer(&self, name: &str) -> i64 {
+        match self.expect(name) {
+            Value::Integer(v) => *v,
+            v => panic!("option `{name}` is not an integer: {v:?}"),
+        }
+    }
+
+    pub fn boolean(&self, name: &str) -> bool {
+        match self.expect(name) {
+            Value::Bool(v) => *v,
+            v => panic!("option `{name}` is not a bool: {v:?}"),
+        }
+    }
+
+    pub fn point_mm(&self, name: &str) -> Vector3<f64> {
+        match self.expect(name) {
+            Value::Point(v) => *v,
+            v => panic!("option `{name}` is not a point: {v:?}"),
+        }
+    }
+
+    pub fn plugin(&self, name: &str) -> &PluginConfig {
+        match self.expect(name) {
+            Value::Plugin(c) => c,
+            v => panic!("option `{name}` is not a plugin: {v:?}"),
+        }
+    }
+}

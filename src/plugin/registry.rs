@@ -1,0 +1,94 @@
+//! The one registry of plugins, by kind and name, in registration order.
+
+use std::sync::Arc;
+
+use super::{BasePlugin, FormatPlugin, ParamSpec, Plugin, PluginKind, SolverPlugin, TaskPlugin};
+
+/// Every plugin a run can use. [`Registry::builtin`] has the built-in ones;
+/// a program using the library can register its own.
+#[derive(Clone, Default)]
+pub struct Registry {
+    solvers: Vec<Arc<dyn SolverPlugin>>,
+    bases: Vec<Arc<dyn BasePlugin>>,
+    tasks: Vec<Arc<dyn TaskPlugin>>,
+    formats: Vec<Arc<dyn FormatPlugin>>,
+}
+
+/// Put `plugin` into `list`, replacing one of the same name.
+fn insert<T: ?Sized + Plugin>(list: &mut Vec<Arc<T>>, plugin: Arc<T>) {
+    match list.iter().position(|p| p.name() == plugin.name()) {
+        Some(i) => list[i] = plugin,
+        None => list.push(plugin),
+    }
+}
+
+fn find<'a, T: ?Sized + Plugin>(list: &'a [Arc<T>], name: &str) -> Option<&'a Arc<T>> {
+    list.iter().find(|p| p.name() == name)
+}
+
+impl Registry {
+    /// The built-in plugins.
+    pub fn builtin() -> Self {
+        let mut r = Registry::default();
+        r.register_solver(crate::solvers::Incremental);
+        r.register_base(crate::bases::Fixed);
+        r.register_task(crate::tasks::Reach);
+        r.register_format(crate::output::Text);
+        r.register_format(crate::output::Json);
+        r
+    }
+
+    pub fn register_solver(&mut self, p: impl SolverPlugin + 'static) {
+        insert(&mut self.solvers, Arc::new(p) as Arc<dyn SolverPlugin>);
+    }
+
+    pub fn register_base(&mut self, p: impl BasePlugin + 'static) {
+        insert(&mut self.bases, Arc::new(p) as Arc<dyn BasePlugin>);
+    }
+
+    pub fn register_task(&mut self, p: impl TaskPlugin + 'static) {
+        insert(&mut self.tasks, Arc::new(p) as Arc<dyn TaskPlugin>);
+    }
+
+    pub fn register_format(&mut self, p: impl FormatPlugin + 'static) {
+        insert(&mut self.formats, Arc::new(p) as Arc<dyn FormatPlugin>);
+    }
+
+    pub fn solver(&self, name: &str) -> Option<&Arc<dyn SolverPlugin>> {
+        find(&self.solvers, name)
+    }
+
+    pub fn base(&self, name: &str) -> Option<&Arc<dyn BasePlugin>> {
+        find(&self.bases, name)
+    }
+
+    pub fn task(&self, name: &str) -> Option<&Arc<dyn TaskPlugin>> {
+        find(&self.tasks, name)
+    }
+
+    pub fn format(&self, name: &str) -> Option<&Arc<dyn FormatPlugin>> {
+        find(&self.formats, name)
+    }
+
+    /// The plugins of one kind, in registration order, as plain plugins.
+    pub fn of_kind(&self, kind: PluginKind) -> Vec<&dyn Plugin> {
+        match kind {
+            PluginKind::Solver => self.solvers.iter().map(|p| p.as_ref() as &dyn Plugin).collect(),
+            PluginKind::Base => self.bases.iter().map(|p| p.as_ref() as &dyn Plugin).collect(),
+            PluginKind::Task => self.tasks.iter().map(|p| p.as_ref() as &dyn Plugin).collect(),
+            PluginKind::Format => self.formats.iter().map(|p| p.as_ref() as &dyn Plugin).collect(),
+        }
+    }
+
+    /// The declared parameters of plugin `name` of `kind`.
+    pub fn params(&self, kind: PluginKind, name: &str) -> Option<Vec<ParamSpec>> {
+        self.of_kind(kind)
+            .into_iter()
+            .find(|p| p.name() == name)
+            .map(|p| p.params())
+    }
+
+    pub fn names(&self, kind: PluginKind) -> Vec<&'static str> {
+        self.of_kind(kind).into_iter().map(|p| p.name()).collect()
+    }
+}

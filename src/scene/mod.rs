@@ -1,0 +1,85 @@
+//! The checked scenario: rooms with obstacles and targets, persons with
+//! their chains and bases, and the tasks to run. Everything here is
+//! resolved and in internal units (mm, rad); spans remain only where a run
+//! may still need to point back at the text.
+
+use nalgebra::{Point3, Vector3};
+
+use crate::kinematics::Chain;
+use crate::plugin::{Options, PluginConfig};
+use crate::span::Span;
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scenario {
+    /// The root file's name as given.
+    pub file: String,
+    pub rooms: Vec<Room>,
+    pub persons: Vec<Person>,
+    pub tasks: Vec<TaskSpec>,
+}
+
+impl Scenario {
+    pub fn person(&self, name: &str) -> Option<&Person> {
+        self.persons.iter().find(|p| p.name == name)
+    }
+
+    /// The target of this name and the room it is in.
+    pub fn target(&self, name: &str) -> Option<(&Room, &Target)> {
+        self.rooms
+            .iter()
+            .find_map(|r| r.targets.iter().find(|t| t.name == name).map(|t| (r, t)))
+    }
+}
+
+/// A room: the box from the origin to `size_mm`, x and y on the floor, z up.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Room {
+    pub name: String,
+    pub size_mm: Vector3<f64>,
+    pub boxes: Vec<BoxObstacle>,
+    pub targets: Vec<Target>,
+}
+
+impl Room {
+    pub fn contains(&self, p: &Point3<f64>) -> bool {
+        (0..3).all(|i| p[i] >= 0.0 && p[i] <= self.size_mm[i])
+    }
+}
+
+/// A box obstacle: `corner_mm` is its corner of least x, y and z before
+/// rotation; it is turned by `yaw_rad` about the vertical through that
+/// corner.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BoxObstacle {
+    pub name: String,
+    pub corner_mm: Point3<f64>,
+    pub size_mm: Vector3<f64>,
+    pub yaw_rad: f64,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Target {
+    pub name: String,
+    pub position_mm: Point3<f64>,
+}
+
+/// A person: the mannequin's chain with this person's limits, and a base.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Person {
+    pub name: String,
+    pub mannequin: String,
+    pub chain: Chain,
+    pub base: PluginConfig,
+}
+
+/// One task to run: a task plugin on one subject by one person.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TaskSpec {
+    /// The task plugin's name (`reach`).
+    pub kind: String,
+    /// The subject: a target name for reach.
+    pub subject: String,
+    pub person: String,
+    pub options: Options,
+    pub span: Span,
+}

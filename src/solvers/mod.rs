@@ -1,0 +1,5 @@
+//! Inverse kinematics solvers, each a plugin.
+
+mod incremental;
+
+pub use incremental::{Incremental, IncrementalSolver, IncrementalSettings};

@@ -1,0 +1,84 @@
+//! The files of one evaluation: the scenario file and everything it `use`s,
+//! with the names under which diagnostics show them.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use miette::NamedSource;
+
+use crate::span::FileId;
+
+/// Where a loaded file came from.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Origin {
+    /// A file on disk, by the path it was reached by.
+    Path(PathBuf),
+    /// A module of the embedded standard library, such as `std::arm`.
+    Std(String),
+    /// Text handed to the library directly (tests, fuzzing).
+    Memory,
+}
+
+/// One loaded file.
+#[derive(Debug)]
+pub struct SourceFile {
+    /// The name diagnostics show: the path as the user wrote it, or `std::x`.
+    pub name: String,
+    pub origin: Origin,
+    pub text: Arc<String>,
+}
+
+impl SourceFile {
+    /// The file as miette wants it for a diagnostic's source code.
+    pub fn named_source(&self) -> NamedSource<Arc<String>> {
+        NamedSource::new(self.name.clone(), Arc::clone(&self.text)).with_language("reach")
+    }
+}
+
+/// All files loaded for one evaluation, indexed by [`FileId`].
+#[derive(Debug, Default)]
+pub struct Sources {
+    files: Vec<SourceFile>,
+}
+
+impl Sources {
+    pub fn add(&mut self, name: String, origin: Origin, text: String) -> FileId {
+        let id = FileId(self.files.len() as u32);
+        self.files.push(SourceFile {
+            name,
+            origin,
+            text: Arc::new(text),
+        });
+        id
+    }
+
+    pub fn get(&self, id: FileId) -> &SourceFile {
+        &self.files[id.0 as usize]
+    }
+
+    pub fn len(&self) -> usize {
+        self.files.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.files.is_empty()
+    }
+
+    pub fn iter(&self) -> impl Iterator<Item = (FileId, &SourceFile)> {
+        self.files
+            .iter()
+            .enumerate()
+            .map(|(i, f)| (FileId(i as u32), f))
+    }
+
+    /// Paths of the files on disk that this evaluation read (for watch mode).
+    pub fn disk_paths(&self) -> Vec<PathBuf> {
+        self.files
+            .iter()
+            .filter_map(|f| match &f.origin {
+                Origin::Path(p) => Some(p.clone()),
+                _ => None,
+            })
+            .collect()
+    }
+}

@@ -1,0 +1,189 @@
+//! The syntax tree of one `.reach` file, as written: names unresolved,
+//! numbers unevaluated, every node with its span.
+
+use crate::span::{Name, Span, Spanned};
+use crate::units::Unit;
+
+/// One parsed file.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct File {
+    pub items: Vec<Item>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum Item {
+    Units(Vec<Spanned<Unit>>),
+    Use(Spanned<UseTarget>),
+    Let(LetDecl),
+    Room(RoomDecl),
+    Mannequin(MannequinDecl),
+    Person(PersonDecl),
+    Task(TaskDecl),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum UseTarget {
+    /// `use std::name`
+    Std(String),
+    /// `use "relative/path.reach"`
+    Path(String),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct LetDecl {
+    pub name: Name,
+    pub value: Expr,
+}
+
+/// An arithmetic expression.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Expr {
+    pub kind: ExprKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExprKind {
+    Number { value: f64, unit: Option<Unit> },
+    Name(String),
+    Neg(Box<Expr>),
+    Binary(BinOp, Box<Expr>, Box<Expr>),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BinOp {
+    Add,
+    Sub,
+    Mul,
+    Div,
+}
+
+/// `(x, y, z)`
+#[derive(Clone, Debug, PartialEq)]
+pub struct Vec3Expr {
+    pub parts: [Expr; 3],
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct RoomDecl {
+    pub name: Name,
+    pub items: Vec<RoomItem>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum RoomItem {
+    Size(Vec3Expr),
+    Box(BoxDecl),
+    Target(TargetDecl),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct BoxDecl {
+    pub name: Name,
+    pub at: Vec3Expr,
+    pub size: Vec3Expr,
+    pub rotate: Option<Expr>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct TargetDecl {
+    pub name: Name,
+    pub at: Vec3Expr,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct MannequinDecl {
+    pub name: Name,
+    pub joints: Vec<JointDecl>,
+    pub effectors: Vec<EffectorDecl>,
+    pub span: Span,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum JointKind {
+    Revolute,
+    Prismatic,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct JointDecl {
+    pub name: Name,
+    pub kind: JointKind,
+    /// `dh(theta .., d .., alpha .., a ..)`, parameter names as written.
+    pub dh: Vec<(Name, Expr)>,
+    pub dh_span: Span,
+    pub limits: Vec<LimitsExpr>,
+    pub neutral: Vec<Expr>,
+    pub weight: Vec<Expr>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct LimitsExpr {
+    pub min: Expr,
+    pub max: Expr,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct EffectorDecl {
+    pub name: Name,
+    pub at: Vec3Expr,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct PersonDecl {
+    pub name: Name,
+    pub mannequins: Vec<PersonMannequin>,
+    pub bases: Vec<PluginUse>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct PersonMannequin {
+    pub name: Name,
+    pub overrides: Vec<JointOverride>,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum JointOverride {
+    Limits { joint: Name, limits: LimitsExpr },
+    Neutral { joint: Name, value: Expr },
+    Weight { joint: Name, value: Expr },
+}
+
+/// A plugin by name with its option block: `incremental { rate 0.2 }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PluginUse {
+    pub name: Name,
+    pub options: Vec<OptionDecl>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct OptionDecl {
+    pub name: Name,
+    pub value: OptionValue,
+    pub value_span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum OptionValue {
+    Expr(Expr),
+    Vec3(Vec3Expr),
+    Bool(bool),
+    String(String),
+    Plugin(PluginUse),
+}
+
+/// `reach mug, kettle by anna { ... }`
+#[derive(Clone, Debug, PartialEq)]
+pub struct TaskDecl {
+    pub kind: Name,
+    /// Subjects as dotted paths (`mug`, `counter.top`).
+    pub subjects: Vec<Spanned<Vec<String>>>,
+    pub persons: Vec<Name>,
+    pub options: Vec<OptionDecl>,
+    pub span: Span,
+}

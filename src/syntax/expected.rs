@@ -1,0 +1,151 @@
+//! Parse errors in the user's words: what was expected (described, never as
+//! a grammar rule name) and what was found instead.
+
+use pest::error::{ErrorVariant, InputLocation};
+
+use super::parser::Rule;
+use crate::error::{Error, ErrorKind};
+use crate::span::{FileId, Span};
+
+/// What a rule looks like to a user, or `None` for rules a user never needs
+/// to hear of (their first token is described instead).
+fn describe(rule: Rule) -> Option<&'static str> {
+    use Rule::*;
+    Some(match rule {
+        EOI => "end of file",
+        file | WHITESPACE | COMMENT | line_comment | block_comment | item | ident_char | prefix | infix
+        | primary | room_item | mannequin_item | joint_prop | person_item | joint_override => return None,
+        ident | keyword => "a name",
+        number | quantity => "a number",
+        unit | bad_unit => "a unit",
+        string | string_inner => "a string in double quotes",
+        boolean => "`true` or `false`",
+        expr | neg => "an expression",
+        add | sub | mul | div => "an operator",
+        vec3 => "a point `(x, y, z)`",
+        units_decl | unit_word => "a unit (mm, cm, m, in, deg, rad, arcmin)",
+        use_decl | std_path => "`std::name` or a \"file.reach\" path",
+        let_decl => "`let`",
+        room => "`room`",
+        room_size | size_dims => "`size`",
+        box_decl => "`box`",
+        target_decl => "`target`",
+        mannequin => "`mannequin`",
+        joint_decl => "`joint`",
+        joint_kind => "`revolute` or `prismatic`",
+        dh => "`dh(...)`",
+        dh_param => "a DH parameter (theta, d, alpha, a)",
+        limits => "`limits(min, max)`",
+        neutral => "`neutral`",
+        weight => "`weight`",
+        effector_decl => "`effector`",
+        person => "`person`",
+        person_mannequin => "`mannequin`",
+        limit_override => "`limits`",
+        neutral_override => "`neutral`",
+        weight_override => "`weight`",
+        person_base => "`base`",
+        plugin_use | plugin_block => "a plugin name",
+        options => "an option block `{ ... }`",
+        option => "an option name",
+        option_value => "an option value",
+        task => "a declaration or task",
+        subject_list | subject => "a target name",
+        ident_list => "a person's name",
+    })
+}
+
+/// Convert a pest error into a diagnostic with a span on the offending text.
+pub(super) fn syntax_error(file: FileId, text: &str, e: pest::error::Error<Rule>) -> Error {
+    let pos = match e.location {
+        InputLocation::Pos(p) => p,
+        InputLocation::Span((s, _)) => s,
+    };
+    let mut expected: Vec<String> = Vec::new();
+    if let ErrorVariant::ParsingError { positives, .. } = &e.variant {
+        for r in positives {
+            if let Some(d) = describe(*r) {
+                push_unique(&mut expected, d.to_string());
+            }
+        }
+    }
+    if let Some(attempts) = e.parse_attempts() {
+        for token in attempts.expected_tokens() {
+            let token = token.to_string();
+            if is_visible_token(&token) {
+                push_unique(&mut expected, format!("`{token}`"));
+            }
+        }
+    }
+    collapse_item_starts(&mut expected);
+    if expected.is_empty() {
+        expected.push("valid syntax".to_string());
+    }
+    let (found, len) = found_at(text, pos);
+    Error::new(
+        ErrorKind::Syntax {
+            expected: join_or(&expected),
+            found,
+        },
+        Span::new(file, pos, pos + len),
+    )
+}
+
+/// Literal tokens worth naming: not comment or whitespace markers, not the
+/// keywords tried only to rule them out as names.
+fn is_visible_token(token: &str) -> bool {
+    let internal = matches!(token, "//" | "/*" | "*/" | "\\" | "\"" | "BUILTIN_RULE" | "E");
+    let range = token.contains("..");
+    !internal && !range && !token.trim().is_empty()
+}
+
+/// Where any top-level item may start, name one alternative for all of
+/// them rather than listing every keyword.
+fn collapse_item_starts(expected: &mut Vec<String>) {
+    const STARTS: [&str; 8] = ["`let`", "`room`", "`mannequin`", "`person`", "`units`", "`use`", "a name", "`_`"];
+    if !expected.iter().any(|e| e == "`room`") {
+        expected.retain(|e| e != "`_`");
+        return;
+    }
+    let at = expected.iter().position(|e| STARTS.contains(&e.as_str())).unwrap_or(0);
+    expected.retain(|e| !STARTS.contains(&e.as_str()));
+    let item = "a declaration (let, room, mannequin, person, units, use) or a task".to_string();
+    expected.insert(at.min(expected.len()), item);
+}
+
+fn push_unique(v: &mut Vec<String>, s: String) {
+    if !v.contains(&s) {
+        v.push(s);
+    }
+}
+
+fn join_or(items: &[String]) -> String {
+    match items {
+        [] => String::new(),
+        [one] => one.clone(),
+        [init @ .., last] => format!("{} or {}", init.join(", "), last),
+    }
+}
+
+/// The token at `pos`, described, and its length in bytes.
+fn found_at(text: &str, pos: usize) -> (String, usize) {
+    let rest = &text[pos.min(text.len())..];
+    let Some(first) = rest.chars().next() else {
+        return ("end of file".to_string(), 0);
+    };
+    let word_len: usize = rest
+        .char_indices()
+        .take_while(|(_, c)| c.is_alphanumeric() || *c == '_' || *c == '.')
+        .map(|(i, c)| i + c.len_utf8())
+        .last()
+        .unwrap_or(0);
+    if word_len > 0 {
+        let word: String = rest[..word_len].chars().take(40).collect();
+        return (format!("`{word}`"), word_len);
+    }
+    let shown = match first {
+        '\n' | '\r' => "end of line".to_string(),
+        c => format!("`{c}`"),
+    };
+    (shown, first.len_utf8())
+}

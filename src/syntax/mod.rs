@@ -1,0 +1,8 @@
+//! From text to syntax tree: the pest grammar (`grammar/reach.pest`), its
+//! conversion to the AST, and parse errors in words a user knows.
+
+pub mod ast;
+mod expected;
+mod parser;
+
+pub use parser::parse_file;

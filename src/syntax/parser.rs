@@ -1,0 +1,425 @@
+//! Turns the pairs of the pest grammar into the AST of [`super::ast`].
+
+use pest::iterators::Pair;
+use pest::pratt_parser::{Assoc, Op, PrattParser};
+use pest::Parser as _;
+use std::sync::LazyLock;
+use pest_derive::Parser;
+
+use super::ast::*;
+use super::expected::syntax_error;
+use crate::error::{Diagnostics, Error, ErrorKind};
+use crate::span::{FileId, Name, Span, Spanned};
+use crate::units::Unit;
+
+#[derive(Parser)]
+#[grammar = "../grammar/reach.pest"]
+pub(super) struct ReachParser;
+
+/// Largest magnitude a number literal may have: far beyond any room, far
+/// below where arithmetic in f64 loses whole millimetres.
+pub const MAX_LITERAL: f64 = 1e15;
+
+/// Parse one file. Syntax errors stop at the first; errors in literals
+/// (unknown units, numbers out of range) are all collected.
+pub fn parse_file(file: FileId, text: &str) -> Result<File, Diagnostics> {
+    pest::set_error_detail(true);
+    let mut pairs = ReachParser::parse(Rule::file, text)
+        .map_err(|e| Diagnostics::single(syntax_error(file, text, e)))?;
+    let root = pairs.next().expect("the file rule always yields one pair");
+    let mut builder = Builder {
+        file,
+        errors: Vec::new(),
+    };
+    let items = root
+        .into_inner()
+        .filter(|p| p.as_rule() != Rule::EOI)
+        .map(|p| builder.item(p))
+        .collect();
+    if builder.errors.is_empty() {
+        Ok(File { items })
+    } else {
+        Err(Diagnostics {
+            errors: builder.errors,
+        })
+    }
+}
+
+/// Operator precedence: unary minus binds tightest, then * and /, then
+/// + and -; all left-associative.
+static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
+    PrattParser::new()
+        .op(Op::infix(Rule::add, Assoc::Left) | Op::infix(Rule::sub, Assoc::Left))
+        .op(Op::infix(Rule::mul, Assoc::Left) | Op::infix(Rule::div, Assoc::Left))
+        .op(Op::prefix(Rule::neg))
+});
+
+struct Builder {
+    file: FileId,
+    errors: Vec<Error>,
+}
+
+impl Builder {
+    fn span(&self, pair: &Pair<Rule>) -> Span {
+        let s = pair.as_span();
+        Span::new(self.file, s.start(), s.end())
+    }
+
+    fn name(&self, pair: Pair<Rule>) -> Name {
+        Spanned::new(pair.as_str().to_string(), self.span(&pair))
+    }
+
+    fn item(&mut self, pair: Pair<Rule>) -> Item {
+        match pair.as_rule() {
+            Rule::units_decl => Item::Units(self.units(pair)),
+            Rule::use_decl => Item::Use(self.use_decl(pair)),
+            Rule::let_decl => {
+                let mut it = pair.into_inner();
+                let name = self.name(it.next().unwrap());
+                let value = self.expr(it.next().unwrap());
+                Item::Let(LetDecl { name, value })
+            }
+            Rule::room => Item::Room(self.room(pair)),
+            Rule::mannequin => Item::Mannequin(self.mannequin(pair)),
+            Rule::person => Item::Person(self.person(pair)),
+            Rule::task => Item::Task(self.task(pair)),
+            r => unreachable!("item rule {r:?}"),
+        }
+    }
+
+    fn units(&mut self, pair: Pair<Rule>) -> Vec<Spanned<Unit>> {
+        let mut units = Vec::new();
+        for word in pair.into_inner() {
+            let span = self.span(&word);
+            match Unit::parse(word.as_str()) {
+                Some(u) => units.push(Spanned::new(u, span)),
+                None => self.errors.push(Error::new(
+                    ErrorKind::UnknownUnit {
+                        unit: word.as_str().to_string(),
+                    },
+                    span,
+                )),
+            }
+        }
+        units
+    }
+
+    fn use_decl(&mut self, pair: Pair<Rule>) -> Spanned<UseTarget> {
+        let span = self.span(&pair);
+        let inner = pair.into_inner().next().unwrap();
+        let target = match inner.as_rule() {
+            Rule::std_path => UseTarget::Std(inner.into_inner().next().unwrap().as_str().to_string()),
+            _ => UseTarget::Path(unescape(inner.into_inner().next().unwrap().as_str())),
+        };
+        Spanned::new(target, span)
+    }
+
+    fn expr(&mut self, pair: Pair<Rule>) -> Expr {
+        let pairs = pair.into_inner();
+        let file = self.file;
+        let span_of = move |p: &Pair<Rule>| Span::new(file, p.as_span().start(), p.as_span().end());
+        let expr = PRATT
+            .map_primary(|p| self.primary(p))
+            .map_prefix(|op, rhs| {
+                let span = span_of(&op).to(rhs.span);
+                Expr {
+                    kind: ExprKind::Neg(Box::new(rhs)),
+                    span,
+                }
+            })
+            .map_infix(|lhs, op, rhs| {
+                let op = match op.as_rule() {
+                    Rule::add => BinOp::Add,
+                    Rule::sub => BinOp::Sub,
+                    Rule::mul => BinOp::Mul,
+                    _ => BinOp::Div,
+                };
+                let span = lhs.span.to(rhs.span);
+                Expr {
+                    kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)),
+                    span,
+                }
+            })
+            .parse(pairs);
+        expr
+    }
+
+    fn primary(&mut self, pair: Pair<Rule>) -> Expr {
+        let span = self.span(&pair);
+        let kind = match pair.as_rule() {
+            Rule::quantity => self.quantity(pair),
+            Rule::ident => ExprKind::Name(pair.as_str().to_string()),
+            Rule::expr => return self.expr(pair),
+            r => unreachable!("primary rule {r:?}"),
+        };
+        Expr { kind, span }
+    }
+
+    fn quantity(&mut self, pair: Pair<Rule>) -> ExprKind {
+        let mut it = pair.into_inner();
+        let number = it.next().unwrap();
+        let text = number.as_str();
+        let value: f64 = text.parse().unwrap_or(f64::INFINITY);
+        if !value.is_finite() || value.abs() > MAX_LITERAL {
+            self.errors.push(Error::new(
+                ErrorKind::BadNumber {
+                    text: text.to_string(),
+                },
+                self.span(&number),
+            ));
+        }
+        let unit = match it.next() {
+            None => None,
+            Some(u) if u.as_rule() == Rule::unit => Unit::parse(u.as_str()),
+            Some(bad) => {
+                self.errors.push(Error::new(
+                    ErrorKind::UnknownUnit {
+                        unit: bad.as_str().to_string(),
+                    },
+                    self.span(&bad),
+                ));
+                None
+            }
+        };
+        ExprKind::Number { value, unit }
+    }
+
+    fn vec3(&mut self, pair: Pair<Rule>) -> Vec3Expr {
+        let span = self.span(&pair);
+        let mut it = pair.into_inner();
+        let mut next = || it.next().unwrap();
+        let (a, b, c) = (next(), next(), next());
+        Vec3Expr {
+            parts: [self.expr(a), self.expr(b), self.expr(c)],
+            span,
+        }
+    }
+
+    fn room(&mut self, pair: Pair<Rule>) -> RoomDecl {
+        let span = self.span(&pair);
+        let mut it = pair.into_inner();
+        let name = self.name(it.next().unwrap());
+        let items = it.map(|p| self.room_item(p)).collect();
+        RoomDecl { name, items, span }
+    }
+
+    fn room_item(&mut self, pair: Pair<Rule>) -> RoomItem {
+        match pair.as_rule() {
+            Rule::room_size => {
+                // `(x, y, z)` or `x x y x z`: both hold three expressions.
+                let inner = pair.into_inner().next().unwrap();
+                RoomItem::Size(self.vec3(inner))
+            }
+            Rule::box_decl => {
+                let mut it = pair.into_inner();
+                let name = self.name(it.next().unwrap());
+                let at = self.vec3(it.next().unwrap());
+                let size = self.vec3(it.next().unwrap());
+                let rotate = it.next().map(|p| self.expr(p));
+                RoomItem::Box(BoxDecl {
+                    name,
+                    at,
+                    size,
+                    rotate,
+                })
+            }
+            Rule::target_decl => {
+                let mut it = pair.into_inner();
+                let name = self.name(it.next().unwrap());
+                let at = self.vec3(it.next().unwrap());
+                RoomItem::Target(TargetDecl { name, at })
+            }
+            r => unreachable!("room item {r:?}"),
+        }
+    }
+
+    fn mannequin(&mut self, pair: Pair<Rule>) -> MannequinDecl {
+        let span = self.span(&pair);
+        let mut it = pair.into_inner();
+        let name = self.name(it.next().unwrap());
+        let mut joints = Vec::new();
+        let mut effectors = Vec::new();
+        for p in it {
+            match p.as_rule() {
+                Rule::joint_decl => joints.push(self.joint(p)),
+                _ => {
+                    let mut e = p.into_inner();
+                    let name = self.name(e.next().unwrap());
+                    let at = self.vec3(e.next().unwrap());
+                    effectors.push(EffectorDecl { name, at });
+                }
+            }
+        }
+        MannequinDecl {
+            name,
+            joints,
+            effectors,
+            span,
+        }
+    }
+
+    fn joint(&mut self, pair: Pair<Rule>) -> JointDecl {
+        let mut it = pair.into_inner();
+        let name = self.name(it.next().unwrap());
+        let mut joint = JointDecl {
+            name,
+            kind: JointKind::Revolute,
+            dh: Vec::new(),
+            dh_span: Span::default(),
+            limits: Vec::new(),
+            neutral: Vec::new(),
+            weight: Vec::new(),
+        };
+        for p in it {
+            match p.as_rule() {
+                Rule::joint_kind if p.as_str() == "prismatic" => joint.kind = JointKind::Prismatic,
+                Rule::joint_kind => joint.kind = JointKind::Revolute,
+                Rule::dh => {
+                    joint.dh_span = self.span(&p);
+                    for param in p.into_inner() {
+                        let mut kv = param.into_inner();
+                        let key = self.name(kv.next().unwrap());
+                        let value = self.expr(kv.next().unwrap());
+                        joint.dh.push((key, value));
+                    }
+                }
+                Rule::limits => joint.limits.push(self.limits(p)),
+                Rule::neutral => joint.neutral.push(self.expr(p.into_inner().next().unwrap())),
+                Rule::weight => joint.weight.push(self.expr(p.into_inner().next().unwrap())),
+                r => unreachable!("joint part {r:?}"),
+            }
+        }
+        joint
+    }
+
+    /// `limits(min, max)`, from the pair whose inner pairs end with the two
+    /// expressions.
+    fn limits(&mut self, pair: Pair<Rule>) -> LimitsExpr {
+        let span = self.span(&pair);
+        let exprs: Vec<Pair<Rule>> = pair.into_inner().filter(|p| p.as_rule() == Rule::expr).collect();
+        let mut it = exprs.into_iter();
+        let min = self.expr(it.next().unwrap());
+        let max = self.expr(it.next().unwrap());
+        LimitsExpr { min, max, span }
+    }
+
+    fn person(&mut self, pair: Pair<Rule>) -> PersonDecl {
+        let span = self.span(&pair);
+        let mut it = pair.into_inner();
+        let name = self.name(it.next().unwrap());
+        let mut person = PersonDecl {
+            name,
+            mannequins: Vec::new(),
+            bases: Vec::new(),
+            span,
+        };
+        for p in it {
+            match p.as_rule() {
+                Rule::person_mannequin => {
+                    let mut m = p.into_inner();
+                    let name = self.name(m.next().unwrap());
+                    let overrides = m.map(|o| self.joint_override(o)).collect();
+                    person.mannequins.push(PersonMannequin { name, overrides });
+                }
+                _ => {
+                    let plugin = p.into_inner().next().unwrap();
+                    person.bases.push(self.plugin_use(plugin));
+                }
+            }
+        }
+        person
+    }
+
+    fn joint_override(&mut self, pair: Pair<Rule>) -> JointOverride {
+        let rule = pair.as_rule();
+        if rule == Rule::limit_override {
+            let joint = self.name(pair.clone().into_inner().next().unwrap());
+            let limits = self.limits(pair);
+            return JointOverride::Limits { joint, limits };
+        }
+        let mut it = pair.into_inner();
+        let joint = self.name(it.next().unwrap());
+        let value = self.expr(it.next().unwrap());
+        match rule {
+            Rule::neutral_override => JointOverride::Neutral { joint, value },
+            _ => JointOverride::Weight { joint, value },
+        }
+    }
+
+    fn plugin_use(&mut self, pair: Pair<Rule>) -> PluginUse {
+        let span = self.span(&pair);
+        let mut it = pair.into_inner();
+        let name = self.name(it.next().unwrap());
+        let options = it.next().map(|o| self.options(o)).unwrap_or_default();
+        PluginUse {
+            name,
+            options,
+            span,
+        }
+    }
+
+    fn options(&mut self, pair: Pair<Rule>) -> Vec<OptionDecl> {
+        pair.into_inner()
+            .map(|opt| {
+                let mut it = opt.into_inner();
+                let name = self.name(it.next().unwrap());
+                let value_pair = it.next().unwrap();
+                let value_span = self.span(&value_pair);
+                let v = value_pair.into_inner().next().unwrap();
+                let value = match v.as_rule() {
+                    Rule::vec3 => OptionValue::Vec3(self.vec3(v)),
+                    Rule::plugin_block => OptionValue::Plugin(self.plugin_use(v)),
+                    Rule::boolean => OptionValue::Bool(v.as_str() == "true"),
+                    Rule::string => OptionValue::String(unescape(v.into_inner().next().unwrap().as_str())),
+                    _ => OptionValue::Expr(self.expr(v)),
+                };
+                OptionDecl {
+                    name,
+                    value,
+                    value_span,
+                }
+            })
+            .collect()
+    }
+
+    fn task(&mut self, pair: Pair<Rule>) -> TaskDecl {
+        let span = self.span(&pair);
+        let mut it = pair.into_inner();
+        let kind = self.name(it.next().unwrap());
+        let subjects = it
+            .next()
+            .unwrap()
+            .into_inner()
+            .map(|s| {
+                let span = self.span(&s);
+                let path = s.into_inner().map(|p| p.as_str().to_string()).collect();
+                Spanned::new(path, span)
+            })
+            .collect();
+        let persons = it.next().unwrap().into_inner().map(|p| self.name(p)).collect();
+        let options = it.next().map(|o| self.options(o)).unwrap_or_default();
+        TaskDecl {
+            kind,
+            subjects,
+            persons,
+            options,
+            span,
+        }
+    }
+}
+
+/// The text of a string literal: `\x` stands for `x`.
+fn unescape(raw: &str) -> String {
+    let mut out = String::with_capacity(raw.len());
+    let mut chars = raw.chars();
+    while let Some(c) = chars.next() {
+        if c == '\\' {
+            if let Some(n) = chars.next() {
+                out.push(n);
+            }
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}

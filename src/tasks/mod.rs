@@ -1,0 +1,5 @@
+//! Tasks: what a scenario asks of a person, each a plugin.
+
+mod reach;
+
+pub use reach::Reach;
