@@ -133,7 +133,8 @@ impl ErrorKind {
     pub fn label(&self) -> String {
         use ErrorKind::*;
         match self {
-            Syntax { expected, .. } => format!("expected {expected}"),
+            Syntax { expected, .. } if expected.len() <= 40 => format!("expected {expected}"),
+            Syntax { .. } => "unexpected here".into(),
             UnknownUnit { .. } => "not a unit".into(),
             BadNumber { .. } => "too large or malformed".into(),
             UnitsRepeated { .. } => "second unit of this kind".into(),
@@ -180,7 +181,6 @@ impl ErrorKind {
             UnknownName { suggestion, .. } => suggestion.as_ref().map(|s| format!("did you mean `{s}`?")),
             Dimension { expected, .. } => Some(format!("write {expected}, such as {}", example_of(expected))),
             Operands { .. } => Some("both sides of + and - must have the same kind of unit".into()),
-            OutOfRange { bound, .. } => Some(format!("use a value {bound}")),
             TargetOutsideRoom { bounds, .. } => Some(format!("the room spans {bounds}")),
             MixedDefaults => Some("write the units on these numbers".into()),
             Unsupported { help, .. } => Some(help.clone()),

@@ -1,13 +1,19 @@
 //! Did-you-mean suggestions for unknown names.
 
 /// The candidate closest to `name`, if one is close enough to be a likely
-/// typo (Jaro-Winkler similarity of at least 0.8).
+/// typo: at most one edit (a swap of two letters counts as one) per three
+/// letters, or a Jaro-Winkler similarity of at least 0.9 (a shared prefix).
+/// Ties go to the alphabetically first candidate, so the advice is stable.
 pub fn suggest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<String> {
+    let max_edits = (name.chars().count() / 3).max(1);
     candidates
         .into_iter()
-        .map(|c| (strsim::jaro_winkler(name, c), c))
-        .filter(|(score, _)| *score >= 0.8)
-        .max_by(|a, b| a.0.total_cmp(&b.0).then_with(|| b.1.cmp(a.1)))
+        .filter_map(|c| {
+            let edits = strsim::osa_distance(name, c);
+            let close = edits <= max_edits || strsim::jaro_winkler(name, c) >= 0.9;
+            close.then_some((edits, c))
+        })
+        .min_by(|a, b| a.0.cmp(&b.0).then_with(|| a.1.cmp(b.1)))
         .map(|(_, c)| c.to_string())
 }
 
@@ -19,6 +25,8 @@ mod tests {
     fn suggests_the_closest_name() {
         assert_eq!(suggest("mgu", ["mug", "plate", "kettle"]), Some("mug".into()));
         assert_eq!(suggest("incremantal", ["incremental", "dls"]), Some("incremental".into()));
+        assert_eq!(suggest("shoulder_flex", ["shoulder_flexion", "elbow_flexion"]), Some("shoulder_flexion".into()));
+        assert_eq!(suggest("arms", ["arm", "leg"]), Some("arm".into()));
     }
 
     #[test]

@@ -136,7 +136,7 @@ impl Checker<'_> {
         let mut ok = true;
         for (i, part) in v.parts.iter().enumerate() {
             if size[i] <= 0.0 {
-                self.out_of_range(part.span, what, "positive", &format!("{} mm", fmt_num(size[i])));
+                self.out_of_range(part.span, what, "greater than zero", &format!("{} mm", fmt_num(size[i])));
                 ok = false;
             }
         }

@@ -97,5 +97,5 @@ fn detail(out: &mut String, r: &ReachReport) {
         r.name, r.person, r.solver, b.kind, b.x_mm, b.y_mm, b.z_mm, b.heading_deg
     );
     let posture: Vec<String> = r.posture.0.iter().map(|(j, v)| format!("{j} {v:.1}")).collect();
-    let _ = writeln!(out, "  posture: {}", posture.join(", "));
+    let _ = writeln!(out, "  posture (deg): {}", posture.join(", "));
 }

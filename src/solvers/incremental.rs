@@ -4,8 +4,9 @@
 //! and the joint stays within its limits. With sign memory the direction
 //! that worked last is tried first; when a sweep over all joints improves
 //! the distance by less than `threshold`, the rate is divided by `gamma`
-//! (eq. 2). Several seeded random starts are solved and the kept solution is
-//! the most comfortable of those that reach (section 5.3.4).
+//! (eq. 2). Several starts (the neutral posture, then seeded random ones) are
+//! solved and the kept solution is the most comfortable of those that reach
+//! (section 5.3.4).
 
 use rand_chacha::rand_core::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -25,6 +26,7 @@ pub struct IncrementalSettings {
     pub min_rate: f64,
     pub sign_memory: bool,
     pub starts: u32,
+    pub neutral_start: bool,
     pub max_sweeps: u32,
 }
 
@@ -48,6 +50,7 @@ impl Plugin for Incremental {
             ParamSpec::boolean("sign_memory", true, "try first the direction that last worked for each joint"),
             ParamSpec::integer("starts", 6, "random starts; the most comfortable reaching solution is kept")
                 .range(1.0, 1000.0),
+            ParamSpec::boolean("neutral_start", true, "the first start is the neutral posture, the others random"),
             ParamSpec::integer("max_sweeps", 1000, "stop after this many sweeps over all joints").range(1.0, 1e6),
         ]
     }
@@ -63,6 +66,7 @@ impl SolverPlugin for Incremental {
                 min_rate: o.number("min_rate"),
                 sign_memory: o.boolean("sign_memory"),
                 starts: o.integer("starts") as u32,
+                neutral_start: o.boolean("neutral_start"),
                 max_sweeps: o.integer("max_sweeps") as u32,
             },
         })
@@ -78,8 +82,12 @@ impl Solver for IncrementalSolver {
     fn solve(&self, problem: &IkProblem<'_>) -> IkSolution {
         let mut rng = ChaCha8Rng::seed_from_u64(problem.seed);
         let mut best: Option<(IkSolution, f64)> = None;
-        for _ in 0..self.settings.starts {
-            let start = random_posture(problem.chain, &mut rng);
+        for k in 0..self.settings.starts {
+            let start = if k == 0 && self.settings.neutral_start {
+                problem.chain.neutral()
+            } else {
+                random_posture(problem.chain, &mut rng)
+            };
             let solution = self.descend(problem, start);
             let reached = solution.distance_mm <= problem.tolerance_mm;
             let comfort = problem.chain.discomfort(&solution.q);

@@ -13,7 +13,7 @@ fn describe(rule: Rule) -> Option<&'static str> {
     use Rule::*;
     Some(match rule {
         EOI => "end of file",
-        file | WHITESPACE | COMMENT | line_comment | block_comment | item | ident_char | prefix | infix
+        file | inline_space | WHITESPACE | COMMENT | line_comment | block_comment | item | ident_char | prefix | infix
         | primary | room_item | mannequin_item | joint_prop | person_item | joint_override => return None,
         ident | keyword => "a name",
         number | quantity => "a number",
@@ -23,8 +23,10 @@ fn describe(rule: Rule) -> Option<&'static str> {
         expr | neg => "an expression",
         add | sub | mul | div => "an operator",
         vec3 => "a point `(x, y, z)`",
-        units_decl | unit_word => "a unit (mm, cm, m, in, deg, rad, arcmin)",
-        use_decl | std_path => "`std::name` or a \"file.reach\" path",
+        units_decl => "`units`",
+        unit_word => "a unit (mm, cm, m, in, deg, rad, arcmin)",
+        use_decl => "`use`",
+        std_path => "`std::name` or a \"file.reach\" path",
         let_decl => "`let`",
         room => "`room`",
         room_size | size_dims => "`size`",
@@ -78,10 +80,13 @@ pub(super) fn syntax_error(file: FileId, text: &str, e: pest::error::Error<Rule>
         }
     }
     collapse_item_starts(&mut expected);
+    collapse_number_continuations(&mut expected);
     if expected.is_empty() {
         expected.push("valid syntax".to_string());
     }
     let (found, len) = found_at(text, pos);
+    // At the end of the file, point at the last token so the label shows.
+    let (pos, len) = if len == 0 { last_token(text) } else { (pos, len) };
     Error::new(
         ErrorKind::Syntax {
             expected: join_or(&expected),
@@ -109,8 +114,26 @@ fn collapse_item_starts(expected: &mut Vec<String>) {
     }
     let at = expected.iter().position(|e| STARTS.contains(&e.as_str())).unwrap_or(0);
     expected.retain(|e| !STARTS.contains(&e.as_str()));
-    let item = "a declaration (let, room, mannequin, person, units, use) or a task".to_string();
+    let item = "the next declaration".to_string();
     expected.insert(at.min(expected.len()), item);
+}
+
+/// After a number, a unit or an operator may follow; name the operators
+/// once, and mention units only when nothing else would do.
+fn collapse_number_continuations(expected: &mut Vec<String>) {
+    const UNITS: [&str; 7] = ["`mm`", "`cm`", "`m`", "`in`", "`deg`", "`rad`", "`arcmin`"];
+    const OPERATORS: [&str; 4] = ["`+`", "`-`", "`*`", "`/`"];
+    let had_operator = expected
+        .iter()
+        .any(|e| OPERATORS.contains(&e.as_str()) || e == "an operator");
+    expected.retain(|e| !OPERATORS.contains(&e.as_str()) && e != "an operator" && e != "`.`");
+    let is_unit = |e: &String| UNITS.contains(&e.as_str()) || e == "a unit";
+    if expected.iter().any(|e| !is_unit(e)) || had_operator {
+        expected.retain(|e| !is_unit(e));
+    }
+    if had_operator {
+        expected.push("an operator".to_string());
+    }
 }
 
 fn push_unique(v: &mut Vec<String>, s: String) {
@@ -125,6 +148,15 @@ fn join_or(items: &[String]) -> String {
         [one] => one.clone(),
         [init @ .., last] => format!("{} or {}", init.join(", "), last),
     }
+}
+
+/// The start and length of the last character that is not white space.
+fn last_token(text: &str) -> (usize, usize) {
+    text.char_indices()
+        .rev()
+        .find(|(_, c)| !c.is_whitespace())
+        .map(|(i, c)| (i, c.len_utf8()))
+        .unwrap_or((0, 0))
 }
 
 /// The token at `pos`, described, and its length in bytes.

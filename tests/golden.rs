@@ -1,0 +1,52 @@
+//! Golden files: every `examples/*.reach` is run and its JSON report
+//! compared with `tests/snapshots/golden__report@NAME.snap`; every
+//! `tests/errors/*.reach` is checked and its rendered diagnostics (no
+//! colour, fixed width) compared with `golden__diagnostics@NAME.snap`.
+//!
+//! After an intended change, update the expected files with
+//! `INSTA_UPDATE=always cargo test --test golden` and review the diff.
+
+use std::path::Path;
+
+use reach::plugin::Registry;
+use reach::Input;
+
+/// The path relative to the crate root, so snapshots name files the same
+/// on every machine.
+fn relative(path: &Path) -> &Path {
+    path.strip_prefix(env!("CARGO_MANIFEST_DIR")).unwrap_or(path)
+}
+
+fn json_report(path: &Path) -> String {
+    let registry = Registry::builtin();
+    let (_, checked) = reach::check(Input::Path(relative(path)), &registry);
+    let scenario = match checked {
+        Ok(s) => s,
+        Err(d) => panic!("{} does not check:\n{}", path.display(), d.render(true)),
+    };
+    let report = reach::run(&scenario, &registry);
+    registry.format("json").unwrap().render(&report)
+}
+
+fn diagnostics(path: &Path) -> String {
+    let registry = Registry::builtin();
+    let (_, checked) = reach::check(Input::Path(relative(path)), &registry);
+    match checked {
+        Ok(_) => panic!("{} checks without error, but is under tests/errors", path.display()),
+        Err(d) => d.render(true),
+    }
+}
+
+#[test]
+fn example_reports() {
+    insta::glob!("../examples", "*.reach", |path| {
+        insta::assert_snapshot!("report", json_report(path));
+    });
+}
+
+#[test]
+fn error_diagnostics() {
+    insta::glob!("errors", "*.reach", |path| {
+        insta::assert_snapshot!("diagnostics", diagnostics(path));
+    });
+}
