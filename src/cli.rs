@@ -9,7 +9,11 @@ use reach::plugin::{PluginKind, Registry};
 use reach::{Diagnostics, Error, ErrorKind, Input};
 
 #[derive(Parser)]
-#[command(name = "reach", version, about = "Can this person reach and see the things in this room?")]
+#[command(
+    name = "reach",
+    version,
+    about = "Can this person reach and see the things in this room?"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -65,7 +69,10 @@ fn run(registry: &Registry, file: &Path, format: &str, out: Option<&Path>) -> i3
     };
     let report = reach::run(&scenario, registry);
     if let Some(dir) = out {
-        let json = registry.format("json").expect("json is built in").render(&report);
+        let json = registry
+            .format("json")
+            .expect("json is built in")
+            .render(&report);
         if let Err(e) = write_atomically(&dir.join("report.json"), json.as_bytes()) {
             return report_diagnostics(&Diagnostics::single(e));
         }

@@ -149,7 +149,7 @@ impl ErrorKind {
             Operands { .. } => "incompatible units".into(),
             DivisionByZero => "this is zero".into(),
             NotFinite => "overflows".into(),
-            OutOfRange { value, .. } => format!("{value}"),
+            OutOfRange { value, .. } => value.clone(),
             LimitsReversed { .. } => "min > max".into(),
             Missing { what, .. } => format!("no {what} given here"),
             Repeated { .. } => "given again here".into(),
@@ -222,52 +222,65 @@ fn example_of(expected: &str) -> &'static str {
     }
 }
 
-/// One diagnostic: a kind, where it is, and extra labelled places.
+/// One diagnostic: a kind, where it is, and extra labelled places. Boxed,
+/// so that a `Result` carrying one stays small.
 #[derive(Clone, Debug)]
-pub struct Error {
-    pub kind: ErrorKind,
-    pub span: Option<Span>,
+pub struct Error(Box<ErrorData>);
+
+#[derive(Clone, Debug)]
+struct ErrorData {
+    kind: ErrorKind,
+    span: Option<Span>,
     /// Further labels in the same file, such as "first defined here".
-    pub notes: Vec<(Span, String)>,
+    notes: Vec<(Span, String)>,
     source: Option<NamedSource<Arc<String>>>,
 }
 
 impl Error {
     pub fn new(kind: ErrorKind, span: Span) -> Self {
-        Error {
+        Error(Box::new(ErrorData {
             kind,
             span: Some(span),
             notes: Vec::new(),
             source: None,
-        }
+        }))
     }
 
     /// An error that belongs to no place in a file (a missing input file).
     pub fn unplaced(kind: ErrorKind) -> Self {
-        Error {
+        Error(Box::new(ErrorData {
             kind,
             span: None,
             notes: Vec::new(),
             source: None,
-        }
+        }))
     }
 
     pub fn with_note(mut self, span: Span, text: impl Into<String>) -> Self {
-        self.notes.push((span, text.into()));
+        self.0.notes.push((span, text.into()));
         self
+    }
+
+    pub fn kind(&self) -> &ErrorKind {
+        &self.0.kind
+    }
+
+    /// Where the error is, if it is in a file.
+    pub fn span(&self) -> Option<Span> {
+        self.0.span
     }
 
     /// The file name this error points into, once sources are attached.
     pub fn file_name(&self) -> Option<&str> {
-        self.source.as_ref().map(|s| s.name())
+        self.0.source.as_ref().map(|s| s.name())
     }
 
     fn attach(&mut self, sources: &Sources) {
-        if let Some(span) = self.span {
+        let data = &mut *self.0;
+        if let Some(span) = data.span {
             if (span.file.0 as usize) < sources.len() {
-                self.source = Some(sources.get(span.file).named_source());
-                let file = span.file;
-                self.notes.retain(|(s, _)| s.file == file);
+                data.source = Some(sources.get(span.file).named_source());
+                data.notes.retain(|(s, _)| s.file == span.file);
             }
         }
     }
@@ -275,7 +288,7 @@ impl Error {
 
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        self.kind.fmt(f)
+        self.0.kind.fmt(f)
     }
 }
 
@@ -283,22 +296,26 @@ impl std::error::Error for Error {}
 
 impl Diagnostic for Error {
     fn code<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
-        Some(Box::new(self.kind.code()))
+        Some(Box::new(self.0.kind.code()))
     }
 
     fn help<'a>(&'a self) -> Option<Box<dyn fmt::Display + 'a>> {
-        self.kind.help().map(|h| Box::new(h) as Box<dyn fmt::Display>)
+        self.0
+            .kind
+            .help()
+            .map(|h| Box::new(h) as Box<dyn fmt::Display>)
     }
 
     fn source_code(&self) -> Option<&dyn SourceCode> {
-        self.source.as_ref().map(|s| s as &dyn SourceCode)
+        self.0.source.as_ref().map(|s| s as &dyn SourceCode)
     }
 
     fn labels(&self) -> Option<Box<dyn Iterator<Item = LabeledSpan> + '_>> {
-        let span = self.span?;
-        self.source.as_ref()?;
-        let primary = LabeledSpan::new_primary_with_span(Some(self.kind.label()), span);
+        let span = self.0.span?;
+        self.0.source.as_ref()?;
+        let primary = LabeledSpan::new_primary_with_span(Some(self.0.kind.label()), span);
         let notes = self
+            .0
             .notes
             .iter()
             .map(|(s, text)| LabeledSpan::new_with_span(Some(text.clone()), *s));
@@ -334,7 +351,7 @@ impl Diagnostics {
             e.attach(sources);
         }
         self.errors
-            .sort_by_key(|e| e.span.map(|s| (s.file, s.start, s.end)));
+            .sort_by_key(|e| e.span().map(|s| (s.file, s.start, s.end)));
         self
     }
 

@@ -60,7 +60,9 @@ pub fn run(scenario: &Scenario, registry: &Registry) -> Report {
         .tasks
         .par_iter()
         .map(|task| {
-            let plugin = registry.task(&task.kind).expect("the checker resolved every task kind");
+            let plugin = registry
+                .task(&task.kind)
+                .expect("the checker resolved every task kind");
             plugin.run(&TaskContext {
                 scenario,
                 task,

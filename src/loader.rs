@@ -91,7 +91,13 @@ impl Loader {
             },
             Err(e) => {
                 let reason = e.kind().to_string();
-                return self.fail(ErrorKind::ReadFile { path: shown, reason }, used_at);
+                return self.fail(
+                    ErrorKind::ReadFile {
+                        path: shown,
+                        reason,
+                    },
+                    used_at,
+                );
             }
         };
         let id = self

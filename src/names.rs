@@ -23,9 +23,18 @@ mod tests {
 
     #[test]
     fn suggests_the_closest_name() {
-        assert_eq!(suggest("mgu", ["mug", "plate", "kettle"]), Some("mug".into()));
-        assert_eq!(suggest("incremantal", ["incremental", "dls"]), Some("incremental".into()));
-        assert_eq!(suggest("shoulder_flex", ["shoulder_flexion", "elbow_flexion"]), Some("shoulder_flexion".into()));
+        assert_eq!(
+            suggest("mgu", ["mug", "plate", "kettle"]),
+            Some("mug".into())
+        );
+        assert_eq!(
+            suggest("incremantal", ["incremental", "dls"]),
+            Some("incremental".into())
+        );
+        assert_eq!(
+            suggest("shoulder_flex", ["shoulder_flexion", "elbow_flexion"]),
+            Some("shoulder_flexion".into())
+        );
         assert_eq!(suggest("arms", ["arm", "leg"]), Some("arm".into()));
     }
 

@@ -1,6 +1,8 @@
 //! Source locations: which file, which bytes. Spans ride along on syntax
 //! nodes so that every diagnostic can point at the text it is about, but
-//! they never take part in equality (`Spanned` compares only its value).
+//! they never take part in equality: any two spans compare equal, so syntax
+//! trees compare by content whatever their layout. To compare places,
+//! compare the fields.
 
 use std::fmt;
 
@@ -9,7 +11,7 @@ use std::fmt;
 pub struct FileId(pub u32);
 
 /// A byte range `start..end` in one file.
-#[derive(Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[derive(Clone, Copy, Default)]
 pub struct Span {
     pub file: FileId,
     pub start: u32,
@@ -43,6 +45,20 @@ impl Span {
     }
 }
 
+/// Every span equals every other: spans are where a value came from, never
+/// part of what it is.
+impl PartialEq for Span {
+    fn eq(&self, _: &Span) -> bool {
+        true
+    }
+}
+
+impl Eq for Span {}
+
+impl std::hash::Hash for Span {
+    fn hash<H: std::hash::Hasher>(&self, _: &mut H) {}
+}
+
 impl fmt::Debug for Span {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}:{}..{}", self.file.0, self.start, self.end)
@@ -56,8 +72,8 @@ impl From<Span> for miette::SourceSpan {
 }
 
 /// A value with the span of the text it came from. Equality and hashing look
-/// at the value only, so parsed trees compare equal whatever their layout.
-#[derive(Clone, Copy, Debug)]
+/// at the value only, as for every span.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Spanned<T> {
     pub value: T,
     pub span: Span,
@@ -66,20 +82,6 @@ pub struct Spanned<T> {
 impl<T> Spanned<T> {
     pub fn new(value: T, span: Span) -> Self {
         Spanned { value, span }
-    }
-}
-
-impl<T: PartialEq> PartialEq for Spanned<T> {
-    fn eq(&self, other: &Self) -> bool {
-        self.value == other.value
-    }
-}
-
-impl<T: Eq> Eq for Spanned<T> {}
-
-impl<T: std::hash::Hash> std::hash::Hash for Spanned<T> {
-    fn hash<H: std::hash::Hasher>(&self, state: &mut H) {
-        self.value.hash(state)
     }
 }
 
@@ -92,3 +94,16 @@ impl<T> std::ops::Deref for Spanned<T> {
 
 /// An identifier with its span.
 pub type Name = Spanned<String>;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spans_never_distinguish_values() {
+        let a = Spanned::new(1, Span::new(FileId(0), 0, 1));
+        let b = Spanned::new(1, Span::new(FileId(1), 5, 9));
+        assert_eq!(a, b);
+        assert_ne!(a, Spanned::new(2, a.span));
+    }
+}

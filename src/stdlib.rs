@@ -6,5 +6,8 @@ pub const MODULES: &[(&str, &str)] = &[("arm", include_str!("../stdlib/arm.reach
 
 /// The text of module `name`, if there is one.
 pub fn module(name: &str) -> Option<&'static str> {
-    MODULES.iter().find(|(n, _)| *n == name).map(|(_, text)| *text)
+    MODULES
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(_, text)| *text)
 }

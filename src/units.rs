@@ -107,14 +107,14 @@ impl Dim {
         angle: 1,
     };
 
-    fn mul(self, o: Dim) -> Dim {
+    fn times(self, o: Dim) -> Dim {
         Dim {
             length: self.length.saturating_add(o.length),
             angle: self.angle.saturating_add(o.angle),
         }
     }
 
-    fn div(self, o: Dim) -> Dim {
+    fn per(self, o: Dim) -> Dim {
         Dim {
             length: self.length.saturating_sub(o.length),
             angle: self.angle.saturating_sub(o.angle),
@@ -146,7 +146,11 @@ pub enum Quantity {
 /// Why two quantities could not be combined.
 #[derive(Clone, Debug, PartialEq)]
 pub enum QuantityError {
-    Operands { verb: &'static str, left: String, right: String },
+    Operands {
+        verb: &'static str,
+        left: String,
+        right: String,
+    },
     DivisionByZero,
     MixedDefaults,
 }
@@ -163,7 +167,7 @@ impl Quantity {
         }
     }
 
-    pub fn neg(self) -> Self {
+    pub fn negated(self) -> Self {
         match self {
             Quantity::Bare { value, defaults } => Quantity::Bare {
                 value: -value,
@@ -175,11 +179,20 @@ impl Quantity {
 
     /// `self + other` (or minus, with `sign` -1). A bare number added to a
     /// length is a length in the file's default length unit.
-    pub fn add(self, other: Quantity, sign: f64) -> Result<Quantity, QuantityError> {
+    pub fn sum(self, other: Quantity, sign: f64) -> Result<Quantity, QuantityError> {
         use Quantity::*;
         let verb = if sign > 0.0 { "add" } else { "subtract" };
         match (self, other) {
-            (Bare { value: a, defaults: da }, Bare { value: b, defaults: db }) => {
+            (
+                Bare {
+                    value: a,
+                    defaults: da,
+                },
+                Bare {
+                    value: b,
+                    defaults: db,
+                },
+            ) => {
                 if da != db {
                     return Err(QuantityError::MixedDefaults);
                 }
@@ -188,17 +201,13 @@ impl Quantity {
                     defaults: da,
                 })
             }
-            (Dimensioned { value: a, dim }, Bare { value: b, defaults })
-                if adopts(dim) =>
-            {
+            (Dimensioned { value: a, dim }, Bare { value: b, defaults }) if adopts(dim) => {
                 Ok(Dimensioned {
                     value: a + sign * b * default_factor(dim, defaults),
                     dim,
                 })
             }
-            (Bare { value: a, defaults }, Dimensioned { value: b, dim })
-                if adopts(dim) =>
-            {
+            (Bare { value: a, defaults }, Dimensioned { value: b, dim }) if adopts(dim) => {
                 Ok(Dimensioned {
                     value: a * default_factor(dim, defaults) + sign * b,
                     dim,
@@ -219,10 +228,19 @@ impl Quantity {
     }
 
     /// `self * other`: a bare number in a product is a plain factor.
-    pub fn mul(self, other: Quantity) -> Result<Quantity, QuantityError> {
+    pub fn product(self, other: Quantity) -> Result<Quantity, QuantityError> {
         use Quantity::*;
         Ok(match (self, other) {
-            (Bare { value: a, defaults: da }, Bare { value: b, defaults: db }) => {
+            (
+                Bare {
+                    value: a,
+                    defaults: da,
+                },
+                Bare {
+                    value: b,
+                    defaults: db,
+                },
+            ) => {
                 if da != db {
                     return Err(QuantityError::MixedDefaults);
                 }
@@ -232,22 +250,33 @@ impl Quantity {
                 }
             }
             (Bare { value: a, .. }, Dimensioned { value: b, dim })
-            | (Dimensioned { value: b, dim }, Bare { value: a, .. }) => Dimensioned { value: a * b, dim },
+            | (Dimensioned { value: b, dim }, Bare { value: a, .. }) => {
+                Dimensioned { value: a * b, dim }
+            }
             (Dimensioned { value: a, dim: da }, Dimensioned { value: b, dim: db }) => Dimensioned {
                 value: a * b,
-                dim: da.mul(db),
+                dim: da.times(db),
             },
         })
     }
 
     /// `self / other`.
-    pub fn div(self, other: Quantity) -> Result<Quantity, QuantityError> {
+    pub fn quotient(self, other: Quantity) -> Result<Quantity, QuantityError> {
         use Quantity::*;
         if other.raw() == 0.0 {
             return Err(QuantityError::DivisionByZero);
         }
         Ok(match (self, other) {
-            (Bare { value: a, defaults: da }, Bare { value: b, defaults: db }) => {
+            (
+                Bare {
+                    value: a,
+                    defaults: da,
+                },
+                Bare {
+                    value: b,
+                    defaults: db,
+                },
+            ) => {
                 if da != db {
                     return Err(QuantityError::MixedDefaults);
                 }
@@ -256,14 +285,16 @@ impl Quantity {
                     defaults: da,
                 }
             }
-            (Dimensioned { value: a, dim }, Bare { value: b, .. }) => Dimensioned { value: a / b, dim },
+            (Dimensioned { value: a, dim }, Bare { value: b, .. }) => {
+                Dimensioned { value: a / b, dim }
+            }
             (Bare { value: a, .. }, Dimensioned { value: b, dim }) => Dimensioned {
                 value: a / b,
-                dim: Dim::NONE.div(dim),
+                dim: Dim::NONE.per(dim),
             },
             (Dimensioned { value: a, dim: da }, Dimensioned { value: b, dim: db }) => Dimensioned {
                 value: a / b,
-                dim: da.div(db),
+                dim: da.per(db),
             },
         })
     }
@@ -326,27 +357,33 @@ mod tests {
             angle: Unit::Deg,
         };
         let q = len(900.0)
-            .add(Quantity::Bare { value: 6.0, defaults: cm }, 1.0)
+            .sum(
+                Quantity::Bare {
+                    value: 6.0,
+                    defaults: cm,
+                },
+                1.0,
+            )
             .unwrap();
         assert_eq!(q, len(960.0));
     }
 
     #[test]
     fn bare_times_length_is_a_scaled_length() {
-        assert_eq!(bare(2.0).mul(len(300.0)).unwrap(), len(600.0));
-        assert_eq!(len(300.0).div(bare(2.0)).unwrap(), len(150.0));
+        assert_eq!(bare(2.0).product(len(300.0)).unwrap(), len(600.0));
+        assert_eq!(len(300.0).quotient(bare(2.0)).unwrap(), len(150.0));
     }
 
     #[test]
     fn length_over_length_is_a_plain_number() {
-        let q = len(300.0).div(len(600.0)).unwrap();
+        let q = len(300.0).quotient(len(600.0)).unwrap();
         assert_eq!(q.as_dim(Dim::NONE), Some(0.5));
         assert_eq!(q.as_dim(Dim::LENGTH), None);
     }
 
     #[test]
     fn adding_length_and_angle_is_an_error() {
-        let e = len(1.0).add(ang(1.0), 1.0).unwrap_err();
+        let e = len(1.0).sum(ang(1.0), 1.0).unwrap_err();
         assert_eq!(
             e,
             QuantityError::Operands {
@@ -355,12 +392,15 @@ mod tests {
                 right: "an angle".into()
             }
         );
-        assert!(len(1.0).add(ang(1.0), -1.0).is_err());
+        assert!(len(1.0).sum(ang(1.0), -1.0).is_err());
     }
 
     #[test]
     fn division_by_zero_is_an_error() {
-        assert_eq!(len(1.0).div(bare(0.0)), Err(QuantityError::DivisionByZero));
+        assert_eq!(
+            len(1.0).quotient(bare(0.0)),
+            Err(QuantityError::DivisionByZero)
+        );
     }
 
     #[test]
@@ -381,7 +421,7 @@ mod tests {
 
     #[test]
     fn area_is_not_a_length() {
-        let area = len(2.0).mul(len(3.0)).unwrap();
+        let area = len(2.0).product(len(3.0)).unwrap();
         assert_eq!(area.describe(), "an area");
         assert_eq!(area.as_dim(Dim::LENGTH), None);
     }
@@ -395,6 +435,6 @@ mod tests {
                 angle: Unit::Deg,
             },
         };
-        assert_eq!(bare(1.0).add(m, 1.0), Err(QuantityError::MixedDefaults));
+        assert_eq!(bare(1.0).sum(m, 1.0), Err(QuantityError::MixedDefaults));
     }
 }

@@ -14,7 +14,8 @@ use reach::Input;
 /// The path relative to the crate root, so snapshots name files the same
 /// on every machine.
 fn relative(path: &Path) -> &Path {
-    path.strip_prefix(env!("CARGO_MANIFEST_DIR")).unwrap_or(path)
+    path.strip_prefix(env!("CARGO_MANIFEST_DIR"))
+        .unwrap_or(path)
 }
 
 fn json_report(path: &Path) -> String {
@@ -32,7 +33,10 @@ fn diagnostics(path: &Path) -> String {
     let registry = Registry::builtin();
     let (_, checked) = reach::check(Input::Path(relative(path)), &registry);
     match checked {
-        Ok(_) => panic!("{} checks without error, but is under tests/errors", path.display()),
+        Ok(_) => panic!(
+            "{} checks without error, but is under tests/errors",
+            path.display()
+        ),
         Err(d) => d.render(true),
     }
 }

@@ -2,7 +2,10 @@
 
 use nalgebra::Point3;
 
-use crate::plugin::{Base, BasePlugin, BasePose, IkProblem, Options, ParamSpec, Placement, Plugin, ReachQuery, Solver};
+use crate::plugin::{
+    Base, BasePlugin, BasePose, IkProblem, Options, ParamSpec, Placement, Plugin, ReachQuery,
+    Solver,
+};
 
 /// The plugin `fixed`.
 pub struct Fixed;
@@ -18,8 +21,15 @@ impl Plugin for Fixed {
 
     fn params(&self) -> Vec<ParamSpec> {
         vec![
-            ParamSpec::point("at", "the hip point in the room: x, y on the floor and z its height"),
-            ParamSpec::angle("heading", 0.0, "the direction the person faces, counter-clockwise from the room's x axis"),
+            ParamSpec::point(
+                "at",
+                "the hip point in the room: x, y on the floor and z its height",
+            ),
+            ParamSpec::angle(
+                "heading",
+                0.0,
+                "the direction the person faces, counter-clockwise from the room's x axis",
+            ),
         ]
     }
 }

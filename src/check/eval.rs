@@ -29,7 +29,12 @@ impl Checker<'_> {
         let (decl, file) = self.lets.get(name)?;
         if self.let_stack.iter().any(|n| n == name) {
             let span = use_span.unwrap_or(decl.name.span);
-            self.error(Error::new(ErrorKind::LetCycle { name: name.to_string() }, span));
+            self.error(Error::new(
+                ErrorKind::LetCycle {
+                    name: name.to_string(),
+                },
+                span,
+            ));
             return None;
         }
         self.let_stack.push(name.to_string());
@@ -51,20 +56,26 @@ impl Checker<'_> {
                 },
             },
             ExprKind::Name(name) => return self.name_value(name, e.span),
-            ExprKind::Neg(inner) => self.eval(inner)?.neg(),
-            ExprKind::Binary(op, l, r) => {
-                let (l, r) = (self.eval(l), self.eval(r));
+            ExprKind::Neg(inner) => self.eval(inner)?.negated(),
+            ExprKind::Binary(op, l_expr, r_expr) => {
+                let (l, r) = (self.eval(l_expr), self.eval(r_expr));
                 let (l, r) = (l?, r?);
                 let result = match op {
-                    BinOp::Add => l.add(r, 1.0),
-                    BinOp::Sub => l.add(r, -1.0),
-                    BinOp::Mul => l.mul(r),
-                    BinOp::Div => l.div(r),
+                    BinOp::Add => l.sum(r, 1.0),
+                    BinOp::Sub => l.sum(r, -1.0),
+                    BinOp::Mul => l.product(r),
+                    BinOp::Div => l.quotient(r),
                 };
                 match result {
                     Ok(q) => q,
                     Err(err) => {
-                        self.error(Error::new(quantity_error(err), e.span));
+                        // A zero divisor is pointed at; other errors are about both sides.
+                        let span = if err == QuantityError::DivisionByZero {
+                            r_expr.span
+                        } else {
+                            e.span
+                        };
+                        self.error(Error::new(quantity_error(err), span));
                         return None;
                     }
                 }
@@ -136,7 +147,12 @@ impl Checker<'_> {
         let mut ok = true;
         for (i, part) in v.parts.iter().enumerate() {
             if size[i] <= 0.0 {
-                self.out_of_range(part.span, what, "greater than zero", &format!("{} mm", fmt_num(size[i])));
+                self.out_of_range(
+                    part.span,
+                    what,
+                    "greater than zero",
+                    &format!("{} mm", fmt_num(size[i])),
+                );
                 ok = false;
             }
         }

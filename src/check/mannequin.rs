@@ -18,7 +18,11 @@ const MAX_ANGLE_RAD: f64 = 2.0 * std::f64::consts::PI;
 impl Checker<'_> {
     /// Build every mannequin's chain once, so its errors are reported once.
     pub(super) fn build_mannequins(&mut self) {
-        let decls: Vec<_> = self.mannequins.iter().map(|(n, d, f)| (n.to_string(), d, f)).collect();
+        let decls: Vec<_> = self
+            .mannequins
+            .iter()
+            .map(|(n, d, f)| (n.to_string(), d, f))
+            .collect();
         for (name, decl, file) in decls {
             let chain = self.in_file(file, |c| c.chain(decl));
             self.chains.insert(name, chain);
@@ -100,7 +104,9 @@ impl Checker<'_> {
                 self.limits(l, j.kind)
             }
         };
-        let neutral = self.single(&j.neutral, "`neutral`").map(|e| (self.joint_value(e, j.kind), e.span));
+        let neutral = self
+            .single(&j.neutral, "`neutral`")
+            .map(|e| (self.joint_value(e, j.kind), e.span));
         let weight = match self.single(&j.weight, "`weight`") {
             Some(e) => self.weight(e),
             None => Some(1.0),
@@ -145,7 +151,11 @@ impl Checker<'_> {
                 self.repeated(std::iter::once(key.span), &format!("`{}`", key.value));
             }
             seen[i] = true;
-            values[i] = if i % 2 == 0 { self.angle(expr) } else { self.length(expr) };
+            values[i] = if i % 2 == 0 {
+                self.angle(expr)
+            } else {
+                self.length(expr)
+            };
         }
         let [theta_rad, d_mm, alpha_rad, a_mm] = values;
         let dh = Dh {
@@ -173,7 +183,12 @@ impl Checker<'_> {
         if kind == ast::JointKind::Revolute {
             for (v, e) in [(min, &l.min), (max, &l.max)] {
                 if v.abs() > MAX_ANGLE_RAD + 1e-12 {
-                    self.out_of_range(e.span, "a joint limit", "between -360deg and 360deg", &show(v, kind));
+                    self.out_of_range(
+                        e.span,
+                        "a joint limit",
+                        "between -360deg and 360deg",
+                        &show(v, kind),
+                    );
                     ok = false;
                 }
             }
@@ -191,9 +206,20 @@ impl Checker<'_> {
         ok.then_some((min, max))
     }
 
-    pub(super) fn neutral_within(&mut self, v: f64, min: f64, max: f64, kind: ast::JointKind, span: Span) -> Option<f64> {
+    pub(super) fn neutral_within(
+        &mut self,
+        v: f64,
+        min: f64,
+        max: f64,
+        kind: ast::JointKind,
+        span: Span,
+    ) -> Option<f64> {
         if v < min || v > max {
-            let bound = format!("within the joint's limits, {} to {}", show(min, kind), show(max, kind));
+            let bound = format!(
+                "within the joint's limits, {} to {}",
+                show(min, kind),
+                show(max, kind)
+            );
             self.out_of_range(span, "the neutral value", &bound, &show(v, kind));
             return None;
         }
@@ -217,7 +243,12 @@ impl Checker<'_> {
 
     fn repeated(&mut self, spans: impl Iterator<Item = Span>, what: &str) {
         for span in spans {
-            self.error(Error::new(ErrorKind::Repeated { what: what.to_string() }, span));
+            self.error(Error::new(
+                ErrorKind::Repeated {
+                    what: what.to_string(),
+                },
+                span,
+            ));
         }
     }
 }

@@ -27,7 +27,11 @@ use crate::units::{Quantity, Unit, UnitDefaults};
 use table::Table;
 
 /// Check the loaded files (dependencies first, the root file last).
-pub fn check(sources: &Sources, files: &[LoadedFile], registry: &Registry) -> Result<Scenario, Diagnostics> {
+pub fn check(
+    sources: &Sources,
+    files: &[LoadedFile],
+    registry: &Registry,
+) -> Result<Scenario, Diagnostics> {
     let root = files.last().map(|f| f.id).unwrap_or_default();
     let mut c = Checker::new(registry);
     for f in files {
@@ -108,8 +112,15 @@ impl<'a> Checker<'a> {
         for item in items {
             let Item::Units(units) = item else { continue };
             for u in units {
-                if seen.iter().any(|s| s.value.is_length() == u.value.is_length()) {
-                    let dimension = if u.value.is_length() { "length" } else { "angle" };
+                if seen
+                    .iter()
+                    .any(|s| s.value.is_length() == u.value.is_length())
+                {
+                    let dimension = if u.value.is_length() {
+                        "length"
+                    } else {
+                        "angle"
+                    };
                     self.error(Error::new(ErrorKind::UnitsRepeated { dimension }, u.span));
                     continue;
                 }

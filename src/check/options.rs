@@ -15,7 +15,13 @@ const MAX_INTEGER: f64 = 9_007_199_254_740_992.0;
 impl Checker<'_> {
     /// Validate `given` against `params` of the plugin called `label`;
     /// missing options take their defaults.
-    pub(super) fn options(&mut self, label: &str, params: &[ParamSpec], given: &[OptionDecl], at: Span) -> Option<Options> {
+    pub(super) fn options(
+        &mut self,
+        label: &str,
+        params: &[ParamSpec],
+        given: &[OptionDecl],
+        at: Span,
+    ) -> Option<Options> {
         let mut values: Vec<(&'static str, Option<Value>)> = Vec::new();
         let mut seen: Vec<&OptionDecl> = Vec::new();
         let mut ok = true;
@@ -27,7 +33,11 @@ impl Checker<'_> {
                         plugin: label.to_string(),
                         name: opt.name.value.clone(),
                         suggestion: suggest(&opt.name.value, names.iter().copied()),
-                        available: if names.is_empty() { "none".into() } else { names.join(", ") },
+                        available: if names.is_empty() {
+                            "none".into()
+                        } else {
+                            names.join(", ")
+                        },
                     },
                     opt.name.span,
                 ));
@@ -35,7 +45,12 @@ impl Checker<'_> {
                 continue;
             };
             if let Some(first) = seen.iter().find(|s| s.name.value == opt.name.value) {
-                let e = Error::new(ErrorKind::Repeated { what: format!("option `{}`", spec.name) }, opt.name.span);
+                let e = Error::new(
+                    ErrorKind::Repeated {
+                        what: format!("option `{}`", spec.name),
+                    },
+                    opt.name.span,
+                );
                 self.error(e.with_note(first.name.span, "first given here"));
                 ok = false;
                 continue;
@@ -81,7 +96,9 @@ impl Checker<'_> {
             }
             (ParamKind::Bool, OptionValue::Bool(b)) => Value::Bool(*b),
             (ParamKind::Point, OptionValue::Vec3(v)) => Value::Point(self.point(v)?),
-            (ParamKind::Plugin(kind), OptionValue::Plugin(p)) => Value::Plugin(self.plugin_config(kind, p)?),
+            (ParamKind::Plugin(kind), OptionValue::Plugin(p)) => {
+                Value::Plugin(self.plugin_config(kind, p)?)
+            }
             (ParamKind::Plugin(kind), OptionValue::Expr(e)) => match &e.kind {
                 ExprKind::Name(name) => {
                     let use_ = PluginUse {
@@ -110,7 +127,9 @@ impl Checker<'_> {
     }
 
     fn in_range(&mut self, spec: &ParamSpec, value: &Value, span: Span) -> bool {
-        let Some((min, max)) = spec.range else { return true };
+        let Some((min, max)) = spec.range else {
+            return true;
+        };
         let v = match value {
             Value::Length(v) | Value::Angle(v) | Value::Number(v) => *v,
             Value::Integer(i) => *i as f64,
@@ -139,4 +158,3 @@ fn describe(v: &OptionValue) -> &'static str {
         OptionValue::Plugin(_) => "a plugin block",
     }
 }
-

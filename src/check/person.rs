@@ -21,7 +21,13 @@ impl Checker<'_> {
 
     fn person(&mut self, decl: &PersonDecl) -> Option<Person> {
         let owner = format!("person `{}`", decl.name.value);
-        let mannequin = self.one_of(&decl.mannequins, |m| m.name.span, &owner, "mannequin", decl.name.span);
+        let mannequin = self.one_of(
+            &decl.mannequins,
+            |m| m.name.span,
+            &owner,
+            "mannequin",
+            decl.name.span,
+        );
         let base = self.one_of(&decl.bases, |b| b.span, &owner, "base", decl.name.span);
         let chain = mannequin.and_then(|m| self.person_chain(m));
         let base = base.and_then(|b| self.plugin_config(PluginKind::Base, b));
@@ -43,7 +49,12 @@ impl Checker<'_> {
         owner_span: crate::span::Span,
     ) -> Option<&'i T> {
         for extra in items.iter().skip(1) {
-            self.error(Error::new(ErrorKind::Repeated { what: format!("`{what}`") }, span_of(extra)));
+            self.error(Error::new(
+                ErrorKind::Repeated {
+                    what: format!("`{what}`"),
+                },
+                span_of(extra),
+            ));
         }
         if items.is_empty() {
             self.error(Error::new(
@@ -76,7 +87,9 @@ impl Checker<'_> {
     }
 
     fn apply_override(&mut self, chain: &mut Chain, o: &JointOverride) -> Option<()> {
-        let (JointOverride::Limits { joint, .. } | JointOverride::Neutral { joint, .. } | JointOverride::Weight { joint, .. }) = o;
+        let (JointOverride::Limits { joint, .. }
+        | JointOverride::Neutral { joint, .. }
+        | JointOverride::Weight { joint, .. }) = o;
         let i = self.joint_index(chain, joint)?;
         let kind = match chain.joints[i].kind {
             JointKind::Revolute => ast::JointKind::Revolute,
@@ -118,7 +131,11 @@ impl Checker<'_> {
     }
 
     /// A plugin by name with its options validated.
-    pub(super) fn plugin_config(&mut self, kind: PluginKind, use_: &ast::PluginUse) -> Option<PluginConfig> {
+    pub(super) fn plugin_config(
+        &mut self,
+        kind: PluginKind,
+        use_: &ast::PluginUse,
+    ) -> Option<PluginConfig> {
         let Some(params) = self.registry.params(kind, &use_.name.value) else {
             let names = self.registry.names(kind);
             self.error(Error::new(

@@ -59,7 +59,12 @@ impl Checker<'_> {
             }
             [s, rest @ ..] => {
                 for r in rest {
-                    self.error(Error::new(ErrorKind::Repeated { what: "the room's size".into() }, r.span));
+                    self.error(Error::new(
+                        ErrorKind::Repeated {
+                            what: "the room's size".into(),
+                        },
+                        r.span,
+                    ));
                 }
                 self.size(s, "a room's size")
             }
@@ -74,7 +79,13 @@ impl Checker<'_> {
                     let Some(p) = self.point(&t.at) else { continue };
                     let position_mm = Point3::from(p);
                     if let Some(size) = size {
-                        self.check_inside(&decl.name.value, &t.name.value, &position_mm, size, t.at.span);
+                        self.check_inside(
+                            &decl.name.value,
+                            &t.name.value,
+                            &position_mm,
+                            size,
+                            t.at.span,
+                        );
                     }
                     targets.push(Target {
                         name: t.name.value.clone(),
@@ -91,7 +102,14 @@ impl Checker<'_> {
         })
     }
 
-    fn check_inside(&mut self, room: &str, target: &str, p: &Point3<f64>, size: Vector3<f64>, span: crate::span::Span) {
+    fn check_inside(
+        &mut self,
+        room: &str,
+        target: &str,
+        p: &Point3<f64>,
+        size: Vector3<f64>,
+        span: crate::span::Span,
+    ) {
         let inside = (0..3).all(|i| p[i] >= 0.0 && p[i] <= size[i]);
         if !inside {
             self.error(Error::new(

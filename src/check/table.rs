@@ -31,7 +31,8 @@ impl<'a, T> Table<'a, T> {
             );
             return Some(e.with_note(*first, "first defined here"));
         }
-        self.entries.push((name.value.clone(), name.span, decl, file));
+        self.entries
+            .push((name.value.clone(), name.span, decl, file));
         None
     }
 

@@ -21,7 +21,12 @@ impl Checker<'_> {
         out
     }
 
-    fn task(&mut self, decl: &TaskDecl, rooms: &[Room], persons: &[Person]) -> Option<Vec<TaskSpec>> {
+    fn task(
+        &mut self,
+        decl: &TaskDecl,
+        rooms: &[Room],
+        persons: &[Person],
+    ) -> Option<Vec<TaskSpec>> {
         let kind = &decl.kind;
         let Some(plugin) = self.registry.task(&kind.value).cloned() else {
             let names = self.registry.names(PluginKind::Task);
@@ -43,7 +48,11 @@ impl Checker<'_> {
             .iter()
             .map(|s| self.subject(plugin.subject(), s, rooms))
             .collect();
-        let people: Vec<Option<String>> = decl.persons.iter().map(|p| self.person_ref(p, persons)).collect();
+        let people: Vec<Option<String>> = decl
+            .persons
+            .iter()
+            .map(|p| self.person_ref(p, persons))
+            .collect();
         let options = options?;
         let subjects: Vec<String> = subjects.into_iter().collect::<Option<_>>()?;
         let people: Vec<String> = people.into_iter().collect::<Option<_>>()?;
@@ -62,19 +71,27 @@ impl Checker<'_> {
         Some(tasks)
     }
 
-    fn subject(&mut self, kind: SubjectKind, s: &Spanned<Vec<String>>, rooms: &[Room]) -> Option<String> {
+    fn subject(
+        &mut self,
+        kind: SubjectKind,
+        s: &Spanned<Vec<String>>,
+        rooms: &[Room],
+    ) -> Option<String> {
         let SubjectKind::Target = kind;
         let name = s.value.join(".");
-        let targets = || rooms.iter().flat_map(|r| r.targets.iter().map(|t| t.name.as_str()));
+        let targets = || {
+            rooms
+                .iter()
+                .flat_map(|r| r.targets.iter().map(|t| t.name.as_str()))
+        };
         if targets().any(|t| t == name) {
             return Some(name);
         }
         // A target whose room failed to check has reported its own errors.
-        let declared = self
-            .rooms
-            .iter()
-            .flat_map(|(_, d, _)| d.items.iter())
-            .any(|i| matches!(i, crate::syntax::ast::RoomItem::Target(t) if t.name.value == name));
+        let declared =
+            self.rooms.iter().flat_map(|(_, d, _)| d.items.iter()).any(
+                |i| matches!(i, crate::syntax::ast::RoomItem::Target(t) if t.name.value == name),
+            );
         if !declared {
             self.error(Error::new(
                 ErrorKind::UnknownName {

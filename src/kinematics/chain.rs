@@ -75,7 +75,9 @@ impl Chain {
         self.joints
             .iter()
             .zip(q)
-            .fold(IsometryMatrix3::identity(), |acc, (j, &qi)| acc * j.transform(qi))
+            .fold(IsometryMatrix3::identity(), |acc, (j, &qi)| {
+                acc * j.transform(qi)
+            })
     }
 
     /// The effector point in the base frame (eq. 5).
@@ -86,11 +88,18 @@ impl Chain {
     /// The comfort criterion `C = sum_i w_i |theta_i^N - theta_i|` of
     /// section 5.3.4: smaller is more comfortable.
     pub fn discomfort(&self, q: &[f64]) -> f64 {
-        self.joints.iter().zip(q).map(|(j, &qi)| j.discomfort(qi)).sum()
+        self.joints
+            .iter()
+            .zip(q)
+            .map(|(j, &qi)| j.discomfort(qi))
+            .sum()
     }
 
     pub fn within_limits(&self, q: &[f64]) -> bool {
-        self.joints.iter().zip(q).all(|(j, &qi)| qi >= j.min && qi <= j.max)
+        self.joints
+            .iter()
+            .zip(q)
+            .all(|(j, &qi)| qi >= j.min && qi <= j.max)
     }
 
     pub fn neutral(&self) -> Vec<f64> {
@@ -125,7 +134,10 @@ mod tests {
     /// 200 sin(q1 + q2), 0), worked out by hand.
     fn planar() -> Chain {
         Chain {
-            joints: vec![revolute("j1", 0.0, 0.0, 0.0, 300.0), revolute("j2", 0.0, 0.0, 0.0, 200.0)],
+            joints: vec![
+                revolute("j1", 0.0, 0.0, 0.0, 300.0),
+                revolute("j2", 0.0, 0.0, 0.0, 200.0),
+            ],
             effector_name: "tip".into(),
             effector_mm: Vector3::zeros(),
         }

@@ -61,8 +61,10 @@ mod tests {
     fn matches_the_product_of_elementary_motions() {
         // Rz(theta) Tz(d) Tx(a) Rx(alpha), composed by nalgebra itself.
         let (theta, d, alpha, a) = (0.3, 12.0, -1.1, 7.0);
-        let expected = IsometryMatrix3::from_parts(Translation3::identity(), Rotation3::from_axis_angle(&Vector3::z_axis(), theta))
-            * Translation3::new(0.0, 0.0, d)
+        let expected = IsometryMatrix3::from_parts(
+            Translation3::identity(),
+            Rotation3::from_axis_angle(&Vector3::z_axis(), theta),
+        ) * Translation3::new(0.0, 0.0, d)
             * Translation3::new(a, 0.0, 0.0)
             * Rotation3::from_axis_angle(&Vector3::x_axis(), alpha);
         let got = dh(theta, 0.0, alpha, a).transform(theta, d);

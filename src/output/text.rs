@@ -26,7 +26,13 @@ impl FormatPlugin for Text {
     fn render(&self, report: &Report) -> String {
         let mut out = String::new();
         let ok = report.tasks.iter().filter(|t| t.ok()).count();
-        let _ = writeln!(out, "{}: {} tasks, {} ok\n", report.file, report.tasks.len(), ok);
+        let _ = writeln!(
+            out,
+            "{}: {} tasks, {} ok\n",
+            report.file,
+            report.tasks.len(),
+            ok
+        );
         out.push_str(&table(report));
         for task in &report.tasks {
             match task {
@@ -42,7 +48,9 @@ impl FormatPlugin for Text {
 }
 
 fn table(report: &Report) -> String {
-    let header = ["task", "target", "person", "result", "distance", "sweeps", "comfort"];
+    let header = [
+        "task", "target", "person", "result", "distance", "sweeps", "comfort",
+    ];
     let rows: Vec<[String; 7]> = report
         .tasks
         .iter()
@@ -51,7 +59,11 @@ fn table(report: &Report) -> String {
                 "reach".to_string(),
                 r.name.clone(),
                 r.person.clone(),
-                if r.ok { "reachable".into() } else { "NOT reachable".into() },
+                if r.ok {
+                    "reachable".into()
+                } else {
+                    "NOT reachable".into()
+                },
                 format!("{:.1} mm", r.distance_mm),
                 r.iterations.to_string(),
                 format!("{:.2}", r.comfort),
@@ -96,6 +108,11 @@ fn detail(out: &mut String, r: &ReachReport) {
         "\n{} by {} ({}): {} base at ({:.0}, {:.0}, {:.0}) mm, heading {:.0} deg",
         r.name, r.person, r.solver, b.kind, b.x_mm, b.y_mm, b.z_mm, b.heading_deg
     );
-    let posture: Vec<String> = r.posture.0.iter().map(|(j, v)| format!("{j} {v:.1}")).collect();
+    let posture: Vec<String> = r
+        .posture
+        .0
+        .iter()
+        .map(|(j, v)| format!("{j} {v:.1}"))
+        .collect();
     let _ = writeln!(out, "  posture (deg): {}", posture.join(", "));
 }

@@ -111,7 +111,12 @@ impl ParamSpec {
     }
 
     pub fn length(name: &'static str, default_mm: f64, doc: &'static str) -> Self {
-        Self::new(name, ParamKind::Length, Some(Value::Length(default_mm)), doc)
+        Self::new(
+            name,
+            ParamKind::Length,
+            Some(Value::Length(default_mm)),
+            doc,
+        )
     }
 
     pub fn angle(name: &'static str, default_rad: f64, doc: &'static str) -> Self {
@@ -141,7 +146,12 @@ impl ParamSpec {
             name: default.to_string(),
             options: Options::default(),
         };
-        Self::new(name, ParamKind::Plugin(kind), Some(Value::Plugin(default)), doc)
+        Self::new(
+            name,
+            ParamKind::Plugin(kind),
+            Some(Value::Plugin(default)),
+            doc,
+        )
     }
 
     /// Bounds, inclusive, in internal units (mm, rad).

@@ -73,10 +73,26 @@ impl Registry {
     /// The plugins of one kind, in registration order, as plain plugins.
     pub fn of_kind(&self, kind: PluginKind) -> Vec<&dyn Plugin> {
         match kind {
-            PluginKind::Solver => self.solvers.iter().map(|p| p.as_ref() as &dyn Plugin).collect(),
-            PluginKind::Base => self.bases.iter().map(|p| p.as_ref() as &dyn Plugin).collect(),
-            PluginKind::Task => self.tasks.iter().map(|p| p.as_ref() as &dyn Plugin).collect(),
-            PluginKind::Format => self.formats.iter().map(|p| p.as_ref() as &dyn Plugin).collect(),
+            PluginKind::Solver => self
+                .solvers
+                .iter()
+                .map(|p| p.as_ref() as &dyn Plugin)
+                .collect(),
+            PluginKind::Base => self
+                .bases
+                .iter()
+                .map(|p| p.as_ref() as &dyn Plugin)
+                .collect(),
+            PluginKind::Task => self
+                .tasks
+                .iter()
+                .map(|p| p.as_ref() as &dyn Plugin)
+                .collect(),
+            PluginKind::Format => self
+                .formats
+                .iter()
+                .map(|p| p.as_ref() as &dyn Plugin)
+                .collect(),
         }
     }
 

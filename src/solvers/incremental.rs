@@ -41,17 +41,48 @@ impl Plugin for Incremental {
 
     fn params(&self) -> Vec<ParamSpec> {
         vec![
-            ParamSpec::number("rate", 0.5, "first increment as a fraction of each joint's range").range(1e-6, 1.0),
-            ParamSpec::number("gamma", 3.0, "the rate is divided by this when a sweep stops improving (1: never)")
-                .range(1.0, 100.0),
-            ParamSpec::length("threshold", 1.0, "a sweep that improves less than this counts as not improving")
-                .range(0.0, 1000.0),
-            ParamSpec::number("min_rate", 1e-5, "stop once the rate would fall below this").range(1e-12, 1.0),
-            ParamSpec::boolean("sign_memory", true, "try first the direction that last worked for each joint"),
-            ParamSpec::integer("starts", 6, "random starts; the most comfortable reaching solution is kept")
-                .range(1.0, 1000.0),
-            ParamSpec::boolean("neutral_start", true, "the first start is the neutral posture, the others random"),
-            ParamSpec::integer("max_sweeps", 1000, "stop after this many sweeps over all joints").range(1.0, 1e6),
+            ParamSpec::number(
+                "rate",
+                0.5,
+                "first increment as a fraction of each joint's range",
+            )
+            .range(1e-6, 1.0),
+            ParamSpec::number(
+                "gamma",
+                3.0,
+                "the rate is divided by this when a sweep stops improving (1: never)",
+            )
+            .range(1.0, 100.0),
+            ParamSpec::length(
+                "threshold",
+                1.0,
+                "a sweep that improves less than this counts as not improving",
+            )
+            .range(0.0, 1000.0),
+            ParamSpec::number("min_rate", 1e-5, "stop once the rate would fall below this")
+                .range(1e-12, 1.0),
+            ParamSpec::boolean(
+                "sign_memory",
+                true,
+                "try first the direction that last worked for each joint",
+            ),
+            ParamSpec::integer(
+                "starts",
+                6,
+                "random starts; the most comfortable reaching solution is kept",
+            )
+            .range(1.0, 1000.0),
+            ParamSpec::boolean(
+                "neutral_start",
+                true,
+                "the first start is the neutral posture, the others random",
+            ),
+            ParamSpec::integer(
+                "max_sweeps",
+                1000,
+                "stop after this many sweeps over all joints",
+            )
+            .range(1.0, 1e6),
         ]
     }
 }

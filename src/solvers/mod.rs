@@ -2,4 +2,4 @@
 
 mod incremental;
 
-pub use incremental::{Incremental, IncrementalSolver, IncrementalSettings};
+pub use incremental::{Incremental, IncrementalSettings, IncrementalSolver};

@@ -75,7 +75,7 @@ pub struct RoomDecl {
 #[derive(Clone, Debug, PartialEq)]
 pub enum RoomItem {
     Size(Vec3Expr),
-    Box(BoxDecl),
+    Box(Box<BoxDecl>),
     Target(TargetDecl),
 }
 

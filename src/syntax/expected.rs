@@ -13,14 +13,15 @@ fn describe(rule: Rule) -> Option<&'static str> {
     use Rule::*;
     Some(match rule {
         EOI => "end of file",
-        file | inline_space | WHITESPACE | COMMENT | line_comment | block_comment | item | ident_char | prefix | infix
-        | primary | room_item | mannequin_item | joint_prop | person_item | joint_override => return None,
+        file | inline_space | WHITESPACE | COMMENT | line_comment | block_comment | item
+        | ident_char | prefix | infix | primary | room_item | mannequin_item | joint_prop
+        | person_item | joint_override => return None,
         ident | keyword => "a name",
         number | quantity => "a number",
         unit | bad_unit => "a unit",
         string | string_inner => "a string in double quotes",
         boolean => "`true` or `false`",
-        expr | neg => "an expression",
+        expr | neg | paren => "an expression",
         add | sub | mul | div => "an operator",
         vec3 => "a point `(x, y, z)`",
         units_decl => "`units`",
@@ -59,7 +60,7 @@ fn describe(rule: Rule) -> Option<&'static str> {
 
 /// Convert a pest error into a diagnostic with a span on the offending text.
 pub(super) fn syntax_error(file: FileId, text: &str, e: pest::error::Error<Rule>) -> Error {
-    let pos = match e.location {
+    let mut pos = match e.location {
         InputLocation::Pos(p) => p,
         InputLocation::Span((s, _)) => s,
     };
@@ -72,10 +73,22 @@ pub(super) fn syntax_error(file: FileId, text: &str, e: pest::error::Error<Rule>
         }
     }
     if let Some(attempts) = e.parse_attempts() {
-        for token in attempts.expected_tokens() {
-            let token = token.to_string();
-            if is_visible_token(&token) {
-                push_unique(&mut expected, format!("`{token}`"));
+        let tokens: Vec<String> = attempts
+            .expected_tokens()
+            .iter()
+            .map(|t| t.to_string())
+            .filter(|t| is_visible_token(t))
+            .map(|t| format!("`{t}`"))
+            .collect();
+        // The furthest place the parser got to is where the text went wrong,
+        // if the parser knows what it wanted there.
+        if attempts.max_position > pos && !tokens.is_empty() {
+            pos = attempts.max_position;
+            expected.clear();
+        }
+        if attempts.max_position == pos {
+            for t in tokens {
+                push_unique(&mut expected, t);
             }
         }
     }
@@ -86,7 +99,11 @@ pub(super) fn syntax_error(file: FileId, text: &str, e: pest::error::Error<Rule>
     }
     let (found, len) = found_at(text, pos);
     // At the end of the file, point at the last token so the label shows.
-    let (pos, len) = if len == 0 { last_token(text) } else { (pos, len) };
+    let (pos, len) = if len == 0 {
+        last_token(text)
+    } else {
+        (pos, len)
+    };
     Error::new(
         ErrorKind::Syntax {
             expected: join_or(&expected),
@@ -99,7 +116,10 @@ pub(super) fn syntax_error(file: FileId, text: &str, e: pest::error::Error<Rule>
 /// Literal tokens worth naming: not comment or whitespace markers, not the
 /// keywords tried only to rule them out as names.
 fn is_visible_token(token: &str) -> bool {
-    let internal = matches!(token, "//" | "/*" | "*/" | "\\" | "\"" | "BUILTIN_RULE" | "E");
+    let internal = matches!(
+        token,
+        "//" | "/*" | "*/" | "\\" | "\"" | "BUILTIN_RULE" | "E" | "_"
+    );
     let range = token.contains("..");
     !internal && !range && !token.trim().is_empty()
 }
@@ -107,12 +127,22 @@ fn is_visible_token(token: &str) -> bool {
 /// Where any top-level item may start, name one alternative for all of
 /// them rather than listing every keyword.
 fn collapse_item_starts(expected: &mut Vec<String>) {
-    const STARTS: [&str; 8] = ["`let`", "`room`", "`mannequin`", "`person`", "`units`", "`use`", "a name", "`_`"];
+    const STARTS: [&str; 7] = [
+        "`let`",
+        "`room`",
+        "`mannequin`",
+        "`person`",
+        "`units`",
+        "`use`",
+        "a name",
+    ];
     if !expected.iter().any(|e| e == "`room`") {
-        expected.retain(|e| e != "`_`");
         return;
     }
-    let at = expected.iter().position(|e| STARTS.contains(&e.as_str())).unwrap_or(0);
+    let at = expected
+        .iter()
+        .position(|e| STARTS.contains(&e.as_str()))
+        .unwrap_or(0);
     expected.retain(|e| !STARTS.contains(&e.as_str()));
     let item = "the next declaration".to_string();
     expected.insert(at.min(expected.len()), item);
@@ -123,6 +153,10 @@ fn collapse_item_starts(expected: &mut Vec<String>) {
 fn collapse_number_continuations(expected: &mut Vec<String>) {
     const UNITS: [&str; 7] = ["`mm`", "`cm`", "`m`", "`in`", "`deg`", "`rad`", "`arcmin`"];
     const OPERATORS: [&str; 4] = ["`+`", "`-`", "`*`", "`/`"];
+    if expected.iter().any(|e| e == "an expression") {
+        // What may start an expression is the expression itself.
+        expected.retain(|e| e != "`(`" && e != "`-`");
+    }
     let had_operator = expected
         .iter()
         .any(|e| OPERATORS.contains(&e.as_str()) || e == "an operator");
@@ -131,7 +165,7 @@ fn collapse_number_continuations(expected: &mut Vec<String>) {
     if expected.iter().any(|e| !is_unit(e)) || had_operator {
         expected.retain(|e| !is_unit(e));
     }
-    if had_operator {
+    if had_operator && !expected.iter().any(|e| e == "an expression") {
         expected.push("an operator".to_string());
     }
 }

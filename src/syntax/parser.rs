@@ -3,8 +3,8 @@
 use pest::iterators::Pair;
 use pest::pratt_parser::{Assoc, Op, PrattParser};
 use pest::Parser as _;
-use std::sync::LazyLock;
 use pest_derive::Parser;
+use std::sync::LazyLock;
 
 use super::ast::*;
 use super::expected::syntax_error;
@@ -60,9 +60,11 @@ struct Builder {
 }
 
 impl Builder {
+    /// The pair's span without the white space a rule may end with.
     fn span(&self, pair: &Pair<Rule>) -> Span {
         let s = pair.as_span();
-        Span::new(self.file, s.start(), s.end())
+        let len = pair.as_str().trim_end().len();
+        Span::new(self.file, s.start(), s.start() + len)
     }
 
     fn name(&self, pair: Pair<Rule>) -> Name {
@@ -108,7 +110,9 @@ impl Builder {
         let span = self.span(&pair);
         let inner = pair.into_inner().next().unwrap();
         let target = match inner.as_rule() {
-            Rule::std_path => UseTarget::Std(inner.into_inner().next().unwrap().as_str().to_string()),
+            Rule::std_path => {
+                UseTarget::Std(inner.into_inner().next().unwrap().as_str().to_string())
+            }
             _ => UseTarget::Path(unescape(inner.into_inner().next().unwrap().as_str())),
         };
         Spanned::new(target, span)
@@ -117,7 +121,13 @@ impl Builder {
     fn expr(&mut self, pair: Pair<Rule>) -> Expr {
         let pairs = pair.into_inner();
         let file = self.file;
-        let span_of = move |p: &Pair<Rule>| Span::new(file, p.as_span().start(), p.as_span().end());
+        let span_of = move |p: &Pair<Rule>| {
+            Span::new(
+                file,
+                p.as_span().start(),
+                p.as_span().start() + p.as_str().trim_end().len(),
+            )
+        };
         let expr = PRATT
             .map_primary(|p| self.primary(p))
             .map_prefix(|op, rhs| {
@@ -149,7 +159,11 @@ impl Builder {
         let kind = match pair.as_rule() {
             Rule::quantity => self.quantity(pair),
             Rule::ident => ExprKind::Name(pair.as_str().to_string()),
-            Rule::expr => return self.expr(pair),
+            Rule::paren => {
+                // The parentheses belong to the expression's span.
+                let inner = self.expr(pair.into_inner().next().unwrap());
+                return Expr { span, ..inner };
+            }
             r => unreachable!("primary rule {r:?}"),
         };
         Expr { kind, span }
@@ -216,12 +230,12 @@ impl Builder {
                 let at = self.vec3(it.next().unwrap());
                 let size = self.vec3(it.next().unwrap());
                 let rotate = it.next().map(|p| self.expr(p));
-                RoomItem::Box(BoxDecl {
+                RoomItem::Box(Box::new(BoxDecl {
                     name,
                     at,
                     size,
                     rotate,
-                })
+                }))
             }
             Rule::target_decl => {
                 let mut it = pair.into_inner();
@@ -284,7 +298,9 @@ impl Builder {
                     }
                 }
                 Rule::limits => joint.limits.push(self.limits(p)),
-                Rule::neutral => joint.neutral.push(self.expr(p.into_inner().next().unwrap())),
+                Rule::neutral => joint
+                    .neutral
+                    .push(self.expr(p.into_inner().next().unwrap())),
                 Rule::weight => joint.weight.push(self.expr(p.into_inner().next().unwrap())),
                 r => unreachable!("joint part {r:?}"),
             }
@@ -296,7 +312,10 @@ impl Builder {
     /// expressions.
     fn limits(&mut self, pair: Pair<Rule>) -> LimitsExpr {
         let span = self.span(&pair);
-        let exprs: Vec<Pair<Rule>> = pair.into_inner().filter(|p| p.as_rule() == Rule::expr).collect();
+        let exprs: Vec<Pair<Rule>> = pair
+            .into_inner()
+            .filter(|p| p.as_rule() == Rule::expr)
+            .collect();
         let mut it = exprs.into_iter();
         let min = self.expr(it.next().unwrap());
         let max = self.expr(it.next().unwrap());
@@ -370,7 +389,9 @@ impl Builder {
                     Rule::vec3 => OptionValue::Vec3(self.vec3(v)),
                     Rule::plugin_block => OptionValue::Plugin(self.plugin_use(v)),
                     Rule::boolean => OptionValue::Bool(v.as_str() == "true"),
-                    Rule::string => OptionValue::String(unescape(v.into_inner().next().unwrap().as_str())),
+                    Rule::string => {
+                        OptionValue::String(unescape(v.into_inner().next().unwrap().as_str()))
+                    }
                     _ => OptionValue::Expr(self.expr(v)),
                 };
                 OptionDecl {
@@ -396,7 +417,12 @@ impl Builder {
                 Spanned::new(path, span)
             })
             .collect();
-        let persons = it.next().unwrap().into_inner().map(|p| self.name(p)).collect();
+        let persons = it
+            .next()
+            .unwrap()
+            .into_inner()
+            .map(|p| self.name(p))
+            .collect();
         let options = it.next().map(|o| self.options(o)).unwrap_or_default();
         TaskDecl {
             kind,

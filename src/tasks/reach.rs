@@ -1,6 +1,8 @@
 //! The `reach` task: can this person bring their hand to this target?
 
-use crate::plugin::{ParamSpec, Plugin, PluginKind, ReachQuery, SubjectKind, TaskContext, TaskPlugin};
+use crate::plugin::{
+    ParamSpec, Plugin, PluginKind, ReachQuery, SubjectKind, TaskContext, TaskPlugin,
+};
 use crate::report::{ReachReport, TaskReport};
 
 /// The plugin `reach`.
@@ -17,11 +19,24 @@ impl Plugin for Reach {
 
     fn params(&self) -> Vec<ParamSpec> {
         vec![
-            ParamSpec::plugin("solver", PluginKind::Solver, "incremental", "the IK solver and its options"),
-            ParamSpec::length("tolerance", 10.0, "the target counts as reached within this distance")
-                .range(0.001, 1000.0),
-            ParamSpec::integer("seed", 1, "seeds the solver's random starts (mixed with target and person)")
-                .range(0.0, 9_007_199_254_740_992.0),
+            ParamSpec::plugin(
+                "solver",
+                PluginKind::Solver,
+                "incremental",
+                "the IK solver and its options",
+            ),
+            ParamSpec::length(
+                "tolerance",
+                10.0,
+                "the target counts as reached within this distance",
+            )
+            .range(0.001, 1000.0),
+            ParamSpec::integer(
+                "seed",
+                1,
+                "seeds the solver's random starts (mixed with target and person)",
+            )
+            .range(0.0, 9_007_199_254_740_992.0),
         ]
     }
 }
@@ -47,7 +62,10 @@ impl TaskPlugin for Reach {
             .expect("checked base")
             .build(&person.base.options);
         let tolerance_mm = task.options.length_mm("tolerance");
-        let seed = mix_seed(task.options.integer("seed") as u64, &[&task.subject, &person.name]);
+        let seed = mix_seed(
+            task.options.integer("seed") as u64,
+            &[&task.subject, &person.name],
+        );
         let query = ReachQuery {
             room,
             chain: &person.chain,

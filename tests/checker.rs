@@ -1,0 +1,219 @@
+//! Checker tests, table-driven: each bad scenario gives its messages, each
+//! pointing at the offending text; good ones give the values they mean.
+
+use reach::plugin::{Registry, Value};
+use reach::scene::Scenario;
+use reach::Input;
+
+const SCENE: &str = "
+room kitchen {
+  size 3600 x 2800 x 2500
+  target mug at (300, 1200, 960)
+}
+mannequin arm {
+  joint shoulder dh(theta 0, d 0, alpha 90deg, a 0) limits(-90deg, 90deg)
+  joint elbow dh(theta 0, d 0, alpha 0, a 300) limits(0deg, 150deg) neutral 30deg
+  effector hand at (200, 0, 0)
+}
+";
+
+fn check(text: &str) -> Result<Scenario, Vec<(String, String)>> {
+    let registry = Registry::builtin();
+    let (_, result) = reach::check(
+        Input::Text {
+            name: "test.reach",
+            text,
+        },
+        &registry,
+    );
+    result.map_err(|d| {
+        d.errors
+            .iter()
+            .map(|e| {
+                let span = e.span().expect("every checker error has a place");
+                let text = text[span.start as usize..span.end as usize].to_string();
+                (e.kind().to_string(), text)
+            })
+            .collect()
+    })
+}
+
+fn ok(text: &str) -> Scenario {
+    check(text).unwrap_or_else(|e| panic!("{text}\n{e:#?}"))
+}
+
+#[test]
+fn errors_point_at_the_offending_text() {
+    let person =
+        format!("{SCENE}person ann {{ mannequin arm base fixed {{ at (900, 1200, 930) }} }}\n");
+    let cases: Vec<(String, Vec<(&str, &str)>)> = vec![
+        ("let a = 1m + 2deg".into(), vec![("cannot add a length and an angle", "1m + 2deg")]),
+        ("let a = 2deg - 1mm".into(), vec![("cannot subtract an angle and a length", "2deg - 1mm")]),
+        ("let a = 1 / (2mm - 2mm)".into(), vec![("division by zero", "(2mm - 2mm)")]),
+        ("let a = b\nlet b = a".into(), vec![("`a` is defined in terms of itself", "a")]),
+        ("let a = nope".into(), vec![("unknown constant `nope`", "nope")]),
+        ("let a = 1\nlet a = 2".into(), vec![("constant `a` is defined twice", "a")]),
+        (
+            "room k { size 10 x 10 x 10 }\nroom k { size 10 x 10 x 10 }".into(),
+            vec![("room `k` is defined twice", "k")],
+        ),
+        ("room k { size 1deg x 10 x 10 }".into(), vec![("expected a length, found an angle", "1deg")]),
+        (
+            "room k { size 10 x 10 x 10 size 20 x 20 x 20 }".into(),
+            vec![("the room's size is given more than once", "20 x 20 x 20")],
+        ),
+        (
+            "room k { size 10 x 10 x 10\n box b at (0, 0, 0) size (1, 1, 1) rotate 5mm }".into(),
+            vec![("expected an angle, found a length", "5mm")],
+        ),
+        (
+            "mannequin m { joint j dh(theta 1mm) limits(0, 1) }".into(),
+            vec![("expected an angle, found a length", "1mm")],
+        ),
+        (
+            "mannequin m { joint j dh(theta 0, theta 1) limits(0, 1) }".into(),
+            vec![("`theta` is given more than once", "theta")],
+        ),
+        (
+            "mannequin m { joint j prismatic dh(d 10) limits(0deg, 1deg) }".into(),
+            vec![
+                ("expected a length, found an angle", "0deg"),
+                ("expected a length, found an angle", "1deg"),
+            ],
+        ),
+        (
+            "mannequin m { joint j dh(a 1) limits(0, 1) limits(0, 2) }".into(),
+            vec![("`limits` is given more than once", "limits(0, 2)")],
+        ),
+        (
+            "mannequin m { joint j dh(a 1) limits(0, 1)\n effector a at (0,0,0)\n effector b at (0,0,0) }".into(),
+            vec![("more than one effector per mannequin is not supported yet", "b")],
+        ),
+        (
+            format!("{SCENE}person ann {{ mannequin arm {{ neutral elbow 160deg }} base fixed {{ at (0,0,0) }} }}"),
+            vec![(
+                "the neutral value must be within the joint's limits, 0deg to 150deg, found 160deg",
+                "160deg",
+            )],
+        ),
+        (
+            format!("{SCENE}person ann {{ mannequin arm mannequin arm base fixed {{ at (0,0,0) }} }}"),
+            vec![("`mannequin` is given more than once", "arm")],
+        ),
+        (
+            format!("{SCENE}person ann {{ mannequin arm base fixed {{ at 5 }} }}"),
+            vec![("expected a point (x, y, z), found a number", "5")],
+        ),
+        (
+            format!("{SCENE}person ann {{ mannequin arm base fixed {{ at (0,0,0) heading 1mm }} }}"),
+            vec![("expected an angle, found a length", "1mm")],
+        ),
+        (
+            format!("{person}reach mug by ann {{ solver incremental {{ starts 0 }} }}"),
+            vec![("option `starts` must be between 1 and 1000, found 0", "0")],
+        ),
+        (
+            format!("{person}reach mug by ann {{ solver 5 }}"),
+            vec![("expected the name of a solver, found an expression", "5")],
+        ),
+        (
+            format!("{person}reach mug by ann {{ solver fixed }}"),
+            vec![("unknown solver `fixed`", "fixed")],
+        ),
+        (
+            format!("{person}reach mug by ann {{ tolerance \"5mm\" }}"),
+            vec![("expected a length, found a string", "\"5mm\"")],
+        ),
+        (
+            format!("{person}reach mug, cup by ann, bob"),
+            vec![("unknown target `cup`", "cup"), ("unknown person `bob`", "bob")],
+        ),
+    ];
+    for (text, expected) in cases {
+        let errors = match check(&text) {
+            Ok(_) => panic!("{text}\nchecks without error"),
+            Err(e) => e,
+        };
+        let got: Vec<(&str, &str)> = errors
+            .iter()
+            .map(|(m, t)| (m.as_str(), t.as_str()))
+            .collect();
+        assert_eq!(got, expected, "\n{text}");
+    }
+}
+
+#[test]
+fn units_follow_the_file_default_and_explicit_units_win() {
+    let s = ok("units cm rad\nroom k { size 360 x 280 x 250\n target t at (30, 120mm, 1m) }");
+    let t = &s.rooms[0].targets[0];
+    assert_eq!(
+        [t.position_mm.x, t.position_mm.y, t.position_mm.z],
+        [300.0, 120.0, 1000.0]
+    );
+    assert_eq!(s.rooms[0].size_mm.x, 3600.0);
+}
+
+#[test]
+fn constants_may_be_used_before_they_are_defined() {
+    let s = ok(
+        "room k { size w x w x h\n target t at (w / 2, 0, h - 10cm) }\nlet w = 2 * h\nlet h = 1m",
+    );
+    assert_eq!(s.rooms[0].size_mm.x, 2000.0);
+    assert_eq!(s.rooms[0].targets[0].position_mm.x, 1000.0);
+    assert_eq!(s.rooms[0].targets[0].position_mm.z, 900.0);
+}
+
+#[test]
+fn a_person_gets_the_mannequin_with_their_own_limits() {
+    let text = format!(
+        "{SCENE}person ann {{\n mannequin arm {{ limits elbow (10deg, 90deg) weight elbow 3 }}\n base fixed {{ at (900, 1200, 930) heading 90deg }}\n}}"
+    );
+    let s = ok(&text);
+    let elbow = &s.persons[0].chain.joints[1];
+    assert!((elbow.min.to_degrees() - 10.0).abs() < 1e-9);
+    assert!((elbow.max.to_degrees() - 90.0).abs() < 1e-9);
+    assert_eq!(elbow.weight, 3.0);
+    assert!((elbow.neutral.to_degrees() - 30.0).abs() < 1e-9);
+    assert_eq!(s.persons[0].base.name, "fixed");
+    match s.persons[0].base.options.get("heading") {
+        Some(Value::Angle(a)) => assert!((a.to_degrees() - 90.0).abs() < 1e-9),
+        other => panic!("{other:?}"),
+    }
+}
+
+#[test]
+fn plugin_options_take_their_declared_defaults() {
+    let text = format!(
+        "{SCENE}person ann {{ mannequin arm base fixed {{ at (900, 1200, 930) }} }}\nreach mug by ann {{ solver incremental {{ rate 0.2 }} }}"
+    );
+    let s = ok(&text);
+    let task = &s.tasks[0];
+    assert_eq!(task.options.length_mm("tolerance"), 10.0);
+    let solver = task.options.plugin("solver");
+    assert_eq!(solver.name, "incremental");
+    assert_eq!(solver.options.number("rate"), 0.2);
+    assert_eq!(solver.options.number("gamma"), 3.0);
+    assert_eq!(solver.options.integer("starts"), 6);
+}
+
+#[test]
+fn one_task_per_subject_and_person_in_order() {
+    let text = format!(
+        "{SCENE}person ann {{ mannequin arm base fixed {{ at (900, 1200, 930) }} }}\nperson bob {{ mannequin arm base fixed {{ at (900, 1000, 930) }} }}\nroom hall {{ size 10 x 10 x 10\n target hook at (1, 1, 1) }}\nreach mug, hook by ann, bob"
+    );
+    let s = ok(&text);
+    let order: Vec<(&str, &str)> = s
+        .tasks
+        .iter()
+        .map(|t| (t.subject.as_str(), t.person.as_str()))
+        .collect();
+    assert_eq!(
+        order,
+        [
+            ("mug", "ann"),
+            ("mug", "bob"),
+            ("hook", "ann"),
+            ("hook", "bob")
+        ]
+    );
+}

@@ -1,0 +1,199 @@
+//! The `reach` binary as a user meets it: exit codes, output, --out, and
+//! determinism across runs and thread counts.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn reach(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_reach"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .env("NO_COLOR", "1")
+        .output()
+        .expect("the binary runs")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+#[test]
+fn run_prints_a_table_and_exits_0_even_when_a_target_is_unreachable() {
+    let o = reach(&["run", "examples/kitchen.reach"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.contains("NOT reachable"), "{out}");
+    assert!(out.contains("reachable"), "{out}");
+    assert!(
+        out.lines()
+            .any(|l| l.starts_with("task") && l.contains("distance")),
+        "{out}"
+    );
+}
+
+#[test]
+fn json_report_has_the_documented_fields() {
+    let o = reach(&["run", "examples/kitchen.reach", "--format", "json"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("valid JSON");
+    assert_eq!(v["file"], "examples/kitchen.reach");
+    let task = &v["tasks"][0];
+    for field in [
+        "kind",
+        "name",
+        "person",
+        "ok",
+        "distance_mm",
+        "iterations",
+        "posture",
+        "comfort",
+        "base",
+    ] {
+        assert!(!task[field].is_null(), "missing {field} in {task}");
+    }
+    assert_eq!(task["kind"], "reach");
+}
+
+#[test]
+fn json_is_byte_identical_across_runs_and_thread_counts() {
+    let run = |threads: &str| {
+        let o = Command::new(env!("CARGO_BIN_EXE_reach"))
+            .args(["run", "examples/kitchen.reach", "--format", "json"])
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .env("RAYON_NUM_THREADS", threads)
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(0));
+        o.stdout
+    };
+    let first = run("1");
+    assert_eq!(first, run("1"));
+    assert_eq!(first, run("2"));
+    assert_eq!(first, run("4"));
+}
+
+#[test]
+fn out_dir_gets_report_json_and_nothing_half_written() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("results");
+    let o = reach(&[
+        "run",
+        "examples/kitchen.reach",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let written = std::fs::read_to_string(out.join("report.json")).unwrap();
+    let json = reach(&["run", "examples/kitchen.reach", "--format", "json"]);
+    assert_eq!(written, stdout(&json));
+    let names: Vec<_> = std::fs::read_dir(&out)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names, ["report.json"], "no temporary file is left behind");
+}
+
+#[test]
+fn a_scenario_with_errors_writes_no_report() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = reach(&[
+        "run",
+        "tests/errors/several_errors.reach",
+        "--out",
+        dir.path().to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+}
+
+#[test]
+fn check_reports_ok() {
+    let o = reach(&["check", "examples/kitchen.reach"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stdout(&o).contains("ok (4 tasks)"), "{}", stdout(&o));
+}
+
+#[test]
+fn every_error_file_exits_1_with_a_located_diagnostic() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/errors");
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "reach"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 30, "only {} error files", files.len());
+    for path in files {
+        let rel = format!(
+            "tests/errors/{}",
+            path.file_name().unwrap().to_str().unwrap()
+        );
+        for command in ["check", "run"] {
+            let o = reach(&[command, &rel]);
+            let err = stderr(&o);
+            assert_eq!(o.status.code(), Some(1), "{command} {rel}: {err}");
+            assert!(o.stdout.is_empty(), "{command} {rel} printed a report");
+            assert!(
+                err.contains("tests/errors/"),
+                "{rel}: no file named in\n{err}"
+            );
+            assert!(!err.contains("panicked"), "{rel}: {err}");
+        }
+    }
+}
+
+#[test]
+fn usage_errors_exit_2() {
+    assert_eq!(reach(&["run"]).status.code(), Some(2));
+    assert_eq!(reach(&["frobnicate"]).status.code(), Some(2));
+    let o = reach(&["run", "examples/kitchen.reach", "--format", "yaml"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("text, json"), "{}", stderr(&o));
+}
+
+#[test]
+fn a_missing_file_is_a_diagnostic() {
+    let o = reach(&["run", "no/such/file.reach"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        stderr(&o).contains("cannot read `no/such/file.reach`"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+#[test]
+fn help_and_version() {
+    let help = reach(&["--help"]);
+    assert_eq!(help.status.code(), Some(0));
+    for command in ["run", "check", "plugins"] {
+        assert!(stdout(&help).contains(command));
+    }
+    let version = reach(&["--version"]);
+    assert_eq!(version.status.code(), Some(0));
+    assert!(stdout(&version).starts_with("reach "));
+}
+
+#[test]
+fn plugins_lists_every_plugin_with_its_parameters() {
+    let o = reach(&["plugins"]);
+    assert_eq!(o.status.code(), Some(0));
+    let out = stdout(&o);
+    for name in [
+        "incremental",
+        "fixed",
+        "reach",
+        "text",
+        "json",
+        "rate",
+        "gamma",
+        "tolerance",
+        "heading",
+    ] {
+        assert!(out.contains(name), "{name} missing from\n{out}");
+    }
+}
