@@ -1,0 +1,116 @@
+//! A program that uses reach as a library and registers its own solver.
+//!
+//! The solver here, `sampling`, draws random postures within the joint
+//! limits and keeps the one whose hand lands closest to the target: a
+//! baseline, far slower than `incremental`, but a complete solver. Once
+//! registered, a scenario names it like any built-in one, with an option
+//! block that its declared parameters validate.
+//!
+//! Run it with `cargo run --example custom_solver`.
+
+use rand_chacha::rand_core::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+use reach::plugin::{
+    IkProblem, IkSolution, Options, ParamSpec, Plugin, Registry, Solver, SolverPlugin,
+};
+use reach::report::Report;
+use reach::Input;
+
+/// The plugin: its name, its doc line and its parameters.
+pub struct Sampling;
+
+impl Plugin for Sampling {
+    fn name(&self) -> &'static str {
+        "sampling"
+    }
+
+    fn doc(&self) -> &'static str {
+        "random postures within the limits; keeps the closest (a baseline)"
+    }
+
+    fn params(&self) -> Vec<ParamSpec> {
+        vec![ParamSpec::integer("samples", 5000, "postures to try").range(1.0, 1e7)]
+    }
+}
+
+impl SolverPlugin for Sampling {
+    fn build(&self, options: &Options) -> Box<dyn Solver> {
+        Box::new(SamplingSolver {
+            samples: options.integer("samples") as u64,
+        })
+    }
+}
+
+struct SamplingSolver {
+    samples: u64,
+}
+
+impl Solver for SamplingSolver {
+    fn solve(&self, problem: &IkProblem<'_>) -> IkSolution {
+        let mut rng = ChaCha8Rng::seed_from_u64(problem.seed);
+        let mut best = IkSolution {
+            q: problem.chain.neutral(),
+            distance_mm: f64::INFINITY,
+            iterations: 0,
+        };
+        for i in 1..=self.samples {
+            let q: Vec<f64> = problem
+                .chain
+                .joints
+                .iter()
+                .map(|j| j.min + (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64 * j.range())
+                .collect();
+            let distance_mm = (problem.chain.effector(&q) - problem.target_mm).norm();
+            if distance_mm < best.distance_mm {
+                best = IkSolution {
+                    q,
+                    distance_mm,
+                    iterations: i,
+                };
+            }
+        }
+        best
+    }
+}
+
+/// A scenario that uses the new solver beside the built-in one.
+pub const SCENARIO: &str = r#"
+use std::arm
+room kitchen {
+  size 3600 x 2800 x 2500
+  target mug at (400, 1150, 960)
+}
+person ben {
+  mannequin right_arm
+  base fixed { at (850, 1300, 930) heading 180deg }
+}
+reach mug by ben { solver sampling { samples 20000 } tolerance 60mm }
+reach mug by ben { solver incremental tolerance 60mm }
+"#;
+
+/// Check and run `SCENARIO` with the built-in plugins plus `sampling`.
+pub fn run_scenario() -> Report {
+    let mut registry = Registry::builtin();
+    registry.register_solver(Sampling);
+    let (_, checked) = reach::check(
+        Input::Text {
+            name: "custom_solver.reach",
+            text: SCENARIO,
+        },
+        &registry,
+    );
+    match checked {
+        Ok(scenario) => reach::run(&scenario, &registry),
+        Err(d) => panic!("{}", d.render(true)),
+    }
+}
+
+#[allow(dead_code)]
+fn main() {
+    let report = run_scenario();
+    let text = Registry::builtin()
+        .format("text")
+        .expect("built in")
+        .render(&report);
+    print!("{text}");
+}

@@ -1,0 +1,45 @@
+//! A solver registered by a program, named in a scenario like a built-in one
+//! (the code is `examples/custom_solver.rs`, run here as a test).
+
+#[path = "../examples/custom_solver.rs"]
+mod custom_solver;
+
+use reach::plugin::{PluginKind, Registry};
+use reach::report::TaskReport;
+
+#[test]
+fn a_registered_solver_is_usable_by_name() {
+    let report = custom_solver::run_scenario();
+    let solvers: Vec<&str> = report
+        .tasks
+        .iter()
+        .map(|t| match t {
+            TaskReport::Reach(r) => r.solver.as_str(),
+        })
+        .collect();
+    assert_eq!(solvers, ["sampling", "incremental"]);
+    for task in &report.tasks {
+        let TaskReport::Reach(r) = task;
+        assert!(r.ok, "{} did not reach: {} mm", r.solver, r.distance_mm);
+    }
+}
+
+#[test]
+fn registering_adds_to_the_listing_and_validates_options() {
+    let mut registry = Registry::builtin();
+    registry.register_solver(custom_solver::Sampling);
+    assert_eq!(
+        registry.names(PluginKind::Solver),
+        ["incremental", "sampling"]
+    );
+    let text = custom_solver::SCENARIO.replace("samples 20000", "sample 20000");
+    let (_, checked) = reach::check(
+        reach::Input::Text {
+            name: "t.reach",
+            text: &text,
+        },
+        &registry,
+    );
+    let message = checked.unwrap_err().errors[0].kind().to_string();
+    assert_eq!(message, "solver `sampling` has no option `sample`");
+}
