@@ -192,15 +192,7 @@ impl Quantity {
                     value: b,
                     defaults: db,
                 },
-            ) => {
-                if da != db {
-                    return Err(QuantityError::MixedDefaults);
-                }
-                Ok(Bare {
-                    value: a + sign * b,
-                    defaults: da,
-                })
-            }
+            ) => both_bare(a, da, b, db, |x, y| x + sign * y),
             (Dimensioned { value: a, dim }, Bare { value: b, defaults }) if adopts(dim) => {
                 Ok(Dimensioned {
                     value: a + sign * b * default_factor(dim, defaults),
@@ -241,13 +233,7 @@ impl Quantity {
                     defaults: db,
                 },
             ) => {
-                if da != db {
-                    return Err(QuantityError::MixedDefaults);
-                }
-                Bare {
-                    value: a * b,
-                    defaults: da,
-                }
+                return both_bare(a, da, b, db, |x, y| x * y);
             }
             (Bare { value: a, .. }, Dimensioned { value: b, dim })
             | (Dimensioned { value: b, dim }, Bare { value: a, .. }) => {
@@ -277,13 +263,7 @@ impl Quantity {
                     defaults: db,
                 },
             ) => {
-                if da != db {
-                    return Err(QuantityError::MixedDefaults);
-                }
-                Bare {
-                    value: a / b,
-                    defaults: da,
-                }
+                return both_bare(a, da, b, db, |x, y| x / y);
             }
             (Dimensioned { value: a, dim }, Bare { value: b, .. }) => {
                 Dimensioned { value: a / b, dim }
@@ -315,6 +295,24 @@ impl Quantity {
             _ => None,
         }
     }
+}
+
+/// Two bare numbers combine into a bare number, if their files agree on
+/// default units.
+fn both_bare(
+    a: f64,
+    da: UnitDefaults,
+    b: f64,
+    db: UnitDefaults,
+    op: impl FnOnce(f64, f64) -> f64,
+) -> Result<Quantity, QuantityError> {
+    if da != db {
+        return Err(QuantityError::MixedDefaults);
+    }
+    Ok(Quantity::Bare {
+        value: op(a, b),
+        defaults: da,
+    })
 }
 
 /// Whether a bare number added to a quantity of this dimension can take the
