@@ -48,7 +48,7 @@ pub fn load(input: Input<'_>) -> (Sources, Result<Vec<LoadedFile>, Diagnostics>)
                 .loaded
                 .sources
                 .add(name.to_string(), Origin::Memory, text.to_string());
-            loader.parse_and_follow(id, Key::Memory, None);
+            loader.parse_and_follow(id, Key::Memory);
         }
     }
     let Loader { loaded, errors, .. } = loader;
@@ -87,7 +87,7 @@ impl Loader {
         let text = match std::fs::read(path) {
             Ok(bytes) => match String::from_utf8(bytes) {
                 Ok(t) => t,
-                Err(_) => return self.fail(ErrorKind::NotUtf8 { path: shown }, used_at),
+                Err(e) => return self.not_utf8(path, shown, e),
             },
             Err(e) => {
                 let reason = e.kind().to_string();
@@ -104,7 +104,22 @@ impl Loader {
             .loaded
             .sources
             .add(shown, Origin::Path(path.to_path_buf()), text);
-        self.parse_and_follow(id, key, used_at);
+        self.parse_and_follow(id, key);
+    }
+
+    /// Keep the file (invalid bytes replaced) so the diagnostic can show
+    /// the line with the first invalid byte.
+    fn not_utf8(&mut self, path: &Path, shown: String, e: std::string::FromUtf8Error) {
+        let at = e.utf8_error().valid_up_to();
+        let text = String::from_utf8_lossy(e.as_bytes()).into_owned();
+        let replacement = text[at..].chars().next().map_or(0, char::len_utf8);
+        let id = self
+            .loaded
+            .sources
+            .add(shown.clone(), Origin::Path(path.to_path_buf()), text);
+        let span = Span::new(id, at, at + replacement);
+        self.errors
+            .push(Error::new(ErrorKind::NotUtf8 { path: shown }, span));
     }
 
     fn fail(&mut self, kind: ErrorKind, at: Option<Span>) {
@@ -114,7 +129,7 @@ impl Loader {
         });
     }
 
-    fn parse_and_follow(&mut self, id: FileId, key: Key, _used_at: Option<Span>) {
+    fn parse_and_follow(&mut self, id: FileId, key: Key) {
         let text = std::sync::Arc::clone(&self.loaded.sources.get(id).text);
         let ast = match parse_file(id, &text) {
             Ok(ast) => ast,
@@ -179,7 +194,7 @@ impl Loader {
             Origin::Std(name.to_string()),
             text.to_string(),
         );
-        self.parse_and_follow(id, key, Some(span));
+        self.parse_and_follow(id, key);
     }
 
     /// `rel` as seen from the directory of file `from`.
