@@ -197,6 +197,16 @@ fn plugin_options_take_their_declared_defaults() {
 }
 
 #[test]
+fn a_default_plugin_gets_its_own_default_options() {
+    let text = format!("{SCENE}person ann {{ mannequin arm base fixed {{ at (900, 1200, 930) }} }}\nreach mug by ann");
+    let s = ok(&text);
+    let solver = s.tasks[0].options.plugin("solver");
+    assert_eq!(solver.name, "incremental");
+    assert_eq!(solver.options.number("rate"), 0.5);
+    assert!(solver.options.boolean("incremental_fk"));
+}
+
+#[test]
 fn one_task_per_subject_and_person_in_order() {
     let text = format!(
         "{SCENE}person ann {{ mannequin arm base fixed {{ at (900, 1200, 930) }} }}\nperson bob {{ mannequin arm base fixed {{ at (900, 1000, 930) }} }}\nroom hall {{ size 10 x 10 x 10\n target hook at (1, 1, 1) }}\nreach mug, hook by ann, bob"

@@ -64,7 +64,7 @@ impl Checker<'_> {
                 Some((_, Some(v))) => options.push((spec.name, v.clone())),
                 Some((_, None)) => ok = false,
                 None => match &spec.default {
-                    Some(d) => options.push((spec.name, d.clone())),
+                    Some(d) => options.push((spec.name, self.complete_default(spec, d, at)?)),
                     None => {
                         self.error(Error::new(
                             ErrorKind::MissingOption {
@@ -79,6 +79,22 @@ impl Checker<'_> {
             }
         }
         ok.then(|| Options::new(options))
+    }
+
+    /// A default value as the plugin will read it: a default plugin gets
+    /// its own options' defaults, validated like a plugin named in the file.
+    fn complete_default(&mut self, spec: &ParamSpec, default: &Value, at: Span) -> Option<Value> {
+        match (spec.kind, default) {
+            (ParamKind::Plugin(kind), Value::Plugin(cfg)) => {
+                let use_ = PluginUse {
+                    name: crate::span::Spanned::new(cfg.name.clone(), at),
+                    options: Vec::new(),
+                    span: at,
+                };
+                Some(Value::Plugin(self.plugin_config(kind, &use_)?))
+            }
+            _ => Some(default.clone()),
+        }
     }
 
     fn option_value(&mut self, spec: &ParamSpec, opt: &OptionDecl) -> Option<Value> {

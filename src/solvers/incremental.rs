@@ -4,14 +4,19 @@
 //! and the joint stays within its limits. With sign memory the direction
 //! that worked last is tried first; when a sweep over all joints improves
 //! the distance by less than `threshold`, the rate is divided by `gamma`
-//! (eq. 2). Several starts (the neutral posture, then seeded random ones) are
+//! (eq. 2). With `incremental_fk` the effector after a one-joint change costs
+//! a constant number of products (eq. 6-8, `kinematics::IncrementalFk`);
+//! without it, the full product of the chain (the paper's variants A, B).
+//! Several starts (the neutral posture, then seeded random ones) are
 //! solved and the kept solution is the most comfortable of those that reach
 //! (section 5.3.4).
 
 use rand_chacha::rand_core::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
-use crate::kinematics::Chain;
+use nalgebra::Point3;
+
+use crate::kinematics::{Chain, IncrementalFk};
 use crate::plugin::{IkProblem, IkSolution, Options, ParamSpec, Plugin, Solver, SolverPlugin};
 
 /// The plugin `incremental`.
@@ -25,6 +30,7 @@ pub struct IncrementalSettings {
     pub threshold_mm: f64,
     pub min_rate: f64,
     pub sign_memory: bool,
+    pub incremental_fk: bool,
     pub starts: u32,
     pub neutral_start: bool,
     pub max_sweeps: u32,
@@ -66,10 +72,15 @@ impl Plugin for Incremental {
                 true,
                 "try first the direction that last worked for each joint",
             ),
+            ParamSpec::boolean(
+                "incremental_fk",
+                true,
+                "update the effector incrementally after each joint change (eq. 6-8)",
+            ),
             ParamSpec::integer(
                 "starts",
                 6,
-                "random starts; the most comfortable reaching solution is kept",
+                "starting postures; the most comfortable reaching solution is kept",
             )
             .range(1.0, 1000.0),
             ParamSpec::boolean(
@@ -96,6 +107,7 @@ impl SolverPlugin for Incremental {
                 threshold_mm: o.length_mm("threshold"),
                 min_rate: o.number("min_rate"),
                 sign_memory: o.boolean("sign_memory"),
+                incremental_fk: o.boolean("incremental_fk"),
                 starts: o.integer("starts") as u32,
                 neutral_start: o.boolean("neutral_start"),
                 max_sweeps: o.integer("max_sweeps") as u32,
@@ -156,42 +168,105 @@ fn unit_interval(rng: &mut ChaCha8Rng) -> f64 {
     (rng.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
 }
 
+/// Forward kinematics as the descent uses it: the effector with one joint
+/// moved, and committing a move.
+trait Kinematics {
+    fn effector_with(&mut self, i: usize, qi: f64) -> Point3<f64>;
+    fn set(&mut self, i: usize, qi: f64);
+    fn q(&self) -> &[f64];
+    fn into_q(self) -> Vec<f64>;
+}
+
+impl Kinematics for IncrementalFk<'_> {
+    fn effector_with(&mut self, i: usize, qi: f64) -> Point3<f64> {
+        IncrementalFk::effector_with(self, i, qi)
+    }
+    fn set(&mut self, i: usize, qi: f64) {
+        IncrementalFk::set(self, i, qi)
+    }
+    fn q(&self) -> &[f64] {
+        IncrementalFk::q(self)
+    }
+    fn into_q(self) -> Vec<f64> {
+        IncrementalFk::into_q(self)
+    }
+}
+
+/// The full product of all link matrices for every evaluation.
+struct FullProduct<'a> {
+    chain: &'a Chain,
+    q: Vec<f64>,
+}
+
+impl Kinematics for FullProduct<'_> {
+    fn effector_with(&mut self, i: usize, qi: f64) -> Point3<f64> {
+        let old = std::mem::replace(&mut self.q[i], qi);
+        let p = self.chain.effector(&self.q);
+        self.q[i] = old;
+        p
+    }
+    fn set(&mut self, i: usize, qi: f64) {
+        self.q[i] = qi;
+    }
+    fn q(&self) -> &[f64] {
+        &self.q
+    }
+    fn into_q(self) -> Vec<f64> {
+        self.q
+    }
+}
+
 impl IncrementalSolver {
-    /// One descent from `q` (section 5.2 with the options of 5.3.1).
-    fn descend(&self, problem: &IkProblem<'_>, mut q: Vec<f64>) -> IkSolution {
+    /// One descent from `q` (section 5.2 with the options of 5.3.1-5.3.2).
+    fn descend(&self, problem: &IkProblem<'_>, q: Vec<f64>) -> IkSolution {
+        if self.settings.incremental_fk {
+            self.descend_with(problem, IncrementalFk::new(problem.chain, q))
+        } else {
+            self.descend_with(
+                problem,
+                FullProduct {
+                    chain: problem.chain,
+                    q,
+                },
+            )
+        }
+    }
+
+    fn descend_with(&self, problem: &IkProblem<'_>, mut fk: impl Kinematics) -> IkSolution {
         let s = &self.settings;
         let chain = problem.chain;
-        let distance = |q: &[f64]| (chain.effector(q) - problem.target_mm).norm();
-        let mut d = distance(&q);
+        let target = problem.target_mm;
+        let tolerance_sq = problem.tolerance_mm * problem.tolerance_mm;
+        let start = fk.effector_with(0, fk.q()[0]);
+        let mut d_sq = (start - target).norm_squared();
         let mut rate = s.rate;
         let mut sign = vec![1.0_f64; chain.dof()];
         let mut sweeps = 0u64;
-        while d > problem.tolerance_mm && sweeps < u64::from(s.max_sweeps) {
+        while d_sq > tolerance_sq && sweeps < u64::from(s.max_sweeps) {
             sweeps += 1;
-            let before = d;
+            let before = d_sq.sqrt();
             for (i, joint) in chain.joints.iter().enumerate() {
                 let inc = joint.range() * rate;
                 if inc == 0.0 {
                     continue;
                 }
                 let first = if s.sign_memory { sign[i] } else { 1.0 };
-                let old = q[i];
+                let old = fk.q()[i];
                 for dir in [first, -first] {
                     let candidate = old + dir * inc;
                     if candidate < joint.min || candidate > joint.max {
                         continue;
                     }
-                    q[i] = candidate;
-                    let nd = distance(&q);
-                    if nd < d {
-                        d = nd;
+                    let nd_sq = (fk.effector_with(i, candidate) - target).norm_squared();
+                    if nd_sq < d_sq {
+                        d_sq = nd_sq;
+                        fk.set(i, candidate);
                         sign[i] = dir;
                         break;
                     }
-                    q[i] = old;
                 }
             }
-            if before - d < s.threshold_mm {
+            if before - d_sq.sqrt() < s.threshold_mm {
                 if s.gamma > 1.0 && rate / s.gamma >= s.min_rate {
                     rate /= s.gamma;
                 } else {
@@ -200,8 +275,8 @@ impl IncrementalSolver {
             }
         }
         IkSolution {
-            q,
-            distance_mm: d,
+            q: fk.into_q(),
+            distance_mm: d_sq.sqrt(),
             iterations: sweeps,
         }
     }
