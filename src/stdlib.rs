@@ -2,7 +2,10 @@
 //! binary and loaded with `use std::NAME`.
 
 /// Every module, by name, in the order `reach stdlib` lists them.
-pub const MODULES: &[(&str, &str)] = &[("arm", include_str!("../stdlib/arm.reach"))];
+pub const MODULES: &[(&str, &str)] = &[
+    ("arm", include_str!("../stdlib/arm.reach")),
+    ("paper", include_str!("../stdlib/paper.reach")),
+];
 
 /// The text of module `name`, if there is one.
 pub fn module(name: &str) -> Option<&'static str> {

@@ -7,4 +7,4 @@ mod incremental;
 
 pub use chain::{Chain, Joint, JointKind};
 pub use dh::Dh;
-pub use incremental::IncrementalFk;
+pub use incremental::{IncrementalFk, Step};

@@ -191,6 +191,18 @@ impl Options {
         }
     }
 
+    /// These options with declared option `name` set to `value` (for
+    /// programs that configure plugins without a scenario file).
+    pub fn with(mut self, name: &str, value: Value) -> Self {
+        let slot = self
+            .values
+            .iter_mut()
+            .find(|(n, _)| *n == name)
+            .unwrap_or_else(|| panic!("no declared option `{name}` to set"));
+        slot.1 = value;
+        self
+    }
+
     pub fn iter(&self) -> impl Iterator<Item = &(&'static str, Value)> {
         self.values.iter()
     }

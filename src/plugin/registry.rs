@@ -31,6 +31,7 @@ impl Registry {
     pub fn builtin() -> Self {
         let mut r = Registry::default();
         r.register_solver(crate::solvers::Incremental);
+        r.register_solver(crate::solvers::Dls);
         r.register_base(crate::bases::Fixed);
         r.register_task(crate::tasks::Reach);
         r.register_format(crate::output::Text);

@@ -14,9 +14,9 @@
 use rand_chacha::rand_core::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
-use nalgebra::Point3;
+use nalgebra::{Point3, Vector3};
 
-use crate::kinematics::{Chain, IncrementalFk};
+use crate::kinematics::{Chain, IncrementalFk, Step};
 use crate::plugin::{IkProblem, IkSolution, Options, ParamSpec, Plugin, Solver, SolverPlugin};
 
 /// The plugin `incremental`.
@@ -30,6 +30,9 @@ pub struct IncrementalSettings {
     pub threshold_mm: f64,
     pub min_rate: f64,
     pub sign_memory: bool,
+    pub grow: f64,
+    pub shrink: f64,
+    pub eager_pair: bool,
     pub incremental_fk: bool,
     pub starts: u32,
     pub neutral_start: bool,
@@ -72,6 +75,14 @@ impl Plugin for Incremental {
                 true,
                 "try first the direction that last worked for each joint",
             ),
+            ParamSpec::number("grow", 2.0, "a joint's increment is multiplied by this after a kept move (1: never)")
+                .range(1.0, 10.0),
+            ParamSpec::number("shrink", 0.5, "and by this after neither direction helped (1: never)").range(0.01, 1.0),
+            ParamSpec::boolean(
+                "eager_pair",
+                true,
+                "evaluate both directions before choosing (same answer; faster on pipelined processors)",
+            ),
             ParamSpec::boolean(
                 "incremental_fk",
                 true,
@@ -107,6 +118,9 @@ impl SolverPlugin for Incremental {
                 threshold_mm: o.length_mm("threshold"),
                 min_rate: o.number("min_rate"),
                 sign_memory: o.boolean("sign_memory"),
+                grow: o.number("grow"),
+                shrink: o.number("shrink"),
+                eager_pair: o.boolean("eager_pair"),
                 incremental_fk: o.boolean("incremental_fk"),
                 starts: o.integer("starts") as u32,
                 neutral_start: o.boolean("neutral_start"),
@@ -168,21 +182,47 @@ fn unit_interval(rng: &mut ChaCha8Rng) -> f64 {
     (rng.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
 }
 
-/// Forward kinematics as the descent uses it: the effector with one joint
-/// moved, and committing a move.
+/// Forward kinematics as the descent uses it: for joint i, something
+/// computed once per visit (the lever), then the squared distance for each
+/// step tried, and committing a move.
 trait Kinematics {
-    fn effector_with(&mut self, i: usize, qi: f64) -> Point3<f64>;
-    fn set(&mut self, i: usize, qi: f64);
+    type Lever;
+    fn lever(&mut self, i: usize) -> Self::Lever;
+    /// The squared distance with joint i moved by `dir * step.delta`, and the
+    /// cosine and sine of its new angle.
+    fn distance_sq_moved(
+        &mut self,
+        i: usize,
+        step: &Step,
+        dir: f64,
+        lever: &Self::Lever,
+    ) -> (f64, (f64, f64));
+    fn set_moved(&mut self, i: usize, qi: f64, cos_sin: (f64, f64));
+    fn distance_sq(&mut self) -> f64;
     fn q(&self) -> &[f64];
     fn into_q(self) -> Vec<f64>;
 }
 
 impl Kinematics for IncrementalFk<'_> {
-    fn effector_with(&mut self, i: usize, qi: f64) -> Point3<f64> {
-        IncrementalFk::effector_with(self, i, qi)
+    type Lever = Vector3<f64>;
+    fn lever(&mut self, i: usize) -> Vector3<f64> {
+        IncrementalFk::lever(self, i)
     }
-    fn set(&mut self, i: usize, qi: f64) {
-        IncrementalFk::set(self, i, qi)
+    #[inline]
+    fn distance_sq_moved(
+        &mut self,
+        i: usize,
+        step: &Step,
+        dir: f64,
+        lever: &Vector3<f64>,
+    ) -> (f64, (f64, f64)) {
+        IncrementalFk::distance_sq_moved(self, i, step, dir, lever)
+    }
+    fn set_moved(&mut self, i: usize, qi: f64, cos_sin: (f64, f64)) {
+        IncrementalFk::set_moved(self, i, qi, cos_sin)
+    }
+    fn distance_sq(&mut self) -> f64 {
+        IncrementalFk::distance_sq(self)
     }
     fn q(&self) -> &[f64] {
         IncrementalFk::q(self)
@@ -192,21 +232,29 @@ impl Kinematics for IncrementalFk<'_> {
     }
 }
 
-/// The full product of all link matrices for every evaluation.
+/// The full product of all link matrices for every evaluation (the paper's
+/// variants A and B).
 struct FullProduct<'a> {
     chain: &'a Chain,
     q: Vec<f64>,
+    target: Point3<f64>,
 }
 
 impl Kinematics for FullProduct<'_> {
-    fn effector_with(&mut self, i: usize, qi: f64) -> Point3<f64> {
-        let old = std::mem::replace(&mut self.q[i], qi);
+    type Lever = ();
+    fn lever(&mut self, _: usize) {}
+    fn distance_sq_moved(&mut self, i: usize, step: &Step, dir: f64, _: &()) -> (f64, (f64, f64)) {
+        let old = self.q[i];
+        self.q[i] = old + dir * step.delta;
         let p = self.chain.effector(&self.q);
         self.q[i] = old;
-        p
+        ((p - self.target).norm_squared(), (1.0, 0.0))
     }
-    fn set(&mut self, i: usize, qi: f64) {
+    fn set_moved(&mut self, i: usize, qi: f64, _: (f64, f64)) {
         self.q[i] = qi;
+    }
+    fn distance_sq(&mut self) -> f64 {
+        (self.chain.effector(&self.q) - self.target).norm_squared()
     }
     fn q(&self) -> &[f64] {
         &self.q
@@ -219,64 +267,110 @@ impl Kinematics for FullProduct<'_> {
 impl IncrementalSolver {
     /// One descent from `q` (section 5.2 with the options of 5.3.1-5.3.2).
     fn descend(&self, problem: &IkProblem<'_>, q: Vec<f64>) -> IkSolution {
+        let (chain, target) = (problem.chain, problem.target_mm);
         if self.settings.incremental_fk {
-            self.descend_with(problem, IncrementalFk::new(problem.chain, q))
+            self.descend_with(problem, IncrementalFk::new(chain, q, target))
         } else {
-            self.descend_with(
-                problem,
-                FullProduct {
-                    chain: problem.chain,
-                    q,
-                },
-            )
+            self.descend_with(problem, FullProduct { chain, q, target })
         }
     }
 
     fn descend_with(&self, problem: &IkProblem<'_>, mut fk: impl Kinematics) -> IkSolution {
         let s = &self.settings;
         let chain = problem.chain;
-        let target = problem.target_mm;
         let tolerance_sq = problem.tolerance_mm * problem.tolerance_mm;
-        let start = fk.effector_with(0, fk.q()[0]);
-        let mut d_sq = (start - target).norm_squared();
+        let mut d_sq = fk.distance_sq();
         let mut rate = s.rate;
         let mut sign = vec![1.0_f64; chain.dof()];
+        // Each joint's increment: Inc(i) = range * rate (section 5.3.1), then
+        // adapted per joint (the paper leaves the adaptation open): grown
+        // after a kept move, shrunk after a miss, never beyond the range.
+        let mut steps: Vec<Step> = chain
+            .joints
+            .iter()
+            .map(|j| Step::new(j.range() * rate))
+            .collect();
+        let min_steps: Vec<f64> = chain
+            .joints
+            .iter()
+            .map(|j| j.range() * s.min_rate)
+            .collect();
         let mut sweeps = 0u64;
         while d_sq > tolerance_sq && sweeps < u64::from(s.max_sweeps) {
             sweeps += 1;
             let before = d_sq.sqrt();
             for (i, joint) in chain.joints.iter().enumerate() {
-                let inc = joint.range() * rate;
-                if inc == 0.0 {
+                if steps[i].delta == 0.0 {
                     continue;
                 }
+                let step = steps[i];
+                let lever = fk.lever(i);
                 let first = if s.sign_memory { sign[i] } else { 1.0 };
                 let old = fk.q()[i];
-                for dir in [first, -first] {
-                    let candidate = old + dir * inc;
-                    if candidate < joint.min || candidate > joint.max {
-                        continue;
+                let within = |v: f64| v >= joint.min && v <= joint.max;
+                let plus = old + first * step.delta;
+                let minus = old - first * step.delta;
+                // The paper's rule: the first direction if it helps, else the
+                // other if it helps. Eagerly, both are evaluated before either
+                // is chosen, so the second does not wait for the first
+                // comparison; lazily (the paper's cost), the second only if
+                // the first did not help.
+                let (d_first, cs_first) = fk.distance_sq_moved(i, &step, first, &lever);
+                let second = if s.eager_pair {
+                    Some(fk.distance_sq_moved(i, &step, -first, &lever))
+                } else {
+                    None
+                };
+                let kept = if d_first < d_sq && within(plus) {
+                    d_sq = d_first;
+                    fk.set_moved(i, plus, cs_first);
+                    true
+                } else {
+                    let (d_second, cs_second) =
+                        second.unwrap_or_else(|| fk.distance_sq_moved(i, &step, -first, &lever));
+                    if d_second < d_sq && within(minus) {
+                        d_sq = d_second;
+                        fk.set_moved(i, minus, cs_second);
+                        sign[i] = -first;
+                        true
+                    } else {
+                        false
                     }
-                    let nd_sq = (fk.effector_with(i, candidate) - target).norm_squared();
-                    if nd_sq < d_sq {
-                        d_sq = nd_sq;
-                        fk.set(i, candidate);
-                        sign[i] = dir;
-                        break;
-                    }
+                };
+                let factor = if kept { s.grow } else { s.shrink };
+                if factor != 1.0 {
+                    let scaled = step.scaled(factor);
+                    steps[i] = if scaled.delta > joint.range() {
+                        Step::new(joint.range())
+                    } else {
+                        scaled
+                    };
                 }
             }
-            if before - d_sq.sqrt() < s.threshold_mm {
+            if steps
+                .iter()
+                .zip(&min_steps)
+                .all(|(st, min)| st.delta < *min)
+            {
+                break;
+            }
+            if before - d_sq.sqrt() <= s.threshold_mm {
                 if s.gamma > 1.0 && rate / s.gamma >= s.min_rate {
                     rate /= s.gamma;
-                } else {
+                    for st in &mut steps {
+                        *st = st.scaled(1.0 / s.gamma);
+                    }
+                } else if s.grow == 1.0 && s.shrink == 1.0 {
                     break;
                 }
             }
         }
+        // The distance reported is that of the plain product of the chain,
+        // whatever the descent computed on the way.
+        let q = fk.into_q();
         IkSolution {
-            q: fk.into_q(),
-            distance_mm: d_sq.sqrt(),
+            distance_mm: (chain.effector(&q) - problem.target_mm).norm(),
+            q,
             iterations: sweeps,
         }
     }

@@ -1,5 +1,7 @@
 //! Inverse kinematics solvers, each a plugin.
 
+mod dls;
 mod incremental;
 
-pub use incremental::{Incremental, IncrementalSettings, IncrementalSolver};
+pub use dls::{Dls, DlsSolver};
+pub use incremental::{random_posture, Incremental, IncrementalSettings, IncrementalSolver};

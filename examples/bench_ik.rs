@@ -1,0 +1,361 @@
+//! IK benchmark on the accessibility paper's 21-DOF chain (`std::paper`),
+//! after the protocol used to compare IK solvers in robotics (TRAC-IK):
+//! targets are the forward kinematics of random postures within the joint
+//! limits (fixed seed), position only, tolerance 0.5 units (5 mm); the time
+//! per solve includes failures.
+//!
+//! `cargo run --release --example bench_ik [-- --json] [--solves N] [--set OPTION=VALUE ...]`
+//!
+//! `--set` changes an option of the two `incremental` rows (numbers and
+//! true/false; lengths in mm), to try other settings.
+//!
+//! Prints a markdown table (and with `--json` one JSON object per line):
+//! the paper's variants A-F of its table 1 beside the paper's own figures,
+//! `incremental` with its defaults (one start, and with restarts), `dls`,
+//! and the Jacobian solver of the `k` crate on the same chain and targets.
+
+use std::time::Instant;
+
+use nalgebra::Point3;
+use rand_chacha::rand_core::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use reach::kinematics::Chain;
+use reach::plugin::{IkProblem, Options, Registry, Solver, Value};
+use reach::solvers::random_posture;
+use reach::Input;
+
+/// The paper's tolerance: 0.5 units, taken as centimetres.
+const TOLERANCE_MM: f64 = 5.0;
+const TARGET_SEED: u64 = 2026;
+
+/// One row of results.
+struct Row {
+    solver: String,
+    solves: usize,
+    success: f64,
+    mean_us: f64,
+    median_us: f64,
+    mean_iterations: Option<f64>,
+    /// In the paper's units (cm).
+    mean_error: f64,
+}
+
+/// The paper's own figures (table 1): mean ms, mean error, mean iterations.
+const PAPER: [(&str, f64, f64, f64); 5] = [
+    ("paper-A", 42.0, 0.51, 23.2),
+    ("paper-B", 34.0, 0.51, 23.2),
+    ("paper-C", 7.2, 0.51, 24.2),
+    ("paper-D", 6.1, 0.51, 23.2),
+    ("paper-F", 8.0, 0.43, 25.5),
+];
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let json = args.iter().any(|a| a == "--json");
+    let solves = args
+        .iter()
+        .position(|a| a == "--solves")
+        .and_then(|i| args.get(i + 1))
+        .map(|n| n.parse().expect("--solves takes a number"))
+        .unwrap_or(10_000);
+
+    let overrides: Vec<(String, String)> = args
+        .iter()
+        .enumerate()
+        .filter(|(_, a)| *a == "--set")
+        .filter_map(|(i, _)| args.get(i + 1)?.split_once('='))
+        .map(|(k, v)| (k.to_string(), v.to_string()))
+        .collect();
+    let only_ours = args.iter().any(|a| a == "--only-incremental");
+
+    let chain = paper_chain();
+    let targets = targets(&chain, solves);
+    let registry = Registry::builtin();
+    let mut rows = Vec::new();
+    for (name, solver) in our_solvers(&registry, &overrides) {
+        if only_ours && !name.starts_with("incremental") {
+            continue;
+        }
+        rows.push(measure(&name, &targets, |i, target| {
+            let s = solver.solve(&IkProblem {
+                chain: &chain,
+                target_mm: *target,
+                tolerance_mm: TOLERANCE_MM,
+                seed: i as u64,
+            });
+            (s.distance_mm, Some(s.iterations as f64))
+        }));
+    }
+    if !only_ours {
+        rows.push(k_row("k-default", &chain, &targets, 10, 1));
+        rows.push(k_row("k-fair", &chain, &targets, 100, 10));
+    }
+    print_rows(&rows, json, &chain);
+}
+
+/// The paper's chain from the standard library.
+fn paper_chain() -> Chain {
+    let text = "use std::paper\nperson p { mannequin paper21 base fixed { at (0, 0, 0) } }";
+    let (_, checked) = reach::check(
+        Input::Text {
+            name: "bench.reach",
+            text,
+        },
+        &Registry::builtin(),
+    );
+    checked.expect("std::paper checks").persons[0].chain.clone()
+}
+
+/// Effector positions of random postures within the limits.
+fn targets(chain: &Chain, n: usize) -> Vec<Point3<f64>> {
+    let mut rng = ChaCha8Rng::seed_from_u64(TARGET_SEED);
+    (0..n)
+        .map(|_| chain.effector(&random_posture(chain, &mut rng)))
+        .collect()
+}
+
+/// The variants of the paper's table 1 and our solvers, by row name.
+fn our_solvers(
+    registry: &Registry,
+    overrides: &[(String, String)],
+) -> Vec<(String, Box<dyn Solver>)> {
+    let incremental = registry.solver("incremental").unwrap();
+    let mut defaults = Options::defaults(&incremental.params());
+    for (name, text) in overrides {
+        let value = match defaults.get(name) {
+            Some(Value::Number(_)) => Value::Number(text.parse().expect("a number")),
+            Some(Value::Length(_)) => Value::Length(text.parse().expect("a length in mm")),
+            Some(Value::Integer(_)) => Value::Integer(text.parse().expect("a whole number")),
+            Some(Value::Bool(_)) => Value::Bool(text.parse().expect("true or false")),
+            _ => panic!("--set {name}: not a number or bool option of incremental"),
+        };
+        defaults = defaults.with(name, value);
+    }
+    // Variants A-D: constant rate 0.015, one random start, stop when a sweep
+    // no longer improves.
+    let constant = defaults
+        .clone()
+        .with("rate", Value::Number(0.015))
+        .with("gamma", Value::Number(1.0))
+        .with("threshold", Value::Length(0.0))
+        .with("starts", Value::Integer(1))
+        .with("neutral_start", Value::Bool(false))
+        .with("grow", Value::Number(1.0))
+        .with("shrink", Value::Number(1.0))
+        .with("eager_pair", Value::Bool(false));
+    let variant = |sign: bool, incremental_fk: bool| {
+        constant
+            .clone()
+            .with("sign_memory", Value::Bool(sign))
+            .with("incremental_fk", Value::Bool(incremental_fk))
+    };
+    // Variant F: rate 0.5, divided by 3 when a sweep improves less than 0.1 units.
+    let f = defaults
+        .clone()
+        .with("rate", Value::Number(0.5))
+        .with("gamma", Value::Number(3.0))
+        .with("threshold", Value::Length(1.0))
+        .with("starts", Value::Integer(1))
+        .with("neutral_start", Value::Bool(false))
+        .with("grow", Value::Number(1.0))
+        .with("shrink", Value::Number(1.0))
+        .with("eager_pair", Value::Bool(false));
+    let dls = registry.solver("dls").unwrap();
+    vec![
+        ("A", variant(false, false)),
+        ("B", variant(true, false)),
+        ("C", variant(false, true)),
+        ("D", variant(true, true)),
+        ("F", f),
+        (
+            "incremental",
+            defaults.clone().with("starts", Value::Integer(1)),
+        ),
+        ("incremental-restarts", defaults),
+    ]
+    .into_iter()
+    .map(|(name, o)| (name.to_string(), incremental.build(&o)))
+    .chain(std::iter::once((
+        "dls".to_string(),
+        dls.build(&Options::defaults(&dls.params())),
+    )))
+    .collect()
+}
+
+/// Time `solve` on every target; it returns the distance left (mm) and the
+/// iterations, if the solver reports them.
+fn measure(
+    name: &str,
+    targets: &[Point3<f64>],
+    mut solve: impl FnMut(usize, &Point3<f64>) -> (f64, Option<f64>),
+) -> Row {
+    let mut times_us = Vec::with_capacity(targets.len());
+    let (mut ok, mut error_sum, mut iterations_sum) = (0usize, 0.0, Some(0.0));
+    for (i, target) in targets.iter().enumerate() {
+        let start = Instant::now();
+        let (distance_mm, iterations) = solve(i, target);
+        times_us.push(start.elapsed().as_secs_f64() * 1e6);
+        ok += usize::from(distance_mm <= TOLERANCE_MM);
+        error_sum += distance_mm / 10.0;
+        iterations_sum = iterations_sum.zip(iterations).map(|(s, n)| s + n);
+    }
+    let n = targets.len() as f64;
+    times_us.sort_by(f64::total_cmp);
+    Row {
+        solver: name.to_string(),
+        solves: targets.len(),
+        success: ok as f64 / n,
+        mean_us: times_us.iter().sum::<f64>() / n,
+        median_us: times_us[times_us.len() / 2],
+        mean_iterations: iterations_sum.map(|s| s / n),
+        mean_error: error_sum / n,
+    }
+}
+
+/// The `k` crate's Jacobian solver: `tries` iterations per solve, and up to
+/// `starts` starts (the neutral posture, then seeded random ones).
+fn k_row(name: &str, chain: &Chain, targets: &[Point3<f64>], tries: usize, starts: usize) -> Row {
+    use k::InverseKinematicsSolver;
+    let arm = k_chain(chain);
+    let solver = k::JacobianIkSolver::new(TOLERANCE_MM, f64::MAX, 0.5, tries);
+    let constraints = k::Constraints {
+        rotation_x: false,
+        rotation_y: false,
+        rotation_z: false,
+        ..Default::default()
+    };
+    measure(name, targets, |i, target| {
+        let mut rng = ChaCha8Rng::seed_from_u64(i as u64);
+        let goal = k::Isometry3::translation(target.x, target.y, target.z);
+        for s in 0..starts {
+            let start = if s == 0 {
+                chain.neutral()
+            } else {
+                random_posture(chain, &mut rng)
+            };
+            arm.set_joint_positions_clamped(&start);
+            if solver
+                .solve_with_constraints(&arm, &goal, &constraints)
+                .is_ok()
+            {
+                break;
+            }
+        }
+        let q = arm.joint_positions();
+        ((chain.effector(&q) - target).norm(), None)
+    })
+}
+
+/// The chain as `k` nodes: joint i turns about its z axis after the fixed
+/// part of link i-1 (`Tz(d) Tx(a) Rx(alpha)`) and its own theta offset; the
+/// effector is a fixed node at the end.
+fn k_chain(chain: &Chain) -> k::SerialChain<f64> {
+    use k::nalgebra as kna;
+    let fixed_part = |dh: &reach::kinematics::Dh| {
+        kna::Isometry3::from_parts(
+            kna::Translation3::new(dh.a_mm, 0.0, dh.d_mm),
+            kna::UnitQuaternion::from_axis_angle(&kna::Vector3::x_axis(), dh.alpha_rad),
+        )
+    };
+    let mut previous = kna::Isometry3::identity();
+    let mut nodes: Vec<k::Node<f64>> = Vec::new();
+    for joint in &chain.joints {
+        assert_eq!(
+            joint.kind,
+            reach::kinematics::JointKind::Revolute,
+            "the paper's chain is revolute"
+        );
+        let offset =
+            kna::UnitQuaternion::from_axis_angle(&kna::Vector3::z_axis(), joint.dh.theta_rad);
+        let node = k::NodeBuilder::new()
+            .name(&joint.name)
+            .joint_type(k::JointType::Rotational {
+                axis: kna::Vector3::z_axis(),
+            })
+            .limits(Some(k::joint::Range::new(joint.min, joint.max)))
+            .origin(previous * kna::Isometry3::from_parts(kna::Translation3::identity(), offset))
+            .into_node();
+        if let Some(parent) = nodes.last() {
+            node.set_parent(parent);
+        }
+        nodes.push(node);
+        previous = fixed_part(&joint.dh);
+    }
+    let e = chain.effector_mm;
+    let end = k::NodeBuilder::new()
+        .name("effector")
+        .origin(previous * kna::Isometry3::translation(e.x, e.y, e.z))
+        .into_node();
+    end.set_parent(nodes.last().expect("a chain has joints"));
+    k::SerialChain::from_end(&end)
+}
+
+fn print_rows(rows: &[Row], json: bool, chain: &Chain) {
+    if json {
+        for r in rows {
+            let mut v = serde_json::json!({
+                "solver": r.solver, "dof": chain.dof(), "solves": r.solves, "success": r.success,
+                "mean_us": r.mean_us, "median_us": r.median_us, "mean_iterations": r.mean_iterations,
+                "mean_error": r.mean_error,
+            });
+            if let Some(letter) = r.solver.strip_prefix("paper-") {
+                v["variant"] = letter.into();
+            }
+            println!("{v}");
+        }
+        for (name, ms, error, iterations) in PAPER {
+            let v = serde_json::json!({
+                "solver": name, "dof": chain.dof(), "solves": 10000, "mean_us": ms * 1000.0,
+                "mean_iterations": iterations, "mean_error": error, "source": "paper table 1, Pentium 4 3.4 GHz",
+            });
+            println!("{v}");
+        }
+        return;
+    }
+    println!(
+        "IK on the paper's {}-DOF chain; {} targets; tolerance 0.5 units (5 mm); {}",
+        chain.dof(),
+        rows[0].solves,
+        machine()
+    );
+    println!();
+    println!("| solver | success | mean µs | median µs | mean sweeps | mean error (units) | paper: mean µs, sweeps, error |");
+    println!("|---|---:|---:|---:|---:|---:|---|");
+    for r in rows {
+        let paper = PAPER
+            .iter()
+            .find(|(name, ..)| name.strip_prefix("paper-") == Some(r.solver.as_str()))
+            .map(|(_, ms, error, it)| format!("{:.0}, {it}, {error}", ms * 1000.0))
+            .unwrap_or_default();
+        let iterations = r
+            .mean_iterations
+            .map(|m| format!("{m:.1}"))
+            .unwrap_or_else(|| "-".into());
+        println!(
+            "| {} | {:.2} % | {:.2} | {:.2} | {} | {:.3} | {} |",
+            r.solver,
+            r.success * 100.0,
+            r.mean_us,
+            r.median_us,
+            iterations,
+            r.mean_error,
+            paper
+        );
+    }
+}
+
+/// The processor, for the record.
+fn machine() -> String {
+    let cpu = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("model name"))
+                .map(|l| l.split(':').nth(1).unwrap_or("").trim().to_string())
+        })
+        .unwrap_or_else(|| "unknown processor".into());
+    let cores = std::thread::available_parallelism()
+        .map(|n| n.get())
+        .unwrap_or(1);
+    format!("{cpu}, {cores} cores, one thread")
+}

@@ -1,0 +1,154 @@
+//! The `dls` solver: damped least squares on the position Jacobian, a
+//! classic control for the incremental solver. Each iteration moves the
+//! joints by `dq = J^T (J J^T + lambda^2 I)^-1 e`, with the error `e` cut to
+//! `max_step`, then clamps them into their limits. Further starts (seeded
+//! random postures) are tried only until one reaches the target.
+
+use nalgebra::{Matrix3, Point3, Vector3};
+use rand_chacha::rand_core::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+
+use super::random_posture;
+use crate::kinematics::{Chain, JointKind};
+use crate::plugin::{IkProblem, IkSolution, Options, ParamSpec, Plugin, Solver, SolverPlugin};
+
+/// The plugin `dls`.
+pub struct Dls;
+
+impl Plugin for Dls {
+    fn name(&self) -> &'static str {
+        "dls"
+    }
+
+    fn doc(&self) -> &'static str {
+        "damped least squares on the position Jacobian, joint limits by clamping"
+    }
+
+    fn params(&self) -> Vec<ParamSpec> {
+        vec![
+            ParamSpec::length(
+                "damping",
+                20.0,
+                "the damping lambda: larger is steadier near singularities",
+            )
+            .range(1e-6, 1e6),
+            ParamSpec::length(
+                "max_step",
+                100.0,
+                "the error followed in one iteration is cut to this length",
+            )
+            .range(1e-3, 1e6),
+            ParamSpec::integer("max_iterations", 200, "iterations per start").range(1.0, 1e6),
+            ParamSpec::integer("starts", 1, "starting postures tried until one reaches")
+                .range(1.0, 1000.0),
+            ParamSpec::boolean(
+                "neutral_start",
+                true,
+                "the first start is the neutral posture, the others random",
+            ),
+        ]
+    }
+}
+
+impl SolverPlugin for Dls {
+    fn build(&self, o: &Options) -> Box<dyn Solver> {
+        Box::new(DlsSolver {
+            damping_mm: o.length_mm("damping"),
+            max_step_mm: o.length_mm("max_step"),
+            max_iterations: o.integer("max_iterations") as u64,
+            starts: o.integer("starts") as u32,
+            neutral_start: o.boolean("neutral_start"),
+        })
+    }
+}
+
+/// The configured solver.
+pub struct DlsSolver {
+    pub damping_mm: f64,
+    pub max_step_mm: f64,
+    pub max_iterations: u64,
+    pub starts: u32,
+    pub neutral_start: bool,
+}
+
+impl Solver for DlsSolver {
+    fn solve(&self, problem: &IkProblem<'_>) -> IkSolution {
+        let mut rng = ChaCha8Rng::seed_from_u64(problem.seed);
+        let mut best: Option<IkSolution> = None;
+        for k in 0..self.starts {
+            let start = if k == 0 && self.neutral_start {
+                problem.chain.neutral()
+            } else {
+                random_posture(problem.chain, &mut rng)
+            };
+            let solution = self.descend(problem, start);
+            let reached = solution.distance_mm <= problem.tolerance_mm;
+            if best
+                .as_ref()
+                .is_none_or(|b| solution.distance_mm < b.distance_mm)
+            {
+                best = Some(solution);
+            }
+            if reached {
+                break;
+            }
+        }
+        best.expect("at least one start")
+    }
+}
+
+impl DlsSolver {
+    fn descend(&self, problem: &IkProblem<'_>, mut q: Vec<f64>) -> IkSolution {
+        let chain = problem.chain;
+        let mut columns = vec![Vector3::zeros(); chain.dof()];
+        let mut iterations = 0;
+        let mut p = effector_and_jacobian(chain, &q, &mut columns);
+        while (problem.target_mm - p).norm() > problem.tolerance_mm
+            && iterations < self.max_iterations
+        {
+            iterations += 1;
+            let mut e = problem.target_mm - p;
+            let len = e.norm();
+            if len > self.max_step_mm {
+                e *= self.max_step_mm / len;
+            }
+            let mut jjt = Matrix3::identity() * (self.damping_mm * self.damping_mm);
+            for c in &columns {
+                jjt += c * c.transpose();
+            }
+            // J J^T + lambda^2 I is symmetric positive definite.
+            let y = jjt
+                .cholesky()
+                .expect("damped J J^T is positive definite")
+                .solve(&e);
+            for ((qi, c), joint) in q.iter_mut().zip(&columns).zip(&chain.joints) {
+                *qi = joint.clamp(*qi + c.dot(&y));
+            }
+            p = effector_and_jacobian(chain, &q, &mut columns);
+        }
+        IkSolution {
+            distance_mm: (problem.target_mm - p).norm(),
+            q,
+            iterations,
+        }
+    }
+}
+
+/// The effector of posture `q` in the base frame; `columns` receives the
+/// position Jacobian, one column per joint.
+fn effector_and_jacobian(chain: &Chain, q: &[f64], columns: &mut [Vector3<f64>]) -> Point3<f64> {
+    let mut frame = nalgebra::IsometryMatrix3::identity();
+    let mut axes = Vec::with_capacity(chain.dof());
+    for (joint, &qi) in chain.joints.iter().zip(q) {
+        axes.push((frame.translation.vector, frame.rotation * Vector3::z()));
+        frame *= joint.transform(qi);
+    }
+    let p = frame * Point3::from(chain.effector_mm);
+    for ((column, (origin, axis)), joint) in columns.iter_mut().zip(axes).zip(&chain.joints) {
+        *column = match joint.kind {
+            JointKind::Revolute => axis.cross(&(p.coords - origin)),
+            JointKind::Prismatic => axis,
+        };
+    }
+    p
+}
