@@ -142,7 +142,9 @@ fn our_solvers(
         .with("neutral_start", Value::Bool(false))
         .with("grow", Value::Number(1.0))
         .with("shrink", Value::Number(1.0))
-        .with("eager_pair", Value::Bool(false));
+        .with("eager_pair", Value::Bool(false))
+        .with("stall", Value::Integer(1))
+        .with("stall_ratio", Value::Number(0.0));
     let variant = |sign: bool, incremental_fk: bool| {
         constant
             .clone()
@@ -159,7 +161,8 @@ fn our_solvers(
         .with("neutral_start", Value::Bool(false))
         .with("grow", Value::Number(1.0))
         .with("shrink", Value::Number(1.0))
-        .with("eager_pair", Value::Bool(false));
+        .with("eager_pair", Value::Bool(false))
+        .with("stall", Value::Integer(1_000_000));
     let dls = registry.solver("dls").unwrap();
     vec![
         ("A", variant(false, false)),

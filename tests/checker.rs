@@ -193,6 +193,7 @@ fn plugin_options_take_their_declared_defaults() {
     assert_eq!(solver.name, "incremental");
     assert_eq!(solver.options.number("rate"), 0.2);
     assert_eq!(solver.options.number("gamma"), 3.0);
+    assert_eq!(solver.options.integer("stall"), 10);
     assert_eq!(solver.options.integer("starts"), 6);
 }
 
@@ -202,7 +203,7 @@ fn a_default_plugin_gets_its_own_default_options() {
     let s = ok(&text);
     let solver = s.tasks[0].options.plugin("solver");
     assert_eq!(solver.name, "incremental");
-    assert_eq!(solver.options.number("rate"), 0.5);
+    assert_eq!(solver.options.number("rate"), 0.05);
     assert!(solver.options.boolean("incremental_fk"));
 }
 

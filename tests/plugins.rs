@@ -43,3 +43,39 @@ fn registering_adds_to_the_listing_and_validates_options() {
     let message = checked.unwrap_err().errors[0].kind().to_string();
     assert_eq!(message, "solver `sampling` has no option `sample`");
 }
+
+#[test]
+fn every_plugin_builds_from_its_declared_defaults() {
+    use reach::plugin::{Options, ParamSpec, Value};
+    use reach::report::Report;
+    // A plugin must read only options it declares; required ones get a value.
+    let fill = |params: Vec<ParamSpec>| {
+        let mut o = Options::defaults(&params);
+        for p in params.iter().filter(|p| p.default.is_none()) {
+            o = Options::new(
+                o.iter()
+                    .cloned()
+                    .chain([(p.name, Value::Point(Default::default()))])
+                    .collect(),
+            );
+        }
+        o
+    };
+    let registry = Registry::builtin();
+    for name in registry.names(PluginKind::Solver) {
+        let p = registry.solver(name).unwrap();
+        p.build(&fill(p.params()));
+    }
+    for name in registry.names(PluginKind::Base) {
+        let p = registry.base(name).unwrap();
+        p.build(&fill(p.params()));
+    }
+    for name in registry.names(PluginKind::Format) {
+        let p = registry.format(name).unwrap();
+        p.render(&Report {
+            schema: 1,
+            file: "x".into(),
+            tasks: Vec::new(),
+        });
+    }
+}

@@ -5,10 +5,8 @@
 //! random postures) are tried only until one reaches the target.
 
 use nalgebra::{Matrix3, Point3, Vector3};
-use rand_chacha::rand_core::SeedableRng;
-use rand_chacha::ChaCha8Rng;
 
-use super::random_posture;
+use super::Starts;
 use crate::kinematics::{Chain, JointKind};
 use crate::plugin::{IkProblem, IkSolution, Options, ParamSpec, Plugin, Solver, SolverPlugin};
 
@@ -73,14 +71,9 @@ pub struct DlsSolver {
 
 impl Solver for DlsSolver {
     fn solve(&self, problem: &IkProblem<'_>) -> IkSolution {
-        let mut rng = ChaCha8Rng::seed_from_u64(problem.seed);
+        let starts = Starts::new(problem.chain, problem.seed, self.neutral_start);
         let mut best: Option<IkSolution> = None;
-        for k in 0..self.starts {
-            let start = if k == 0 && self.neutral_start {
-                problem.chain.neutral()
-            } else {
-                random_posture(problem.chain, &mut rng)
-            };
+        for start in starts.take(self.starts as usize) {
             let solution = self.descend(problem, start);
             let reached = solution.distance_mm <= problem.tolerance_mm;
             if best

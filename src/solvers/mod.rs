@@ -2,6 +2,8 @@
 
 mod dls;
 mod incremental;
+mod starts;
 
 pub use dls::{Dls, DlsSolver};
-pub use incremental::{random_posture, Incremental, IncrementalSettings, IncrementalSolver};
+pub use incremental::{Incremental, IncrementalSettings, IncrementalSolver};
+pub use starts::{random_posture, Starts};

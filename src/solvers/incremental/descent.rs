@@ -1,0 +1,223 @@
+//! One descent of the incremental solver from one starting posture: sweeps
+//! over the joints from the base outwards, each joint tried one increment
+//! either way, until the target is within tolerance, the increments have
+//! all shrunk below `min_rate`, `stall` sweeps in a row have not improved,
+//! or `max_sweeps` is reached.
+
+use nalgebra::{Point3, Vector3};
+
+use super::IncrementalSettings;
+use crate::kinematics::{Chain, IncrementalFk, Joint, Step};
+use crate::plugin::{IkProblem, IkSolution};
+
+/// One descent from `q`.
+pub(super) fn descend(s: &IncrementalSettings, problem: &IkProblem<'_>, q: Vec<f64>) -> IkSolution {
+    let (chain, target) = (problem.chain, problem.target_mm);
+    if s.incremental_fk {
+        descend_with(s, problem, IncrementalFk::new(chain, q, target))
+    } else {
+        descend_with(s, problem, FullProduct { chain, q, target })
+    }
+}
+
+/// Forward kinematics as the descent uses it: for joint i, something
+/// computed once per visit (the lever), then the squared distance for each
+/// step tried, and committing a move.
+trait Kinematics {
+    type Lever;
+    fn lever(&mut self, i: usize) -> Self::Lever;
+    /// The squared distance with joint i moved by `dir * step.delta`, and the
+    /// cosine and sine of its new angle.
+    fn distance_sq_moved(
+        &mut self,
+        i: usize,
+        step: &Step,
+        dir: f64,
+        lever: &Self::Lever,
+    ) -> (f64, (f64, f64));
+    fn set_moved(&mut self, i: usize, qi: f64, cos_sin: (f64, f64));
+    fn distance_sq(&mut self) -> f64;
+    fn q(&self) -> &[f64];
+    fn into_q(self) -> Vec<f64>;
+}
+
+impl Kinematics for IncrementalFk<'_> {
+    type Lever = Vector3<f64>;
+    fn lever(&mut self, i: usize) -> Vector3<f64> {
+        IncrementalFk::lever(self, i)
+    }
+    #[inline]
+    fn distance_sq_moved(
+        &mut self,
+        i: usize,
+        step: &Step,
+        dir: f64,
+        lever: &Vector3<f64>,
+    ) -> (f64, (f64, f64)) {
+        IncrementalFk::distance_sq_moved(self, i, step, dir, lever)
+    }
+    fn set_moved(&mut self, i: usize, qi: f64, cos_sin: (f64, f64)) {
+        IncrementalFk::set_moved(self, i, qi, cos_sin)
+    }
+
+    fn distance_sq(&mut self) -> f64 {
+        IncrementalFk::distance_sq(self)
+    }
+    fn q(&self) -> &[f64] {
+        IncrementalFk::q(self)
+    }
+    fn into_q(self) -> Vec<f64> {
+        IncrementalFk::into_q(self)
+    }
+}
+
+/// The full product of all link matrices for every evaluation (the paper's
+/// variants A and B).
+struct FullProduct<'a> {
+    chain: &'a Chain,
+    q: Vec<f64>,
+    target: Point3<f64>,
+}
+
+impl Kinematics for FullProduct<'_> {
+    type Lever = ();
+    fn lever(&mut self, _: usize) {}
+    fn distance_sq_moved(&mut self, i: usize, step: &Step, dir: f64, _: &()) -> (f64, (f64, f64)) {
+        let old = self.q[i];
+        self.q[i] = old + dir * step.delta;
+        let p = self.chain.effector(&self.q);
+        self.q[i] = old;
+        ((p - self.target).norm_squared(), (1.0, 0.0))
+    }
+    fn set_moved(&mut self, i: usize, qi: f64, _: (f64, f64)) {
+        self.q[i] = qi;
+    }
+
+    fn distance_sq(&mut self) -> f64 {
+        (self.chain.effector(&self.q) - self.target).norm_squared()
+    }
+    fn q(&self) -> &[f64] {
+        &self.q
+    }
+    fn into_q(self) -> Vec<f64> {
+        self.q
+    }
+}
+
+fn descend_with(
+    s: &IncrementalSettings,
+    problem: &IkProblem<'_>,
+    mut fk: impl Kinematics,
+) -> IkSolution {
+    let chain = problem.chain;
+    let tolerance_sq = problem.tolerance_mm * problem.tolerance_mm;
+    let mut d_sq = fk.distance_sq();
+    let mut rate = s.rate;
+    let mut sign = vec![1.0_f64; chain.dof()];
+    // Inc(i) = range * rate (section 5.3.1), then adapted per joint.
+    let mut steps: Vec<Step> = chain
+        .joints
+        .iter()
+        .map(|j| Step::new(j.range() * rate))
+        .collect();
+    let min_steps: Vec<f64> = chain
+        .joints
+        .iter()
+        .map(|j| j.range() * s.min_rate)
+        .collect();
+    let mut sweeps = 0u64;
+    let mut stalled = 0u32;
+    while d_sq > tolerance_sq && sweeps < u64::from(s.max_sweeps) {
+        sweeps += 1;
+        let before = d_sq.sqrt();
+        for (i, joint) in chain.joints.iter().enumerate() {
+            if steps[i].delta == 0.0 {
+                continue;
+            }
+            let kept = try_joint(s, &mut fk, i, joint, &steps[i], &mut sign[i], &mut d_sq);
+            let factor = if kept { s.grow } else { s.shrink };
+            if factor != 1.0 {
+                let scaled = steps[i].scaled(factor);
+                steps[i] = if scaled.delta > joint.range() {
+                    Step::new(joint.range())
+                } else {
+                    scaled
+                };
+            }
+        }
+        if steps
+            .iter()
+            .zip(&min_steps)
+            .all(|(st, min)| st.delta < *min)
+        {
+            break;
+        }
+        let improvement = before - d_sq.sqrt();
+        // The paper's stop on a minimum distance variation: `stall` sweeps
+        // in a row that each improve by less than `stall_ratio` of the distance.
+        stalled = if improvement < s.stall_ratio * before {
+            stalled + 1
+        } else {
+            0
+        };
+        if stalled >= s.stall {
+            break;
+        }
+        // Eq. 2: a sweep improving less than `threshold` divides the rate.
+        if improvement <= s.threshold_mm && s.gamma > 1.0 && rate / s.gamma >= s.min_rate {
+            rate /= s.gamma;
+            for st in &mut steps {
+                *st = st.scaled(1.0 / s.gamma);
+            }
+        }
+    }
+    // The distance reported is that of the plain product of the chain,
+    // whatever the descent computed on the way.
+    let q = fk.into_q();
+    IkSolution {
+        distance_mm: (chain.effector(&q) - problem.target_mm).norm(),
+        q,
+        iterations: sweeps,
+    }
+}
+
+/// Try joint `i` one increment either way, by the paper's rule: the first
+/// direction (the remembered sign) if it brings the effector closer within
+/// the joint's limits, else the other if it does. Eagerly, both are
+/// evaluated before either is chosen, so the second does not wait for the
+/// first comparison; lazily (the paper's cost), the second only if the
+/// first did not help. Returns whether a move was kept.
+#[inline]
+fn try_joint<K: Kinematics>(
+    s: &IncrementalSettings,
+    fk: &mut K,
+    i: usize,
+    joint: &Joint,
+    step: &Step,
+    sign: &mut f64,
+    d_sq: &mut f64,
+) -> bool {
+    let lever = fk.lever(i);
+    let first = if s.sign_memory { *sign } else { 1.0 };
+    let old = fk.q()[i];
+    let within = |v: f64| v >= joint.min && v <= joint.max;
+    let (plus, minus) = (old + first * step.delta, old - first * step.delta);
+    let (d_first, cs_first) = fk.distance_sq_moved(i, step, first, &lever);
+    let second = s
+        .eager_pair
+        .then(|| fk.distance_sq_moved(i, step, -first, &lever));
+    if d_first < *d_sq && within(plus) {
+        *d_sq = d_first;
+        fk.set_moved(i, plus, cs_first);
+        return true;
+    }
+    let (d_second, cs_second) =
+        second.unwrap_or_else(|| fk.distance_sq_moved(i, step, -first, &lever));
+    if d_second < *d_sq && within(minus) {
+        *d_sq = d_second;
+        fk.set_moved(i, minus, cs_second);
+        *sign = -first;
+        return true;
+    }
+    false
+}

@@ -1,0 +1,56 @@
+//! Starting postures for the solvers: the neutral posture, then postures
+//! drawn uniformly within the joint limits from a seeded generator whose
+//! stream does not change between versions of the crate.
+
+use rand_chacha::rand_core::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+use crate::kinematics::Chain;
+
+/// A posture drawn uniformly within the joint limits.
+pub fn random_posture(chain: &Chain, rng: &mut ChaCha8Rng) -> Vec<f64> {
+    chain
+        .joints
+        .iter()
+        .map(|j| j.min + unit_interval(rng) * j.range())
+        .collect()
+}
+
+/// The starting postures of one solve, in order: the neutral posture first
+/// if `neutral_first`, then random ones from `seed`.
+pub struct Starts<'a> {
+    chain: &'a Chain,
+    rng: ChaCha8Rng,
+    neutral_first: bool,
+    given: u32,
+}
+
+impl<'a> Starts<'a> {
+    pub fn new(chain: &'a Chain, seed: u64, neutral_first: bool) -> Self {
+        Starts {
+            chain,
+            rng: ChaCha8Rng::seed_from_u64(seed),
+            neutral_first,
+            given: 0,
+        }
+    }
+}
+
+impl Iterator for Starts<'_> {
+    type Item = Vec<f64>;
+
+    fn next(&mut self) -> Option<Vec<f64>> {
+        let first = self.given == 0;
+        self.given += 1;
+        Some(if first && self.neutral_first {
+            self.chain.neutral()
+        } else {
+            random_posture(self.chain, &mut self.rng)
+        })
+    }
+}
+
+/// A uniform draw from [0, 1) with 53 random bits.
+fn unit_interval(rng: &mut ChaCha8Rng) -> f64 {
+    (rng.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+}

@@ -1,0 +1,155 @@
+//! Property tests of the kinematics and the solvers, on random chains
+//! (revolute and prismatic joints, random DH parameters and limits) and
+//! random targets.
+
+use nalgebra::{Point3, Vector3};
+use proptest::prelude::*;
+use reach::kinematics::{Chain, Dh, IncrementalFk, Joint, JointKind};
+use reach::plugin::{IkProblem, IkSolution, Options, Registry, Solver, Value};
+
+/// A random joint: revolute (limits within +/-pi) or prismatic (0 to 200 mm).
+fn joint() -> impl Strategy<Value = Joint> {
+    (
+        any::<bool>(),
+        -3.0..3.0f64,
+        -200.0..200.0f64,
+        -3.0..3.0f64,
+        -200.0..200.0f64,
+        0.0..1.0f64,
+        0.05..1.0f64,
+    )
+        .prop_map(|(revolute, theta_rad, d_mm, alpha_rad, a_mm, low, span)| {
+            let (kind, min, max) = if revolute {
+                let min = -std::f64::consts::PI + low * std::f64::consts::PI;
+                (JointKind::Revolute, min, min + span * std::f64::consts::PI)
+            } else {
+                (
+                    JointKind::Prismatic,
+                    low * 100.0,
+                    low * 100.0 + span * 100.0,
+                )
+            };
+            Joint {
+                name: "j".into(),
+                kind,
+                dh: Dh {
+                    theta_rad,
+                    d_mm,
+                    alpha_rad,
+                    a_mm,
+                },
+                min,
+                max,
+                neutral: (min + max) / 2.0,
+                weight: 1.0,
+            }
+        })
+}
+
+fn chain() -> impl Strategy<Value = Chain> {
+    (prop::collection::vec(joint(), 1..10), -100.0..100.0f64).prop_map(|(joints, e)| Chain {
+        joints,
+        effector_name: "tip".into(),
+        effector_mm: Vector3::new(e, e / 2.0, -e / 3.0),
+    })
+}
+
+/// A posture within the chain's limits, from fractions in [0, 1].
+fn posture(chain: &Chain, fractions: &[f64]) -> Vec<f64> {
+    chain
+        .joints
+        .iter()
+        .zip(fractions.iter().cycle())
+        .map(|(j, f)| j.min + f * j.range())
+        .collect()
+}
+
+fn solver(name: &str, set: &[(&str, Value)]) -> Box<dyn Solver> {
+    let registry = Registry::builtin();
+    let plugin = registry.solver(name).unwrap();
+    let mut options = Options::defaults(&plugin.params());
+    for (k, v) in set {
+        options = options.with(k, v.clone());
+    }
+    plugin.build(&options)
+}
+
+fn solve(solver: &dyn Solver, chain: &Chain, target: Point3<f64>, seed: u64) -> IkSolution {
+    solver.solve(&IkProblem {
+        chain,
+        target_mm: target,
+        tolerance_mm: 5.0,
+        seed,
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    #[test]
+    fn incremental_fk_agrees_with_the_full_product(
+        chain in chain(),
+        start in prop::collection::vec(0.0..1.0f64, 10),
+        changes in prop::collection::vec((0usize..10, 0.0..1.0f64), 0..30),
+        target in prop::array::uniform3(-300.0..300.0f64),
+    ) {
+        let target = Point3::from(target);
+        let mut q = posture(&chain, &start);
+        let mut fk = IncrementalFk::new(&chain, q.clone(), target);
+        for (i, f) in changes {
+            let i = i % chain.dof();
+            let qi = chain.joints[i].min + f * chain.joints[i].range();
+            let mut moved = q.clone();
+            moved[i] = qi;
+            let expected = (chain.effector(&moved) - target).norm_squared();
+            prop_assert!((fk.distance_sq_with(i, qi) - expected).abs() <= 1e-9 * expected.max(1.0));
+            fk.set(i, qi);
+            q = moved;
+            prop_assert!((fk.effector() - chain.effector(&q)).norm() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn solutions_respect_limits_and_report_their_true_distance(
+        chain in chain(),
+        goal in prop::collection::vec(0.0..1.0f64, 10),
+        seed in any::<u64>(),
+        which in 0usize..3,
+    ) {
+        let target = chain.effector(&posture(&chain, &goal));
+        let solver = match which {
+            0 => solver("incremental", &[("starts", Value::Integer(2))]),
+            1 => solver("incremental", &[("starts", Value::Integer(1)), ("grow", Value::Number(1.0)), ("shrink", Value::Number(1.0))]),
+            _ => solver("dls", &[("starts", Value::Integer(2))]),
+        };
+        let s = solve(solver.as_ref(), &chain, target, seed);
+        prop_assert!(chain.within_limits(&s.q), "{:?} outside limits", s.q);
+        let fk_distance = (chain.effector(&s.q) - target).norm();
+        prop_assert!((s.distance_mm - fk_distance).abs() < 1e-9, "{} vs {}", s.distance_mm, fk_distance);
+    }
+
+    #[test]
+    fn the_same_seed_gives_the_same_answer(
+        chain in chain(),
+        goal in prop::collection::vec(0.0..1.0f64, 10),
+        seed in any::<u64>(),
+    ) {
+        let target = chain.effector(&posture(&chain, &goal));
+        for name in ["incremental", "dls"] {
+            let s = solver(name, &[("starts", Value::Integer(3)), ("neutral_start", Value::Bool(false))]);
+            prop_assert_eq!(solve(s.as_ref(), &chain, target, seed), solve(s.as_ref(), &chain, target, seed));
+        }
+    }
+
+    #[test]
+    fn eager_and_lazy_evaluation_choose_alike(
+        chain in chain(),
+        goal in prop::collection::vec(0.0..1.0f64, 10),
+        seed in any::<u64>(),
+    ) {
+        let target = chain.effector(&posture(&chain, &goal));
+        let eager = solver("incremental", &[("eager_pair", Value::Bool(true))]);
+        let lazy = solver("incremental", &[("eager_pair", Value::Bool(false))]);
+        prop_assert_eq!(solve(eager.as_ref(), &chain, target, seed), solve(lazy.as_ref(), &chain, target, seed));
+    }
+}
