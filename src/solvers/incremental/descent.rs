@@ -155,7 +155,7 @@ fn descend_with(
         let improvement = before - d_sq.sqrt();
         // The paper's stop on a minimum distance variation: `stall` sweeps
         // in a row that each improve by less than `stall_ratio` of the distance.
-        stalled = if improvement < s.stall_ratio * before {
+        stalled = if improvement <= s.stall_ratio * before {
             stalled + 1
         } else {
             0
@@ -163,11 +163,17 @@ fn descend_with(
         if stalled >= s.stall {
             break;
         }
-        // Eq. 2: a sweep improving less than `threshold` divides the rate.
-        if improvement <= s.threshold_mm && s.gamma > 1.0 && rate / s.gamma >= s.min_rate {
-            rate /= s.gamma;
-            for st in &mut steps {
-                *st = st.scaled(1.0 / s.gamma);
+        // Eq. 2: a sweep improving less than `threshold` divides the rate,
+        // down to `min_rate`. With fixed increments (the paper's variants) a
+        // sweep that can no longer lower it has nothing left to try.
+        if improvement <= s.threshold_mm && s.gamma > 1.0 {
+            if rate / s.gamma >= s.min_rate {
+                rate /= s.gamma;
+                for st in &mut steps {
+                    *st = st.scaled(1.0 / s.gamma);
+                }
+            } else if s.grow == 1.0 && s.shrink == 1.0 {
+                break;
             }
         }
     }
