@@ -293,25 +293,50 @@ fn k_chain(chain: &Chain) -> k::SerialChain<f64> {
     k::SerialChain::from_end(&end)
 }
 
+/// One JSON line, fields in the documented order.
+#[derive(serde::Serialize)]
+struct JsonRow<'a> {
+    solver: &'a str,
+    dof: usize,
+    solves: usize,
+    success: Option<f64>,
+    mean_us: f64,
+    median_us: Option<f64>,
+    mean_iterations: Option<f64>,
+    mean_error: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    source: Option<&'static str>,
+}
+
 fn print_rows(rows: &[Row], json: bool, chain: &Chain) {
     if json {
         for r in rows {
-            let mut v = serde_json::json!({
-                "solver": r.solver, "dof": chain.dof(), "solves": r.solves, "success": r.success,
-                "mean_us": r.mean_us, "median_us": r.median_us, "mean_iterations": r.mean_iterations,
-                "mean_error": r.mean_error,
-            });
-            if let Some(letter) = r.solver.strip_prefix("paper-") {
-                v["variant"] = letter.into();
-            }
-            println!("{v}");
+            let row = JsonRow {
+                solver: &r.solver,
+                dof: chain.dof(),
+                solves: r.solves,
+                success: Some(r.success),
+                mean_us: r.mean_us,
+                median_us: Some(r.median_us),
+                mean_iterations: r.mean_iterations,
+                mean_error: r.mean_error,
+                source: None,
+            };
+            println!("{}", serde_json::to_string(&row).expect("plain numbers"));
         }
         for (name, ms, error, iterations) in PAPER {
-            let v = serde_json::json!({
-                "solver": name, "dof": chain.dof(), "solves": 10000, "mean_us": ms * 1000.0,
-                "mean_iterations": iterations, "mean_error": error, "source": "paper table 1, Pentium 4 3.4 GHz",
-            });
-            println!("{v}");
+            let row = JsonRow {
+                solver: name,
+                dof: chain.dof(),
+                solves: 10_000,
+                success: None,
+                mean_us: ms * 1000.0,
+                median_us: None,
+                mean_iterations: Some(iterations),
+                mean_error: error,
+                source: Some("the paper's table 1, Pentium 4 3.4 GHz"),
+            };
+            println!("{}", serde_json::to_string(&row).expect("plain numbers"));
         }
         return;
     }
