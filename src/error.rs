@@ -86,6 +86,8 @@ pub enum ErrorKind {
     },
     #[error("mixing bare numbers from files with different default units")]
     MixedDefaults,
+    #[error("{what} exceeds the limit of {limit}")]
+    TooLarge { what: String, limit: String },
     #[error("{what} is not supported yet")]
     Unsupported { what: String, help: String },
     #[error("{what} belong in the scenario file, not in a file it uses")]
@@ -125,6 +127,7 @@ impl ErrorKind {
             OutOfRange { .. } | LimitsReversed { .. } => "reach::range",
             Missing { .. } | Repeated { .. } | TargetOutsideRoom { .. } => "reach::scene",
             Unsupported { .. } | Misplaced { .. } => "reach::scene",
+            TooLarge { .. } => "reach::limit",
             UnknownPlugin { .. } | UnknownOption { .. } | MissingOption { .. } => "reach::plugin",
         }
     }
@@ -157,6 +160,7 @@ impl ErrorKind {
             TargetOutsideRoom { .. } => "outside the room".into(),
             MixedDefaults => "bare numbers with different default units".into(),
             Unsupported { .. } => "not supported".into(),
+            TooLarge { .. } => "too large".into(),
             Misplaced { .. } => "in a used file".into(),
             UnknownPlugin { kind, .. } => format!("no {kind} of this name"),
             UnknownOption { .. } => "unknown option".into(),
@@ -185,6 +189,7 @@ impl ErrorKind {
             TargetOutsideRoom { bounds, .. } => Some(format!("the room spans {bounds}")),
             MixedDefaults => Some("write the units on these numbers".into()),
             Unsupported { help, .. } => Some(help.clone()),
+            TooLarge { .. } => Some("split it up; the limits are in docs/language.md".into()),
             Misplaced { .. } => Some("move it to the file you run, which can `use` this one".into()),
             UnknownPlugin {
                 suggestion,

@@ -20,6 +20,7 @@ pub mod bases;
 mod check;
 pub mod error;
 pub mod kinematics;
+pub mod limits;
 mod loader;
 mod names;
 pub mod output;

@@ -7,6 +7,7 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use crate::error::{Diagnostics, Error, ErrorKind};
+use crate::limits::{MAX_FILE_BYTES, MAX_USE_DEPTH};
 use crate::names::suggest;
 use crate::source::{Origin, Sources};
 use crate::span::{FileId, Span};
@@ -84,6 +85,13 @@ fn canonical(path: &Path) -> PathBuf {
 impl Loader {
     fn load_disk(&mut self, path: &Path, key: Key, used_at: Option<Span>) {
         let shown = path.display().to_string();
+        if let Ok(meta) = std::fs::metadata(path) {
+            if meta.len() > MAX_FILE_BYTES {
+                let what = format!("`{shown}` ({} bytes)", meta.len());
+                let limit = format!("{MAX_FILE_BYTES} bytes");
+                return self.fail(ErrorKind::TooLarge { what, limit }, used_at);
+            }
+        }
         let text = match std::fs::read(path) {
             Ok(bytes) => match String::from_utf8(bytes) {
                 Ok(t) => t,
@@ -159,6 +167,13 @@ impl Loader {
             }
         };
         if self.done.contains_key(&key) {
+            return;
+        }
+        if self.stack.len() >= MAX_USE_DEPTH {
+            let what = "the chain of files using each other".to_string();
+            let limit = format!("{MAX_USE_DEPTH} files");
+            self.errors
+                .push(Error::new(ErrorKind::TooLarge { what, limit }, span));
             return;
         }
         if let Some(pos) = self.stack.iter().position(|(k, _)| *k == key) {

@@ -197,3 +197,45 @@ fn plugins_lists_every_plugin_with_its_parameters() {
         assert!(out.contains(name), "{name} missing from\n{out}");
     }
 }
+
+#[test]
+fn hostile_sizes_give_diagnostics_not_crashes() {
+    let dir = tempfile::tempdir().unwrap();
+    let n = 100_000;
+    let cases = [
+        (
+            "deep",
+            format!("let a = {}1{}", "(".repeat(n), ")".repeat(n)),
+        ),
+        ("negations", format!("let a = {}1", "-".repeat(n))),
+        ("sum", format!("let a = 1{}", " + 1".repeat(n))),
+        (
+            "lets",
+            (0..n)
+                .map(|i| format!("let a{i} = a{} + 1\n", i + 1))
+                .collect::<String>()
+                + &format!("let a{n} = 1\n"),
+        ),
+        (
+            "braces",
+            format!("reach m by p {{ solver {}", "a { ".repeat(n)),
+        ),
+    ];
+    for (name, text) in cases {
+        let path = dir.path().join(format!("{name}.reach"));
+        std::fs::write(&path, text).unwrap();
+        let o = reach(&["check", path.to_str().unwrap()]);
+        let err = stderr(&o);
+        assert_eq!(
+            o.status.code(),
+            Some(1),
+            "{name}: {}",
+            &err[..err.len().min(500)]
+        );
+        assert!(
+            err.contains("exceeds the limit"),
+            "{name}: {}",
+            &err[..err.len().min(500)]
+        );
+    }
+}

@@ -6,6 +6,7 @@ use nalgebra::Vector3;
 
 use super::Checker;
 use crate::error::{Error, ErrorKind};
+use crate::limits::MAX_LET_DEPTH;
 use crate::names::suggest;
 use crate::span::Span;
 use crate::syntax::ast::{BinOp, Expr, ExprKind, Vec3Expr};
@@ -32,6 +33,26 @@ impl Checker<'_> {
             self.error(Error::new(
                 ErrorKind::LetCycle {
                     name: name.to_string(),
+                },
+                span,
+            ));
+            return None;
+        }
+        if self.let_stack.len() >= MAX_LET_DEPTH {
+            let span = use_span.unwrap_or(decl.name.span);
+            // One report is enough; the rest of the chain fails silently.
+            let reported = self
+                .errors
+                .iter()
+                .any(|e| matches!(e.kind(), ErrorKind::TooLarge { .. }));
+            self.let_values.insert(name.to_string(), None);
+            if reported {
+                return None;
+            }
+            self.error(Error::new(
+                ErrorKind::TooLarge {
+                    what: format!("the chain of constants leading to `{name}`"),
+                    limit: format!("{MAX_LET_DEPTH} constants"),
                 },
                 span,
             ));

@@ -1,6 +1,8 @@
 //! Named declarations of one kind, in declaration order, with duplicate
 //! detection and did-you-mean lookups.
 
+use std::collections::HashMap;
+
 use crate::error::{Error, ErrorKind};
 use crate::names::suggest;
 use crate::span::{FileId, Name, Span};
@@ -8,6 +10,8 @@ use crate::span::{FileId, Name, Span};
 pub struct Table<'a, T> {
     what: &'static str,
     entries: Vec<(String, Span, &'a T, FileId)>,
+    /// Position in `entries` by name.
+    index: HashMap<String, usize>,
 }
 
 impl<'a, T> Table<'a, T> {
@@ -15,13 +19,15 @@ impl<'a, T> Table<'a, T> {
         Table {
             what,
             entries: Vec::new(),
+            index: HashMap::new(),
         }
     }
 
     /// Add a declaration; a second one of the same name is an error that
     /// points at both.
     pub fn insert(&mut self, name: &Name, decl: &'a T, file: FileId) -> Option<Error> {
-        if let Some((_, first, _, _)) = self.entries.iter().find(|(n, ..)| *n == name.value) {
+        if let Some(&i) = self.index.get(&name.value) {
+            let first = &self.entries[i].1;
             let e = Error::new(
                 ErrorKind::Duplicate {
                     what: self.what,
@@ -31,16 +37,16 @@ impl<'a, T> Table<'a, T> {
             );
             return Some(e.with_note(*first, "first defined here"));
         }
+        self.index.insert(name.value.clone(), self.entries.len());
         self.entries
             .push((name.value.clone(), name.span, decl, file));
         None
     }
 
     pub fn get(&self, name: &str) -> Option<(&'a T, FileId)> {
-        self.entries
-            .iter()
-            .find(|(n, ..)| n == name)
-            .map(|(_, _, d, f)| (*d, *f))
+        self.index
+            .get(name)
+            .map(|&i| (self.entries[i].2, self.entries[i].3))
     }
 
     /// Look up `name`, or the error for an unknown name with a suggestion.

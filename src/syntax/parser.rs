@@ -9,6 +9,7 @@ use std::sync::LazyLock;
 use super::ast::*;
 use super::expected::syntax_error;
 use crate::error::{Diagnostics, Error, ErrorKind};
+use crate::limits::{MAX_EXPR_TOKENS, MAX_PAREN_DEPTH};
 use crate::span::{FileId, Name, Span, Spanned};
 use crate::units::Unit;
 
@@ -23,6 +24,15 @@ pub const MAX_LITERAL: f64 = 1e15;
 /// Parse one file. Syntax errors stop at the first; errors in literals
 /// (unknown units, numbers out of range) are all collected.
 pub fn parse_file(file: FileId, text: &str) -> Result<File, Diagnostics> {
+    if let Some(at) = too_deep(text) {
+        return Err(Diagnostics::single(Error::new(
+            ErrorKind::TooLarge {
+                what: "nesting of parentheses and braces".into(),
+                limit: format!("{MAX_PAREN_DEPTH} levels"),
+            },
+            Span::new(file, at, at + 1),
+        )));
+    }
     pest::set_error_detail(true);
     let mut pairs = ReachParser::parse(Rule::file, text)
         .map_err(|e| Diagnostics::single(syntax_error(file, text, e)))?;
@@ -119,7 +129,23 @@ impl Builder {
     }
 
     fn expr(&mut self, pair: Pair<Rule>) -> Expr {
+        let span = self.span(&pair);
         let pairs = pair.into_inner();
+        if pairs.len() > MAX_EXPR_TOKENS {
+            // Refused before a tree of that depth is built (or dropped).
+            self.errors.push(Error::new(
+                ErrorKind::TooLarge {
+                    what: "this expression".into(),
+                    limit: format!("{MAX_EXPR_TOKENS} operands and operators"),
+                },
+                span,
+            ));
+            let kind = ExprKind::Number {
+                value: 0.0,
+                unit: None,
+            };
+            return Expr { kind, span };
+        }
         let file = self.file;
         let span_of = move |p: &Pair<Rule>| {
             Span::new(
@@ -432,6 +458,46 @@ impl Builder {
             span,
         }
     }
+}
+
+/// Where parentheses and braces first nest deeper than
+/// [`MAX_PAREN_DEPTH`], if they do; comments and strings are skipped. Checked before pest sees the text,
+/// whose recursive descent would otherwise follow the nesting on the stack.
+fn too_deep(text: &str) -> Option<usize> {
+    let bytes = text.as_bytes();
+    let (mut depth, mut i) = (0usize, 0usize);
+    while i < bytes.len() {
+        match bytes[i] {
+            b'/' if bytes.get(i + 1) == Some(&b'/') => {
+                while i < bytes.len() && bytes[i] != b'\n' {
+                    i += 1;
+                }
+            }
+            b'/' if bytes.get(i + 1) == Some(&b'*') => {
+                i += 2;
+                while i + 1 < bytes.len() && !(bytes[i] == b'*' && bytes[i + 1] == b'/') {
+                    i += 1;
+                }
+                i += 1;
+            }
+            b'"' => {
+                i += 1;
+                while i < bytes.len() && bytes[i] != b'"' && bytes[i] != b'\n' {
+                    i += if bytes[i] == b'\\' { 2 } else { 1 };
+                }
+            }
+            b'(' | b'{' => {
+                depth += 1;
+                if depth > MAX_PAREN_DEPTH {
+                    return Some(i);
+                }
+            }
+            b')' | b'}' => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+        i += 1;
+    }
+    None
 }
 
 /// The text of a string literal: `\x` stands for `x`.
