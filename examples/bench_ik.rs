@@ -22,7 +22,6 @@ use rand_chacha::ChaCha8Rng;
 use reach::kinematics::Chain;
 use reach::plugin::{IkProblem, Options, Registry, Solver, Value};
 use reach::solvers::random_posture;
-use reach::Input;
 
 /// The paper's tolerance: 0.5 units, taken as centimetres.
 const TOLERANCE_MM: f64 = 5.0;
@@ -95,15 +94,7 @@ fn main() {
 
 /// The paper's chain from the standard library.
 fn paper_chain() -> Chain {
-    let text = "use std::paper\nperson p { mannequin paper21 base fixed { at (0, 0, 0) } }";
-    let (_, checked) = reach::check(
-        Input::Text {
-            name: "bench.reach",
-            text,
-        },
-        &Registry::builtin(),
-    );
-    checked.expect("std::paper checks").persons[0].chain.clone()
+    reach::stdlib::chain("paper", "paper21").expect("std::paper checks")
 }
 
 /// Effector positions of random postures within the limits.
@@ -131,18 +122,21 @@ fn our_solvers(
         };
         defaults = defaults.with(name, value);
     }
-    // Variants A-D: constant rate 0.015, one random start, stop when a sweep
-    // no longer improves.
-    let constant = defaults
+    // The paper's algorithm and cost model: one random start, fixed
+    // increments, the second direction tried only after the first.
+    let paper = defaults
         .clone()
-        .with("rate", Value::Number(0.015))
-        .with("gamma", Value::Number(1.0))
-        .with("threshold", Value::Length(0.0))
         .with("starts", Value::Integer(1))
         .with("neutral_start", Value::Bool(false))
         .with("grow", Value::Number(1.0))
         .with("shrink", Value::Number(1.0))
-        .with("eager_pair", Value::Bool(false))
+        .with("eager_pair", Value::Bool(false));
+    // Variants A-D: constant rate 0.015, stop when a sweep no longer improves.
+    let constant = paper
+        .clone()
+        .with("rate", Value::Number(0.015))
+        .with("gamma", Value::Number(1.0))
+        .with("threshold", Value::Length(0.0))
         .with("stall", Value::Integer(1))
         .with("stall_ratio", Value::Number(0.0));
     let variant = |sign: bool, incremental_fk: bool| {
@@ -152,16 +146,10 @@ fn our_solvers(
             .with("incremental_fk", Value::Bool(incremental_fk))
     };
     // Variant F: rate 0.5, divided by 3 when a sweep improves less than 0.1 units.
-    let f = defaults
-        .clone()
+    let f = paper
         .with("rate", Value::Number(0.5))
         .with("gamma", Value::Number(3.0))
         .with("threshold", Value::Length(1.0))
-        .with("starts", Value::Integer(1))
-        .with("neutral_start", Value::Bool(false))
-        .with("grow", Value::Number(1.0))
-        .with("shrink", Value::Number(1.0))
-        .with("eager_pair", Value::Bool(false))
         .with("stall", Value::Integer(1_000_000));
     let dls = registry.solver("dls").unwrap();
     vec![

@@ -14,3 +14,16 @@ pub fn module(name: &str) -> Option<&'static str> {
         .find(|(n, _)| *n == name)
         .map(|(_, text)| *text)
 }
+
+/// The chain of mannequin `name` of module `std::module`, checked as a
+/// scenario would check it (for programs, tests and benchmarks).
+pub fn chain(module: &str, name: &str) -> Result<crate::kinematics::Chain, crate::Diagnostics> {
+    let text =
+        format!("use std::{module}\nperson p {{ mannequin {name} base fixed {{ at (0, 0, 0) }} }}");
+    let input = crate::Input::Text {
+        name: "stdlib.reach",
+        text: &text,
+    };
+    let (_, checked) = crate::check(input, &crate::plugin::Registry::builtin());
+    checked.map(|scenario| scenario.persons[0].chain.clone())
+}

@@ -2,21 +2,11 @@
 //! from their sources (stature 1755 mm and Drillis & Contini's fractions).
 
 use nalgebra::Point3;
-use reach::plugin::Registry;
-use reach::Input;
 
 const H: f64 = 1755.0;
 
 fn right_arm() -> reach::kinematics::Chain {
-    let text = "use std::arm\nperson p { mannequin right_arm base fixed { at (0, 0, 0) } }";
-    let (_, checked) = reach::check(
-        Input::Text {
-            name: "t.reach",
-            text,
-        },
-        &Registry::builtin(),
-    );
-    checked.expect("std::arm checks").persons[0].chain.clone()
+    reach::stdlib::chain("arm", "right_arm").expect("std::arm checks")
 }
 
 #[test]
