@@ -19,6 +19,7 @@
 pub mod bases;
 mod check;
 pub mod error;
+pub mod floor;
 pub mod kinematics;
 pub mod limits;
 mod loader;
