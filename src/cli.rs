@@ -126,6 +126,7 @@ fn plugins_listing(registry: &Registry) -> String {
             for param in p.params() {
                 let default = match &param.default {
                     Some(v) => format!("default {}", v.display()),
+                    None if param.optional => "optional".to_string(),
                     None => "required".to_string(),
                 };
                 out.push_str(&format!(

@@ -86,6 +86,12 @@ pub enum ErrorKind {
     },
     #[error("mixing bare numbers from files with different default units")]
     MixedDefaults,
+    #[error("the {base} base of `{person}` fits nowhere in room `{room}`")]
+    FitsNowhere {
+        person: String,
+        base: String,
+        room: String,
+    },
     #[error("{what} exceeds the limit of {limit}")]
     TooLarge { what: String, limit: String },
     #[error("{what} is not supported yet")]
@@ -128,6 +134,7 @@ impl ErrorKind {
             Missing { .. } | Repeated { .. } | TargetOutsideRoom { .. } => "reach::scene",
             Unsupported { .. } | Misplaced { .. } => "reach::scene",
             TooLarge { .. } => "reach::limit",
+            FitsNowhere { .. } => "reach::scene",
             UnknownPlugin { .. } | UnknownOption { .. } | MissingOption { .. } => "reach::plugin",
         }
     }
@@ -161,6 +168,7 @@ impl ErrorKind {
             MixedDefaults => "bare numbers with different default units".into(),
             Unsupported { .. } => "not supported".into(),
             TooLarge { .. } => "too large".into(),
+            FitsNowhere { .. } => "cannot be placed for this task".into(),
             Misplaced { .. } => "in a used file".into(),
             UnknownPlugin { kind, .. } => format!("no {kind} of this name"),
             UnknownOption { .. } => "unknown option".into(),
@@ -190,6 +198,10 @@ impl ErrorKind {
             MixedDefaults => Some("write the units on these numbers".into()),
             Unsupported { help, .. } => Some(help.clone()),
             TooLarge { .. } => Some("split it up; the limits are in docs/language.md".into()),
+            FitsNowhere { base, .. } if base == "fixed" => Some("a fixed base must stand inside the room".into()),
+            FitsNowhere { .. } => Some(
+                "no free floor is large enough for its footprint: check the room size, the obstacles, the zone and the clearance".into(),
+            ),
             Misplaced { .. } => Some("move it to the file you run, which can `use` this one".into()),
             UnknownPlugin {
                 suggestion,

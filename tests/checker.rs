@@ -210,7 +210,7 @@ fn a_default_plugin_gets_its_own_default_options() {
 #[test]
 fn one_task_per_subject_and_person_in_order() {
     let text = format!(
-        "{SCENE}person ann {{ mannequin arm base fixed {{ at (900, 1200, 930) }} }}\nperson bob {{ mannequin arm base fixed {{ at (900, 1000, 930) }} }}\nroom hall {{ size 10 x 10 x 10\n target hook at (1, 1, 1) }}\nreach mug, hook by ann, bob"
+        "{SCENE}person ann {{ mannequin arm base fixed {{ at (900, 1200, 930) }} }}\nperson bob {{ mannequin arm base fixed {{ at (900, 1000, 930) }} }}\nroom hall {{ size 3000 x 3000 x 2500\n target hook at (1, 1, 1) }}\nreach mug, hook by ann, bob"
     );
     let s = ok(&text);
     let order: Vec<(&str, &str)> = s

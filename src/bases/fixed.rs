@@ -6,6 +6,7 @@ use crate::plugin::{
     Base, BasePlugin, BasePose, IkProblem, Options, ParamSpec, Placement, Plugin, ReachQuery,
     Solver,
 };
+use crate::scene::Room;
 
 /// The plugin `fixed`.
 pub struct Fixed;
@@ -61,5 +62,10 @@ impl Base for FixedBase {
             pose: self.pose,
             solution: solver.solve(&problem),
         }
+    }
+
+    /// The hip point must be inside the room.
+    fn fits(&self, room: &Room) -> bool {
+        room.contains(&self.pose.position_mm)
     }
 }

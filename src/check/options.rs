@@ -65,6 +65,7 @@ impl Checker<'_> {
                 Some((_, None)) => ok = false,
                 None => match &spec.default {
                     Some(d) => options.push((spec.name, self.complete_default(spec, d, at)?)),
+                    None if spec.optional => {}
                     None => {
                         self.error(Error::new(
                             ErrorKind::MissingOption {

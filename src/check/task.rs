@@ -56,6 +56,7 @@ impl Checker<'_> {
         let options = options?;
         let subjects: Vec<String> = subjects.into_iter().collect::<Option<_>>()?;
         let people: Vec<String> = people.into_iter().collect::<Option<_>>()?;
+        self.check_bases_fit(decl, &subjects, &people, rooms, persons);
         let mut tasks = Vec::new();
         for subject in &subjects {
             for person in &people {
@@ -69,6 +70,49 @@ impl Checker<'_> {
             }
         }
         Some(tasks)
+    }
+
+    /// Each person's base must fit somewhere in the room of each target.
+    fn check_bases_fit(
+        &mut self,
+        decl: &TaskDecl,
+        subjects: &[String],
+        people: &[String],
+        rooms: &[Room],
+        persons: &[Person],
+    ) {
+        for (name, name_decl) in people.iter().zip(&decl.persons) {
+            let Some(person) = persons.iter().find(|p| &p.name == name) else {
+                continue;
+            };
+            let Some(plugin) = self.registry.base(&person.base.name).cloned() else {
+                continue;
+            };
+            let base = plugin.build(&person.base.options);
+            let mut checked: Vec<&str> = Vec::new();
+            for subject in subjects {
+                let Some(room) = rooms
+                    .iter()
+                    .find(|r| r.targets.iter().any(|t| &t.name == subject))
+                else {
+                    continue;
+                };
+                if checked.contains(&room.name.as_str()) {
+                    continue;
+                }
+                checked.push(&room.name);
+                if !base.fits(room) {
+                    self.error(Error::new(
+                        ErrorKind::FitsNowhere {
+                            person: name.clone(),
+                            base: person.base.name.clone(),
+                            room: room.name.clone(),
+                        },
+                        name_decl.span,
+                    ));
+                }
+            }
+        }
     }
 
     fn subject(

@@ -129,6 +129,9 @@ pub struct Placement {
 /// stands (or sits) and asks the solver for the posture.
 pub trait Base: Send + Sync {
     fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement;
+    /// Whether the base can be anywhere in the room at all; the checker
+    /// refuses a task whose base fits nowhere.
+    fn fits(&self, room: &Room) -> bool;
 }
 
 pub trait BasePlugin: Plugin {

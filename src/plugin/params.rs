@@ -96,6 +96,8 @@ pub struct ParamSpec {
     pub default: Option<Value>,
     /// Inclusive bounds in internal units, for numeric kinds.
     pub range: Option<(f64, f64)>,
+    /// May be left out, with no default: the plugin then does without.
+    pub optional: bool,
     pub doc: &'static str,
 }
 
@@ -106,6 +108,7 @@ impl ParamSpec {
             kind,
             default,
             range: None,
+            optional: false,
             doc,
         }
     }
@@ -138,6 +141,14 @@ impl ParamSpec {
     /// A point that must be given.
     pub fn point(name: &'static str, doc: &'static str) -> Self {
         Self::new(name, ParamKind::Point, None, doc)
+    }
+
+    /// A point that may be left out.
+    pub fn optional_point(name: &'static str, doc: &'static str) -> Self {
+        ParamSpec {
+            optional: true,
+            ..Self::new(name, ParamKind::Point, None, doc)
+        }
     }
 
     /// Another plugin, with the named default.
@@ -250,6 +261,14 @@ impl Options {
         match self.expect(name) {
             Value::Bool(v) => *v,
             v => panic!("option `{name}` is not a bool: {v:?}"),
+        }
+    }
+
+    /// An optional point: `None` when the file left it out.
+    pub fn point_mm_opt(&self, name: &str) -> Option<Vector3<f64>> {
+        match self.get(name)? {
+            Value::Point(v) => Some(*v),
+            v => panic!("option `{name}` is not a point: {v:?}"),
         }
     }
 

@@ -33,6 +33,8 @@ impl Registry {
         r.register_solver(crate::solvers::Incremental);
         r.register_solver(crate::solvers::Dls);
         r.register_base(crate::bases::Fixed);
+        r.register_base(crate::bases::Trolley);
+        r.register_base(crate::bases::Wheelchair);
         r.register_task(crate::tasks::Reach);
         r.register_format(crate::output::Text);
         r.register_format(crate::output::Json);

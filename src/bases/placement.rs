@@ -1,0 +1,152 @@
+//! Placing a mobile base: where should the person stand or sit, and facing
+//! which way, to reach a target? For each of `headings` directions the
+//! preferred hip point is the one that puts the target where the arm works
+//! best (the average horizontal position of the effector over the chain's
+//! workspace, turned by the heading); the candidate is the admissible point
+//! nearest to it. The solver is run from every candidate, and the kept
+//! placement is the most comfortable one that reaches, or else the closest.
+//! This is the paper's idea (section 5.3.5: the target becomes the region of
+//! target minus admissible base positions) made discrete, with the heading
+//! theta_0 of section 5.3.6 as the outer loop.
+
+use geo::{Closest, ClosestPoint, Contains, MultiPolygon, Point};
+use nalgebra::{Point3, Vector2};
+use rand_chacha::rand_core::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+
+use crate::floor::{admissible, Footprint, Zone};
+use crate::kinematics::Chain;
+use crate::plugin::{BasePose, IkProblem, IkSolution, Placement, ReachQuery, Solver};
+use crate::scene::Room;
+use crate::solvers::random_posture;
+
+/// A base that moves on the floor: its footprint and how it is searched.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mobile {
+    pub footprint: Footprint,
+    pub hip_height_mm: f64,
+    pub clearance_mm: f64,
+    pub headings: u32,
+    pub zone: Option<Zone>,
+}
+
+impl Mobile {
+    /// The admissible regions, one per heading searched (one for all when
+    /// turning does not change the footprint).
+    fn regions(&self, room: &Room) -> Vec<(f64, MultiPolygon<f64>)> {
+        let headings: Vec<f64> = (0..self.headings)
+            .map(|k| 2.0 * std::f64::consts::PI * f64::from(k) / f64::from(self.headings))
+            .collect();
+        if !self.footprint.turns() {
+            let region = admissible(room, &self.footprint, 0.0, self.clearance_mm, self.zone);
+            return headings.into_iter().map(|h| (h, region.clone())).collect();
+        }
+        headings
+            .into_iter()
+            .map(|h| {
+                (
+                    h,
+                    admissible(room, &self.footprint, h, self.clearance_mm, self.zone),
+                )
+            })
+            .collect()
+    }
+
+    /// Whether the base fits anywhere in the room.
+    pub fn fits(&self, room: &Room) -> bool {
+        self.regions(room).iter().any(|(_, r)| !r.0.is_empty())
+    }
+
+    /// Candidate poses for reaching `target`, in heading order.
+    pub fn candidates(&self, room: &Room, chain: &Chain, target: &Point3<f64>) -> Vec<BasePose> {
+        let hint = workspace_centre(chain);
+        self.regions(room)
+            .into_iter()
+            .filter_map(|(heading, region)| {
+                let (s, c) = heading.sin_cos();
+                let offset = Vector2::new(c * hint.x - s * hint.y, s * hint.x + c * hint.y);
+                let preferred = Point::new(target.x - offset.x, target.y - offset.y);
+                let p = nearest(&region, preferred)?;
+                Some(BasePose {
+                    position_mm: Point3::new(p.x(), p.y(), self.hip_height_mm),
+                    heading_rad: heading,
+                })
+            })
+            .collect()
+    }
+
+    /// Place the base and solve the posture from each candidate.
+    pub fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement {
+        let mut best: Option<(Placement, f64)> = None;
+        for pose in self.candidates(query.room, query.chain, &query.target_room_mm) {
+            let problem = IkProblem {
+                chain: query.chain,
+                target_mm: pose.to_base(&query.target_room_mm),
+                tolerance_mm: query.tolerance_mm,
+                seed: query.seed,
+            };
+            let solution = solver.solve(&problem);
+            let comfort = query.chain.discomfort(&solution.q);
+            let reaches = |s: &IkSolution| s.distance_mm <= query.tolerance_mm;
+            let better = match &best {
+                None => true,
+                Some((b, b_comfort)) => match (reaches(&solution), reaches(&b.solution)) {
+                    (true, false) => true,
+                    (false, true) => false,
+                    (true, true) => comfort < *b_comfort,
+                    (false, false) => solution.distance_mm < b.solution.distance_mm,
+                },
+            };
+            if better {
+                best = Some((Placement { pose, solution }, comfort));
+            }
+        }
+        best.map(|(p, _)| p).unwrap_or_else(|| nowhere(query))
+    }
+}
+
+/// The admissible point nearest to `p` (itself if admissible).
+fn nearest(region: &MultiPolygon<f64>, p: Point<f64>) -> Option<Point<f64>> {
+    if region.0.is_empty() {
+        return None;
+    }
+    if region.contains(&p) {
+        return Some(p);
+    }
+    match region.closest_point(&p) {
+        Closest::Intersection(q) | Closest::SinglePoint(q) => Some(q),
+        Closest::Indeterminate => region
+            .0
+            .first()
+            .and_then(|poly| poly.exterior().0.first())
+            .map(|c| Point::new(c.x, c.y)),
+    }
+}
+
+/// The average horizontal position of the effector over 64 fixed random
+/// postures: where, relative to the hip, the arm works best.
+fn workspace_centre(chain: &Chain) -> Vector2<f64> {
+    let mut rng = ChaCha8Rng::seed_from_u64(0x5eed);
+    let n = 64;
+    let sum = (0..n).fold(Vector2::zeros(), |acc, _| {
+        let p = chain.effector(&random_posture(chain, &mut rng));
+        acc + Vector2::new(p.x, p.y)
+    });
+    sum / f64::from(n)
+}
+
+/// What is reported when the base fits nowhere (the checker refuses such
+/// scenarios, so this is a last resort): no distance, the neutral posture.
+fn nowhere(query: &ReachQuery<'_>) -> Placement {
+    Placement {
+        pose: BasePose {
+            position_mm: Point3::new(query.room.size_mm.x / 2.0, query.room.size_mm.y / 2.0, 0.0),
+            heading_rad: 0.0,
+        },
+        solution: IkSolution {
+            q: query.chain.neutral(),
+            distance_mm: f64::INFINITY,
+            iterations: 0,
+        },
+    }
+}

@@ -1,0 +1,105 @@
+//! Mobile bases: every placement a report gives is admissible, checked
+//! independently of the placement search: the footprint at the reported
+//! pose lies in the room and overlaps no obstacle below the clearance.
+
+use geo::{Area, BooleanOps, Coord, LineString, Polygon};
+use reach::floor::Footprint;
+use reach::plugin::Registry;
+use reach::report::TaskReport;
+use reach::scene::{BoxObstacle, Scenario};
+use reach::Input;
+
+fn scenario(path: &str) -> Scenario {
+    let (_, checked) = reach::check(Input::Path(path.as_ref()), &Registry::builtin());
+    checked.unwrap_or_else(|d| panic!("{}", d.render(true)))
+}
+
+fn outline(b: &BoxObstacle) -> Polygon<f64> {
+    let (s, c) = b.yaw_rad.sin_cos();
+    let ring: Vec<Coord<f64>> = [
+        (0.0, 0.0),
+        (b.size_mm.x, 0.0),
+        (b.size_mm.x, b.size_mm.y),
+        (0.0, b.size_mm.y),
+    ]
+    .into_iter()
+    .map(|(x, y)| Coord {
+        x: b.corner_mm.x + c * x - s * y,
+        y: b.corner_mm.y + s * x + c * y,
+    })
+    .collect();
+    Polygon::new(LineString::from(ring), Vec::new())
+}
+
+#[test]
+fn every_reported_base_pose_is_admissible() {
+    let scenario = scenario("examples/kitchen_wheelchair.reach");
+    let report = reach::run(&scenario, &Registry::builtin());
+    let room = &scenario.rooms[0];
+    for task in &report.tasks {
+        let TaskReport::Reach(r) = task;
+        let person = scenario.person(&r.person).unwrap();
+        let (footprint, clearance) = match person.base.name.as_str() {
+            "trolley" => (
+                Footprint::Circle {
+                    radius_mm: person.base.options.length_mm("radius"),
+                },
+                1900.0,
+            ),
+            "wheelchair" => {
+                let front = person.base.options.length_mm("hip_to_front");
+                let length = person.base.options.length_mm("length");
+                let width = person.base.options.length_mm("width");
+                (
+                    Footprint::Rectangle {
+                        front_mm: front,
+                        back_mm: length - front,
+                        width_mm: width,
+                    },
+                    1400.0,
+                )
+            }
+            other => panic!("unexpected base {other}"),
+        };
+        // Reports round to 0.01 mm; allow that much overlap.
+        let shape = footprint.polygon_at(r.base.x_mm, r.base.y_mm, r.base.heading_deg.to_radians());
+        for c in shape.exterior().coords() {
+            assert!(
+                c.x >= -0.02 && c.y >= -0.02,
+                "{} by {}: outside the room at {c:?}",
+                r.name,
+                r.person
+            );
+            assert!(
+                c.x <= room.size_mm.x + 0.02 && c.y <= room.size_mm.y + 0.02,
+                "{} by {}: outside",
+                r.name,
+                r.person
+            );
+        }
+        for b in room.boxes.iter().filter(|b| b.corner_mm.z < clearance) {
+            let overlap = shape.intersection(&outline(b)).unsigned_area();
+            assert!(
+                overlap < 1.0,
+                "{} by {}: footprint overlaps {} by {overlap} mm2",
+                r.name,
+                r.person,
+                b.name
+            );
+        }
+    }
+}
+
+#[test]
+fn a_wheelchair_user_cannot_reach_what_a_standing_person_can() {
+    let scenario = scenario("examples/kitchen_wheelchair.reach");
+    let report = reach::run(&scenario, &Registry::builtin());
+    let ok = |target: &str, person: &str| {
+        report.tasks.iter().any(
+            |t| matches!(t, TaskReport::Reach(r) if r.name == target && r.person == person && r.ok),
+        )
+    };
+    assert!(ok("cabinet_high", "ben"));
+    assert!(!ok("cabinet_high", "ann"));
+    assert!(ok("counter_front", "ann"));
+}
