@@ -5,8 +5,8 @@ use nalgebra::{Point3, Vector3};
 use super::eval::fmt_num;
 use super::Checker;
 use crate::error::{Error, ErrorKind};
-use crate::scene::{BoxObstacle, Room, Target};
-use crate::syntax::ast::{BoxDecl, RoomDecl, RoomItem};
+use crate::scene::{BoxObstacle, Room, Surface, Target};
+use crate::syntax::ast::{BoxDecl, RoomDecl, RoomItem, SurfaceDecl};
 
 impl Checker<'_> {
     pub(super) fn rooms(&mut self) -> Vec<Room> {
@@ -71,10 +71,12 @@ impl Checker<'_> {
         };
         let mut boxes = Vec::new();
         let mut targets = Vec::new();
+        let mut surfaces = Vec::new();
         for item in &decl.items {
             match item {
                 RoomItem::Size(_) => {}
                 RoomItem::Box(b) => boxes.extend(self.box_obstacle(b)),
+                RoomItem::Surface(d) => surfaces.extend(self.surface(d)),
                 RoomItem::Target(t) => {
                     let Some(p) = self.point(&t.at) else { continue };
                     let position_mm = Point3::from(p);
@@ -99,6 +101,43 @@ impl Checker<'_> {
             size_mm: size?,
             boxes,
             targets,
+            surfaces,
+        })
+    }
+
+    /// A `surface` item: a rectangle parallel to the room's axes with exactly
+    /// one size zero.
+    fn surface(&mut self, d: &SurfaceDecl) -> Option<Surface> {
+        let corner = self.point(&d.at);
+        let size = self.point(&d.size)?;
+        let zeros = (0..3).filter(|&i| size[i] == 0.0).count();
+        let negative = (0..3).find(|&i| size[i] < 0.0);
+        if zeros != 1 || negative.is_some() {
+            let value = format!(
+                "({}, {}, {}) mm",
+                fmt_num(size.x),
+                fmt_num(size.y),
+                fmt_num(size.z)
+            );
+            self.out_of_range(
+                d.size.span,
+                "a surface's size",
+                "two positive sizes and one zero",
+                &value,
+            );
+            return None;
+        }
+        let axis = |i: usize| {
+            let mut v = Vector3::zeros();
+            v[i] = size[i];
+            v
+        };
+        let edges: Vec<Vector3<f64>> = (0..3).filter(|&i| size[i] != 0.0).map(axis).collect();
+        Some(Surface {
+            name: d.name.value.clone(),
+            corner_mm: Point3::from(corner?),
+            u_mm: edges[0],
+            v_mm: edges[1],
         })
     }
 

@@ -5,7 +5,7 @@ use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::names::suggest;
 use crate::plugin::{PluginKind, SubjectKind};
-use crate::scene::{Person, Room, TaskSpec};
+use crate::scene::{Person, Room, TaskSpec, FACES};
 use crate::span::Spanned;
 use crate::syntax::ast::TaskDecl;
 
@@ -91,10 +91,11 @@ impl Checker<'_> {
             let base = plugin.build(&person.base.options);
             let mut checked: Vec<&str> = Vec::new();
             for subject in subjects {
-                let Some(room) = rooms
-                    .iter()
-                    .find(|r| r.targets.iter().any(|t| &t.name == subject))
-                else {
+                let path: Vec<String> = subject.split('.').map(str::to_string).collect();
+                let in_room = |r: &&Room| {
+                    r.targets.iter().any(|t| &t.name == subject) || r.surface(&path).is_some()
+                };
+                let Some(room) = rooms.iter().find(in_room) else {
                     continue;
                 };
                 if checked.contains(&room.name.as_str()) {
@@ -121,7 +122,13 @@ impl Checker<'_> {
         s: &Spanned<Vec<String>>,
         rooms: &[Room],
     ) -> Option<String> {
-        let SubjectKind::Target = kind;
+        match kind {
+            SubjectKind::Target => self.target_subject(s, rooms),
+            SubjectKind::Surface => self.surface_subject(s, rooms),
+        }
+    }
+
+    fn target_subject(&mut self, s: &Spanned<Vec<String>>, rooms: &[Room]) -> Option<String> {
         let name = s.value.join(".");
         let targets = || {
             rooms
@@ -146,6 +153,49 @@ impl Checker<'_> {
                 s.span,
             ));
         }
+        None
+    }
+
+    /// `surface` or `box.face`.
+    fn surface_subject(&mut self, s: &Spanned<Vec<String>>, rooms: &[Room]) -> Option<String> {
+        if rooms.iter().any(|r| r.surface(&s.value).is_some()) {
+            return Some(s.value.join("."));
+        }
+        let is_box = |name: &String| {
+            rooms
+                .iter()
+                .any(|r| r.boxes.iter().any(|b| &b.name == name))
+        };
+        let (what, wrong, candidates): (&'static str, &str, Vec<String>) = match s.value.as_slice()
+        {
+            [box_name, face] if is_box(box_name) => (
+                "face",
+                face.as_str(),
+                FACES.iter().map(|f| f.to_string()).collect(),
+            ),
+            [first, ..] => {
+                let surfaces = rooms
+                    .iter()
+                    .flat_map(|r| r.surfaces.iter().map(|s| s.name.clone()));
+                let boxes = rooms
+                    .iter()
+                    .flat_map(|r| r.boxes.iter().map(|b| b.name.clone()));
+                (
+                    "surface or box",
+                    first.as_str(),
+                    surfaces.chain(boxes).collect(),
+                )
+            }
+            [] => return None,
+        };
+        self.error(Error::new(
+            ErrorKind::UnknownName {
+                what,
+                name: wrong.to_string(),
+                suggestion: suggest(wrong, candidates.iter().map(String::as_str)),
+            },
+            s.span,
+        ));
         None
     }
 

@@ -104,6 +104,7 @@ mod tests {
                 yaw_rad: 0.0,
             }],
             targets: Vec::new(),
+            surfaces: Vec::new(),
         }
     }
 

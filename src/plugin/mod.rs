@@ -156,7 +156,10 @@ pub trait TaskPlugin: Plugin {
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SubjectKind {
+    /// A named target of a room.
     Target,
+    /// A surface: a `surface` of a room or a face of a box (`counter.top`).
+    Surface,
 }
 
 // ------------------------------------------------------------------ formats

@@ -3,6 +3,10 @@
 //! resolved and in internal units (mm, rad); spans remain only where a run
 //! may still need to point back at the text.
 
+mod surface;
+
+pub use surface::{Surface, FACES};
+
 use nalgebra::{Point3, Vector3};
 
 use crate::kinematics::Chain;
@@ -29,6 +33,14 @@ impl Scenario {
             .iter()
             .find_map(|r| r.targets.iter().find(|t| t.name == name).map(|t| (r, t)))
     }
+
+    /// The surface a dotted subject names, and its room.
+    pub fn surface(&self, subject: &str) -> Option<(&Room, Surface)> {
+        let path: Vec<String> = subject.split('.').map(str::to_string).collect();
+        self.rooms
+            .iter()
+            .find_map(|r| r.surface(&path).map(|s| (r, s)))
+    }
 }
 
 /// A room: the box from the origin to `size_mm`, x and y on the floor, z up.
@@ -38,6 +50,8 @@ pub struct Room {
     pub size_mm: Vector3<f64>,
     pub boxes: Vec<BoxObstacle>,
     pub targets: Vec<Target>,
+    /// Rectangles declared with `surface`, for maps.
+    pub surfaces: Vec<Surface>,
 }
 
 impl Room {

@@ -77,6 +77,15 @@ pub enum RoomItem {
     Size(Vec3Expr),
     Box(Box<BoxDecl>),
     Target(TargetDecl),
+    Surface(SurfaceDecl),
+}
+
+/// `surface NAME at (x, y, z) size (a, b, c)`, one size zero.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SurfaceDecl {
+    pub name: Name,
+    pub at: Vec3Expr,
+    pub size: Vec3Expr,
 }
 
 #[derive(Clone, Debug, PartialEq)]

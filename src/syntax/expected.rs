@@ -33,6 +33,7 @@ fn describe(rule: Rule) -> Option<&'static str> {
         room_size | size_dims => "`size`",
         box_decl => "`box`",
         target_decl => "`target`",
+        surface_decl => "`surface`",
         mannequin => "`mannequin`",
         joint_decl => "`joint`",
         joint_kind => "`revolute` or `prismatic`",

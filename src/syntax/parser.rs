@@ -269,6 +269,13 @@ impl Builder {
                 let at = self.vec3(it.next().unwrap());
                 RoomItem::Target(TargetDecl { name, at })
             }
+            Rule::surface_decl => {
+                let mut it = pair.into_inner();
+                let name = self.name(it.next().unwrap());
+                let at = self.vec3(it.next().unwrap());
+                let size = self.vec3(it.next().unwrap());
+                RoomItem::Surface(SurfaceDecl { name, at, size })
+            }
             r => unreachable!("room item {r:?}"),
         }
     }

@@ -1,0 +1,130 @@
+//! Surfaces for maps: a rectangle in the room, given as a corner and two
+//! edges. A `surface` item of a room, or a face of a box: `top`, `bottom`,
+//! `front` (the side face turned most towards the middle of the room),
+//! `back`, or by its side of the box's own axes: `x_min`, `x_max`, `y_min`,
+//! `y_max`.
+
+use nalgebra::{Point3, Vector3};
+
+use super::{BoxObstacle, Room};
+
+/// The faces of a box a map can name.
+pub const FACES: [&str; 8] = [
+    "top", "bottom", "front", "back", "x_min", "x_max", "y_min", "y_max",
+];
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Surface {
+    /// As the task names it: `counter.top` or `shelf`.
+    pub name: String,
+    pub corner_mm: Point3<f64>,
+    /// The first edge: along it run the columns of the map's grid.
+    pub u_mm: Vector3<f64>,
+    /// The second edge: along it run the rows.
+    pub v_mm: Vector3<f64>,
+}
+
+impl Surface {
+    /// Horizontal surfaces are drawn in plan, vertical ones in elevation.
+    pub fn is_horizontal(&self) -> bool {
+        self.u_mm.z.abs() < 1e-9 && self.v_mm.z.abs() < 1e-9
+    }
+
+    /// The points at the centres of a grid of cells about `step_mm` wide:
+    /// (column, row, point), rows outermost.
+    pub fn grid(&self, step_mm: f64) -> (usize, usize, Vec<(usize, usize, Point3<f64>)>) {
+        let (cols, rows) = self.grid_size(step_mm);
+        let mut points = Vec::with_capacity(cols * rows);
+        for r in 0..rows {
+            for c in 0..cols {
+                let a = (c as f64 + 0.5) / cols as f64;
+                let b = (r as f64 + 0.5) / rows as f64;
+                points.push((c, r, self.corner_mm + self.u_mm * a + self.v_mm * b));
+            }
+        }
+        (cols, rows, points)
+    }
+
+    /// Columns and rows of the grid for `step_mm`, at least one each.
+    pub fn grid_size(&self, step_mm: f64) -> (usize, usize) {
+        let n = |len: f64| ((len / step_mm).round() as usize).max(1);
+        (n(self.u_mm.norm()), n(self.v_mm.norm()))
+    }
+}
+
+impl Room {
+    /// The surface `path` names in this room: `[surface]` or `[box, face]`.
+    pub fn surface(&self, path: &[String]) -> Option<Surface> {
+        match path {
+            [name] => self.surfaces.iter().find(|s| &s.name == name).cloned(),
+            [box_name, face] => {
+                let b = self.boxes.iter().find(|b| &b.name == box_name)?;
+                box_face(b, face, self).map(|(corner_mm, u_mm, v_mm)| Surface {
+                    name: format!("{box_name}.{face}"),
+                    corner_mm,
+                    u_mm,
+                    v_mm,
+                })
+            }
+            _ => None,
+        }
+    }
+}
+
+type Face = (Point3<f64>, Vector3<f64>, Vector3<f64>);
+
+fn box_face(b: &BoxObstacle, face: &str, room: &Room) -> Option<Face> {
+    let (s, c) = b.yaw_rad.sin_cos();
+    let ex = Vector3::new(c, s, 0.0) * b.size_mm.x;
+    let ey = Vector3::new(-s, c, 0.0) * b.size_mm.y;
+    let ez = Vector3::new(0.0, 0.0, b.size_mm.z);
+    let o = b.corner_mm;
+    Some(match face {
+        "top" => (o + ez, ex, ey),
+        "bottom" => (o, ex, ey),
+        "x_min" => (o, ey, ez),
+        "x_max" => (o + ex, ey, ez),
+        "y_min" => (o, ex, ez),
+        "y_max" => (o + ey, ex, ez),
+        "front" | "back" => {
+            let towards = facing_centre(b, room, &[ex, ey]);
+            let chosen = if face == "front" {
+                towards
+            } else {
+                opposite(towards)
+            };
+            return box_face(b, chosen, room);
+        }
+        _ => return None,
+    })
+}
+
+/// The side face whose outward normal points most towards the room's middle.
+fn facing_centre(b: &BoxObstacle, room: &Room, axes: &[Vector3<f64>; 2]) -> &'static str {
+    let centre_box = b.corner_mm + (axes[0] + axes[1]) * 0.5;
+    let to_middle = Vector3::new(
+        room.size_mm.x / 2.0 - centre_box.x,
+        room.size_mm.y / 2.0 - centre_box.y,
+        0.0,
+    );
+    let sides = [
+        ("x_max", axes[0].normalize()),
+        ("x_min", -axes[0].normalize()),
+        ("y_max", axes[1].normalize()),
+        ("y_min", -axes[1].normalize()),
+    ];
+    sides
+        .into_iter()
+        .max_by(|a, b| a.1.dot(&to_middle).total_cmp(&b.1.dot(&to_middle)))
+        .map(|(name, _)| name)
+        .unwrap_or("x_max")
+}
+
+fn opposite(face: &str) -> &'static str {
+    match face {
+        "x_max" => "x_min",
+        "x_min" => "x_max",
+        "y_max" => "y_min",
+        _ => "y_max",
+    }
+}
