@@ -2,9 +2,10 @@
 
 use nalgebra::Point3;
 
+use crate::kinematics::Chain;
 use crate::plugin::{
-    Base, BasePlugin, BasePose, IkProblem, Options, ParamSpec, Placement, Plugin, ReachQuery,
-    Solver,
+    Base, BasePlugin, BasePose, IkProblem, Options, ParamSpec, Placement, Plugin, PreparedBase,
+    ReachQuery, Solver,
 };
 use crate::scene::Room;
 
@@ -51,9 +52,28 @@ struct FixedBase {
 }
 
 impl Base for FixedBase {
-    fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement {
+    /// The hip point must be inside the room.
+    fn fits(&self, room: &Room) -> bool {
+        room.contains(&self.pose.position_mm)
+    }
+
+    fn prepare<'a>(&'a self, _: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a> {
+        Box::new(Prepared {
+            pose: self.pose,
+            chain,
+        })
+    }
+}
+
+struct Prepared<'a> {
+    pose: BasePose,
+    chain: &'a Chain,
+}
+
+impl PreparedBase for Prepared<'_> {
+    fn reach(&self, query: &ReachQuery, solver: &dyn Solver) -> Placement {
         let problem = IkProblem {
-            chain: query.chain,
+            chain: self.chain,
             target_mm: self.pose.to_base(&query.target_room_mm),
             tolerance_mm: query.tolerance_mm,
             seed: query.seed,
@@ -62,10 +82,5 @@ impl Base for FixedBase {
             pose: self.pose,
             solution: solver.solve(&problem),
         }
-    }
-
-    /// The hip point must be inside the room.
-    fn fits(&self, room: &Room) -> bool {
-        room.contains(&self.pose.position_mm)
     }
 }

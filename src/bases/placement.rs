@@ -16,7 +16,9 @@ use rand_chacha::ChaCha8Rng;
 
 use crate::floor::{admissible, Footprint, Zone};
 use crate::kinematics::Chain;
-use crate::plugin::{BasePose, IkProblem, IkSolution, Placement, ReachQuery, Solver};
+use crate::plugin::{
+    BasePose, IkProblem, IkSolution, Placement, PreparedBase, ReachQuery, Search, Solver,
+};
 use crate::scene::Room;
 use crate::solvers::random_posture;
 
@@ -57,37 +59,73 @@ impl Mobile {
         self.regions(room).iter().any(|(_, r)| !r.0.is_empty())
     }
 
-    /// Candidate poses for reaching `target`, in heading order.
-    pub fn candidates(&self, room: &Room, chain: &Chain, target: &Point3<f64>) -> Vec<BasePose> {
-        let hint = workspace_centre(chain);
-        self.regions(room)
+    /// Ready for reaches in `room`: the regions and the workspace centre
+    /// are computed once.
+    pub fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> PreparedMobile<'a> {
+        let regions = self
+            .regions(room)
             .into_iter()
+            .filter(|(_, r)| !r.0.is_empty())
+            .collect();
+        PreparedMobile {
+            mobile: self,
+            room,
+            chain,
+            regions,
+            hint: workspace_centre(chain),
+        }
+    }
+}
+
+/// A mobile base ready for one room and chain.
+pub struct PreparedMobile<'a> {
+    mobile: &'a Mobile,
+    room: &'a Room,
+    chain: &'a Chain,
+    regions: Vec<(f64, MultiPolygon<f64>)>,
+    hint: Vector2<f64>,
+}
+
+impl PreparedMobile<'_> {
+    /// Candidate poses for reaching `target`, the most promising first (the
+    /// hip nearest to where it would rather be), each with that distance.
+    pub fn candidates(&self, target: &Point3<f64>) -> Vec<BasePose> {
+        let mut scored: Vec<(f64, BasePose)> = self
+            .regions
+            .iter()
             .filter_map(|(heading, region)| {
                 let (s, c) = heading.sin_cos();
-                let offset = Vector2::new(c * hint.x - s * hint.y, s * hint.x + c * hint.y);
+                let offset = Vector2::new(
+                    c * self.hint.x - s * self.hint.y,
+                    s * self.hint.x + c * self.hint.y,
+                );
                 let preferred = Point::new(target.x - offset.x, target.y - offset.y);
-                let p = nearest(&region, preferred)?;
-                Some(BasePose {
-                    position_mm: Point3::new(p.x(), p.y(), self.hip_height_mm),
-                    heading_rad: heading,
-                })
+                let p = nearest(region, preferred)?;
+                let pose = BasePose {
+                    position_mm: Point3::new(p.x(), p.y(), self.mobile.hip_height_mm),
+                    heading_rad: *heading,
+                };
+                Some(((p.x() - preferred.x()).hypot(p.y() - preferred.y()), pose))
             })
-            .collect()
+            .collect();
+        scored.sort_by(|a, b| a.0.total_cmp(&b.0));
+        scored.into_iter().map(|(_, pose)| pose).collect()
     }
+}
 
-    /// Place the base and solve the posture from each candidate.
-    pub fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement {
+impl PreparedBase for PreparedMobile<'_> {
+    fn reach(&self, query: &ReachQuery, solver: &dyn Solver) -> Placement {
         let mut best: Option<(Placement, f64)> = None;
-        for pose in self.candidates(query.room, query.chain, &query.target_room_mm) {
+        let reaches = |s: &IkSolution| s.distance_mm <= query.tolerance_mm;
+        for pose in self.candidates(&query.target_room_mm) {
             let problem = IkProblem {
-                chain: query.chain,
+                chain: self.chain,
                 target_mm: pose.to_base(&query.target_room_mm),
                 tolerance_mm: query.tolerance_mm,
                 seed: query.seed,
             };
             let solution = solver.solve(&problem);
-            let comfort = query.chain.discomfort(&solution.q);
-            let reaches = |s: &IkSolution| s.distance_mm <= query.tolerance_mm;
+            let comfort = self.chain.discomfort(&solution.q);
             let better = match &best {
                 None => true,
                 Some((b, b_comfort)) => match (reaches(&solution), reaches(&b.solution)) {
@@ -100,11 +138,15 @@ impl Mobile {
             if better {
                 best = Some((Placement { pose, solution }, comfort));
             }
+            let done = best.as_ref().is_some_and(|(b, _)| reaches(&b.solution));
+            if done && query.search == Search::FirstReaching {
+                break;
+            }
         }
-        best.map(|(p, _)| p).unwrap_or_else(|| nowhere(query))
+        best.map(|(p, _)| p)
+            .unwrap_or_else(|| nowhere(self.room, self.chain))
     }
 }
-
 /// The admissible point nearest to `p` (itself if admissible).
 fn nearest(region: &MultiPolygon<f64>, p: Point<f64>) -> Option<Point<f64>> {
     if region.0.is_empty() {
@@ -137,14 +179,14 @@ fn workspace_centre(chain: &Chain) -> Vector2<f64> {
 
 /// What is reported when the base fits nowhere (the checker refuses such
 /// scenarios, so this is a last resort): no distance, the neutral posture.
-fn nowhere(query: &ReachQuery<'_>) -> Placement {
+fn nowhere(room: &Room, chain: &Chain) -> Placement {
     Placement {
         pose: BasePose {
-            position_mm: Point3::new(query.room.size_mm.x / 2.0, query.room.size_mm.y / 2.0, 0.0),
+            position_mm: Point3::new(room.size_mm.x / 2.0, room.size_mm.y / 2.0, 0.0),
             heading_rad: 0.0,
         },
         solution: IkSolution {
-            q: query.chain.neutral(),
+            q: chain.neutral(),
             distance_mm: f64::INFINITY,
             iterations: 0,
         },

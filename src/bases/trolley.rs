@@ -5,7 +5,8 @@
 use super::placement::Mobile;
 use super::zone;
 use crate::floor::Footprint;
-use crate::plugin::{Base, BasePlugin, Options, ParamSpec, Placement, Plugin, ReachQuery, Solver};
+use crate::kinematics::Chain;
+use crate::plugin::{Base, BasePlugin, Options, ParamSpec, Plugin, PreparedBase};
 use crate::scene::Room;
 
 /// The plugin `trolley`.
@@ -63,11 +64,11 @@ impl BasePlugin for Trolley {
 }
 
 impl Base for Mobile {
-    fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement {
-        Mobile::reach(self, query, solver)
-    }
-
     fn fits(&self, room: &Room) -> bool {
         Mobile::fits(self, room)
+    }
+
+    fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a> {
+        Box::new(Mobile::prepare(self, room, chain))
     }
 }

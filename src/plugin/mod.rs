@@ -109,15 +109,6 @@ impl BasePose {
     }
 }
 
-/// A reach question for a base: this chain, this target in this room.
-pub struct ReachQuery<'a> {
-    pub room: &'a Room,
-    pub chain: &'a Chain,
-    pub target_room_mm: Point3<f64>,
-    pub tolerance_mm: f64,
-    pub seed: u64,
-}
-
 /// Where the base stood and the posture the solver found from there.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Placement {
@@ -125,13 +116,39 @@ pub struct Placement {
     pub solution: IkSolution,
 }
 
+/// How hard a base looks for a placement.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Search {
+    /// Every candidate placement: the most comfortable that reaches.
+    MostComfortable,
+    /// Candidates in order of promise until one reaches (for maps).
+    FirstReaching,
+}
+
+/// One reach question for a prepared base.
+#[derive(Clone, Copy, Debug)]
+pub struct ReachQuery {
+    pub target_room_mm: Point3<f64>,
+    pub tolerance_mm: f64,
+    pub seed: u64,
+    pub search: Search,
+}
+
 /// A base configured from its option block: it decides where the person
-/// stands (or sits) and asks the solver for the posture.
+/// stands (or sits).
 pub trait Base: Send + Sync {
-    fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement;
     /// Whether the base can be anywhere in the room at all; the checker
     /// refuses a task whose base fits nowhere.
     fn fits(&self, room: &Room) -> bool;
+    /// Get ready for reaches in `room` with `chain` (caching what does not
+    /// depend on the target, such as where the base fits).
+    fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a>;
+}
+
+/// A base ready for one room and one chain.
+pub trait PreparedBase: Send + Sync {
+    /// Place the base for the target and ask the solver for the posture.
+    fn reach(&self, query: &ReachQuery, solver: &dyn Solver) -> Placement;
 }
 
 pub trait BasePlugin: Plugin {

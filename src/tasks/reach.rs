@@ -1,7 +1,7 @@
 //! The `reach` task: can this person bring their hand to this target?
 
 use crate::plugin::{
-    ParamSpec, Plugin, PluginKind, ReachQuery, SubjectKind, TaskContext, TaskPlugin,
+    ParamSpec, Plugin, PluginKind, ReachQuery, Search, SubjectKind, TaskContext, TaskPlugin,
 };
 use crate::report::{ReachReport, TaskReport};
 
@@ -67,13 +67,14 @@ impl TaskPlugin for Reach {
             &[&task.subject, &person.name],
         );
         let query = ReachQuery {
-            room,
-            chain: &person.chain,
             target_room_mm: target.position_mm,
             tolerance_mm,
             seed,
+            search: Search::MostComfortable,
         };
-        let placement = base.reach(&query, solver.as_ref());
+        let placement = base
+            .prepare(room, &person.chain)
+            .reach(&query, solver.as_ref());
         TaskReport::Reach(ReachReport::new(
             task,
             person,
