@@ -5,7 +5,7 @@
 
 mod surface;
 
-pub use surface::{Surface, FACES};
+pub use surface::{Grid, GridCell, Surface, FACES};
 
 use nalgebra::{Point3, Vector3};
 

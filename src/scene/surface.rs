@@ -30,19 +30,28 @@ impl Surface {
         self.u_mm.z.abs() < 1e-9 && self.v_mm.z.abs() < 1e-9
     }
 
-    /// The points at the centres of a grid of cells about `step_mm` wide:
-    /// (column, row, point), rows outermost.
-    pub fn grid(&self, step_mm: f64) -> (usize, usize, Vec<(usize, usize, Point3<f64>)>) {
-        let (cols, rows) = self.grid_size(step_mm);
-        let mut points = Vec::with_capacity(cols * rows);
-        for r in 0..rows {
-            for c in 0..cols {
-                let a = (c as f64 + 0.5) / cols as f64;
-                let b = (r as f64 + 0.5) / rows as f64;
-                points.push((c, r, self.corner_mm + self.u_mm * a + self.v_mm * b));
+    /// A grid of cells about `step_mm` wide, each sampled at its centre,
+    /// row by row.
+    pub fn grid(&self, step_mm: f64) -> Grid {
+        let (columns, rows) = self.grid_size(step_mm);
+        let mut cells = Vec::with_capacity(columns * rows);
+        for row in 0..rows {
+            for column in 0..columns {
+                let a = (column as f64 + 0.5) / columns as f64;
+                let b = (row as f64 + 0.5) / rows as f64;
+                let point_mm = self.corner_mm + self.u_mm * a + self.v_mm * b;
+                cells.push(GridCell {
+                    column,
+                    row,
+                    point_mm,
+                });
             }
         }
-        (cols, rows, points)
+        Grid {
+            columns,
+            rows,
+            cells,
+        }
     }
 
     /// Columns and rows of the grid for `step_mm`, at least one each.
@@ -50,6 +59,21 @@ impl Surface {
         let n = |len: f64| ((len / step_mm).round() as usize).max(1);
         (n(self.u_mm.norm()), n(self.v_mm.norm()))
     }
+}
+
+/// The sampled cells of a surface.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Grid {
+    pub columns: usize,
+    pub rows: usize,
+    pub cells: Vec<GridCell>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GridCell {
+    pub column: usize,
+    pub row: usize,
+    pub point_mm: Point3<f64>,
 }
 
 impl Room {
