@@ -28,7 +28,7 @@ enum Command {
         /// Output format (see `reach plugins`).
         #[arg(long, default_value = "text")]
         format: String,
-        /// Also write the report to DIR/report.json.
+        /// Also write DIR/report.json, and a CSV and an SVG heat map per map.
         #[arg(long, value_name = "DIR")]
         out: Option<PathBuf>,
     },
@@ -69,11 +69,7 @@ fn run(registry: &Registry, file: &Path, format: &str, out: Option<&Path>) -> i3
     };
     let report = reach::run(&scenario, registry);
     if let Some(dir) = out {
-        let json = registry
-            .format("json")
-            .expect("json is built in")
-            .render(&report);
-        if let Err(e) = write_atomically(&dir.join("report.json"), json.as_bytes()) {
+        if let Err(e) = write_outputs(registry, &report, dir) {
             return report_diagnostics(&Diagnostics::single(e));
         }
     }
@@ -97,6 +93,34 @@ fn report_diagnostics(d: &Diagnostics) -> i32 {
     let plain = !std::io::stderr().is_terminal() || std::env::var_os("NO_COLOR").is_some();
     eprint!("{}", d.render(plain));
     1
+}
+
+/// `DIR/report.json`, and a CSV and an SVG for each map.
+fn write_outputs(
+    registry: &Registry,
+    report: &reach::report::Report,
+    dir: &Path,
+) -> Result<(), Error> {
+    use reach::output::map_files;
+    let json = registry
+        .format("json")
+        .expect("json is built in")
+        .render(report);
+    write_atomically(&dir.join("report.json"), json.as_bytes())?;
+    for task in &report.tasks {
+        if let reach::report::TaskReport::Map(m) = task {
+            let stem = map_files::file_stem(m);
+            write_atomically(
+                &dir.join(format!("{stem}.csv")),
+                map_files::csv(m).as_bytes(),
+            )?;
+            write_atomically(
+                &dir.join(format!("{stem}.svg")),
+                map_files::svg(m).as_bytes(),
+            )?;
+        }
+    }
+    Ok(())
 }
 
 /// Write `bytes` to a temporary file beside `path`, then rename it over

@@ -8,9 +8,9 @@ use nalgebra::Point3;
 use serde::ser::{SerializeMap, Serializer};
 use serde::Serialize;
 
-use crate::kinematics::JointKind;
+use crate::kinematics::{Chain, JointKind};
 use crate::plugin::Placement;
-use crate::scene::{Person, TaskSpec};
+use crate::scene::{Grid, GridCell, Person, Surface, TaskSpec};
 
 /// Version of the JSON schema; raised when a field changes meaning.
 pub const SCHEMA_VERSION: u32 = 1;
@@ -27,30 +27,36 @@ pub struct Report {
 #[serde(tag = "kind", rename_all = "lowercase")]
 pub enum TaskReport {
     Reach(ReachReport),
+    Map(MapReport),
 }
 
 impl TaskReport {
     pub fn kind(&self) -> &'static str {
         match self {
             TaskReport::Reach(_) => "reach",
+            TaskReport::Map(_) => "map",
         }
     }
 
     pub fn name(&self) -> &str {
         match self {
             TaskReport::Reach(r) => &r.name,
+            TaskReport::Map(m) => &m.name,
         }
     }
 
     pub fn person(&self) -> &str {
         match self {
             TaskReport::Reach(r) => &r.person,
+            TaskReport::Map(m) => &m.person,
         }
     }
 
+    /// Reachable (a map: at least one point is).
     pub fn ok(&self) -> bool {
         match self {
             TaskReport::Reach(r) => r.ok,
+            TaskReport::Map(m) => m.ok,
         }
     }
 }
@@ -148,6 +154,133 @@ impl ReachReport {
             posture: Posture(posture),
             effector_mm: point(effector_room),
             target_mm: point(target),
+        }
+    }
+}
+
+/// One map: which points of a surface the person reaches.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct MapReport {
+    /// The surface (`counter.top`).
+    pub name: String,
+    pub person: String,
+    /// At least one point is reachable.
+    pub ok: bool,
+    pub points: usize,
+    pub reachable: usize,
+    /// `reachable / points`, four decimals.
+    pub fraction: f64,
+    /// Lowest and highest reachable point, if any.
+    pub reachable_heights_mm: Option<[f64; 2]>,
+    pub step_mm: f64,
+    pub tolerance_mm: f64,
+    pub solver: String,
+    /// The base plugin.
+    pub base: String,
+    /// `plan` for a horizontal surface, `elevation` for a vertical one.
+    pub view: &'static str,
+    /// The surface's corner and its two edges: columns run along the first,
+    /// rows along the second.
+    pub corner_mm: [f64; 3],
+    pub u_mm: [f64; 3],
+    pub v_mm: [f64; 3],
+    pub columns: usize,
+    pub rows: usize,
+    /// One string per row, the last row first: `#` reachable, `.` not.
+    pub grid: Vec<String>,
+    /// Every point, row by row.
+    pub cells: Vec<MapCell>,
+}
+
+/// One point of a map.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct MapCell {
+    pub column: usize,
+    pub row: usize,
+    pub point_mm: [f64; 3],
+    pub reachable: bool,
+    /// Distance left in the best posture found (null if the base fits
+    /// nowhere).
+    pub distance_mm: f64,
+    pub comfort: f64,
+    /// Where the base stood: x, y and heading in degrees.
+    pub base_mm_deg: [f64; 3],
+}
+
+impl MapCell {
+    pub fn new(cell: &GridCell, placement: &Placement, chain: &Chain, tolerance_mm: f64) -> Self {
+        let pose = &placement.pose;
+        MapCell {
+            column: cell.column,
+            row: cell.row,
+            point_mm: point(cell.point_mm),
+            reachable: placement.solution.distance_mm <= tolerance_mm,
+            distance_mm: mm(placement.solution.distance_mm),
+            comfort: fixed(chain.discomfort(&placement.solution.q), 4),
+            base_mm_deg: [
+                mm(pose.position_mm.x),
+                mm(pose.position_mm.y),
+                deg(pose.heading_rad),
+            ],
+        }
+    }
+}
+
+impl MapReport {
+    pub fn new(
+        surface: &Surface,
+        person: &Person,
+        solver: &str,
+        step_mm: f64,
+        tolerance_mm: f64,
+        grid: &Grid,
+        cells: Vec<MapCell>,
+    ) -> Self {
+        let reachable = cells.iter().filter(|c| c.reachable).count();
+        let heights: Vec<f64> = cells
+            .iter()
+            .filter(|c| c.reachable)
+            .map(|c| c.point_mm[2])
+            .collect();
+        let band = (!heights.is_empty()).then(|| {
+            let lo = heights.iter().copied().fold(f64::INFINITY, f64::min);
+            let hi = heights.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            [lo, hi]
+        });
+        let rows: Vec<String> = (0..grid.rows)
+            .rev()
+            .map(|r| {
+                cells[r * grid.columns..(r + 1) * grid.columns]
+                    .iter()
+                    .map(|c| if c.reachable { '#' } else { '.' })
+                    .collect()
+            })
+            .collect();
+        let v3 = |v: nalgebra::Vector3<f64>| [mm(v.x), mm(v.y), mm(v.z)];
+        MapReport {
+            name: surface.name.clone(),
+            person: person.name.clone(),
+            ok: reachable > 0,
+            points: cells.len(),
+            reachable,
+            fraction: fixed(reachable as f64 / cells.len().max(1) as f64, 4),
+            reachable_heights_mm: band,
+            step_mm: mm(step_mm),
+            tolerance_mm: mm(tolerance_mm),
+            solver: solver.to_string(),
+            base: person.base.name.clone(),
+            view: if surface.is_horizontal() {
+                "plan"
+            } else {
+                "elevation"
+            },
+            corner_mm: point(surface.corner_mm),
+            u_mm: v3(surface.u_mm),
+            v_mm: v3(surface.v_mm),
+            columns: grid.columns,
+            rows: grid.rows,
+            grid: rows,
+            cells,
         }
     }
 }

@@ -128,6 +128,22 @@ fn errors_point_at_the_offending_text() {
             format!("{person}reach mug, cup by ann, bob"),
             vec![("unknown target `cup`", "cup"), ("unknown person `bob`", "bob")],
         ),
+        (
+            format!("{person}map kitchen_wall.top by ann"),
+            vec![("unknown surface or box `kitchen_wall`", "kitchen_wall.top")],
+        ),
+        (
+            format!("{SCENE}room k2 {{ size 4000 x 4000 x 2500\n box counter at (0,0,0) size (600, 3000, 900) }}\nperson ann {{ mannequin arm base fixed {{ at (900, 1200, 930) }} }}\nmap counter.tpo by ann"),
+            vec![("unknown face `tpo`", "counter.tpo")],
+        ),
+        (
+            format!("{SCENE}room k2 {{ size 4000 x 4000 x 2500\n box counter at (0,0,0) size (600, 3000, 900) }}\nperson ann {{ mannequin arm base fixed {{ at (900, 1200, 930) }} }}\nmap counter.top by ann {{ step 1mm }}"),
+            vec![("the map of `counter.top` (1800000 points) exceeds the limit of 100000 points: raise `max_points` or the `step`", "counter.top")],
+        ),
+        (
+            "room k { size 10 x 10 x 10\n surface s at (0, 0, 0) size (5, 5, 5) }".into(),
+            vec![("a surface's size must be two positive sizes and one zero, found (5, 5, 5) mm", "(5, 5, 5)")],
+        ),
     ];
     for (text, expected) in cases {
         let errors = match check(&text) {

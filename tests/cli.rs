@@ -60,9 +60,18 @@ fn json_report_has_the_documented_fields() {
 
 #[test]
 fn json_is_byte_identical_across_runs_and_thread_counts() {
+    for example in [
+        "examples/kitchen.reach",
+        "examples/kitchen_wheelchair.reach",
+    ] {
+        identical_across_threads(example);
+    }
+}
+
+fn identical_across_threads(example: &str) {
     let run = |threads: &str| {
         let o = Command::new(env!("CARGO_BIN_EXE_reach"))
-            .args(["run", "examples/kitchen.reach", "--format", "json"])
+            .args(["run", example, "--format", "json"])
             .current_dir(env!("CARGO_MANIFEST_DIR"))
             .env("RAYON_NUM_THREADS", threads)
             .output()
@@ -95,6 +104,30 @@ fn out_dir_gets_report_json_and_nothing_half_written() {
         .map(|e| e.unwrap().file_name())
         .collect();
     assert_eq!(names, ["report.json"], "no temporary file is left behind");
+}
+
+#[test]
+fn out_dir_gets_a_csv_and_an_svg_per_map() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = reach(&[
+        "run",
+        "examples/kitchen_wheelchair.reach",
+        "--out",
+        dir.path().to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let csv = std::fs::read_to_string(dir.path().join("map-wall_cabinets-front-ann.csv")).unwrap();
+    assert!(csv.starts_with("column,row,x_mm,y_mm,z_mm,reachable"));
+    assert_eq!(csv.lines().count(), 1 + 140);
+    let svg = std::fs::read_to_string(dir.path().join("map-wall_cabinets-front-ann.svg")).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("wall_cabinets.front reached by ann"));
+    assert!(svg.contains("reachable") && svg.contains("height z (mm)"));
+    let files = std::fs::read_dir(dir.path()).unwrap().count();
+    assert_eq!(
+        files,
+        1 + 2 * 6,
+        "report.json and two files for each of six maps"
+    );
 }
 
 #[test]

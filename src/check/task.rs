@@ -57,6 +57,15 @@ impl Checker<'_> {
         let subjects: Vec<String> = subjects.into_iter().collect::<Option<_>>()?;
         let people: Vec<String> = people.into_iter().collect::<Option<_>>()?;
         self.check_bases_fit(decl, &subjects, &people, rooms, persons);
+        for (subject, at) in subjects.iter().zip(&decl.subjects) {
+            let path: Vec<String> = subject.split('.').map(str::to_string).collect();
+            let room = rooms.iter().find(|r| {
+                r.targets.iter().any(|t| &t.name == subject) || r.surface(&path).is_some()
+            });
+            if let Some(kind) = room.and_then(|r| plugin.validate(r, subject, &options)) {
+                self.error(Error::new(kind, at.span));
+            }
+        }
         let mut tasks = Vec::new();
         for subject in &subjects {
             for person in &people {

@@ -21,9 +21,8 @@ impl Plugin for Json {
 
 impl FormatPlugin for Json {
     fn render(&self, report: &Report) -> String {
-        let mut s = serde_json::to_string_pretty(report).expect("reports hold only finite numbers");
-        s.push('\n');
-        s
+        let value = serde_json::to_value(report).expect("reports serialize");
+        super::json_layout::to_string(&value)
     }
 
     fn extension(&self) -> &'static str {

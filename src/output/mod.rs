@@ -1,6 +1,8 @@
-//! Output formats, each a plugin.
+//! Output formats, each a plugin, and the files written for each map.
 
 mod json;
+pub mod json_layout;
+pub mod map_files;
 mod text;
 
 pub use json::Json;

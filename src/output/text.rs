@@ -4,7 +4,7 @@
 use std::fmt::Write;
 
 use crate::plugin::{FormatPlugin, ParamSpec, Plugin};
-use crate::report::{ReachReport, Report, TaskReport};
+use crate::report::{MapReport, ReachReport, Report, TaskReport};
 
 pub struct Text;
 
@@ -37,6 +37,7 @@ impl FormatPlugin for Text {
         for task in &report.tasks {
             match task {
                 TaskReport::Reach(r) => detail(&mut out, r),
+                TaskReport::Map(m) => map_detail(&mut out, m),
             }
         }
         out
@@ -67,6 +68,15 @@ fn table(report: &Report) -> String {
                 format!("{:.1} mm", r.distance_mm),
                 r.iterations.to_string(),
                 format!("{:.2}", r.comfort),
+            ],
+            TaskReport::Map(m) => [
+                "map".to_string(),
+                m.name.clone(),
+                m.person.clone(),
+                format!("{:.1} % of {}", m.fraction * 100.0, m.points),
+                "-".into(),
+                "-".into(),
+                "-".into(),
             ],
         })
         .collect();
@@ -115,4 +125,26 @@ fn detail(out: &mut String, r: &ReachReport) {
         .map(|(j, v)| format!("{j} {v:.1}"))
         .collect();
     let _ = writeln!(out, "  posture (deg): {}", posture.join(", "));
+}
+
+fn map_detail(out: &mut String, m: &MapReport) {
+    let heights = match m.reachable_heights_mm {
+        Some([lo, hi]) => format!("reachable heights {lo:.0} to {hi:.0} mm"),
+        None => "nothing reachable".to_string(),
+    };
+    let _ = writeln!(
+        out,
+        "\n{} by {} ({} base): {} of {} points reachable ({:.1} %), {}; {} view, {} x {} cells of {:.0} mm",
+        m.name,
+        m.person,
+        m.base,
+        m.reachable,
+        m.points,
+        m.fraction * 100.0,
+        heights,
+        m.view,
+        m.columns,
+        m.rows,
+        m.step_mm
+    );
 }

@@ -165,9 +165,19 @@ pub struct TaskContext<'a> {
 }
 
 pub trait TaskPlugin: Plugin {
-    /// Whether the task's subjects are targets (reach, gaze) rather than
-    /// surfaces; the checker resolves them accordingly.
+    /// Whether the task's subjects are targets (reach, gaze) or surfaces
+    /// (map); the checker resolves them accordingly.
     fn subject(&self) -> SubjectKind;
+    /// A check of the task on its resolved subject beyond its options (a
+    /// map too large, say); the checker reports it at the subject.
+    fn validate(
+        &self,
+        _room: &Room,
+        _subject: &str,
+        _options: &Options,
+    ) -> Option<crate::error::ErrorKind> {
+        None
+    }
     fn run(&self, ctx: &TaskContext<'_>) -> TaskReport;
 }
 

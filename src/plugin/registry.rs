@@ -36,6 +36,7 @@ impl Registry {
         r.register_base(crate::bases::Trolley);
         r.register_base(crate::bases::Wheelchair);
         r.register_task(crate::tasks::Reach);
+        r.register_task(crate::tasks::Map);
         r.register_format(crate::output::Text);
         r.register_format(crate::output::Json);
         r

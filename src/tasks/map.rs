@@ -1,0 +1,132 @@
+//! The `map` task: which points of a surface can this person reach? The
+//! surface (a counter top, a cabinet front) is sampled at the centres of a
+//! grid of cells `step` wide; each point is a reach from wherever the base
+//! fits, solved in parallel. A map stops at the first placement that
+//! reaches a point (in order of promise), where a reach task compares all.
+
+use rayon::prelude::*;
+
+use super::reach::mix_seed;
+use crate::error::ErrorKind;
+use crate::plugin::{
+    Options, ParamSpec, Plugin, PluginKind, ReachQuery, Search, SubjectKind, TaskContext,
+    TaskPlugin,
+};
+use crate::report::{MapCell, MapReport, TaskReport};
+use crate::scene::Room;
+
+/// The plugin `map`.
+pub struct Map;
+
+impl Plugin for Map {
+    fn name(&self) -> &'static str {
+        "map"
+    }
+
+    fn doc(&self) -> &'static str {
+        "which points of a surface the person can reach, on a grid"
+    }
+
+    fn params(&self) -> Vec<ParamSpec> {
+        vec![
+            ParamSpec::plugin(
+                "solver",
+                PluginKind::Solver,
+                "incremental",
+                "the IK solver and its options",
+            ),
+            ParamSpec::length(
+                "tolerance",
+                10.0,
+                "a point counts as reached within this distance",
+            )
+            .range(0.001, 1000.0),
+            ParamSpec::length("step", 50.0, "the grid's spacing on the surface")
+                .range(1.0, 10_000.0),
+            ParamSpec::integer(
+                "max_points",
+                100_000,
+                "refuse maps with more points than this",
+            )
+            .range(1.0, 1e8),
+            ParamSpec::integer(
+                "seed",
+                1,
+                "seeds the solver's random starts (mixed with surface, person and cell)",
+            )
+            .range(0.0, 9_007_199_254_740_992.0),
+        ]
+    }
+}
+
+impl TaskPlugin for Map {
+    fn subject(&self) -> SubjectKind {
+        SubjectKind::Surface
+    }
+
+    fn validate(&self, room: &Room, subject: &str, options: &Options) -> Option<ErrorKind> {
+        let path: Vec<String> = subject.split('.').map(str::to_string).collect();
+        let surface = room.surface(&path)?;
+        let (columns, rows) = surface.grid_size(options.length_mm("step"));
+        let points = columns.saturating_mul(rows);
+        let max = options.integer("max_points") as usize;
+        (points > max).then(|| ErrorKind::TooLarge {
+            what: format!("the map of `{subject}` ({points} points)"),
+            limit: format!("{max} points: raise `max_points` or the `step`"),
+        })
+    }
+
+    fn run(&self, ctx: &TaskContext<'_>) -> TaskReport {
+        let task = ctx.task;
+        let person = ctx.scenario.person(&task.person).expect("checked person");
+        let (room, surface) = ctx
+            .scenario
+            .surface(&task.subject)
+            .expect("checked surface");
+        let solver_cfg = task.options.plugin("solver");
+        let solver = ctx
+            .registry
+            .solver(&solver_cfg.name)
+            .expect("checked solver")
+            .build(&solver_cfg.options);
+        let base = ctx
+            .registry
+            .base(&person.base.name)
+            .expect("checked base")
+            .build(&person.base.options);
+        let prepared = base.prepare(room, &person.chain);
+        let tolerance_mm = task.options.length_mm("tolerance");
+        let step_mm = task.options.length_mm("step");
+        let seed = task.options.integer("seed") as u64;
+        let grid = surface.grid(step_mm);
+        let cells: Vec<MapCell> = grid
+            .cells
+            .par_iter()
+            .map(|cell| {
+                let names = [
+                    task.subject.as_str(),
+                    person.name.as_str(),
+                    &cell.column.to_string(),
+                    &cell.row.to_string(),
+                ];
+                let query = ReachQuery {
+                    target_room_mm: cell.point_mm,
+                    tolerance_mm,
+                    seed: mix_seed(seed, &names),
+                    search: Search::FirstReaching,
+                };
+                let placement = prepared.reach(&query, solver.as_ref());
+                MapCell::new(cell, &placement, &person.chain, tolerance_mm)
+            })
+            .collect();
+        TaskReport::Map(MapReport::new(
+            &surface,
+            person,
+            &solver_cfg.name,
+            step_mm,
+            tolerance_mm,
+            &grid,
+            cells,
+        ))
+    }
+}
