@@ -67,7 +67,9 @@ fn run(registry: &Registry, file: &Path, format: &str, out: Option<&Path>) -> i3
         Ok(s) => s,
         Err(d) => return report_diagnostics(&d),
     };
-    let report = reach::run(&scenario, registry);
+    let bar = crate::bar::Bar::new();
+    let report = reach::run_with_progress(&scenario, registry, &bar);
+    bar.clear();
     if let Some(dir) = out {
         if let Err(e) = write_outputs(registry, &report, dir) {
             return report_diagnostics(&Diagnostics::single(e));

@@ -26,6 +26,7 @@ mod loader;
 mod names;
 pub mod output;
 pub mod plugin;
+pub mod progress;
 pub mod report;
 pub mod scene;
 pub mod solvers;
@@ -58,6 +59,15 @@ pub fn check(input: Input<'_>, registry: &Registry) -> (Sources, Result<Scenario
 /// Run every task of a checked scenario, in parallel; the report lists them
 /// in the order of the file whatever the number of threads.
 pub fn run(scenario: &Scenario, registry: &Registry) -> Report {
+    run_with_progress(scenario, registry, &progress::NoProgress)
+}
+
+/// [`run`], telling `progress` how long tasks (maps) advance.
+pub fn run_with_progress(
+    scenario: &Scenario,
+    registry: &Registry,
+    progress: &dyn progress::Progress,
+) -> Report {
     let tasks = scenario
         .tasks
         .par_iter()
@@ -69,6 +79,7 @@ pub fn run(scenario: &Scenario, registry: &Registry) -> Report {
                 scenario,
                 task,
                 registry,
+                progress,
             })
         })
         .collect();

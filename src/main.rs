@@ -1,5 +1,6 @@
 //! The `reach` command line: run, check, list plugins.
 
+mod bar;
 mod cli;
 
 fn main() {

@@ -162,6 +162,8 @@ pub struct TaskContext<'a> {
     pub scenario: &'a Scenario,
     pub task: &'a TaskSpec,
     pub registry: &'a Registry,
+    /// Where a long task reports its progress.
+    pub progress: &'a dyn crate::progress::Progress,
 }
 
 pub trait TaskPlugin: Plugin {

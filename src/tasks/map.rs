@@ -99,6 +99,7 @@ impl TaskPlugin for Map {
         let step_mm = task.options.length_mm("step");
         let seed = task.options.integer("seed") as u64;
         let grid = surface.grid(step_mm);
+        ctx.progress.add_work(grid.cells.len() as u64);
         let cells: Vec<MapCell> = grid
             .cells
             .par_iter()
@@ -116,6 +117,7 @@ impl TaskPlugin for Map {
                     search: Search::FirstReaching,
                 };
                 let placement = prepared.reach(&query, solver.as_ref());
+                ctx.progress.advance(1);
                 MapCell::new(cell, &placement, &person.chain, tolerance_mm)
             })
             .collect();
