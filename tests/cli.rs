@@ -125,8 +125,8 @@ fn out_dir_gets_a_csv_and_an_svg_per_map() {
     let files = std::fs::read_dir(dir.path()).unwrap().count();
     assert_eq!(
         files,
-        1 + 2 * 6,
-        "report.json and two files for each of six maps"
+        1 + 2 * 14,
+        "report.json and two files for each of fourteen maps"
     );
 }
 
