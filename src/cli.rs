@@ -145,10 +145,21 @@ fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
 
 fn plugins_listing(registry: &Registry) -> String {
     let mut out = String::new();
+    let all = || {
+        PluginKind::ALL
+            .into_iter()
+            .flat_map(|k| registry.of_kind(k))
+    };
+    let plugin_width = all().map(|p| p.name().len()).max().unwrap_or(0);
+    let param_width = all()
+        .flat_map(|p| p.params())
+        .map(|p| p.name.len())
+        .max()
+        .unwrap_or(0);
     for kind in PluginKind::ALL {
         out.push_str(&format!("{}s:\n", kind.noun()));
         for p in registry.of_kind(kind) {
-            out.push_str(&format!("  {:<12} {}\n", p.name(), p.doc()));
+            out.push_str(&format!("  {:<plugin_width$}  {}\n", p.name(), p.doc()));
             for param in p.params() {
                 let default = match &param.default {
                     Some(v) => format!("default {}", v.display()),
@@ -156,7 +167,7 @@ fn plugins_listing(registry: &Registry) -> String {
                     None => "required".to_string(),
                 };
                 out.push_str(&format!(
-                    "      {:<12} {:<8} {:<22} {}\n",
+                    "      {:<param_width$}  {:<8} {:<22} {}\n",
                     param.name,
                     param.kind.short(),
                     default,
