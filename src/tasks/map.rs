@@ -6,11 +6,10 @@
 
 use rayon::prelude::*;
 
-use super::reach::mix_seed;
+use super::common::{common_params, mix_seed, Setup};
 use crate::error::ErrorKind;
 use crate::plugin::{
-    Options, ParamSpec, Plugin, PluginKind, ReachQuery, Search, SubjectKind, TaskContext,
-    TaskPlugin,
+    Options, ParamSpec, Plugin, ReachQuery, Search, SubjectKind, TaskContext, TaskPlugin,
 };
 use crate::report::{MapCell, MapReport, TaskReport};
 use crate::scene::Room;
@@ -28,19 +27,11 @@ impl Plugin for Map {
     }
 
     fn params(&self) -> Vec<ParamSpec> {
-        vec![
-            ParamSpec::plugin(
-                "solver",
-                PluginKind::Solver,
-                "incremental",
-                "the IK solver and its options",
-            ),
-            ParamSpec::length(
-                "tolerance",
-                10.0,
-                "a point counts as reached within this distance",
-            )
-            .range(0.001, 1000.0),
+        let mut params = common_params(
+            "point",
+            "seeds the solver's random starts (mixed with surface, person and cell)",
+        );
+        params.extend([
             ParamSpec::length("step", 50.0, "the grid's spacing on the surface")
                 .range(1.0, 10_000.0),
             ParamSpec::integer(
@@ -49,13 +40,8 @@ impl Plugin for Map {
                 "refuse maps with more points than this",
             )
             .range(1.0, 1e8),
-            ParamSpec::integer(
-                "seed",
-                1,
-                "seeds the solver's random starts (mixed with surface, person and cell)",
-            )
-            .range(0.0, 9_007_199_254_740_992.0),
-        ]
+        ]);
+        params
     }
 }
 
@@ -78,57 +64,41 @@ impl TaskPlugin for Map {
 
     fn run(&self, ctx: &TaskContext<'_>) -> TaskReport {
         let task = ctx.task;
-        let person = ctx.scenario.person(&task.person).expect("checked person");
+        let setup = Setup::new(ctx);
+        let person = setup.person;
         let (room, surface) = ctx
             .scenario
             .surface(&task.subject)
             .expect("checked surface");
-        let solver_cfg = task.options.plugin("solver");
-        let solver = ctx
-            .registry
-            .solver(&solver_cfg.name)
-            .expect("checked solver")
-            .build(&solver_cfg.options);
-        let base = ctx
-            .registry
-            .base(&person.base.name)
-            .expect("checked base")
-            .build(&person.base.options);
-        let prepared = base.prepare(room, &person.chain);
-        let tolerance_mm = task.options.length_mm("tolerance");
+        let prepared = setup.base.prepare(room, &person.chain);
         let step_mm = task.options.length_mm("step");
-        let seed = task.options.integer("seed") as u64;
         let grid = surface.grid(step_mm);
         ctx.progress.add_work(grid.cells.len() as u64);
         let cells: Vec<MapCell> = grid
             .cells
             .par_iter()
             .map(|cell| {
-                let names = [
-                    task.subject.as_str(),
-                    person.name.as_str(),
-                    &cell.column.to_string(),
-                    &cell.row.to_string(),
-                ];
+                let (column, row) = (cell.column.to_string(), cell.row.to_string());
                 let query = ReachQuery {
                     target_room_mm: cell.point_mm,
-                    tolerance_mm,
-                    seed: mix_seed(seed, &names),
+                    tolerance_mm: setup.tolerance_mm,
+                    seed: mix_seed(setup.seed, &[&task.subject, &person.name, &column, &row]),
                     search: Search::FirstReaching,
                 };
-                let placement = prepared.reach(&query, solver.as_ref());
+                let placement = prepared.reach(&query, setup.solver.as_ref());
                 ctx.progress.advance(1);
-                MapCell::new(cell, &placement, &person.chain, tolerance_mm)
+                MapCell::new(cell, &placement, &person.chain, setup.tolerance_mm)
             })
             .collect();
-        TaskReport::Map(MapReport::new(
+        let report = MapReport::new(
             &surface,
             person,
-            &solver_cfg.name,
+            setup.solver_name,
             step_mm,
-            tolerance_mm,
+            setup.tolerance_mm,
             &grid,
             cells,
-        ))
+        );
+        TaskReport::Map(report)
     }
 }

@@ -1,7 +1,9 @@
 //! Tasks: what a scenario asks of a person, each a plugin.
 
+mod common;
 mod map;
 mod reach;
 
+pub use common::mix_seed;
 pub use map::Map;
 pub use reach::Reach;

@@ -1,0 +1,76 @@
+//! What the reach-like tasks share: their common options (solver,
+//! tolerance, seed), the setup that builds the person's solver and base,
+//! and seeds that depend on names rather than on the order of tasks.
+
+use crate::plugin::{Base, ParamSpec, PluginKind, Solver, TaskContext};
+use crate::scene::Person;
+
+/// `solver`, `tolerance` and `seed`, with `what` in the docs ("target",
+/// "point").
+pub fn common_params(what: &'static str, seed_doc: &'static str) -> Vec<ParamSpec> {
+    let tolerance_doc = match what {
+        "point" => "a point counts as reached within this distance",
+        _ => "the target counts as reached within this distance",
+    };
+    vec![
+        ParamSpec::plugin(
+            "solver",
+            PluginKind::Solver,
+            "incremental",
+            "the IK solver and its options",
+        ),
+        ParamSpec::length("tolerance", 10.0, tolerance_doc).range(0.001, 1000.0),
+        ParamSpec::integer("seed", 1, seed_doc).range(0.0, 9_007_199_254_740_992.0),
+    ]
+}
+
+/// The person of a task with their solver and base built from the task's
+/// and the person's options (checked, so every name resolves).
+pub struct Setup<'a> {
+    pub person: &'a Person,
+    pub solver_name: &'a str,
+    pub solver: Box<dyn Solver>,
+    pub base: Box<dyn Base>,
+    pub tolerance_mm: f64,
+    pub seed: u64,
+}
+
+impl<'a> Setup<'a> {
+    pub fn new(ctx: &TaskContext<'a>) -> Self {
+        let task = ctx.task;
+        let person = ctx.scenario.person(&task.person).expect("checked person");
+        let solver_cfg = task.options.plugin("solver");
+        let solver = ctx
+            .registry
+            .solver(&solver_cfg.name)
+            .expect("checked solver")
+            .build(&solver_cfg.options);
+        let base = ctx
+            .registry
+            .base(&person.base.name)
+            .expect("checked base")
+            .build(&person.base.options);
+        Setup {
+            person,
+            solver_name: &solver_cfg.name,
+            solver,
+            base,
+            tolerance_mm: task.options.length_mm("tolerance"),
+            seed: task.options.integer("seed") as u64,
+        }
+    }
+}
+
+/// A seed that depends on the task's seed and on names, never on the order
+/// of tasks in the file: adding a task leaves the others' answers alone.
+pub fn mix_seed(seed: u64, names: &[&str]) -> u64 {
+    // FNV-1a: small, and stable across Rust versions (unlike std's hasher).
+    let mut h: u64 = 0xcbf2_9ce4_8422_2325 ^ seed;
+    for name in names {
+        for b in name.bytes().chain(std::iter::once(0xff)) {
+            h ^= u64::from(b);
+            h = h.wrapping_mul(0x0100_0000_01b3);
+        }
+    }
+    h
+}
