@@ -37,7 +37,32 @@ impl Checker<'_> {
         rooms
     }
 
+    /// Boxes and surfaces of one room share a namespace (a map names them).
+    fn check_room_names(&mut self, decl: &RoomDecl) {
+        let mut seen: Vec<&crate::span::Name> = Vec::new();
+        for item in &decl.items {
+            let name = match item {
+                RoomItem::Box(b) => &b.name,
+                RoomItem::Surface(s) => &s.name,
+                _ => continue,
+            };
+            if let Some(first) = seen.iter().find(|n| n.value == name.value) {
+                let e = Error::new(
+                    ErrorKind::Duplicate {
+                        what: "box or surface",
+                        name: name.value.clone(),
+                    },
+                    name.span,
+                );
+                self.error(e.with_note(first.span, "first defined here"));
+            } else {
+                seen.push(name);
+            }
+        }
+    }
+
     fn room(&mut self, decl: &RoomDecl) -> Option<Room> {
+        self.check_room_names(decl);
         let sizes: Vec<_> = decl
             .items
             .iter()
