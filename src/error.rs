@@ -288,11 +288,6 @@ impl Error {
         self.0.span
     }
 
-    /// The file name this error points into, once sources are attached.
-    pub fn file_name(&self) -> Option<&str> {
-        self.0.source.as_ref().map(|s| s.name())
-    }
-
     fn attach(&mut self, sources: &Sources) {
         let data = &mut *self.0;
         if let Some(span) = data.span {
@@ -416,35 +411,5 @@ impl Diagnostic for Diagnostics {
 impl From<Error> for Diagnostics {
     fn from(e: Error) -> Self {
         Diagnostics::single(e)
-    }
-}
-
-/// A collector the checking passes push errors into, so that one pass
-/// reports every problem it finds.
-#[derive(Default)]
-pub struct Sink {
-    pub errors: Vec<Error>,
-}
-
-impl Sink {
-    pub fn push(&mut self, e: Error) {
-        self.errors.push(e);
-    }
-
-    /// Keep the value or record the error.
-    pub fn take<T>(&mut self, r: Result<T, Error>) -> Option<T> {
-        match r {
-            Ok(v) => Some(v),
-            Err(e) => {
-                self.push(e);
-                None
-            }
-        }
-    }
-
-    pub fn into_diagnostics(self) -> Diagnostics {
-        Diagnostics {
-            errors: self.errors,
-        }
     }
 }

@@ -70,15 +70,4 @@ impl Sources {
             .enumerate()
             .map(|(i, f)| (FileId(i as u32), f))
     }
-
-    /// Paths of the files on disk that this evaluation read (for watch mode).
-    pub fn disk_paths(&self) -> Vec<PathBuf> {
-        self.files
-            .iter()
-            .filter_map(|f| match &f.origin {
-                Origin::Path(p) => Some(p.clone()),
-                _ => None,
-            })
-            .collect()
-    }
 }

@@ -76,8 +76,7 @@ impl JointState {
 }
 
 /// A posture of a chain, a target, and the cached points between them.
-pub struct IncrementalFk<'a> {
-    chain: &'a Chain,
+pub struct IncrementalFk {
     q: Vec<f64>,
     joints: Vec<JointState>,
     target: Point3<f64>,
@@ -88,8 +87,8 @@ pub struct IncrementalFk<'a> {
     target_valid: usize,
 }
 
-impl<'a> IncrementalFk<'a> {
-    pub fn new(chain: &'a Chain, q: Vec<f64>, target: Point3<f64>) -> Self {
+impl IncrementalFk {
+    pub fn new(chain: &Chain, q: Vec<f64>, target: Point3<f64>) -> Self {
         let n = chain.dof();
         assert_eq!(q.len(), n, "one value per joint");
         assert!(n > 0, "a chain has joints");
@@ -117,7 +116,6 @@ impl<'a> IncrementalFk<'a> {
             })
             .collect();
         IncrementalFk {
-            chain,
             q,
             joints,
             target,
@@ -132,10 +130,6 @@ impl<'a> IncrementalFk<'a> {
 
     pub fn into_q(self) -> Vec<f64> {
         self.q
-    }
-
-    pub fn chain(&self) -> &Chain {
-        self.chain
     }
 
     /// The effector in the base frame for the current posture.

@@ -41,7 +41,7 @@ trait Kinematics {
     fn into_q(self) -> Vec<f64>;
 }
 
-impl Kinematics for IncrementalFk<'_> {
+impl Kinematics for IncrementalFk {
     type Lever = Vector3<f64>;
     fn lever(&mut self, i: usize) -> Vector3<f64> {
         IncrementalFk::lever(self, i)
