@@ -32,6 +32,17 @@ enum Command {
         #[arg(long, value_name = "DIR")]
         out: Option<PathBuf>,
     },
+    /// Evaluate a scenario, then again whenever it or a file it uses changes.
+    Watch {
+        /// The .reach scenario file.
+        file: PathBuf,
+        /// Output format (see `reach plugins`).
+        #[arg(long, default_value = "text")]
+        format: String,
+        /// Also write DIR/report.json, and a CSV and an SVG heat map per map.
+        #[arg(long, value_name = "DIR")]
+        out: Option<PathBuf>,
+    },
     /// Parse and check a scenario without running it.
     Check {
         /// The .reach scenario file.
@@ -46,6 +57,12 @@ pub fn main() -> i32 {
     let registry = Registry::builtin();
     match cli.command {
         Command::Run { file, format, out } => run(&registry, &file, &format, out.as_deref()),
+        Command::Watch { file, format, out } => {
+            let Some(formatter) = registry.format(&format).cloned() else {
+                return unknown_format(&registry, &format);
+            };
+            crate::watch::watch(&registry, &file, formatter.as_ref(), out.as_deref())
+        }
         Command::Check { file } => check(&registry, &file),
         Command::Plugins => {
             print!("{}", plugins_listing(&registry));
@@ -56,11 +73,7 @@ pub fn main() -> i32 {
 
 fn run(registry: &Registry, file: &Path, format: &str, out: Option<&Path>) -> i32 {
     let Some(formatter) = registry.format(format) else {
-        eprintln!(
-            "error: unknown format `{format}` (formats: {})",
-            registry.names(PluginKind::Format).join(", ")
-        );
-        return 2;
+        return unknown_format(registry, format);
     };
     let (_, checked) = reach::check(Input::Path(file), registry);
     let scenario = match checked {
@@ -78,6 +91,14 @@ fn run(registry: &Registry, file: &Path, format: &str, out: Option<&Path>) -> i3
     let mut stdout = std::io::stdout().lock();
     let _ = stdout.write_all(formatter.render(&report).as_bytes());
     0
+}
+
+fn unknown_format(registry: &Registry, format: &str) -> i32 {
+    eprintln!(
+        "error: unknown format `{format}` (formats: {})",
+        registry.names(PluginKind::Format).join(", ")
+    );
+    2
 }
 
 fn check(registry: &Registry, file: &Path) -> i32 {
@@ -98,7 +119,7 @@ fn report_diagnostics(d: &Diagnostics) -> i32 {
 }
 
 /// `DIR/report.json`, and a CSV and an SVG for each map.
-fn write_outputs(
+pub fn write_outputs(
     registry: &Registry,
     report: &reach::report::Report,
     dir: &Path,

@@ -17,6 +17,7 @@
 //! ```
 
 pub mod bases;
+pub mod cache;
 mod check;
 pub mod error;
 pub mod floor;

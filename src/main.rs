@@ -2,6 +2,7 @@
 
 mod bar;
 mod cli;
+mod watch;
 
 fn main() {
     std::process::exit(cli::main());

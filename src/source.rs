@@ -64,6 +64,18 @@ impl Sources {
         self.files.is_empty()
     }
 
+    /// The files on disk this evaluation read or tried to read, as paths
+    /// (watch mode watches them).
+    pub fn disk_paths(&self) -> Vec<PathBuf> {
+        self.files
+            .iter()
+            .filter_map(|f| match &f.origin {
+                Origin::Path(p) => Some(p.clone()),
+                _ => None,
+            })
+            .collect()
+    }
+
     pub fn iter(&self) -> impl Iterator<Item = (FileId, &SourceFile)> {
         self.files
             .iter()

@@ -1,0 +1,257 @@
+//! `reach watch FILE`: evaluate, then again whenever FILE or a file it uses
+//! changes. The directories of those files are watched (not the files), so
+//! that saving by rename or by delete-and-create is seen like writing in
+//! place; a burst of events is one change once it has been quiet for a
+//! moment. On a terminal each evaluation replaces the screen; piped, each
+//! is printed in full after a separator line. Every evaluation ends with a
+//! summary: the time it took and which results changed since the last good
+//! evaluation.
+
+use std::collections::BTreeSet;
+use std::io::{IsTerminal, Write};
+use std::path::{Path, PathBuf};
+use std::sync::mpsc::{channel, Receiver, RecvTimeoutError};
+use std::time::{Duration, Instant};
+
+use notify::event::ModifyKind;
+use notify::{EventKind, RecommendedWatcher, RecursiveMode, Watcher};
+use reach::cache::TaskCache;
+use reach::plugin::{FormatPlugin, Registry};
+use reach::report::{Report, TaskReport};
+use reach::Input;
+
+/// A burst of events ends after this much quiet.
+const QUIET: Duration = Duration::from_millis(25);
+/// How long a file that vanished (deleted before being written again) is
+/// waited for before it is reported missing.
+const MISSING_GRACE: Duration = Duration::from_millis(500);
+
+type Events = Receiver<notify::Result<notify::Event>>;
+
+pub fn watch(
+    registry: &Registry,
+    file: &Path,
+    formatter: &dyn FormatPlugin,
+    out: Option<&Path>,
+) -> i32 {
+    let (tx, rx) = channel();
+    let mut watcher = match notify::recommended_watcher(tx) {
+        Ok(w) => w,
+        Err(e) => {
+            eprintln!("error: cannot watch files: {e}");
+            return 1;
+        }
+    };
+    let root = absolute(file);
+    let mut state = State {
+        terminal: std::io::stdout().is_terminal(),
+        cache: TaskCache::default(),
+        last_good: None,
+        evaluations: 0,
+        watched_dirs: BTreeSet::new(),
+        watched_files: BTreeSet::new(),
+    };
+    // Watching starts before the first evaluation, and each evaluation is
+    // shown only once the files it read are watched, so that a save made
+    // the moment the result appears is never missed.
+    state.rewatch(&mut watcher, &root, Vec::new());
+    loop {
+        let (files, screen) = state.evaluate(registry, file, formatter, out);
+        state.rewatch(&mut watcher, &root, files);
+        state.show(&screen);
+        if !wait_for_change(&rx, &state.watched_files) {
+            return 0;
+        }
+        wait_until_present(&root);
+    }
+}
+
+struct State {
+    terminal: bool,
+    cache: TaskCache,
+    last_good: Option<Report>,
+    evaluations: u64,
+    watched_dirs: BTreeSet<PathBuf>,
+    watched_files: BTreeSet<PathBuf>,
+}
+
+impl State {
+    /// Check and run the scenario: the files read, and what to show.
+    fn evaluate(
+        &mut self,
+        registry: &Registry,
+        file: &Path,
+        formatter: &dyn FormatPlugin,
+        out: Option<&Path>,
+    ) -> (Vec<PathBuf>, String) {
+        let started = Instant::now();
+        self.evaluations += 1;
+        let (sources, checked) = reach::check(Input::Path(file), registry);
+        let mut screen = String::new();
+        let summary = match checked {
+            Ok(scenario) => {
+                let (report, stats) =
+                    self.cache
+                        .run(&scenario, registry, &reach::progress::NoProgress);
+                screen.push_str(&formatter.render(&report));
+                if let Some(dir) = out {
+                    if let Err(e) = crate::cli::write_outputs(registry, &report, dir) {
+                        screen.push_str(&reach::Diagnostics::single(e).render(!self.terminal));
+                    }
+                }
+                let changes = changes(self.last_good.as_ref(), &report);
+                self.last_good = Some(report);
+                format!(
+                    "evaluated in {} ms ({} tasks run, {} unchanged); {}",
+                    started.elapsed().as_millis(),
+                    stats.ran,
+                    stats.reused,
+                    changes
+                )
+            }
+            Err(d) => {
+                screen.push_str(&d.render(!self.terminal));
+                format!(
+                    "errors found in {} ms; watching for the next save",
+                    started.elapsed().as_millis()
+                )
+            }
+        };
+        screen.push_str(&format!("\n{summary}\n"));
+        (sources.disk_paths(), screen)
+    }
+
+    /// Replace the screen (terminal) or append after a separator (pipe).
+    fn show(&self, screen: &str) {
+        let mut stdout = std::io::stdout().lock();
+        if self.terminal {
+            let _ = write!(stdout, "\x1b[2J\x1b[H");
+        } else {
+            let _ = writeln!(stdout, "=== evaluation {} ===", self.evaluations);
+        }
+        let _ = write!(stdout, "{screen}");
+        let _ = stdout.flush();
+    }
+
+    /// Watch the directories of the scenario's files (and of the root file,
+    /// even while it is missing); stop watching those no longer needed.
+    fn rewatch(&mut self, watcher: &mut RecommendedWatcher, root: &Path, files: Vec<PathBuf>) {
+        let files: BTreeSet<PathBuf> = files
+            .iter()
+            .map(|f| absolute(f))
+            .chain([root.to_path_buf()])
+            .collect();
+        let dirs: BTreeSet<PathBuf> = files
+            .iter()
+            .filter_map(|f| f.parent().map(Path::to_path_buf))
+            .collect();
+        for gone in self.watched_dirs.difference(&dirs) {
+            let _ = watcher.unwatch(gone);
+        }
+        for new in dirs.difference(&self.watched_dirs) {
+            let _ = watcher.watch(new, RecursiveMode::NonRecursive);
+        }
+        self.watched_dirs = dirs;
+        self.watched_files = files;
+    }
+}
+
+/// Block until one of `files` (or another `.reach` file beside them, which
+/// may be a file about to be used) changes, then until events have been
+/// quiet for a moment. False when the watcher is gone.
+fn wait_for_change(rx: &Events, files: &BTreeSet<PathBuf>) -> bool {
+    // Reading the files (as every evaluation does) raises access events;
+    // only writes, renames, creations and removals are changes.
+    let relevant = |event: &notify::Result<notify::Event>| match event {
+        Ok(e) => {
+            let change = matches!(
+                e.kind,
+                EventKind::Create(_)
+                    | EventKind::Remove(_)
+                    | EventKind::Modify(
+                        ModifyKind::Data(_) | ModifyKind::Name(_) | ModifyKind::Any
+                    )
+            );
+            change
+                && e.paths
+                    .iter()
+                    .any(|p| files.contains(p) || p.extension().is_some_and(|x| x == "reach"))
+        }
+        Err(_) => false,
+    };
+    loop {
+        match rx.recv() {
+            Ok(event) if relevant(&event) => break,
+            Ok(_) => continue,
+            Err(_) => return false,
+        }
+    }
+    loop {
+        match rx.recv_timeout(QUIET) {
+            Ok(_) => continue,
+            Err(RecvTimeoutError::Timeout) => return true,
+            Err(RecvTimeoutError::Disconnected) => return false,
+        }
+    }
+}
+
+/// An editor that deletes before writing leaves the file missing for a
+/// moment: wait a little for it.
+fn wait_until_present(file: &Path) {
+    let started = Instant::now();
+    while !file.exists() && started.elapsed() < MISSING_GRACE {
+        std::thread::sleep(Duration::from_millis(10));
+    }
+}
+
+fn absolute(path: &Path) -> PathBuf {
+    std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf())
+}
+
+/// Which task results changed since `before`: "mug by ann: reachable -> NOT
+/// reachable", new and removed tasks too.
+fn changes(before: Option<&Report>, now: &Report) -> String {
+    let Some(before) = before else {
+        return "first results".to_string();
+    };
+    let key = |t: &TaskReport| format!("{} {} by {}", t.kind(), t.name(), t.person());
+    let mut lines = Vec::new();
+    for t in &now.tasks {
+        match before.tasks.iter().find(|b| key(b) == key(t)) {
+            Some(b) if verdict(b) != verdict(t) => {
+                lines.push(format!(
+                    "{} by {}: {} -> {}",
+                    t.name(),
+                    t.person(),
+                    verdict(b),
+                    verdict(t)
+                ));
+            }
+            Some(_) => {}
+            None => lines.push(format!(
+                "{} by {}: new, {}",
+                t.name(),
+                t.person(),
+                verdict(t)
+            )),
+        }
+    }
+    for b in &before.tasks {
+        if !now.tasks.iter().any(|t| key(t) == key(b)) {
+            lines.push(format!("{} by {}: removed", b.name(), b.person()));
+        }
+    }
+    if lines.is_empty() {
+        "no result changed".to_string()
+    } else {
+        format!("changed: {}", lines.join("; "))
+    }
+}
+
+fn verdict(t: &TaskReport) -> String {
+    match t {
+        TaskReport::Reach(r) if r.ok => "reachable".into(),
+        TaskReport::Reach(_) => "NOT reachable".into(),
+        TaskReport::Map(m) => format!("{:.1} % reachable", m.fraction * 100.0),
+    }
+}

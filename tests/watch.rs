@@ -1,0 +1,113 @@
+//! `reach watch` on a temporary scenario that uses another file: edited in
+//! place, replaced by rename, deleted and re-created, broken and fixed, and
+//! its used file edited. Each step waits (generously) for the new output
+//! and checks the process is still alive.
+
+use std::io::{BufRead, BufReader};
+use std::path::Path;
+use std::process::{Child, Command, Stdio};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+const PARTS: &str = "// Used by watched.reach.\nlet mug_h = 960\n";
+
+fn scenario(extra_mm: u32) -> String {
+    format!(
+        "use std::arm\nuse \"parts.reach\"\nroom kitchen {{\n  size 3600 x 2800 x 2500\n  box counter at (0, 0, 0) size (600, 2800, 900)\n  target mug at (400, 1150, mug_h + {extra_mm})\n}}\nperson ben {{\n  mannequin right_arm\n  base fixed {{ at (850, 1300, 930) heading 180deg }}\n}}\nreach mug by ben\n"
+    )
+}
+
+struct Watch {
+    child: Child,
+    lines: Arc<Mutex<Vec<String>>>,
+}
+
+impl Watch {
+    fn start(file: &Path) -> Watch {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_reach"))
+            .args(["watch", file.to_str().unwrap()])
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        let stdout = child.stdout.take().unwrap();
+        let lines = Arc::new(Mutex::new(Vec::new()));
+        let sink = Arc::clone(&lines);
+        std::thread::spawn(move || {
+            for line in BufReader::new(stdout).lines().map_while(Result::ok) {
+                sink.lock().unwrap().push(line);
+            }
+        });
+        Watch { child, lines }
+    }
+
+    fn count(&self, needle: &str) -> usize {
+        self.lines
+            .lock()
+            .unwrap()
+            .iter()
+            .filter(|l| l.contains(needle))
+            .count()
+    }
+
+    /// Wait until `needle` has appeared `times` times, and check the process
+    /// is alive.
+    fn expect(&mut self, needle: &str, times: usize) {
+        let started = Instant::now();
+        while self.count(needle) < times {
+            assert!(
+                started.elapsed() < Duration::from_secs(30),
+                "waited for {times} x {needle:?}; output:\n{}",
+                self.lines.lock().unwrap().join("\n")
+            );
+            std::thread::sleep(Duration::from_millis(20));
+        }
+        assert!(
+            self.child.try_wait().unwrap().is_none(),
+            "reach watch exited"
+        );
+    }
+}
+
+impl Drop for Watch {
+    fn drop(&mut self) {
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+#[test]
+fn watch_follows_every_way_of_saving() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("watched.reach");
+    std::fs::write(dir.path().join("parts.reach"), PARTS).unwrap();
+    std::fs::write(&file, scenario(0)).unwrap();
+    let mut w = Watch::start(&file);
+    w.expect("first results", 1);
+
+    // Written in place.
+    std::fs::write(&file, scenario(1500)).unwrap();
+    w.expect("mug by ben: reachable -> NOT reachable", 1);
+
+    // Replaced by a rename, as many editors save.
+    let tmp = dir.path().join(".watched.reach.tmp");
+    std::fs::write(&tmp, scenario(0)).unwrap();
+    std::fs::rename(&tmp, &file).unwrap();
+    w.expect("mug by ben: NOT reachable -> reachable", 1);
+
+    // Deleted and created again.
+    std::fs::remove_file(&file).unwrap();
+    std::thread::sleep(Duration::from_millis(100));
+    std::fs::write(&file, scenario(1500)).unwrap();
+    w.expect("mug by ben: reachable -> NOT reachable", 2);
+
+    // Broken, then fixed.
+    std::fs::write(&file, scenario(0) + "room {\n").unwrap();
+    w.expect("errors found", 1);
+    std::fs::write(&file, scenario(0)).unwrap();
+    w.expect("mug by ben: NOT reachable -> reachable", 2);
+
+    // The used file changes.
+    std::fs::write(dir.path().join("parts.reach"), PARTS.replace("960", "2500")).unwrap();
+    w.expect("mug by ben: reachable -> NOT reachable", 3);
+}
