@@ -101,10 +101,12 @@ impl State {
                 }
                 let changes = changes(self.last_good.as_ref(), &report);
                 self.last_good = Some(report);
+                let plural = |n: usize| if n == 1 { "" } else { "s" };
                 format!(
-                    "evaluated in {} ms ({} tasks run, {} unchanged); {}",
+                    "evaluated in {} ms ({} task{} run, {} unchanged); {}",
                     started.elapsed().as_millis(),
                     stats.ran,
+                    plural(stats.ran),
                     stats.reused,
                     changes
                 )
