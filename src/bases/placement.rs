@@ -126,15 +126,9 @@ impl PreparedBase for PreparedMobile<'_> {
             };
             let solution = solver.solve(&problem);
             let comfort = self.chain.discomfort(&solution.q);
-            let better = match &best {
-                None => true,
-                Some((b, b_comfort)) => match (reaches(&solution), reaches(&b.solution)) {
-                    (true, false) => true,
-                    (false, true) => false,
-                    (true, true) => comfort < *b_comfort,
-                    (false, false) => solution.distance_mm < b.solution.distance_mm,
-                },
-            };
+            let better = best.as_ref().is_none_or(|(b, b_comfort)| {
+                solution.preferred_to(comfort, &b.solution, *b_comfort, query.tolerance_mm)
+            });
             if better {
                 best = Some((Placement { pose, solution }, comfort));
             }

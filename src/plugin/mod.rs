@@ -74,6 +74,30 @@ pub struct IkSolution {
     pub iterations: u64,
 }
 
+impl IkSolution {
+    /// Whether this solution, of discomfort `comfort`, is kept over `other`:
+    /// one that reaches (within `tolerance_mm`) beats one that does not; of
+    /// two that reach, the more comfortable (section 5.3.4); of two that do
+    /// not, the closer.
+    pub fn preferred_to(
+        &self,
+        comfort: f64,
+        other: &IkSolution,
+        other_comfort: f64,
+        tolerance_mm: f64,
+    ) -> bool {
+        match (
+            self.distance_mm <= tolerance_mm,
+            other.distance_mm <= tolerance_mm,
+        ) {
+            (true, false) => true,
+            (false, true) => false,
+            (true, true) => comfort < other_comfort,
+            (false, false) => self.distance_mm < other.distance_mm,
+        }
+    }
+}
+
 /// A solver configured from its option block.
 pub trait Solver: Send + Sync {
     fn solve(&self, problem: &IkProblem<'_>) -> IkSolution;

@@ -181,24 +181,11 @@ impl Solver for IncrementalSolver {
             let solution = descent::descend(&self.settings, problem, start);
             let comfort = problem.chain.discomfort(&solution.q);
             if best.as_ref().is_none_or(|(b, b_comfort)| {
-                preferred(problem, (&solution, comfort), (b, *b_comfort))
+                solution.preferred_to(comfort, b, *b_comfort, problem.tolerance_mm)
             }) {
                 best = Some((solution, comfort));
             }
         }
         best.expect("at least one start").0
-    }
-}
-
-/// Whether solution `a` is kept over `b`: one that reaches beats one that
-/// does not; of two that reach, the more comfortable; of two that do not,
-/// the closer.
-fn preferred(problem: &IkProblem<'_>, a: (&IkSolution, f64), b: (&IkSolution, f64)) -> bool {
-    let reaches = |s: &IkSolution| s.distance_mm <= problem.tolerance_mm;
-    match (reaches(a.0), reaches(b.0)) {
-        (true, false) => true,
-        (false, true) => false,
-        (true, true) => a.1 < b.1,
-        (false, false) => a.0.distance_mm < b.0.distance_mm,
     }
 }
