@@ -95,13 +95,10 @@ fn key(scenario: &Scenario, task: &TaskSpec) -> u64 {
     }
     // Of the room: its size, its obstacles (where bases fit), and the task's
     // own target or surface; not the other targets and surfaces.
-    let path: Vec<String> = task.subject.split('.').map(str::to_string).collect();
-    for room in &scenario.rooms {
+    for room in scenario.rooms.iter().filter(|r| r.holds(&task.subject)) {
         let target = room.targets.iter().find(|t| t.name == task.subject);
-        let surface = room.surface(&path);
-        if target.is_some() || surface.is_some() {
-            format!("{:?}{:?}{target:?}{surface:?}", room.size_mm, room.boxes).hash(&mut h);
-        }
+        let surface = room.surface_named(&task.subject);
+        format!("{:?}{:?}{target:?}{surface:?}", room.size_mm, room.boxes).hash(&mut h);
     }
     h.finish()
 }

@@ -58,10 +58,7 @@ impl Checker<'_> {
         let people: Vec<String> = people.into_iter().collect::<Option<_>>()?;
         self.check_bases_fit(decl, &subjects, &people, rooms, persons);
         for (subject, at) in subjects.iter().zip(&decl.subjects) {
-            let path: Vec<String> = subject.split('.').map(str::to_string).collect();
-            let room = rooms.iter().find(|r| {
-                r.targets.iter().any(|t| &t.name == subject) || r.surface(&path).is_some()
-            });
+            let room = rooms.iter().find(|r| r.holds(subject));
             if let Some(kind) = room.and_then(|r| plugin.validate(r, subject, &options)) {
                 self.error(Error::new(kind, at.span));
             }
@@ -100,11 +97,7 @@ impl Checker<'_> {
             let base = plugin.build(&person.base.options);
             let mut checked: Vec<&str> = Vec::new();
             for subject in subjects {
-                let path: Vec<String> = subject.split('.').map(str::to_string).collect();
-                let in_room = |r: &&Room| {
-                    r.targets.iter().any(|t| &t.name == subject) || r.surface(&path).is_some()
-                };
-                let Some(room) = rooms.iter().find(in_room) else {
+                let Some(room) = rooms.iter().find(|r| r.holds(subject)) else {
                     continue;
                 };
                 if checked.contains(&room.name.as_str()) {

@@ -16,14 +16,7 @@ pub fn to_string(value: &Value) -> String {
 fn write(out: &mut String, value: &Value, level: usize) {
     match value {
         Value::Array(items) if items.iter().all(|v| is_scalar(v) && !v.is_string()) => {
-            out.push('[');
-            for (i, item) in items.iter().enumerate() {
-                if i > 0 {
-                    out.push_str(", ");
-                }
-                write_inline(out, item);
-            }
-            out.push(']');
+            write_inline(out, value);
         }
         Value::Array(items) => {
             out.push('[');

@@ -36,10 +36,9 @@ impl Scenario {
 
     /// The surface a dotted subject names, and its room.
     pub fn surface(&self, subject: &str) -> Option<(&Room, Surface)> {
-        let path: Vec<String> = subject.split('.').map(str::to_string).collect();
         self.rooms
             .iter()
-            .find_map(|r| r.surface(&path).map(|s| (r, s)))
+            .find_map(|r| r.surface_named(subject).map(|s| (r, s)))
     }
 }
 

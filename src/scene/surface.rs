@@ -77,6 +77,17 @@ pub struct GridCell {
 }
 
 impl Room {
+    /// The surface a dotted subject names (`counter.top`, `splashback`).
+    pub fn surface_named(&self, subject: &str) -> Option<Surface> {
+        let path: Vec<String> = subject.split('.').map(str::to_string).collect();
+        self.surface(&path)
+    }
+
+    /// Whether a task's subject, a target or a surface, is in this room.
+    pub fn holds(&self, subject: &str) -> bool {
+        self.targets.iter().any(|t| t.name == subject) || self.surface_named(subject).is_some()
+    }
+
     /// The surface `path` names in this room: `[surface]` or `[box, face]`.
     pub fn surface(&self, path: &[String]) -> Option<Surface> {
         match path {

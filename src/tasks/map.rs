@@ -51,8 +51,7 @@ impl TaskPlugin for Map {
     }
 
     fn validate(&self, room: &Room, subject: &str, options: &Options) -> Option<ErrorKind> {
-        let path: Vec<String> = subject.split('.').map(str::to_string).collect();
-        let surface = room.surface(&path)?;
+        let surface = room.surface_named(subject)?;
         let (columns, rows) = surface.grid_size(options.length_mm("step"));
         let points = columns.saturating_mul(rows);
         let max = options.integer("max_points") as usize;
