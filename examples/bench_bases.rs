@@ -85,6 +85,7 @@ fn main() {
                 tolerance_mm: 10.0,
                 seed: i as u64,
                 search: Search::FirstReaching,
+                obstacles: None,
             };
             let start = Instant::now();
             let placement = prepared.reach(&query, solver.as_ref());

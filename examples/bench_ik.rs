@@ -81,6 +81,7 @@ fn main() {
                 target_mm: *target,
                 tolerance_mm: TOLERANCE_MM,
                 seed: i as u64,
+                obstacles: None,
             });
             (s.distance_mm, Some(s.iterations as f64))
         }));

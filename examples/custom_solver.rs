@@ -52,6 +52,7 @@ impl Solver for SamplingSolver {
             q: problem.chain.neutral(),
             distance_mm: f64::INFINITY,
             iterations: 0,
+            collision: None,
         };
         for i in 1..=self.samples {
             let q: Vec<f64> = problem
@@ -66,9 +67,14 @@ impl Solver for SamplingSolver {
                     q,
                     distance_mm,
                     iterations: i,
+                    collision: None,
                 };
             }
         }
+        // The base checks the final posture against the room's obstacles
+        // whatever a solver says; a solver that avoids them would call
+        // `problem.collision(&q)` on each candidate.
+        best.collision = problem.collision(&best.q);
         best
     }
 }

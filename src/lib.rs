@@ -19,6 +19,7 @@
 pub mod bases;
 pub mod cache;
 mod check;
+pub mod collision;
 pub mod error;
 pub mod floor;
 pub mod kinematics;

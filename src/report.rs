@@ -9,8 +9,8 @@ use serde::ser::{SerializeMap, Serializer};
 use serde::Serialize;
 
 use crate::kinematics::{Chain, JointKind};
-use crate::plugin::Placement;
-use crate::scene::{Grid, GridCell, Person, Surface, TaskSpec};
+use crate::plugin::{BasePose, Placement};
+use crate::scene::{Grid, GridCell, Person, Room, Surface, TaskSpec};
 
 /// Version of the JSON schema; raised when a field changes meaning.
 pub const SCHEMA_VERSION: u32 = 1;
@@ -92,10 +92,14 @@ pub struct ReachReport {
     /// The target.
     pub name: String,
     pub person: String,
-    /// Reached: `distance_mm <= tolerance_mm`.
+    /// Reached: `distance_mm <= tolerance_mm` and no link through an
+    /// obstacle.
     pub ok: bool,
     /// Distance left between effector and target.
     pub distance_mm: f64,
+    /// The obstacle a link of the posture passes through (null: none, or
+    /// collisions not checked).
+    pub collision: Option<String>,
     pub tolerance_mm: f64,
     /// Sweeps (solver iterations) of the kept solution.
     pub iterations: u64,
@@ -109,19 +113,59 @@ pub struct ReachReport {
     pub target_mm: [f64; 3],
 }
 
+/// What a reach-like task asked: by whom, with which chain and solver.
+pub struct Asked<'a> {
+    pub task: &'a TaskSpec,
+    pub person: &'a Person,
+    /// The chain of the effector the task names.
+    pub chain: &'a Chain,
+    pub solver: &'a str,
+    pub tolerance_mm: f64,
+}
+
 impl ReachReport {
-    pub fn new(
-        task: &TaskSpec,
-        person: &Person,
-        solver: &str,
-        placement: &Placement,
-        target: Point3<f64>,
-        tolerance_mm: f64,
-    ) -> Self {
-        let chain = &person.chain;
+    pub fn new(asked: &Asked<'_>, placement: &Placement, target: Point3<f64>, room: &Room) -> Self {
+        let chain = asked.chain;
         let q = &placement.solution.q;
         let effector_room = placement.pose.to_room(&chain.effector(q));
-        let posture = chain
+        ReachReport {
+            name: asked.task.subject.clone(),
+            person: asked.person.name.clone(),
+            ok: placement.solution.reaches(asked.tolerance_mm),
+            distance_mm: mm(placement.solution.distance_mm),
+            collision: placement
+                .solution
+                .collision
+                .map(|i| room.boxes[i].name.clone()),
+            tolerance_mm: mm(asked.tolerance_mm),
+            iterations: placement.solution.iterations,
+            comfort: fixed(chain.discomfort(q), 4),
+            solver: asked.solver.to_string(),
+            effector: chain.effector_name.clone(),
+            base: BaseReport::new(&asked.person.base.name, &placement.pose),
+            posture: Posture::new(chain, q),
+            effector_mm: point(effector_room),
+            target_mm: point(target),
+        }
+    }
+}
+
+impl BaseReport {
+    pub fn new(kind: &str, pose: &BasePose) -> Self {
+        BaseReport {
+            kind: kind.to_string(),
+            x_mm: mm(pose.position_mm.x),
+            y_mm: mm(pose.position_mm.y),
+            z_mm: mm(pose.position_mm.z),
+            heading_deg: deg(pose.heading_rad),
+        }
+    }
+}
+
+impl Posture {
+    /// Joint values of `chain` in the units a user reads.
+    pub fn new(chain: &Chain, q: &[f64]) -> Self {
+        let values = chain
             .joints
             .iter()
             .zip(q)
@@ -133,28 +177,7 @@ impl ReachReport {
                 (j.name.clone(), shown)
             })
             .collect();
-        let pose = &placement.pose;
-        ReachReport {
-            name: task.subject.clone(),
-            person: person.name.clone(),
-            ok: placement.solution.distance_mm <= tolerance_mm,
-            distance_mm: mm(placement.solution.distance_mm),
-            tolerance_mm: mm(tolerance_mm),
-            iterations: placement.solution.iterations,
-            comfort: fixed(chain.discomfort(q), 4),
-            solver: solver.to_string(),
-            effector: chain.effector_name.clone(),
-            base: BaseReport {
-                kind: person.base.name.clone(),
-                x_mm: mm(pose.position_mm.x),
-                y_mm: mm(pose.position_mm.y),
-                z_mm: mm(pose.position_mm.z),
-                heading_deg: deg(pose.heading_rad),
-            },
-            posture: Posture(posture),
-            effector_mm: point(effector_room),
-            target_mm: point(target),
-        }
+        Posture(values)
     }
 }
 
@@ -214,7 +237,7 @@ impl MapCell {
             column: cell.column,
             row: cell.row,
             point_mm: point(cell.point_mm),
-            reachable: placement.solution.distance_mm <= tolerance_mm,
+            reachable: placement.solution.reaches(tolerance_mm),
             distance_mm: mm(placement.solution.distance_mm),
             comfort: fixed(chain.discomfort(&placement.solution.q), 4),
             base_mm_deg: [

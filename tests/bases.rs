@@ -99,7 +99,7 @@ fn a_wheelchair_user_cannot_reach_what_a_standing_person_can() {
             |t| matches!(t, TaskReport::Reach(r) if r.name == target && r.person == person && r.ok),
         )
     };
-    assert!(ok("cabinet_high", "ben"));
-    assert!(!ok("cabinet_high", "ann"));
+    assert!(ok("cabinet_low", "ben"));
+    assert!(!ok("cabinet_low", "ann"));
     assert!(ok("counter_front", "ann"));
 }

@@ -116,17 +116,17 @@ fn out_dir_gets_a_csv_and_an_svg_per_map() {
         dir.path().to_str().unwrap(),
     ]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
-    let csv = std::fs::read_to_string(dir.path().join("map-wall_cabinets-front-ann.csv")).unwrap();
+    let csv = std::fs::read_to_string(dir.path().join("map-tall_cabinet-front-ann.csv")).unwrap();
     assert!(csv.starts_with("column,row,x_mm,y_mm,z_mm,reachable"));
-    assert_eq!(csv.lines().count(), 1 + 140);
-    let svg = std::fs::read_to_string(dir.path().join("map-wall_cabinets-front-ann.svg")).unwrap();
-    assert!(svg.starts_with("<svg") && svg.contains("wall_cabinets.front reached by ann"));
+    assert_eq!(csv.lines().count(), 1 + 6 * 14);
+    let svg = std::fs::read_to_string(dir.path().join("map-tall_cabinet-front-ann.svg")).unwrap();
+    assert!(svg.starts_with("<svg") && svg.contains("tall_cabinet.front reached by ann"));
     assert!(svg.contains("reachable") && svg.contains("height z (mm)"));
     let files = std::fs::read_dir(dir.path()).unwrap().count();
     assert_eq!(
         files,
-        1 + 2 * 14,
-        "report.json and two files for each of fourteen maps"
+        1 + 2 * 18,
+        "report.json and two files for each of eighteen maps"
     );
 }
 

@@ -80,6 +80,7 @@ fn solve(solver: &dyn Solver, chain: &Chain, target: Point3<f64>, seed: u64) -> 
         target_mm: target,
         tolerance_mm: 5.0,
         seed,
+        obstacles: None,
     })
 }
 

@@ -4,8 +4,8 @@ use nalgebra::Point3;
 
 use crate::kinematics::Chain;
 use crate::plugin::{
-    Base, BasePlugin, BasePose, IkProblem, Options, ParamSpec, Placement, Plugin, PreparedBase,
-    ReachQuery, Solver,
+    Base, BasePlugin, BasePose, Options, ParamSpec, Placement, Plugin, PreparedBase, ReachQuery,
+    Solver,
 };
 use crate::scene::Room;
 
@@ -71,16 +71,7 @@ struct Prepared<'a> {
 }
 
 impl PreparedBase for Prepared<'_> {
-    fn reach(&self, query: &ReachQuery, solver: &dyn Solver) -> Placement {
-        let problem = IkProblem {
-            chain: self.chain,
-            target_mm: self.pose.to_base(&query.target_room_mm),
-            tolerance_mm: query.tolerance_mm,
-            seed: query.seed,
-        };
-        Placement {
-            pose: self.pose,
-            solution: solver.solve(&problem),
-        }
+    fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement {
+        query.solve_at(self.chain, self.pose, solver)
     }
 }

@@ -16,9 +16,7 @@ use rand_chacha::ChaCha8Rng;
 
 use crate::floor::{admissible, Footprint, Zone};
 use crate::kinematics::Chain;
-use crate::plugin::{
-    BasePose, IkProblem, IkSolution, Placement, PreparedBase, ReachQuery, Search, Solver,
-};
+use crate::plugin::{BasePose, IkSolution, Placement, PreparedBase, ReachQuery, Search, Solver};
 use crate::scene::Room;
 use crate::solvers::random_posture;
 
@@ -114,25 +112,25 @@ impl PreparedMobile<'_> {
 }
 
 impl PreparedBase for PreparedMobile<'_> {
-    fn reach(&self, query: &ReachQuery, solver: &dyn Solver) -> Placement {
+    fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement {
         let mut best: Option<(Placement, f64)> = None;
-        let reaches = |s: &IkSolution| s.distance_mm <= query.tolerance_mm;
         for pose in self.candidates(&query.target_room_mm) {
-            let problem = IkProblem {
-                chain: self.chain,
-                target_mm: pose.to_base(&query.target_room_mm),
-                tolerance_mm: query.tolerance_mm,
-                seed: query.seed,
-            };
-            let solution = solver.solve(&problem);
-            let comfort = self.chain.discomfort(&solution.q);
+            let placement = query.solve_at(self.chain, pose, solver);
+            let comfort = self.chain.discomfort(&placement.solution.q);
             let better = best.as_ref().is_none_or(|(b, b_comfort)| {
-                solution.preferred_to(comfort, &b.solution, *b_comfort, query.tolerance_mm)
+                placement.solution.preferred_to(
+                    comfort,
+                    &b.solution,
+                    *b_comfort,
+                    query.tolerance_mm,
+                )
             });
             if better {
-                best = Some((Placement { pose, solution }, comfort));
+                best = Some((placement, comfort));
             }
-            let done = best.as_ref().is_some_and(|(b, _)| reaches(&b.solution));
+            let done = best
+                .as_ref()
+                .is_some_and(|(b, _)| b.solution.reaches(query.tolerance_mm));
             if done && query.search == Search::FirstReaching {
                 break;
             }
@@ -183,6 +181,7 @@ fn nowhere(room: &Room, chain: &Chain) -> Placement {
             q: chain.neutral(),
             distance_mm: f64::INFINITY,
             iterations: 0,
+            collision: None,
         },
     }
 }

@@ -125,6 +125,9 @@ fn detail(out: &mut String, r: &ReachReport) {
         .map(|(j, v)| format!("{j} {v:.1}"))
         .collect();
     let _ = writeln!(out, "  posture (deg): {}", posture.join(", "));
+    if let Some(obstacle) = &r.collision {
+        let _ = writeln!(out, "  a link passes through `{obstacle}`");
+    }
 }
 
 fn map_detail(out: &mut String, m: &MapReport) {

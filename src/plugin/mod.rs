@@ -10,6 +10,7 @@ pub use registry::Registry;
 
 use nalgebra::Point3;
 
+use crate::collision::{Obstacles, PlacedObstacles};
 use crate::kinematics::Chain;
 use crate::report::{Report, TaskReport};
 use crate::scene::{Room, Scenario, TaskSpec};
@@ -54,13 +55,27 @@ pub trait Plugin: Send + Sync {
 
 /// An inverse kinematics problem: bring the chain's effector to a point
 /// given in the chain's base frame.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy)]
 pub struct IkProblem<'a> {
     pub chain: &'a Chain,
     pub target_mm: Point3<f64>,
     pub tolerance_mm: f64,
     /// Seeds every random choice the solver makes.
     pub seed: u64,
+    /// The room's obstacles, when links must stay out of them.
+    pub obstacles: Option<PlacedObstacles<'a>>,
+}
+
+impl IkProblem<'_> {
+    /// The first obstacle a link of posture `q` passes through (none when
+    /// obstacles are not checked).
+    pub fn collision(&self, q: &[f64]) -> Option<usize> {
+        let obstacles = self.obstacles.as_ref()?;
+        // The effector may rest on the target's surface: the last link
+        // stops a tolerance (at least a millimetre) short of it.
+        let gap_mm = self.tolerance_mm.max(1.0);
+        obstacles.polyline_hit(&self.chain.link_points(q), gap_mm)
+    }
 }
 
 /// A solver's answer: a posture within the joint limits and how far its
@@ -72,11 +87,19 @@ pub struct IkSolution {
     pub distance_mm: f64,
     /// Sweeps over all joints (or solver iterations), summed over starts.
     pub iterations: u64,
+    /// The first obstacle (by index in the room) a link passes through.
+    pub collision: Option<usize>,
 }
 
 impl IkSolution {
+    /// Within `tolerance_mm` of the target and clear of obstacles.
+    pub fn reaches(&self, tolerance_mm: f64) -> bool {
+        self.distance_mm <= tolerance_mm && self.collision.is_none()
+    }
+
     /// Whether this solution, of discomfort `comfort`, is kept over `other`:
-    /// one that reaches (within `tolerance_mm`) beats one that does not; of
+    /// one that reaches (within `tolerance_mm`, clear of obstacles) beats
+    /// one that does not; of
     /// two that reach, the more comfortable (section 5.3.4); of two that do
     /// not, the closer.
     pub fn preferred_to(
@@ -86,10 +109,7 @@ impl IkSolution {
         other_comfort: f64,
         tolerance_mm: f64,
     ) -> bool {
-        match (
-            self.distance_mm <= tolerance_mm,
-            other.distance_mm <= tolerance_mm,
-        ) {
+        match (self.reaches(tolerance_mm), other.reaches(tolerance_mm)) {
             (true, false) => true,
             (false, true) => false,
             (true, true) => comfort < other_comfort,
@@ -150,12 +170,39 @@ pub enum Search {
 }
 
 /// One reach question for a prepared base.
-#[derive(Clone, Copy, Debug)]
-pub struct ReachQuery {
+#[derive(Clone, Copy)]
+pub struct ReachQuery<'a> {
     pub target_room_mm: Point3<f64>,
     pub tolerance_mm: f64,
     pub seed: u64,
     pub search: Search,
+    /// The room's obstacles, when links must stay out of them.
+    pub obstacles: Option<&'a Obstacles>,
+}
+
+impl ReachQuery<'_> {
+    /// The problem in the base frame of a base standing at `pose`.
+    pub fn problem<'c>(&'c self, chain: &'c Chain, pose: BasePose) -> IkProblem<'c> {
+        IkProblem {
+            chain,
+            target_mm: pose.to_base(&self.target_room_mm),
+            tolerance_mm: self.tolerance_mm,
+            seed: self.seed,
+            obstacles: self.obstacles.map(|obstacles| PlacedObstacles {
+                obstacles,
+                base_pose: pose,
+            }),
+        }
+    }
+
+    /// Solve from `pose`; the collision is checked here whatever the
+    /// solver did, so that no solver can report a posture through a box.
+    pub fn solve_at(&self, chain: &Chain, pose: BasePose, solver: &dyn Solver) -> Placement {
+        let problem = self.problem(chain, pose);
+        let mut solution = solver.solve(&problem);
+        solution.collision = problem.collision(&solution.q);
+        Placement { pose, solution }
+    }
 }
 
 /// A base configured from its option block: it decides where the person
@@ -172,7 +219,7 @@ pub trait Base: Send + Sync {
 /// A base ready for one room and one chain.
 pub trait PreparedBase: Send + Sync {
     /// Place the base for the target and ask the solver for the posture.
-    fn reach(&self, query: &ReachQuery, solver: &dyn Solver) -> Placement;
+    fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement;
 }
 
 pub trait BasePlugin: Plugin {

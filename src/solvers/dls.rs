@@ -121,6 +121,7 @@ impl DlsSolver {
         }
         IkSolution {
             distance_mm: (problem.target_mm - p).norm(),
+            collision: problem.collision(&q),
             q,
             iterations,
         }

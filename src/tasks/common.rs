@@ -2,8 +2,9 @@
 //! tolerance, seed), the setup that builds the person's solver and base,
 //! and seeds that depend on names rather than on the order of tasks.
 
+use crate::collision::Obstacles;
 use crate::plugin::{Base, ParamSpec, PluginKind, Solver, TaskContext};
-use crate::scene::Person;
+use crate::scene::{Person, Room};
 
 /// `solver`, `tolerance` and `seed`, with `what` in the docs ("target",
 /// "point").
@@ -21,6 +22,17 @@ pub fn common_params(what: &'static str, seed_doc: &'static str) -> Vec<ParamSpe
         ),
         ParamSpec::length("tolerance", 10.0, tolerance_doc).range(0.001, 1000.0),
         ParamSpec::integer("seed", 1, seed_doc).range(0.0, 9_007_199_254_740_992.0),
+        ParamSpec::boolean(
+            "collisions",
+            true,
+            "links must stay out of the room's obstacles (links are segments between joints)",
+        ),
+        ParamSpec::length(
+            "clearance",
+            0.0,
+            "with collisions: how close a link may come to an obstacle",
+        )
+        .range(0.0, 500.0),
     ]
 }
 
@@ -33,6 +45,8 @@ pub struct Setup<'a> {
     pub base: Box<dyn Base>,
     pub tolerance_mm: f64,
     pub seed: u64,
+    pub collisions: bool,
+    pub clearance_mm: f64,
 }
 
 impl<'a> Setup<'a> {
@@ -57,7 +71,15 @@ impl<'a> Setup<'a> {
             base,
             tolerance_mm: task.options.length_mm("tolerance"),
             seed: task.options.integer("seed") as u64,
+            collisions: task.options.boolean("collisions"),
+            clearance_mm: task.options.length_mm("clearance"),
         }
+    }
+
+    /// The room's obstacles when the task checks collisions.
+    pub fn obstacles(&self, room: &Room) -> Option<Obstacles> {
+        self.collisions
+            .then(|| Obstacles::new(room, self.clearance_mm))
     }
 }
 

@@ -70,6 +70,7 @@ impl TaskPlugin for Map {
             .surface(&task.subject)
             .expect("checked surface");
         let prepared = setup.base.prepare(room, &person.chain);
+        let obstacles = setup.obstacles(room);
         let step_mm = task.options.length_mm("step");
         let grid = surface.grid(step_mm);
         ctx.progress.add_work(grid.cells.len() as u64);
@@ -83,6 +84,7 @@ impl TaskPlugin for Map {
                     tolerance_mm: setup.tolerance_mm,
                     seed: mix_seed(setup.seed, &[&task.subject, &person.name, &column, &row]),
                     search: Search::FirstReaching,
+                    obstacles: obstacles.as_ref(),
                 };
                 let placement = prepared.reach(&query, setup.solver.as_ref());
                 ctx.progress.advance(1);

@@ -2,7 +2,7 @@
 
 use super::common::{common_params, mix_seed, Setup};
 use crate::plugin::{ParamSpec, Plugin, ReachQuery, Search, SubjectKind, TaskContext, TaskPlugin};
-use crate::report::{ReachReport, TaskReport};
+use crate::report::{Asked, ReachReport, TaskReport};
 
 /// The plugin `reach`.
 pub struct Reach;
@@ -33,23 +33,30 @@ impl TaskPlugin for Reach {
         let task = ctx.task;
         let setup = Setup::new(ctx);
         let (room, target) = ctx.scenario.target(&task.subject).expect("checked target");
+        let obstacles = setup.obstacles(room);
         let query = ReachQuery {
             target_room_mm: target.position_mm,
             tolerance_mm: setup.tolerance_mm,
             seed: mix_seed(setup.seed, &[&task.subject, &setup.person.name]),
             search: Search::MostComfortable,
+            obstacles: obstacles.as_ref(),
         };
         let placement = setup
             .base
             .prepare(room, &setup.person.chain)
             .reach(&query, setup.solver.as_ref());
-        TaskReport::Reach(ReachReport::new(
+        let asked = Asked {
             task,
-            setup.person,
-            setup.solver_name,
+            person: setup.person,
+            chain: &setup.person.chain,
+            solver: setup.solver_name,
+            tolerance_mm: setup.tolerance_mm,
+        };
+        TaskReport::Reach(ReachReport::new(
+            &asked,
             &placement,
             target.position_mm,
-            setup.tolerance_mm,
+            room,
         ))
     }
 }

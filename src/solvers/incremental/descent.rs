@@ -182,6 +182,11 @@ fn descend_with(
     let q = fk.into_q();
     IkSolution {
         distance_mm: (chain.effector(&q) - problem.target_mm).norm(),
+        collision: if s.avoid_obstacles {
+            problem.collision(&q)
+        } else {
+            None
+        },
         q,
         iterations: sweeps,
     }

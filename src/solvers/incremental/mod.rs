@@ -47,6 +47,7 @@ pub struct IncrementalSettings {
     pub stall: u32,
     pub stall_ratio: f64,
     pub max_sweeps: u32,
+    pub avoid_obstacles: bool,
 }
 
 impl Plugin for Incremental {
@@ -141,6 +142,11 @@ impl Plugin for Incremental {
                 "stop after this many sweeps over all joints",
             )
             .range(1.0, 1e6),
+            P::boolean(
+                "avoid_obstacles",
+                true,
+                "a posture whose links pass through an obstacle does not count as reaching when choosing among starts",
+            ),
         ]
     }
 }
@@ -163,6 +169,7 @@ impl SolverPlugin for Incremental {
                 stall: o.integer("stall") as u32,
                 stall_ratio: o.number("stall_ratio"),
                 max_sweeps: o.integer("max_sweeps") as u32,
+                avoid_obstacles: o.boolean("avoid_obstacles"),
             },
         })
     }
