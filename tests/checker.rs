@@ -86,8 +86,11 @@ fn errors_point_at_the_offending_text() {
             vec![("`limits` is given more than once", "limits(0, 2)")],
         ),
         (
-            "mannequin m { joint j dh(a 1) limits(0, 1)\n effector a at (0,0,0)\n effector b at (0,0,0) }".into(),
-            vec![("more than one effector per mannequin is not supported yet", "b")],
+            "mannequin m { joint j dh(a 1) limits(0, 1)\n joint k after jj dh(a 1) limits(0, 1)\n effector a at (0,0,0)\n effector a after j at (0,0,0) }".into(),
+            vec![
+                ("unknown joint declared before this one `jj`", "jj"),
+                ("effector `a` is defined twice", "a"),
+            ],
         ),
         (
             format!("{SCENE}person ann {{ mannequin arm {{ neutral elbow 160deg }} base fixed {{ at (0,0,0) }} }}"),

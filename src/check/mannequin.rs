@@ -1,12 +1,12 @@
 //! Mannequins: Denavit-Hartenberg joints with limits, neutral values and
-//! comfort weights, and the effector.
+//! comfort weights, joined in a tree (`after`), and their effectors.
 
 use nalgebra::Vector3;
 
 use super::eval::fmt_num;
 use super::Checker;
 use crate::error::{Error, ErrorKind};
-use crate::kinematics::{Chain, Dh, Joint, JointKind};
+use crate::kinematics::{Body, Dh, Effector, Joint, JointKind};
 use crate::names::suggest;
 use crate::span::Span;
 use crate::syntax::ast::{self, Expr, JointDecl, LimitsExpr, MannequinDecl};
@@ -16,7 +16,7 @@ const DH_PARAMS: [&str; 4] = ["theta", "d", "alpha", "a"];
 const MAX_ANGLE_RAD: f64 = 2.0 * std::f64::consts::PI;
 
 impl Checker<'_> {
-    /// Build every mannequin's chain once, so its errors are reported once.
+    /// Build every mannequin's body once, so its errors are reported once.
     pub(super) fn build_mannequins(&mut self) {
         let decls: Vec<_> = self
             .mannequins
@@ -24,12 +24,12 @@ impl Checker<'_> {
             .map(|(n, d, f)| (n.to_string(), d, f))
             .collect();
         for (name, decl, file) in decls {
-            let chain = self.in_file(file, |c| c.chain(decl));
-            self.chains.insert(name, chain);
+            let body = self.in_file(file, |c| c.body(decl));
+            self.bodies.insert(name, body);
         }
     }
 
-    fn chain(&mut self, decl: &MannequinDecl) -> Option<Chain> {
+    fn body(&mut self, decl: &MannequinDecl) -> Option<Body> {
         if decl.joints.is_empty() {
             self.error(Error::new(
                 ErrorKind::Missing {
@@ -40,8 +40,9 @@ impl Checker<'_> {
             ));
         }
         let mut joints = Vec::new();
+        let mut parents = Vec::new();
         let mut names: Vec<&crate::span::Name> = Vec::new();
-        for j in &decl.joints {
+        for (i, j) in decl.joints.iter().enumerate() {
             if let Some(first) = names.iter().find(|n| n.value == j.name.value) {
                 let e = Error::new(
                     ErrorKind::Duplicate {
@@ -52,38 +53,94 @@ impl Checker<'_> {
                 );
                 self.error(e.with_note(first.span, "first defined here"));
             }
+            parents.push(match &j.after {
+                None => Some(i.checked_sub(1)),
+                Some(after) => self.earlier_joint(&names, after).map(Some),
+            });
             names.push(&j.name);
             joints.push(self.joint(j));
         }
-        let effector = self.effector(decl);
+        let effectors = self.effectors(decl, &names);
         let joints: Option<Vec<Joint>> = joints.into_iter().collect();
-        let (effector_name, effector_mm) = effector?;
-        let joints = joints?;
+        let parents: Option<Vec<Option<usize>>> = parents.into_iter().collect();
+        let (joints, parents, effectors) = (joints?, parents?, effectors?);
         if joints.is_empty() {
             return None;
         }
-        Some(Chain {
+        Some(Body {
             joints,
-            effector_name,
-            effector_mm,
+            parents,
+            effectors,
         })
     }
 
-    fn effector(&mut self, decl: &MannequinDecl) -> Option<(String, Vector3<f64>)> {
-        match decl.effectors.as_slice() {
-            [] => Some(("end".to_string(), Vector3::zeros())),
-            [e] => Some((e.name.value.clone(), self.point(&e.at)?)),
-            [_, second, ..] => {
-                self.error(Error::new(
-                    ErrorKind::Unsupported {
-                        what: "more than one effector per mannequin".into(),
-                        help: "declare one effector; the others need the tree solver of a later version".into(),
+    /// The index of joint `name` among those declared before it.
+    fn earlier_joint(
+        &mut self,
+        earlier: &[&crate::span::Name],
+        name: &crate::span::Name,
+    ) -> Option<usize> {
+        let found = earlier.iter().position(|n| n.value == name.value);
+        if found.is_none() {
+            self.error(Error::new(
+                ErrorKind::UnknownName {
+                    what: "joint declared before this one",
+                    name: name.value.clone(),
+                    suggestion: suggest(&name.value, earlier.iter().map(|n| n.value.as_str())),
+                },
+                name.span,
+            ));
+        }
+        found
+    }
+
+    /// The effectors: on the last joint unless `after` says which; one
+    /// called `end` at the last joint when none is declared.
+    fn effectors(
+        &mut self,
+        decl: &MannequinDecl,
+        joints: &[&crate::span::Name],
+    ) -> Option<Vec<Effector>> {
+        let last = joints.len().checked_sub(1);
+        if decl.effectors.is_empty() {
+            return Some(vec![Effector {
+                name: "end".to_string(),
+                joint: last,
+                offset_mm: Vector3::zeros(),
+            }]);
+        }
+        let mut effectors = Vec::new();
+        let mut ok = true;
+        for (k, e) in decl.effectors.iter().enumerate() {
+            if let Some(first) = decl.effectors[..k]
+                .iter()
+                .find(|f| f.name.value == e.name.value)
+            {
+                let err = Error::new(
+                    ErrorKind::Duplicate {
+                        what: "effector",
+                        name: e.name.value.clone(),
                     },
-                    second.name.span,
-                ));
-                None
+                    e.name.span,
+                );
+                self.error(err.with_note(first.name.span, "first defined here"));
+                ok = false;
+            }
+            let joint = match &e.after {
+                None => Some(last),
+                Some(after) => self.earlier_joint(joints, after).map(Some),
+            };
+            let offset = self.point(&e.at);
+            match (joint, offset) {
+                (Some(joint), Some(offset_mm)) => effectors.push(Effector {
+                    name: e.name.value.clone(),
+                    joint,
+                    offset_mm,
+                }),
+                _ => ok = false,
             }
         }
+        ok.then_some(effectors)
     }
 
     fn joint(&mut self, j: &JointDecl) -> Option<Joint> {

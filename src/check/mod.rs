@@ -15,7 +15,7 @@ mod task;
 use std::collections::HashMap;
 
 use crate::error::{Diagnostics, Error, ErrorKind};
-use crate::kinematics::Chain;
+use crate::kinematics::Body;
 use crate::loader::LoadedFile;
 use crate::plugin::Registry;
 use crate::scene::Scenario;
@@ -69,7 +69,7 @@ struct Checker<'a> {
     let_stack: Vec<String>,
     rooms: Table<'a, crate::syntax::ast::RoomDecl>,
     mannequins: Table<'a, crate::syntax::ast::MannequinDecl>,
-    chains: HashMap<String, Option<Chain>>,
+    bodies: HashMap<String, Option<Body>>,
     persons: Table<'a, crate::syntax::ast::PersonDecl>,
     tasks: Vec<(&'a crate::syntax::ast::TaskDecl, FileId)>,
 }
@@ -86,7 +86,7 @@ impl<'a> Checker<'a> {
             let_stack: Vec::new(),
             rooms: Table::new("room"),
             mannequins: Table::new("mannequin"),
-            chains: HashMap::new(),
+            bodies: HashMap::new(),
             persons: Table::new("person"),
             tasks: Vec::new(),
         }

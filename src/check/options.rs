@@ -116,6 +116,10 @@ impl Checker<'_> {
             (ParamKind::Plugin(kind), OptionValue::Plugin(p)) => {
                 Value::Plugin(self.plugin_config(kind, p)?)
             }
+            (ParamKind::Name, OptionValue::Expr(e)) => match &e.kind {
+                ExprKind::Name(name) => Value::Name(name.clone()),
+                _ => return self.mismatch(spec, "an expression", opt.value_span),
+            },
             (ParamKind::Plugin(kind), OptionValue::Expr(e)) => match &e.kind {
                 ExprKind::Name(name) => {
                     let use_ = PluginUse {

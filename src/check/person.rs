@@ -3,7 +3,7 @@
 
 use super::Checker;
 use crate::error::{Error, ErrorKind};
-use crate::kinematics::{Chain, JointKind};
+use crate::kinematics::{Body, Joint, JointKind};
 use crate::names::suggest;
 use crate::plugin::{PluginConfig, PluginKind};
 use crate::scene::Person;
@@ -29,12 +29,13 @@ impl Checker<'_> {
             decl.name.span,
         );
         let base = self.one_of(&decl.bases, |b| b.span, &owner, "base", decl.name.span);
-        let chain = mannequin.and_then(|m| self.person_chain(m));
+        let body = mannequin.and_then(|m| self.person_body(m));
         let base = base.and_then(|b| self.plugin_config(PluginKind::Base, b));
         Some(Person {
             name: decl.name.value.clone(),
             mannequin: mannequin?.name.value.clone(),
-            chain: chain?,
+            chain: body.as_ref()?.chain(0),
+            body: body?,
             base: base?,
         })
     }
@@ -68,61 +69,61 @@ impl Checker<'_> {
         items.first()
     }
 
-    fn person_chain(&mut self, m: &PersonMannequin) -> Option<Chain> {
+    fn person_body(&mut self, m: &PersonMannequin) -> Option<Body> {
         if let Err(e) = self.mannequins.resolve(&m.name) {
             self.error(e);
             return None;
         }
         // A mannequin that failed to build has reported its own errors.
-        let mut chain = self.chains.get(&m.name.value).cloned().flatten()?;
+        let mut body = self.bodies.get(&m.name.value).cloned().flatten()?;
         let mut ok = true;
         for o in &m.overrides {
-            ok &= self.apply_override(&mut chain, o).is_some();
+            ok &= self.apply_override(&mut body.joints, o).is_some();
         }
         // Limits may have moved past the neutral values left in place.
-        for j in &mut chain.joints {
+        for j in &mut body.joints {
             j.neutral = j.neutral.clamp(j.min, j.max);
         }
-        ok.then_some(chain)
+        ok.then_some(body)
     }
 
-    fn apply_override(&mut self, chain: &mut Chain, o: &JointOverride) -> Option<()> {
+    fn apply_override(&mut self, joints: &mut [Joint], o: &JointOverride) -> Option<()> {
         let (JointOverride::Limits { joint, .. }
         | JointOverride::Neutral { joint, .. }
         | JointOverride::Weight { joint, .. }) = o;
-        let i = self.joint_index(chain, joint)?;
-        let kind = match chain.joints[i].kind {
+        let i = self.joint_index(joints, joint)?;
+        let kind = match joints[i].kind {
             JointKind::Revolute => ast::JointKind::Revolute,
             JointKind::Prismatic => ast::JointKind::Prismatic,
         };
-        let j = &chain.joints[i];
+        let j = &joints[i];
         let (min, max) = (j.min, j.max);
         match o {
             JointOverride::Limits { limits, .. } => {
                 let (min, max) = self.limits(limits, kind)?;
-                chain.joints[i].min = min;
-                chain.joints[i].max = max;
+                joints[i].min = min;
+                joints[i].max = max;
             }
             JointOverride::Neutral { value, .. } => {
                 let v = match kind {
                     ast::JointKind::Revolute => self.angle(value)?,
                     ast::JointKind::Prismatic => self.length(value)?,
                 };
-                chain.joints[i].neutral = self.neutral_within(v, min, max, kind, value.span)?;
+                joints[i].neutral = self.neutral_within(v, min, max, kind, value.span)?;
             }
-            JointOverride::Weight { value, .. } => chain.joints[i].weight = self.weight(value)?,
+            JointOverride::Weight { value, .. } => joints[i].weight = self.weight(value)?,
         }
         Some(())
     }
 
-    fn joint_index(&mut self, chain: &Chain, joint: &Name) -> Option<usize> {
-        let found = chain.joints.iter().position(|j| j.name == joint.value);
+    fn joint_index(&mut self, joints: &[Joint], joint: &Name) -> Option<usize> {
+        let found = joints.iter().position(|j| j.name == joint.value);
         if found.is_none() {
             self.error(Error::new(
                 ErrorKind::UnknownName {
                     what: "joint",
                     name: joint.value.clone(),
-                    suggestion: suggest(&joint.value, chain.joints.iter().map(|j| j.name.as_str())),
+                    suggestion: suggest(&joint.value, joints.iter().map(|j| j.name.as_str())),
                 },
                 joint.span,
             ));

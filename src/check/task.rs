@@ -4,7 +4,7 @@
 use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::names::suggest;
-use crate::plugin::{PluginKind, SubjectKind};
+use crate::plugin::{Options, PluginKind, SubjectKind, Value};
 use crate::scene::{Person, Room, TaskSpec, FACES};
 use crate::span::Spanned;
 use crate::syntax::ast::TaskDecl;
@@ -57,6 +57,7 @@ impl Checker<'_> {
         let subjects: Vec<String> = subjects.into_iter().collect::<Option<_>>()?;
         let people: Vec<String> = people.into_iter().collect::<Option<_>>()?;
         self.check_bases_fit(decl, &subjects, &people, rooms, persons);
+        self.check_effector(decl, &options, &people, persons);
         for (subject, at) in subjects.iter().zip(&decl.subjects) {
             let room = rooms.iter().find(|r| r.holds(subject));
             if let Some(kind) = room.and_then(|r| plugin.validate(r, subject, &options)) {
@@ -76,6 +77,36 @@ impl Checker<'_> {
             }
         }
         Some(tasks)
+    }
+
+    /// An `effector` option must name an effector of every person's body.
+    fn check_effector(
+        &mut self,
+        decl: &TaskDecl,
+        options: &Options,
+        people: &[String],
+        persons: &[Person],
+    ) {
+        let Some(Value::Name(effector)) = options.get("effector") else {
+            return;
+        };
+        let Some(at) = decl.options.iter().find(|o| o.name.value == "effector") else {
+            return;
+        };
+        for person in persons.iter().filter(|p| people.contains(&p.name)) {
+            if person.body.effector_index(effector).is_none() {
+                let names = person.body.effectors.iter().map(|e| e.name.as_str());
+                self.error(Error::new(
+                    ErrorKind::UnknownName {
+                        what: "effector of this person's mannequin",
+                        name: effector.clone(),
+                        suggestion: suggest(effector, names),
+                    },
+                    at.value_span,
+                ));
+                return;
+            }
+        }
     }
 
     /// Each person's base must fit somewhere in the room of each target.

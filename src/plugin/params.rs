@@ -20,6 +20,8 @@ pub enum ParamKind {
     Bool,
     /// A point `(x, y, z)` of lengths.
     Point,
+    /// A name the task resolves itself, such as an effector (`effector eyes`).
+    Name,
     /// Another plugin, by name, with its own option block.
     Plugin(PluginKind),
 }
@@ -34,6 +36,7 @@ impl ParamKind {
             ParamKind::Integer => "a whole number".into(),
             ParamKind::Bool => "true or false".into(),
             ParamKind::Point => "a point (x, y, z)".into(),
+            ParamKind::Name => "a name".into(),
             ParamKind::Plugin(k) => format!("the name of a {}", k.noun()),
         }
     }
@@ -47,6 +50,7 @@ impl ParamKind {
             ParamKind::Integer => "integer",
             ParamKind::Bool => "bool",
             ParamKind::Point => "point",
+            ParamKind::Name => "name",
             ParamKind::Plugin(PluginKind::Solver) => "solver",
             ParamKind::Plugin(PluginKind::Base) => "base",
             ParamKind::Plugin(PluginKind::Task) => "task",
@@ -64,6 +68,7 @@ pub enum Value {
     Integer(i64),
     Bool(bool),
     Point(Vector3<f64>),
+    Name(String),
     Plugin(PluginConfig),
 }
 
@@ -77,6 +82,7 @@ impl Value {
             Value::Integer(v) => v.to_string(),
             Value::Bool(v) => v.to_string(),
             Value::Point(p) => format!("({}, {}, {})", trim(p.x), trim(p.y), trim(p.z)),
+            Value::Name(n) => n.clone(),
             Value::Plugin(c) => c.name.clone(),
         }
     }
@@ -136,6 +142,31 @@ impl ParamSpec {
 
     pub fn boolean(name: &'static str, default: bool, doc: &'static str) -> Self {
         Self::new(name, ParamKind::Bool, Some(Value::Bool(default)), doc)
+    }
+
+    /// A name that may be left out (the plugin then takes a default of its
+    /// own, such as the mannequin's first effector).
+    pub fn optional_name(name: &'static str, doc: &'static str) -> Self {
+        ParamSpec {
+            optional: true,
+            ..Self::new(name, ParamKind::Name, None, doc)
+        }
+    }
+
+    /// An optional length: `None` when the file left it out.
+    pub fn optional_length(name: &'static str, doc: &'static str) -> Self {
+        ParamSpec {
+            optional: true,
+            ..Self::new(name, ParamKind::Length, None, doc)
+        }
+    }
+
+    /// An optional angle: `None` when the file left it out.
+    pub fn optional_angle(name: &'static str, doc: &'static str) -> Self {
+        ParamSpec {
+            optional: true,
+            ..Self::new(name, ParamKind::Angle, None, doc)
+        }
     }
 
     /// A point that must be given.
@@ -261,6 +292,22 @@ impl Options {
         match self.expect(name) {
             Value::Bool(v) => *v,
             v => panic!("option `{name}` is not a bool: {v:?}"),
+        }
+    }
+
+    /// An optional name: `None` when the file left it out.
+    pub fn name_opt(&self, name: &str) -> Option<&str> {
+        match self.get(name)? {
+            Value::Name(n) => Some(n),
+            v => panic!("option `{name}` is not a name: {v:?}"),
+        }
+    }
+
+    /// An optional length or angle: `None` when the file left it out.
+    pub fn number_opt(&self, name: &str) -> Option<f64> {
+        match self.get(name)? {
+            Value::Length(v) | Value::Angle(v) | Value::Number(v) => Some(*v),
+            v => panic!("option `{name}` is not a number: {v:?}"),
         }
     }
 

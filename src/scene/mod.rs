@@ -9,7 +9,7 @@ pub use surface::{Grid, GridCell, Surface, FACES};
 
 use nalgebra::{Point3, Vector3};
 
-use crate::kinematics::Chain;
+use crate::kinematics::{Body, Chain};
 use crate::plugin::{Options, PluginConfig};
 use crate::span::Span;
 
@@ -76,13 +76,26 @@ pub struct Target {
     pub position_mm: Point3<f64>,
 }
 
-/// A person: the mannequin's chain with this person's limits, and a base.
+/// A person: the mannequin's body with this person's limits, and a base.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Person {
     pub name: String,
     pub mannequin: String,
+    /// The whole body, every effector.
+    pub body: Body,
+    /// The chain of the body's first effector, the default for tasks.
     pub chain: Chain,
     pub base: PluginConfig,
+}
+
+impl Person {
+    /// The chain to the effector a task names (`None`: the first).
+    pub fn chain_for(&self, effector: Option<&str>) -> Option<Chain> {
+        match effector {
+            None => Some(self.chain.clone()),
+            Some(name) => self.body.chain_named(Some(name)),
+        }
+    }
 }
 
 /// One task to run: a task plugin on one subject by one person.

@@ -120,6 +120,8 @@ pub enum JointKind {
 pub struct JointDecl {
     pub name: Name,
     pub kind: JointKind,
+    /// The joint it follows, if not the one declared before it.
+    pub after: Option<Name>,
     /// `dh(theta .., d .., alpha .., a ..)`, parameter names as written.
     pub dh: Vec<(Name, Expr)>,
     pub dh_span: Span,
@@ -138,6 +140,8 @@ pub struct LimitsExpr {
 #[derive(Clone, Debug, PartialEq)]
 pub struct EffectorDecl {
     pub name: Name,
+    /// The joint it sits on, if not the last.
+    pub after: Option<Name>,
     pub at: Vec3Expr,
 }
 

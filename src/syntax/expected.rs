@@ -37,6 +37,7 @@ fn describe(rule: Rule) -> Option<&'static str> {
         mannequin => "`mannequin`",
         joint_decl => "`joint`",
         joint_kind => "`revolute` or `prismatic`",
+        after => "`after JOINT`",
         dh => "`dh(...)`",
         dh_param => "a DH parameter (theta, d, alpha, a)",
         limits => "`limits(min, max)`",

@@ -290,10 +290,13 @@ impl Builder {
             match p.as_rule() {
                 Rule::joint_decl => joints.push(self.joint(p)),
                 _ => {
-                    let mut e = p.into_inner();
+                    let mut e = p.into_inner().peekable();
                     let name = self.name(e.next().unwrap());
+                    let after = e
+                        .next_if(|q| q.as_rule() == Rule::after)
+                        .map(|q| self.name(q.into_inner().next().unwrap()));
                     let at = self.vec3(e.next().unwrap());
-                    effectors.push(EffectorDecl { name, at });
+                    effectors.push(EffectorDecl { name, after, at });
                 }
             }
         }
@@ -311,6 +314,7 @@ impl Builder {
         let mut joint = JointDecl {
             name,
             kind: JointKind::Revolute,
+            after: None,
             dh: Vec::new(),
             dh_span: Span::default(),
             limits: Vec::new(),
@@ -321,6 +325,7 @@ impl Builder {
             match p.as_rule() {
                 Rule::joint_kind if p.as_str() == "prismatic" => joint.kind = JointKind::Prismatic,
                 Rule::joint_kind => joint.kind = JointKind::Revolute,
+                Rule::after => joint.after = Some(self.name(p.into_inner().next().unwrap())),
                 Rule::dh => {
                     joint.dh_span = self.span(&p);
                     for param in p.into_inner() {

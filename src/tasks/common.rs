@@ -3,6 +3,7 @@
 //! and seeds that depend on names rather than on the order of tasks.
 
 use crate::collision::Obstacles;
+use crate::kinematics::Chain;
 use crate::plugin::{Base, ParamSpec, PluginKind, Solver, TaskContext};
 use crate::scene::{Person, Room};
 
@@ -22,6 +23,10 @@ pub fn common_params(what: &'static str, seed_doc: &'static str) -> Vec<ParamSpe
         ),
         ParamSpec::length("tolerance", 10.0, tolerance_doc).range(0.001, 1000.0),
         ParamSpec::integer("seed", 1, seed_doc).range(0.0, 9_007_199_254_740_992.0),
+        ParamSpec::optional_name(
+            "effector",
+            "which of the mannequin's effectors (default: its first)",
+        ),
         ParamSpec::boolean(
             "collisions",
             true,
@@ -40,6 +45,8 @@ pub fn common_params(what: &'static str, seed_doc: &'static str) -> Vec<ParamSpe
 /// and the person's options (checked, so every name resolves).
 pub struct Setup<'a> {
     pub person: &'a Person,
+    /// The chain to the effector the task names.
+    pub chain: Chain,
     pub solver_name: &'a str,
     pub solver: Box<dyn Solver>,
     pub base: Box<dyn Base>,
@@ -64,8 +71,12 @@ impl<'a> Setup<'a> {
             .base(&person.base.name)
             .expect("checked base")
             .build(&person.base.options);
+        let chain = person
+            .chain_for(task.options.name_opt("effector"))
+            .expect("checked effector");
         Setup {
             person,
+            chain,
             solver_name: &solver_cfg.name,
             solver,
             base,

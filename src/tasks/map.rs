@@ -69,7 +69,7 @@ impl TaskPlugin for Map {
             .scenario
             .surface(&task.subject)
             .expect("checked surface");
-        let prepared = setup.base.prepare(room, &person.chain);
+        let prepared = setup.base.prepare(room, &setup.chain);
         let obstacles = setup.obstacles(room);
         let step_mm = task.options.length_mm("step");
         let grid = surface.grid(step_mm);
@@ -88,7 +88,7 @@ impl TaskPlugin for Map {
                 };
                 let placement = prepared.reach(&query, setup.solver.as_ref());
                 ctx.progress.advance(1);
-                MapCell::new(cell, &placement, &person.chain, setup.tolerance_mm)
+                MapCell::new(cell, &placement, &setup.chain, setup.tolerance_mm)
             })
             .collect();
         let report = MapReport::new(

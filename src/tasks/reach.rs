@@ -43,12 +43,12 @@ impl TaskPlugin for Reach {
         };
         let placement = setup
             .base
-            .prepare(room, &setup.person.chain)
+            .prepare(room, &setup.chain)
             .reach(&query, setup.solver.as_ref());
         let asked = Asked {
             task,
             person: setup.person,
-            chain: &setup.person.chain,
+            chain: &setup.chain,
             solver: setup.solver_name,
             tolerance_mm: setup.tolerance_mm,
         };
