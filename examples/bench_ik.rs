@@ -171,7 +171,21 @@ fn our_solvers(
         "dls".to_string(),
         dls.build(&Options::defaults(&dls.params())),
     )))
+    .chain(fabrik_rows(registry))
     .collect()
+}
+
+/// `fabrik` with one start and with its default restarts.
+fn fabrik_rows(registry: &Registry) -> Vec<(String, Box<dyn Solver>)> {
+    let fabrik = registry.solver("fabrik").unwrap();
+    let defaults = Options::defaults(&fabrik.params());
+    vec![
+        (
+            "fabrik".to_string(),
+            fabrik.build(&defaults.clone().with("starts", Value::Integer(1))),
+        ),
+        ("fabrik-restarts".to_string(), fabrik.build(&defaults)),
+    ]
 }
 
 /// Time `solve` on every target; it returns the distance left (mm) and the

@@ -59,9 +59,9 @@ impl Obstacles {
     }
 
     /// What the line of sight from `eye` to `target` hits first, and where
-    /// along it (0 at the eye, 1 at the target). Obstacles that hold the
-    /// eye are ignored, and so is the last `end_gap_mm` before the target,
-    /// so that an object resting on a shelf is not hidden by the shelf.
+    /// along it (0 at the eye, 1 at the target; 0 for a box that holds the
+    /// eye). The last `end_gap_mm` before the target is not checked, so
+    /// that an object resting on a shelf is not hidden by the shelf.
     pub fn first_on_sight_line(
         &self,
         eye: &Point3<f64>,
@@ -79,8 +79,7 @@ impl Obstacles {
             .enumerate()
             .filter_map(|(i, o)| {
                 o.shape
-                    .cast_ray(&o.pose_room, &ray, max, false)
-                    .filter(|_| o.shape.cast_ray(&o.pose_room, &ray, 0.0, true).is_none())
+                    .cast_ray(&o.pose_room, &ray, max, true)
                     .map(|toi| (i, toi))
             })
             .min_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)))
@@ -204,5 +203,14 @@ mod tests {
         let above_shelf = Point3::new(350.0, 0.0, 55.0);
         let from_above = Point3::new(350.0, 0.0, 500.0);
         assert_eq!(o.first_on_sight_line(&from_above, &above_shelf, 10.0), None);
+        let inside = Point3::new(105.0, 0.0, 50.0);
+        let (i, at) = o
+            .first_on_sight_line(&inside, &Point3::new(0.0, 0.0, 50.0), 10.0)
+            .unwrap();
+        assert_eq!(
+            (o.name(i), at),
+            ("near", 0.0),
+            "an eye inside a box sees nothing"
+        );
     }
 }

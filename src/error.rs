@@ -98,6 +98,21 @@ pub enum ErrorKind {
     Unsupported { what: String, help: String },
     #[error("{what} belong in the scenario file, not in a file it uses")]
     Misplaced { what: &'static str },
+    #[error("an object of {size} is legible nowhere: its nearest distance {d_min} is beyond its farthest {d_max}")]
+    Illegible {
+        size: String,
+        d_min: String,
+        d_max: String,
+    },
+    #[error("the mannequin `{mannequin}` of `{person}` has no effector `{effector}`")]
+    NoEffector {
+        person: String,
+        mannequin: String,
+        effector: String,
+        available: String,
+    },
+    #[error("effector `{effector}` of `{person}` has no look link")]
+    NoLookLink { effector: String, person: String },
 
     // ------------------------------------------------------------ plugins
     #[error("unknown {kind} `{name}`")]
@@ -132,7 +147,9 @@ impl ErrorKind {
             Dimension { .. } | Operands { .. } | MixedDefaults => "reach::unit",
             OutOfRange { .. } | LimitsReversed { .. } => "reach::range",
             Missing { .. } | Repeated { .. } | TargetOutsideRoom { .. } => "reach::scene",
-            Unsupported { .. } | Misplaced { .. } => "reach::scene",
+            Unsupported { .. } | Misplaced { .. } | NoLookLink { .. } => "reach::scene",
+            Illegible { .. } => "reach::range",
+            NoEffector { .. } => "reach::name",
             TooLarge { .. } => "reach::limit",
             FitsNowhere { .. } => "reach::scene",
             UnknownPlugin { .. } | UnknownOption { .. } | MissingOption { .. } => "reach::plugin",
@@ -170,6 +187,9 @@ impl ErrorKind {
             TooLarge { .. } => "too large".into(),
             FitsNowhere { .. } => "cannot be placed for this task".into(),
             Misplaced { .. } => "in a used file".into(),
+            Illegible { .. } => "for this size".into(),
+            NoLookLink { .. } => "for this person".into(),
+            NoEffector { .. } => "for this person".into(),
             UnknownPlugin { kind, .. } => format!("no {kind} of this name"),
             UnknownOption { .. } => "unknown option".into(),
             MissingOption { .. } => "needs this option".into(),
@@ -203,6 +223,15 @@ impl ErrorKind {
                 "no free floor is large enough for its footprint: check the room size, the obstacles, the zone and the clearance".into(),
             ),
             Misplaced { .. } => Some("move it to the file you run, which can `use` this one".into()),
+            Illegible { .. } => Some(
+                "D_max = size / (5 tan mar_far); the nearest is `near_point`, or size / (5 tan mar_near) when `mar_near` is given: raise the size or lower `near_point`".into(),
+            ),
+            NoEffector { available, .. } => Some(format!(
+                "its effectors: {available}; a gaze needs one whose chain ends in a look link, as `eyes` of std::body's `upper_body`"
+            )),
+            NoLookLink { .. } => Some(
+                "a gaze effector's chain ends in a prismatic joint along the line of sight, as `eyes` of std::body's `upper_body`".into(),
+            ),
             UnknownPlugin {
                 suggestion,
                 available,

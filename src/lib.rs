@@ -38,6 +38,7 @@ pub mod stdlib;
 pub mod syntax;
 pub mod tasks;
 pub mod units;
+pub mod vision;
 
 use rayon::prelude::*;
 

@@ -27,6 +27,7 @@ pub struct Report {
 #[serde(tag = "kind", rename_all = "lowercase")]
 pub enum TaskReport {
     Reach(ReachReport),
+    Gaze(GazeReport),
     Map(MapReport),
 }
 
@@ -34,6 +35,7 @@ impl TaskReport {
     pub fn kind(&self) -> &'static str {
         match self {
             TaskReport::Reach(_) => "reach",
+            TaskReport::Gaze(_) => "gaze",
             TaskReport::Map(_) => "map",
         }
     }
@@ -41,6 +43,7 @@ impl TaskReport {
     pub fn name(&self) -> &str {
         match self {
             TaskReport::Reach(r) => &r.name,
+            TaskReport::Gaze(g) => &g.name,
             TaskReport::Map(m) => &m.name,
         }
     }
@@ -48,6 +51,7 @@ impl TaskReport {
     pub fn person(&self) -> &str {
         match self {
             TaskReport::Reach(r) => &r.person,
+            TaskReport::Gaze(g) => &g.person,
             TaskReport::Map(m) => &m.person,
         }
     }
@@ -56,6 +60,7 @@ impl TaskReport {
     pub fn ok(&self) -> bool {
         match self {
             TaskReport::Reach(r) => r.ok,
+            TaskReport::Gaze(g) => g.ok,
             TaskReport::Map(m) => m.ok,
         }
     }
@@ -178,6 +183,89 @@ impl Posture {
             })
             .collect();
         Posture(values)
+    }
+}
+
+/// Whether the person sees a target well enough to use it, and if not,
+/// why.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct GazeReport {
+    /// The target.
+    pub name: String,
+    pub person: String,
+    /// Visible: within the legible range, on the line of sight (acuity at
+    /// least the threshold), and not occluded.
+    pub ok: bool,
+    /// Why not, the first that applies: `too near`, `too far`, `beyond the
+    /// neck and eye limits`, `too peripheral`, `occluded`, `the head or
+    /// trunk passes through an obstacle`; null if visible.
+    pub reason: Option<&'static str>,
+    /// The obstacle the line of sight meets first, if any.
+    pub occluded_by: Option<String>,
+    /// The obstacle a link of the body (not the line of sight) passes
+    /// through, if collisions are checked.
+    pub collision: Option<String>,
+    /// From the eyes to the target.
+    pub distance_mm: f64,
+    /// The legible range for the object's size (eq. 1-2).
+    pub legible_mm: [f64; 2],
+    /// Angle between the line of sight and the eyes-to-target direction.
+    pub off_axis_deg: f64,
+    /// `e^(-7 |angle|)` (eq. 3) and the least the task accepts.
+    pub acuity: f64,
+    pub acuity_threshold: f64,
+    pub size_mm: f64,
+    pub comfort: f64,
+    pub solver: String,
+    pub effector: String,
+    pub base: BaseReport,
+    pub posture: Posture,
+    pub eyes_mm: [f64; 3],
+    pub target_mm: [f64; 3],
+}
+
+/// What a gaze found, in internal units, for [`GazeReport::new`].
+pub struct Sight {
+    pub reason: Option<&'static str>,
+    pub occluded_by: Option<String>,
+    pub body_collision: Option<String>,
+    pub distance_mm: f64,
+    pub legible_mm: [f64; 2],
+    pub off_axis_rad: f64,
+    pub acuity_threshold: f64,
+    pub size_mm: f64,
+    pub eyes_room_mm: Point3<f64>,
+}
+
+impl GazeReport {
+    pub fn new(
+        asked: &Asked<'_>,
+        placement: &Placement,
+        target: Point3<f64>,
+        sight: Sight,
+    ) -> Self {
+        let q = &placement.solution.q;
+        GazeReport {
+            name: asked.task.subject.clone(),
+            person: asked.person.name.clone(),
+            ok: sight.reason.is_none(),
+            reason: sight.reason,
+            occluded_by: sight.occluded_by,
+            collision: sight.body_collision,
+            distance_mm: mm(sight.distance_mm),
+            legible_mm: sight.legible_mm.map(mm),
+            off_axis_deg: deg(sight.off_axis_rad),
+            acuity: fixed(crate::vision::acuity(sight.off_axis_rad), 4),
+            acuity_threshold: fixed(sight.acuity_threshold, 4),
+            size_mm: mm(sight.size_mm),
+            comfort: fixed(asked.chain.discomfort(q), 4),
+            solver: asked.solver.to_string(),
+            effector: asked.chain.effector_name.clone(),
+            base: BaseReport::new(&asked.person.base.name, &placement.pose),
+            posture: Posture::new(asked.chain, q),
+            eyes_mm: point(sight.eyes_room_mm),
+            target_mm: point(target),
+        }
     }
 }
 

@@ -254,6 +254,8 @@ fn verdict(t: &TaskReport) -> String {
     match t {
         TaskReport::Reach(r) if r.ok => "reachable".into(),
         TaskReport::Reach(_) => "NOT reachable".into(),
+        TaskReport::Gaze(g) if g.ok => "visible".into(),
+        TaskReport::Gaze(g) => format!("NOT visible ({})", g.reason.unwrap_or("?")),
         TaskReport::Map(m) => format!("{:.1} % reachable", m.fraction * 100.0),
     }
 }

@@ -31,7 +31,7 @@ fn registering_adds_to_the_listing_and_validates_options() {
     registry.register_solver(custom_solver::Sampling);
     assert_eq!(
         registry.names(PluginKind::Solver),
-        ["incremental", "dls", "sampling"]
+        ["incremental", "dls", "fabrik", "sampling"]
     );
     let text = custom_solver::SCENARIO.replace("samples 20000", "sample 20000");
     let (_, checked) = reach::check(

@@ -4,7 +4,7 @@
 use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::names::suggest;
-use crate::plugin::{Options, PluginKind, SubjectKind, Value};
+use crate::plugin::{Options, PluginKind, SubjectKind, TaskPlugin, Value};
 use crate::scene::{Person, Room, TaskSpec, FACES};
 use crate::span::Spanned;
 use crate::syntax::ast::TaskDecl;
@@ -57,7 +57,7 @@ impl Checker<'_> {
         let subjects: Vec<String> = subjects.into_iter().collect::<Option<_>>()?;
         let people: Vec<String> = people.into_iter().collect::<Option<_>>()?;
         self.check_bases_fit(decl, &subjects, &people, rooms, persons);
-        self.check_effector(decl, &options, &people, persons);
+        self.check_effector(plugin.as_ref(), decl, &options, &people, persons);
         for (subject, at) in subjects.iter().zip(&decl.subjects) {
             let room = rooms.iter().find(|r| r.holds(subject));
             if let Some(kind) = room.and_then(|r| plugin.validate(r, subject, &options)) {
@@ -79,32 +79,50 @@ impl Checker<'_> {
         Some(tasks)
     }
 
-    /// An `effector` option must name an effector of every person's body.
+    /// An `effector` option must name an effector of every person's body,
+    /// and the task must accept each person's chain to it.
     fn check_effector(
         &mut self,
+        plugin: &dyn TaskPlugin,
         decl: &TaskDecl,
         options: &Options,
         people: &[String],
         persons: &[Person],
     ) {
-        let Some(Value::Name(effector)) = options.get("effector") else {
-            return;
+        let effector = match options.get("effector") {
+            Some(Value::Name(e)) => Some(e.as_str()),
+            _ => None,
         };
-        let Some(at) = decl.options.iter().find(|o| o.name.value == "effector") else {
-            return;
-        };
-        for person in persons.iter().filter(|p| people.contains(&p.name)) {
-            if person.body.effector_index(effector).is_none() {
-                let names = person.body.effectors.iter().map(|e| e.name.as_str());
+        let at = decl.options.iter().find(|o| o.name.value == "effector");
+        for (person, name) in people.iter().zip(&decl.persons) {
+            let Some(person) = persons.iter().find(|p| &p.name == person) else {
+                continue;
+            };
+            let Some(chain) = person.chain_for(effector) else {
+                let Some(effector) = effector else {
+                    continue;
+                };
+                let names: Vec<&str> = person
+                    .body
+                    .effectors
+                    .iter()
+                    .map(|e| e.name.as_str())
+                    .collect();
+                // Where the file names the effector, or else at the person.
+                let span = at.map_or(name.span, |o| o.value_span);
                 self.error(Error::new(
-                    ErrorKind::UnknownName {
-                        what: "effector of this person's mannequin",
-                        name: effector.clone(),
-                        suggestion: suggest(effector, names),
+                    ErrorKind::NoEffector {
+                        person: person.name.clone(),
+                        mannequin: person.mannequin.clone(),
+                        effector: effector.to_string(),
+                        available: names.join(", "),
                     },
-                    at.value_span,
+                    span,
                 ));
-                return;
+                continue;
+            };
+            if let Some(kind) = plugin.validate_chain(&person.name, &chain, options) {
+                self.error(Error::new(kind, name.span));
             }
         }
     }

@@ -4,7 +4,7 @@
 use std::fmt::Write;
 
 use crate::plugin::{FormatPlugin, ParamSpec, Plugin};
-use crate::report::{MapReport, ReachReport, Report, TaskReport};
+use crate::report::{GazeReport, MapReport, ReachReport, Report, TaskReport};
 
 pub struct Text;
 
@@ -37,6 +37,7 @@ impl FormatPlugin for Text {
         for task in &report.tasks {
             match task {
                 TaskReport::Reach(r) => detail(&mut out, r),
+                TaskReport::Gaze(g) => gaze_detail(&mut out, g),
                 TaskReport::Map(m) => map_detail(&mut out, m),
             }
         }
@@ -68,6 +69,22 @@ fn table(report: &Report) -> String {
                 format!("{:.1} mm", r.distance_mm),
                 r.iterations.to_string(),
                 format!("{:.2}", r.comfort),
+            ],
+            TaskReport::Gaze(g) => [
+                "gaze".to_string(),
+                g.name.clone(),
+                g.person.clone(),
+                match g.reason {
+                    None => "visible".into(),
+                    Some("occluded") => format!(
+                        "NOT visible: behind {}",
+                        g.occluded_by.as_deref().unwrap_or("?")
+                    ),
+                    Some(reason) => format!("NOT visible: {reason}"),
+                },
+                format!("{:.1} mm", g.distance_mm),
+                "-".into(),
+                format!("{:.2}", g.comfort),
             ],
             TaskReport::Map(m) => [
                 "map".to_string(),
@@ -128,6 +145,39 @@ fn detail(out: &mut String, r: &ReachReport) {
     if let Some(obstacle) = &r.collision {
         let _ = writeln!(out, "  a link passes through `{obstacle}`");
     }
+}
+
+fn gaze_detail(out: &mut String, g: &GazeReport) {
+    let b = &g.base;
+    let _ = writeln!(
+        out,
+        "\n{} seen by {} ({}): {} base at ({:.0}, {:.0}, {:.0}) mm, heading {:.0} deg",
+        g.name, g.person, g.solver, b.kind, b.x_mm, b.y_mm, b.z_mm, b.heading_deg
+    );
+    let _ = writeln!(
+        out,
+        "  eyes at ({:.0}, {:.0}, {:.0}) mm, {:.0} mm from the target (legible for {:.0} mm from {:.0} to {:.0} mm), {:.1} deg off the line of sight (acuity {:.2}, needs {:.2})",
+        g.eyes_mm[0],
+        g.eyes_mm[1],
+        g.eyes_mm[2],
+        g.distance_mm,
+        g.size_mm,
+        g.legible_mm[0],
+        g.legible_mm[1],
+        g.off_axis_deg,
+        g.acuity,
+        g.acuity_threshold
+    );
+    if let Some(obstacle) = &g.occluded_by {
+        let _ = writeln!(out, "  the line of sight meets `{obstacle}`");
+    }
+    let posture: Vec<String> = g
+        .posture
+        .0
+        .iter()
+        .map(|(j, v)| format!("{j} {v:.1}"))
+        .collect();
+    let _ = writeln!(out, "  posture (deg; look in mm): {}", posture.join(", "));
 }
 
 fn map_detail(out: &mut String, m: &MapReport) {

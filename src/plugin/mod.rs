@@ -145,6 +145,12 @@ impl BasePose {
         Point3::new(c * d.x + s * d.y, -s * d.x + c * d.y, d.z)
     }
 
+    /// A direction of the base frame in the room.
+    pub fn direction_to_room(&self, v: &nalgebra::Vector3<f64>) -> nalgebra::Vector3<f64> {
+        let (s, c) = self.heading_rad.sin_cos();
+        nalgebra::Vector3::new(c * v.x - s * v.y, s * v.x + c * v.y, v.z)
+    }
+
     /// A point of the base frame in the room.
     pub fn to_room(&self, base_point: &Point3<f64>) -> Point3<f64> {
         let (s, c) = self.heading_rad.sin_cos();
@@ -247,6 +253,16 @@ pub trait TaskPlugin: Plugin {
         &self,
         _room: &Room,
         _subject: &str,
+        _options: &Options,
+    ) -> Option<crate::error::ErrorKind> {
+        None
+    }
+    /// A check of the task for one person's chain to the effector the task
+    /// uses (a gaze needs a look link); reported at the person's name.
+    fn validate_chain(
+        &self,
+        _person: &str,
+        _chain: &Chain,
         _options: &Options,
     ) -> Option<crate::error::ErrorKind> {
         None

@@ -153,6 +153,16 @@ impl ParamSpec {
         }
     }
 
+    /// A name with a default.
+    pub fn name(name: &'static str, default: &str, doc: &'static str) -> Self {
+        Self::new(
+            name,
+            ParamKind::Name,
+            Some(Value::Name(default.to_string())),
+            doc,
+        )
+    }
+
     /// An optional length: `None` when the file left it out.
     pub fn optional_length(name: &'static str, doc: &'static str) -> Self {
         ParamSpec {

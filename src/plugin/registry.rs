@@ -32,10 +32,12 @@ impl Registry {
         let mut r = Registry::default();
         r.register_solver(crate::solvers::Incremental);
         r.register_solver(crate::solvers::Dls);
+        r.register_solver(crate::solvers::Fabrik);
         r.register_base(crate::bases::Fixed);
         r.register_base(crate::bases::Trolley);
         r.register_base(crate::bases::Wheelchair);
         r.register_task(crate::tasks::Reach);
+        r.register_task(crate::tasks::Gaze);
         r.register_task(crate::tasks::Map);
         r.register_format(crate::output::Text);
         r.register_format(crate::output::Json);

@@ -1,9 +1,11 @@
 //! Tasks: what a scenario asks of a person, each a plugin.
 
 mod common;
+mod gaze;
 mod map;
 mod reach;
 
 pub use common::mix_seed;
+pub use gaze::Gaze;
 pub use map::Map;
 pub use reach::Reach;

@@ -1,0 +1,95 @@
+//! A DH chain seen as FABRIK sees it: points joined by bones. The points
+//! are the base, every joint frame origin that lies away from the one
+//! before it, and the effector. A bone's group is the joints whose axes
+//! pass through its root and that turn it: a revolute joint that slides
+//! its frame along its own axis (`a` = 0, `d` != 0) ends the bone before it
+//! without turning it, and starts the next group, since its axis also
+//! passes through that bone's end (the shoulder's flexion axis runs along
+//! the shoulder's offset from the spine). A bone ending in a prismatic
+//! joint (the eyes' look link) has a length between limits.
+
+use crate::kinematics::{Chain, JointKind};
+
+/// Where a bone ends.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum End {
+    /// The origin of the frame after this joint.
+    Frame(usize),
+    /// The effector point.
+    Effector,
+}
+
+/// One bone and the joints that turn it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Bone {
+    /// Indices into the chain's joints, in order (may be empty: the bone
+    /// is then placed by the joints of earlier bones alone).
+    pub joints: std::ops::Range<usize>,
+    pub end: End,
+    /// The bone's length, or its least and greatest for a prismatic bone.
+    pub length_mm: [f64; 2],
+}
+
+/// The bones of a chain, root first.
+pub fn bones(chain: &Chain) -> Vec<Bone> {
+    let mut bones = Vec::new();
+    let mut start = 0;
+    for (j, joint) in chain.joints.iter().enumerate() {
+        let dh = &joint.dh;
+        let prismatic = joint.kind == JointKind::Prismatic;
+        if !prismatic && dh.a_mm == 0.0 && dh.d_mm == 0.0 {
+            continue;
+        }
+        let slides_along_axis = !prismatic && dh.a_mm == 0.0;
+        let length_mm = if prismatic {
+            let at = |q: f64| dh.a_mm.hypot(dh.d_mm + q);
+            let (lo, hi) = (at(joint.min), at(joint.max));
+            [lo.min(hi), lo.max(hi)]
+        } else {
+            [dh.a_mm.hypot(dh.d_mm); 2]
+        };
+        let group_end = if slides_along_axis { j } else { j + 1 };
+        bones.push(Bone {
+            joints: start..group_end,
+            end: End::Frame(j),
+            length_mm,
+        });
+        start = group_end;
+    }
+    let offset = chain.effector_mm.norm();
+    if offset > 0.0 {
+        bones.push(Bone {
+            joints: start..chain.joints.len(),
+            end: End::Effector,
+            length_mm: [offset; 2],
+        });
+    }
+    bones
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_arm_has_a_trunk_shoulder_upper_arm_forearm_and_hand() {
+        let chain = crate::stdlib::chain("arm", "right_arm").unwrap();
+        let b = bones(&chain);
+        let groups: Vec<_> = b.iter().map(|b| b.joints.clone()).collect();
+        // The trunk; the shoulder's offset (turned by the trunk alone); the
+        // upper arm by flexion and abduction; the forearm by the humerus's
+        // rotation and the elbow; the hand by the forearm and wrist.
+        assert_eq!(groups, [0..3, 3..3, 3..5, 5..7, 7..10]);
+        assert_eq!(b[4].end, End::Effector);
+    }
+
+    #[test]
+    fn the_look_link_is_a_bone_of_varying_length() {
+        let body = crate::stdlib::body("body", "upper_body").unwrap();
+        let eyes = body.chain_named(Some("eyes")).unwrap();
+        let b = bones(&eyes);
+        let look = b.last().unwrap();
+        assert_eq!(look.joints, 6..9, "eye pitch, eye yaw and the look link");
+        assert_eq!(look.length_mm, [0.0, 30_000.0]);
+    }
+}

@@ -1,0 +1,113 @@
+//! The `fabrik` solver: FABRIK (Aristidou and Lasenby) on DH chains, with
+//! joint limits and obstacle avoidance after the visibility paper. The
+//! chain is read as bones (`bones.rs`); one solve alternates backward and
+//! forward passes (`pass.rs`), moving bones out of obstacles on the way
+//! (`avoid.rs`). Like `incremental`, it runs from several starts and keeps
+//! the most comfortable posture that reaches.
+
+mod avoid;
+mod bones;
+mod pass;
+
+pub use bones::{bones, Bone, End};
+
+use rand_chacha::rand_core::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+
+use crate::plugin::{IkProblem, IkSolution, Options, ParamSpec, Plugin, Solver, SolverPlugin};
+use crate::solvers::starts::Starts;
+
+/// The plugin `fabrik`.
+pub struct Fabrik;
+
+/// The solver's settings, from its option block.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FabrikSettings {
+    pub starts: u32,
+    pub neutral_start: bool,
+    pub max_iterations: u32,
+    pub stall: u32,
+    pub sweeps: u32,
+    pub samples: u32,
+    pub avoid_obstacles: bool,
+    pub kicks: u32,
+    pub kick: f64,
+}
+
+impl Plugin for Fabrik {
+    fn name(&self) -> &'static str {
+        "fabrik"
+    }
+
+    fn doc(&self) -> &'static str {
+        "FABRIK with joint limits and obstacle avoidance (visibility paper)"
+    }
+
+    fn params(&self) -> Vec<ParamSpec> {
+        use ParamSpec as P;
+        vec![
+            P::integer("starts", 4, "starting postures; the most comfortable that reaches is kept")
+                .range(1.0, 1000.0),
+            P::boolean("neutral_start", true, "the first start is the neutral posture, the others random"),
+            P::integer("max_iterations", 400, "backward and forward passes per start, at most")
+                .range(1.0, 1e6),
+            P::integer("stall", 4, "stop after this many passes in a row that did not bring the effector closer")
+                .range(1.0, 1e6),
+            P::integer("sweeps", 2, "turns of each group's joints per forward pass").range(1.0, 100.0),
+            P::integer("samples", 7, "values per joint when a bone must be moved out of an obstacle")
+                .range(2.0, 100.0),
+            P::integer("kicks", 40, "when a start stalls short of the target, kick the posture and go on, this many times")
+                .range(0.0, 1000.0),
+            P::number("kick", 0.3, "a kick moves each joint by up to this fraction of its range").range(0.0, 1.0),
+            P::boolean("avoid_obstacles", true, "move bones out of obstacles, and prefer clear postures among starts"),
+        ]
+    }
+}
+
+impl SolverPlugin for Fabrik {
+    fn build(&self, o: &Options) -> Box<dyn Solver> {
+        Box::new(FabrikSolver {
+            settings: FabrikSettings {
+                starts: o.integer("starts") as u32,
+                neutral_start: o.boolean("neutral_start"),
+                max_iterations: o.integer("max_iterations") as u32,
+                stall: o.integer("stall") as u32,
+                sweeps: o.integer("sweeps") as u32,
+                samples: o.integer("samples") as u32,
+                avoid_obstacles: o.boolean("avoid_obstacles"),
+                kicks: o.integer("kicks") as u32,
+                kick: o.number("kick"),
+            },
+        })
+    }
+}
+
+/// The configured solver.
+pub struct FabrikSolver {
+    pub settings: FabrikSettings,
+}
+
+impl Solver for FabrikSolver {
+    fn solve(&self, problem: &IkProblem<'_>) -> IkSolution {
+        let bones = bones(problem.chain);
+        let starts = Starts::new(problem.chain, problem.seed, self.settings.neutral_start);
+        // Kicks draw from their own stream, so a start's posture does not
+        // depend on how many kicks the starts before it took.
+        let mut rng = ChaCha8Rng::seed_from_u64(problem.seed ^ 0x6b69_636b);
+        let mut best: Option<(IkSolution, f64)> = None;
+        let mut iterations = 0;
+        for start in starts.take(self.settings.starts as usize) {
+            let solution = pass::Pass::new(&self.settings, problem, &bones, start).run(&mut rng);
+            iterations += solution.iterations;
+            let comfort = problem.chain.discomfort(&solution.q);
+            if best.as_ref().is_none_or(|(b, b_comfort)| {
+                solution.preferred_to(comfort, b, *b_comfort, problem.tolerance_mm)
+            }) {
+                best = Some((solution, comfort));
+            }
+        }
+        let mut solution = best.expect("at least one start").0;
+        solution.iterations = iterations;
+        solution
+    }
+}

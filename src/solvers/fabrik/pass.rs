@@ -1,0 +1,275 @@
+//! One FABRIK solve from one starting posture (Aristidou and Lasenby): the
+//! backward pass puts the effector on the target and each point at its
+//! bone's length from the next, towards where it was; the forward pass
+//! rebuilds the chain from the base, turning each bone's group of joints
+//! so that the bone points at its next point from the backward pass.
+//!
+//! The forward pass works in joint space: within a group, each joint in
+//! turn takes the angle (clamped to its limits) that best turns the bone's
+//! end towards its goal, a few sweeps over the group. Joint limits hold
+//! exactly after every update, posture and report are joint angles, and a
+//! bone has no preferred axis, so there is no singularity at 90 degrees;
+//! the paper's cone and twist constraints on bone directions are what
+//! these per-joint limits become for a DH chain. A bone that then passes
+//! through an obstacle is moved by `avoid.rs`.
+
+use nalgebra::{IsometryMatrix3, Point3, Rotation3, Unit, Vector3};
+use rand_chacha::rand_core::Rng;
+use rand_chacha::ChaCha8Rng;
+
+use super::avoid;
+use super::bones::{Bone, End};
+use super::FabrikSettings;
+use crate::kinematics::{Chain, JointKind};
+use crate::plugin::{IkProblem, IkSolution};
+
+/// The working state of one solve.
+pub(super) struct Pass<'a> {
+    pub settings: &'a FabrikSettings,
+    pub problem: &'a IkProblem<'a>,
+    pub bones: &'a [Bone],
+    pub q: Vec<f64>,
+    /// The base and each bone's end, in the base frame.
+    pub points: Vec<Point3<f64>>,
+    /// Where the backward pass wants each point.
+    pub goals: Vec<Point3<f64>>,
+    /// Joint axes of the group being aligned (scratch).
+    axes: Vec<Vector3<f64>>,
+}
+
+impl<'a> Pass<'a> {
+    pub fn new(
+        settings: &'a FabrikSettings,
+        problem: &'a IkProblem<'a>,
+        bones: &'a [Bone],
+        q: Vec<f64>,
+    ) -> Self {
+        let n = bones.len() + 1;
+        let mut pass = Pass {
+            settings,
+            problem,
+            bones,
+            q,
+            points: vec![Point3::origin(); n],
+            goals: vec![Point3::origin(); n],
+            axes: Vec::new(),
+        };
+        pass.forward_with(false, false);
+        pass
+    }
+
+    pub fn chain(&self) -> &'a Chain {
+        self.problem.chain
+    }
+
+    /// Iterate until the effector is within tolerance (and clear of
+    /// obstacles), or stops improving; when it stalls short of the target,
+    /// the posture is kicked (every joint moved by up to `kick` of its
+    /// range, seeded) and the passes go on, up to `kicks` times. The best
+    /// posture seen is returned.
+    pub fn run(mut self, rng: &mut ChaCha8Rng) -> IkSolution {
+        let s = self.settings;
+        let tolerance = self.problem.tolerance_mm;
+        let avoiding = s.avoid_obstacles && self.problem.obstacles.is_some();
+        let mut best: Option<(bool, f64, Vec<f64>)> = None;
+        let mut progress = f64::INFINITY;
+        let (mut stalled, mut iterations, mut kicks) = (0, 0, 0);
+        while iterations < s.max_iterations {
+            let d = self.effector_distance();
+            let clear = !avoiding || self.problem.collision(&self.q).is_none();
+            let reaches = d <= tolerance && clear;
+            if best
+                .as_ref()
+                .is_none_or(|(b_reaches, b_d, _)| (reaches, -d) > (*b_reaches, -*b_d))
+            {
+                best = Some((reaches, d, self.q.clone()));
+            }
+            if reaches {
+                break;
+            }
+            stalled = if d < progress * (1.0 - 1e-4) {
+                0
+            } else {
+                stalled + 1
+            };
+            progress = progress.min(d);
+            if stalled >= s.stall {
+                if kicks == s.kicks {
+                    break;
+                }
+                self.kick(rng);
+                (kicks, stalled, progress) = (kicks + 1, 0, f64::INFINITY);
+                continue;
+            }
+            self.backward();
+            self.forward(avoiding);
+            iterations += 1;
+        }
+        let (_, _, q) = best.expect("at least one posture seen");
+        let chain = self.chain();
+        IkSolution {
+            distance_mm: (chain.effector(&q) - self.problem.target_mm).norm(),
+            collision: if s.avoid_obstacles {
+                self.problem.collision(&q)
+            } else {
+                None
+            },
+            q,
+            iterations: u64::from(iterations),
+        }
+    }
+
+    /// Move every joint by a seeded random amount, up to `kick` of its
+    /// range, within its limits.
+    fn kick(&mut self, rng: &mut ChaCha8Rng) {
+        let chain = self.chain();
+        for (q, joint) in self.q.iter_mut().zip(&chain.joints) {
+            let u = (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
+            *q = joint.clamp(*q + (2.0 * u - 1.0) * self.settings.kick * joint.range());
+        }
+        self.forward_with(false, false);
+    }
+
+    fn effector_distance(&self) -> f64 {
+        (self.points[self.points.len() - 1] - self.problem.target_mm).norm()
+    }
+
+    /// Goals from the target back to the base, each at its bone's length
+    /// from the next goal, towards the point's present place.
+    fn backward(&mut self) {
+        let m = self.bones.len();
+        self.goals[m] = self.problem.target_mm;
+        for k in (0..m).rev() {
+            let from = self.goals[k + 1];
+            let towards = self.points[k] - from;
+            let distance = towards.norm();
+            let [lo, hi] = self.bones[k].length_mm;
+            self.goals[k] = if distance > 1e-12 {
+                from + towards * (distance.clamp(lo, hi) / distance)
+            } else {
+                self.points[k]
+            };
+        }
+    }
+
+    /// Rebuild the points from the base, each group first turning its bone
+    /// towards its goal (and, `avoiding`, away from obstacles).
+    fn forward(&mut self, avoiding: bool) {
+        self.forward_with(true, avoiding);
+    }
+
+    /// Rebuild the points from the base; with `align`, turning each group.
+    fn forward_with(&mut self, align: bool, avoiding: bool) {
+        let mut frame = IsometryMatrix3::identity();
+        for k in 0..self.bones.len() {
+            let bone = &self.bones[k];
+            if align && !bone.joints.is_empty() {
+                self.align(k, &frame);
+                if avoiding {
+                    avoid::avoid(self, k, &frame);
+                }
+            }
+            frame = self.advance(k, &frame);
+        }
+    }
+
+    /// The frame after bone `k`'s group, from the frame before it; records
+    /// the bone's end in `points[k + 1]`.
+    pub fn advance(&mut self, k: usize, before: &IsometryMatrix3<f64>) -> IsometryMatrix3<f64> {
+        let bone = &self.bones[k];
+        let chain = self.chain();
+        let frame = bone
+            .joints
+            .clone()
+            .fold(*before, |f, j| f * chain.joints[j].transform(self.q[j]));
+        self.points[k + 1] = bone_end(chain, bone, &frame, &self.q);
+        frame
+    }
+
+    /// Turn bone `k`'s group so that the bone's end comes nearest its goal.
+    fn align(&mut self, k: usize, before: &IsometryMatrix3<f64>) {
+        let chain = self.chain();
+        let bone = &self.bones[k];
+        let pivot = self.points[k];
+        let goal = self.goals[k + 1];
+        self.axes.clear();
+        let mut frame = *before;
+        for j in bone.joints.clone() {
+            self.axes.push(frame.rotation * Vector3::z());
+            frame *= chain.joints[j].transform(self.q[j]);
+        }
+        let mut end = bone_end(chain, bone, &frame, &self.q);
+        for _ in 0..self.settings.sweeps {
+            for (i, j) in bone.joints.clone().enumerate() {
+                let joint = &chain.joints[j];
+                let axis = self.axes[i];
+                let moved = match joint.kind {
+                    JointKind::Revolute => best_turn(axis, end - pivot, goal - pivot),
+                    JointKind::Prismatic => axis.dot(&(goal - end)),
+                };
+                let q = joint.clamp(self.q[j] + moved);
+                let step = q - self.q[j];
+                self.q[j] = q;
+                match joint.kind {
+                    JointKind::Prismatic => end += axis * step,
+                    JointKind::Revolute => {
+                        let turn = Rotation3::from_axis_angle(&Unit::new_unchecked(axis), step);
+                        end = pivot + turn * (end - pivot);
+                        for later in &mut self.axes[i + 1..] {
+                            *later = turn * *later;
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Where bone `bone` ends, given the frame after its group.
+pub fn bone_end(
+    chain: &Chain,
+    bone: &Bone,
+    after_group: &IsometryMatrix3<f64>,
+    q: &[f64],
+) -> Point3<f64> {
+    match bone.end {
+        // The joint that slides along its own axis starts the next group:
+        // its offset is carried here, its turn is not needed for the end.
+        End::Frame(j) if j == bone.joints.end => Point3::from(
+            (after_group * chain.joints[j].transform(q[j]))
+                .translation
+                .vector,
+        ),
+        End::Frame(_) => Point3::from(after_group.translation.vector),
+        End::Effector => after_group * Point3::from(chain.effector_mm),
+    }
+}
+
+/// The turn about unit `axis` that brings direction `from` nearest
+/// direction `to` (both seen from a point on the axis): the angle between
+/// their projections on the plane across the axis.
+fn best_turn(axis: Vector3<f64>, from: Vector3<f64>, to: Vector3<f64>) -> f64 {
+    let a = from - axis * axis.dot(&from);
+    let b = to - axis * axis.dot(&to);
+    if a.norm_squared() < 1e-18 || b.norm_squared() < 1e-18 {
+        return 0.0;
+    }
+    axis.dot(&a.cross(&b)).atan2(a.dot(&b))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn best_turn_is_the_signed_angle_across_the_axis() {
+        let z = Vector3::z();
+        let t = best_turn(z, Vector3::x(), Vector3::new(0.0, 2.0, 5.0));
+        assert!((t - std::f64::consts::FRAC_PI_2).abs() < 1e-12);
+        assert_eq!(
+            best_turn(z, z, Vector3::x()),
+            0.0,
+            "along the axis: no turn"
+        );
+    }
+}

@@ -1,0 +1,269 @@
+//! The `gaze` task: can this person see the target well enough to use it?
+//! After the visibility paper: the eyes are an effector whose chain ends in
+//! a look link, a prismatic joint along the line of sight, kept between the
+//! nearest and farthest legible distances of an object of the task's `size`
+//! (eq. 1-2). The solver drives the look link's end onto the target within
+//! the neck and eye limits; then the acuity at the angle left between the
+//! line of sight and the target (eq. 3) must reach the threshold, and a ray
+//! from the eyes to the target must meet no obstacle.
+
+use nalgebra::{Point3, Vector3};
+
+use super::common::{common_params, mix_seed, Setup};
+use crate::collision::{Obstacles, PlacedObstacles};
+use crate::error::ErrorKind;
+use crate::kinematics::{Chain, JointKind};
+use crate::plugin::{
+    Options, ParamSpec, Placement, Plugin, PluginKind, ReachQuery, Search, SubjectKind,
+    TaskContext, TaskPlugin,
+};
+use crate::report::{Asked, GazeReport, Sight, TaskReport};
+use crate::scene::Room;
+use crate::vision::{self, ARCMIN_RAD};
+
+/// The plugin `gaze`.
+pub struct Gaze;
+
+impl Plugin for Gaze {
+    fn name(&self) -> &'static str {
+        "gaze"
+    }
+
+    fn doc(&self) -> &'static str {
+        "can the person see the target: legible distance, eye and neck limits, acuity, line of sight"
+    }
+
+    fn params(&self) -> Vec<ParamSpec> {
+        let mut params = common_params(
+            "target",
+            "seeds the solver's random starts (mixed with target and person)",
+        );
+        for p in &mut params {
+            match p.name {
+                "effector" => {
+                    *p = ParamSpec::name(
+                        "effector",
+                        "eyes",
+                        "the effector whose chain ends in the look link",
+                    )
+                }
+                // FABRIK turns the neck and eyes before the trunk, as people
+                // do; the incremental solver moves every joint alike.
+                "solver" => {
+                    *p = ParamSpec::plugin(
+                        "solver",
+                        PluginKind::Solver,
+                        "fabrik",
+                        "the IK solver and its options",
+                    )
+                }
+                _ => {}
+            }
+        }
+        params.extend([
+            ParamSpec::length("size", 20.0, "the object's size S (a letter's height, a dial)").range(0.01, 10_000.0),
+            ParamSpec::angle("mar_far", ARCMIN_RAD, "minimum angle of resolution, far vision (eq. 1)")
+                .range(0.01 * ARCMIN_RAD, 600.0 * ARCMIN_RAD),
+            ParamSpec::optional_angle(
+                "mar_near",
+                "minimum angle of resolution, near vision (eq. 2); if left out the nearest distance is `near_point`",
+            ),
+            ParamSpec::length("near_point", 250.0, "the nearest distance the eyes focus at when `mar_near` is not given")
+                .range(0.0, 10_000.0),
+            ParamSpec::number("acuity", 0.5, "the least acuity e^(-7 |angle|) at which the target counts as seen (eq. 3)")
+                .range(0.001, 1.0),
+        ]);
+        params
+    }
+}
+
+/// The legible range `[D_min, D_max]` the options give.
+fn legible_mm(options: &Options) -> [f64; 2] {
+    let size = options.length_mm("size");
+    let d_max = vision::d_max_mm(size, options.angle_rad("mar_far"));
+    let d_min = match options.number_opt("mar_near") {
+        Some(mar_near) => vision::d_min_mm(size, mar_near),
+        None => options.length_mm("near_point"),
+    };
+    [d_min, d_max]
+}
+
+impl TaskPlugin for Gaze {
+    fn subject(&self) -> SubjectKind {
+        SubjectKind::Target
+    }
+
+    fn validate(&self, _room: &Room, _subject: &str, options: &Options) -> Option<ErrorKind> {
+        let [d_min, d_max] = legible_mm(options);
+        (d_min >= d_max).then(|| ErrorKind::Illegible {
+            size: format!("{}mm", options.length_mm("size")),
+            d_min: format!("{d_min:.0}mm"),
+            d_max: format!("{d_max:.0}mm"),
+        })
+    }
+
+    fn validate_chain(&self, person: &str, chain: &Chain, _: &Options) -> Option<ErrorKind> {
+        let ends_in_look = chain
+            .joints
+            .last()
+            .is_some_and(|j| j.kind == JointKind::Prismatic);
+        (!ends_in_look).then(|| ErrorKind::NoLookLink {
+            effector: chain.effector_name.clone(),
+            person: person.to_string(),
+        })
+    }
+
+    fn run(&self, ctx: &TaskContext<'_>) -> TaskReport {
+        let task = ctx.task;
+        let setup = Setup::new(ctx);
+        let (room, target) = ctx.scenario.target(&task.subject).expect("checked target");
+        let legible = legible_mm(&task.options);
+        let chain = with_look_range(&setup.chain, legible);
+        // With collisions on, the look link is a link like any other: the
+        // solver and the base prefer a posture whose line of sight is clear.
+        let obstacles = setup.obstacles(room);
+        let query = ReachQuery {
+            target_room_mm: target.position_mm,
+            tolerance_mm: setup.tolerance_mm,
+            seed: mix_seed(setup.seed, &[&task.subject, &setup.person.name, "gaze"]),
+            search: Search::MostComfortable,
+            obstacles: obstacles.as_ref(),
+        };
+        let placement = setup
+            .base
+            .prepare(room, &chain)
+            .reach(&query, setup.solver.as_ref());
+        // The sight line is always checked, by a ray cast that names the
+        // first obstacle it meets.
+        let all = obstacles.unwrap_or_else(|| Obstacles::new(room, 0.0));
+        let threshold = task.options.number("acuity");
+        let mut sight = look(
+            &chain,
+            &placement,
+            target.position_mm,
+            legible,
+            &all,
+            &task.options,
+        );
+        sight.body_collision =
+            obstacles_met_by_body(&chain, &placement, setup.collisions.then_some(&all));
+        sight.reason = sight.reason(
+            setup.tolerance_mm,
+            placement.solution.distance_mm,
+            threshold,
+        );
+        sight.acuity_threshold = threshold;
+        let asked = Asked {
+            task,
+            person: setup.person,
+            chain: &chain,
+            solver: setup.solver_name,
+            tolerance_mm: setup.tolerance_mm,
+        };
+        TaskReport::Gaze(GazeReport::new(
+            &asked,
+            &placement,
+            target.position_mm,
+            sight,
+        ))
+    }
+}
+
+/// The chain with its look link limited to the legible range.
+fn with_look_range(chain: &Chain, [d_min, d_max]: [f64; 2]) -> Chain {
+    let mut chain = chain.clone();
+    if let Some(look) = chain.joints.last_mut() {
+        look.min = d_min - look.dh.d_mm;
+        look.max = d_max - look.dh.d_mm;
+        look.neutral = look.neutral.clamp(look.min, look.max);
+    }
+    chain
+}
+
+/// Where the eyes are and what they see in the placed posture; `reason`
+/// is filled in by [`Sight::reason`].
+fn look(
+    chain: &Chain,
+    placement: &Placement,
+    target: Point3<f64>,
+    legible_mm: [f64; 2],
+    obstacles: &Obstacles,
+    options: &Options,
+) -> Sight {
+    let q = &placement.solution.q;
+    // The eyes: the frame before the look link, looking along its z axis.
+    let eye_frame = chain.end_frame(&q[..q.len() - 1]);
+    let eyes_room = placement
+        .pose
+        .to_room(&Point3::from(eye_frame.translation.vector));
+    let look_room = placement
+        .pose
+        .direction_to_room(&(eye_frame.rotation * Vector3::z()));
+    let to_target = target - eyes_room;
+    let size_mm = options.length_mm("size");
+    let occluded_by = obstacles
+        .first_on_sight_line(&eyes_room, &target, size_mm / 2.0)
+        .map(|(i, _)| obstacles.name(i).to_string());
+    Sight {
+        reason: None,
+        occluded_by,
+        body_collision: None,
+        distance_mm: to_target.norm(),
+        legible_mm,
+        off_axis_rad: look_room.angle(&to_target),
+        acuity_threshold: 0.0,
+        size_mm,
+        eyes_room_mm: eyes_room,
+    }
+}
+
+/// The first obstacle the body's links (all but the look link) pass
+/// through, when collisions are checked.
+fn obstacles_met_by_body(
+    chain: &Chain,
+    placement: &Placement,
+    obstacles: Option<&Obstacles>,
+) -> Option<String> {
+    let obstacles = obstacles?;
+    let mut points = chain.link_points(&placement.solution.q);
+    points.pop();
+    let placed = PlacedObstacles {
+        obstacles,
+        base_pose: placement.pose,
+    };
+    placed
+        .polyline_hit(&points, 0.0)
+        .map(|i| obstacles.name(i).to_string())
+}
+
+impl Sight {
+    /// Why the target is not seen, the first that applies, or `None`.
+    fn reason(
+        &self,
+        tolerance_mm: f64,
+        solver_distance_mm: f64,
+        threshold: f64,
+    ) -> Option<&'static str> {
+        let [d_min, d_max] = self.legible_mm;
+        if self.distance_mm < d_min {
+            Some("too near")
+        } else if self.distance_mm > d_max {
+            Some("too far")
+        } else if vision::acuity(self.off_axis_rad) < threshold {
+            // The solver could not bring the line of sight onto the target:
+            // the neck and eyes stop short; else it was near enough for the
+            // solver but not for the eyes.
+            if solver_distance_mm > tolerance_mm {
+                Some("beyond the neck and eye limits")
+            } else {
+                Some("too peripheral")
+            }
+        } else if self.occluded_by.is_some() {
+            Some("occluded")
+        } else if self.body_collision.is_some() {
+            Some("the head or trunk passes through an obstacle")
+        } else {
+            None
+        }
+    }
+}
