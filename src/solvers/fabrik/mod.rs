@@ -3,13 +3,16 @@
 //! chain is read as bones (`bones.rs`); one solve alternates backward and
 //! forward passes (`pass.rs`), moving bones out of obstacles on the way
 //! (`avoid.rs`). Like `incremental`, it runs from several starts and keeps
-//! the most comfortable posture that reaches.
+//! the most comfortable posture that reaches. `tree.rs` solves several
+//! effectors of one body at once (a hand and the eyes).
 
 mod avoid;
 mod bones;
 mod pass;
+mod tree;
 
 pub use bones::{bones, Bone, End};
+pub use tree::{solve_tree, TreeGoal, TreeProblem, TreeSolution};
 
 use rand_chacha::rand_core::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -32,6 +35,7 @@ pub struct FabrikSettings {
     pub avoid_obstacles: bool,
     pub kicks: u32,
     pub kick: f64,
+    pub ccd: bool,
 }
 
 impl Plugin for Fabrik {
@@ -59,6 +63,7 @@ impl Plugin for Fabrik {
             P::integer("kicks", 40, "when a start stalls short of the target, kick the posture and go on, this many times")
                 .range(0.0, 1000.0),
             P::number("kick", 0.3, "a kick moves each joint by up to this fraction of its range").range(0.0, 1.0),
+            P::boolean("ccd", true, "after each pass, a sweep of groups turning the effector itself towards the target"),
             P::boolean("avoid_obstacles", true, "move bones out of obstacles, and prefer clear postures among starts"),
         ]
     }
@@ -77,6 +82,7 @@ impl SolverPlugin for Fabrik {
                 avoid_obstacles: o.boolean("avoid_obstacles"),
                 kicks: o.integer("kicks") as u32,
                 kick: o.number("kick"),
+                ccd: o.boolean("ccd"),
             },
         })
     }

@@ -20,7 +20,7 @@ use rand_chacha::ChaCha8Rng;
 use super::avoid;
 use super::bones::{Bone, End};
 use super::FabrikSettings;
-use crate::kinematics::{Chain, JointKind};
+use crate::kinematics::{Chain, Joint, JointKind};
 use crate::plugin::{IkProblem, IkSolution};
 
 /// The working state of one solve.
@@ -103,6 +103,9 @@ impl<'a> Pass<'a> {
             }
             self.backward();
             self.forward(avoiding);
+            if s.ccd {
+                self.ccd_sweep();
+            }
             iterations += 1;
         }
         let (_, _, q) = best.expect("at least one posture seen");
@@ -119,27 +122,27 @@ impl<'a> Pass<'a> {
         }
     }
 
-    /// Move every joint by a seeded random amount, up to `kick` of its
-    /// range, within its limits.
+    /// Kick the posture (see [`kick`]) and rebuild the points.
     fn kick(&mut self, rng: &mut ChaCha8Rng) {
         let chain = self.chain();
-        for (q, joint) in self.q.iter_mut().zip(&chain.joints) {
-            let u = (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
-            *q = joint.clamp(*q + (2.0 * u - 1.0) * self.settings.kick * joint.range());
-        }
+        kick(&mut self.q, &chain.joints, self.settings.kick, rng);
         self.forward_with(false, false);
     }
 
-    fn effector_distance(&self) -> f64 {
+    pub fn effector_distance(&self) -> f64 {
         (self.points[self.points.len() - 1] - self.problem.target_mm).norm()
     }
 
     /// Goals from the target back to the base, each at its bone's length
     /// from the next goal, towards the point's present place.
     fn backward(&mut self) {
-        let m = self.bones.len();
-        self.goals[m] = self.problem.target_mm;
-        for k in (0..m).rev() {
+        self.backward_from(self.bones.len(), self.problem.target_mm);
+    }
+
+    /// Goals from point `last` (put at `goal`) back to the base.
+    pub fn backward_from(&mut self, last: usize, goal: Point3<f64>) {
+        self.goals[last] = goal;
+        for k in (0..last).rev() {
             let from = self.goals[k + 1];
             let towards = self.points[k] - from;
             let distance = towards.norm();
@@ -155,15 +158,20 @@ impl<'a> Pass<'a> {
     /// Rebuild the points from the base, each group first turning its bone
     /// towards its goal (and, `avoiding`, away from obstacles).
     fn forward(&mut self, avoiding: bool) {
-        self.forward_with(true, avoiding);
+        self.forward_bones(0..self.bones.len(), true, avoiding);
     }
 
     /// Rebuild the points from the base; with `align`, turning each group.
-    fn forward_with(&mut self, align: bool, avoiding: bool) {
+    pub fn forward_with(&mut self, align: bool, avoiding: bool) {
+        self.forward_bones(0..self.bones.len(), align, avoiding);
+    }
+
+    /// Rebuild the points up to the end of `bones`, turning (with `align`)
+    /// only the groups of `bones`.
+    pub fn forward_bones(&mut self, bones: std::ops::Range<usize>, align: bool, avoiding: bool) {
         let mut frame = IsometryMatrix3::identity();
-        for k in 0..self.bones.len() {
-            let bone = &self.bones[k];
-            if align && !bone.joints.is_empty() {
+        for k in 0..bones.end {
+            if align && bones.contains(&k) && !self.bones[k].joints.is_empty() {
                 self.align(k, &frame);
                 if avoiding {
                     avoid::avoid(self, k, &frame);
@@ -190,17 +198,26 @@ impl<'a> Pass<'a> {
     fn align(&mut self, k: usize, before: &IsometryMatrix3<f64>) {
         let chain = self.chain();
         let bone = &self.bones[k];
-        let pivot = self.points[k];
-        let goal = self.goals[k + 1];
-        self.axes.clear();
         let mut frame = *before;
+        self.axes.clear();
         for j in bone.joints.clone() {
             self.axes.push(frame.rotation * Vector3::z());
             frame *= chain.joints[j].transform(self.q[j]);
         }
-        let mut end = bone_end(chain, bone, &frame, &self.q);
+        let end = bone_end(chain, bone, &frame, &self.q);
+        self.turn_group(k, end, self.goals[k + 1]);
+    }
+
+    /// Turn bone `k`'s group (its axes in `axes`) so that `end`, a point
+    /// carried rigidly by the group, comes nearest `goal`: each joint in
+    /// turn takes its best value within its limits, `sweeps` times.
+    /// Returns where `end` went.
+    fn turn_group(&mut self, k: usize, mut end: Point3<f64>, goal: Point3<f64>) -> Point3<f64> {
+        let chain = self.chain();
+        let pivot = self.points[k];
+        let joints = self.bones[k].joints.clone();
         for _ in 0..self.settings.sweeps {
-            for (i, j) in bone.joints.clone().enumerate() {
+            for (i, j) in joints.clone().enumerate() {
                 let joint = &chain.joints[j];
                 let axis = self.axes[i];
                 let moved = match joint.kind {
@@ -222,6 +239,50 @@ impl<'a> Pass<'a> {
                 }
             }
         }
+        end
+    }
+
+    /// One sweep from the effector's group back to the base, each group
+    /// turning the effector itself towards the target (cyclic coordinate
+    /// descent by groups). It passes on to the root what the tip's joint
+    /// limits refuse, which FABRIK's passes do not: the backward pass puts
+    /// every point where its bone's length allows, and a look link of
+    /// variable length, or a wrist at its limit, then asks nothing of the
+    /// joints above it.
+    pub fn ccd_sweep(&mut self) {
+        self.ccd_sweep_from(0);
+    }
+
+    /// [`Self::ccd_sweep`] over the groups of bones `first..` only.
+    pub fn ccd_sweep_from(&mut self, first: usize) {
+        let chain = self.chain();
+        let mut befores = Vec::with_capacity(self.bones.len());
+        let mut frame = IsometryMatrix3::identity();
+        for k in 0..self.bones.len() {
+            befores.push(frame);
+            frame = self.advance(k, &frame);
+        }
+        let mut effector = self.points[self.bones.len()];
+        let target = self.problem.target_mm;
+        for k in (first..self.bones.len()).rev() {
+            let mut f = befores[k];
+            self.axes.clear();
+            for j in self.bones[k].joints.clone() {
+                self.axes.push(f.rotation * Vector3::z());
+                f *= chain.joints[j].transform(self.q[j]);
+            }
+            effector = self.turn_group(k, effector, target);
+        }
+        self.forward_with(false, false);
+    }
+}
+
+/// Move every joint by a seeded random amount, up to `fraction` of its
+/// range, within its limits.
+pub fn kick(q: &mut [f64], joints: &[Joint], fraction: f64, rng: &mut ChaCha8Rng) {
+    for (q, joint) in q.iter_mut().zip(joints) {
+        let u = (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
+        *q = joint.clamp(*q + (2.0 * u - 1.0) * fraction * joint.range());
     }
 }
 

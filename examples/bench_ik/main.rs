@@ -4,7 +4,8 @@
 //! limits (fixed seed), position only, tolerance 0.5 units (5 mm); the time
 //! per solve includes failures.
 //!
-//! `cargo run --release --example bench_ik [-- --json] [--solves N] [--set OPTION=VALUE ...]`
+//! `cargo run --release --example bench_ik [-- --json] [--solves N] [--set OPTION=VALUE ...]
+//! [--only-incremental | --only-upper-body]`
 //!
 //! `--set` changes an option of the two `incremental` rows (numbers and
 //! true/false; lengths in mm), to try other settings.
@@ -27,9 +28,14 @@ use reach::solvers::random_posture;
 const TOLERANCE_MM: f64 = 5.0;
 const TARGET_SEED: u64 = 2026;
 
+mod upper_body;
+
 /// One row of results.
 struct Row {
     solver: String,
+    dof: usize,
+    /// How many effectors each solve brings to a target.
+    effectors: usize,
     solves: usize,
     success: f64,
     mean_us: f64,
@@ -66,6 +72,16 @@ fn main() {
         .map(|(k, v)| (k.to_string(), v.to_string()))
         .collect();
     let only_ours = args.iter().any(|a| a == "--only-incremental");
+    let only_upper = args.iter().any(|a| a == "--only-upper-body");
+    if only_upper {
+        let registry = Registry::builtin();
+        let upper = upper_body::rows(&registry, solves);
+        return if json {
+            print_json(&upper)
+        } else {
+            upper_body::print_table(&upper)
+        };
+    }
 
     let chain = paper_chain();
     let targets = targets(&chain, solves);
@@ -90,7 +106,17 @@ fn main() {
         rows.push(k_row("k-default", &chain, &targets, 10, 1));
         rows.push(k_row("k-fair", &chain, &targets, 100, 10));
     }
+    let upper = if only_ours {
+        Vec::new()
+    } else {
+        upper_body::rows(&registry, solves)
+    };
     print_rows(&rows, json, &chain);
+    if json {
+        print_json(&upper);
+    } else if !upper.is_empty() {
+        upper_body::print_table(&upper);
+    }
 }
 
 /// The paper's chain from the standard library.
@@ -209,6 +235,8 @@ fn measure(
     times_us.sort_by(f64::total_cmp);
     Row {
         solver: name.to_string(),
+        dof: 21,
+        effectors: 1,
         solves: targets.len(),
         success: ok as f64 / n,
         mean_us: times_us.iter().sum::<f64>() / n,
@@ -301,6 +329,7 @@ fn k_chain(chain: &Chain) -> k::SerialChain<f64> {
 struct JsonRow<'a> {
     solver: &'a str,
     dof: usize,
+    effectors: usize,
     solves: usize,
     success: Option<f64>,
     mean_us: f64,
@@ -311,26 +340,33 @@ struct JsonRow<'a> {
     source: Option<&'static str>,
 }
 
+/// One JSON object per line for each row.
+fn print_json(rows: &[Row]) {
+    for r in rows {
+        let row = JsonRow {
+            solver: &r.solver,
+            dof: r.dof,
+            effectors: r.effectors,
+            solves: r.solves,
+            success: Some(r.success),
+            mean_us: r.mean_us,
+            median_us: Some(r.median_us),
+            mean_iterations: r.mean_iterations,
+            mean_error: r.mean_error,
+            source: None,
+        };
+        println!("{}", serde_json::to_string(&row).expect("plain numbers"));
+    }
+}
+
 fn print_rows(rows: &[Row], json: bool, chain: &Chain) {
     if json {
-        for r in rows {
-            let row = JsonRow {
-                solver: &r.solver,
-                dof: chain.dof(),
-                solves: r.solves,
-                success: Some(r.success),
-                mean_us: r.mean_us,
-                median_us: Some(r.median_us),
-                mean_iterations: r.mean_iterations,
-                mean_error: r.mean_error,
-                source: None,
-            };
-            println!("{}", serde_json::to_string(&row).expect("plain numbers"));
-        }
+        print_json(rows);
         for (name, ms, error, iterations) in PAPER {
             let row = JsonRow {
                 solver: name,
                 dof: chain.dof(),
+                effectors: 1,
                 solves: 10_000,
                 success: None,
                 mean_us: ms * 1000.0,

@@ -1,0 +1,288 @@
+//! FABRIK on a tree: several effectors of one body (a hand and the eyes)
+//! with a target each, sharing the joints of their common root (the
+//! spine). After Aristidou and Lasenby's multiple end effectors: each
+//! effector's chain makes its backward pass from its target to the
+//! sub-base (the end of the shared bones); the sub-base's goal is the
+//! average of theirs, weighted by each effector's priority; from there
+//! the backward pass goes on to the base. The forward pass turns the
+//! shared groups towards those goals, then each branch its own.
+
+use nalgebra::Point3;
+use rand_chacha::rand_core::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+
+use super::bones::{bones, Bone};
+use super::pass::{kick, Pass};
+use super::FabrikSettings;
+use crate::collision::PlacedObstacles;
+use crate::kinematics::{Body, Chain};
+use crate::plugin::IkProblem;
+use crate::solvers::starts::Starts;
+
+/// One effector's target and priority.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TreeGoal {
+    /// Index into the body's effectors.
+    pub effector: usize,
+    /// In the body's base frame.
+    pub target_mm: Point3<f64>,
+    /// Its weight in the sub-base's goal: the larger, the more the shared
+    /// joints serve this effector.
+    pub weight: f64,
+}
+
+/// A tree problem: the body, its goals, and what a chain problem has.
+#[derive(Clone, Copy)]
+pub struct TreeProblem<'a> {
+    pub body: &'a Body,
+    pub goals: &'a [TreeGoal],
+    pub tolerance_mm: f64,
+    pub seed: u64,
+    pub obstacles: Option<PlacedObstacles<'a>>,
+}
+
+/// The posture found, in the body's joint order, and each goal's distance.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TreeSolution {
+    pub q: Vec<f64>,
+    pub distances_mm: Vec<f64>,
+    pub iterations: u64,
+    /// The first obstacle (by index in the room) a link of some branch
+    /// passes through, when obstacles are checked.
+    pub collision: Option<usize>,
+}
+
+impl TreeSolution {
+    /// Every effector within tolerance, and no link through an obstacle.
+    pub fn reaches(&self, tolerance_mm: f64) -> bool {
+        self.distances_mm.iter().all(|&d| d <= tolerance_mm) && self.collision.is_none()
+    }
+
+    fn score(&self, goals: &[TreeGoal], tolerance_mm: f64) -> (bool, f64) {
+        let weighted: f64 = goals
+            .iter()
+            .zip(&self.distances_mm)
+            .map(|(g, d)| g.weight * d)
+            .sum();
+        (self.reaches(tolerance_mm), -weighted)
+    }
+}
+
+/// One effector's chain, as the chain solver sees it.
+struct Branch {
+    chain: Chain,
+    /// Body index of each chain joint.
+    path: Vec<usize>,
+    bones: Vec<Bone>,
+}
+
+/// Solve from the settings' starts; the best posture (all reaching, then
+/// least weighted distance) is kept.
+pub fn solve_tree(settings: &FabrikSettings, problem: &TreeProblem<'_>) -> TreeSolution {
+    let branches: Vec<Branch> = problem
+        .goals
+        .iter()
+        .map(|g| {
+            let chain = problem.body.chain(g.effector);
+            Branch {
+                path: problem.body.path(problem.body.effectors[g.effector].joint),
+                bones: bones(&chain),
+                chain,
+            }
+        })
+        .collect();
+    let chain_problems: Vec<IkProblem<'_>> = branches
+        .iter()
+        .zip(problem.goals)
+        .map(|(b, g)| IkProblem {
+            chain: &b.chain,
+            target_mm: g.target_mm,
+            tolerance_mm: problem.tolerance_mm,
+            seed: problem.seed,
+            obstacles: problem.obstacles,
+        })
+        .collect();
+    let shared = shared_bones(&branches);
+    let whole = Chain {
+        joints: problem.body.joints.clone(),
+        effector_name: String::new(),
+        effector_mm: nalgebra::Vector3::zeros(),
+    };
+    let mut rng = ChaCha8Rng::seed_from_u64(problem.seed ^ 0x7472_6565);
+    let mut best: Option<TreeSolution> = None;
+    let mut iterations = 0;
+    for start in
+        Starts::new(&whole, problem.seed, settings.neutral_start).take(settings.starts as usize)
+    {
+        let mut tree = Tree {
+            settings,
+            problem,
+            branches: &branches,
+            passes: branches
+                .iter()
+                .zip(&chain_problems)
+                .map(|(b, p)| {
+                    Pass::new(
+                        settings,
+                        p,
+                        &b.bones,
+                        b.path.iter().map(|&j| start[j]).collect(),
+                    )
+                })
+                .collect(),
+            q: start,
+            shared,
+        };
+        let solution = tree.run(&whole, &mut rng);
+        iterations += solution.iterations;
+        let better = best.as_ref().is_none_or(|b| {
+            solution.score(problem.goals, problem.tolerance_mm)
+                > b.score(problem.goals, problem.tolerance_mm)
+        });
+        if better {
+            best = Some(solution);
+        }
+    }
+    let mut solution = best.expect("at least one start");
+    solution.iterations = iterations;
+    solution
+}
+
+/// How many leading bones every branch has in common (same body joints).
+fn shared_bones(branches: &[Branch]) -> usize {
+    let first = &branches[0];
+    let same = |k: usize, b: &Branch| {
+        b.bones.get(k).is_some_and(|bone| {
+            let mine = &first.bones[k];
+            bone.end == mine.end
+                && bone.joints == mine.joints
+                && b.path.get(..depends_on(bone)) == first.path.get(..depends_on(mine))
+        })
+    };
+    (0..first.bones.len())
+        .take_while(|&k| branches.iter().all(|b| same(k, b)))
+        .count()
+}
+
+/// How many chain joints, from the root, a bone's end depends on.
+fn depends_on(bone: &Bone) -> usize {
+    match bone.end {
+        super::bones::End::Frame(j) => (j + 1).max(bone.joints.end),
+        super::bones::End::Effector => bone.joints.end,
+    }
+}
+
+/// The state of one start.
+struct Tree<'a> {
+    settings: &'a FabrikSettings,
+    problem: &'a TreeProblem<'a>,
+    branches: &'a [Branch],
+    passes: Vec<Pass<'a>>,
+    /// The body's posture.
+    q: Vec<f64>,
+    shared: usize,
+}
+
+impl Tree<'_> {
+    fn run(&mut self, whole: &Chain, rng: &mut ChaCha8Rng) -> TreeSolution {
+        let s = self.settings;
+        let mut best = self.solution(0);
+        let mut progress = f64::INFINITY;
+        let (mut stalled, mut iterations, mut kicks) = (0, 0, 0);
+        while iterations < s.max_iterations {
+            let now = self.solution(iterations);
+            let (reaches, score) = now.score(self.problem.goals, self.problem.tolerance_mm);
+            if (reaches, score) > best.score(self.problem.goals, self.problem.tolerance_mm) {
+                best = now;
+            }
+            if reaches {
+                break;
+            }
+            stalled = if -score < progress * (1.0 - 1e-4) {
+                0
+            } else {
+                stalled + 1
+            };
+            progress = progress.min(-score);
+            if stalled >= s.stall {
+                if kicks == s.kicks {
+                    break;
+                }
+                kick(&mut self.q, &whole.joints, s.kick, rng);
+                self.load();
+                (kicks, stalled, progress) = (kicks + 1, 0, f64::INFINITY);
+                continue;
+            }
+            self.iterate();
+            iterations += 1;
+        }
+        best.iterations = u64::from(iterations);
+        best
+    }
+
+    /// One backward and forward pass over the whole tree.
+    fn iterate(&mut self) {
+        let avoiding = self.settings.avoid_obstacles && self.problem.obstacles.is_some();
+        let k = self.shared;
+        let mut sum = nalgebra::Vector3::zeros();
+        let mut weights = 0.0;
+        for (pass, goal) in self.passes.iter_mut().zip(self.problem.goals) {
+            pass.backward_from(pass.bones.len(), goal.target_mm);
+            sum += pass.goals[k].coords * goal.weight;
+            weights += goal.weight;
+        }
+        let sub_base = Point3::from(sum / weights.max(1e-12));
+        let (first, rest) = self.passes.split_first_mut().expect("at least one goal");
+        first.backward_from(k, sub_base);
+        first.forward_bones(0..k, true, avoiding);
+        let shared_joints = if k == 0 {
+            0
+        } else {
+            first.bones[k - 1].joints.end
+        };
+        for pass in rest {
+            pass.q[..shared_joints].copy_from_slice(&first.q[..shared_joints]);
+        }
+        for pass in &mut self.passes {
+            let m = pass.bones.len();
+            pass.forward_bones(k..m, true, avoiding);
+            if self.settings.ccd {
+                pass.ccd_sweep_from(k);
+            }
+        }
+        self.store();
+    }
+
+    /// The body posture from the branches' postures.
+    fn store(&mut self) {
+        for (pass, branch) in self.passes.iter().zip(self.branches) {
+            for (i, &j) in branch.path.iter().enumerate() {
+                self.q[j] = pass.q[i];
+            }
+        }
+    }
+
+    /// The branches' postures from the body posture.
+    fn load(&mut self) {
+        for (pass, branch) in self.passes.iter_mut().zip(self.branches) {
+            for (i, &j) in branch.path.iter().enumerate() {
+                pass.q[i] = self.q[j];
+            }
+            pass.forward_with(false, false);
+        }
+    }
+
+    fn solution(&self, iterations: u32) -> TreeSolution {
+        let checking = self.settings.avoid_obstacles;
+        TreeSolution {
+            q: self.q.clone(),
+            distances_mm: self.passes.iter().map(|p| p.effector_distance()).collect(),
+            iterations: u64::from(iterations),
+            collision: self
+                .passes
+                .iter()
+                .filter(|_| checking)
+                .find_map(|p| p.problem.collision(&p.q)),
+        }
+    }
+}
