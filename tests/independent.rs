@@ -129,6 +129,7 @@ fn every_reported_posture_is_what_the_report_says() {
     for example in [
         "examples/kitchen.reach",
         "examples/kitchen_wheelchair.reach",
+        "examples/open_door.reach",
     ] {
         let registry = Registry::builtin();
         let (_, scenario) = reach::check(Input::Path(example.as_ref()), &registry);
@@ -195,6 +196,6 @@ fn every_reported_posture_is_what_the_report_says() {
             checked += 1;
         }
     }
-    assert_eq!(checked, 4 + 16);
+    assert_eq!(checked, 4 + 16 + 6);
     assert!(collisions > 0, "the examples have postures that meet a box");
 }

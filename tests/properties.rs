@@ -4,8 +4,12 @@
 
 use nalgebra::{Point3, Vector3};
 use proptest::prelude::*;
+use reach::collision::{Obstacles, PlacedObstacles};
 use reach::kinematics::{Chain, Dh, IncrementalFk, Joint, JointKind};
-use reach::plugin::{IkProblem, IkSolution, Options, Registry, Solver, Value};
+use reach::plugin::{BasePose, IkProblem, IkSolution, Options, Registry, Solver, Value};
+use reach::scene::{BoxObstacle, Room};
+use reach::solvers::fabrik::{solve_tree, TreeGoal, TreeProblem};
+use reach::solvers::FabrikSettings;
 
 /// A random joint: revolute (limits within +/-pi) or prismatic (0 to 200 mm).
 fn joint() -> impl Strategy<Value = Joint> {
@@ -115,12 +119,13 @@ proptest! {
         chain in chain(),
         goal in prop::collection::vec(0.0..1.0f64, 10),
         seed in any::<u64>(),
-        which in 0usize..3,
+        which in 0usize..4,
     ) {
         let target = chain.effector(&posture(&chain, &goal));
         let solver = match which {
             0 => solver("incremental", &[("starts", Value::Integer(2))]),
             1 => solver("incremental", &[("starts", Value::Integer(1)), ("grow", Value::Number(1.0)), ("shrink", Value::Number(1.0))]),
+            2 => solver("fabrik", &[("starts", Value::Integer(2))]),
             _ => solver("dls", &[("starts", Value::Integer(2))]),
         };
         let s = solve(solver.as_ref(), &chain, target, seed);
@@ -136,7 +141,7 @@ proptest! {
         seed in any::<u64>(),
     ) {
         let target = chain.effector(&posture(&chain, &goal));
-        for name in ["incremental", "dls"] {
+        for name in ["incremental", "dls", "fabrik"] {
             let s = solver(name, &[("starts", Value::Integer(3)), ("neutral_start", Value::Bool(false))]);
             prop_assert_eq!(solve(s.as_ref(), &chain, target, seed), solve(s.as_ref(), &chain, target, seed));
         }
@@ -152,5 +157,72 @@ proptest! {
         let eager = solver("incremental", &[("eager_pair", Value::Bool(true))]);
         let lazy = solver("incremental", &[("eager_pair", Value::Bool(false))]);
         prop_assert_eq!(solve(eager.as_ref(), &chain, target, seed), solve(lazy.as_ref(), &chain, target, seed));
+    }
+
+    #[test]
+    fn fabrik_keeps_limits_and_says_truly_whether_links_meet_the_box(
+        chain in chain(),
+        goal in prop::collection::vec(0.0..1.0f64, 10),
+        seed in any::<u64>(),
+        corner in prop::array::uniform3(-300.0..300.0f64),
+        size in prop::array::uniform3(10.0..300.0f64),
+    ) {
+        let target = chain.effector(&posture(&chain, &goal));
+        let room = Room {
+            name: "r".into(),
+            size_mm: Vector3::repeat(1e4),
+            boxes: vec![BoxObstacle { name: "b".into(), corner_mm: Point3::from(corner), size_mm: Vector3::from(size), yaw_rad: 0.3 }],
+            targets: vec![],
+            surfaces: vec![],
+        };
+        let obstacles = Obstacles::new(&room, 0.0);
+        let placed = PlacedObstacles { obstacles: &obstacles, base_pose: BasePose { position_mm: Point3::origin(), heading_rad: 0.0 } };
+        let problem = IkProblem { chain: &chain, target_mm: target, tolerance_mm: 5.0, seed, obstacles: Some(placed) };
+        let s = solver("fabrik", &[("starts", Value::Integer(2))]).solve(&problem);
+        prop_assert!(chain.within_limits(&s.q), "{:?} outside limits", s.q);
+        let points = chain.link_points(&s.q);
+        let last = points.len() - 2;
+        let met = points.windows(2).enumerate().any(|(i, w)| {
+            // The last link stops a tolerance short of the effector.
+            let end = if i == last {
+                let length = (w[1] - w[0]).norm();
+                if length <= 5.0 { return false; }
+                w[0] + (w[1] - w[0]) * (1.0 - 5.0 / length)
+            } else { w[1] };
+            obstacles.segment_hit(&w[0], &end).is_some()
+        });
+        prop_assert_eq!(met, s.collision.is_some());
+    }
+
+    #[test]
+    fn the_tree_solve_keeps_every_joint_within_limits(
+        fractions in prop::collection::vec(0.0..1.0f64, 16),
+        seed in any::<u64>(),
+    ) {
+        let body = reach::stdlib::body("body", "upper_body").unwrap();
+        let whole = Chain { joints: body.joints.clone(), effector_name: String::new(), effector_mm: Vector3::zeros() };
+        let q = posture(&whole, &fractions);
+        let targets: Vec<Point3<f64>> = (0..2).map(|e| {
+            let path = body.path(body.effectors[e].joint);
+            body.chain(e).effector(&path.iter().map(|&j| q[j]).collect::<Vec<_>>())
+        }).collect();
+        let goals = [
+            TreeGoal { effector: 0, target_mm: targets[0], weight: 1.0 },
+            TreeGoal { effector: 1, target_mm: targets[1], weight: 0.1 },
+        ];
+        let registry = Registry::builtin();
+        let plugin = registry.solver("fabrik").unwrap();
+        let o = Options::defaults(&plugin.params());
+        let settings = FabrikSettings {
+            starts: 1, neutral_start: true, max_iterations: 50, stall: 4, sweeps: 2, samples: 5,
+            avoid_obstacles: true, kicks: 3, kick: o.number("kick"), ccd: true,
+        };
+        let s = solve_tree(&settings, &TreeProblem { body: &body, goals: &goals, tolerance_mm: 5.0, seed, obstacles: None });
+        prop_assert!(whole.within_limits(&s.q));
+        for (e, g) in goals.iter().enumerate() {
+            let path = body.path(body.effectors[g.effector].joint);
+            let fk = body.chain(e).effector(&path.iter().map(|&j| s.q[j]).collect::<Vec<_>>());
+            prop_assert!(((fk - g.target_mm).norm() - s.distances_mm[e]).abs() < 1e-6);
+        }
     }
 }

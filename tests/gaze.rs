@@ -1,0 +1,88 @@
+//! Gaze tasks end to end: who sees what on the shelves of
+//! `examples/gaze_shelf.reach`, the legible range of eq. 1-2 in the report,
+//! and the obstacle that blocks a line of sight named.
+
+use reach::plugin::Registry;
+use reach::report::{GazeReport, Report, TaskReport};
+use reach::vision::{d_max_mm, d_min_mm, ARCMIN_RAD};
+use reach::Input;
+
+fn run(input: Input<'_>) -> Report {
+    let registry = Registry::builtin();
+    let (_, scenario) = reach::check(input, &registry);
+    reach::run(&scenario.expect("the scenario checks"), &registry)
+}
+
+fn gaze<'r>(report: &'r Report, target: &str, person: &str) -> &'r GazeReport {
+    report
+        .tasks
+        .iter()
+        .find_map(|t| match t {
+            TaskReport::Gaze(g) if g.name == target && g.person == person => Some(g),
+            _ => None,
+        })
+        .unwrap_or_else(|| panic!("no gaze at {target} by {person}"))
+}
+
+#[test]
+fn the_jar_on_the_high_shelf_is_seen_standing_but_not_seated() {
+    let report = run(Input::Path("examples/gaze_shelf.reach".as_ref()));
+    let standing = gaze(&report, "jar", "sam");
+    assert!(standing.ok, "{standing:?}");
+    let seated = gaze(&report, "jar", "ann");
+    assert_eq!(seated.reason, Some("occluded"));
+    let by = seated.occluded_by.as_deref().unwrap();
+    assert!(by == "shelf_rail" || by == "shelf_high", "{by}");
+}
+
+#[test]
+fn the_legible_range_is_that_of_eq_1_and_2() {
+    let report = run(Input::Path("examples/gaze_shelf.reach".as_ref()));
+    let sam = gaze(&report, "spice_tin", "sam");
+    let ann = gaze(&report, "spice_tin", "ann");
+    let d_max = d_max_mm(1.5, ARCMIN_RAD);
+    assert!(
+        (sam.legible_mm[1] - d_max).abs() < 0.01,
+        "{:?}",
+        sam.legible_mm
+    );
+    assert_eq!(
+        sam.legible_mm[0], 250.0,
+        "the near point, mar_near not given"
+    );
+    assert!((ann.legible_mm[0] - d_min_mm(1.5, 3.0 * ARCMIN_RAD)).abs() < 0.01);
+    assert!((d_max - 1.5 / (5.0 * (std::f64::consts::PI / 10_800.0).tan())).abs() < 1e-9);
+}
+
+const WALL: &str = "units mm deg
+use std::body
+room r {
+  size 4000 x 3000 x 2500
+  box screen at (500, 1000, 0) size (20, 1000, 2000)
+  target poster at (100, 1500, 1500)
+  target tiny at (200, 1500, 1500)
+}
+person p {
+  mannequin upper_body
+  base fixed { at (1000, 1500, 930) heading 180deg }
+}
+";
+
+#[test]
+fn the_obstacle_in_the_way_is_named_and_distance_limits_give_their_reason() {
+    let text = format!(
+        "{WALL}gaze poster by p {{ size 50mm }}\ngaze tiny by p {{ size 0.5mm collisions false }}\n"
+    );
+    let report = run(Input::Text {
+        name: "wall.reach",
+        text: &text,
+    });
+    let poster = gaze(&report, "poster", "p");
+    assert_eq!(
+        (poster.reason, poster.occluded_by.as_deref()),
+        (Some("occluded"), Some("screen"))
+    );
+    let tiny = gaze(&report, "tiny", "p");
+    // 0.5 mm is legible to 344 mm; the eyes are some 800 mm away.
+    assert_eq!(tiny.reason, Some("too far"), "{tiny:?}");
+}
