@@ -78,6 +78,8 @@ pub enum ErrorKind {
     Missing { owner: String, what: &'static str },
     #[error("{what} is given more than once")]
     Repeated { what: String },
+    #[error("target `{name}` is inside box `{obstacle}`")]
+    TargetInsideBox { name: String, obstacle: String },
     #[error("target `{name}` lies outside room `{room}`")]
     TargetOutsideRoom {
         name: String,
@@ -147,6 +149,7 @@ impl ErrorKind {
             Dimension { .. } | Operands { .. } | MixedDefaults => "reach::unit",
             OutOfRange { .. } | LimitsReversed { .. } => "reach::range",
             Missing { .. } | Repeated { .. } | TargetOutsideRoom { .. } => "reach::scene",
+            TargetInsideBox { .. } => "reach::scene",
             Unsupported { .. } | Misplaced { .. } | NoLookLink { .. } => "reach::scene",
             Illegible { .. } => "reach::range",
             NoEffector { .. } => "reach::name",
@@ -182,6 +185,7 @@ impl ErrorKind {
             Missing { what, .. } => format!("no {what} given here"),
             Repeated { .. } => "given again here".into(),
             TargetOutsideRoom { .. } => "outside the room".into(),
+            TargetInsideBox { .. } => "inside the box".into(),
             MixedDefaults => "bare numbers with different default units".into(),
             Unsupported { .. } => "not supported".into(),
             TooLarge { .. } => "too large".into(),
@@ -215,6 +219,9 @@ impl ErrorKind {
             Dimension { expected, .. } => Some(format!("write {expected}, such as {}", example_of(expected))),
             Operands { .. } => Some("both sides of + and - must have the same kind of unit".into()),
             TargetOutsideRoom { bounds, .. } => Some(format!("the room spans {bounds}")),
+            TargetInsideBox { .. } => Some(
+                "a box is solid: nothing inside it can be reached or seen; model an open cabinet as boards, or put the target on the box's surface".into(),
+            ),
             MixedDefaults => Some("write the units on these numbers".into()),
             Unsupported { help, .. } => Some(help.clone()),
             TooLarge { .. } => Some("split it up; the limits are in docs/language.md".into()),

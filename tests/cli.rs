@@ -60,11 +60,15 @@ fn json_report_has_the_documented_fields() {
 
 #[test]
 fn json_is_byte_identical_across_runs_and_thread_counts() {
-    for example in [
-        "examples/kitchen.reach",
-        "examples/kitchen_wheelchair.reach",
-    ] {
-        identical_across_threads(example);
+    let mut examples: Vec<_> = std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/examples"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "reach"))
+        .collect();
+    examples.sort();
+    assert!(examples.len() >= 5, "{examples:?}");
+    for example in examples {
+        identical_across_threads(example.to_str().unwrap());
     }
 }
 

@@ -97,6 +97,7 @@ impl Checker<'_> {
         let mut boxes = Vec::new();
         let mut targets = Vec::new();
         let mut surfaces = Vec::new();
+        let mut target_spans = Vec::new();
         for item in &decl.items {
             match item {
                 RoomItem::Size(_) => {}
@@ -118,9 +119,11 @@ impl Checker<'_> {
                         name: t.name.value.clone(),
                         position_mm,
                     });
+                    target_spans.push(t.at.span);
                 }
             }
         }
+        self.check_not_in_boxes(&targets, &target_spans, &boxes);
         Some(Room {
             name: decl.name.value.clone(),
             size_mm: size?,
@@ -189,6 +192,27 @@ impl Checker<'_> {
                 },
                 span,
             ));
+        }
+    }
+
+    /// A target strictly inside a box cannot be reached or seen: the box
+    /// is closed. (On its surface is fine: a mug on a counter.)
+    fn check_not_in_boxes(
+        &mut self,
+        targets: &[Target],
+        spans: &[crate::span::Span],
+        boxes: &[BoxObstacle],
+    ) {
+        for (t, span) in targets.iter().zip(spans) {
+            if let Some(b) = boxes.iter().find(|b| b.holds_strictly(&t.position_mm)) {
+                self.error(Error::new(
+                    ErrorKind::TargetInsideBox {
+                        name: t.name.clone(),
+                        obstacle: b.name.clone(),
+                    },
+                    *span,
+                ));
+            }
         }
     }
 

@@ -70,6 +70,17 @@ pub struct BoxObstacle {
     pub yaw_rad: f64,
 }
 
+impl BoxObstacle {
+    /// Whether `p` is inside the box and not on its surface (within a
+    /// micrometre).
+    pub fn holds_strictly(&self, p: &Point3<f64>) -> bool {
+        let d = p - self.corner_mm;
+        let (s, c) = self.yaw_rad.sin_cos();
+        let local = Vector3::new(c * d.x + s * d.y, -s * d.x + c * d.y, d.z);
+        (0..3).all(|i| local[i] > 1e-3 && local[i] < self.size_mm[i] - 1e-3)
+    }
+}
+
 #[derive(Clone, Debug, PartialEq)]
 pub struct Target {
     pub name: String,
