@@ -28,6 +28,8 @@ pub struct Report {
 pub enum TaskReport {
     Reach(ReachReport),
     Gaze(GazeReport),
+    #[serde(rename = "reach_and_gaze")]
+    ReachAndGaze(ReachAndGazeReport),
     Map(MapReport),
 }
 
@@ -36,6 +38,7 @@ impl TaskReport {
         match self {
             TaskReport::Reach(_) => "reach",
             TaskReport::Gaze(_) => "gaze",
+            TaskReport::ReachAndGaze(_) => "reach_and_gaze",
             TaskReport::Map(_) => "map",
         }
     }
@@ -44,6 +47,7 @@ impl TaskReport {
         match self {
             TaskReport::Reach(r) => &r.name,
             TaskReport::Gaze(g) => &g.name,
+            TaskReport::ReachAndGaze(b) => &b.name,
             TaskReport::Map(m) => &m.name,
         }
     }
@@ -52,6 +56,7 @@ impl TaskReport {
         match self {
             TaskReport::Reach(r) => &r.person,
             TaskReport::Gaze(g) => &g.person,
+            TaskReport::ReachAndGaze(b) => &b.person,
             TaskReport::Map(m) => &m.person,
         }
     }
@@ -61,6 +66,7 @@ impl TaskReport {
         match self {
             TaskReport::Reach(r) => r.ok,
             TaskReport::Gaze(g) => g.ok,
+            TaskReport::ReachAndGaze(b) => b.ok,
             TaskReport::Map(m) => m.ok,
         }
     }
@@ -222,6 +228,18 @@ pub struct GazeReport {
     pub posture: Posture,
     pub eyes_mm: [f64; 3],
     pub target_mm: [f64; 3],
+}
+
+/// `reach T and gaze`: the hand's reach and the eyes' gaze in one posture.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ReachAndGazeReport {
+    /// The target.
+    pub name: String,
+    pub person: String,
+    /// Both: the hand reaches and the eyes see.
+    pub ok: bool,
+    pub reach: ReachReport,
+    pub gaze: GazeReport,
 }
 
 /// What a gaze found, in internal units, for [`GazeReport::new`].

@@ -256,6 +256,16 @@ fn verdict(t: &TaskReport) -> String {
         TaskReport::Reach(_) => "NOT reachable".into(),
         TaskReport::Gaze(g) if g.ok => "visible".into(),
         TaskReport::Gaze(g) => format!("NOT visible ({})", g.reason.unwrap_or("?")),
+        TaskReport::ReachAndGaze(b) if b.ok => "reachable and visible".into(),
+        TaskReport::ReachAndGaze(b) => format!(
+            "{}, {}",
+            if b.reach.ok {
+                "reachable"
+            } else {
+                "NOT reachable"
+            },
+            if b.gaze.ok { "visible" } else { "NOT visible" }
+        ),
         TaskReport::Map(m) => format!("{:.1} % reachable", m.fraction * 100.0),
     }
 }

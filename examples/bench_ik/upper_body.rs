@@ -84,18 +84,9 @@ fn targets(body: &Body, placed: Option<&PlacedObstacles<'_>>, n: usize) -> Vec<[
 
 fn settings(registry: &Registry) -> FabrikSettings {
     let plugin = registry.solver("fabrik").expect("fabrik is built in");
-    let o = Options::defaults(&plugin.params());
     FabrikSettings {
         starts: 1,
-        neutral_start: o.boolean("neutral_start"),
-        max_iterations: o.integer("max_iterations") as u32,
-        stall: o.integer("stall") as u32,
-        sweeps: o.integer("sweeps") as u32,
-        samples: o.integer("samples") as u32,
-        avoid_obstacles: true,
-        kicks: o.integer("kicks") as u32,
-        kick: o.number("kick"),
-        ccd: o.boolean("ccd"),
+        ..FabrikSettings::from_options(&Options::defaults(&plugin.params()))
     }
 }
 

@@ -79,8 +79,8 @@ impl Checker<'_> {
         Some(tasks)
     }
 
-    /// An `effector` option must name an effector of every person's body,
-    /// and the task must accept each person's chain to it.
+    /// Each option naming an effector must name one of every person's
+    /// body, and the task must accept each person's chain to it.
     fn check_effector(
         &mut self,
         plugin: &dyn TaskPlugin,
@@ -89,42 +89,45 @@ impl Checker<'_> {
         people: &[String],
         persons: &[Person],
     ) {
-        let effector = match options.get("effector") {
-            Some(Value::Name(e)) => Some(e.as_str()),
-            _ => None,
-        };
-        let at = decl.options.iter().find(|o| o.name.value == "effector");
-        for (person, name) in people.iter().zip(&decl.persons) {
-            let Some(person) = persons.iter().find(|p| &p.name == person) else {
-                continue;
+        for option in plugin.effector_options() {
+            let effector = match options.get(option) {
+                Some(Value::Name(e)) => Some(e.as_str()),
+                _ => None,
             };
-            let Some(chain) = person.chain_for(effector) else {
-                let Some(effector) = effector else {
+            let at = decl.options.iter().find(|o| o.name.value == *option);
+            for (person, name) in people.iter().zip(&decl.persons) {
+                let Some(person) = persons.iter().find(|p| &p.name == person) else {
                     continue;
                 };
-                let names: Vec<&str> = person
-                    .body
-                    .effectors
-                    .iter()
-                    .map(|e| e.name.as_str())
-                    .collect();
-                // Where the file names the effector, or else at the person.
-                let span = at.map_or(name.span, |o| o.value_span);
-                self.error(Error::new(
-                    ErrorKind::NoEffector {
-                        person: person.name.clone(),
-                        mannequin: person.mannequin.clone(),
-                        effector: effector.to_string(),
-                        available: names.join(", "),
-                    },
-                    span,
-                ));
-                continue;
-            };
-            if let Some(kind) = plugin.validate_chain(&person.name, &chain, options) {
-                self.error(Error::new(kind, name.span));
+                let Some(chain) = person.chain_for(effector) else {
+                    // Where the file names the effector, or else at the person.
+                    let span = at.map_or(name.span, |o| o.value_span);
+                    self.no_effector(person, effector.unwrap_or_default(), span);
+                    continue;
+                };
+                if let Some(kind) = plugin.validate_chain(&person.name, option, &chain, options) {
+                    self.error(Error::new(kind, name.span));
+                }
             }
         }
+    }
+
+    fn no_effector(&mut self, person: &Person, effector: &str, span: crate::span::Span) {
+        let names: Vec<&str> = person
+            .body
+            .effectors
+            .iter()
+            .map(|e| e.name.as_str())
+            .collect();
+        self.error(Error::new(
+            ErrorKind::NoEffector {
+                person: person.name.clone(),
+                mannequin: person.mannequin.clone(),
+                effector: effector.to_string(),
+                available: names.join(", "),
+            },
+            span,
+        ));
     }
 
     /// Each person's base must fit somewhere in the room of each target.

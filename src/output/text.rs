@@ -38,6 +38,10 @@ impl FormatPlugin for Text {
             match task {
                 TaskReport::Reach(r) => detail(&mut out, r),
                 TaskReport::Gaze(g) => gaze_detail(&mut out, g),
+                TaskReport::ReachAndGaze(b) => {
+                    detail(&mut out, &b.reach);
+                    gaze_detail(&mut out, &b.gaze);
+                }
                 TaskReport::Map(m) => map_detail(&mut out, m),
             }
         }
@@ -70,18 +74,28 @@ fn table(report: &Report) -> String {
                 r.iterations.to_string(),
                 format!("{:.2}", r.comfort),
             ],
+            TaskReport::ReachAndGaze(b) => [
+                "reach+gaze".to_string(),
+                b.name.clone(),
+                b.person.clone(),
+                format!(
+                    "{}, {}",
+                    if b.reach.ok {
+                        "reachable"
+                    } else {
+                        "NOT reachable"
+                    },
+                    gaze_result(&b.gaze)
+                ),
+                format!("{:.1} mm", b.reach.distance_mm),
+                b.reach.iterations.to_string(),
+                format!("{:.2}", b.reach.comfort),
+            ],
             TaskReport::Gaze(g) => [
                 "gaze".to_string(),
                 g.name.clone(),
                 g.person.clone(),
-                match g.reason {
-                    None => "visible".into(),
-                    Some("occluded") => format!(
-                        "NOT visible: behind {}",
-                        g.occluded_by.as_deref().unwrap_or("?")
-                    ),
-                    Some(reason) => format!("NOT visible: {reason}"),
-                },
+                gaze_result(g),
                 format!("{:.1} mm", g.distance_mm),
                 "-".into(),
                 format!("{:.2}", g.comfort),
@@ -144,6 +158,18 @@ fn detail(out: &mut String, r: &ReachReport) {
     let _ = writeln!(out, "  posture (deg): {}", posture.join(", "));
     if let Some(obstacle) = &r.collision {
         let _ = writeln!(out, "  a link passes through `{obstacle}`");
+    }
+}
+
+/// `visible`, or why not.
+fn gaze_result(g: &GazeReport) -> String {
+    match g.reason {
+        None => "visible".into(),
+        Some("occluded") => format!(
+            "NOT visible: behind {}",
+            g.occluded_by.as_deref().unwrap_or("?")
+        ),
+        Some(reason) => format!("NOT visible: {reason}"),
     }
 }
 

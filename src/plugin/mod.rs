@@ -257,11 +257,18 @@ pub trait TaskPlugin: Plugin {
     ) -> Option<crate::error::ErrorKind> {
         None
     }
-    /// A check of the task for one person's chain to the effector the task
-    /// uses (a gaze needs a look link); reported at the person's name.
+    /// The options that name effectors of the person's mannequin (left
+    /// out: the first effector); the checker makes sure each exists.
+    fn effector_options(&self) -> &'static [&'static str] {
+        &["effector"]
+    }
+    /// A check of the task for one person's chain to the effector that
+    /// option `option` names (a gaze needs a look link); reported at the
+    /// person's name.
     fn validate_chain(
         &self,
         _person: &str,
+        _option: &str,
         _chain: &Chain,
         _options: &Options,
     ) -> Option<crate::error::ErrorKind> {

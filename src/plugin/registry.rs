@@ -38,6 +38,7 @@ impl Registry {
         r.register_base(crate::bases::Wheelchair);
         r.register_task(crate::tasks::Reach);
         r.register_task(crate::tasks::Gaze);
+        r.register_task(crate::tasks::ReachAndGaze);
         r.register_task(crate::tasks::Map);
         r.register_format(crate::output::Text);
         r.register_format(crate::output::Json);

@@ -55,6 +55,7 @@ fn describe(rule: Rule) -> Option<&'static str> {
         option => "an option name",
         option_value => "an option value",
         task => "a declaration or task",
+        and_task => "`and` and a second task kind",
         subject_list | subject => "a target name",
         ident_list => "a person's name",
     })

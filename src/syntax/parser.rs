@@ -444,7 +444,7 @@ impl Builder {
     fn task(&mut self, pair: Pair<Rule>) -> TaskDecl {
         let span = self.span(&pair);
         let mut it = pair.into_inner();
-        let kind = self.name(it.next().unwrap());
+        let mut kind = self.name(it.next().unwrap());
         let subjects = it
             .next()
             .unwrap()
@@ -455,6 +455,15 @@ impl Builder {
                 Spanned::new(path, span)
             })
             .collect();
+        let mut it = it.peekable();
+        if let Some(and) = it.next_if(|p| p.as_rule() == Rule::and_task) {
+            // `reach mug and gaze` runs the task plugin `reach_and_gaze`.
+            let second = self.name(and.into_inner().next().unwrap());
+            kind = Spanned::new(
+                format!("{}_and_{}", kind.value, second.value),
+                kind.span.to(second.span),
+            );
+        }
         let persons = it
             .next()
             .unwrap()

@@ -60,25 +60,41 @@ impl Plugin for Gaze {
                 _ => {}
             }
         }
-        params.extend([
-            ParamSpec::length("size", 20.0, "the object's size S (a letter's height, a dial)").range(0.01, 10_000.0),
-            ParamSpec::angle("mar_far", ARCMIN_RAD, "minimum angle of resolution, far vision (eq. 1)")
-                .range(0.01 * ARCMIN_RAD, 600.0 * ARCMIN_RAD),
-            ParamSpec::optional_angle(
-                "mar_near",
-                "minimum angle of resolution, near vision (eq. 2); if left out the nearest distance is `near_point`",
-            ),
-            ParamSpec::length("near_point", 250.0, "the nearest distance the eyes focus at when `mar_near` is not given")
-                .range(0.0, 10_000.0),
-            ParamSpec::number("acuity", 0.5, "the least acuity e^(-7 |angle|) at which the target counts as seen (eq. 3)")
-                .range(0.001, 1.0),
-        ]);
+        params.extend(vision_params());
         params
     }
 }
 
+/// The options of what the eyes must make out: the object's size, the
+/// minimum angles of resolution, the near point and the acuity threshold.
+pub(super) fn vision_params() -> Vec<ParamSpec> {
+    vec![
+        ParamSpec::length("size", 20.0, "the object's size S (a letter's height, a dial)").range(0.01, 10_000.0),
+        ParamSpec::angle("mar_far", ARCMIN_RAD, "minimum angle of resolution, far vision (eq. 1)")
+            .range(0.01 * ARCMIN_RAD, 600.0 * ARCMIN_RAD),
+        ParamSpec::optional_angle(
+            "mar_near",
+            "minimum angle of resolution, near vision (eq. 2); if left out the nearest distance is `near_point`",
+        ),
+        ParamSpec::length("near_point", 250.0, "the nearest distance the eyes focus at when `mar_near` is not given")
+            .range(0.0, 10_000.0),
+        ParamSpec::number("acuity", 0.5, "the least acuity e^(-7 |angle|) at which the target counts as seen (eq. 3)")
+            .range(0.001, 1.0),
+    ]
+}
+
+/// An object too small to be legible anywhere, by the options.
+pub(super) fn illegible(options: &Options) -> Option<ErrorKind> {
+    let [d_min, d_max] = legible_mm(options);
+    (d_min >= d_max).then(|| ErrorKind::Illegible {
+        size: format!("{}mm", options.length_mm("size")),
+        d_min: format!("{d_min:.0}mm"),
+        d_max: format!("{d_max:.0}mm"),
+    })
+}
+
 /// The legible range `[D_min, D_max]` the options give.
-fn legible_mm(options: &Options) -> [f64; 2] {
+pub(super) fn legible_mm(options: &Options) -> [f64; 2] {
     let size = options.length_mm("size");
     let d_max = vision::d_max_mm(size, options.angle_rad("mar_far"));
     let d_min = match options.number_opt("mar_near") {
@@ -94,23 +110,17 @@ impl TaskPlugin for Gaze {
     }
 
     fn validate(&self, _room: &Room, _subject: &str, options: &Options) -> Option<ErrorKind> {
-        let [d_min, d_max] = legible_mm(options);
-        (d_min >= d_max).then(|| ErrorKind::Illegible {
-            size: format!("{}mm", options.length_mm("size")),
-            d_min: format!("{d_min:.0}mm"),
-            d_max: format!("{d_max:.0}mm"),
-        })
+        illegible(options)
     }
 
-    fn validate_chain(&self, person: &str, chain: &Chain, _: &Options) -> Option<ErrorKind> {
-        let ends_in_look = chain
-            .joints
-            .last()
-            .is_some_and(|j| j.kind == JointKind::Prismatic);
-        (!ends_in_look).then(|| ErrorKind::NoLookLink {
-            effector: chain.effector_name.clone(),
-            person: person.to_string(),
-        })
+    fn validate_chain(
+        &self,
+        person: &str,
+        _: &str,
+        chain: &Chain,
+        _: &Options,
+    ) -> Option<ErrorKind> {
+        needs_look_link(person, chain)
     }
 
     fn run(&self, ctx: &TaskContext<'_>) -> TaskReport {
@@ -133,26 +143,14 @@ impl TaskPlugin for Gaze {
             .base
             .prepare(room, &chain)
             .reach(&query, setup.solver.as_ref());
-        // The sight line is always checked, by a ray cast that names the
-        // first obstacle it meets.
-        let all = obstacles.unwrap_or_else(|| Obstacles::new(room, 0.0));
-        let threshold = task.options.number("acuity");
-        let mut sight = look(
+        let sight = see(
             &chain,
             &placement,
             target.position_mm,
-            legible,
-            &all,
+            room,
+            &setup,
             &task.options,
         );
-        sight.body_collision =
-            obstacles_met_by_body(&chain, &placement, setup.collisions.then_some(&all));
-        sight.reason = sight.reason(
-            setup.tolerance_mm,
-            placement.solution.distance_mm,
-            threshold,
-        );
-        sight.acuity_threshold = threshold;
         let asked = Asked {
             task,
             person: setup.person,
@@ -169,8 +167,52 @@ impl TaskPlugin for Gaze {
     }
 }
 
+/// What the eyes of `chain` see of `target` in the placed posture, and if
+/// not, why: the sight line is always checked, by a ray cast that names
+/// the first obstacle it meets; the body's links when collisions are on.
+pub(super) fn see(
+    chain: &Chain,
+    placement: &Placement,
+    target: Point3<f64>,
+    room: &Room,
+    setup: &Setup<'_>,
+    options: &Options,
+) -> Sight {
+    let threshold = options.number("acuity");
+    let legible = legible_mm(options);
+    let mut sight = look(
+        chain,
+        placement,
+        target,
+        legible,
+        &Obstacles::new(room, 0.0),
+        options,
+    );
+    let body_obstacles = setup.obstacles(room);
+    sight.body_collision = obstacles_met_by_body(chain, placement, body_obstacles.as_ref());
+    sight.reason = sight.reason(
+        setup.tolerance_mm,
+        placement.solution.distance_mm,
+        threshold,
+    );
+    sight.acuity_threshold = threshold;
+    sight
+}
+
+/// A gaze effector's chain must end in its look link.
+pub(super) fn needs_look_link(person: &str, chain: &Chain) -> Option<ErrorKind> {
+    let ends_in_look = chain
+        .joints
+        .last()
+        .is_some_and(|j| j.kind == JointKind::Prismatic);
+    (!ends_in_look).then(|| ErrorKind::NoLookLink {
+        effector: chain.effector_name.clone(),
+        person: person.to_string(),
+    })
+}
+
 /// The chain with its look link limited to the legible range.
-fn with_look_range(chain: &Chain, [d_min, d_max]: [f64; 2]) -> Chain {
+pub(super) fn with_look_range(chain: &Chain, [d_min, d_max]: [f64; 2]) -> Chain {
     let mut chain = chain.clone();
     if let Some(look) = chain.joints.last_mut() {
         look.min = d_min - look.dh.d_mm;
@@ -244,10 +286,11 @@ impl Sight {
         solver_distance_mm: f64,
         threshold: f64,
     ) -> Option<&'static str> {
+        // Distances, like the look link's end, count within the tolerance.
         let [d_min, d_max] = self.legible_mm;
-        if self.distance_mm < d_min {
+        if self.distance_mm < d_min - tolerance_mm {
             Some("too near")
-        } else if self.distance_mm > d_max {
+        } else if self.distance_mm > d_max + tolerance_mm {
             Some("too far")
         } else if vision::acuity(self.off_axis_rad) < threshold {
             // The solver could not bring the line of sight onto the target:

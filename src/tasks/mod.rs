@@ -4,8 +4,10 @@ mod common;
 mod gaze;
 mod map;
 mod reach;
+mod reach_and_gaze;
 
 pub use common::mix_seed;
 pub use gaze::Gaze;
 pub use map::Map;
 pub use reach::Reach;
+pub use reach_and_gaze::ReachAndGaze;

@@ -69,21 +69,28 @@ impl Plugin for Fabrik {
     }
 }
 
+impl FabrikSettings {
+    /// The settings an option block of `fabrik` gives.
+    pub fn from_options(o: &Options) -> Self {
+        FabrikSettings {
+            starts: o.integer("starts") as u32,
+            neutral_start: o.boolean("neutral_start"),
+            max_iterations: o.integer("max_iterations") as u32,
+            stall: o.integer("stall") as u32,
+            sweeps: o.integer("sweeps") as u32,
+            samples: o.integer("samples") as u32,
+            avoid_obstacles: o.boolean("avoid_obstacles"),
+            kicks: o.integer("kicks") as u32,
+            kick: o.number("kick"),
+            ccd: o.boolean("ccd"),
+        }
+    }
+}
+
 impl SolverPlugin for Fabrik {
     fn build(&self, o: &Options) -> Box<dyn Solver> {
         Box::new(FabrikSolver {
-            settings: FabrikSettings {
-                starts: o.integer("starts") as u32,
-                neutral_start: o.boolean("neutral_start"),
-                max_iterations: o.integer("max_iterations") as u32,
-                stall: o.integer("stall") as u32,
-                sweeps: o.integer("sweeps") as u32,
-                samples: o.integer("samples") as u32,
-                avoid_obstacles: o.boolean("avoid_obstacles"),
-                kicks: o.integer("kicks") as u32,
-                kick: o.number("kick"),
-                ccd: o.boolean("ccd"),
-            },
+            settings: FabrikSettings::from_options(o),
         })
     }
 }
