@@ -29,7 +29,7 @@ pub enum TaskReport {
     Reach(ReachReport),
     Gaze(GazeReport),
     #[serde(rename = "reach_and_gaze")]
-    ReachAndGaze(ReachAndGazeReport),
+    ReachAndGaze(Box<ReachAndGazeReport>),
     Map(MapReport),
 }
 

@@ -60,7 +60,7 @@ room r {
   size 4000 x 3000 x 2500
   box screen at (500, 1000, 0) size (20, 1000, 2000)
   target poster at (100, 1500, 1500)
-  target tiny at (200, 1500, 1500)
+  target tiny at (1000, 100, 1500)
 }
 person p {
   mannequin upper_body
@@ -70,9 +70,7 @@ person p {
 
 #[test]
 fn the_obstacle_in_the_way_is_named_and_distance_limits_give_their_reason() {
-    let text = format!(
-        "{WALL}gaze poster by p {{ size 50mm }}\ngaze tiny by p {{ size 0.5mm collisions false }}\n"
-    );
+    let text = format!("{WALL}gaze poster by p {{ size 50mm }}\ngaze tiny by p {{ size 0.5mm }}\n");
     let report = run(Input::Text {
         name: "wall.reach",
         text: &text,
@@ -83,6 +81,6 @@ fn the_obstacle_in_the_way_is_named_and_distance_limits_give_their_reason() {
         (Some("occluded"), Some("screen"))
     );
     let tiny = gaze(&report, "tiny", "p");
-    // 0.5 mm is legible to 344 mm; the eyes are some 800 mm away.
+    // 0.5 mm is legible to 344 mm; the eyes stay more than a metre away.
     assert_eq!(tiny.reason, Some("too far"), "{tiny:?}");
 }

@@ -182,13 +182,13 @@ impl TaskPlugin for ReachAndGaze {
             target.position_mm,
             sight,
         );
-        TaskReport::ReachAndGaze(ReachAndGazeReport {
+        TaskReport::ReachAndGaze(Box::new(ReachAndGazeReport {
             name: task.subject.clone(),
             person: setup.person.name.clone(),
             ok: reach.ok && gaze.ok,
             reach,
             gaze,
-        })
+        }))
     }
 }
 
