@@ -218,7 +218,10 @@ fn syntax_errors_say_what_was_expected() {
             "room k { box b at (0, 0) size (1, 1, 1) }",
             "expected `,` or an operator, found `)`",
         ),
-        ("reach mug", "expected `,` or `by`, found end of file"),
+        (
+            "reach mug",
+            "expected `,`, `and` or `by`, found end of file",
+        ),
         ("person p { mannequin }", "expected a name, found `}`"),
         ("let room = 1", "expected a name, found `room`"),
     ];

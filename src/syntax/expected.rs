@@ -15,7 +15,7 @@ fn describe(rule: Rule) -> Option<&'static str> {
         EOI => "end of file",
         file | inline_space | WHITESPACE | COMMENT | line_comment | block_comment | item
         | ident_char | prefix | infix | primary | room_item | mannequin_item | joint_prop
-        | person_item | joint_override => return None,
+        | person_item | joint_override | and_task => return None,
         ident | keyword => "a name",
         number | quantity => "a number",
         unit | bad_unit => "a unit",
@@ -55,7 +55,6 @@ fn describe(rule: Rule) -> Option<&'static str> {
         option => "an option name",
         option_value => "an option value",
         task => "a declaration or task",
-        and_task => "`and` and a second task kind",
         subject_list | subject => "a target name",
         ident_list => "a person's name",
     })
