@@ -293,6 +293,8 @@ pub struct MapReport {
     /// The surface (`counter.top`).
     pub name: String,
     pub person: String,
+    /// What a point asks: `reach` (reached) or `gaze` (seen).
+    pub of: &'static str,
     /// At least one point is reachable.
     pub ok: bool,
     pub points: usize,
@@ -337,13 +339,14 @@ pub struct MapCell {
 }
 
 impl MapCell {
-    pub fn new(cell: &GridCell, placement: &Placement, chain: &Chain, tolerance_mm: f64) -> Self {
+    /// The cell with `reachable` false; the task judges it.
+    pub fn new(cell: &GridCell, placement: &Placement, chain: &Chain) -> Self {
         let pose = &placement.pose;
         MapCell {
             column: cell.column,
             row: cell.row,
             point_mm: point(cell.point_mm),
-            reachable: placement.solution.reaches(tolerance_mm),
+            reachable: false,
             distance_mm: mm(placement.solution.distance_mm),
             comfort: fixed(chain.discomfort(&placement.solution.q), 4),
             base_mm_deg: [
@@ -356,6 +359,16 @@ impl MapCell {
 }
 
 impl MapReport {
+    /// How a point that counts is described: `reached`/`reachable`, or
+    /// `seen`/`visible` for a gaze map.
+    pub fn words(&self) -> [&'static str; 2] {
+        if self.of == "gaze" {
+            ["seen", "visible"]
+        } else {
+            ["reached", "reachable"]
+        }
+    }
+
     pub fn new(
         surface: &Surface,
         person: &Person,
@@ -389,6 +402,7 @@ impl MapReport {
         MapReport {
             name: surface.name.clone(),
             person: person.name.clone(),
+            of: "reach",
             ok: reachable > 0,
             points: cells.len(),
             reachable,

@@ -38,8 +38,9 @@ const UNREACHABLE: &str = "#e8b4b0";
 pub fn svg(m: &MapReport) -> String {
     let (w, h) = (m.columns as f64 * CELL_PX, m.rows as f64 * CELL_PX);
     let title = format!(
-        "{} reached by {} ({} base): {:.1} % of {} points",
+        "{} {} by {} ({} base): {:.1} % of {} points",
         m.name,
+        m.words()[0],
         m.person,
         m.base,
         m.fraction * 100.0,
@@ -71,15 +72,15 @@ pub fn svg(m: &MapReport) -> String {
             c.point_mm[0],
             c.point_mm[1],
             c.point_mm[2],
-            if c.reachable {
-                "reachable".to_string()
-            } else {
-                format!("{} mm short", c.distance_mm)
+            match (c.reachable, m.of) {
+                (true, _) => m.words()[1].to_string(),
+                (false, "gaze") => "not seen".to_string(),
+                (false, _) => format!("{} mm short", c.distance_mm),
             }
         );
     }
     axes(&mut s, m, w, h);
-    legend(&mut s, w);
+    legend(&mut s, w, m.words()[1]);
     s.push_str("</svg>\n");
     s
 }
@@ -125,9 +126,10 @@ fn axes(s: &mut String, m: &MapReport, w: f64, h: f64) {
     );
 }
 
-fn legend(s: &mut String, w: f64) {
+fn legend(s: &mut String, w: f64, yes: &str) {
     let x = MARGIN + w + 24.0;
-    for (k, (fill, label)) in [(REACHABLE, "reachable"), (UNREACHABLE, "not reachable")]
+    let no = format!("not {yes}");
+    for (k, (fill, label)) in [(REACHABLE, yes), (UNREACHABLE, no.as_str())]
         .into_iter()
         .enumerate()
     {

@@ -101,10 +101,15 @@ fn table(report: &Report) -> String {
                 format!("{:.2}", g.comfort),
             ],
             TaskReport::Map(m) => [
-                "map".to_string(),
+                if m.of == "gaze" { "gaze_map" } else { "map" }.to_string(),
                 m.name.clone(),
                 m.person.clone(),
-                format!("{:.1} % of {}", m.fraction * 100.0, m.points),
+                format!(
+                    "{:.1} % of {} {}",
+                    m.fraction * 100.0,
+                    m.points,
+                    if m.of == "gaze" { "seen" } else { "reached" }
+                ),
                 "-".into(),
                 "-".into(),
                 "-".into(),
@@ -208,17 +213,20 @@ fn gaze_detail(out: &mut String, g: &GazeReport) {
 
 fn map_detail(out: &mut String, m: &MapReport) {
     let heights = match m.reachable_heights_mm {
+        Some([lo, hi]) if m.of == "gaze" => format!("seen at heights {lo:.0} to {hi:.0} mm"),
         Some([lo, hi]) => format!("reachable heights {lo:.0} to {hi:.0} mm"),
+        None if m.of == "gaze" => "nothing seen".to_string(),
         None => "nothing reachable".to_string(),
     };
     let _ = writeln!(
         out,
-        "\n{} by {} ({} base): {} of {} points reachable ({:.1} %), {}; {} view, {} x {} cells of {:.0} mm",
+        "\n{} by {} ({} base): {} of {} points {} ({:.1} %), {}; {} view, {} x {} cells of {:.0} mm",
         m.name,
         m.person,
         m.base,
         m.reachable,
         m.points,
+        if m.of == "gaze" { "seen" } else { "reachable" },
         m.fraction * 100.0,
         heights,
         m.view,

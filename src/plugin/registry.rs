@@ -40,6 +40,7 @@ impl Registry {
         r.register_task(crate::tasks::Gaze);
         r.register_task(crate::tasks::ReachAndGaze);
         r.register_task(crate::tasks::Map);
+        r.register_task(crate::tasks::GazeMap);
         r.register_format(crate::output::Text);
         r.register_format(crate::output::Json);
         r

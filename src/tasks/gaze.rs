@@ -34,35 +34,41 @@ impl Plugin for Gaze {
     }
 
     fn params(&self) -> Vec<ParamSpec> {
-        let mut params = common_params(
-            "target",
-            "seeds the solver's random starts (mixed with target and person)",
-        );
-        for p in &mut params {
-            match p.name {
-                "effector" => {
-                    *p = ParamSpec::name(
-                        "effector",
-                        "eyes",
-                        "the effector whose chain ends in the look link",
-                    )
-                }
-                // FABRIK turns the neck and eyes before the trunk, as people
-                // do; the incremental solver moves every joint alike.
-                "solver" => {
-                    *p = ParamSpec::plugin(
-                        "solver",
-                        PluginKind::Solver,
-                        "fabrik",
-                        "the IK solver and its options",
-                    )
-                }
-                _ => {}
-            }
-        }
-        params.extend(vision_params());
-        params
+        gaze_params("target")
     }
+}
+
+/// The options of a gaze at a target or a point (`what`): the common ones
+/// with the eyes as effector and fabrik as solver, and those of vision.
+pub(super) fn gaze_params(what: &'static str) -> Vec<ParamSpec> {
+    let mut params = common_params(
+        what,
+        "seeds the solver's random starts (mixed with subject and person)",
+    );
+    for p in &mut params {
+        match p.name {
+            "effector" => {
+                *p = ParamSpec::name(
+                    "effector",
+                    "eyes",
+                    "the effector whose chain ends in the look link",
+                )
+            }
+            // FABRIK turns the neck and eyes before the trunk, as people
+            // do; the incremental solver moves every joint alike.
+            "solver" => {
+                *p = ParamSpec::plugin(
+                    "solver",
+                    PluginKind::Solver,
+                    "fabrik",
+                    "the IK solver and its options",
+                )
+            }
+            _ => {}
+        }
+    }
+    params.extend(vision_params());
+    params
 }
 
 /// The options of what the eyes must make out: the object's size, the

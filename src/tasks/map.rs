@@ -8,11 +8,14 @@ use rayon::prelude::*;
 
 use super::common::{common_params, mix_seed, Setup};
 use crate::error::ErrorKind;
+use crate::kinematics::Chain;
+use crate::plugin::Placement;
 use crate::plugin::{
     Options, ParamSpec, Plugin, ReachQuery, Search, SubjectKind, TaskContext, TaskPlugin,
 };
 use crate::report::{MapCell, MapReport, TaskReport};
 use crate::scene::Room;
+use nalgebra::Point3;
 
 /// The plugin `map`.
 pub struct Map;
@@ -31,18 +34,34 @@ impl Plugin for Map {
             "point",
             "seeds the solver's random starts (mixed with surface, person and cell)",
         );
-        params.extend([
-            ParamSpec::length("step", 50.0, "the grid's spacing on the surface")
-                .range(1.0, 10_000.0),
-            ParamSpec::integer(
-                "max_points",
-                100_000,
-                "refuse maps with more points than this",
-            )
-            .range(1.0, 1e8),
-        ]);
+        params.extend(grid_params());
         params
     }
+}
+
+/// The grid's options: `step` and `max_points`.
+pub(super) fn grid_params() -> [ParamSpec; 2] {
+    [
+        ParamSpec::length("step", 50.0, "the grid's spacing on the surface").range(1.0, 10_000.0),
+        ParamSpec::integer(
+            "max_points",
+            100_000,
+            "refuse maps with more points than this",
+        )
+        .range(1.0, 1e8),
+    ]
+}
+
+/// A map whose grid would have more than `max_points` points.
+pub(super) fn too_large(room: &Room, subject: &str, options: &Options) -> Option<ErrorKind> {
+    let surface = room.surface_named(subject)?;
+    let (columns, rows) = surface.grid_size(options.length_mm("step"));
+    let points = columns.saturating_mul(rows);
+    let max = options.integer("max_points") as usize;
+    (points > max).then(|| ErrorKind::TooLarge {
+        what: format!("the map of `{subject}` ({points} points)"),
+        limit: format!("{max} points: raise `max_points` or the `step`"),
+    })
 }
 
 impl TaskPlugin for Map {
@@ -51,55 +70,70 @@ impl TaskPlugin for Map {
     }
 
     fn validate(&self, room: &Room, subject: &str, options: &Options) -> Option<ErrorKind> {
-        let surface = room.surface_named(subject)?;
-        let (columns, rows) = surface.grid_size(options.length_mm("step"));
-        let points = columns.saturating_mul(rows);
-        let max = options.integer("max_points") as usize;
-        (points > max).then(|| ErrorKind::TooLarge {
-            what: format!("the map of `{subject}` ({points} points)"),
-            limit: format!("{max} points: raise `max_points` or the `step`"),
-        })
+        too_large(room, subject, options)
     }
 
     fn run(&self, ctx: &TaskContext<'_>) -> TaskReport {
-        let task = ctx.task;
         let setup = Setup::new(ctx);
-        let person = setup.person;
-        let (room, surface) = ctx
-            .scenario
-            .surface(&task.subject)
-            .expect("checked surface");
-        let prepared = setup.base.prepare(room, &setup.chain);
-        let obstacles = setup.obstacles(room);
-        let step_mm = task.options.length_mm("step");
-        let grid = surface.grid(step_mm);
-        ctx.progress.add_work(grid.cells.len() as u64);
-        let cells: Vec<MapCell> = grid
-            .cells
-            .par_iter()
-            .map(|cell| {
-                let (column, row) = (cell.column.to_string(), cell.row.to_string());
-                let query = ReachQuery {
-                    target_room_mm: cell.point_mm,
-                    tolerance_mm: setup.tolerance_mm,
-                    seed: mix_seed(setup.seed, &[&task.subject, &person.name, &column, &row]),
-                    search: Search::FirstReaching,
-                    obstacles: obstacles.as_ref(),
-                };
-                let placement = prepared.reach(&query, setup.solver.as_ref());
-                ctx.progress.advance(1);
-                MapCell::new(cell, &placement, &setup.chain, setup.tolerance_mm)
-            })
-            .collect();
-        let report = MapReport::new(
-            &surface,
-            person,
-            setup.solver_name,
-            step_mm,
-            setup.tolerance_mm,
-            &grid,
-            cells,
-        );
-        TaskReport::Map(report)
+        let tolerance_mm = setup.tolerance_mm;
+        run_map(ctx, &setup, &setup.chain, "reach", &|placement, _| {
+            placement.solution.reaches(tolerance_mm)
+        })
     }
+}
+
+/// Whether a point is reached (or seen), given where the base stood and
+/// the posture found, and the point.
+pub(super) type Judge<'a> = dyn Fn(&Placement, Point3<f64>) -> bool + Sync + 'a;
+
+/// A map of the task's surface with `chain`: each point's placement found
+/// as for a reach of `chain`'s effector, judged by `judge`.
+pub(super) fn run_map(
+    ctx: &TaskContext<'_>,
+    setup: &Setup<'_>,
+    chain: &Chain,
+    of: &'static str,
+    judge: &Judge<'_>,
+) -> TaskReport {
+    let task = ctx.task;
+    let person = setup.person;
+    let (room, surface) = ctx
+        .scenario
+        .surface(&task.subject)
+        .expect("checked surface");
+    let prepared = setup.base.prepare(room, chain);
+    let obstacles = setup.obstacles(room);
+    let step_mm = task.options.length_mm("step");
+    let grid = surface.grid(step_mm);
+    ctx.progress.add_work(grid.cells.len() as u64);
+    let cells: Vec<MapCell> = grid
+        .cells
+        .par_iter()
+        .map(|cell| {
+            let (column, row) = (cell.column.to_string(), cell.row.to_string());
+            let query = ReachQuery {
+                target_room_mm: cell.point_mm,
+                tolerance_mm: setup.tolerance_mm,
+                seed: mix_seed(setup.seed, &[&task.subject, &person.name, &column, &row]),
+                search: Search::FirstReaching,
+                obstacles: obstacles.as_ref(),
+            };
+            let placement = prepared.reach(&query, setup.solver.as_ref());
+            ctx.progress.advance(1);
+            let mut map_cell = MapCell::new(cell, &placement, chain);
+            map_cell.reachable = judge(&placement, cell.point_mm);
+            map_cell
+        })
+        .collect();
+    let mut report = MapReport::new(
+        &surface,
+        person,
+        setup.solver_name,
+        step_mm,
+        setup.tolerance_mm,
+        &grid,
+        cells,
+    );
+    report.of = of;
+    TaskReport::Map(report)
 }

@@ -2,12 +2,14 @@
 
 mod common;
 mod gaze;
+mod gaze_map;
 mod map;
 mod reach;
 mod reach_and_gaze;
 
 pub use common::mix_seed;
 pub use gaze::Gaze;
+pub use gaze_map::GazeMap;
 pub use map::Map;
 pub use reach::Reach;
 pub use reach_and_gaze::ReachAndGaze;

@@ -23,6 +23,10 @@ use super::FabrikSettings;
 use crate::kinematics::{Chain, Joint, JointKind};
 use crate::plugin::{IkProblem, IkSolution};
 
+/// Kicks for a posture that reaches the target but passes through an
+/// obstacle: moving the bones out has failed, and more kicks rarely help.
+pub const BLOCKED_KICKS: u32 = 3;
+
 /// The working state of one solve.
 pub(super) struct Pass<'a> {
     pub settings: &'a FabrikSettings,
@@ -94,7 +98,13 @@ impl<'a> Pass<'a> {
             };
             progress = progress.min(d);
             if stalled >= s.stall {
-                if kicks == s.kicks {
+                // On the target but through a box: a few kicks, not all.
+                let limit = if d <= tolerance {
+                    s.kicks.min(BLOCKED_KICKS)
+                } else {
+                    s.kicks
+                };
+                if kicks >= limit {
                     break;
                 }
                 self.kick(rng);

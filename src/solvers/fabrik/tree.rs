@@ -12,7 +12,7 @@ use rand_chacha::rand_core::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
 use super::bones::{bones, Bone};
-use super::pass::{kick, Pass};
+use super::pass::{kick, Pass, BLOCKED_KICKS};
 use super::FabrikSettings;
 use crate::collision::PlacedObstacles;
 use crate::kinematics::{Body, Chain};
@@ -192,6 +192,10 @@ impl Tree<'_> {
         while iterations < s.max_iterations {
             let now = self.solution(iterations);
             let (reaches, score) = now.score(self.problem.goals, self.problem.tolerance_mm);
+            let near = now
+                .distances_mm
+                .iter()
+                .all(|&d| d <= self.problem.tolerance_mm);
             if (reaches, score) > best.score(self.problem.goals, self.problem.tolerance_mm) {
                 best = now;
             }
@@ -205,7 +209,13 @@ impl Tree<'_> {
             };
             progress = progress.min(-score);
             if stalled >= s.stall {
-                if kicks == s.kicks {
+                // On the targets but through a box: a few kicks, not all.
+                let limit = if near {
+                    s.kicks.min(BLOCKED_KICKS)
+                } else {
+                    s.kicks
+                };
+                if kicks >= limit {
                     break;
                 }
                 kick(&mut self.q, &whole.joints, s.kick, rng);
