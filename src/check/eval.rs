@@ -110,10 +110,15 @@ impl Checker<'_> {
     }
 
     fn name_value(&mut self, name: &str, span: Span) -> Option<Quantity> {
+        if let Some((_, value)) = self.params.iter().rev().find(|(n, _)| n == name) {
+            // A parameter that failed to evaluate has reported its error.
+            return *value;
+        }
         if self.lets.get(name).is_some() {
             return self.let_value(name, Some(span));
         }
-        let suggestion = suggest(name, self.lets.names());
+        let params = self.params.iter().map(|(n, _)| n.as_str());
+        let suggestion = suggest(name, self.lets.names().chain(params));
         self.error(Error::new(
             ErrorKind::UnknownName {
                 what: "constant",

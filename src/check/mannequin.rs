@@ -9,14 +9,19 @@ use crate::error::{Error, ErrorKind};
 use crate::kinematics::{Body, Dh, Effector, Joint, JointKind};
 use crate::names::suggest;
 use crate::span::Span;
-use crate::syntax::ast::{self, Expr, JointDecl, LimitsExpr, MannequinDecl};
+use crate::span::{FileId, Name};
+use crate::syntax::ast::{self, Expr, JointDecl, LimitsExpr, MannequinDecl, MannequinRef};
+use crate::units::Quantity;
 
 const DH_PARAMS: [&str; 4] = ["theta", "d", "alpha", "a"];
+/// How many mannequins may name one another in a row (`a = b`, `b = c`).
+const MAX_ALIASES: usize = 16;
 /// The largest joint range a revolute limit may name: one full turn.
 const MAX_ANGLE_RAD: f64 = 2.0 * std::f64::consts::PI;
 
 impl Checker<'_> {
-    /// Build every mannequin's body once, so its errors are reported once.
+    /// Build every mannequin's body once (with its parameters' defaults,
+    /// or an alias's), so its errors are reported once.
     pub(super) fn build_mannequins(&mut self) {
         let decls: Vec<_> = self
             .mannequins
@@ -24,9 +29,118 @@ impl Checker<'_> {
             .map(|(n, d, f)| (n.to_string(), d, f))
             .collect();
         for (name, decl, file) in decls {
-            let body = self.in_file(file, |c| c.body(decl));
+            let body = match &decl.alias {
+                Some(target) => self.body_of(target, file, 0),
+                None => self.body_with(decl, file, &[], file),
+            };
             self.bodies.insert(name, body);
         }
+    }
+
+    /// The body of mannequin reference `r` (written in `file`): the named
+    /// mannequin with the parameters `r` gives.
+    pub(super) fn body_of(&mut self, r: &MannequinRef, file: FileId, depth: usize) -> Option<Body> {
+        let (decl, decl_file) = match self.mannequins.resolve(&r.name) {
+            Ok(found) => found,
+            Err(e) => {
+                self.error(e);
+                return None;
+            }
+        };
+        match &decl.alias {
+            Some(target) if r.args.is_empty() && depth < MAX_ALIASES => {
+                self.body_of(target, decl_file, depth + 1)
+            }
+            Some(_) if depth >= MAX_ALIASES => {
+                self.error(Error::new(
+                    ErrorKind::TooLarge {
+                        what: "a chain of mannequin aliases".into(),
+                        limit: format!("{MAX_ALIASES} (or it loops)"),
+                    },
+                    r.name.span,
+                ));
+                None
+            }
+            Some(_) => {
+                self.error(Error::new(
+                    ErrorKind::Unsupported {
+                        what: format!("parameters for `{}`, which is itself another mannequin with parameters given", r.name.value),
+                        help: "give the parameters to the mannequin it names".into(),
+                    },
+                    r.name.span,
+                ));
+                None
+            }
+            None if r.args.is_empty() => self.bodies.get(&r.name.value).cloned().flatten(),
+            None => self.body_with(decl, decl_file, &r.args, file),
+        }
+    }
+
+    /// Build `decl` (of `file`) with `args` (written in `args_file`) for
+    /// its parameters, the others at their defaults.
+    fn body_with(
+        &mut self,
+        decl: &MannequinDecl,
+        file: FileId,
+        args: &[(Name, Expr)],
+        args_file: FileId,
+    ) -> Option<Body> {
+        let given = self.in_file(args_file, |c| c.mannequin_args(decl, args));
+        self.in_file(file, |c| {
+            let outer = c.params.len();
+            let mut seen: Vec<&Name> = Vec::new();
+            for (name, default) in &decl.params {
+                if let Some(first) = seen.iter().find(|n| n.value == name.value) {
+                    let e = Error::new(
+                        ErrorKind::Duplicate {
+                            what: "parameter",
+                            name: name.value.clone(),
+                        },
+                        name.span,
+                    );
+                    c.error(e.with_note(first.span, "first defined here"));
+                }
+                seen.push(name);
+                let value = match given.iter().find(|(n, _)| n == &name.value) {
+                    Some((_, v)) => *v,
+                    None => c.eval(default),
+                };
+                c.params.push((name.value.clone(), value));
+            }
+            let body = c.body(decl);
+            c.params.truncate(outer);
+            body
+        })
+    }
+
+    /// The values of `args`, each checked to name a parameter of `decl`.
+    fn mannequin_args(
+        &mut self,
+        decl: &MannequinDecl,
+        args: &[(Name, Expr)],
+    ) -> Vec<(String, Option<Quantity>)> {
+        let mut values: Vec<(String, Option<Quantity>)> = Vec::new();
+        for (name, expr) in args {
+            if !decl.params.iter().any(|(p, _)| p.value == name.value) {
+                let names = decl.params.iter().map(|(p, _)| p.value.as_str());
+                self.error(Error::new(
+                    ErrorKind::UnknownName {
+                        what: "parameter of this mannequin",
+                        name: name.value.clone(),
+                        suggestion: suggest(&name.value, names),
+                    },
+                    name.span,
+                ));
+                continue;
+            }
+            if values.iter().any(|(n, _)| n == &name.value) {
+                self.repeated(std::iter::once(name.span), &format!("`{}`", name.value));
+                continue;
+            }
+            let value = self.eval(expr);
+            values.push((name.value.clone(), value));
+        }
+        values
     }
 
     fn body(&mut self, decl: &MannequinDecl) -> Option<Body> {
@@ -298,7 +412,7 @@ impl Checker<'_> {
         exprs.first()
     }
 
-    fn repeated(&mut self, spans: impl Iterator<Item = Span>, what: &str) {
+    pub(super) fn repeated(&mut self, spans: impl Iterator<Item = Span>, what: &str) {
         for span in spans {
             self.error(Error::new(
                 ErrorKind::Repeated {

@@ -64,12 +64,20 @@ struct Checker<'a> {
     defaults_of: HashMap<FileId, UnitDefaults>,
     /// The default units of the file whose text is being evaluated.
     defaults: UnitDefaults,
+    /// That file.
+    file: FileId,
     lets: Table<'a, LetDecl>,
     let_values: HashMap<String, Option<Quantity>>,
     let_stack: Vec<String>,
     rooms: Table<'a, crate::syntax::ast::RoomDecl>,
     mannequins: Table<'a, crate::syntax::ast::MannequinDecl>,
     bodies: HashMap<String, Option<Body>>,
+    profiles: Table<'a, crate::syntax::ast::ProfileDecl>,
+    base_presets: Table<'a, crate::syntax::ast::BasePreset>,
+    vision_presets: Table<'a, crate::syntax::ast::VisionPreset>,
+    /// Mannequin parameters in scope while a mannequin is built, innermost
+    /// last; they hide constants of the same name.
+    params: Vec<(String, Option<Quantity>)>,
     persons: Table<'a, crate::syntax::ast::PersonDecl>,
     tasks: Vec<(&'a crate::syntax::ast::TaskDecl, FileId)>,
 }
@@ -81,12 +89,17 @@ impl<'a> Checker<'a> {
             errors: Vec::new(),
             defaults_of: HashMap::new(),
             defaults: UnitDefaults::default(),
+            file: FileId::default(),
             lets: Table::new("constant"),
             let_values: HashMap::new(),
             let_stack: Vec::new(),
             rooms: Table::new("room"),
             mannequins: Table::new("mannequin"),
             bodies: HashMap::new(),
+            profiles: Table::new("profile"),
+            base_presets: Table::new("base preset"),
+            vision_presets: Table::new("vision"),
+            params: Vec::new(),
             persons: Table::new("person"),
             tasks: Vec::new(),
         }
@@ -98,10 +111,11 @@ impl<'a> Checker<'a> {
 
     /// Run `f` with the default units of `file`.
     fn in_file<T>(&mut self, file: FileId, f: impl FnOnce(&mut Self) -> T) -> T {
-        let saved = self.defaults;
+        let saved = (self.defaults, self.file);
         self.defaults = self.defaults_of.get(&file).copied().unwrap_or_default();
+        self.file = file;
         let out = f(self);
-        self.defaults = saved;
+        (self.defaults, self.file) = saved;
         out
     }
 
@@ -142,6 +156,9 @@ impl<'a> Checker<'a> {
                 Item::Let(d) => self.lets.insert(&d.name, d, f.id),
                 Item::Room(d) => self.rooms.insert(&d.name, d, f.id),
                 Item::Mannequin(d) => self.mannequins.insert(&d.name, d, f.id),
+                Item::Profile(d) => self.profiles.insert(&d.name, d, f.id),
+                Item::BasePreset(d) => self.base_presets.insert(&d.name, d, f.id),
+                Item::VisionPreset(d) => self.vision_presets.insert(&d.name, d, f.id),
                 Item::Person(d) => self.persons.insert(&d.name, d, f.id),
                 Item::Task(d) if is_root => {
                     self.tasks.push((d, f.id));

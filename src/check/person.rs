@@ -5,10 +5,10 @@ use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::kinematics::{Body, Joint, JointKind};
 use crate::names::suggest;
-use crate::plugin::{PluginConfig, PluginKind};
+use crate::plugin::{Options, PluginConfig, PluginKind, Value};
 use crate::scene::Person;
 use crate::span::Name;
-use crate::syntax::ast::{self, JointOverride, PersonDecl, PersonMannequin};
+use crate::syntax::ast::{self, JointOverride, OptionDecl, PersonDecl, PersonMannequin};
 
 impl Checker<'_> {
     pub(super) fn persons(&mut self) -> Vec<Person> {
@@ -23,21 +23,81 @@ impl Checker<'_> {
         let owner = format!("person `{}`", decl.name.value);
         let mannequin = self.one_of(
             &decl.mannequins,
-            |m| m.name.span,
+            |m| m.mannequin.name.span,
             &owner,
             "mannequin",
             decl.name.span,
         );
         let base = self.one_of(&decl.bases, |b| b.span, &owner, "base", decl.name.span);
         let body = mannequin.and_then(|m| self.person_body(m));
-        let base = base.and_then(|b| self.plugin_config(PluginKind::Base, b));
+        let base = base.and_then(|b| self.base_config(b));
+        let vision = self.person_vision(&decl.visions);
         Some(Person {
             name: decl.name.value.clone(),
-            mannequin: mannequin?.name.value.clone(),
+            mannequin: mannequin?.mannequin.name.value.clone(),
             chain: body.as_ref()?.chain(0),
             body: body?,
             base: base?,
+            vision: vision?,
         })
+    }
+
+    /// A base plugin, or a base preset (`base power_chair = wheelchair
+    /// {...}`) with the person's own options over the preset's.
+    fn base_config(&mut self, b: &ast::PluginUse) -> Option<PluginConfig> {
+        let preset = self.base_presets.get(&b.name.value);
+        let (Some((preset, file)), None) = (preset, self.registry.base(&b.name.value)) else {
+            return self.plugin_config(PluginKind::Base, b);
+        };
+        let mut config =
+            self.in_file(file, |c| c.plugin_config(PluginKind::Base, &preset.plugin))?;
+        if b.options.is_empty() {
+            return Some(config);
+        }
+        let own = ast::PluginUse {
+            name: preset.plugin.name.clone(),
+            options: b.options.clone(),
+            span: b.span,
+        };
+        let own = self.plugin_config(PluginKind::Base, &own)?;
+        for given in &b.options {
+            if let Some(value) = own.options.get(&given.name.value) {
+                config.options = config.options.with(&given.name.value, value.clone());
+            }
+        }
+        Some(config)
+    }
+
+    /// The person's vision settings: a preset's options, then their own;
+    /// only the options given (a gaze task's own options come first, then
+    /// these, then the defaults).
+    fn person_vision(&mut self, visions: &[ast::PersonVision]) -> Option<Options> {
+        self.repeated(visions.iter().skip(1).map(|v| v.span), "`vision`");
+        let Some(vision) = visions.first() else {
+            return Some(Options::default());
+        };
+        let params = crate::tasks::person_vision_params();
+        let mut given: Vec<(&'static str, Value)> = Vec::new();
+        if let Some(name) = &vision.preset {
+            let (preset, file) = match self.vision_presets.resolve(name) {
+                Ok(found) => found,
+                Err(e) => {
+                    self.error(e);
+                    return None;
+                }
+            };
+            let label = format!("vision `{}`", name.value);
+            let options = self.in_file(file, |c| {
+                c.options(&label, &params, &preset.options, preset.span)
+            })?;
+            given.extend(explicit(&options, &preset.options));
+        }
+        let options = self.options("`vision`", &params, &vision.options, vision.span)?;
+        for (name, value) in explicit(&options, &vision.options) {
+            given.retain(|(n, _)| *n != name);
+            given.push((name, value));
+        }
+        Some(Options::new(given))
     }
 
     /// Exactly one of `items`: errors for none and for each extra one.
@@ -70,12 +130,9 @@ impl Checker<'_> {
     }
 
     fn person_body(&mut self, m: &PersonMannequin) -> Option<Body> {
-        if let Err(e) = self.mannequins.resolve(&m.name) {
-            self.error(e);
-            return None;
-        }
+        let file = self.file;
         // A mannequin that failed to build has reported its own errors.
-        let mut body = self.bodies.get(&m.name.value).cloned().flatten()?;
+        let mut body = self.body_of(&m.mannequin, file, 0)?;
         let mut ok = true;
         for o in &m.overrides {
             ok &= self.apply_override(&mut body.joints, o).is_some();
@@ -88,9 +145,12 @@ impl Checker<'_> {
     }
 
     fn apply_override(&mut self, joints: &mut [Joint], o: &JointOverride) -> Option<()> {
-        let (JointOverride::Limits { joint, .. }
-        | JointOverride::Neutral { joint, .. }
-        | JointOverride::Weight { joint, .. }) = o;
+        let joint = match o {
+            JointOverride::Limits { joint, .. }
+            | JointOverride::Neutral { joint, .. }
+            | JointOverride::Weight { joint, .. } => joint,
+            JointOverride::Profile { name } => return self.apply_profile(joints, name),
+        };
         let i = self.joint_index(joints, joint)?;
         let kind = match joints[i].kind {
             JointKind::Revolute => ast::JointKind::Revolute,
@@ -112,8 +172,27 @@ impl Checker<'_> {
                 joints[i].neutral = self.neutral_within(v, min, max, kind, value.span)?;
             }
             JointOverride::Weight { value, .. } => joints[i].weight = self.weight(value)?,
+            JointOverride::Profile { .. } => unreachable!("profiles are applied above"),
         }
         Some(())
+    }
+
+    /// Every override of profile `name`, in its own file's units.
+    fn apply_profile(&mut self, joints: &mut [Joint], name: &Name) -> Option<()> {
+        let (profile, file) = match self.profiles.resolve(name) {
+            Ok(found) => found,
+            Err(e) => {
+                self.error(e);
+                return None;
+            }
+        };
+        self.in_file(file, |c| {
+            let mut ok = true;
+            for o in &profile.overrides {
+                ok &= c.apply_override(joints, o).is_some();
+            }
+            ok.then_some(())
+        })
     }
 
     fn joint_index(&mut self, joints: &[Joint], joint: &Name) -> Option<usize> {
@@ -157,4 +236,13 @@ impl Checker<'_> {
             options,
         })
     }
+}
+
+/// The values of `options` that `given` names.
+fn explicit(options: &Options, given: &[OptionDecl]) -> Vec<(&'static str, Value)> {
+    options
+        .iter()
+        .filter(|(name, _)| given.iter().any(|g| g.name.value == *name))
+        .cloned()
+        .collect()
 }

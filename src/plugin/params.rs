@@ -171,6 +171,14 @@ impl ParamSpec {
         }
     }
 
+    /// An optional number: `None` when the file left it out.
+    pub fn optional_number(name: &'static str, doc: &'static str) -> Self {
+        ParamSpec {
+            optional: true,
+            ..Self::new(name, ParamKind::Number, None, doc)
+        }
+    }
+
     /// An optional angle: `None` when the file left it out.
     pub fn optional_angle(name: &'static str, doc: &'static str) -> Self {
         ParamSpec {
@@ -252,6 +260,15 @@ impl Options {
             .find(|(n, _)| *n == name)
             .unwrap_or_else(|| panic!("no declared option `{name}` to set"));
         slot.1 = value;
+        self
+    }
+
+    /// These options with `name` set to `value`, added if absent.
+    pub fn set(mut self, name: &'static str, value: Value) -> Self {
+        match self.values.iter_mut().find(|(n, _)| *n == name) {
+            Some(slot) => slot.1 = value,
+            None => self.values.push((name, value)),
+        }
         self
     }
 

@@ -97,6 +97,9 @@ pub struct Person {
     /// The chain of the body's first effector, the default for tasks.
     pub chain: Chain,
     pub base: PluginConfig,
+    /// The vision options the person's `vision` gives (only those given):
+    /// a gaze task's own options come first, then these, then defaults.
+    pub vision: Options,
 }
 
 impl Person {

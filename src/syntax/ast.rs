@@ -17,6 +17,9 @@ pub enum Item {
     Let(LetDecl),
     Room(RoomDecl),
     Mannequin(MannequinDecl),
+    Profile(ProfileDecl),
+    BasePreset(BasePreset),
+    VisionPreset(VisionPreset),
     Person(PersonDecl),
     Task(TaskDecl),
 }
@@ -105,6 +108,10 @@ pub struct TargetDecl {
 #[derive(Clone, Debug, PartialEq)]
 pub struct MannequinDecl {
     pub name: Name,
+    /// Parameters and their default expressions, in order.
+    pub params: Vec<(Name, Expr)>,
+    /// `= other(args)`: this mannequin is another with parameters given.
+    pub alias: Option<MannequinRef>,
     pub joints: Vec<JointDecl>,
     pub effectors: Vec<EffectorDecl>,
     pub span: Span,
@@ -150,20 +157,72 @@ pub struct PersonDecl {
     pub name: Name,
     pub mannequins: Vec<PersonMannequin>,
     pub bases: Vec<PluginUse>,
+    pub visions: Vec<PersonVision>,
     pub span: Span,
+}
+
+/// A mannequin by name, with parameters given: `upper_body(stature 1520mm)`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MannequinRef {
+    pub name: Name,
+    pub args: Vec<(Name, Expr)>,
 }
 
 #[derive(Clone, Debug, PartialEq)]
 pub struct PersonMannequin {
-    pub name: Name,
+    pub mannequin: MannequinRef,
+    /// Profiles and joint overrides, applied in order.
     pub overrides: Vec<JointOverride>,
 }
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum JointOverride {
-    Limits { joint: Name, limits: LimitsExpr },
-    Neutral { joint: Name, value: Expr },
-    Weight { joint: Name, value: Expr },
+    Limits {
+        joint: Name,
+        limits: LimitsExpr,
+    },
+    Neutral {
+        joint: Name,
+        value: Expr,
+    },
+    Weight {
+        joint: Name,
+        value: Expr,
+    },
+    /// `profile NAME`: every override of the profile.
+    Profile {
+        name: Name,
+    },
+}
+
+/// `profile NAME { overrides }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ProfileDecl {
+    pub name: Name,
+    pub overrides: Vec<JointOverride>,
+}
+
+/// `base NAME = plugin { options }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BasePreset {
+    pub name: Name,
+    pub plugin: PluginUse,
+}
+
+/// `vision NAME { options }`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct VisionPreset {
+    pub name: Name,
+    pub options: Vec<OptionDecl>,
+    pub span: Span,
+}
+
+/// A person's `vision`: a preset, options, or a preset with more options.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PersonVision {
+    pub preset: Option<Name>,
+    pub options: Vec<OptionDecl>,
+    pub span: Span,
 }
 
 /// A plugin by name with its option block: `incremental { rate 0.2 }`.

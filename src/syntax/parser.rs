@@ -93,6 +93,29 @@ impl Builder {
             }
             Rule::room => Item::Room(self.room(pair)),
             Rule::mannequin => Item::Mannequin(self.mannequin(pair)),
+            Rule::profile => {
+                let mut it = pair.into_inner();
+                let name = self.name(it.next().unwrap());
+                let overrides = it.map(|o| self.joint_override(o)).collect();
+                Item::Profile(ProfileDecl { name, overrides })
+            }
+            Rule::base_preset => {
+                let mut it = pair.into_inner();
+                let name = self.name(it.next().unwrap());
+                let plugin = self.plugin_use(it.next().unwrap());
+                Item::BasePreset(BasePreset { name, plugin })
+            }
+            Rule::vision_preset => {
+                let span = self.span(&pair);
+                let mut it = pair.into_inner();
+                let name = self.name(it.next().unwrap());
+                let options = self.options(it.next().unwrap());
+                Item::VisionPreset(VisionPreset {
+                    name,
+                    options,
+                    span,
+                })
+            }
             Rule::person => Item::Person(self.person(pair)),
             Rule::task => Item::Task(self.task(pair)),
             r => unreachable!("item rule {r:?}"),
@@ -286,9 +309,21 @@ impl Builder {
         let name = self.name(it.next().unwrap());
         let mut joints = Vec::new();
         let mut effectors = Vec::new();
+        let mut params = Vec::new();
+        let mut alias = None;
         for p in it {
             match p.as_rule() {
                 Rule::joint_decl => joints.push(self.joint(p)),
+                Rule::mannequin_alias => {
+                    alias = Some(self.mannequin_ref(p.into_inner().next().unwrap()));
+                }
+                Rule::mannequin_params => {
+                    for param in p.into_inner() {
+                        let mut kv = param.into_inner();
+                        let key = self.name(kv.next().unwrap());
+                        params.push((key, self.expr(kv.next().unwrap())));
+                    }
+                }
                 _ => {
                     let mut e = p.into_inner().peekable();
                     let name = self.name(e.next().unwrap());
@@ -302,6 +337,8 @@ impl Builder {
         }
         MannequinDecl {
             name,
+            params,
+            alias,
             joints,
             effectors,
             span,
@@ -368,15 +405,35 @@ impl Builder {
             name,
             mannequins: Vec::new(),
             bases: Vec::new(),
+            visions: Vec::new(),
             span,
         };
         for p in it {
             match p.as_rule() {
                 Rule::person_mannequin => {
                     let mut m = p.into_inner();
-                    let name = self.name(m.next().unwrap());
+                    let mannequin = self.mannequin_ref(m.next().unwrap());
                     let overrides = m.map(|o| self.joint_override(o)).collect();
-                    person.mannequins.push(PersonMannequin { name, overrides });
+                    person.mannequins.push(PersonMannequin {
+                        mannequin,
+                        overrides,
+                    });
+                }
+                Rule::person_vision => {
+                    let span = self.span(&p);
+                    let mut preset = None;
+                    let mut options = Vec::new();
+                    for part in p.into_inner() {
+                        match part.as_rule() {
+                            Rule::ident => preset = Some(self.name(part)),
+                            _ => options = self.options(part),
+                        }
+                    }
+                    person.visions.push(PersonVision {
+                        preset,
+                        options,
+                        span,
+                    });
                 }
                 _ => {
                     let plugin = p.into_inner().next().unwrap();
@@ -387,8 +444,31 @@ impl Builder {
         person
     }
 
+    /// `name` or `name(arg value, ...)`.
+    fn mannequin_ref(&mut self, pair: Pair<Rule>) -> MannequinRef {
+        let mut it = pair.into_inner();
+        let name = self.name(it.next().unwrap());
+        let args = it
+            .next()
+            .map(|args| {
+                args.into_inner()
+                    .map(|arg| {
+                        let mut kv = arg.into_inner();
+                        let key = self.name(kv.next().unwrap());
+                        (key, self.expr(kv.next().unwrap()))
+                    })
+                    .collect()
+            })
+            .unwrap_or_default();
+        MannequinRef { name, args }
+    }
+
     fn joint_override(&mut self, pair: Pair<Rule>) -> JointOverride {
         let rule = pair.as_rule();
+        if rule == Rule::profile_use {
+            let name = self.name(pair.into_inner().next().unwrap());
+            return JointOverride::Profile { name };
+        }
         if rule == Rule::limit_override {
             let joint = self.name(pair.clone().into_inner().next().unwrap());
             let limits = self.limits(pair);

@@ -15,7 +15,7 @@ use crate::error::ErrorKind;
 use crate::kinematics::{Chain, JointKind};
 use crate::plugin::{
     Options, ParamSpec, Placement, Plugin, PluginKind, ReachQuery, Search, SubjectKind,
-    TaskContext, TaskPlugin,
+    TaskContext, TaskPlugin, Value,
 };
 use crate::report::{Asked, GazeReport, Sight, TaskReport};
 use crate::scene::Room;
@@ -73,20 +73,60 @@ pub(super) fn gaze_params(what: &'static str) -> Vec<ParamSpec> {
 
 /// The options of what the eyes must make out: the object's size, the
 /// minimum angles of resolution, the near point and the acuity threshold.
+/// But for the size, a task leaves them to the person's `vision`, and
+/// that to the defaults of [`VISION_DEFAULTS`].
 pub(super) fn vision_params() -> Vec<ParamSpec> {
     vec![
         ParamSpec::length("size", 20.0, "the object's size S (a letter's height, a dial)").range(0.01, 10_000.0),
-        ParamSpec::angle("mar_far", ARCMIN_RAD, "minimum angle of resolution, far vision (eq. 1)")
+        ParamSpec::optional_angle("mar_far", "minimum angle of resolution, far vision (eq. 1); default 1arcmin")
             .range(0.01 * ARCMIN_RAD, 600.0 * ARCMIN_RAD),
         ParamSpec::optional_angle(
             "mar_near",
             "minimum angle of resolution, near vision (eq. 2); if left out the nearest distance is `near_point`",
-        ),
-        ParamSpec::length("near_point", 250.0, "the nearest distance the eyes focus at when `mar_near` is not given")
+        )
+        .range(0.01 * ARCMIN_RAD, 600.0 * ARCMIN_RAD),
+        ParamSpec::optional_length("near_point", "the nearest distance the eyes focus at when `mar_near` is not given; default 250mm")
             .range(0.0, 10_000.0),
-        ParamSpec::number("acuity", 0.5, "the least acuity e^(-7 |angle|) at which the target counts as seen (eq. 3)")
+        ParamSpec::optional_number("acuity", "the least acuity e^(-7 |angle|) at which the target counts as seen (eq. 3); default 0.5")
             .range(0.001, 1.0),
     ]
+}
+
+/// The defaults of the vision options a task and a person may leave out.
+pub const VISION_DEFAULTS: [(&str, Value); 3] = [
+    ("mar_far", Value::Angle(ARCMIN_RAD)),
+    ("near_point", Value::Length(250.0)),
+    ("acuity", Value::Number(0.5)),
+];
+
+/// The options a person's `vision` may give: those of `vision_params`
+/// but the object's size.
+pub fn person_vision_params() -> Vec<ParamSpec> {
+    vision_params()
+        .into_iter()
+        .filter(|p| p.name != "size")
+        .collect()
+}
+
+/// The task's options with every vision option filled in: the task's own,
+/// else the person's `vision`, else the default.
+pub(super) fn effective_vision(options: &Options, person: Option<&Options>) -> Options {
+    let mut out = options.clone();
+    for spec in person_vision_params() {
+        if out.get(spec.name).is_some() {
+            continue;
+        }
+        let value = person.and_then(|p| p.get(spec.name)).cloned().or_else(|| {
+            VISION_DEFAULTS
+                .iter()
+                .find(|(n, _)| *n == spec.name)
+                .map(|(_, v)| v.clone())
+        });
+        if let Some(value) = value {
+            out = out.set(spec.name, value);
+        }
+    }
+    out
 }
 
 /// An object too small to be legible anywhere, by the options.
@@ -116,7 +156,7 @@ impl TaskPlugin for Gaze {
     }
 
     fn validate(&self, _room: &Room, _subject: &str, options: &Options) -> Option<ErrorKind> {
-        illegible(options)
+        illegible(&effective_vision(options, None))
     }
 
     fn validate_chain(
@@ -133,7 +173,8 @@ impl TaskPlugin for Gaze {
         let task = ctx.task;
         let setup = Setup::new(ctx);
         let (room, target) = ctx.scenario.target(&task.subject).expect("checked target");
-        let legible = legible_mm(&task.options);
+        let options = effective_vision(&task.options, Some(&setup.person.vision));
+        let legible = legible_mm(&options);
         let chain = with_look_range(&setup.chain, legible);
         // With collisions on, the look link is a link like any other: the
         // solver and the base prefer a posture whose line of sight is clear.
@@ -155,7 +196,7 @@ impl TaskPlugin for Gaze {
             target.position_mm,
             room,
             &setup,
-            &task.options,
+            &options,
         );
         let asked = Asked {
             task,

@@ -5,7 +5,9 @@
 //! not hidden.
 
 use super::common::Setup;
-use super::gaze::{gaze_params, illegible, legible_mm, needs_look_link, see, with_look_range};
+use super::gaze::{
+    effective_vision, gaze_params, illegible, legible_mm, needs_look_link, see, with_look_range,
+};
 use super::map::{grid_params, run_map, too_large};
 use crate::error::ErrorKind;
 use crate::kinematics::Chain;
@@ -38,7 +40,7 @@ impl TaskPlugin for GazeMap {
     }
 
     fn validate(&self, room: &Room, subject: &str, options: &Options) -> Option<ErrorKind> {
-        illegible(options).or_else(|| too_large(room, subject, options))
+        illegible(&effective_vision(options, None)).or_else(|| too_large(room, subject, options))
     }
 
     fn validate_chain(
@@ -53,7 +55,7 @@ impl TaskPlugin for GazeMap {
 
     fn run(&self, ctx: &TaskContext<'_>) -> TaskReport {
         let setup = Setup::new(ctx);
-        let options = &ctx.task.options;
+        let options = &effective_vision(&ctx.task.options, Some(&setup.person.vision));
         let chain = with_look_range(&setup.chain, legible_mm(options));
         let (room, _) = ctx
             .scenario

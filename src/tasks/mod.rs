@@ -8,7 +8,7 @@ mod reach;
 mod reach_and_gaze;
 
 pub use common::mix_seed;
-pub use gaze::Gaze;
+pub use gaze::{person_vision_params, Gaze};
 pub use gaze_map::GazeMap;
 pub use map::Map;
 pub use reach::Reach;

@@ -9,7 +9,7 @@
 use nalgebra::Point3;
 
 use super::common::{common_params, mix_seed, Setup};
-use super::gaze::{illegible, legible_mm, needs_look_link, see, vision_params};
+use super::gaze::{effective_vision, illegible, legible_mm, needs_look_link, see, vision_params};
 use crate::collision::PlacedObstacles;
 use crate::error::ErrorKind;
 use crate::kinematics::{Body, Chain};
@@ -80,7 +80,7 @@ impl TaskPlugin for ReachAndGaze {
                 help: "hand and eyes are solved together by the tree solve of `fabrik`: leave `solver` out or name fabrik".into(),
             });
         }
-        illegible(options)
+        illegible(&effective_vision(options, None))
     }
 
     fn effector_options(&self) -> &'static [&'static str] {
@@ -103,7 +103,7 @@ impl TaskPlugin for ReachAndGaze {
         let task = ctx.task;
         let setup = Setup::new(ctx);
         let (room, target) = ctx.scenario.target(&task.subject).expect("checked target");
-        let options = &task.options;
+        let options = &effective_vision(&task.options, Some(&setup.person.vision));
         let (body, hand, eyes) = body_with_look_range(&setup, options);
         let obstacles = setup.obstacles(room);
         let query = ReachQuery {
