@@ -107,6 +107,10 @@ fn declarations() {
           base fixed { at (90, 120, 93), heading 180deg }
         }
         reach mug, kettle by ann, ben { solver incremental { rate 0.2 sign_memory false } tolerance 5mm }
+        mannequin short_arm = arm(len 20, width 3)
+        profile stiff { limits elbow (0deg, 10deg) }
+        base big_chair = wheelchair { seat_height 50 }
+        vision blurry { mar_far 2arcmin }
         "#,
     );
     let kinds: Vec<&str> = file
@@ -118,14 +122,36 @@ fn declarations() {
             Item::Let(_) => "let",
             Item::Room(_) => "room",
             Item::Mannequin(_) => "mannequin",
+            Item::Profile(_) => "profile",
+            Item::BasePreset(_) => "base preset",
+            Item::VisionPreset(_) => "vision",
             Item::Person(_) => "person",
             Item::Task(_) => "task",
         })
         .collect();
     assert_eq!(
         kinds,
-        ["units", "use", "use", "room", "mannequin", "person", "task"]
+        [
+            "units",
+            "use",
+            "use",
+            "room",
+            "mannequin",
+            "person",
+            "task",
+            "mannequin",
+            "profile",
+            "base preset",
+            "vision"
+        ]
     );
+    let Item::Mannequin(alias) = &file.items[7] else {
+        unreachable!()
+    };
+    let target = alias.alias.as_ref().unwrap();
+    assert_eq!(target.name.value, "arm");
+    let args: Vec<&str> = target.args.iter().map(|(n, _)| n.value.as_str()).collect();
+    assert_eq!(args, ["len", "width"]);
 
     let Item::Units(units) = &file.items[0] else {
         unreachable!()
