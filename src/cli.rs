@@ -50,6 +50,8 @@ enum Command {
     },
     /// List every plugin with its parameters.
     Plugins,
+    /// List the standard library: mannequins, profiles, bases, visions.
+    Stdlib,
 }
 
 pub fn main() -> i32 {
@@ -66,6 +68,10 @@ pub fn main() -> i32 {
         Command::Check { file } => check(&registry, &file),
         Command::Plugins => {
             print!("{}", plugins_listing(&registry));
+            0
+        }
+        Command::Stdlib => {
+            print!("{}", reach::stdlib::listing());
             0
         }
     }

@@ -276,3 +276,20 @@ fn hostile_sizes_give_diagnostics_not_crashes() {
         );
     }
 }
+
+#[test]
+fn stdlib_lists_people_chairs_and_visions() {
+    let o = reach(&["stdlib"]);
+    assert_eq!(o.status.code(), Some(0));
+    let out = stdout(&o);
+    for expected in [
+        "std::people",
+        "woman_5th_seated",
+        "older_adult",
+        "manual_wheelchair (wheelchair)",
+        "reduced_acuity",
+        "upper_body(stature",
+    ] {
+        assert!(out.contains(expected), "{expected} missing from\n{out}");
+    }
+}

@@ -48,3 +48,101 @@ fn right_arm_joints_move_the_hand_the_anatomical_way() {
     // Trunk flexion carries the shoulder forward (the hanging hand, below the hip, goes back).
     assert!(at("trunk_flexion", 30.0).z > rest.z);
 }
+
+/// The grip's neutral position of a std::people mannequin, and where its
+/// eyes look from.
+fn neutral_grip_and_eyes(name: &str) -> (Point3<f64>, Point3<f64>) {
+    let body = reach::stdlib::body("people", name).expect("std::people checks");
+    let grip = body.chain(0);
+    let eyes = body.chain_named(Some("eyes")).unwrap();
+    let mut q = eyes.neutral();
+    q.pop();
+    let eye_frame = eyes.joints[..q.len()]
+        .iter()
+        .zip(&q)
+        .fold(nalgebra::IsometryMatrix3::identity(), |f, (j, &v)| {
+            f * j.transform(v)
+        });
+    (
+        grip.effector(&grip.neutral()),
+        Point3::from(eye_frame.translation.vector),
+    )
+}
+
+#[test]
+fn people_scale_with_stature_and_sit_by_the_seated_table() {
+    let eye_above_hip = |h: f64| (0.936 - 0.530) * h;
+    for (name, h) in [
+        ("woman_5th", 1520.0),
+        ("man_50th", 1755.0),
+        ("man_95th", 1870.0),
+    ] {
+        let (_, eyes) = neutral_grip_and_eyes(name);
+        assert!((eyes.z - eye_above_hip(h)).abs() < 1e-6, "{name}: {eyes}");
+    }
+    // Seated: eyes 724 mm above the seat for the 5th-percentile woman, 862
+    // for the 95th-percentile man, with the hip 100 mm above the seat.
+    for (name, above_seat) in [("woman_5th_seated", 724.0), ("man_95th_seated", 862.0)] {
+        let (_, eyes) = neutral_grip_and_eyes(name);
+        assert!(
+            (eyes.z - (above_seat - 100.0)).abs() < 1e-6,
+            "{name}: {eyes}"
+        );
+    }
+    let (small, _) = neutral_grip_and_eyes("woman_5th");
+    let (tall, _) = neutral_grip_and_eyes("man_95th");
+    assert!(
+        small.z > tall.z,
+        "the longer arm hangs lower: {small} {tall}"
+    );
+}
+
+#[test]
+fn std_people_presets_apply() {
+    let text = "use std::people
+room r { size 4000mm x 4000mm x 2500mm }
+person mum {
+  mannequin woman_5th_seated { profile older_adult profile shoulder_to_90 }
+  base power_wheelchair { headings 4 }
+  vision low_vision
+}";
+    let registry = reach::plugin::Registry::builtin();
+    let (_, checked) = reach::check(
+        reach::Input::Text {
+            name: "mum.reach",
+            text,
+        },
+        &registry,
+    );
+    let scenario = checked.expect("checks");
+    let mum = &scenario.persons[0];
+    let flexion = mum
+        .body
+        .joints
+        .iter()
+        .find(|j| j.name == "shoulder_flexion")
+        .unwrap();
+    // older_adult's extension, then shoulder_to_90's flexion over it.
+    assert_eq!(
+        (
+            flexion.min.to_degrees().round(),
+            flexion.max.to_degrees().round()
+        ),
+        (-60.0, 90.0)
+    );
+    let elbow = mum
+        .body
+        .joints
+        .iter()
+        .find(|j| j.name == "elbow_flexion")
+        .unwrap();
+    assert!((elbow.max.to_degrees() - 143.0).abs() < 1e-9);
+    assert_eq!(mum.base.name, "wheelchair");
+    assert_eq!(mum.base.options.length_mm("seat_height"), 538.0);
+    assert_eq!(mum.base.options.integer("headings"), 4);
+    let mar = match mum.vision.get("mar_far") {
+        Some(reach::plugin::Value::Angle(v)) => v.to_degrees() * 60.0,
+        other => panic!("{other:?}"),
+    };
+    assert!((mar - 6.0).abs() < 1e-9);
+}
