@@ -4,7 +4,7 @@
 
 use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use parry3d_f64::query::Ray;
-use parry3d_f64::shape::{Cuboid, SharedShape};
+use parry3d_f64::shape::{Cuboid, SharedShape, TriMeshFlags};
 
 use crate::plugin::BasePose;
 use crate::scene::{BoxObstacle, Room};
@@ -15,6 +15,19 @@ struct Obstacle {
     name: String,
     pose_room: Isometry3<f64>,
     shape: SharedShape,
+    /// A mesh whose inside is known (closed, faces outwards): a point in
+    /// it is in the obstacle. (A ray cast only finds the surface.)
+    closed_mesh: bool,
+}
+
+impl Obstacle {
+    /// Where along `ray` (0 to `max`) the obstacle begins; 0 from inside.
+    fn entry(&self, ray: &Ray, max: f64) -> Option<f64> {
+        if self.closed_mesh && self.shape.contains_point(&self.pose_room, &ray.origin) {
+            return Some(0.0);
+        }
+        self.shape.cast_ray(&self.pose_room, ray, max, true)
+    }
 }
 
 /// The obstacles of one room.
@@ -26,19 +39,36 @@ pub struct Obstacles {
 impl Obstacles {
     /// The room's boxes, each grown by `clearance_mm` on every side (a link
     /// closer than that to a box counts as touching it).
+    /// Meshes come after the boxes, as is; a mesh is solid where its
+    /// triangles close and face outwards, else only its surface counts.
     pub fn new(room: &Room, clearance_mm: f64) -> Self {
-        let items = room
-            .boxes
-            .iter()
-            .map(|b| Obstacle {
-                name: b.name.clone(),
-                pose_room: box_pose_room(b),
-                shape: SharedShape::new(Cuboid::new(
-                    b.size_mm / 2.0 + Vector3::repeat(clearance_mm),
-                )),
+        let boxes = room.boxes.iter().map(|b| Obstacle {
+            name: b.name.clone(),
+            pose_room: box_pose_room(b),
+            shape: SharedShape::new(Cuboid::new(b.size_mm / 2.0 + Vector3::repeat(clearance_mm))),
+            closed_mesh: false,
+        });
+        let meshes = room.meshes.iter().filter_map(|m| {
+            let (vertices, triangles) = (m.vertices_mm.clone(), m.triangles.clone());
+            let oriented = SharedShape::trimesh_with_flags(
+                vertices.clone(),
+                triangles.clone(),
+                TriMeshFlags::ORIENTED,
+            );
+            let (shape, closed_mesh) = match oriented {
+                Ok(shape) => (shape, true),
+                Err(_) => (SharedShape::trimesh(vertices, triangles).ok()?, false),
+            };
+            Some(Obstacle {
+                name: m.name.clone(),
+                pose_room: Isometry3::identity(),
+                shape,
+                closed_mesh,
             })
-            .collect();
-        Obstacles { items }
+        });
+        Obstacles {
+            items: boxes.chain(meshes).collect(),
+        }
     }
 
     pub fn is_empty(&self) -> bool {
@@ -53,9 +83,7 @@ impl Obstacles {
     /// `b` touches or lies in.
     pub fn segment_hit(&self, a: &Point3<f64>, b: &Point3<f64>) -> Option<usize> {
         let ray = Ray::new(*a, b - a);
-        self.items
-            .iter()
-            .position(|o| o.shape.cast_ray(&o.pose_room, &ray, 1.0, true).is_some())
+        self.items.iter().position(|o| o.entry(&ray, 1.0).is_some())
     }
 
     /// What the line of sight from `eye` to `target` hits first, and where
@@ -77,11 +105,7 @@ impl Obstacles {
         self.items
             .iter()
             .enumerate()
-            .filter_map(|(i, o)| {
-                o.shape
-                    .cast_ray(&o.pose_room, &ray, max, true)
-                    .map(|toi| (i, toi))
-            })
+            .filter_map(|(i, o)| o.entry(&ray, max).map(|toi| (i, toi)))
             .min_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)))
     }
 }
@@ -137,6 +161,7 @@ mod tests {
             name: "r".into(),
             size_mm: Vector3::new(4000.0, 4000.0, 2500.0),
             boxes,
+            meshes: Vec::new(),
             targets: vec![],
             surfaces: vec![],
         }
@@ -170,6 +195,60 @@ mod tests {
             None,
             "stops short"
         );
+    }
+
+    /// A closed cube of side 100 mm at the origin, faces outwards.
+    fn cube_mesh() -> crate::scene::MeshObstacle {
+        let v: Vec<Point3<f64>> = (0..8)
+            .map(|i| {
+                Point3::new(
+                    f64::from(i >> 2) * 100.0,
+                    f64::from((i >> 1) & 1) * 100.0,
+                    f64::from(i & 1) * 100.0,
+                )
+            })
+            .collect();
+        let quads = [
+            [0, 2, 6, 4],
+            [1, 5, 7, 3],
+            [0, 4, 5, 1],
+            [2, 3, 7, 6],
+            [0, 1, 3, 2],
+            [4, 6, 7, 5],
+        ];
+        let triangles = quads
+            .iter()
+            .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
+            .collect();
+        crate::scene::MeshObstacle {
+            name: "cube".into(),
+            vertices_mm: v,
+            triangles,
+        }
+    }
+
+    #[test]
+    fn a_mesh_is_hit_through_and_within() {
+        let mut room = room_with(vec![block("b", [1000.0; 3], [10.0; 3], 0.0)]);
+        room.meshes.push(cube_mesh());
+        let o = Obstacles::new(&room, 0.0);
+        let hit = |a: [f64; 3], b: [f64; 3]| o.segment_hit(&Point3::from(a), &Point3::from(b));
+        assert_eq!(
+            hit([-50.0, 50.0, 50.0], [150.0, 50.0, 50.0]),
+            Some(1),
+            "through"
+        );
+        assert_eq!(
+            hit([40.0, 50.0, 50.0], [60.0, 50.0, 50.0]),
+            Some(1),
+            "inside"
+        );
+        assert_eq!(
+            hit([-50.0, 50.0, 150.0], [150.0, 50.0, 150.0]),
+            None,
+            "above"
+        );
+        assert_eq!(o.name(1), "cube");
     }
 
     #[test]

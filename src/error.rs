@@ -38,6 +38,8 @@ pub enum ErrorKind {
         suggestion: Option<String>,
         available: String,
     },
+    #[error("cannot load the mesh `{path}`: {reason}")]
+    BadMesh { path: String, reason: String },
     #[error("cannot write `{path}`: {reason}")]
     WriteFile { path: String, reason: String },
 
@@ -143,7 +145,7 @@ impl ErrorKind {
             Syntax { .. } => "reach::syntax",
             UnknownUnit { .. } | UnitsRepeated { .. } => "reach::unit",
             BadNumber { .. } | NotFinite | DivisionByZero => "reach::number",
-            ReadFile { .. } | NotUtf8 { .. } | WriteFile { .. } => "reach::file",
+            ReadFile { .. } | NotUtf8 { .. } | WriteFile { .. } | BadMesh { .. } => "reach::file",
             ImportCycle { .. } | UnknownStdModule { .. } => "reach::use",
             UnknownName { .. } | Duplicate { .. } | LetCycle { .. } => "reach::name",
             Dimension { .. } | Operands { .. } | MixedDefaults => "reach::unit",
@@ -169,6 +171,7 @@ impl ErrorKind {
             BadNumber { .. } => "too large or malformed".into(),
             UnitsRepeated { .. } => "second unit of this kind".into(),
             ReadFile { .. } => "used here".into(),
+            BadMesh { .. } => "loaded here".into(),
             NotUtf8 { .. } => "the first byte that is not UTF-8".into(),
             ImportCycle { .. } => "this `use` closes the cycle".into(),
             UnknownStdModule { .. } => "no such module".into(),

@@ -147,7 +147,7 @@ impl ReachReport {
             collision: placement
                 .solution
                 .collision
-                .map(|i| room.boxes[i].name.clone()),
+                .map(|i| room.obstacle_name(i).to_string()),
             tolerance_mm: mm(asked.tolerance_mm),
             iterations: placement.solution.iterations,
             comfort: fixed(chain.discomfort(q), 4),

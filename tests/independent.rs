@@ -130,6 +130,7 @@ fn every_reported_posture_is_what_the_report_says() {
         "examples/kitchen.reach",
         "examples/kitchen_wheelchair.reach",
         "examples/open_door.reach",
+        "examples/mother_kitchen.reach",
     ] {
         let registry = Registry::builtin();
         let (_, scenario) = reach::check(Input::Path(example.as_ref()), &registry);
@@ -196,6 +197,6 @@ fn every_reported_posture_is_what_the_report_says() {
             checked += 1;
         }
     }
-    assert_eq!(checked, 4 + 16 + 6);
+    assert_eq!(checked, 4 + 16 + 6 + 8);
     assert!(collisions > 0, "the examples have postures that meet a box");
 }

@@ -172,6 +172,7 @@ proptest! {
             name: "r".into(),
             size_mm: Vector3::repeat(1e4),
             boxes: vec![BoxObstacle { name: "b".into(), corner_mm: Point3::from(corner), size_mm: Vector3::from(size), yaw_rad: 0.3 }],
+            meshes: Vec::new(),
             targets: vec![],
             surfaces: vec![],
         };

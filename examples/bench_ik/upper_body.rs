@@ -48,6 +48,7 @@ fn room(board: bool) -> Room {
             })
             .into_iter()
             .collect(),
+        meshes: Vec::new(),
         targets: vec![],
         surfaces: vec![],
     }

@@ -6,6 +6,7 @@
 
 mod eval;
 mod mannequin;
+mod mesh;
 mod options;
 mod person;
 mod room;
@@ -33,7 +34,7 @@ pub fn check(
     registry: &Registry,
 ) -> Result<Scenario, Diagnostics> {
     let root = files.last().map(|f| f.id).unwrap_or_default();
-    let mut c = Checker::new(registry);
+    let mut c = Checker::new(registry, sources);
     for f in files {
         let defaults = c.file_defaults(&f.ast.items);
         c.defaults_of.insert(f.id, defaults);
@@ -60,6 +61,7 @@ pub fn check(
 /// the errors found so far.
 struct Checker<'a> {
     registry: &'a Registry,
+    sources: &'a Sources,
     errors: Vec<Error>,
     defaults_of: HashMap<FileId, UnitDefaults>,
     /// The default units of the file whose text is being evaluated.
@@ -83,9 +85,10 @@ struct Checker<'a> {
 }
 
 impl<'a> Checker<'a> {
-    fn new(registry: &'a Registry) -> Self {
+    fn new(registry: &'a Registry, sources: &'a Sources) -> Self {
         Checker {
             registry,
+            sources,
             errors: Vec::new(),
             defaults_of: HashMap::new(),
             defaults: UnitDefaults::default(),

@@ -43,13 +43,14 @@ impl Checker<'_> {
         for item in &decl.items {
             let name = match item {
                 RoomItem::Box(b) => &b.name,
+                RoomItem::Mesh(m) => &m.name,
                 RoomItem::Surface(s) => &s.name,
                 _ => continue,
             };
             if let Some(first) = seen.iter().find(|n| n.value == name.value) {
                 let e = Error::new(
                     ErrorKind::Duplicate {
-                        what: "box or surface",
+                        what: "box, mesh or surface",
                         name: name.value.clone(),
                     },
                     name.span,
@@ -98,10 +99,12 @@ impl Checker<'_> {
         let mut targets = Vec::new();
         let mut surfaces = Vec::new();
         let mut target_spans = Vec::new();
+        let mut meshes = Vec::new();
         for item in &decl.items {
             match item {
                 RoomItem::Size(_) => {}
                 RoomItem::Box(b) => boxes.extend(self.box_obstacle(b)),
+                RoomItem::Mesh(m) => meshes.extend(self.mesh(m)),
                 RoomItem::Surface(d) => surfaces.extend(self.surface(d)),
                 RoomItem::Target(t) => {
                     let Some(p) = self.point(&t.at) else { continue };
@@ -128,6 +131,7 @@ impl Checker<'_> {
             name: decl.name.value.clone(),
             size_mm: size?,
             boxes,
+            meshes,
             targets,
             surfaces,
         })

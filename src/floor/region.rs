@@ -10,7 +10,7 @@ use geo::{
 };
 
 use super::Footprint;
-use crate::scene::{BoxObstacle, Room};
+use crate::scene::{BoxObstacle, MeshObstacle, Room};
 
 /// A rectangle of the floor a user restricts the base to (an approach zone).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -36,6 +36,10 @@ pub fn admissible(
         .iter()
         .filter(|b| b.corner_mm.z < clearance_mm)
         .map(|b| minkowski_with_reflected(&box_outline(b), &corners))
+        .chain(room.meshes.iter().filter_map(|m| {
+            let outline = mesh_outline(m, clearance_mm)?;
+            Some(minkowski_with_reflected(&outline, &corners))
+        }))
         .collect();
     let blocked = geo::unary_union(&grown);
     MultiPolygon::new(vec![inside]).difference(&blocked)
@@ -72,6 +76,23 @@ fn box_outline(b: &BoxObstacle) -> Vec<Coord<f64>> {
         .collect()
 }
 
+/// A mesh's footprint: the convex hull of its vertices below the
+/// clearance height (a chair's legs and seat, a fridge's base), or none
+/// when the whole mesh is above it.
+fn mesh_outline(m: &MeshObstacle, clearance_mm: f64) -> Option<Vec<Coord<f64>>> {
+    let low: Vec<Point<f64>> = m
+        .vertices_mm
+        .iter()
+        .filter(|v| v.z < clearance_mm)
+        .map(|v| Point::new(v.x, v.y))
+        .collect();
+    if low.is_empty() {
+        return None;
+    }
+    let hull = MultiPoint::new(low).convex_hull();
+    Some(hull.exterior().0.clone())
+}
+
 /// `O + (-F)`: the hip points at which footprint `F` would overlap the
 /// convex obstacle outline `O`.
 fn minkowski_with_reflected(obstacle: &[Coord<f64>], footprint: &[Coord<f64>]) -> Polygon<f64> {
@@ -103,6 +124,7 @@ mod tests {
                 size_mm: Vector3::new(600.0, 2000.0, 900.0),
                 yaw_rad: 0.0,
             }],
+            meshes: Vec::new(),
             targets: Vec::new(),
             surfaces: Vec::new(),
         }

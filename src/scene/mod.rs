@@ -48,6 +48,8 @@ pub struct Room {
     pub name: String,
     pub size_mm: Vector3<f64>,
     pub boxes: Vec<BoxObstacle>,
+    /// Triangle meshes (from OBJ files), after the boxes in obstacle order.
+    pub meshes: Vec<MeshObstacle>,
     pub targets: Vec<Target>,
     /// Rectangles declared with `surface`, for maps.
     pub surfaces: Vec<Surface>,
@@ -57,6 +59,22 @@ impl Room {
     pub fn contains(&self, p: &Point3<f64>) -> bool {
         (0..3).all(|i| p[i] >= 0.0 && p[i] <= self.size_mm[i])
     }
+
+    /// The name of obstacle `index`: the boxes, then the meshes.
+    pub fn obstacle_name(&self, index: usize) -> &str {
+        match self.boxes.get(index) {
+            Some(b) => &b.name,
+            None => &self.meshes[index - self.boxes.len()].name,
+        }
+    }
+}
+
+/// A triangle mesh obstacle, its vertices in the room.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshObstacle {
+    pub name: String,
+    pub vertices_mm: Vec<Point3<f64>>,
+    pub triangles: Vec<[u32; 3]>,
 }
 
 /// A box obstacle: `corner_mm` is its corner of least x, y and z before

@@ -79,8 +79,19 @@ pub struct RoomDecl {
 pub enum RoomItem {
     Size(Vec3Expr),
     Box(Box<BoxDecl>),
+    Mesh(Box<MeshDecl>),
     Target(TargetDecl),
     Surface(SurfaceDecl),
+}
+
+/// `mesh NAME from "file.obj" at (x, y, z) scale k rotate a`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshDecl {
+    pub name: Name,
+    pub path: Spanned<String>,
+    pub at: Vec<Vec3Expr>,
+    pub scale: Vec<Expr>,
+    pub rotate: Vec<Expr>,
 }
 
 /// `surface NAME at (x, y, z) size (a, b, c)`, one size zero.

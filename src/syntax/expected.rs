@@ -15,7 +15,7 @@ fn describe(rule: Rule) -> Option<&'static str> {
         EOI => "end of file",
         file | inline_space | WHITESPACE | COMMENT | line_comment | block_comment | item
         | ident_char | prefix | infix | primary | room_item | mannequin_item | joint_prop
-        | person_item | joint_override | and_task => return None,
+        | person_item | joint_override | and_task | mesh_prop => return None,
         ident | keyword => "a name",
         number | quantity => "a number",
         unit | bad_unit => "a unit",
@@ -33,6 +33,10 @@ fn describe(rule: Rule) -> Option<&'static str> {
         room_size | size_dims => "`size`",
         box_decl => "`box`",
         target_decl => "`target`",
+        mesh_decl => "`mesh`",
+        mesh_at => "`at (x, y, z)`",
+        mesh_scale => "`scale`",
+        mesh_rotate => "`rotate`",
         surface_decl => "`surface`",
         mannequin => "`mannequin`",
         joint_decl => "`joint`",

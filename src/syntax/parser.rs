@@ -286,6 +286,30 @@ impl Builder {
                     rotate,
                 }))
             }
+            Rule::mesh_decl => {
+                let mut it = pair.into_inner();
+                let name = self.name(it.next().unwrap());
+                let path_pair = it.next().unwrap();
+                let path_span = self.span(&path_pair);
+                let path = unescape(path_pair.into_inner().next().unwrap().as_str());
+                let mut mesh = MeshDecl {
+                    name,
+                    path: Spanned::new(path, path_span),
+                    at: Vec::new(),
+                    scale: Vec::new(),
+                    rotate: Vec::new(),
+                };
+                for prop in it {
+                    let rule = prop.as_rule();
+                    let inner = prop.into_inner().next().unwrap();
+                    match rule {
+                        Rule::mesh_at => mesh.at.push(self.vec3(inner)),
+                        Rule::mesh_scale => mesh.scale.push(self.expr(inner)),
+                        _ => mesh.rotate.push(self.expr(inner)),
+                    }
+                }
+                RoomItem::Mesh(Box::new(mesh))
+            }
             Rule::target_decl => {
                 let mut it = pair.into_inner();
                 let name = self.name(it.next().unwrap());

@@ -1,0 +1,142 @@
+//! Mesh obstacles: a Wavefront OBJ file (read with `tobj`, triangulated),
+//! its coordinates in the file's length unit times `scale`, turned by
+//! `rotate` about the vertical and moved to `at`. A file that cannot be
+//! read or parsed, or that has no triangles, is a diagnostic at its name.
+
+use std::path::{Path, PathBuf};
+
+use nalgebra::{Point3, Rotation3, Vector3};
+
+use super::Checker;
+use crate::error::{Error, ErrorKind};
+use crate::limits::MAX_FILE_BYTES;
+use crate::scene::MeshObstacle;
+use crate::source::Origin;
+use crate::syntax::ast::MeshDecl;
+
+impl Checker<'_> {
+    pub(super) fn mesh(&mut self, d: &MeshDecl) -> Option<MeshObstacle> {
+        let at = match d.at.first() {
+            Some(v) => self.point(v).map(Point3::from),
+            None => Some(Point3::origin()),
+        };
+        let scale = match d.scale.first() {
+            Some(e) => self.number(e),
+            None => Some(1.0),
+        };
+        let yaw = match d.rotate.first() {
+            Some(e) => self.angle(e),
+            None => Some(0.0),
+        };
+        for (extra, what) in [
+            (d.at.get(1).map(|v| v.span), "`at`"),
+            (d.scale.get(1).map(|e| e.span), "`scale`"),
+            (d.rotate.get(1).map(|e| e.span), "`rotate`"),
+        ] {
+            if let Some(span) = extra {
+                self.error(Error::new(ErrorKind::Repeated { what: what.into() }, span));
+            }
+        }
+        let (vertices, triangles) = self.read_obj(d)?;
+        let (at, scale, yaw) = (at?, scale?, yaw?);
+        if scale.is_nan() || scale <= 0.0 {
+            self.out_of_range(
+                d.scale[0].span,
+                "a mesh's scale",
+                "more than 0",
+                &scale.to_string(),
+            );
+            return None;
+        }
+        let unit_mm = self.defaults.length.to_internal();
+        let turn = Rotation3::from_axis_angle(&Vector3::z_axis(), yaw);
+        let vertices_mm = vertices
+            .into_iter()
+            .map(|v| at + turn * (v.coords * scale * unit_mm))
+            .collect();
+        Some(MeshObstacle {
+            name: d.name.value.clone(),
+            vertices_mm,
+            triangles,
+        })
+    }
+
+    /// The OBJ's vertices (in its own units) and triangles.
+    fn read_obj(&mut self, d: &MeshDecl) -> Option<(Vec<Point3<f64>>, Vec<[u32; 3]>)> {
+        let path = self.relative_to_file(&d.path.value);
+        let shown = path.display().to_string();
+        let bad = |c: &mut Self, reason: String| {
+            c.error(Error::new(
+                ErrorKind::BadMesh {
+                    path: shown.clone(),
+                    reason,
+                },
+                d.path.span,
+            ));
+            None
+        };
+        match std::fs::metadata(&path) {
+            Ok(meta) if meta.len() > MAX_FILE_BYTES => {
+                return bad(
+                    self,
+                    format!("larger than the limit of {MAX_FILE_BYTES} bytes"),
+                );
+            }
+            Err(e) => return bad(self, e.to_string()),
+            Ok(_) => {}
+        }
+        let options = tobj::LoadOptions {
+            triangulate: true,
+            single_index: true,
+            ..Default::default()
+        };
+        let file = match std::fs::File::open(&path) {
+            Ok(f) => f,
+            Err(e) => return bad(self, e.to_string()),
+        };
+        let mut reader = std::io::BufReader::new(file);
+        let models = match tobj::load_obj_buf(&mut reader, &options, |_| {
+            Err(tobj::LoadError::OpenFileFailed)
+        }) {
+            Ok((models, _materials)) => models,
+            Err(e) => return bad(self, format!("not a valid OBJ file: {e}")),
+        };
+        let mut vertices = Vec::new();
+        let mut triangles = Vec::new();
+        for model in &models {
+            let base = vertices.len() as u32;
+            let p = &model.mesh.positions;
+            vertices.extend(
+                p.chunks_exact(3)
+                    .map(|c| Point3::new(f64::from(c[0]), f64::from(c[1]), f64::from(c[2]))),
+            );
+            triangles.extend(
+                model
+                    .mesh
+                    .indices
+                    .chunks_exact(3)
+                    .map(|t| [base + t[0], base + t[1], base + t[2]]),
+            );
+        }
+        if triangles.is_empty() {
+            return bad(self, "it has no faces".into());
+        }
+        if vertices
+            .iter()
+            .any(|v| !v.coords.iter().all(|x| x.is_finite()))
+        {
+            return bad(self, "a vertex is not a finite number".into());
+        }
+        Some((vertices, triangles))
+    }
+
+    /// `relative` against the directory of the file being checked (the
+    /// working directory for text not read from disk).
+    fn relative_to_file(&self, relative: &str) -> PathBuf {
+        let dir = match &self.sources.get(self.file).origin {
+            Origin::Path(p) => p.parent().map(Path::to_path_buf).unwrap_or_default(),
+            _ => PathBuf::new(),
+        };
+        dir.join(relative)
+    }
+}
