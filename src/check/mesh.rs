@@ -14,6 +14,9 @@ use crate::scene::MeshObstacle;
 use crate::source::Origin;
 use crate::syntax::ast::MeshDecl;
 
+/// An OBJ's vertices (in its own units) and triangles.
+type ObjMesh = (Vec<Point3<f64>>, Vec<[u32; 3]>);
+
 impl Checker<'_> {
     pub(super) fn mesh(&mut self, d: &MeshDecl) -> Option<MeshObstacle> {
         let at = match d.at.first() {
@@ -62,7 +65,7 @@ impl Checker<'_> {
     }
 
     /// The OBJ's vertices (in its own units) and triangles.
-    fn read_obj(&mut self, d: &MeshDecl) -> Option<(Vec<Point3<f64>>, Vec<[u32; 3]>)> {
+    fn read_obj(&mut self, d: &MeshDecl) -> Option<ObjMesh> {
         let path = self.relative_to_file(&d.path.value);
         let shown = path.display().to_string();
         let bad = |c: &mut Self, reason: String| {
