@@ -42,6 +42,7 @@ fn joint() -> impl Strategy<Value = Joint> {
                     alpha_rad,
                     a_mm,
                 },
+                fixed: None,
                 min,
                 max,
                 neutral: (min + max) / 2.0,

@@ -294,6 +294,7 @@ impl Checker<'_> {
                 ast::JointKind::Prismatic => JointKind::Prismatic,
             },
             dh: dh?,
+            fixed: None,
             min,
             max,
             neutral,

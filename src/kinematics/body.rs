@@ -98,6 +98,7 @@ mod tests {
                 alpha_rad: 0.0,
                 a_mm: 100.0,
             },
+            fixed: None,
             min: -1.0,
             max: 1.0,
             neutral: 0.0,

@@ -21,6 +21,10 @@ pub struct Joint {
     pub name: String,
     pub kind: JointKind,
     pub dh: Dh,
+    /// A joint not given by DH parameters (one read from URDF): it turns
+    /// about (or slides along) the z axis of the previous frame, then this
+    /// fixed pose follows; `dh` is then unused.
+    pub fixed: Option<IsometryMatrix3<f64>>,
     pub min: f64,
     pub max: f64,
     pub neutral: f64,
@@ -30,9 +34,28 @@ pub struct Joint {
 impl Joint {
     /// The pose of this joint's frame in the previous one at value `q`.
     pub fn transform(&self, q: f64) -> IsometryMatrix3<f64> {
+        if let Some(fixed) = &self.fixed {
+            let motion = match self.kind {
+                JointKind::Revolute => IsometryMatrix3::rotation(Vector3::z() * q),
+                JointKind::Prismatic => IsometryMatrix3::translation(0.0, 0.0, q),
+            };
+            return motion * fixed;
+        }
         match self.kind {
             JointKind::Revolute => self.dh.transform(self.dh.theta_rad + q, self.dh.d_mm),
             JointKind::Prismatic => self.dh.transform(self.dh.theta_rad, self.dh.d_mm + q),
+        }
+    }
+
+    /// Where this joint's frame origin is in the previous frame at value 0:
+    /// `(a cos theta, a sin theta, d)` for a DH joint.
+    pub fn rest_offset_mm(&self) -> Vector3<f64> {
+        match &self.fixed {
+            Some(fixed) => fixed.translation.vector,
+            None => {
+                let (s, c) = self.dh.theta_rad.sin_cos();
+                Vector3::new(self.dh.a_mm * c, self.dh.a_mm * s, self.dh.d_mm)
+            }
         }
     }
 
@@ -109,6 +132,12 @@ impl Chain {
             .sum()
     }
 
+    /// Whether every joint is given by DH parameters (the incremental
+    /// kinematics of eq. 6-8 needs them).
+    pub fn is_dh(&self) -> bool {
+        self.joints.iter().all(|j| j.fixed.is_none())
+    }
+
     pub fn within_limits(&self, q: &[f64]) -> bool {
         self.joints
             .iter()
@@ -143,6 +172,7 @@ mod tests {
                 alpha_rad,
                 a_mm,
             },
+            fixed: None,
             min: -3.0,
             max: 3.0,
             neutral: 0.0,

@@ -306,6 +306,7 @@ mod tests {
                 alpha_rad: alpha,
                 a_mm: a,
             },
+            fixed: None,
             min: -2.0,
             max: 2.0,
             neutral: 0.0,

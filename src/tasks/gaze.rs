@@ -262,8 +262,8 @@ pub(super) fn needs_look_link(person: &str, chain: &Chain) -> Option<ErrorKind> 
 pub(super) fn with_look_range(chain: &Chain, [d_min, d_max]: [f64; 2]) -> Chain {
     let mut chain = chain.clone();
     if let Some(look) = chain.joints.last_mut() {
-        look.min = d_min - look.dh.d_mm;
-        look.max = d_max - look.dh.d_mm;
+        look.min = d_min - look.rest_offset_mm().z;
+        look.max = d_max - look.rest_offset_mm().z;
         look.neutral = look.neutral.clamp(look.min, look.max);
     }
     chain

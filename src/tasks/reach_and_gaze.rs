@@ -205,8 +205,8 @@ fn body_with_look_range(setup: &Setup<'_>, options: &Options) -> (Body, usize, u
     let [d_min, d_max] = legible_mm(options);
     let look = body.effectors[eyes].joint.expect("checked look link");
     let joint = &mut body.joints[look];
-    joint.min = d_min - joint.dh.d_mm;
-    joint.max = d_max - joint.dh.d_mm;
+    joint.min = d_min - joint.rest_offset_mm().z;
+    joint.max = d_max - joint.rest_offset_mm().z;
     joint.neutral = joint.neutral.clamp(joint.min, joint.max);
     (body, hand, eyes)
 }

@@ -8,6 +8,8 @@
 //! the shoulder's offset from the spine). A bone ending in a prismatic
 //! joint (the eyes' look link) has a length between limits.
 
+use nalgebra::Vector3;
+
 use crate::kinematics::{Chain, JointKind};
 
 /// Where a bone ends.
@@ -35,18 +37,20 @@ pub fn bones(chain: &Chain) -> Vec<Bone> {
     let mut bones = Vec::new();
     let mut start = 0;
     for (j, joint) in chain.joints.iter().enumerate() {
-        let dh = &joint.dh;
+        let offset = joint.rest_offset_mm();
         let prismatic = joint.kind == JointKind::Prismatic;
-        if !prismatic && dh.a_mm == 0.0 && dh.d_mm == 0.0 {
+        if !prismatic && offset.norm() < 1e-9 {
             continue;
         }
-        let slides_along_axis = !prismatic && dh.a_mm == 0.0;
+        let slides_along_axis = !prismatic && offset.xy().norm() < 1e-9;
         let length_mm = if prismatic {
-            let at = |q: f64| dh.a_mm.hypot(dh.d_mm + q);
+            let at = |q: f64| (offset + Vector3::z() * q).norm();
             let (lo, hi) = (at(joint.min), at(joint.max));
-            [lo.min(hi), lo.max(hi)]
+            // The length is least where the slide passes nearest the root.
+            let nearest = (-offset.z).clamp(joint.min, joint.max);
+            [lo.min(hi).min(at(nearest)), lo.max(hi)]
         } else {
-            [dh.a_mm.hypot(dh.d_mm); 2]
+            [offset.norm(); 2]
         };
         let group_end = if slides_along_axis { j } else { j + 1 };
         bones.push(Bone {
