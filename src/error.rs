@@ -38,6 +38,12 @@ pub enum ErrorKind {
         suggestion: Option<String>,
         available: String,
     },
+    #[error("cannot use the URDF `{path}`: {reason}")]
+    BadUrdf {
+        path: String,
+        reason: String,
+        suggestion: Option<String>,
+    },
     #[error("cannot load the mesh `{path}`: {reason}")]
     BadMesh { path: String, reason: String },
     #[error("cannot write `{path}`: {reason}")]
@@ -145,7 +151,11 @@ impl ErrorKind {
             Syntax { .. } => "reach::syntax",
             UnknownUnit { .. } | UnitsRepeated { .. } => "reach::unit",
             BadNumber { .. } | NotFinite | DivisionByZero => "reach::number",
-            ReadFile { .. } | NotUtf8 { .. } | WriteFile { .. } | BadMesh { .. } => "reach::file",
+            ReadFile { .. }
+            | NotUtf8 { .. }
+            | WriteFile { .. }
+            | BadMesh { .. }
+            | BadUrdf { .. } => "reach::file",
             ImportCycle { .. } | UnknownStdModule { .. } => "reach::use",
             UnknownName { .. } | Duplicate { .. } | LetCycle { .. } => "reach::name",
             Dimension { .. } | Operands { .. } | MixedDefaults => "reach::unit",
@@ -172,6 +182,7 @@ impl ErrorKind {
             UnitsRepeated { .. } => "second unit of this kind".into(),
             ReadFile { .. } => "used here".into(),
             BadMesh { .. } => "loaded here".into(),
+            BadUrdf { .. } => "here".into(),
             NotUtf8 { .. } => "the first byte that is not UTF-8".into(),
             ImportCycle { .. } => "this `use` closes the cycle".into(),
             UnknownStdModule { .. } => "no such module".into(),
@@ -218,7 +229,9 @@ impl ErrorKind {
                 available,
                 ..
             } => Some(did_you_mean(suggestion, &format!("modules: {available}"))),
-            UnknownName { suggestion, .. } => suggestion.as_ref().map(|s| format!("did you mean `{s}`?")),
+            UnknownName { suggestion, .. } | BadUrdf { suggestion, .. } => {
+                suggestion.as_ref().map(|s| format!("did you mean `{s}`?"))
+            }
             Dimension { expected, .. } => Some(format!("write {expected}, such as {}", example_of(expected))),
             Operands { .. } => Some("both sides of + and - must have the same kind of unit".into()),
             TargetOutsideRoom { bounds, .. } => Some(format!("the room spans {bounds}")),

@@ -29,9 +29,10 @@ impl Checker<'_> {
             .map(|(n, d, f)| (n.to_string(), d, f))
             .collect();
         for (name, decl, file) in decls {
-            let body = match &decl.alias {
-                Some(target) => self.body_of(target, file, 0),
-                None => self.body_with(decl, file, &[], file),
+            let body = match (&decl.alias, &decl.urdf) {
+                (Some(target), _) => self.body_of(target, file, 0),
+                (None, Some(urdf)) => self.in_file(file, |c| c.urdf_body(urdf)),
+                (None, None) => self.body_with(decl, file, &[], file),
             };
             self.bodies.insert(name, body);
         }

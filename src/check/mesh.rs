@@ -135,7 +135,7 @@ impl Checker<'_> {
 
     /// `relative` against the directory of the file being checked (the
     /// working directory for text not read from disk).
-    fn relative_to_file(&self, relative: &str) -> PathBuf {
+    pub(super) fn relative_to_file(&self, relative: &str) -> PathBuf {
         let dir = match &self.sources.get(self.file).origin {
             Origin::Path(p) => p.parent().map(Path::to_path_buf).unwrap_or_default(),
             _ => PathBuf::new(),

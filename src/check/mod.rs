@@ -12,6 +12,7 @@ mod person;
 mod room;
 mod table;
 mod task;
+mod urdf;
 
 use std::collections::HashMap;
 

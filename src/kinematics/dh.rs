@@ -5,7 +5,7 @@ use nalgebra::{IsometryMatrix3, Matrix3, Rotation3, Translation3};
 
 /// The constant part of a link. The joint variable is added to `theta_rad`
 /// (revolute) or `d_mm` (prismatic).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Dh {
     pub theta_rad: f64,
     pub d_mm: f64,

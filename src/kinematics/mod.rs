@@ -6,8 +6,10 @@ mod body;
 mod chain;
 mod dh;
 mod incremental;
+mod urdf;
 
 pub use body::{Body, Effector};
 pub use chain::{Chain, Joint, JointKind};
 pub use dh::Dh;
 pub use incremental::{IncrementalFk, Step};
+pub use urdf::{chain_from_urdf, UrdfError};

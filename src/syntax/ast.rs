@@ -123,6 +123,8 @@ pub struct MannequinDecl {
     pub params: Vec<(Name, Expr)>,
     /// `= other(args)`: this mannequin is another with parameters given.
     pub alias: Option<MannequinRef>,
+    /// `from urdf "file" root "a" tip "b"`.
+    pub urdf: Option<UrdfSource>,
     pub joints: Vec<JointDecl>,
     pub effectors: Vec<EffectorDecl>,
     pub span: Span,
@@ -170,6 +172,14 @@ pub struct PersonDecl {
     pub bases: Vec<PluginUse>,
     pub visions: Vec<PersonVision>,
     pub span: Span,
+}
+
+/// A chain read from a URDF file, from link `root` to link `tip`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct UrdfSource {
+    pub path: Spanned<String>,
+    pub root: Spanned<String>,
+    pub tip: Spanned<String>,
 }
 
 /// A mannequin by name, with parameters given: `upper_body(stature 1520mm)`.

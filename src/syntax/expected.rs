@@ -49,6 +49,7 @@ fn describe(rule: Rule) -> Option<&'static str> {
         weight => "`weight`",
         effector_decl => "`effector`",
         mannequin_alias => "`= mannequin(...)`",
+        mannequin_urdf => "`from urdf \"file\" root \"link\" tip \"link\"`",
         mannequin_params | call_args => "parameters `(...)`",
         param_decl => "a parameter `name = default`",
         mannequin_ref => "a mannequin's name",

@@ -335,9 +335,22 @@ impl Builder {
         let mut effectors = Vec::new();
         let mut params = Vec::new();
         let mut alias = None;
+        let mut urdf = None;
         for p in it {
             match p.as_rule() {
                 Rule::joint_decl => joints.push(self.joint(p)),
+                Rule::mannequin_urdf => {
+                    let mut strings = p.into_inner().map(|q| {
+                        let span = self.span(&q);
+                        Spanned::new(unescape(q.into_inner().next().unwrap().as_str()), span)
+                    });
+                    let (path, root, tip) = (
+                        strings.next().unwrap(),
+                        strings.next().unwrap(),
+                        strings.next().unwrap(),
+                    );
+                    urdf = Some(UrdfSource { path, root, tip });
+                }
                 Rule::mannequin_alias => {
                     alias = Some(self.mannequin_ref(p.into_inner().next().unwrap()));
                 }
@@ -363,6 +376,7 @@ impl Builder {
             name,
             params,
             alias,
+            urdf,
             joints,
             effectors,
             span,

@@ -1,0 +1,220 @@
+//! A chain from a URDF robot description (read by `urdf-rs`): the joints on
+//! the path from a root link to a tip link, revolute, continuous and
+//! prismatic ones as joints with their limits and axes, fixed joints folded
+//! into their neighbours. Each URDF joint moves about its own axis after
+//! its origin; here a joint turns about the z axis of the previous frame
+//! and then a fixed pose follows, so each axis is carried to z by a
+//! rotation and back. A locked joint `NAME_base` carries the base frame to
+//! the first axis when they differ. Lengths: URDF metres, here millimetres.
+
+use nalgebra::{IsometryMatrix3, Rotation3, Translation3, Unit, Vector3};
+
+use super::chain::{Chain, Joint, JointKind};
+use super::dh::Dh;
+
+/// Why a URDF chain cannot be built.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum UrdfError {
+    UnknownLink {
+        link: String,
+        available: Vec<String>,
+    },
+    NoPath {
+        root: String,
+        tip: String,
+    },
+    Unsupported {
+        joint: String,
+        kind: String,
+    },
+    NoJoints {
+        root: String,
+        tip: String,
+    },
+    BadAxis {
+        joint: String,
+    },
+}
+
+impl std::fmt::Display for UrdfError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            UrdfError::UnknownLink { link, .. } => write!(f, "it has no link `{link}`"),
+            UrdfError::NoPath { root, tip } => {
+                write!(f, "no chain of joints leads from `{root}` to `{tip}`")
+            }
+            UrdfError::Unsupported { joint, kind } => {
+                write!(f, "joint `{joint}` is {kind}, which a mannequin cannot use")
+            }
+            UrdfError::NoJoints { root, tip } => {
+                write!(f, "no joint moves between `{root}` and `{tip}`")
+            }
+            UrdfError::BadAxis { joint } => write!(f, "joint `{joint}` has a zero axis"),
+        }
+    }
+}
+
+/// The chain from link `root` to link `tip`, its effector at the tip
+/// link's origin, named after it.
+pub fn chain_from_urdf(robot: &urdf_rs::Robot, root: &str, tip: &str) -> Result<Chain, UrdfError> {
+    for link in [root, tip] {
+        if !robot.links.iter().any(|l| l.name == link) {
+            return Err(UrdfError::UnknownLink {
+                link: link.to_string(),
+                available: robot.links.iter().map(|l| l.name.clone()).collect(),
+            });
+        }
+    }
+    let path = path(robot, root, tip)?;
+    let mut joints: Vec<Joint> = Vec::new();
+    // The pose, in the frame after the last motion, reached so far.
+    let mut pending = IsometryMatrix3::identity();
+    // A pose before the first joint that commutes with its motion (an
+    // offset along, or a turn about, the base's z): it joins that joint's
+    // fixed pose instead of needing a locked joint.
+    let mut first_pre = IsometryMatrix3::identity();
+    let mut first_index = None;
+    for j in path {
+        let origin = pose_mm(&j.origin);
+        let kind = match j.joint_type {
+            urdf_rs::JointType::Fixed => {
+                pending *= origin;
+                continue;
+            }
+            urdf_rs::JointType::Revolute | urdf_rs::JointType::Continuous => JointKind::Revolute,
+            urdf_rs::JointType::Prismatic => JointKind::Prismatic,
+            ref other => {
+                return Err(UrdfError::Unsupported {
+                    joint: j.name.clone(),
+                    kind: format!("{other:?}").to_lowercase(),
+                })
+            }
+        };
+        let to_axis = z_onto(&j.axis.xyz).ok_or_else(|| UrdfError::BadAxis {
+            joint: j.name.clone(),
+        })?;
+        let before = pending * origin * to_axis;
+        match joints.len().checked_sub(1) {
+            Some(k) => joints[k].fixed = Some(pre(first_index, k, &first_pre) * before),
+            None if along_z(&before) => first_pre = before,
+            None => joints.push(locked(&format!("{}_base", j.name), before)),
+        }
+        first_index.get_or_insert(joints.len());
+        joints.push(moving(j, kind));
+        pending = to_axis.inverse();
+    }
+    let Some(k) = joints.len().checked_sub(1) else {
+        return Err(UrdfError::NoJoints {
+            root: root.into(),
+            tip: tip.into(),
+        });
+    };
+    joints[k].fixed = Some(pre(first_index, k, &first_pre) * pending);
+    Ok(Chain {
+        joints,
+        effector_name: tip.to_string(),
+        effector_mm: Vector3::zeros(),
+    })
+}
+
+/// `first_pre` for the first moving joint, nothing for the others.
+fn pre(
+    first_index: Option<usize>,
+    k: usize,
+    first_pre: &IsometryMatrix3<f64>,
+) -> IsometryMatrix3<f64> {
+    if first_index == Some(k) {
+        *first_pre
+    } else {
+        IsometryMatrix3::identity()
+    }
+}
+
+/// Whether a pose only moves along, or turns about, the z axis.
+fn along_z(pose: &IsometryMatrix3<f64>) -> bool {
+    let t = pose.translation.vector;
+    let z = pose.rotation * Vector3::z();
+    t.x.abs() < 1e-9 && t.y.abs() < 1e-9 && (z - Vector3::z()).norm() < 1e-12
+}
+
+/// The joints from `root` down to `tip`, in order.
+fn path<'r>(
+    robot: &'r urdf_rs::Robot,
+    root: &str,
+    tip: &str,
+) -> Result<Vec<&'r urdf_rs::Joint>, UrdfError> {
+    let mut chain = Vec::new();
+    let mut link = tip;
+    while link != root {
+        let Some(j) = robot.joints.iter().find(|j| j.child.link == link) else {
+            return Err(UrdfError::NoPath {
+                root: root.into(),
+                tip: tip.into(),
+            });
+        };
+        if chain.len() > robot.joints.len() {
+            return Err(UrdfError::NoPath {
+                root: root.into(),
+                tip: tip.into(),
+            });
+        }
+        chain.push(j);
+        link = &j.parent.link;
+    }
+    chain.reverse();
+    Ok(chain)
+}
+
+/// A URDF pose (metres, roll-pitch-yaw) in millimetres.
+fn pose_mm(p: &urdf_rs::Pose) -> IsometryMatrix3<f64> {
+    let [x, y, z] = *p.xyz;
+    let [roll, pitch, yaw] = *p.rpy;
+    IsometryMatrix3::from_parts(
+        Translation3::new(x * 1000.0, y * 1000.0, z * 1000.0),
+        Rotation3::from_euler_angles(roll, pitch, yaw),
+    )
+}
+
+/// A rotation taking the z axis onto `axis` (none for a zero axis).
+fn z_onto(axis: &[f64; 3]) -> Option<IsometryMatrix3<f64>> {
+    let a = Vector3::from(*axis);
+    let a = Unit::try_new(a, 1e-12)?;
+    let rotation = Rotation3::rotation_between(&Vector3::z(), &a)
+        .unwrap_or_else(|| Rotation3::from_axis_angle(&Vector3::x_axis(), std::f64::consts::PI));
+    Some(IsometryMatrix3::from_parts(
+        Translation3::identity(),
+        rotation,
+    ))
+}
+
+fn moving(j: &urdf_rs::Joint, kind: JointKind) -> Joint {
+    let (min, max) = match (&j.joint_type, kind) {
+        (urdf_rs::JointType::Continuous, _) => (-std::f64::consts::PI, std::f64::consts::PI),
+        (_, JointKind::Prismatic) => (j.limit.lower * 1000.0, j.limit.upper * 1000.0),
+        _ => (j.limit.lower, j.limit.upper),
+    };
+    Joint {
+        name: j.name.clone(),
+        kind,
+        dh: Dh::default(),
+        fixed: Some(IsometryMatrix3::identity()),
+        min,
+        max,
+        neutral: 0.0_f64.clamp(min, max),
+        weight: 1.0,
+    }
+}
+
+/// A joint that cannot move: a fixed pose in a chain of joints.
+fn locked(name: &str, pose: IsometryMatrix3<f64>) -> Joint {
+    Joint {
+        name: name.to_string(),
+        kind: JointKind::Revolute,
+        dh: Dh::default(),
+        fixed: Some(pose),
+        min: 0.0,
+        max: 0.0,
+        neutral: 0.0,
+        weight: 0.0,
+    }
+}
