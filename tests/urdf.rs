@@ -14,18 +14,23 @@ person p { mannequin arm base fixed { at (1000, 1500, 930) } }
 reach cup by p
 ";
 
-fn our_chain() -> reach::kinematics::Chain {
+/// The chain of the person of scenario `text`.
+fn chain_of(text: &str) -> reach::kinematics::Chain {
     let registry = Registry::builtin();
     let (_, checked) = reach::check(
         Input::Text {
             name: "urdf.reach",
-            text: SCENARIO,
+            text,
         },
         &registry,
     );
     checked.expect("the scenario checks").persons[0]
         .chain
         .clone()
+}
+
+fn our_chain() -> reach::kinematics::Chain {
+    chain_of(SCENARIO)
 }
 
 fn k_serial() -> k::SerialChain<f64> {
@@ -86,16 +91,7 @@ proptest! {
 /// pelvis when the waist is at 0.
 #[test]
 fn a_chain_whose_first_axis_is_turned_starts_with_a_locked_joint() {
-    let registry = Registry::builtin();
-    let text = SCENARIO.replace("root \"pelvis\"", "root \"torso\"");
-    let (_, checked) = reach::check(
-        Input::Text {
-            name: "urdf.reach",
-            text: &text,
-        },
-        &registry,
-    );
-    let chain = checked.expect("checks").persons[0].chain.clone();
+    let chain = chain_of(&SCENARIO.replace("root \"pelvis\"", "root \"torso\""));
     assert_eq!(chain.joints[0].name, "shoulder_flexion_base");
     assert_eq!((chain.joints[0].min, chain.joints[0].max), (0.0, 0.0));
     let arm = k_serial();

@@ -4,7 +4,7 @@
 use std::fmt::Write;
 
 use crate::plugin::{FormatPlugin, ParamSpec, Plugin};
-use crate::report::{GazeReport, MapReport, ReachReport, Report, TaskReport};
+use crate::report::{BaseReport, GazeReport, MapReport, Posture, ReachReport, Report, TaskReport};
 
 pub struct Text;
 
@@ -147,20 +147,29 @@ fn table(report: &Report) -> String {
     out
 }
 
-fn detail(out: &mut String, r: &ReachReport) {
-    let b = &r.base;
+/// `NAME VERB PERSON (SOLVER): KIND base at (x, y, z) mm, heading h deg`.
+fn placed_line(out: &mut String, what: [&str; 4], b: &BaseReport) {
+    let [name, verb, person, solver] = what;
     let _ = writeln!(
         out,
-        "\n{} by {} ({}): {} base at ({:.0}, {:.0}, {:.0}) mm, heading {:.0} deg",
-        r.name, r.person, r.solver, b.kind, b.x_mm, b.y_mm, b.z_mm, b.heading_deg
+        "\n{name} {verb} {person} ({solver}): {} base at ({:.0}, {:.0}, {:.0}) mm, heading {:.0} deg",
+        b.kind, b.x_mm, b.y_mm, b.z_mm, b.heading_deg
     );
-    let posture: Vec<String> = r
-        .posture
+}
+
+/// `  posture (UNITS): joint value, ...`.
+fn posture_line(out: &mut String, units: &str, posture: &Posture) {
+    let values: Vec<String> = posture
         .0
         .iter()
         .map(|(j, v)| format!("{j} {v:.1}"))
         .collect();
-    let _ = writeln!(out, "  posture (deg): {}", posture.join(", "));
+    let _ = writeln!(out, "  posture ({units}): {}", values.join(", "));
+}
+
+fn detail(out: &mut String, r: &ReachReport) {
+    placed_line(out, [&r.name, "by", &r.person, &r.solver], &r.base);
+    posture_line(out, "deg", &r.posture);
     if let Some(obstacle) = &r.collision {
         let _ = writeln!(out, "  a link passes through `{obstacle}`");
     }
@@ -179,12 +188,7 @@ fn gaze_result(g: &GazeReport) -> String {
 }
 
 fn gaze_detail(out: &mut String, g: &GazeReport) {
-    let b = &g.base;
-    let _ = writeln!(
-        out,
-        "\n{} seen by {} ({}): {} base at ({:.0}, {:.0}, {:.0}) mm, heading {:.0} deg",
-        g.name, g.person, g.solver, b.kind, b.x_mm, b.y_mm, b.z_mm, b.heading_deg
-    );
+    placed_line(out, [&g.name, "seen by", &g.person, &g.solver], &g.base);
     let _ = writeln!(
         out,
         "  eyes at ({:.0}, {:.0}, {:.0}) mm, {:.0} mm from the target (legible for {:.0} mm from {:.0} to {:.0} mm), {:.1} deg off the line of sight (acuity {:.2}, needs {:.2})",
@@ -202,13 +206,7 @@ fn gaze_detail(out: &mut String, g: &GazeReport) {
     if let Some(obstacle) = &g.occluded_by {
         let _ = writeln!(out, "  the line of sight meets `{obstacle}`");
     }
-    let posture: Vec<String> = g
-        .posture
-        .0
-        .iter()
-        .map(|(j, v)| format!("{j} {v:.1}"))
-        .collect();
-    let _ = writeln!(out, "  posture (deg; look in mm): {}", posture.join(", "));
+    posture_line(out, "deg; look in mm", &g.posture);
 }
 
 fn map_detail(out: &mut String, m: &MapReport) {
