@@ -1,7 +1,7 @@
 //! The structure of the accessibility paper's table 2: the same targets
 //! reached with a point base, a circular base (a trolley) and a rectangular
 //! base (a wheelchair) that also turns. Targets are 1,000 seeded random
-//! points on the counter top, the wall cabinets' front and the island top
+//! points on the counter top, the tall cabinet's front and the island top
 //! of `examples/kitchen_wheelchair.reach`; the chain is `std::arm`; each
 //! reach is placed as a map places it (first reaching placement).
 //!
@@ -106,7 +106,7 @@ fn main() {
 
 /// Seeded random points on three surfaces of the kitchen.
 fn targets(room: &Room, n: usize) -> Vec<Point3<f64>> {
-    let surfaces: Vec<_> = ["back_counter.top", "wall_cabinets.front", "island.top"]
+    let surfaces: Vec<_> = ["back_counter.top", "tall_cabinet.front", "island.top"]
         .iter()
         .map(|s| {
             room.surface(&s.split('.').map(str::to_string).collect::<Vec<_>>())
