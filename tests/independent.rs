@@ -9,7 +9,7 @@
 use nalgebra::{Matrix4, Vector4};
 use reach::kinematics::{Chain, JointKind};
 use reach::plugin::Registry;
-use reach::report::{ReachReport, TaskReport};
+use reach::report::{BaseReport, Posture, ReachReport, TaskReport};
 use reach::scene::{BoxObstacle, Room};
 use reach::Input;
 
@@ -40,6 +40,12 @@ fn dh(theta: f64, d: f64, alpha: f64, a: f64) -> Matrix4<f64> {
 /// The hip, every joint frame's origin and the effector, in the room, for
 /// the report's posture and base pose; the effector is the last.
 fn points_in_room(chain: &Chain, r: &ReachReport) -> Vec<[f64; 3]> {
+    posture_points(chain, &r.posture, &r.base)
+}
+
+/// The hip, the frame origins and the effector of `posture` in the room.
+fn posture_points(chain: &Chain, posture: &Posture, base: &BaseReport) -> Vec<[f64; 3]> {
+    let r = Placed { base, posture };
     let (s, c) = r.base.heading_deg.to_radians().sin_cos();
     let to_room = |p: Vector4<f64>| {
         [
@@ -199,4 +205,59 @@ fn every_reported_posture_is_what_the_report_says() {
     }
     assert_eq!(checked, 4 + 16 + 6 + 8);
     assert!(collisions > 0, "the examples have postures that meet a box");
+}
+
+/// A posture and where its base stood.
+struct Placed<'a> {
+    base: &'a BaseReport,
+    posture: &'a Posture,
+}
+
+/// Every gaze of `examples/gaze_shelf.reach` (alone, or with a reach): the
+/// eyes where the report says, by forward kinematics written here; every
+/// joint but the look link within the person's limits; and a look link
+/// whose length is the distance the report gives from the eyes along it.
+#[test]
+fn every_reported_gaze_is_what_the_report_says() {
+    let registry = Registry::builtin();
+    let (_, scenario) = reach::check(Input::Path("examples/gaze_shelf.reach".as_ref()), &registry);
+    let scenario = scenario.unwrap();
+    let report = reach::run(&scenario, &registry);
+    let mut checked = 0;
+    for task in &report.tasks {
+        let g = match task {
+            TaskReport::Gaze(g) => g,
+            TaskReport::ReachAndGaze(b) => &b.gaze,
+            _ => continue,
+        };
+        let person = scenario.person(&g.person).unwrap();
+        let chain = person.chain_for(Some(&g.effector)).unwrap();
+        let n = chain.joints.len();
+        for (joint, (_, value)) in chain.joints[..n - 1].iter().zip(&g.posture.0) {
+            let (min, max) = (joint.min.to_degrees(), joint.max.to_degrees());
+            assert!(
+                *value >= min - 0.005 && *value <= max + 0.005,
+                "{} by {}: {} = {value}",
+                g.name,
+                g.person,
+                joint.name
+            );
+        }
+        let points = posture_points(&chain, &g.posture, &g.base);
+        // The frame before the look link is where the eyes are.
+        let eyes = points[points.len() - 3];
+        let off = (0..3)
+            .map(|k| (eyes[k] - g.eyes_mm[k]).powi(2))
+            .sum::<f64>()
+            .sqrt();
+        assert!(
+            off <= ROUNDING_MM,
+            "{} by {}: eyes {eyes:?} vs {:?}",
+            g.name,
+            g.person,
+            g.eyes_mm
+        );
+        checked += 1;
+    }
+    assert_eq!(checked, 8 + 2);
 }
