@@ -339,14 +339,14 @@ pub struct MapCell {
 }
 
 impl MapCell {
-    /// The cell with `reachable` false; the task judges it.
-    pub fn new(cell: &GridCell, placement: &Placement, chain: &Chain) -> Self {
+    /// The cell of `placement`, `reachable` as the task judged it.
+    pub fn new(cell: &GridCell, placement: &Placement, chain: &Chain, reachable: bool) -> Self {
         let pose = &placement.pose;
         MapCell {
             column: cell.column,
             row: cell.row,
             point_mm: point(cell.point_mm),
-            reachable: false,
+            reachable,
             distance_mm: mm(placement.solution.distance_mm),
             comfort: fixed(chain.discomfort(&placement.solution.q), 4),
             base_mm_deg: [

@@ -178,13 +178,13 @@ impl TaskPlugin for Gaze {
         let chain = with_look_range(&setup.chain, legible);
         // With collisions on, the look link is a link like any other: the
         // solver and the base prefer a posture whose line of sight is clear.
-        let obstacles = setup.obstacles(room);
+        let obstacles = GazeObstacles::new(room, &setup);
         let query = ReachQuery {
             target_room_mm: target.position_mm,
             tolerance_mm: setup.tolerance_mm,
             seed: mix_seed(setup.seed, &[&task.subject, &setup.person.name, "gaze"]),
             search: Search::MostComfortable,
-            obstacles: obstacles.as_ref(),
+            obstacles: obstacles.body.as_ref(),
         };
         let placement = setup
             .base
@@ -194,7 +194,7 @@ impl TaskPlugin for Gaze {
             &chain,
             &placement,
             target.position_mm,
-            room,
+            &obstacles,
             &setup,
             &options,
         );
@@ -214,6 +214,23 @@ impl TaskPlugin for Gaze {
     }
 }
 
+/// The obstacles a gaze is checked against, built once per task: all of
+/// them for the line of sight, and those the body must keep clear of
+/// (grown by the clearance) when the task checks collisions.
+pub(super) struct GazeObstacles {
+    pub sight: Obstacles,
+    pub body: Option<Obstacles>,
+}
+
+impl GazeObstacles {
+    pub fn new(room: &Room, setup: &Setup<'_>) -> Self {
+        GazeObstacles {
+            sight: Obstacles::new(room, 0.0),
+            body: setup.obstacles(room),
+        }
+    }
+}
+
 /// What the eyes of `chain` see of `target` in the placed posture, and if
 /// not, why: the sight line is always checked, by a ray cast that names
 /// the first obstacle it meets; the body's links when collisions are on.
@@ -221,29 +238,25 @@ pub(super) fn see(
     chain: &Chain,
     placement: &Placement,
     target: Point3<f64>,
-    room: &Room,
+    obstacles: &GazeObstacles,
     setup: &Setup<'_>,
     options: &Options,
 ) -> Sight {
-    let threshold = options.number("acuity");
-    let legible = legible_mm(options);
-    let mut sight = look(
-        chain,
-        placement,
-        target,
-        legible,
-        &Obstacles::new(room, 0.0),
-        options,
-    );
-    let body_obstacles = setup.obstacles(room);
-    sight.body_collision = obstacles_met_by_body(chain, placement, body_obstacles.as_ref());
-    sight.reason = sight.reason(
-        setup.tolerance_mm,
-        placement.solution.distance_mm,
-        threshold,
-    );
-    sight.acuity_threshold = threshold;
-    sight
+    let size_mm = options.length_mm("size");
+    let look = look(chain, placement, target, &obstacles.sight, size_mm);
+    let sight = Sight {
+        reason: None,
+        occluded_by: look.occluded_by,
+        body_collision: obstacles_met_by_body(chain, placement, obstacles.body.as_ref()),
+        distance_mm: look.distance_mm,
+        legible_mm: legible_mm(options),
+        off_axis_rad: look.off_axis_rad,
+        acuity_threshold: options.number("acuity"),
+        size_mm,
+        eyes_room_mm: look.eyes_room_mm,
+    };
+    let reason = sight.reason(setup.tolerance_mm, placement.solution.distance_mm);
+    Sight { reason, ..sight }
 }
 
 /// A gaze effector's chain must end in its look link.
@@ -269,16 +282,22 @@ pub(super) fn with_look_range(chain: &Chain, [d_min, d_max]: [f64; 2]) -> Chain 
     chain
 }
 
-/// Where the eyes are and what they see in the placed posture; `reason`
-/// is filled in by [`Sight::reason`].
+/// Where the eyes are in the placed posture, and what lies between them
+/// and the target.
+struct Look {
+    eyes_room_mm: Point3<f64>,
+    distance_mm: f64,
+    off_axis_rad: f64,
+    occluded_by: Option<String>,
+}
+
 fn look(
     chain: &Chain,
     placement: &Placement,
     target: Point3<f64>,
-    legible_mm: [f64; 2],
     obstacles: &Obstacles,
-    options: &Options,
-) -> Sight {
+    size_mm: f64,
+) -> Look {
     let q = &placement.solution.q;
     // The eyes: the frame before the look link, looking along its z axis.
     let eye_frame = chain.end_frame(&q[..q.len() - 1]);
@@ -289,20 +308,13 @@ fn look(
         .pose
         .direction_to_room(&(eye_frame.rotation * Vector3::z()));
     let to_target = target - eyes_room;
-    let size_mm = options.length_mm("size");
-    let occluded_by = obstacles
-        .first_on_sight_line(&eyes_room, &target, size_mm / 2.0)
-        .map(|(i, _)| obstacles.name(i).to_string());
-    Sight {
-        reason: None,
-        occluded_by,
-        body_collision: None,
-        distance_mm: to_target.norm(),
-        legible_mm,
-        off_axis_rad: look_room.angle(&to_target),
-        acuity_threshold: 0.0,
-        size_mm,
+    Look {
         eyes_room_mm: eyes_room,
+        distance_mm: to_target.norm(),
+        off_axis_rad: look_room.angle(&to_target),
+        occluded_by: obstacles
+            .first_on_sight_line(&eyes_room, &target, size_mm / 2.0)
+            .map(|(i, _)| obstacles.name(i).to_string()),
     }
 }
 
@@ -327,19 +339,14 @@ fn obstacles_met_by_body(
 
 impl Sight {
     /// Why the target is not seen, the first that applies, or `None`.
-    fn reason(
-        &self,
-        tolerance_mm: f64,
-        solver_distance_mm: f64,
-        threshold: f64,
-    ) -> Option<&'static str> {
+    fn reason(&self, tolerance_mm: f64, solver_distance_mm: f64) -> Option<&'static str> {
         // Distances, like the look link's end, count within the tolerance.
         let [d_min, d_max] = self.legible_mm;
         if self.distance_mm < d_min - tolerance_mm {
             Some("too near")
         } else if self.distance_mm > d_max + tolerance_mm {
             Some("too far")
-        } else if vision::acuity(self.off_axis_rad) < threshold {
+        } else if vision::acuity(self.off_axis_rad) < self.acuity_threshold {
             // The solver could not bring the line of sight onto the target:
             // the neck and eyes stop short; else it was near enough for the
             // solver but not for the eyes.

@@ -7,11 +7,12 @@
 use super::common::Setup;
 use super::gaze::{
     effective_vision, gaze_params, illegible, legible_mm, needs_look_link, see, with_look_range,
+    GazeObstacles,
 };
 use super::map::{grid_params, run_map, too_large};
 use crate::error::ErrorKind;
 use crate::kinematics::Chain;
-use crate::plugin::{Options, ParamSpec, Plugin, SubjectKind, TaskContext, TaskPlugin};
+use crate::plugin::{Options, ParamSpec, Placement, Plugin, SubjectKind, TaskContext, TaskPlugin};
 use crate::report::TaskReport;
 use crate::scene::Room;
 
@@ -61,10 +62,12 @@ impl TaskPlugin for GazeMap {
             .scenario
             .surface(&ctx.task.subject)
             .expect("checked surface");
-        run_map(ctx, &setup, &chain, "gaze", &|placement, point| {
-            see(&chain, placement, point, room, &setup, options)
+        let obstacles = GazeObstacles::new(room, &setup);
+        let judge = |placement: &Placement, point| {
+            see(&chain, placement, point, &obstacles, &setup, options)
                 .reason
                 .is_none()
-        })
+        };
+        run_map(ctx, &setup, &chain, obstacles.body.as_ref(), "gaze", &judge)
     }
 }

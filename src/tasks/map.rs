@@ -7,6 +7,7 @@
 use rayon::prelude::*;
 
 use super::common::{common_params, mix_seed, Setup};
+use crate::collision::Obstacles;
 use crate::error::ErrorKind;
 use crate::kinematics::Chain;
 use crate::plugin::Placement;
@@ -76,9 +77,20 @@ impl TaskPlugin for Map {
     fn run(&self, ctx: &TaskContext<'_>) -> TaskReport {
         let setup = Setup::new(ctx);
         let tolerance_mm = setup.tolerance_mm;
-        run_map(ctx, &setup, &setup.chain, "reach", &|placement, _| {
-            placement.solution.reaches(tolerance_mm)
-        })
+        let (room, _) = ctx
+            .scenario
+            .surface(&ctx.task.subject)
+            .expect("checked surface");
+        let obstacles = setup.obstacles(room);
+        let judge = |placement: &Placement, _| placement.solution.reaches(tolerance_mm);
+        run_map(
+            ctx,
+            &setup,
+            &setup.chain,
+            obstacles.as_ref(),
+            "reach",
+            &judge,
+        )
     }
 }
 
@@ -87,11 +99,13 @@ impl TaskPlugin for Map {
 pub(super) type Judge<'a> = dyn Fn(&Placement, Point3<f64>) -> bool + Sync + 'a;
 
 /// A map of the task's surface with `chain`: each point's placement found
-/// as for a reach of `chain`'s effector, judged by `judge`.
+/// as for a reach of `chain`'s effector (links kept out of `obstacles`),
+/// judged by `judge`.
 pub(super) fn run_map(
     ctx: &TaskContext<'_>,
     setup: &Setup<'_>,
     chain: &Chain,
+    obstacles: Option<&Obstacles>,
     of: &'static str,
     judge: &Judge<'_>,
 ) -> TaskReport {
@@ -102,7 +116,6 @@ pub(super) fn run_map(
         .surface(&task.subject)
         .expect("checked surface");
     let prepared = setup.base.prepare(room, chain);
-    let obstacles = setup.obstacles(room);
     let step_mm = task.options.length_mm("step");
     let grid = surface.grid(step_mm);
     ctx.progress.add_work(grid.cells.len() as u64);
@@ -116,13 +129,11 @@ pub(super) fn run_map(
                 tolerance_mm: setup.tolerance_mm,
                 seed: mix_seed(setup.seed, &[&task.subject, &person.name, &column, &row]),
                 search: Search::FirstReaching,
-                obstacles: obstacles.as_ref(),
+                obstacles,
             };
             let placement = prepared.reach(&query, setup.solver.as_ref());
             ctx.progress.advance(1);
-            let mut map_cell = MapCell::new(cell, &placement, chain);
-            map_cell.reachable = judge(&placement, cell.point_mm);
-            map_cell
+            MapCell::new(cell, &placement, chain, judge(&placement, cell.point_mm))
         })
         .collect();
     let mut report = MapReport::new(

@@ -9,7 +9,9 @@
 use nalgebra::Point3;
 
 use super::common::{common_params, mix_seed, Setup};
-use super::gaze::{effective_vision, illegible, legible_mm, needs_look_link, see, vision_params};
+use super::gaze::{
+    effective_vision, illegible, legible_mm, needs_look_link, see, vision_params, GazeObstacles,
+};
 use crate::collision::PlacedObstacles;
 use crate::error::ErrorKind;
 use crate::kinematics::{Body, Chain};
@@ -105,7 +107,7 @@ impl TaskPlugin for ReachAndGaze {
         let (room, target) = ctx.scenario.target(&task.subject).expect("checked target");
         let options = &effective_vision(&task.options, Some(&setup.person.vision));
         let (body, hand, eyes) = body_with_look_range(&setup, options);
-        let obstacles = setup.obstacles(room);
+        let obstacles = GazeObstacles::new(room, &setup);
         let query = ReachQuery {
             target_room_mm: target.position_mm,
             tolerance_mm: setup.tolerance_mm,
@@ -114,7 +116,7 @@ impl TaskPlugin for ReachAndGaze {
                 &[&task.subject, &setup.person.name, "reach+gaze"],
             ),
             search: Search::MostComfortable,
-            obstacles: obstacles.as_ref(),
+            obstacles: obstacles.body.as_ref(),
         };
         let pose = setup
             .base
@@ -141,7 +143,7 @@ impl TaskPlugin for ReachAndGaze {
                 goals: &goals,
                 tolerance_mm: setup.tolerance_mm,
                 seed: query.seed,
-                obstacles: obstacles.as_ref().map(|o| PlacedObstacles {
+                obstacles: obstacles.body.as_ref().map(|o| PlacedObstacles {
                     obstacles: o,
                     base_pose: pose,
                 }),
@@ -172,7 +174,7 @@ impl TaskPlugin for ReachAndGaze {
             &eyes_chain,
             &eyes_placement,
             target.position_mm,
-            room,
+            &obstacles,
             &setup,
             options,
         );
