@@ -157,8 +157,7 @@ impl TaskPlugin for ReachAndGaze {
             tolerance_mm: setup.tolerance_mm,
         };
         let hand_chain = body.chain(hand);
-        let hand_placement = placed(&body, hand, &tree, pose, target.position_mm);
-        let mut hand_placement = hand_placement;
+        let mut hand_placement = placed(&body, hand, &hand_chain, &tree, pose, target.position_mm);
         hand_placement.solution.collision = query
             .problem(&hand_chain, pose)
             .collision(&hand_placement.solution.q);
@@ -169,7 +168,7 @@ impl TaskPlugin for ReachAndGaze {
             room,
         );
         let eyes_chain = body.chain(eyes);
-        let eyes_placement = placed(&body, eyes, &tree, pose, target.position_mm);
+        let eyes_placement = placed(&body, eyes, &eyes_chain, &tree, pose, target.position_mm);
         let sight = see(
             &eyes_chain,
             &eyes_placement,
@@ -213,15 +212,16 @@ fn body_with_look_range(setup: &Setup<'_>, options: &Options) -> (Body, usize, u
     (body, hand, eyes)
 }
 
-/// Effector `effector`'s share of the tree's posture, as a placement.
+/// Effector `effector`'s share of the tree's posture (`chain` is its
+/// chain), as a placement.
 fn placed(
     body: &Body,
     effector: usize,
+    chain: &Chain,
     tree: &TreeSolution,
     pose: BasePose,
     target_room: Point3<f64>,
 ) -> Placement {
-    let chain = body.chain(effector);
     let q: Vec<f64> = body
         .path(body.effectors[effector].joint)
         .iter()
