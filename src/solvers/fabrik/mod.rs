@@ -2,13 +2,14 @@
 //! joint limits and obstacle avoidance after the visibility paper. The
 //! chain is read as bones (`bones.rs`); one solve alternates backward and
 //! forward passes (`pass.rs`), moving bones out of obstacles on the way
-//! (`avoid.rs`). Like `incremental`, it runs from several starts and keeps
+//! (`avoid.rs`), kicking a start that stalls (`stall.rs`). Like `incremental`, it runs from several starts and keeps
 //! the most comfortable posture that reaches. `tree.rs` solves several
 //! effectors of one body at once (a hand and the eyes).
 
 mod avoid;
 mod bones;
 mod pass;
+mod stall;
 mod tree;
 
 pub use bones::{bones, Bone, End};

@@ -19,13 +19,10 @@ use rand_chacha::ChaCha8Rng;
 
 use super::avoid;
 use super::bones::{Bone, End};
+use super::stall::{Next, Stalls};
 use super::FabrikSettings;
 use crate::kinematics::{Chain, Joint, JointKind};
 use crate::plugin::{IkProblem, IkSolution};
-
-/// Kicks for a posture that reaches the target but passes through an
-/// obstacle: moving the bones out has failed, and more kicks rarely help.
-pub const BLOCKED_KICKS: u32 = 3;
 
 /// The working state of one solve.
 pub(super) struct Pass<'a> {
@@ -76,8 +73,8 @@ impl<'a> Pass<'a> {
         let tolerance = self.problem.tolerance_mm;
         let avoiding = s.avoid_obstacles && self.problem.obstacles.is_some();
         let mut best: Option<(bool, f64, Vec<f64>)> = None;
-        let mut progress = f64::INFINITY;
-        let (mut stalled, mut iterations, mut kicks) = (0, 0, 0);
+        let mut stalls = Stalls::new();
+        let mut iterations = 0;
         while iterations < s.max_iterations {
             let d = self.effector_distance();
             let clear = !avoiding || self.problem.collision(&self.q).is_none();
@@ -91,32 +88,18 @@ impl<'a> Pass<'a> {
             if reaches {
                 break;
             }
-            stalled = if d < progress * (1.0 - 1e-4) {
-                0
-            } else {
-                stalled + 1
-            };
-            progress = progress.min(d);
-            if stalled >= s.stall {
-                // On the target but through a box: a few kicks, not all.
-                let limit = if d <= tolerance {
-                    s.kicks.min(BLOCKED_KICKS)
-                } else {
-                    s.kicks
-                };
-                if kicks >= limit {
-                    break;
+            match stalls.next(s, d, d <= tolerance) {
+                Next::Stop => break,
+                Next::Kick => self.kick(rng),
+                Next::Pass => {
+                    self.backward();
+                    self.forward(avoiding);
+                    if s.ccd {
+                        self.ccd_sweep();
+                    }
+                    iterations += 1;
                 }
-                self.kick(rng);
-                (kicks, stalled, progress) = (kicks + 1, 0, f64::INFINITY);
-                continue;
             }
-            self.backward();
-            self.forward(avoiding);
-            if s.ccd {
-                self.ccd_sweep();
-            }
-            iterations += 1;
         }
         let (_, _, q) = best.expect("at least one posture seen");
         let chain = self.chain();

@@ -12,7 +12,8 @@ use rand_chacha::rand_core::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
 use super::bones::{bones, Bone};
-use super::pass::{kick, Pass, BLOCKED_KICKS};
+use super::pass::{kick, Pass};
+use super::stall::{Next, Stalls};
 use super::FabrikSettings;
 use crate::collision::PlacedObstacles;
 use crate::kinematics::{Body, Chain};
@@ -187,8 +188,8 @@ impl Tree<'_> {
     fn run(&mut self, whole: &Chain, rng: &mut ChaCha8Rng) -> TreeSolution {
         let s = self.settings;
         let mut best = self.solution(0);
-        let mut progress = f64::INFINITY;
-        let (mut stalled, mut iterations, mut kicks) = (0, 0, 0);
+        let mut stalls = Stalls::new();
+        let mut iterations = 0;
         while iterations < s.max_iterations {
             let now = self.solution(iterations);
             let (reaches, score) = now.score(self.problem.goals, self.problem.tolerance_mm);
@@ -202,29 +203,17 @@ impl Tree<'_> {
             if reaches {
                 break;
             }
-            stalled = if -score < progress * (1.0 - 1e-4) {
-                0
-            } else {
-                stalled + 1
-            };
-            progress = progress.min(-score);
-            if stalled >= s.stall {
-                // On the targets but through a box: a few kicks, not all.
-                let limit = if near {
-                    s.kicks.min(BLOCKED_KICKS)
-                } else {
-                    s.kicks
-                };
-                if kicks >= limit {
-                    break;
+            match stalls.next(s, -score, near) {
+                Next::Stop => break,
+                Next::Kick => {
+                    kick(&mut self.q, &whole.joints, s.kick, rng);
+                    self.load();
                 }
-                kick(&mut self.q, &whole.joints, s.kick, rng);
-                self.load();
-                (kicks, stalled, progress) = (kicks + 1, 0, f64::INFINITY);
-                continue;
+                Next::Pass => {
+                    self.iterate();
+                    iterations += 1;
+                }
             }
-            self.iterate();
-            iterations += 1;
         }
         best.iterations = u64::from(iterations);
         best
