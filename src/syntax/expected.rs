@@ -142,10 +142,13 @@ fn is_visible_token(token: &str) -> bool {
 /// Where any top-level item may start, name one alternative for all of
 /// them rather than listing every keyword.
 fn collapse_item_starts(expected: &mut Vec<String>) {
-    const STARTS: [&str; 7] = [
+    const STARTS: [&str; 10] = [
         "`let`",
         "`room`",
         "`mannequin`",
+        "`profile`",
+        "`base`",
+        "`vision`",
         "`person`",
         "`units`",
         "`use`",
