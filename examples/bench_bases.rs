@@ -86,6 +86,7 @@ fn main() {
                 seed: i as u64,
                 search: Search::FirstReaching,
                 obstacles: None,
+                retry: None,
             };
             let start = Instant::now();
             let placement = prepared.reach(&query, solver.as_ref());

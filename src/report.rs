@@ -306,6 +306,10 @@ pub struct MapReport {
     pub step_mm: f64,
     pub tolerance_mm: f64,
     pub solver: String,
+    /// Points that count only thanks to the task's `blocked_solver` (the
+    /// solver reached them from no placement without going through an
+    /// obstacle).
+    pub retried: usize,
     /// The base plugin.
     pub base: String,
     /// `plan` for a horizontal surface, `elevation` for a vertical one.
@@ -411,6 +415,7 @@ impl MapReport {
             step_mm: mm(step_mm),
             tolerance_mm: mm(tolerance_mm),
             solver: solver.to_string(),
+            retried: 0,
             base: person.base.name.clone(),
             view: if surface.is_horizontal() {
                 "plan"

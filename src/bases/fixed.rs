@@ -2,6 +2,7 @@
 
 use nalgebra::Point3;
 
+use super::search::search;
 use crate::kinematics::Chain;
 use crate::plugin::{
     Base, BasePlugin, BasePose, Options, ParamSpec, Placement, Plugin, PreparedBase, ReachQuery,
@@ -72,6 +73,6 @@ struct Prepared<'a> {
 
 impl PreparedBase for Prepared<'_> {
     fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement {
-        query.solve_at(self.chain, self.pose, solver)
+        search(query, self.chain, &[self.pose], solver).expect("one pose gives one placement")
     }
 }

@@ -1,8 +1,10 @@
 //! Bases: where the person stands or sits, each a plugin. `fixed` stays
-//! put; `trolley` and `wheelchair` move on the floor (`placement.rs`).
+//! put; `trolley` and `wheelchair` move on the floor (`placement.rs`);
+//! all search their candidate placements alike (`search.rs`).
 
 mod fixed;
 mod placement;
+mod search;
 mod trolley;
 mod wheelchair;
 

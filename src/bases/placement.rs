@@ -3,8 +3,8 @@
 //! preferred hip point is the one that puts the target where the arm works
 //! best (the average horizontal position of the effector over the chain's
 //! workspace, turned by the heading); the candidate is the admissible point
-//! nearest to it. The solver is run from every candidate, and the kept
-//! placement is the most comfortable one that reaches, or else the closest.
+//! nearest to it. The candidates are searched as every base's are
+//! (`search.rs`).
 //! This is the paper's idea (section 5.3.5: the target becomes the region of
 //! target minus admissible base positions) made discrete, with the heading
 //! theta_0 of section 5.3.6 as the outer loop.
@@ -14,9 +14,10 @@ use nalgebra::{Point3, Vector2};
 use rand_chacha::rand_core::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
+use super::search::search;
 use crate::floor::{admissible, Footprint, Zone};
 use crate::kinematics::Chain;
-use crate::plugin::{BasePose, IkSolution, Placement, PreparedBase, ReachQuery, Search, Solver};
+use crate::plugin::{BasePose, IkSolution, Placement, PreparedBase, ReachQuery, Solver};
 use crate::scene::Room;
 use crate::solvers::random_posture;
 
@@ -113,32 +114,11 @@ impl PreparedMobile<'_> {
 
 impl PreparedBase for PreparedMobile<'_> {
     fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement {
-        let mut best: Option<(Placement, f64)> = None;
-        for pose in self.candidates(&query.target_room_mm) {
-            let placement = query.solve_at(self.chain, pose, solver);
-            let comfort = self.chain.discomfort(&placement.solution.q);
-            let better = best.as_ref().is_none_or(|(b, b_comfort)| {
-                placement.solution.preferred_to(
-                    comfort,
-                    &b.solution,
-                    *b_comfort,
-                    query.tolerance_mm,
-                )
-            });
-            if better {
-                best = Some((placement, comfort));
-            }
-            let done = best
-                .as_ref()
-                .is_some_and(|(b, _)| b.solution.reaches(query.tolerance_mm));
-            if done && query.search == Search::FirstReaching {
-                break;
-            }
-        }
-        best.map(|(p, _)| p)
-            .unwrap_or_else(|| nowhere(self.room, self.chain))
+        let poses = self.candidates(&query.target_room_mm);
+        search(query, self.chain, &poses, solver).unwrap_or_else(|| nowhere(self.room, self.chain))
     }
 }
+
 /// The admissible point nearest to `p` (itself if admissible).
 fn nearest(region: &MultiPolygon<f64>, p: Point<f64>) -> Option<Point<f64>> {
     if region.0.is_empty() {
@@ -183,5 +163,6 @@ fn nowhere(room: &Room, chain: &Chain) -> Placement {
             iterations: 0,
             collision: None,
         },
+        retried: false,
     }
 }

@@ -92,7 +92,11 @@ impl Checker<'_> {
                     options: Vec::new(),
                     span: at,
                 };
-                Some(Value::Plugin(self.plugin_config(kind, &use_)?))
+                let mut config = self.plugin_config(kind, &use_)?;
+                for (name, value) in cfg.options.iter() {
+                    config.options = config.options.with(name, value.clone());
+                }
+                Some(Value::Plugin(config))
             }
             _ => Some(default.clone()),
         }

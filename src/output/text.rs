@@ -216,15 +216,20 @@ fn map_detail(out: &mut String, m: &MapReport) {
         None if m.of == "gaze" => "nothing seen".to_string(),
         None => "nothing reachable".to_string(),
     };
+    let retried = match m.retried {
+        0 => String::new(),
+        n => format!(" ({n} only on the retry where obstacles blocked)"),
+    };
     let _ = writeln!(
         out,
-        "\n{} by {} ({} base): {} of {} points {} ({:.1} %), {}; {} view, {} x {} cells of {:.0} mm",
+        "\n{} by {} ({} base): {} of {} points {}{} ({:.1} %), {}; {} view, {} x {} cells of {:.0} mm",
         m.name,
         m.person,
         m.base,
         m.reachable,
         m.points,
         if m.of == "gaze" { "seen" } else { "reachable" },
+        retried,
         m.fraction * 100.0,
         heights,
         m.view,

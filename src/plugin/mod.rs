@@ -164,6 +164,9 @@ impl BasePose {
 pub struct Placement {
     pub pose: BasePose,
     pub solution: IkSolution,
+    /// Found by the query's [`Retry`] solver, after the task's own solver
+    /// found no placement that reaches.
+    pub retried: bool,
 }
 
 /// How hard a base looks for a placement.
@@ -184,6 +187,18 @@ pub struct ReachQuery<'a> {
     pub search: Search,
     /// The room's obstacles, when links must stay out of them.
     pub obstacles: Option<&'a Obstacles>,
+    /// Where no placement reaches, a second solver to try again with.
+    pub retry: Option<Retry<'a>>,
+}
+
+/// A second try where the task's solver reaches from no placement (used
+/// when obstacles are checked: a solver blind to them while it searches
+/// can miss postures that go round them).
+#[derive(Clone, Copy)]
+pub struct Retry<'a> {
+    pub solver: &'a dyn Solver,
+    /// How many of the most promising placements are tried again.
+    pub placements: usize,
 }
 
 impl ReachQuery<'_> {
@@ -207,7 +222,20 @@ impl ReachQuery<'_> {
         let problem = self.problem(chain, pose);
         let mut solution = solver.solve(&problem);
         solution.collision = problem.collision(&solution.q);
-        Placement { pose, solution }
+        Placement {
+            pose,
+            solution,
+            retried: false,
+        }
+    }
+
+    /// This query with another seed, so that a retry by the same solver
+    /// starts from other postures.
+    pub fn retried(&self) -> Self {
+        ReachQuery {
+            seed: self.seed ^ 0x7e72_1ed5_0000_0001,
+            ..*self
+        }
     }
 }
 

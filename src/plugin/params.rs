@@ -83,7 +83,15 @@ impl Value {
             Value::Bool(v) => v.to_string(),
             Value::Point(p) => format!("({}, {}, {})", trim(p.x), trim(p.y), trim(p.z)),
             Value::Name(n) => n.clone(),
-            Value::Plugin(c) => c.name.clone(),
+            Value::Plugin(c) if c.options.values.is_empty() => c.name.clone(),
+            Value::Plugin(c) => {
+                let options: Vec<String> = c
+                    .options
+                    .iter()
+                    .map(|(name, value)| format!("{name} {}", value.display()))
+                    .collect();
+                format!("{} {{ {} }}", c.name, options.join(" "))
+            }
         }
     }
 }
@@ -212,6 +220,22 @@ impl ParamSpec {
             Some(Value::Plugin(default)),
             doc,
         )
+    }
+
+    /// Another plugin, with the named default and some of its options set
+    /// (the others take the plugin's defaults).
+    pub fn plugin_with(
+        name: &'static str,
+        kind: PluginKind,
+        default: &str,
+        options: Vec<(&'static str, Value)>,
+        doc: &'static str,
+    ) -> Self {
+        let mut spec = Self::plugin(name, kind, default, doc);
+        if let Some(Value::Plugin(config)) = &mut spec.default {
+            config.options = Options::new(options);
+        }
+        spec
     }
 
     /// Bounds, inclusive, in internal units (mm, rad).

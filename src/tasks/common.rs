@@ -1,10 +1,16 @@
 //! What the reach-like tasks share: their common options (solver,
-//! tolerance, seed), the setup that builds the person's solver and base,
+//! tolerance, seed, collisions and the retry where obstacles block), the
+//! setup that builds the person's solvers and base and asks its queries,
 //! and seeds that depend on names rather than on the order of tasks.
 
 use crate::collision::Obstacles;
 use crate::kinematics::Chain;
-use crate::plugin::{Base, ParamSpec, PluginKind, Solver, TaskContext};
+use nalgebra::Point3;
+
+use crate::plugin::{
+    Base, ParamSpec, Placement, PluginConfig, PluginKind, ReachQuery, Retry, Search, Solver,
+    TaskContext, Value,
+};
 use crate::scene::{Person, Room};
 
 /// `solver`, `tolerance` and `seed`, with `what` in the docs ("target",
@@ -38,6 +44,19 @@ pub fn common_params(what: &'static str, seed_doc: &'static str) -> Vec<ParamSpe
             "with collisions: how close a link may come to an obstacle",
         )
         .range(0.0, 500.0),
+        ParamSpec::plugin_with(
+            "blocked_solver",
+            PluginKind::Solver,
+            "incremental",
+            vec![("starts", Value::Integer(64))],
+            "with collisions, where the solver reaches from no placement: the solver that tries again",
+        ),
+        ParamSpec::integer(
+            "blocked_retries",
+            4,
+            "how many of the most promising placements `blocked_solver` tries (0: none)",
+        )
+        .range(0.0, 360.0),
     ]
 }
 
@@ -49,6 +68,9 @@ pub struct Setup<'a> {
     pub chain: Chain,
     pub solver_name: &'a str,
     pub solver: Box<dyn Solver>,
+    pub blocked_solver_name: &'a str,
+    pub blocked_solver: Box<dyn Solver>,
+    pub blocked_retries: usize,
     pub base: Box<dyn Base>,
     pub tolerance_mm: f64,
     pub seed: u64,
@@ -61,11 +83,13 @@ impl<'a> Setup<'a> {
         let task = ctx.task;
         let person = ctx.scenario.person(&task.person).expect("checked person");
         let solver_cfg = task.options.plugin("solver");
-        let solver = ctx
-            .registry
-            .solver(&solver_cfg.name)
-            .expect("checked solver")
-            .build(&solver_cfg.options);
+        let blocked_cfg = task.options.plugin("blocked_solver");
+        let build = |cfg: &PluginConfig| {
+            ctx.registry
+                .solver(&cfg.name)
+                .expect("checked solver")
+                .build(&cfg.options)
+        };
         let base = ctx
             .registry
             .base(&person.base.name)
@@ -78,7 +102,10 @@ impl<'a> Setup<'a> {
             person,
             chain,
             solver_name: &solver_cfg.name,
-            solver,
+            solver: build(solver_cfg),
+            blocked_solver_name: &blocked_cfg.name,
+            blocked_solver: build(blocked_cfg),
+            blocked_retries: task.options.integer("blocked_retries") as usize,
             base,
             tolerance_mm: task.options.length_mm("tolerance"),
             seed: task.options.integer("seed") as u64,
@@ -91,6 +118,38 @@ impl<'a> Setup<'a> {
     pub fn obstacles(&self, room: &Room) -> Option<Obstacles> {
         self.collisions
             .then(|| Obstacles::new(room, self.clearance_mm))
+    }
+
+    /// A reach of `target_room_mm` keeping links out of `obstacles`, with
+    /// the task's tolerance and, where obstacles are checked, its retry.
+    pub fn query<'q>(
+        &'q self,
+        target_room_mm: Point3<f64>,
+        seed: u64,
+        search: Search,
+        obstacles: Option<&'q Obstacles>,
+    ) -> ReachQuery<'q> {
+        let retry = (obstacles.is_some() && self.blocked_retries > 0).then(|| Retry {
+            solver: self.blocked_solver.as_ref(),
+            placements: self.blocked_retries,
+        });
+        ReachQuery {
+            target_room_mm,
+            tolerance_mm: self.tolerance_mm,
+            seed,
+            search,
+            obstacles,
+            retry,
+        }
+    }
+
+    /// The name of the solver that found `placement`'s posture.
+    pub fn solver_of(&self, placement: &Placement) -> &'a str {
+        if placement.retried {
+            self.blocked_solver_name
+        } else {
+            self.solver_name
+        }
     }
 }
 

@@ -14,8 +14,8 @@ use crate::collision::{Obstacles, PlacedObstacles};
 use crate::error::ErrorKind;
 use crate::kinematics::{Chain, JointKind};
 use crate::plugin::{
-    Options, ParamSpec, Placement, Plugin, PluginKind, ReachQuery, Search, SubjectKind,
-    TaskContext, TaskPlugin, Value,
+    Options, ParamSpec, Placement, Plugin, PluginKind, Search, SubjectKind, TaskContext,
+    TaskPlugin, Value,
 };
 use crate::report::{Asked, GazeReport, Sight, TaskReport};
 use crate::scene::Room;
@@ -179,13 +179,12 @@ impl TaskPlugin for Gaze {
         // With collisions on, the look link is a link like any other: the
         // solver and the base prefer a posture whose line of sight is clear.
         let obstacles = GazeObstacles::new(room, &setup);
-        let query = ReachQuery {
-            target_room_mm: target.position_mm,
-            tolerance_mm: setup.tolerance_mm,
-            seed: mix_seed(setup.seed, &[&task.subject, &setup.person.name, "gaze"]),
-            search: Search::MostComfortable,
-            obstacles: obstacles.body.as_ref(),
-        };
+        let query = setup.query(
+            target.position_mm,
+            mix_seed(setup.seed, &[&task.subject, &setup.person.name, "gaze"]),
+            Search::MostComfortable,
+            obstacles.body.as_ref(),
+        );
         let placement = setup
             .base
             .prepare(room, &chain)
@@ -202,7 +201,7 @@ impl TaskPlugin for Gaze {
             task,
             person: setup.person,
             chain: &chain,
-            solver: setup.solver_name,
+            solver: setup.solver_of(&placement),
             tolerance_mm: setup.tolerance_mm,
         };
         TaskReport::Gaze(GazeReport::new(

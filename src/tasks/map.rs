@@ -11,9 +11,7 @@ use crate::collision::Obstacles;
 use crate::error::ErrorKind;
 use crate::kinematics::Chain;
 use crate::plugin::Placement;
-use crate::plugin::{
-    Options, ParamSpec, Plugin, ReachQuery, Search, SubjectKind, TaskContext, TaskPlugin,
-};
+use crate::plugin::{Options, ParamSpec, Plugin, Search, SubjectKind, TaskContext, TaskPlugin};
 use crate::report::{MapCell, MapReport, TaskReport};
 use crate::scene::Room;
 use nalgebra::Point3;
@@ -119,23 +117,26 @@ pub(super) fn run_map(
     let step_mm = task.options.length_mm("step");
     let grid = surface.grid(step_mm);
     ctx.progress.add_work(grid.cells.len() as u64);
-    let cells: Vec<MapCell> = grid
+    let cells: Vec<(MapCell, bool)> = grid
         .cells
         .par_iter()
         .map(|cell| {
             let (column, row) = (cell.column.to_string(), cell.row.to_string());
-            let query = ReachQuery {
-                target_room_mm: cell.point_mm,
-                tolerance_mm: setup.tolerance_mm,
-                seed: mix_seed(setup.seed, &[&task.subject, &person.name, &column, &row]),
-                search: Search::FirstReaching,
+            let query = setup.query(
+                cell.point_mm,
+                mix_seed(setup.seed, &[&task.subject, &person.name, &column, &row]),
+                Search::FirstReaching,
                 obstacles,
-            };
+            );
             let placement = prepared.reach(&query, setup.solver.as_ref());
             ctx.progress.advance(1);
-            MapCell::new(cell, &placement, chain, judge(&placement, cell.point_mm))
+            let counts = judge(&placement, cell.point_mm);
+            let cell = MapCell::new(cell, &placement, chain, counts);
+            (cell, counts && placement.retried)
         })
         .collect();
+    let retried = cells.iter().filter(|(_, retried)| *retried).count();
+    let cells: Vec<MapCell> = cells.into_iter().map(|(cell, _)| cell).collect();
     let mut report = MapReport::new(
         &surface,
         person,
@@ -146,5 +147,6 @@ pub(super) fn run_map(
         cells,
     );
     report.of = of;
+    report.retried = retried;
     TaskReport::Map(report)
 }

@@ -1,7 +1,7 @@
 //! The `reach` task: can this person bring their hand to this target?
 
 use super::common::{common_params, mix_seed, Setup};
-use crate::plugin::{ParamSpec, Plugin, ReachQuery, Search, SubjectKind, TaskContext, TaskPlugin};
+use crate::plugin::{ParamSpec, Plugin, Search, SubjectKind, TaskContext, TaskPlugin};
 use crate::report::{Asked, ReachReport, TaskReport};
 
 /// The plugin `reach`.
@@ -34,13 +34,12 @@ impl TaskPlugin for Reach {
         let setup = Setup::new(ctx);
         let (room, target) = ctx.scenario.target(&task.subject).expect("checked target");
         let obstacles = setup.obstacles(room);
-        let query = ReachQuery {
-            target_room_mm: target.position_mm,
-            tolerance_mm: setup.tolerance_mm,
-            seed: mix_seed(setup.seed, &[&task.subject, &setup.person.name]),
-            search: Search::MostComfortable,
-            obstacles: obstacles.as_ref(),
-        };
+        let query = setup.query(
+            target.position_mm,
+            mix_seed(setup.seed, &[&task.subject, &setup.person.name]),
+            Search::MostComfortable,
+            obstacles.as_ref(),
+        );
         let placement = setup
             .base
             .prepare(room, &setup.chain)
@@ -49,7 +48,7 @@ impl TaskPlugin for Reach {
             task,
             person: setup.person,
             chain: &setup.chain,
-            solver: setup.solver_name,
+            solver: setup.solver_of(&placement),
             tolerance_mm: setup.tolerance_mm,
         };
         TaskReport::Reach(ReachReport::new(

@@ -16,8 +16,8 @@ use crate::collision::PlacedObstacles;
 use crate::error::ErrorKind;
 use crate::kinematics::{Body, Chain};
 use crate::plugin::{
-    BasePose, IkSolution, Options, ParamSpec, Placement, Plugin, PluginKind, ReachQuery, Search,
-    SubjectKind, TaskContext, TaskPlugin,
+    BasePose, IkSolution, Options, ParamSpec, Placement, Plugin, PluginKind, Search, SubjectKind,
+    TaskContext, TaskPlugin,
 };
 use crate::report::{Asked, GazeReport, ReachAndGazeReport, ReachReport, TaskReport};
 use crate::scene::Room;
@@ -108,16 +108,15 @@ impl TaskPlugin for ReachAndGaze {
         let options = &effective_vision(&task.options, Some(&setup.person.vision));
         let (body, hand, eyes) = body_with_look_range(&setup, options);
         let obstacles = GazeObstacles::new(room, &setup);
-        let query = ReachQuery {
-            target_room_mm: target.position_mm,
-            tolerance_mm: setup.tolerance_mm,
-            seed: mix_seed(
+        let query = setup.query(
+            target.position_mm,
+            mix_seed(
                 setup.seed,
                 &[&task.subject, &setup.person.name, "reach+gaze"],
             ),
-            search: Search::MostComfortable,
-            obstacles: obstacles.body.as_ref(),
-        };
+            Search::MostComfortable,
+            obstacles.body.as_ref(),
+        );
         let pose = setup
             .base
             .prepare(room, &setup.chain)
@@ -235,5 +234,6 @@ fn placed(
             iterations: tree.iterations,
             collision: None,
         },
+        retried: false,
     }
 }

@@ -1,0 +1,129 @@
+//! What the retry where obstacles block buys, and what it costs: the maps
+//! of `examples/kitchen_wheelchair.reach` (one start per placement, so
+//! that boards block often) run with no retry, with the retry by
+//! `incremental` at several numbers of starts, by `fabrik`, and with
+//! collisions off (an upper bound: what the arm reaches if boards were
+//! not there). Prints a Markdown table: points reached over all maps, the
+//! seated user's `shelf_3.top` and `wall_cab_bottom.top`, and the time.
+//!
+//! `cargo run --release --example bench_retry`
+
+use std::time::Instant;
+
+use reach::plugin::{Options, PluginConfig, Registry, Value};
+use reach::report::TaskReport;
+use reach::scene::Scenario;
+use reach::Input;
+
+/// One row: a label, the retries and the retry solver (`None`:
+/// collisions off).
+type Setting = (&'static str, i64, Option<(&'static str, i64)>);
+
+const SETTINGS: [Setting; 9] = [
+    ("no retry", 0, Some(("incremental", 1))),
+    (
+        "incremental { starts 8 }, 4 placements",
+        4,
+        Some(("incremental", 8)),
+    ),
+    (
+        "incremental { starts 32 }, 4 placements",
+        4,
+        Some(("incremental", 32)),
+    ),
+    (
+        "incremental { starts 64 }, 4 placements (default)",
+        4,
+        Some(("incremental", 64)),
+    ),
+    (
+        "incremental { starts 128 }, 4 placements",
+        4,
+        Some(("incremental", 128)),
+    ),
+    (
+        "incremental { starts 256 }, 4 placements",
+        4,
+        Some(("incremental", 256)),
+    ),
+    (
+        "incremental { starts 64 }, 16 placements",
+        16,
+        Some(("incremental", 64)),
+    ),
+    (
+        "fabrik (defaults: 4 starts), 4 placements",
+        4,
+        Some(("fabrik", 4)),
+    ),
+    ("collisions off (upper bound)", 0, None),
+];
+
+fn main() {
+    let registry = Registry::builtin();
+    let (_, checked) = reach::check(
+        Input::Path("examples/kitchen_wheelchair.reach".as_ref()),
+        &registry,
+    );
+    let mut scenario = checked.expect("the example checks");
+    scenario.tasks.retain(|t| t.kind == "map");
+    println!("Maps of examples/kitchen_wheelchair.reach ({} maps), `solver incremental {{ starts 1 }}`\n", scenario.tasks.len());
+    println!("| retry | points reached | ann shelf_3.top | ann wall_cab_bottom.top | time s |");
+    println!("|---|---:|---:|---:|---:|");
+    for (label, retries, solver) in SETTINGS {
+        let variant = with_retry(&scenario, &registry, retries, solver);
+        let start = Instant::now();
+        let report = reach::run(&variant, &registry);
+        let seconds = start.elapsed().as_secs_f64();
+        let maps: Vec<_> = report
+            .tasks
+            .iter()
+            .filter_map(|t| match t {
+                TaskReport::Map(m) => Some(m),
+                _ => None,
+            })
+            .collect();
+        let total: usize = maps.iter().map(|m| m.reachable).sum();
+        let points: usize = maps.iter().map(|m| m.points).sum();
+        let of = |surface: &str| {
+            maps.iter()
+                .find(|m| m.name == surface && m.person == "ann")
+                .map(|m| format!("{} of {}", m.reachable, m.points))
+                .unwrap_or_default()
+        };
+        println!(
+            "| {label} | {total} of {points} | {} | {} | {seconds:.2} |",
+            of("shelf_3.top"),
+            of("wall_cab_bottom.top")
+        );
+    }
+}
+
+/// The scenario with every task's retry set (or collisions off).
+fn with_retry(
+    scenario: &Scenario,
+    registry: &Registry,
+    retries: i64,
+    solver: Option<(&str, i64)>,
+) -> Scenario {
+    let mut variant = scenario.clone();
+    for task in &mut variant.tasks {
+        let mut options = task.options.clone();
+        match solver {
+            Some((name, starts)) => {
+                let plugin = registry.solver(name).expect("built in");
+                let config = PluginConfig {
+                    name: name.to_string(),
+                    options: Options::defaults(&plugin.params())
+                        .with("starts", Value::Integer(starts)),
+                };
+                options = options
+                    .with("blocked_solver", Value::Plugin(config))
+                    .with("blocked_retries", Value::Integer(retries));
+            }
+            None => options = options.with("collisions", Value::Bool(false)),
+        }
+        task.options = options;
+    }
+    variant
+}

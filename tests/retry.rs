@@ -1,0 +1,81 @@
+//! The retry where obstacles block: a solver that ignores obstacles while
+//! it searches (`incremental { starts 1 }`) finds only a posture through
+//! the open door; with the default `blocked_retries` the search tries the
+//! placement again with `blocked_solver` and finds a clear one, so the
+//! target is no longer called unreachable.
+
+use reach::plugin::Registry;
+use reach::report::{ReachReport, Report, TaskReport};
+use reach::Input;
+
+const DOOR: &str = "
+units mm deg
+use std::arm
+room kitchen {
+  size 3600 x 3000 x 2500
+  box counter        at (0, 0, 0)       size (600, 3000, 900)
+  box cabinet_bottom at (0, 0, 1400)    size (350, 3000, 20)
+  box door           at (350, 1250, 1400) size (400, 18, 700)
+  target mug_behind  at (250, 1400, 1460)
+}
+person ben {
+  mannequin right_arm
+  base fixed { at (850, 850, 930) heading 180deg }
+}
+";
+
+fn run(tasks: &str) -> Report {
+    let text = format!("{DOOR}{tasks}");
+    let registry = Registry::builtin();
+    let (_, checked) = reach::check(
+        Input::Text {
+            name: "door.reach",
+            text: &text,
+        },
+        &registry,
+    );
+    let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(true)));
+    reach::run(&scenario, &registry)
+}
+
+fn reach_report(report: &Report, index: usize) -> &ReachReport {
+    match &report.tasks[index] {
+        TaskReport::Reach(r) => r,
+        other => panic!("not a reach: {other:?}"),
+    }
+}
+
+#[test]
+fn without_the_retry_the_only_posture_found_goes_through_the_door() {
+    let report =
+        run("reach mug_behind by ben { solver incremental { starts 1 } blocked_retries 0 }\n");
+    let r = reach_report(&report, 0);
+    assert!(!r.ok, "{r:?}");
+    assert_eq!(r.collision.as_deref(), Some("door"));
+    assert!(r.distance_mm <= r.tolerance_mm, "{r:?}");
+}
+
+#[test]
+fn the_retry_finds_a_clear_posture_round_the_door() {
+    let report = run("reach mug_behind by ben { solver incremental { starts 1 } }\n");
+    let r = reach_report(&report, 0);
+    assert!(r.ok, "{r:?}");
+    assert_eq!(r.collision, None);
+}
+
+#[test]
+fn a_map_counts_what_the_retry_added_and_loses_nothing() {
+    // The retry runs only where no placement reached, so the points reached
+    // without it are reached with it, and `retried` counts the others.
+    let map = "map cabinet_bottom.top by ben { step 100mm solver incremental { starts 1 }";
+    let report = run(&format!("{map} blocked_retries 0 }}\n{map} }}\n"));
+    let [TaskReport::Map(without), TaskReport::Map(with)] = &report.tasks[..] else {
+        panic!("not two maps")
+    };
+    assert_eq!(without.retried, 0);
+    assert!(with.retried > 0, "{with:?}");
+    assert_eq!(with.reachable - with.retried, without.reachable);
+    for (a, b) in without.cells.iter().zip(&with.cells) {
+        assert!(!a.reachable || b == a, "{a:?} {b:?}");
+    }
+}
