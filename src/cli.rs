@@ -4,9 +4,10 @@
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 
-use clap::{Parser, Subcommand};
+use clap::{Args, Parser, Subcommand};
+use reach::limits::{CEILINGS, DEFAULTS};
 use reach::plugin::{PluginKind, Registry};
-use reach::{Diagnostics, Error, ErrorKind, Input};
+use reach::{Diagnostics, Error, ErrorKind, Input, Limits};
 
 #[derive(Parser)]
 #[command(
@@ -31,6 +32,8 @@ enum Command {
         /// Also write DIR/report.json, and a CSV and an SVG heat map per map.
         #[arg(long, value_name = "DIR")]
         out: Option<PathBuf>,
+        #[command(flatten)]
+        limits: LimitArgs,
     },
     /// Evaluate a scenario, then again whenever it or a file it uses changes.
     Watch {
@@ -42,11 +45,15 @@ enum Command {
         /// Also write DIR/report.json, and a CSV and an SVG heat map per map.
         #[arg(long, value_name = "DIR")]
         out: Option<PathBuf>,
+        #[command(flatten)]
+        limits: LimitArgs,
     },
     /// Parse and check a scenario without running it.
     Check {
         /// The .reach scenario file.
         file: PathBuf,
+        #[command(flatten)]
+        limits: LimitArgs,
     },
     /// List every plugin with its parameters.
     Plugins,
@@ -54,18 +61,77 @@ enum Command {
     Stdlib,
 }
 
+/// Resource limits (docs/language.md, "Limits"); each may be raised up to
+/// a ceiling the tool is tested to handle.
+#[derive(Args)]
+#[command(next_help_heading = "Limits")]
+struct LimitArgs {
+    /// Largest file read: scenario, OBJ mesh, URDF
+    #[arg(long, value_name = "BYTES", default_value_t = DEFAULTS.file_bytes as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.file_bytes as u64))]
+    max_file_bytes: u64,
+    /// Deepest nesting of parentheses and braces
+    #[arg(long, value_name = "LEVELS", default_value_t = DEFAULTS.nesting as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.nesting as u64))]
+    max_nesting: u64,
+    /// Most operands and operators in one expression
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.expression_terms as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.expression_terms as u64))]
+    max_expression_terms: u64,
+    /// Longest chain of constants defined in terms of each other
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.constant_chain as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.constant_chain as u64))]
+    max_constant_chain: u64,
+    /// Longest chain of files using each other
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.use_chain as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.use_chain as u64))]
+    max_use_chain: u64,
+    /// Longest chain of mannequins naming each other
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.alias_chain as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.alias_chain as u64))]
+    max_alias_chain: u64,
+    /// Most solver starts the tasks may need, counted at their worst
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.solver_starts as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.solver_starts as u64))]
+    max_solver_starts: u64,
+}
+
+impl LimitArgs {
+    fn limits(&self) -> Limits {
+        Limits {
+            file_bytes: self.max_file_bytes,
+            nesting: self.max_nesting as usize,
+            expression_terms: self.max_expression_terms as usize,
+            constant_chain: self.max_constant_chain as usize,
+            use_chain: self.max_use_chain as usize,
+            alias_chain: self.max_alias_chain as usize,
+            solver_starts: self.max_solver_starts,
+        }
+    }
+}
+
 pub fn main() -> i32 {
     let cli = Cli::parse();
     let registry = Registry::builtin();
     match cli.command {
-        Command::Run { file, format, out } => run(&registry, &file, &format, out.as_deref()),
-        Command::Watch { file, format, out } => {
+        Command::Run {
+            file,
+            format,
+            out,
+            limits,
+        } => run(&registry, &limits.limits(), &file, &format, out.as_deref()),
+        Command::Watch {
+            file,
+            format,
+            out,
+            limits,
+        } => {
             let Some(formatter) = registry.format(&format).cloned() else {
                 return unknown_format(&registry, &format);
             };
-            crate::watch::watch(&registry, &file, formatter.as_ref(), out.as_deref())
+            let limits = limits.limits();
+            crate::watch::watch(
+                &registry,
+                &limits,
+                &file,
+                formatter.as_ref(),
+                out.as_deref(),
+            )
         }
-        Command::Check { file } => check(&registry, &file),
+        Command::Check { file, limits } => check(&registry, &limits.limits(), &file),
         Command::Plugins => {
             print!("{}", plugins_listing(&registry));
             0
@@ -77,11 +143,11 @@ pub fn main() -> i32 {
     }
 }
 
-fn run(registry: &Registry, file: &Path, format: &str, out: Option<&Path>) -> i32 {
+fn run(registry: &Registry, limits: &Limits, file: &Path, format: &str, out: Option<&Path>) -> i32 {
     let Some(formatter) = registry.format(format) else {
         return unknown_format(registry, format);
     };
-    let (_, checked) = reach::check(Input::Path(file), registry);
+    let (_, checked) = reach::check_within(Input::Path(file), registry, limits);
     let scenario = match checked {
         Ok(s) => s,
         Err(d) => return report_diagnostics(&d),
@@ -107,8 +173,8 @@ fn unknown_format(registry: &Registry, format: &str) -> i32 {
     2
 }
 
-fn check(registry: &Registry, file: &Path) -> i32 {
-    let (_, checked) = reach::check(Input::Path(file), registry);
+fn check(registry: &Registry, limits: &Limits, file: &Path) -> i32 {
+    let (_, checked) = reach::check_within(Input::Path(file), registry, limits);
     match checked {
         Ok(s) => {
             println!("{}: ok ({} tasks)", file.display(), s.tasks.len());

@@ -104,6 +104,17 @@ pub enum ErrorKind {
     },
     #[error("{what} exceeds the limit of {limit}")]
     TooLarge { what: String, limit: String },
+    #[error(
+        "the tasks may need up to {} solver starts, more than the limit of {}",
+        thousands(*.total),
+        thousands(*.limit)
+    )]
+    TooManyStarts {
+        total: u64,
+        limit: u64,
+        /// The share of the declaration that asks the most.
+        decl_starts: u64,
+    },
     #[error("{what} is not supported yet")]
     Unsupported { what: String, help: String },
     #[error("{what} belong in the scenario file, not in a file it uses")]
@@ -165,7 +176,7 @@ impl ErrorKind {
             Unsupported { .. } | Misplaced { .. } | NoLookLink { .. } => "reach::scene",
             Illegible { .. } => "reach::range",
             NoEffector { .. } => "reach::name",
-            TooLarge { .. } => "reach::limit",
+            TooLarge { .. } | TooManyStarts { .. } => "reach::limit",
             FitsNowhere { .. } => "reach::scene",
             UnknownPlugin { .. } | UnknownOption { .. } | MissingOption { .. } => "reach::plugin",
         }
@@ -203,6 +214,9 @@ impl ErrorKind {
             MixedDefaults => "bare numbers with different default units".into(),
             Unsupported { .. } => "not supported".into(),
             TooLarge { .. } => "too large".into(),
+            TooManyStarts { decl_starts, .. } => {
+                format!("these tasks: up to {} starts", thousands(*decl_starts))
+            }
             FitsNowhere { .. } => "cannot be placed for this task".into(),
             Misplaced { .. } => "in a used file".into(),
             Illegible { .. } => "for this size".into(),
@@ -241,6 +255,9 @@ impl ErrorKind {
             MixedDefaults => Some("write the units on these numbers".into()),
             Unsupported { help, .. } => Some(help.clone()),
             TooLarge { .. } => Some("split it up; the limits are in docs/language.md".into()),
+            TooManyStarts { .. } => Some(
+                "ask less (a coarser `step`, fewer `starts`, `headings` or `blocked_retries`), or raise --max-solver-starts".into(),
+            ),
             FitsNowhere { base, .. } if base == "fixed" => Some("a fixed base must stand inside the room".into()),
             FitsNowhere { .. } => Some(
                 "no free floor is large enough for its footprint: check the room size, the obstacles, the zone and the clearance".into(),
@@ -463,5 +480,31 @@ impl Diagnostic for Diagnostics {
 impl From<Error> for Diagnostics {
     fn from(e: Error) -> Self {
         Diagnostics::single(e)
+    }
+}
+
+/// `n` with commas between groups of three digits: 1,234,567.
+fn thousands(n: u64) -> String {
+    let digits = n.to_string();
+    let mut out = String::with_capacity(digits.len() + digits.len() / 3);
+    for (i, c) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i).is_multiple_of(3) {
+            out.push(',');
+        }
+        out.push(c);
+    }
+    out
+}
+
+#[cfg(test)]
+mod thousands_tests {
+    use super::thousands;
+
+    #[test]
+    fn groups_of_three() {
+        assert_eq!(thousands(0), "0");
+        assert_eq!(thousands(999), "999");
+        assert_eq!(thousands(1000), "1,000");
+        assert_eq!(thousands(945_672_021_744), "945,672,021,744");
     }
 }

@@ -43,6 +43,7 @@ pub mod vision;
 use rayon::prelude::*;
 
 pub use error::{Diagnostics, Error, ErrorKind};
+pub use limits::Limits;
 pub use loader::Input;
 
 use plugin::{Registry, TaskContext};
@@ -50,11 +51,21 @@ use report::Report;
 use scene::Scenario;
 use source::Sources;
 
-/// Load and check a scenario. The sources come back either way, so that a
+/// Load and check a scenario within the default [`Limits`]. The sources
+/// come back either way, so that a
 /// caller can show or watch the files; the diagnostics are ready to render.
 pub fn check(input: Input<'_>, registry: &Registry) -> (Sources, Result<Scenario, Diagnostics>) {
-    let (sources, loaded) = loader::load(input);
-    let result = loaded.and_then(|files| check::check(&sources, &files, registry));
+    check_within(input, registry, &Limits::default())
+}
+
+/// [`check`] against `limits` instead of the default ones.
+pub fn check_within(
+    input: Input<'_>,
+    registry: &Registry,
+    limits: &Limits,
+) -> (Sources, Result<Scenario, Diagnostics>) {
+    let (sources, loaded) = loader::load(input, limits);
+    let result = loaded.and_then(|files| check::check(&sources, &files, registry, limits));
     let result = result.map_err(|d| d.attach(&sources));
     (sources, result)
 }

@@ -1,20 +1,58 @@
 //! Bounds on what one scenario may ask of the tool, so that hostile or
-//! broken input gets a diagnostic instead of exhausting the stack or the
-//! memory. Each is documented in docs/language.md.
+//! broken input gets a diagnostic instead of exhausting the stack, the
+//! memory or the user's afternoon. Each is an option of the command line
+//! (`reach run --max-solves N`, ...) and a field of [`Limits`] for
+//! programs; each has a ceiling, the largest value the tool has been tested
+//! to handle without exhausting its stack. Documented in docs/language.md.
 
-/// Largest file read, in bytes.
-pub const MAX_FILE_BYTES: u64 = 16 * 1024 * 1024;
+/// The bounds a scenario is checked against.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Limits {
+    /// Largest file read (scenario, OBJ mesh, URDF), in bytes.
+    pub file_bytes: u64,
+    /// Deepest nesting of parentheses and braces (expressions, points,
+    /// option blocks), counted together.
+    pub nesting: usize,
+    /// Most operands and operators in one expression.
+    pub expression_terms: usize,
+    /// Longest chain of constants defined in terms of each other.
+    pub constant_chain: usize,
+    /// Longest chain of files using each other.
+    pub use_chain: usize,
+    /// Longest chain of mannequins naming each other (`a = b(...)`).
+    pub alias_chain: usize,
+    /// Most solver starts the tasks of a scenario may need, counted at
+    /// their worst (every placement tried, every retry run).
+    pub solver_starts: u64,
+}
 
-/// Deepest nesting of parentheses and braces (expressions, points, option
-/// blocks), counted together.
-pub const MAX_PAREN_DEPTH: usize = 64;
+/// The limits unless told otherwise: far beyond any real scenario.
+pub const DEFAULTS: Limits = Limits {
+    file_bytes: 16 * 1024 * 1024,
+    nesting: 64,
+    expression_terms: 1024,
+    constant_chain: 256,
+    use_chain: 64,
+    alias_chain: 16,
+    solver_starts: 100_000_000,
+};
 
-/// Most operands and operators in one expression (a sum of 300 terms is
-/// already far beyond any scenario).
-pub const MAX_EXPR_TOKENS: usize = 1024;
+impl Default for Limits {
+    fn default() -> Self {
+        DEFAULTS
+    }
+}
 
-/// Longest chain of constants defined in terms of each other.
-pub const MAX_LET_DEPTH: usize = 256;
-
-/// Longest chain of files using each other.
-pub const MAX_USE_DEPTH: usize = 64;
+/// The largest value each limit may be raised to: the command line parses
+/// on a 64 MiB stack, and tests/cli.rs checks input at every ceiling there
+/// (a program calling [`crate::check_within`] on a smaller stack should
+/// keep to the defaults).
+pub const CEILINGS: Limits = Limits {
+    file_bytes: 1 << 30,
+    nesting: 256,
+    expression_terms: 10_000,
+    constant_chain: 4096,
+    use_chain: 1024,
+    alias_chain: 256,
+    solver_starts: 1_000_000_000_000,
+};

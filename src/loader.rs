@@ -7,13 +7,13 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use crate::error::{Diagnostics, Error, ErrorKind};
-use crate::limits::{MAX_FILE_BYTES, MAX_USE_DEPTH};
+use crate::limits::Limits;
 use crate::names::suggest;
 use crate::source::{Origin, Sources};
 use crate::span::{FileId, Span};
 use crate::stdlib;
 use crate::syntax::ast::{File, Item, UseTarget};
-use crate::syntax::parse_file;
+use crate::syntax::parse_file_within;
 
 /// One parsed file of the scenario.
 #[derive(Debug)]
@@ -37,8 +37,11 @@ pub enum Input<'a> {
 
 /// Load the scenario. On failure the diagnostics come with the sources they
 /// point into.
-pub fn load(input: Input<'_>) -> (Sources, Result<Vec<LoadedFile>, Diagnostics>) {
-    let mut loader = Loader::default();
+pub fn load(input: Input<'_>, limits: &Limits) -> (Sources, Result<Vec<LoadedFile>, Diagnostics>) {
+    let mut loader = Loader {
+        limits: *limits,
+        ..Loader::default()
+    };
     match input {
         Input::Path(path) => {
             let key = Key::Disk(canonical(path));
@@ -76,6 +79,7 @@ struct Loader {
     done: HashMap<Key, FileId>,
     /// Files being loaded, outermost first, with their display names.
     stack: Vec<(Key, String)>,
+    limits: Limits,
 }
 
 fn canonical(path: &Path) -> PathBuf {
@@ -86,9 +90,9 @@ impl Loader {
     fn load_disk(&mut self, path: &Path, key: Key, used_at: Option<Span>) {
         let shown = path.display().to_string();
         if let Ok(meta) = std::fs::metadata(path) {
-            if meta.len() > MAX_FILE_BYTES {
+            if meta.len() > self.limits.file_bytes {
                 let what = format!("`{shown}` ({} bytes)", meta.len());
-                let limit = format!("{MAX_FILE_BYTES} bytes");
+                let limit = format!("{} bytes (--max-file-bytes)", self.limits.file_bytes);
                 return self.fail(ErrorKind::TooLarge { what, limit }, used_at);
             }
         }
@@ -139,7 +143,7 @@ impl Loader {
 
     fn parse_and_follow(&mut self, id: FileId, key: Key) {
         let text = std::sync::Arc::clone(&self.loaded.sources.get(id).text);
-        let ast = match parse_file(id, &text) {
+        let ast = match parse_file_within(id, &text, &self.limits) {
             Ok(ast) => ast,
             Err(d) => {
                 self.errors.extend(d.errors);
@@ -169,9 +173,9 @@ impl Loader {
         if self.done.contains_key(&key) {
             return;
         }
-        if self.stack.len() >= MAX_USE_DEPTH {
+        if self.stack.len() >= self.limits.use_chain {
             let what = "the chain of files using each other".to_string();
-            let limit = format!("{MAX_USE_DEPTH} files");
+            let limit = format!("{} files (--max-use-chain)", self.limits.use_chain);
             self.errors
                 .push(Error::new(ErrorKind::TooLarge { what, limit }, span));
             return;

@@ -4,6 +4,18 @@ mod bar;
 mod cli;
 mod watch;
 
+/// The stack of the thread that parses and checks: the parser and the
+/// checker recurse as deep as the input nests, within `reach::Limits`,
+/// whose ceilings are tested on a stack of this size.
+const STACK_BYTES: usize = 64 * 1024 * 1024;
+
 fn main() {
-    std::process::exit(cli::main());
+    let code = std::thread::Builder::new()
+        .name("reach".into())
+        .stack_size(STACK_BYTES)
+        .spawn(cli::main)
+        .expect("a thread can be started")
+        .join()
+        .unwrap_or(101);
+    std::process::exit(code);
 }

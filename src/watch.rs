@@ -18,7 +18,7 @@ use notify::{EventKind, RecommendedWatcher, RecursiveMode, Watcher};
 use reach::cache::TaskCache;
 use reach::plugin::{FormatPlugin, Registry};
 use reach::report::{Report, TaskReport};
-use reach::Input;
+use reach::{Input, Limits};
 
 /// A burst of events ends after this much quiet.
 const QUIET: Duration = Duration::from_millis(25);
@@ -30,6 +30,7 @@ type Events = Receiver<notify::Result<notify::Event>>;
 
 pub fn watch(
     registry: &Registry,
+    limits: &Limits,
     file: &Path,
     formatter: &dyn FormatPlugin,
     out: Option<&Path>,
@@ -45,6 +46,7 @@ pub fn watch(
     let root = absolute(file);
     let mut state = State {
         terminal: std::io::stdout().is_terminal(),
+        limits: *limits,
         cache: TaskCache::default(),
         last_good: None,
         evaluations: 0,
@@ -68,6 +70,7 @@ pub fn watch(
 
 struct State {
     terminal: bool,
+    limits: Limits,
     cache: TaskCache,
     last_good: Option<Report>,
     evaluations: u64,
@@ -86,7 +89,7 @@ impl State {
     ) -> (Vec<PathBuf>, String) {
         let started = Instant::now();
         self.evaluations += 1;
-        let (sources, checked) = reach::check(Input::Path(file), registry);
+        let (sources, checked) = reach::check_within(Input::Path(file), registry, &self.limits);
         let mut screen = String::new();
         let summary = match checked {
             Ok(scenario) => {

@@ -293,3 +293,86 @@ fn stdlib_lists_people_chairs_and_visions() {
         assert!(out.contains(expected), "{expected} missing from\n{out}");
     }
 }
+
+/// Input nested exactly as deep as each limit's ceiling is taken (the
+/// command line's stack holds it); one level more is refused by name.
+#[test]
+fn every_limit_holds_at_its_ceiling_and_refuses_beyond() {
+    use reach::limits::CEILINGS;
+    type Make = fn(&std::path::Path, usize) -> String;
+    let cases: [(&str, usize, Make); 6] = [
+        ("--max-nesting", CEILINGS.nesting, |_, n| {
+            format!("let a = {}1{}\n", "(".repeat(n), ")".repeat(n))
+        }),
+        (
+            "--max-expression-terms",
+            CEILINGS.expression_terms,
+            |_, n| format!("let a = {}1\n", "-".repeat(n - 1)),
+        ),
+        ("--max-constant-chain", CEILINGS.constant_chain, |_, n| {
+            (0..n - 1)
+                .map(|i| format!("let a{i} = a{} + 1\n", i + 1))
+                .collect::<String>()
+                + &format!("let a{} = 1\n", n - 1)
+        }),
+        ("--max-alias-chain", CEILINGS.alias_chain, |_, n| {
+            let aliases: String = (0..n)
+                .map(|i| format!("mannequin m{i} = m{}\n", i + 1))
+                .collect();
+            format!("use std::arm\n{aliases}mannequin m{n} = right_arm\n")
+        }),
+        ("--max-use-chain", CEILINGS.use_chain, |dir, n| {
+            for i in 1..n {
+                let next = if i + 1 < n {
+                    format!("use \"f{}.reach\"\n", i + 1)
+                } else {
+                    String::new()
+                };
+                std::fs::write(
+                    dir.join(format!("f{i}.reach")),
+                    format!("{next}let c{i} = 1\n"),
+                )
+                .unwrap();
+            }
+            "use \"f1.reach\"\n".to_string()
+        }),
+        ("--max-file-bytes", 1 << 20, |_, n| {
+            format!("let a = 1\n{}", " ".repeat(n - 10))
+        }),
+    ];
+    for (flag, ceiling, make) in cases {
+        for (n, refused) in [(ceiling, false), (ceiling + 1, true)] {
+            let dir = tempfile::tempdir().unwrap();
+            let path = dir.path().join("root.reach");
+            std::fs::write(&path, make(dir.path(), n)).unwrap();
+            let limit = ceiling.to_string();
+            let o = reach(&["check", path.to_str().unwrap(), flag, &limit]);
+            let err = stderr(&o);
+            let shown = &err[..err.len().min(600)];
+            assert_eq!(
+                o.status.code(),
+                Some(if refused { 1 } else { 0 }),
+                "{flag} {n}: {shown}"
+            );
+            // The message may wrap anywhere, even inside the flag's name.
+            let joined: String = err
+                .chars()
+                .filter(|c| !c.is_whitespace() && *c != '│')
+                .collect();
+            assert_eq!(joined.contains(flag), refused, "{flag} {n}: {shown}");
+        }
+    }
+}
+
+#[test]
+fn solver_starts_are_bounded_before_anything_runs() {
+    let file = "examples/kitchen_wheelchair.reach";
+    // 293,952 at worst: the reaches and the maps of the example.
+    let o = reach(&["run", file, "--max-solver-starts", "293951"]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(err.contains("up to 293,952 solver starts"), "{err}");
+    assert!(stdout(&o).is_empty());
+    let o = reach(&["check", file, "--max-solver-starts", "293952"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+}

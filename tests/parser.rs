@@ -273,3 +273,30 @@ fn literal_errors_are_all_reported() {
         ["unknown unit `mx`", "`1e400` is not a finite number"]
     );
 }
+
+#[test]
+fn a_declaration_span_ends_at_its_last_token_not_at_comments_after_it() {
+    let cases = [
+        (
+            "reach a by p\n// a comment\n/* and another */\n",
+            "reach a by p",
+        ),
+        (
+            "reach a by p { seed 2 } // after\n",
+            "reach a by p { seed 2 }",
+        ),
+        ("map s by p, q   \n\n", "map s by p, q"),
+    ];
+    for (text, expected) in cases {
+        let file = parse(text);
+        let Some(Item::Task(task)) = file.items.first() else {
+            panic!("{text:?}: not a task")
+        };
+        let span = task.span;
+        assert_eq!(
+            &text[span.start as usize..span.end as usize],
+            expected,
+            "{text:?}"
+        );
+    }
+}

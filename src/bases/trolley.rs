@@ -71,4 +71,8 @@ impl Base for Mobile {
     fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a> {
         Box::new(Mobile::prepare(self, room, chain))
     }
+
+    fn placements(&self) -> u64 {
+        u64::from(self.headings)
+    }
 }

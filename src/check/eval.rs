@@ -6,7 +6,6 @@ use nalgebra::Vector3;
 
 use super::Checker;
 use crate::error::{Error, ErrorKind};
-use crate::limits::MAX_LET_DEPTH;
 use crate::names::suggest;
 use crate::span::Span;
 use crate::syntax::ast::{BinOp, Expr, ExprKind, Vec3Expr};
@@ -38,7 +37,7 @@ impl Checker<'_> {
             ));
             return None;
         }
-        if self.let_stack.len() >= MAX_LET_DEPTH {
+        if self.let_stack.len() >= self.limits.constant_chain {
             let span = use_span.unwrap_or(decl.name.span);
             // One report is enough; the rest of the chain fails silently.
             let reported = self
@@ -52,7 +51,10 @@ impl Checker<'_> {
             self.error(Error::new(
                 ErrorKind::TooLarge {
                     what: format!("the chain of constants leading to `{name}`"),
-                    limit: format!("{MAX_LET_DEPTH} constants"),
+                    limit: format!(
+                        "{} constants (--max-constant-chain)",
+                        self.limits.constant_chain
+                    ),
                 },
                 span,
             ));

@@ -15,7 +15,6 @@ use crate::units::Quantity;
 
 const DH_PARAMS: [&str; 4] = ["theta", "d", "alpha", "a"];
 /// How many mannequins may name one another in a row (`a = b`, `b = c`).
-const MAX_ALIASES: usize = 16;
 /// The largest joint range a revolute limit may name: one full turn.
 const MAX_ANGLE_RAD: f64 = 2.0 * std::f64::consts::PI;
 
@@ -49,14 +48,17 @@ impl Checker<'_> {
             }
         };
         match &decl.alias {
-            Some(target) if r.args.is_empty() && depth < MAX_ALIASES => {
+            Some(target) if r.args.is_empty() && depth < self.limits.alias_chain => {
                 self.body_of(target, decl_file, depth + 1)
             }
-            Some(_) if depth >= MAX_ALIASES => {
+            Some(_) if depth >= self.limits.alias_chain => {
                 self.error(Error::new(
                     ErrorKind::TooLarge {
                         what: "a chain of mannequin aliases".into(),
-                        limit: format!("{MAX_ALIASES} (or it loops)"),
+                        limit: format!(
+                            "{} (or it loops; --max-alias-chain)",
+                            self.limits.alias_chain
+                        ),
                     },
                     r.name.span,
                 ));

@@ -9,7 +9,6 @@ use nalgebra::{Point3, Rotation3, Vector3};
 
 use super::Checker;
 use crate::error::{Error, ErrorKind};
-use crate::limits::MAX_FILE_BYTES;
 use crate::scene::MeshObstacle;
 use crate::source::Origin;
 use crate::syntax::ast::MeshDecl;
@@ -79,10 +78,13 @@ impl Checker<'_> {
             None
         };
         match std::fs::metadata(&path) {
-            Ok(meta) if meta.len() > MAX_FILE_BYTES => {
+            Ok(meta) if meta.len() > self.limits.file_bytes => {
                 return bad(
                     self,
-                    format!("larger than the limit of {MAX_FILE_BYTES} bytes"),
+                    format!(
+                        "larger than the limit of {} bytes (--max-file-bytes)",
+                        self.limits.file_bytes
+                    ),
                 );
             }
             Err(e) => return bad(self, e.to_string()),

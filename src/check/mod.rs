@@ -4,6 +4,7 @@
 //! declared parameters, and reports every error it finds, not just the
 //! first.
 
+mod budget;
 mod eval;
 mod mannequin;
 mod mesh;
@@ -18,6 +19,7 @@ use std::collections::HashMap;
 
 use crate::error::{Diagnostics, Error, ErrorKind};
 use crate::kinematics::Body;
+use crate::limits::Limits;
 use crate::loader::LoadedFile;
 use crate::plugin::Registry;
 use crate::scene::Scenario;
@@ -33,9 +35,10 @@ pub fn check(
     sources: &Sources,
     files: &[LoadedFile],
     registry: &Registry,
+    limits: &Limits,
 ) -> Result<Scenario, Diagnostics> {
     let root = files.last().map(|f| f.id).unwrap_or_default();
-    let mut c = Checker::new(registry, sources);
+    let mut c = Checker::new(registry, sources, *limits);
     for f in files {
         let defaults = c.file_defaults(&f.ast.items);
         c.defaults_of.insert(f.id, defaults);
@@ -46,6 +49,9 @@ pub fn check(
     c.build_mannequins();
     let persons = c.persons();
     let tasks = c.tasks(&rooms, &persons);
+    if c.errors.is_empty() {
+        c.check_budget(&tasks, &rooms, &persons);
+    }
     if c.errors.is_empty() {
         Ok(Scenario {
             file: sources.get(root).name.clone(),
@@ -62,6 +68,7 @@ pub fn check(
 /// the errors found so far.
 struct Checker<'a> {
     registry: &'a Registry,
+    limits: Limits,
     sources: &'a Sources,
     errors: Vec<Error>,
     defaults_of: HashMap<FileId, UnitDefaults>,
@@ -86,9 +93,10 @@ struct Checker<'a> {
 }
 
 impl<'a> Checker<'a> {
-    fn new(registry: &'a Registry, sources: &'a Sources) -> Self {
+    fn new(registry: &'a Registry, sources: &'a Sources, limits: Limits) -> Self {
         Checker {
             registry,
+            limits,
             sources,
             errors: Vec::new(),
             defaults_of: HashMap::new(),

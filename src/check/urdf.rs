@@ -6,7 +6,6 @@
 use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::kinematics::{chain_from_urdf, Body, UrdfError};
-use crate::limits::MAX_FILE_BYTES;
 use crate::names::suggest;
 use crate::syntax::ast::UrdfSource;
 
@@ -24,8 +23,11 @@ impl Checker<'_> {
             None
         };
         let text = match std::fs::metadata(&path) {
-            Ok(meta) if meta.len() > MAX_FILE_BYTES => {
-                let reason = format!("larger than the limit of {MAX_FILE_BYTES} bytes");
+            Ok(meta) if meta.len() > self.limits.file_bytes => {
+                let reason = format!(
+                    "larger than the limit of {} bytes (--max-file-bytes)",
+                    self.limits.file_bytes
+                );
                 return fail(self, reason, None, source.path.span);
             }
             Ok(_) => std::fs::read_to_string(&path),

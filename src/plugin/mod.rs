@@ -125,6 +125,15 @@ pub trait Solver: Send + Sync {
 
 pub trait SolverPlugin: Plugin {
     fn build(&self, options: &Options) -> Box<dyn Solver>;
+    /// How many starts one solve with these options runs at most (what
+    /// the limit on solver starts counts): the option `starts` where the
+    /// solver declares one, else 1.
+    fn starts(&self, options: &Options) -> u64 {
+        match options.get("starts") {
+            Some(Value::Integer(n)) => (*n).max(1) as u64,
+            _ => 1,
+        }
+    }
 }
 
 // ------------------------------------------------------------------ bases
@@ -248,6 +257,11 @@ pub trait Base: Send + Sync {
     /// Get ready for reaches in `room` with `chain` (caching what does not
     /// depend on the target, such as where the base fits).
     fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a>;
+    /// The most candidate placements one reach may try (what the limit on
+    /// solver starts counts).
+    fn placements(&self) -> u64 {
+        1
+    }
 }
 
 /// A base ready for one room and one chain.
@@ -287,6 +301,11 @@ pub trait TaskPlugin: Plugin {
     }
     /// The options that name effectors of the person's mannequin (left
     /// out: the first effector); the checker makes sure each exists.
+    /// How many reaches the task asks of `subject` (a map: its points);
+    /// what the limit on solver starts counts.
+    fn points(&self, _room: &Room, _subject: &str, _options: &Options) -> u64 {
+        1
+    }
     fn effector_options(&self) -> &'static [&'static str] {
         &["effector"]
     }

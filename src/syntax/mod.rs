@@ -5,4 +5,4 @@ pub mod ast;
 mod expected;
 mod parser;
 
-pub use parser::parse_file;
+pub use parser::{parse_file, parse_file_within};

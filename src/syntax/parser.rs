@@ -9,7 +9,7 @@ use std::sync::LazyLock;
 use super::ast::*;
 use super::expected::syntax_error;
 use crate::error::{Diagnostics, Error, ErrorKind};
-use crate::limits::{MAX_EXPR_TOKENS, MAX_PAREN_DEPTH};
+use crate::limits::Limits;
 use crate::span::{FileId, Name, Span, Spanned};
 use crate::units::Unit;
 
@@ -21,14 +21,20 @@ pub(super) struct ReachParser;
 /// below where arithmetic in f64 loses whole millimetres.
 pub const MAX_LITERAL: f64 = 1e15;
 
-/// Parse one file. Syntax errors stop at the first; errors in literals
-/// (unknown units, numbers out of range) are all collected.
+/// Parse one file within the default [`Limits`].
 pub fn parse_file(file: FileId, text: &str) -> Result<File, Diagnostics> {
-    if let Some(at) = too_deep(text) {
+    parse_file_within(file, text, &Limits::default())
+}
+
+/// Parse one file. Syntax errors stop at the first; errors in literals
+/// (unknown units, numbers out of range) are all collected. Nesting and
+/// expressions beyond `limits` are refused.
+pub fn parse_file_within(file: FileId, text: &str, limits: &Limits) -> Result<File, Diagnostics> {
+    if let Some(at) = too_deep(text, limits.nesting) {
         return Err(Diagnostics::single(Error::new(
             ErrorKind::TooLarge {
                 what: "nesting of parentheses and braces".into(),
-                limit: format!("{MAX_PAREN_DEPTH} levels"),
+                limit: format!("{} levels (--max-nesting)", limits.nesting),
             },
             Span::new(file, at, at + 1),
         )));
@@ -40,6 +46,7 @@ pub fn parse_file(file: FileId, text: &str) -> Result<File, Diagnostics> {
     let mut builder = Builder {
         file,
         errors: Vec::new(),
+        expression_terms: limits.expression_terms,
     };
     let items = root
         .into_inner()
@@ -67,14 +74,27 @@ static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
 struct Builder {
     file: FileId,
     errors: Vec<Error>,
+    /// Most operands and operators in one expression.
+    expression_terms: usize,
 }
 
 impl Builder {
-    /// The pair's span without the white space a rule may end with.
+    /// The pair's span without the white space and comments a rule may
+    /// end with (an optional last part that is absent leaves them in).
     fn span(&self, pair: &Pair<Rule>) -> Span {
         let s = pair.as_span();
-        let len = pair.as_str().trim_end().len();
-        Span::new(self.file, s.start(), s.start() + len)
+        // Innermost pairs (tokens) end exactly; past the last of them, only
+        // literal tokens such as `}` count.
+        let last_inner = pair
+            .clone()
+            .into_inner()
+            .flatten()
+            .filter(|p| p.clone().into_inner().next().is_none())
+            .map(|p| p.as_span().end())
+            .max()
+            .unwrap_or(s.start());
+        let tail = &s.get_input()[last_inner..s.end()];
+        Span::new(self.file, s.start(), last_inner + content_len(tail))
     }
 
     fn name(&self, pair: Pair<Rule>) -> Name {
@@ -154,12 +174,15 @@ impl Builder {
     fn expr(&mut self, pair: Pair<Rule>) -> Expr {
         let span = self.span(&pair);
         let pairs = pair.into_inner();
-        if pairs.len() > MAX_EXPR_TOKENS {
+        if pairs.len() > self.expression_terms {
             // Refused before a tree of that depth is built (or dropped).
             self.errors.push(Error::new(
                 ErrorKind::TooLarge {
                     what: "this expression".into(),
-                    limit: format!("{MAX_EXPR_TOKENS} operands and operators"),
+                    limit: format!(
+                        "{} operands and operators (--max-expression-terms)",
+                        self.expression_terms
+                    ),
                 },
                 span,
             ));
@@ -599,10 +622,11 @@ impl Builder {
     }
 }
 
-/// Where parentheses and braces first nest deeper than
-/// [`MAX_PAREN_DEPTH`], if they do; comments and strings are skipped. Checked before pest sees the text,
-/// whose recursive descent would otherwise follow the nesting on the stack.
-fn too_deep(text: &str) -> Option<usize> {
+/// Where parentheses and braces first nest deeper than `max_depth`, if
+/// they do; comments and strings are skipped. Checked before pest sees the
+/// text, whose recursive descent would otherwise follow the nesting on the
+/// stack.
+fn too_deep(text: &str, max_depth: usize) -> Option<usize> {
     let bytes = text.as_bytes();
     let (mut depth, mut i) = (0usize, 0usize);
     while i < bytes.len() {
@@ -627,7 +651,7 @@ fn too_deep(text: &str) -> Option<usize> {
             }
             b'(' | b'{' => {
                 depth += 1;
-                if depth > MAX_PAREN_DEPTH {
+                if depth > max_depth {
                     return Some(i);
                 }
             }
@@ -637,6 +661,32 @@ fn too_deep(text: &str) -> Option<usize> {
         i += 1;
     }
     None
+}
+
+/// How much of `text` (the end of a rule, after its last inner pair) is
+/// more than white space and comments: up to its last other character.
+fn content_len(text: &str) -> usize {
+    let bytes = text.as_bytes();
+    let (mut i, mut end) = (0, 0);
+    while i < bytes.len() {
+        if bytes[i..].starts_with(b"//") {
+            while i < bytes.len() && bytes[i] != b'\n' {
+                i += 1;
+            }
+        } else if bytes[i..].starts_with(b"/*") {
+            i += 2;
+            while i < bytes.len() && !bytes[i..].starts_with(b"*/") {
+                i += 1;
+            }
+            i += 2;
+        } else {
+            if !bytes[i].is_ascii_whitespace() {
+                end = i + 1;
+            }
+            i += 1;
+        }
+    }
+    end.min(bytes.len())
 }
 
 /// The text of a string literal: `\x` stands for `x`.

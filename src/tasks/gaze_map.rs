@@ -9,7 +9,7 @@ use super::gaze::{
     effective_vision, gaze_params, illegible, legible_mm, needs_look_link, see, with_look_range,
     GazeObstacles,
 };
-use super::map::{grid_params, run_map, too_large};
+use super::map::{grid_params, grid_points, run_map, too_large};
 use crate::error::ErrorKind;
 use crate::kinematics::Chain;
 use crate::plugin::{Options, ParamSpec, Placement, Plugin, SubjectKind, TaskContext, TaskPlugin};
@@ -42,6 +42,10 @@ impl TaskPlugin for GazeMap {
 
     fn validate(&self, room: &Room, subject: &str, options: &Options) -> Option<ErrorKind> {
         illegible(&effective_vision(options, None)).or_else(|| too_large(room, subject, options))
+    }
+
+    fn points(&self, room: &Room, subject: &str, options: &Options) -> u64 {
+        grid_points(room, subject, options)
     }
 
     fn validate_chain(

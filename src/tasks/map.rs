@@ -51,12 +51,19 @@ pub(super) fn grid_params() -> [ParamSpec; 2] {
     ]
 }
 
+/// How many points the grid of a map of `subject` has (1 if `subject` is
+/// not a surface of `room`).
+pub(super) fn grid_points(room: &Room, subject: &str, options: &Options) -> u64 {
+    room.surface_named(subject).map_or(1, |surface| {
+        let (columns, rows) = surface.grid_size(options.length_mm("step"));
+        (columns as u64).saturating_mul(rows as u64)
+    })
+}
+
 /// A map whose grid would have more than `max_points` points.
 pub(super) fn too_large(room: &Room, subject: &str, options: &Options) -> Option<ErrorKind> {
-    let surface = room.surface_named(subject)?;
-    let (columns, rows) = surface.grid_size(options.length_mm("step"));
-    let points = columns.saturating_mul(rows);
-    let max = options.integer("max_points") as usize;
+    let points = grid_points(room, subject, options);
+    let max = options.integer("max_points") as u64;
     (points > max).then(|| ErrorKind::TooLarge {
         what: format!("the map of `{subject}` ({points} points)"),
         limit: format!("{max} points: raise `max_points` or the `step`"),
@@ -70,6 +77,10 @@ impl TaskPlugin for Map {
 
     fn validate(&self, room: &Room, subject: &str, options: &Options) -> Option<ErrorKind> {
         too_large(room, subject, options)
+    }
+
+    fn points(&self, room: &Room, subject: &str, options: &Options) -> u64 {
+        grid_points(room, subject, options)
     }
 
     fn run(&self, ctx: &TaskContext<'_>) -> TaskReport {
