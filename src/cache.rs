@@ -1,7 +1,7 @@
 //! Task results kept between evaluations (watch mode), keyed by everything
 //! a task depends on: its kind, subject, person and options, the person's
-//! chain and base, and of its room the size, the obstacles and its own
-//! target or surface. Spans are not part of the key,
+//! chain and base, and of its room the size, the obstacles (boxes and
+//! meshes) and its own target or surface. Spans are not part of the key,
 //! so editing one line leaves the other tasks' results in place.
 
 use std::collections::hash_map::DefaultHasher;
@@ -13,7 +13,7 @@ use rayon::prelude::*;
 use crate::plugin::{Registry, TaskContext};
 use crate::progress::Progress;
 use crate::report::{Report, TaskReport, SCHEMA_VERSION};
-use crate::scene::{Scenario, TaskSpec};
+use crate::scene::{MeshObstacle, Scenario, TaskSpec};
 
 /// Results of earlier runs, by key.
 #[derive(Default)]
@@ -99,6 +99,19 @@ fn key(scenario: &Scenario, task: &TaskSpec) -> u64 {
         let target = room.targets.iter().find(|t| t.name == task.subject);
         let surface = room.surface_named(&task.subject);
         format!("{:?}{:?}{target:?}{surface:?}", room.size_mm, room.boxes).hash(&mut h);
+        hash_meshes(&room.meshes, &mut h);
     }
     h.finish()
+}
+
+/// The meshes' names, vertices (bit for bit) and triangles: a mesh moved in
+/// the scenario or edited in its OBJ file changes the key.
+fn hash_meshes(meshes: &[MeshObstacle], h: &mut DefaultHasher) {
+    for mesh in meshes {
+        mesh.name.hash(h);
+        for v in &mesh.vertices_mm {
+            (v.x.to_bits(), v.y.to_bits(), v.z.to_bits()).hash(h);
+        }
+        mesh.triangles.hash(h);
+    }
 }

@@ -64,8 +64,12 @@ pub fn check_within(
     registry: &Registry,
     limits: &Limits,
 ) -> (Sources, Result<Scenario, Diagnostics>) {
-    let (sources, loaded) = loader::load(input, limits);
-    let result = loaded.and_then(|files| check::check(&sources, &files, registry, limits));
+    let (mut sources, loaded) = loader::load(input, limits);
+    let result = loaded.and_then(|files| {
+        let (data_files, checked) = check::check(&sources, &files, registry, limits);
+        sources.add_data_files(data_files);
+        checked
+    });
     let result = result.map_err(|d| d.attach(&sources));
     (sources, result)
 }

@@ -39,6 +39,8 @@ impl SourceFile {
 #[derive(Debug, Default)]
 pub struct Sources {
     files: Vec<SourceFile>,
+    /// Data files the scenario names (OBJ meshes, URDFs), read or not.
+    data_files: Vec<PathBuf>,
 }
 
 impl Sources {
@@ -64,8 +66,13 @@ impl Sources {
         self.files.is_empty()
     }
 
-    /// The files on disk this evaluation read or tried to read, as paths
-    /// (watch mode watches them).
+    /// Record data files the scenario names (meshes, URDFs).
+    pub fn add_data_files(&mut self, paths: impl IntoIterator<Item = PathBuf>) {
+        self.data_files.extend(paths);
+    }
+
+    /// The files on disk this evaluation read or tried to read, scenario
+    /// files and data files, as paths (watch mode watches them).
     pub fn disk_paths(&self) -> Vec<PathBuf> {
         self.files
             .iter()
@@ -73,6 +80,7 @@ impl Sources {
                 Origin::Path(p) => Some(p.clone()),
                 _ => None,
             })
+            .chain(self.data_files.iter().cloned())
             .collect()
     }
 

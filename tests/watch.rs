@@ -111,3 +111,47 @@ fn watch_follows_every_way_of_saving() {
     std::fs::write(dir.path().join("parts.reach"), PARTS.replace("960", "2500")).unwrap();
     w.expect("mug by ben: reachable -> NOT reachable", 3);
 }
+
+/// A closed cube as OBJ text, from `min` to `min + size` (mm).
+fn cube_obj(min: [f64; 3], size: f64) -> String {
+    let mut text = String::new();
+    for i in 0..8 {
+        let corner = |axis: usize| min[axis] + if i >> axis & 1 == 1 { size } else { 0.0 };
+        text += &format!("v {} {} {}\n", corner(0), corner(1), corner(2));
+    }
+    // Faces wound outwards; vertex k has x = bit 0, y = bit 1, z = bit 2.
+    for face in [
+        "1 3 4 2", "5 6 8 7", "1 2 6 5", "3 7 8 4", "1 5 7 3", "2 4 8 6",
+    ] {
+        text += &format!("f {face}\n");
+    }
+    text
+}
+
+#[test]
+fn watch_follows_a_mesh_file_and_a_moved_mesh() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("watched.reach");
+    let obj = dir.path().join("crate.obj");
+    std::fs::write(dir.path().join("parts.reach"), PARTS).unwrap();
+    // A crate over the mug: no arm gets in.
+    std::fs::write(&obj, cube_obj([250.0, 1000.0, 920.0], 300.0)).unwrap();
+    let scenario = |at_mm: i32| {
+        scenario(0).replace(
+            "  target mug",
+            &format!("  mesh crate from \"crate.obj\" at ({at_mm}, 0, 0)\n  target mug"),
+        )
+    };
+    std::fs::write(&file, scenario(0)).unwrap();
+    let mut w = Watch::start(&file);
+    w.expect("first results", 1);
+    assert_eq!(w.count("NOT reachable"), 1, "{:?}", w.lines.lock().unwrap());
+
+    // The OBJ file is edited: the crate moves away from the mug.
+    std::fs::write(&obj, cube_obj([2500.0, 1000.0, 920.0], 300.0)).unwrap();
+    w.expect("mug by ben: NOT reachable -> reachable", 1);
+
+    // The scenario moves the mesh back over the mug.
+    std::fs::write(&file, scenario(-2250)).unwrap();
+    w.expect("mug by ben: reachable -> NOT reachable", 1);
+}

@@ -66,6 +66,7 @@ impl Checker<'_> {
     /// The OBJ's vertices (in its own units) and triangles.
     fn read_obj(&mut self, d: &MeshDecl) -> Option<ObjMesh> {
         let path = self.relative_to_file(&d.path.value);
+        self.data_files.push(path.clone());
         let shown = path.display().to_string();
         let bad = |c: &mut Self, reason: String| {
             c.error(Error::new(

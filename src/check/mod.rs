@@ -16,6 +16,7 @@ mod task;
 mod urdf;
 
 use std::collections::HashMap;
+use std::path::PathBuf;
 
 use crate::error::{Diagnostics, Error, ErrorKind};
 use crate::kinematics::Body;
@@ -30,13 +31,14 @@ use crate::units::{Quantity, Unit, UnitDefaults};
 
 use table::Table;
 
-/// Check the loaded files (dependencies first, the root file last).
+/// Check the loaded files (dependencies first, the root file last); also
+/// the data files (meshes, URDFs) the scenario names, read or not.
 pub fn check(
     sources: &Sources,
     files: &[LoadedFile],
     registry: &Registry,
     limits: &Limits,
-) -> Result<Scenario, Diagnostics> {
+) -> (Vec<PathBuf>, Result<Scenario, Diagnostics>) {
     let root = files.last().map(|f| f.id).unwrap_or_default();
     let mut c = Checker::new(registry, sources, *limits);
     for f in files {
@@ -52,7 +54,7 @@ pub fn check(
     if c.errors.is_empty() {
         c.check_budget(&tasks, &rooms, &persons);
     }
-    if c.errors.is_empty() {
+    let result = if c.errors.is_empty() {
         Ok(Scenario {
             file: sources.get(root).name.clone(),
             rooms,
@@ -61,7 +63,8 @@ pub fn check(
         })
     } else {
         Err(Diagnostics { errors: c.errors })
-    }
+    };
+    (c.data_files, result)
 }
 
 /// The state of the pass: declarations by name, evaluated constants, and
@@ -69,6 +72,8 @@ pub fn check(
 struct Checker<'a> {
     registry: &'a Registry,
     limits: Limits,
+    /// The data files (meshes, URDFs) the scenario names.
+    data_files: Vec<PathBuf>,
     sources: &'a Sources,
     errors: Vec<Error>,
     defaults_of: HashMap<FileId, UnitDefaults>,
@@ -97,6 +102,7 @@ impl<'a> Checker<'a> {
         Checker {
             registry,
             limits,
+            data_files: Vec::new(),
             sources,
             errors: Vec::new(),
             defaults_of: HashMap::new(),

@@ -12,6 +12,7 @@ use crate::syntax::ast::UrdfSource;
 impl Checker<'_> {
     pub(super) fn urdf_body(&mut self, source: &UrdfSource) -> Option<Body> {
         let path = self.relative_to_file(&source.path.value);
+        self.data_files.push(path.clone());
         let shown = path.display().to_string();
         let fail = |c: &mut Self, reason: String, suggestion: Option<String>, span| {
             let kind = ErrorKind::BadUrdf {
