@@ -218,19 +218,19 @@ fn map_detail(out: &mut String, m: &MapReport) {
     };
     let retried = match m.retried {
         0 => String::new(),
-        n => format!(" ({n} only on the retry where obstacles blocked)"),
+        n => format!("; {n} only on the retry where obstacles blocked"),
     };
     let _ = writeln!(
         out,
-        "\n{} by {} ({} base): {} of {} points {}{} ({:.1} %), {}; {} view, {} x {} cells of {:.0} mm",
+        "\n{} by {} ({} base): {} of {} points {} ({:.1} %{}), {}; {} view, {} x {} cells of {:.0} mm",
         m.name,
         m.person,
         m.base,
         m.reachable,
         m.points,
         if m.of == "gaze" { "seen" } else { "reachable" },
-        retried,
         m.fraction * 100.0,
+        retried,
         heights,
         m.view,
         m.columns,
