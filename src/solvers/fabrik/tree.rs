@@ -104,17 +104,18 @@ pub fn solve_tree(settings: &FabrikSettings, problem: &TreeProblem<'_>) -> TreeS
         })
         .collect();
     let shared = shared_bones(&branches);
-    let whole = Chain {
-        joints: problem.body.joints.clone(),
-        effector_name: String::new(),
-        effector_mm: nalgebra::Vector3::zeros(),
-    };
+    // Only the joints on the goals' paths move (an arm no goal needs stays
+    // at its neutral posture and draws nothing from the random streams).
+    let used = Used::new(problem.body, &branches);
     let mut rng = ChaCha8Rng::seed_from_u64(problem.seed ^ 0x7472_6565);
     let mut best: Option<TreeSolution> = None;
     let mut iterations = 0;
-    for start in
-        Starts::new(&whole, problem.seed, settings.neutral_start).take(settings.starts as usize)
-    {
+    let starts = Starts::new(&used.chain, problem.seed, settings.neutral_start);
+    for start in starts.take(settings.starts as usize) {
+        let start = used.scatter(
+            problem.body.joints.iter().map(|j| j.neutral).collect(),
+            &start,
+        );
         let mut tree = Tree {
             settings,
             problem,
@@ -134,7 +135,7 @@ pub fn solve_tree(settings: &FabrikSettings, problem: &TreeProblem<'_>) -> TreeS
             q: start,
             shared,
         };
-        let solution = tree.run(&whole, &mut rng);
+        let solution = tree.run(&used, &mut rng);
         iterations += solution.iterations;
         let better = best.as_ref().is_none_or(|b| {
             solution.score(problem.goals, problem.tolerance_mm)
@@ -173,6 +174,43 @@ fn depends_on(bone: &Bone) -> usize {
     }
 }
 
+/// The body's joints that lie on some goal's path, in body order, and
+/// their chain (for drawing starts and kicks).
+struct Used {
+    joints: Vec<usize>,
+    chain: Chain,
+}
+
+impl Used {
+    fn new(body: &Body, branches: &[Branch]) -> Self {
+        let mut joints: Vec<usize> = branches
+            .iter()
+            .flat_map(|b| b.path.iter().copied())
+            .collect();
+        joints.sort_unstable();
+        joints.dedup();
+        let chain = Chain {
+            joints: joints.iter().map(|&j| body.joints[j].clone()).collect(),
+            effector_name: String::new(),
+            effector_mm: nalgebra::Vector3::zeros(),
+        };
+        Used { joints, chain }
+    }
+
+    /// The used joints' values of body posture `q`.
+    fn gather(&self, q: &[f64]) -> Vec<f64> {
+        self.joints.iter().map(|&j| q[j]).collect()
+    }
+
+    /// Body posture `q` with the used joints set to `values`.
+    fn scatter(&self, mut q: Vec<f64>, values: &[f64]) -> Vec<f64> {
+        for (&j, &v) in self.joints.iter().zip(values) {
+            q[j] = v;
+        }
+        q
+    }
+}
+
 /// The state of one start.
 struct Tree<'a> {
     settings: &'a FabrikSettings,
@@ -185,7 +223,7 @@ struct Tree<'a> {
 }
 
 impl Tree<'_> {
-    fn run(&mut self, whole: &Chain, rng: &mut ChaCha8Rng) -> TreeSolution {
+    fn run(&mut self, used: &Used, rng: &mut ChaCha8Rng) -> TreeSolution {
         let s = self.settings;
         let mut best = self.solution(0);
         let mut stalls = Stalls::new();
@@ -206,7 +244,9 @@ impl Tree<'_> {
             match stalls.next(s, -score, near) {
                 Next::Stop => break,
                 Next::Kick => {
-                    kick(&mut self.q, &whole.joints, s.kick, rng);
+                    let mut values = used.gather(&self.q);
+                    kick(&mut values, &used.chain.joints, s.kick, rng);
+                    self.q = used.scatter(std::mem::take(&mut self.q), &values);
                     self.load();
                 }
                 Next::Pass => {
