@@ -144,8 +144,11 @@ fn every_reported_posture_is_what_the_report_says() {
         let report = reach::run(&scenario, &registry);
         for task in &report.tasks {
             let TaskReport::Reach(r) = task else { continue };
-            let chain = &scenario.person(&r.person).unwrap().chain;
-            for (joint, (_, value)) in chain.joints.iter().zip(&r.posture.0) {
+            let body = &scenario.person(&r.person).unwrap().body;
+            let chain = &body.chain_named(Some(&r.effector)).unwrap();
+            assert_eq!(chain.joints.len(), r.posture.0.len());
+            for (joint, (name, value)) in chain.joints.iter().zip(&r.posture.0) {
+                assert_eq!(&joint.name, name);
                 let (min, max) = match joint.kind {
                     JointKind::Revolute => (joint.min.to_degrees(), joint.max.to_degrees()),
                     JointKind::Prismatic => (joint.min, joint.max),
@@ -203,7 +206,7 @@ fn every_reported_posture_is_what_the_report_says() {
             checked += 1;
         }
     }
-    assert_eq!(checked, 4 + 16 + 6 + 8);
+    assert_eq!(checked, 4 + 16 + 6 + 10);
     assert!(collisions > 0, "the examples have postures that meet a box");
 }
 

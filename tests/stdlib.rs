@@ -146,3 +146,33 @@ person mum {
     };
     assert!((mar - 6.0).abs() < 1e-9);
 }
+
+/// The left arm is the right one mirrored in the body's midplane: with the
+/// trunk upright, the same arm angles put the left grip where the right
+/// one is with y (left) negated, whatever the angles.
+#[test]
+fn the_left_arm_mirrors_the_right() {
+    use rand_chacha::rand_core::{Rng, SeedableRng};
+    let body = reach::stdlib::body("body", "upper_body").expect("std::body checks");
+    let right = body.chain_named(Some("grip")).unwrap();
+    let left = body.chain_named(Some("left_grip")).unwrap();
+    assert_eq!(left.dof(), right.dof());
+    let trunk = 3;
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(7);
+    for _ in 0..200 {
+        let mut q: Vec<f64> = right
+            .joints
+            .iter()
+            .map(|j| j.min + (rng.next_u64() as f64 / u64::MAX as f64) * j.range())
+            .collect();
+        q[..trunk].fill(0.0);
+        let (r, l) = (right.effector(&q), left.effector(&q));
+        let mirrored = Point3::new(r.x, -r.y, r.z);
+        assert!((l - mirrored).norm() < 1e-9, "{q:?}: right {r}, left {l}");
+        for (jr, jl) in right.joints.iter().zip(&left.joints).skip(trunk) {
+            assert_eq!((jl.min, jl.max, jl.neutral), (jr.min, jr.max, jr.neutral));
+        }
+    }
+    // At rest the left hand hangs on the left (y > 0).
+    assert!(left.effector(&left.neutral()).y > 100.0);
+}
