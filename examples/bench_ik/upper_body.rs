@@ -54,10 +54,23 @@ fn room(board: bool) -> Room {
     }
 }
 
+/// The joints on the paths to the grip and the eyes (not the left arm),
+/// in body order.
+fn used_joints(body: &Body) -> Vec<usize> {
+    let mut used: Vec<usize> = [0, 1]
+        .iter()
+        .flat_map(|&e| body.path(body.effectors[e].joint))
+        .collect();
+    used.sort_unstable();
+    used.dedup();
+    used
+}
+
 /// Grip and eye targets of random postures whose links miss the obstacles.
 fn targets(body: &Body, placed: Option<&PlacedObstacles<'_>>, n: usize) -> Vec<[Point3<f64>; 2]> {
+    let used = used_joints(body);
     let whole = Chain {
-        joints: body.joints.clone(),
+        joints: used.iter().map(|&j| body.joints[j].clone()).collect(),
         effector_name: String::new(),
         effector_mm: Vector3::zeros(),
     };
@@ -66,7 +79,10 @@ fn targets(body: &Body, placed: Option<&PlacedObstacles<'_>>, n: usize) -> Vec<[
     let mut rng = ChaCha8Rng::seed_from_u64(SEED);
     let mut out = Vec::with_capacity(n);
     while out.len() < n {
-        let q = random_posture(&whole, &mut rng);
+        let mut q = vec![0.0; body.joints.len()];
+        for (&j, v) in used.iter().zip(random_posture(&whole, &mut rng)) {
+            q[j] = v;
+        }
         let qs = paths
             .clone()
             .map(|p| p.iter().map(|&j| q[j]).collect::<Vec<_>>());
@@ -146,7 +162,7 @@ pub fn rows(registry: &Registry, solves: usize) -> Vec<Row> {
                 };
             (distance, Some(s.iterations as f64))
         });
-        row.dof = body.joints.len();
+        row.dof = used_joints(&body).len();
         row.effectors = 2;
         row
     })
