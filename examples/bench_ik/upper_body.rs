@@ -54,21 +54,10 @@ fn room(board: bool) -> Room {
     }
 }
 
-/// The joints on the paths to the grip and the eyes (not the left arm),
-/// in body order.
-fn used_joints(body: &Body) -> Vec<usize> {
-    let mut used: Vec<usize> = [0, 1]
-        .iter()
-        .flat_map(|&e| body.path(body.effectors[e].joint))
-        .collect();
-    used.sort_unstable();
-    used.dedup();
-    used
-}
-
 /// Grip and eye targets of random postures whose links miss the obstacles.
 fn targets(body: &Body, placed: Option<&PlacedObstacles<'_>>, n: usize) -> Vec<[Point3<f64>; 2]> {
-    let used = used_joints(body);
+    // The grip's and the eyes' joints (not the left arm).
+    let used = body.joints_to(&[0, 1]);
     let whole = Chain {
         joints: used.iter().map(|&j| body.joints[j].clone()).collect(),
         effector_name: String::new(),
@@ -162,7 +151,7 @@ pub fn rows(registry: &Registry, solves: usize) -> Vec<Row> {
                 };
             (distance, Some(s.iterations as f64))
         });
-        row.dof = used_joints(&body).len();
+        row.dof = body.joints_to(&[0, 1]).len();
         row.effectors = 2;
         row
     })

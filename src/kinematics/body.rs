@@ -59,6 +59,18 @@ impl Body {
         path
     }
 
+    /// The joints on the paths to the given effectors, each once, in body
+    /// order.
+    pub fn joints_to(&self, effectors: &[usize]) -> Vec<usize> {
+        let mut joints: Vec<usize> = effectors
+            .iter()
+            .flat_map(|&e| self.path(self.effectors[e].joint))
+            .collect();
+        joints.sort_unstable();
+        joints.dedup();
+        joints
+    }
+
     /// The chain from the base to effector `index`.
     pub fn chain(&self, index: usize) -> Chain {
         let effector = &self.effectors[index];

@@ -106,7 +106,8 @@ pub fn solve_tree(settings: &FabrikSettings, problem: &TreeProblem<'_>) -> TreeS
     let shared = shared_bones(&branches);
     // Only the joints on the goals' paths move (an arm no goal needs stays
     // at its neutral posture and draws nothing from the random streams).
-    let used = Used::new(problem.body, &branches);
+    let effectors: Vec<usize> = problem.goals.iter().map(|g| g.effector).collect();
+    let used = Used::new(problem.body, &effectors);
     let mut rng = ChaCha8Rng::seed_from_u64(problem.seed ^ 0x7472_6565);
     let mut best: Option<TreeSolution> = None;
     let mut iterations = 0;
@@ -182,13 +183,8 @@ struct Used {
 }
 
 impl Used {
-    fn new(body: &Body, branches: &[Branch]) -> Self {
-        let mut joints: Vec<usize> = branches
-            .iter()
-            .flat_map(|b| b.path.iter().copied())
-            .collect();
-        joints.sort_unstable();
-        joints.dedup();
+    fn new(body: &Body, effectors: &[usize]) -> Self {
+        let joints = body.joints_to(effectors);
         let chain = Chain {
             joints: joints.iter().map(|&j| body.joints[j].clone()).collect(),
             effector_name: String::new(),
