@@ -5,12 +5,12 @@
 //! reaches.
 //!
 //! Where the room's obstacles are checked and no placement reaches, the
-//! most promising placements where the solver's posture went through an
-//! obstacle (and the target is within the arm's reach) are tried again with
-//! the query's [`Retry`] solver (by default `fabrik`, which steers links
-//! around obstacles) before the target is called unreachable: a solver that
-//! ignores obstacles while it searches can miss postures that go round a
-//! board, and an unreachable answer must mean unreachable.
+//! most promising placements where the solver's posture reached the target
+//! through an obstacle are tried again with the query's [`Retry`] solver
+//! (by default `incremental` with 64 starts) before the target is called
+//! unreachable: a solver that ignores obstacles while it searches can miss
+//! postures that go round a board, and an unreachable answer must mean
+//! unreachable.
 
 use crate::kinematics::Chain;
 use crate::plugin::{BasePose, Placement, ReachQuery, Retry, Search, Solver};
@@ -43,8 +43,8 @@ pub fn search(
 }
 
 /// Try again from the first `retry.placements` of the `blocked` poses (the
-/// solver's posture there went through an obstacle) that have the target
-/// within the arm's reach, until one reaches.
+/// solver's posture there reached the target through an obstacle), until
+/// one reaches.
 fn retry_blocked(
     query: &ReachQuery<'_>,
     chain: &Chain,
@@ -52,11 +52,7 @@ fn retry_blocked(
     retry: Retry<'_>,
     best: &mut Best<'_>,
 ) {
-    let reach_mm = chain.reach_bound_mm() + query.tolerance_mm;
-    let within_reach = blocked
-        .iter()
-        .filter(|pose| pose.to_base(&query.target_room_mm).coords.norm() <= reach_mm);
-    for &pose in within_reach.take(retry.placements) {
+    for &pose in blocked.iter().take(retry.placements) {
         let mut placement = query.retried().solve_at(chain, pose, retry.solver);
         placement.retried = true;
         best.offer(placement);
