@@ -12,7 +12,7 @@ use nalgebra::{Point3, Vector3};
 use super::common::{common_params, mix_seed, Setup};
 use crate::collision::{Obstacles, PlacedObstacles};
 use crate::error::ErrorKind;
-use crate::kinematics::{Chain, JointKind};
+use crate::kinematics::{Chain, Joint, JointKind};
 use crate::plugin::{
     Options, ParamSpec, Placement, Plugin, PluginKind, Search, SubjectKind, TaskContext,
     TaskPlugin, Value,
@@ -271,14 +271,20 @@ pub(super) fn needs_look_link(person: &str, chain: &Chain) -> Option<ErrorKind> 
 }
 
 /// The chain with its look link limited to the legible range.
-pub(super) fn with_look_range(chain: &Chain, [d_min, d_max]: [f64; 2]) -> Chain {
+pub(super) fn with_look_range(chain: &Chain, legible_mm: [f64; 2]) -> Chain {
     let mut chain = chain.clone();
     if let Some(look) = chain.joints.last_mut() {
-        look.min = d_min - look.rest_offset_mm().z;
-        look.max = d_max - look.rest_offset_mm().z;
-        look.neutral = look.neutral.clamp(look.min, look.max);
+        limit_look(look, legible_mm);
     }
     chain
+}
+
+/// Keep look link `look` (its end) within the legible range
+/// `[D_min, D_max]`, its neutral value moved inside.
+pub(super) fn limit_look(look: &mut Joint, [d_min, d_max]: [f64; 2]) {
+    look.min = d_min - look.rest_offset_mm().z;
+    look.max = d_max - look.rest_offset_mm().z;
+    look.neutral = look.neutral.clamp(look.min, look.max);
 }
 
 /// Where the eyes are in the placed posture, and what lies between them

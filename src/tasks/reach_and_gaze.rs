@@ -10,7 +10,8 @@ use nalgebra::Point3;
 
 use super::common::{common_params, mix_seed, Setup};
 use super::gaze::{
-    effective_vision, illegible, legible_mm, needs_look_link, see, vision_params, GazeObstacles,
+    effective_vision, illegible, legible_mm, limit_look, needs_look_link, see, vision_params,
+    GazeObstacles,
 };
 use crate::collision::PlacedObstacles;
 use crate::error::ErrorKind;
@@ -202,12 +203,8 @@ fn body_with_look_range(setup: &Setup<'_>, options: &Options) -> (Body, usize, u
     };
     let hand = index(options.name_opt("effector"));
     let eyes = index(options.name_opt("eyes"));
-    let [d_min, d_max] = legible_mm(options);
     let look = body.effectors[eyes].joint.expect("checked look link");
-    let joint = &mut body.joints[look];
-    joint.min = d_min - joint.rest_offset_mm().z;
-    joint.max = d_max - joint.rest_offset_mm().z;
-    joint.neutral = joint.neutral.clamp(joint.min, joint.max);
+    limit_look(&mut body.joints[look], legible_mm(options));
     (body, hand, eyes)
 }
 
