@@ -10,7 +10,7 @@ use miette::{Diagnostic, LabeledSpan, NamedSource, SourceCode};
 use thiserror::Error as ThisError;
 
 use crate::source::Sources;
-use crate::span::Span;
+use crate::span::{Name, Span};
 
 /// What went wrong. Each variant carries what the message needs.
 #[derive(Clone, Debug, PartialEq, ThisError)]
@@ -341,6 +341,16 @@ impl Error {
             notes: Vec::new(),
             source: None,
         }))
+    }
+
+    /// A second definition of `name`, a `what` ("joint", "target"), at
+    /// `name`'s span, with a note at the `first` one.
+    pub fn duplicate(what: &'static str, name: &Name, first: Span) -> Self {
+        let kind = ErrorKind::Duplicate {
+            what,
+            name: name.value.clone(),
+        };
+        Error::new(kind, name.span).with_note(first, "first defined here")
     }
 
     pub fn with_note(mut self, span: Span, text: impl Into<String>) -> Self {

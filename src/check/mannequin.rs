@@ -94,14 +94,7 @@ impl Checker<'_> {
             let mut seen: Vec<&Name> = Vec::new();
             for (name, default) in &decl.params {
                 if let Some(first) = seen.iter().find(|n| n.value == name.value) {
-                    let e = Error::new(
-                        ErrorKind::Duplicate {
-                            what: "parameter",
-                            name: name.value.clone(),
-                        },
-                        name.span,
-                    );
-                    c.error(e.with_note(first.span, "first defined here"));
+                    c.error(Error::duplicate("parameter", name, first.span));
                 }
                 seen.push(name);
                 let value = match given.iter().find(|(n, _)| n == &name.value) {
@@ -161,14 +154,7 @@ impl Checker<'_> {
         let mut names: Vec<&crate::span::Name> = Vec::new();
         for (i, j) in decl.joints.iter().enumerate() {
             if let Some(first) = names.iter().find(|n| n.value == j.name.value) {
-                let e = Error::new(
-                    ErrorKind::Duplicate {
-                        what: "joint",
-                        name: j.name.value.clone(),
-                    },
-                    j.name.span,
-                );
-                self.error(e.with_note(first.span, "first defined here"));
+                self.error(Error::duplicate("joint", &j.name, first.span));
             }
             parents.push(match &j.after {
                 None => Some(i.checked_sub(1)),
@@ -233,14 +219,7 @@ impl Checker<'_> {
                 .iter()
                 .find(|f| f.name.value == e.name.value)
             {
-                let err = Error::new(
-                    ErrorKind::Duplicate {
-                        what: "effector",
-                        name: e.name.value.clone(),
-                    },
-                    e.name.span,
-                );
-                self.error(err.with_note(first.name.span, "first defined here"));
+                self.error(Error::duplicate("effector", &e.name, first.name.span));
                 ok = false;
             }
             let joint = match &e.after {

@@ -17,14 +17,7 @@ impl Checker<'_> {
             for item in &decl.items {
                 if let RoomItem::Target(t) = item {
                     if let Some(first) = target_names.iter().find(|n| n.value == t.name.value) {
-                        let e = Error::new(
-                            ErrorKind::Duplicate {
-                                what: "target",
-                                name: t.name.value.clone(),
-                            },
-                            t.name.span,
-                        );
-                        self.error(e.with_note(first.span, "first defined here"));
+                        self.error(Error::duplicate("target", &t.name, first.span));
                     } else {
                         target_names.push(&t.name);
                     }
@@ -48,14 +41,7 @@ impl Checker<'_> {
                 _ => continue,
             };
             if let Some(first) = seen.iter().find(|n| n.value == name.value) {
-                let e = Error::new(
-                    ErrorKind::Duplicate {
-                        what: "box, mesh or surface",
-                        name: name.value.clone(),
-                    },
-                    name.span,
-                );
-                self.error(e.with_note(first.span, "first defined here"));
+                self.error(Error::duplicate("box, mesh or surface", name, first.span));
             } else {
                 seen.push(name);
             }

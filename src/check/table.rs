@@ -27,15 +27,7 @@ impl<'a, T> Table<'a, T> {
     /// points at both.
     pub fn insert(&mut self, name: &Name, decl: &'a T, file: FileId) -> Option<Error> {
         if let Some(&i) = self.index.get(&name.value) {
-            let first = &self.entries[i].1;
-            let e = Error::new(
-                ErrorKind::Duplicate {
-                    what: self.what,
-                    name: name.value.clone(),
-                },
-                name.span,
-            );
-            return Some(e.with_note(*first, "first defined here"));
+            return Some(Error::duplicate(self.what, name, self.entries[i].1));
         }
         self.index.insert(name.value.clone(), self.entries.len());
         self.entries
