@@ -23,31 +23,9 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Evaluate a scenario and print its report.
-    Run {
-        /// The .reach scenario file.
-        file: PathBuf,
-        /// Output format (see `reach plugins`).
-        #[arg(long, default_value = "text")]
-        format: String,
-        /// Also write DIR/report.json, and a CSV and an SVG heat map per map.
-        #[arg(long, value_name = "DIR")]
-        out: Option<PathBuf>,
-        #[command(flatten)]
-        limits: LimitArgs,
-    },
+    Run(Evaluate),
     /// Evaluate a scenario, then again whenever it or a file it uses changes.
-    Watch {
-        /// The .reach scenario file.
-        file: PathBuf,
-        /// Output format (see `reach plugins`).
-        #[arg(long, default_value = "text")]
-        format: String,
-        /// Also write DIR/report.json, and a CSV and an SVG heat map per map.
-        #[arg(long, value_name = "DIR")]
-        out: Option<PathBuf>,
-        #[command(flatten)]
-        limits: LimitArgs,
-    },
+    Watch(Evaluate),
     /// Parse and check a scenario without running it.
     Check {
         /// The .reach scenario file.
@@ -59,6 +37,21 @@ enum Command {
     Plugins,
     /// List the standard library: mannequins, profiles, bases, visions.
     Stdlib,
+}
+
+/// What `run` and `watch` take.
+#[derive(Args)]
+struct Evaluate {
+    /// The .reach scenario file.
+    file: PathBuf,
+    /// Output format (see `reach plugins`).
+    #[arg(long, default_value = "text")]
+    format: String,
+    /// Also write DIR/report.json, and a CSV and an SVG heat map per map.
+    #[arg(long, value_name = "DIR")]
+    out: Option<PathBuf>,
+    #[command(flatten)]
+    limits: LimitArgs,
 }
 
 /// Resource limits (docs/language.md, "Limits"); each may be raised up to
@@ -107,28 +100,18 @@ pub fn main() -> i32 {
     let cli = Cli::parse();
     let registry = Registry::builtin();
     match cli.command {
-        Command::Run {
-            file,
-            format,
-            out,
-            limits,
-        } => run(&registry, &limits.limits(), &file, &format, out.as_deref()),
-        Command::Watch {
-            file,
-            format,
-            out,
-            limits,
-        } => {
-            let Some(formatter) = registry.format(&format).cloned() else {
-                return unknown_format(&registry, &format);
+        Command::Run(e) => run(&registry, &e),
+        Command::Watch(e) => {
+            let Some(formatter) = registry.format(&e.format).cloned() else {
+                return unknown_format(&registry, &e.format);
             };
-            let limits = limits.limits();
+            let limits = e.limits.limits();
             crate::watch::watch(
                 &registry,
                 &limits,
-                &file,
+                &e.file,
                 formatter.as_ref(),
-                out.as_deref(),
+                e.out.as_deref(),
             )
         }
         Command::Check { file, limits } => check(&registry, &limits.limits(), &file),
@@ -143,11 +126,12 @@ pub fn main() -> i32 {
     }
 }
 
-fn run(registry: &Registry, limits: &Limits, file: &Path, format: &str, out: Option<&Path>) -> i32 {
-    let Some(formatter) = registry.format(format) else {
-        return unknown_format(registry, format);
+fn run(registry: &Registry, e: &Evaluate) -> i32 {
+    let Some(formatter) = registry.format(&e.format) else {
+        return unknown_format(registry, &e.format);
     };
-    let (_, checked) = reach::check_within(Input::Path(file), registry, limits);
+    let limits = e.limits.limits();
+    let (_, checked) = reach::check_within(Input::Path(&e.file), registry, &limits);
     let scenario = match checked {
         Ok(s) => s,
         Err(d) => return report_diagnostics(&d),
@@ -155,9 +139,9 @@ fn run(registry: &Registry, limits: &Limits, file: &Path, format: &str, out: Opt
     let bar = crate::bar::Bar::new();
     let report = reach::run_with_progress(&scenario, registry, &bar);
     bar.clear();
-    if let Some(dir) = out {
-        if let Err(e) = write_outputs(registry, &report, dir) {
-            return report_diagnostics(&Diagnostics::single(e));
+    if let Some(dir) = &e.out {
+        if let Err(error) = write_outputs(registry, &report, dir) {
+            return report_diagnostics(&Diagnostics::single(error));
         }
     }
     let mut stdout = std::io::stdout().lock();
