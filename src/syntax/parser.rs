@@ -83,18 +83,17 @@ impl Builder {
     /// end with (an optional last part that is absent leaves them in).
     fn span(&self, pair: &Pair<Rule>) -> Span {
         let s = pair.as_span();
-        // Innermost pairs (tokens) end exactly; past the last of them, only
-        // literal tokens such as `}` count.
-        let last_inner = pair
-            .clone()
-            .into_inner()
-            .flatten()
-            .filter(|p| p.clone().into_inner().next().is_none())
-            .map(|p| p.as_span().end())
-            .max()
-            .unwrap_or(s.start());
-        let tail = &s.get_input()[last_inner..s.end()];
-        Span::new(self.file, s.start(), last_inner + content_len(tail))
+        let end = match last_token(pair) {
+            // A token: only white space may trail it.
+            None => s.start() + pair.as_str().trim_end().len(),
+            // Past the last inner token, only literal tokens such as `}`
+            // count.
+            Some(last) => {
+                let after = last.as_span().end();
+                after + content_len(&s.get_input()[after..s.end()])
+            }
+        };
+        Span::new(self.file, s.start(), end)
     }
 
     fn name(&self, pair: Pair<Rule>) -> Name {
@@ -661,6 +660,17 @@ fn too_deep(text: &str, max_depth: usize) -> Option<usize> {
         i += 1;
     }
     None
+}
+
+/// The last innermost pair within `pair` (none if `pair` has no inner
+/// pairs): followed down the last child, so as deep as the pair, not as
+/// large.
+fn last_token<'i>(pair: &Pair<'i, Rule>) -> Option<Pair<'i, Rule>> {
+    let mut last = pair.clone().into_inner().last()?;
+    while let Some(child) = last.clone().into_inner().last() {
+        last = child;
+    }
+    Some(last)
 }
 
 /// How much of `text` (the end of a rule, after its last inner pair) is
