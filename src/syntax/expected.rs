@@ -3,7 +3,7 @@
 
 use pest::error::{ErrorVariant, InputLocation};
 
-use super::parser::Rule;
+use super::grammar::Rule;
 use crate::error::{Error, ErrorKind};
 use crate::span::{FileId, Span};
 

@@ -3,6 +3,7 @@
 
 pub mod ast;
 mod expected;
+mod grammar;
 mod parser;
 
 pub use parser::{parse_file, parse_file_within};

@@ -3,19 +3,15 @@
 use pest::iterators::Pair;
 use pest::pratt_parser::{Assoc, Op, PrattParser};
 use pest::Parser as _;
-use pest_derive::Parser;
 use std::sync::LazyLock;
 
 use super::ast::*;
 use super::expected::syntax_error;
+use super::grammar::{ReachParser, Rule};
 use crate::error::{Diagnostics, Error, ErrorKind};
 use crate::limits::Limits;
 use crate::span::{FileId, Name, Span, Spanned};
 use crate::units::Unit;
-
-#[derive(Parser)]
-#[grammar = "../grammar/reach.pest"]
-pub(super) struct ReachParser;
 
 /// Largest magnitude a number literal may have: far beyond any room, far
 /// below where arithmetic in f64 loses whole millimetres.
