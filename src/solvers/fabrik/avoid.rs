@@ -10,86 +10,99 @@
 
 use nalgebra::{IsometryMatrix3, Point3};
 
-use super::pass::{bone_end, Pass};
+use super::bones::Bone;
+use crate::collision::PlacedObstacles;
+use crate::kinematics::Chain;
 
 /// How many of a group's joints are sampled (the first ones); the others
 /// keep their values.
 const SAMPLED_JOINTS: usize = 3;
 
-/// Move bone `k` out of the obstacles if it passes through one.
-pub(super) fn avoid(pass: &mut Pass<'_>, k: usize, before: &IsometryMatrix3<f64>) {
-    let Some(obstacles) = pass.problem.obstacles else {
-        return;
-    };
-    let last = pass.bones.len() - 1;
-    // The effector's own bone may end on the target's surface.
-    let gap = |bone: usize| {
-        if bone == last {
-            pass.problem.tolerance_mm.max(1.0)
+/// What avoidance reads of a forward pass: the chain as bones, the
+/// obstacles, and the pass's posture, points and goals.
+pub(super) struct Bend<'a> {
+    pub chain: &'a Chain,
+    pub bones: &'a [Bone],
+    pub obstacles: &'a PlacedObstacles<'a>,
+    pub tolerance_mm: f64,
+    /// Values per sampled joint.
+    pub samples: u32,
+    pub q: &'a [f64],
+    /// The base and each bone's end, in the base frame.
+    pub points: &'a [Point3<f64>],
+    /// Where the backward pass wants each point.
+    pub goals: &'a [Point3<f64>],
+}
+
+impl Bend<'_> {
+    /// A posture that moves bone `k` (its group starting from frame
+    /// `before`) out of the obstacles, if it passes through one and some
+    /// sample is clear; `None` leaves the posture as it is.
+    pub fn clear_posture(&self, k: usize, before: &IsometryMatrix3<f64>) -> Option<Vec<f64>> {
+        let root = self.points[k];
+        if self.clear(root, self.end_with(k, before, self.q), k) {
+            return None;
+        }
+        let goal = self.goals[k + 1];
+        let next_goal = self.goals.get(k + 2).copied();
+        let mut best: Option<(bool, f64, Vec<f64>)> = None;
+        for q in self.samples(k) {
+            let end = self.end_with(k, before, &q);
+            if !self.clear(root, end, k) {
+                continue;
+            }
+            let onward = next_goal.is_none_or(|g| self.clear(end, g, k + 1));
+            let score = (end - goal).norm();
+            let better = best
+                .as_ref()
+                .is_none_or(|(b_onward, b_score, _)| (onward, -score) > (*b_onward, -*b_score));
+            if better {
+                best = Some((onward, score, q));
+            }
+        }
+        best.map(|(_, _, q)| q)
+    }
+
+    /// Whether the segment from `a` to `b`, as bone `bone`, is clear; the
+    /// effector's own bone may end on the target's surface.
+    fn clear(&self, a: Point3<f64>, b: Point3<f64>, bone: usize) -> bool {
+        let gap = if bone == self.bones.len() - 1 {
+            self.tolerance_mm.max(1.0)
         } else {
             0.0
-        }
-    };
-    let clear = |a: Point3<f64>, b: Point3<f64>, bone: usize| {
-        obstacles.polyline_hit(&[a, b], gap(bone)).is_none()
-    };
-    let root = pass.points[k];
-    let end = end_with(pass, k, before, &pass.q);
-    if clear(root, end, k) {
-        return;
+        };
+        self.obstacles.polyline_hit(&[a, b], gap).is_none()
     }
-    let goal = pass.goals[k + 1];
-    let next_goal = pass.goals.get(k + 2).copied();
-    let mut best: Option<(bool, f64, Vec<f64>)> = None;
-    for q in samples(pass, k) {
-        let end = end_with(pass, k, before, &q);
-        if !clear(root, end, k) {
-            continue;
-        }
-        let onward = next_goal.is_none_or(|g| clear(end, g, k + 1));
-        let score = (end - goal).norm();
-        let better = best
-            .as_ref()
-            .is_none_or(|(b_onward, b_score, _)| (onward, -score) > (*b_onward, -*b_score));
-        if better {
-            best = Some((onward, score, q));
-        }
-    }
-    if let Some((_, _, q)) = best {
-        pass.q = q;
-    }
-}
 
-/// Bone `k`'s end with posture `q`.
-fn end_with(pass: &Pass<'_>, k: usize, before: &IsometryMatrix3<f64>, q: &[f64]) -> Point3<f64> {
-    let chain = pass.chain();
-    let bone = &pass.bones[k];
-    let frame = bone
-        .joints
-        .clone()
-        .fold(*before, |f, j| f * chain.joints[j].transform(q[j]));
-    bone_end(chain, bone, &frame, q)
-}
+    /// Bone `k`'s end with posture `q`.
+    fn end_with(&self, k: usize, before: &IsometryMatrix3<f64>, q: &[f64]) -> Point3<f64> {
+        let bone = &self.bones[k];
+        let frame = bone
+            .joints
+            .clone()
+            .fold(*before, |f, j| f * self.chain.joints[j].transform(q[j]));
+        bone.end_point(self.chain, &frame, q)
+    }
 
-/// Postures that differ from the present one in the group's first joints,
-/// each sampled at `samples` values evenly across its range.
-fn samples(pass: &Pass<'_>, k: usize) -> Vec<Vec<f64>> {
-    let chain = pass.chain();
-    let n = pass.settings.samples.max(2) as usize;
-    let group: Vec<usize> = pass.bones[k].joints.clone().take(SAMPLED_JOINTS).collect();
-    let mut postures = vec![pass.q.clone()];
-    for &j in &group {
-        let joint = &chain.joints[j];
-        postures = postures
-            .into_iter()
-            .flat_map(|q| {
-                (0..n).map(move |i| {
-                    let mut q = q.clone();
-                    q[j] = joint.min + joint.range() * i as f64 / (n - 1) as f64;
-                    q
+    /// Postures that differ from the present one in the group's first
+    /// joints, each sampled at `samples` values evenly across its range.
+    fn samples(&self, k: usize) -> Vec<Vec<f64>> {
+        let n = self.samples.max(2) as usize;
+        let group: Vec<usize> = self.bones[k].joints.clone().take(SAMPLED_JOINTS).collect();
+        let mut postures = vec![self.q.to_vec()];
+        for &j in &group {
+            let joint = &self.chain.joints[j];
+            postures = postures
+                .into_iter()
+                .flat_map(|q| {
+                    (0..n).map(move |i| {
+                        let mut q = q.clone();
+                        q[j] = joint.min + joint.range() * i as f64 / (n - 1) as f64;
+                        q
+                    })
                 })
-            })
-            .collect();
+                .collect();
+        }
+        postures
     }
-    postures
 }

@@ -8,7 +8,7 @@
 //! the shoulder's offset from the spine). A bone ending in a prismatic
 //! joint (the eyes' look link) has a length between limits.
 
-use nalgebra::Vector3;
+use nalgebra::{IsometryMatrix3, Point3, Vector3};
 
 use crate::kinematics::{Chain, JointKind};
 
@@ -30,6 +30,29 @@ pub struct Bone {
     pub end: End,
     /// The bone's length, or its least and greatest for a prismatic bone.
     pub length_mm: [f64; 2],
+}
+
+impl Bone {
+    /// Where the bone ends, given the frame after its group and the
+    /// posture `q`.
+    pub fn end_point(
+        &self,
+        chain: &Chain,
+        after_group: &IsometryMatrix3<f64>,
+        q: &[f64],
+    ) -> Point3<f64> {
+        match self.end {
+            // The joint that slides along its own axis starts the next group:
+            // its offset is carried here, its turn is not needed for the end.
+            End::Frame(j) if j == self.joints.end => Point3::from(
+                (after_group * chain.joints[j].transform(q[j]))
+                    .translation
+                    .vector,
+            ),
+            End::Frame(_) => Point3::from(after_group.translation.vector),
+            End::Effector => after_group * Point3::from(chain.effector_mm),
+        }
+    }
 }
 
 /// The bones of a chain, root first.

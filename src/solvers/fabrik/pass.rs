@@ -18,7 +18,7 @@ use rand_chacha::rand_core::Rng;
 use rand_chacha::ChaCha8Rng;
 
 use super::avoid;
-use super::bones::{Bone, End};
+use super::bones::Bone;
 use super::stall::{Next, Stalls};
 use super::FabrikSettings;
 use crate::kinematics::{Chain, Joint, JointKind};
@@ -167,7 +167,7 @@ impl<'a> Pass<'a> {
             if align && bones.contains(&k) && !self.bones[k].joints.is_empty() {
                 self.align(k, &frame);
                 if avoiding {
-                    avoid::avoid(self, k, &frame);
+                    self.avoid(k, &frame);
                 }
             }
             frame = self.advance(k, &frame);
@@ -183,8 +183,29 @@ impl<'a> Pass<'a> {
             .joints
             .clone()
             .fold(*before, |f, j| f * chain.joints[j].transform(self.q[j]));
-        self.points[k + 1] = bone_end(chain, bone, &frame, &self.q);
+        self.points[k + 1] = bone.end_point(chain, &frame, &self.q);
         frame
+    }
+
+    /// Move bone `k` out of the obstacles if it passes through one
+    /// (`avoid.rs`).
+    fn avoid(&mut self, k: usize, before: &IsometryMatrix3<f64>) {
+        let Some(obstacles) = self.problem.obstacles.as_ref() else {
+            return;
+        };
+        let bend = avoid::Bend {
+            chain: self.chain(),
+            bones: self.bones,
+            obstacles,
+            tolerance_mm: self.problem.tolerance_mm,
+            samples: self.settings.samples,
+            q: &self.q,
+            points: &self.points,
+            goals: &self.goals,
+        };
+        if let Some(q) = bend.clear_posture(k, before) {
+            self.q = q;
+        }
     }
 
     /// Turn bone `k`'s group so that the bone's end comes nearest its goal.
@@ -197,7 +218,7 @@ impl<'a> Pass<'a> {
             self.axes.push(frame.rotation * Vector3::z());
             frame *= chain.joints[j].transform(self.q[j]);
         }
-        let end = bone_end(chain, bone, &frame, &self.q);
+        let end = bone.end_point(chain, &frame, &self.q);
         self.turn_group(k, end, self.goals[k + 1]);
     }
 
@@ -276,26 +297,6 @@ pub fn kick(q: &mut [f64], joints: &[Joint], fraction: f64, rng: &mut ChaCha8Rng
     for (q, joint) in q.iter_mut().zip(joints) {
         let u = (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
         *q = joint.clamp(*q + (2.0 * u - 1.0) * fraction * joint.range());
-    }
-}
-
-/// Where bone `bone` ends, given the frame after its group.
-pub fn bone_end(
-    chain: &Chain,
-    bone: &Bone,
-    after_group: &IsometryMatrix3<f64>,
-    q: &[f64],
-) -> Point3<f64> {
-    match bone.end {
-        // The joint that slides along its own axis starts the next group:
-        // its offset is carried here, its turn is not needed for the end.
-        End::Frame(j) if j == bone.joints.end => Point3::from(
-            (after_group * chain.joints[j].transform(q[j]))
-                .translation
-                .vector,
-        ),
-        End::Frame(_) => Point3::from(after_group.translation.vector),
-        End::Effector => after_group * Point3::from(chain.effector_mm),
     }
 }
 
