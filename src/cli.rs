@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use clap::{Args, Parser, Subcommand};
 use reach::limits::{CEILINGS, DEFAULTS};
 use reach::plugin::{PluginKind, Registry};
-use reach::{Diagnostics, Error, ErrorKind, Input, Limits};
+use reach::{Diagnostics, Input, Limits};
 
 #[derive(Parser)]
 #[command(
@@ -140,7 +140,7 @@ fn run(registry: &Registry, e: &Evaluate) -> i32 {
     let report = reach::run_with_progress(&scenario, registry, &bar);
     bar.clear();
     if let Some(dir) = &e.out {
-        if let Err(error) = write_outputs(registry, &report, dir) {
+        if let Err(error) = reach::output::write_outputs(&report, dir) {
             return report_diagnostics(&Diagnostics::single(error));
         }
     }
@@ -172,52 +172,6 @@ fn report_diagnostics(d: &Diagnostics) -> i32 {
     let plain = !std::io::stderr().is_terminal() || std::env::var_os("NO_COLOR").is_some();
     eprint!("{}", d.render(plain));
     1
-}
-
-/// `DIR/report.json`, and a CSV and an SVG for each map.
-pub fn write_outputs(
-    registry: &Registry,
-    report: &reach::report::Report,
-    dir: &Path,
-) -> Result<(), Error> {
-    use reach::output::map_files;
-    let json = registry
-        .format("json")
-        .expect("json is built in")
-        .render(report);
-    write_atomically(&dir.join("report.json"), json.as_bytes())?;
-    for task in &report.tasks {
-        if let reach::report::TaskReport::Map(m) = task {
-            let stem = map_files::file_stem(m);
-            write_atomically(
-                &dir.join(format!("{stem}.csv")),
-                map_files::csv(m).as_bytes(),
-            )?;
-            write_atomically(
-                &dir.join(format!("{stem}.svg")),
-                map_files::svg(m).as_bytes(),
-            )?;
-        }
-    }
-    Ok(())
-}
-
-/// Write `bytes` to a temporary file beside `path`, then rename it over
-/// `path`: a reader sees the old file or the new one, never half of one.
-fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
-    let fail = |e: std::io::Error| {
-        Error::unplaced(ErrorKind::WriteFile {
-            path: path.display().to_string(),
-            reason: e.to_string(),
-        })
-    };
-    let dir = path.parent().unwrap_or(Path::new("."));
-    std::fs::create_dir_all(dir).map_err(fail)?;
-    let mut tmp = tempfile::NamedTempFile::new_in(dir).map_err(fail)?;
-    tmp.write_all(bytes).map_err(fail)?;
-    tmp.as_file().sync_all().map_err(fail)?;
-    tmp.persist(path).map_err(|e| fail(e.error))?;
-    Ok(())
 }
 
 fn plugins_listing(registry: &Registry) -> String {

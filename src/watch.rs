@@ -98,7 +98,7 @@ impl State {
                         .run(&scenario, registry, &reach::progress::NoProgress);
                 screen.push_str(&formatter.render(&report));
                 if let Some(dir) = out {
-                    if let Err(e) = crate::cli::write_outputs(registry, &report, dir) {
+                    if let Err(e) = reach::output::write_outputs(&report, dir) {
                         screen.push_str(&reach::Diagnostics::single(e).render(!self.terminal));
                     }
                 }

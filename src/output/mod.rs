@@ -1,9 +1,11 @@
-//! Output formats, each a plugin, and the files written for each map.
+//! Output formats, each a plugin, and the files `--out DIR` writes.
 
+mod files;
 mod json;
 pub mod json_layout;
 pub mod map_files;
 mod text;
 
+pub use files::write_outputs;
 pub use json::Json;
 pub use text::Text;
