@@ -120,7 +120,7 @@ pub fn main() -> i32 {
             0
         }
         Command::Stdlib => {
-            print!("{}", reach::stdlib::listing());
+            print!("{}", reach::std_modules::listing());
             0
         }
     }

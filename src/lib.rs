@@ -34,6 +34,7 @@ pub mod scene;
 pub mod solvers;
 pub mod source;
 pub mod span;
+pub mod std_modules;
 pub mod stdlib;
 pub mod syntax;
 pub mod tasks;

@@ -11,7 +11,7 @@ use crate::limits::Limits;
 use crate::names::suggest;
 use crate::source::{Origin, Sources};
 use crate::span::{FileId, Span};
-use crate::stdlib;
+use crate::std_modules;
 use crate::syntax::ast::{File, Item, UseTarget};
 use crate::syntax::parse_file_within;
 
@@ -196,8 +196,8 @@ impl Loader {
     }
 
     fn load_std(&mut self, name: &str, key: Key, span: Span) {
-        let Some(text) = stdlib::module(name) else {
-            let names: Vec<&str> = stdlib::MODULES.iter().map(|(n, _)| *n).collect();
+        let Some(text) = std_modules::module(name) else {
+            let names: Vec<&str> = std_modules::MODULES.iter().map(|(n, _)| *n).collect();
             self.errors.push(Error::new(
                 ErrorKind::UnknownStdModule {
                     name: name.to_string(),

@@ -176,3 +176,27 @@ fn the_left_arm_mirrors_the_right() {
     // At rest the left hand hangs on the left (y > 0).
     assert!(left.effector(&left.neutral()).y > 100.0);
 }
+
+/// How FABRIK reads std::arm's chain as bones: the trunk; the shoulder's
+/// offset (turned by the trunk alone); the upper arm by flexion and
+/// abduction; the forearm by the humerus's rotation and the elbow; the hand
+/// by the forearm and wrist.
+#[test]
+fn fabrik_reads_the_arm_as_trunk_shoulder_upper_arm_forearm_and_hand() {
+    use reach::solvers::fabrik::{bones, End};
+    let b = bones(&right_arm());
+    let groups: Vec<_> = b.iter().map(|b| b.joints.clone()).collect();
+    assert_eq!(groups, [0..3, 3..3, 3..5, 5..7, 7..10]);
+    assert_eq!(b[4].end, End::Effector);
+}
+
+/// The eyes' look link is a bone of varying length for FABRIK.
+#[test]
+fn fabrik_reads_the_look_link_as_a_bone_of_varying_length() {
+    let body = reach::stdlib::body("body", "upper_body").expect("std::body checks");
+    let eyes = body.chain_named(Some("eyes")).unwrap();
+    let b = reach::solvers::fabrik::bones(&eyes);
+    let look = b.last().unwrap();
+    assert_eq!(look.joints, 6..9, "eye pitch, eye yaw and the look link");
+    assert_eq!(look.length_mm, [0.0, 30_000.0]);
+}

@@ -93,30 +93,3 @@ pub fn bones(chain: &Chain) -> Vec<Bone> {
     }
     bones
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_arm_has_a_trunk_shoulder_upper_arm_forearm_and_hand() {
-        let chain = crate::stdlib::chain("arm", "right_arm").unwrap();
-        let b = bones(&chain);
-        let groups: Vec<_> = b.iter().map(|b| b.joints.clone()).collect();
-        // The trunk; the shoulder's offset (turned by the trunk alone); the
-        // upper arm by flexion and abduction; the forearm by the humerus's
-        // rotation and the elbow; the hand by the forearm and wrist.
-        assert_eq!(groups, [0..3, 3..3, 3..5, 5..7, 7..10]);
-        assert_eq!(b[4].end, End::Effector);
-    }
-
-    #[test]
-    fn the_look_link_is_a_bone_of_varying_length() {
-        let body = crate::stdlib::body("body", "upper_body").unwrap();
-        let eyes = body.chain_named(Some("eyes")).unwrap();
-        let b = bones(&eyes);
-        let look = b.last().unwrap();
-        assert_eq!(look.joints, 6..9, "eye pitch, eye yaw and the look link");
-        assert_eq!(look.length_mm, [0.0, 30_000.0]);
-    }
-}
