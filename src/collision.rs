@@ -6,7 +6,7 @@ use nalgebra::{Isometry3, Point3, Translation3, UnitQuaternion, Vector3};
 use parry3d_f64::query::Ray;
 use parry3d_f64::shape::{Cuboid, SharedShape, TriMeshFlags};
 
-use crate::plugin::BasePose;
+use crate::scene::BasePose;
 use crate::scene::{BoxObstacle, Room};
 
 /// One obstacle: its shape posed in the room, and its name for reports.

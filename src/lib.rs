@@ -17,6 +17,7 @@
 //! ```
 
 pub mod bases;
+mod builtin;
 pub mod cache;
 mod check;
 pub mod collision;
@@ -26,6 +27,7 @@ pub mod kinematics;
 pub mod limits;
 mod loader;
 mod names;
+pub mod options;
 pub mod output;
 pub mod plugin;
 pub mod progress;

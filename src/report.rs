@@ -9,8 +9,7 @@ use serde::ser::{SerializeMap, Serializer};
 use serde::Serialize;
 
 use crate::kinematics::{Chain, JointKind};
-use crate::plugin::{BasePose, Placement};
-use crate::scene::{Grid, GridCell, Person, Room, Surface, TaskSpec};
+use crate::scene::{BasePose, Grid, GridCell, Person, Placement, Room, Surface, TaskSpec};
 
 /// Version of the JSON schema; raised when a field changes meaning.
 pub const SCHEMA_VERSION: u32 = 1;

@@ -2,11 +2,12 @@
 //! [`Plugin`] (a name, a one-line doc and declared parameters) and the trait
 //! of its kind; all are registered by name in one [`Registry`].
 
-mod params;
 mod registry;
 
-pub use params::{Options, ParamKind, ParamSpec, PluginConfig, Value};
 pub use registry::Registry;
+// The data the traits speak of, so that a plugin needs one `use`.
+pub use crate::options::{Options, ParamKind, ParamSpec, PluginConfig, PluginKind, Value};
+pub use crate::scene::{BasePose, IkSolution, Placement};
 
 use nalgebra::Point3;
 
@@ -14,33 +15,6 @@ use crate::collision::{Obstacles, PlacedObstacles};
 use crate::kinematics::Chain;
 use crate::report::{Report, TaskReport};
 use crate::scene::{Room, Scenario, TaskSpec};
-
-/// The four kinds of plugin.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum PluginKind {
-    Solver,
-    Base,
-    Task,
-    Format,
-}
-
-impl PluginKind {
-    pub const ALL: [PluginKind; 4] = [
-        PluginKind::Solver,
-        PluginKind::Base,
-        PluginKind::Task,
-        PluginKind::Format,
-    ];
-
-    pub fn noun(self) -> &'static str {
-        match self {
-            PluginKind::Solver => "solver",
-            PluginKind::Base => "base",
-            PluginKind::Task => "task",
-            PluginKind::Format => "format",
-        }
-    }
-}
 
 /// What every plugin declares.
 pub trait Plugin: Send + Sync {
@@ -78,46 +52,6 @@ impl IkProblem<'_> {
     }
 }
 
-/// A solver's answer: a posture within the joint limits and how far its
-/// effector is from the target.
-#[derive(Clone, Debug, PartialEq)]
-pub struct IkSolution {
-    /// Joint values in chain order (rad or mm).
-    pub q: Vec<f64>,
-    pub distance_mm: f64,
-    /// Sweeps over all joints (or solver iterations), summed over starts.
-    pub iterations: u64,
-    /// The first obstacle (by index in the room) a link passes through.
-    pub collision: Option<usize>,
-}
-
-impl IkSolution {
-    /// Within `tolerance_mm` of the target and clear of obstacles.
-    pub fn reaches(&self, tolerance_mm: f64) -> bool {
-        self.distance_mm <= tolerance_mm && self.collision.is_none()
-    }
-
-    /// Whether this solution, of discomfort `comfort`, is kept over `other`:
-    /// one that reaches (within `tolerance_mm`, clear of obstacles) beats
-    /// one that does not; of
-    /// two that reach, the more comfortable (section 5.3.4); of two that do
-    /// not, the closer.
-    pub fn preferred_to(
-        &self,
-        comfort: f64,
-        other: &IkSolution,
-        other_comfort: f64,
-        tolerance_mm: f64,
-    ) -> bool {
-        match (self.reaches(tolerance_mm), other.reaches(tolerance_mm)) {
-            (true, false) => true,
-            (false, true) => false,
-            (true, true) => comfort < other_comfort,
-            (false, false) => self.distance_mm < other.distance_mm,
-        }
-    }
-}
-
 /// A solver configured from its option block.
 pub trait Solver: Send + Sync {
     fn solve(&self, problem: &IkProblem<'_>) -> IkSolution;
@@ -137,46 +71,6 @@ pub trait SolverPlugin: Plugin {
 }
 
 // ------------------------------------------------------------------ bases
-
-/// Where the base stands: its origin (the hip point) in the room, and the
-/// direction it faces, counter-clockwise from the room's x axis.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BasePose {
-    pub position_mm: Point3<f64>,
-    pub heading_rad: f64,
-}
-
-impl BasePose {
-    /// A point of the room in the base frame.
-    pub fn to_base(&self, room_point: &Point3<f64>) -> Point3<f64> {
-        let d = room_point - self.position_mm;
-        let (s, c) = self.heading_rad.sin_cos();
-        Point3::new(c * d.x + s * d.y, -s * d.x + c * d.y, d.z)
-    }
-
-    /// A direction of the base frame in the room.
-    pub fn direction_to_room(&self, v: &nalgebra::Vector3<f64>) -> nalgebra::Vector3<f64> {
-        let (s, c) = self.heading_rad.sin_cos();
-        nalgebra::Vector3::new(c * v.x - s * v.y, s * v.x + c * v.y, v.z)
-    }
-
-    /// A point of the base frame in the room.
-    pub fn to_room(&self, base_point: &Point3<f64>) -> Point3<f64> {
-        let (s, c) = self.heading_rad.sin_cos();
-        let p = base_point;
-        self.position_mm + nalgebra::Vector3::new(c * p.x - s * p.y, s * p.x + c * p.y, p.z)
-    }
-}
-
-/// Where the base stood and the posture the solver found from there.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Placement {
-    pub pose: BasePose,
-    pub solution: IkSolution,
-    /// Found by the query's [`Retry`] solver, after the task's own solver
-    /// found no placement that reaches.
-    pub retried: bool,
-}
 
 /// How hard a base looks for a placement.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

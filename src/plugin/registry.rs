@@ -4,8 +4,9 @@ use std::sync::Arc;
 
 use super::{BasePlugin, FormatPlugin, ParamSpec, Plugin, PluginKind, SolverPlugin, TaskPlugin};
 
-/// Every plugin a run can use. [`Registry::builtin`] has the built-in ones;
-/// a program using the library can register its own.
+/// Every plugin a run can use. [`Registry::builtin`] (`builtin.rs`, above
+/// the plugins it names) has the built-in ones; a program using the
+/// library can register its own.
 #[derive(Clone, Default)]
 pub struct Registry {
     solvers: Vec<Arc<dyn SolverPlugin>>,
@@ -27,25 +28,6 @@ fn find<'a, T: ?Sized + Plugin>(list: &'a [Arc<T>], name: &str) -> Option<&'a Ar
 }
 
 impl Registry {
-    /// The built-in plugins.
-    pub fn builtin() -> Self {
-        let mut r = Registry::default();
-        r.register_solver(crate::solvers::Incremental);
-        r.register_solver(crate::solvers::Dls);
-        r.register_solver(crate::solvers::Fabrik);
-        r.register_base(crate::bases::Fixed);
-        r.register_base(crate::bases::Trolley);
-        r.register_base(crate::bases::Wheelchair);
-        r.register_task(crate::tasks::Reach);
-        r.register_task(crate::tasks::Gaze);
-        r.register_task(crate::tasks::ReachAndGaze);
-        r.register_task(crate::tasks::Map);
-        r.register_task(crate::tasks::GazeMap);
-        r.register_format(crate::output::Text);
-        r.register_format(crate::output::Json);
-        r
-    }
-
     pub fn register_solver(&mut self, p: impl SolverPlugin + 'static) {
         insert(&mut self.solvers, Arc::new(p) as Arc<dyn SolverPlugin>);
     }

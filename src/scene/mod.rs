@@ -3,14 +3,16 @@
 //! resolved and in internal units (mm, rad); spans remain only where a run
 //! may still need to point back at the text.
 
+mod placement;
 mod surface;
 
+pub use placement::{BasePose, IkSolution, Placement};
 pub use surface::{Grid, GridCell, Surface, FACES};
 
 use nalgebra::{Point3, Vector3};
 
 use crate::kinematics::{Body, Chain};
-use crate::plugin::{Options, PluginConfig};
+use crate::options::{Options, PluginConfig};
 use crate::span::Span;
 
 #[derive(Clone, Debug, PartialEq)]

@@ -1,10 +1,36 @@
 //! Declared parameters of plugins and the validated values of an option
 //! block. Every plugin declares its parameters the same way, so the checker
-//! validates every option block the same way.
+//! validates every option block the same way. Plain data, below the scene
+//! that holds option values and the plugin traits that declare parameters.
 
 use nalgebra::Vector3;
 
-use super::PluginKind;
+/// The four kinds of plugin.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum PluginKind {
+    Solver,
+    Base,
+    Task,
+    Format,
+}
+
+impl PluginKind {
+    pub const ALL: [PluginKind; 4] = [
+        PluginKind::Solver,
+        PluginKind::Base,
+        PluginKind::Task,
+        PluginKind::Format,
+    ];
+
+    pub fn noun(self) -> &'static str {
+        match self {
+            PluginKind::Solver => "solver",
+            PluginKind::Base => "base",
+            PluginKind::Task => "task",
+            PluginKind::Format => "format",
+        }
+    }
+}
 
 /// What kind of value a parameter takes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
