@@ -14,8 +14,9 @@ use rand_chacha::rand_core::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use reach::bases::Mobile;
 use reach::floor::Footprint;
-use reach::plugin::{Options, PreparedBase, ReachQuery, Registry, Search, Value};
+use reach::plugin::{PreparedBase, ReachQuery, Registry, Search, Settings};
 use reach::scene::Room;
+use reach::solvers::{IncrementalSettings, IncrementalSolver};
 use reach::Input;
 
 fn main() {
@@ -35,9 +36,12 @@ fn main() {
     let room = &scenario.rooms[0];
     let chain = reach::stdlib::chain("arm", "right_arm").expect("std::arm");
     let targets = targets(room, n);
-    let plugin = registry.solver("incremental").unwrap();
-    let solver =
-        plugin.build(&Options::defaults(&plugin.params()).with("starts", Value::Integer(1)));
+    let solver = IncrementalSolver {
+        settings: IncrementalSettings {
+            starts: 1,
+            ..IncrementalSettings::with_defaults()
+        },
+    };
 
     let mobile = |footprint, hip_height_mm| Mobile {
         footprint,
@@ -89,7 +93,7 @@ fn main() {
                 retry: None,
             };
             let start = Instant::now();
-            let placement = prepared.reach(&query, solver.as_ref());
+            let placement = prepared.reach(&query, &solver);
             times.push(start.elapsed().as_secs_f64() * 1e6);
             ok += usize::from(placement.solution.distance_mm <= 10.0);
             sweeps += placement.solution.iterations;

@@ -10,9 +10,11 @@
 
 use std::time::Instant;
 
-use reach::plugin::{Options, PluginConfig, Registry, Value};
+use std::sync::Arc;
+
+use reach::plugin::{Options, ParamSpec, PluginConfig, Registry, Value};
 use reach::report::TaskReport;
-use reach::scene::Scenario;
+use reach::scenario::Scenario;
 use reach::Input;
 
 /// One row: a label, the retries and the retry solver (`None`:
@@ -73,7 +75,7 @@ fn main() {
     for (label, retries, solver) in SETTINGS {
         let variant = with_retry(&scenario, &registry, retries, solver);
         let start = Instant::now();
-        let report = reach::run(&variant, &registry);
+        let report = reach::run(&variant);
         let seconds = start.elapsed().as_secs_f64();
         let maps: Vec<_> = report
             .tasks
@@ -99,31 +101,45 @@ fn main() {
     }
 }
 
-/// The scenario with every task's retry set (or collisions off).
+/// The scenario with every task's retry set (or collisions off): each map
+/// configured again from its options so changed.
 fn with_retry(
     scenario: &Scenario,
     registry: &Registry,
     retries: i64,
     solver: Option<(&str, i64)>,
 ) -> Scenario {
+    let map = registry.task("map").expect("built in");
+    let params = map.params();
     let mut variant = scenario.clone();
     for task in &mut variant.tasks {
         let mut options = task.options.clone();
         match solver {
             Some((name, starts)) => {
                 let plugin = registry.solver(name).expect("built in");
+                let solver_params = plugin.params();
                 let config = PluginConfig {
                     name: name.to_string(),
-                    options: Options::defaults(&plugin.params())
-                        .with("starts", Value::Integer(starts)),
+                    options: Options::defaults(&solver_params)
+                        .set(option(&solver_params, "starts"), Value::Integer(starts)),
                 };
                 options = options
-                    .with("blocked_solver", Value::Plugin(config))
-                    .with("blocked_retries", Value::Integer(retries));
+                    .set(option(&params, "blocked_solver"), Value::Plugin(config))
+                    .set(option(&params, "blocked_retries"), Value::Integer(retries));
             }
-            None => options = options.with("collisions", Value::Bool(false)),
+            None => options = options.set(option(&params, "collisions"), Value::Bool(false)),
         }
+        task.task = Arc::from(map.configure(&options, registry).expect("valid options"));
         task.options = options;
     }
     variant
+}
+
+/// The declared name of parameter `name`.
+fn option(params: &[ParamSpec], name: &str) -> &'static str {
+    params
+        .iter()
+        .find(|p| p.name == name)
+        .map(|p| p.name)
+        .expect("a declared option")
 }

@@ -11,13 +11,32 @@
 use rand_chacha::rand_core::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use reach::plugin::{
-    IkProblem, IkSolution, Options, ParamSpec, Plugin, Registry, Solver, SolverPlugin,
+    IkProblem, IkSolution, Options, ParamSpec, Params, Plugin, Registry, Settings, SettingsError,
+    Solver, SolverPlugin,
 };
 use reach::report::Report;
 use reach::Input;
 
 /// The plugin: its name, its doc line and its parameters.
 pub struct Sampling;
+
+/// The solver's settings: each option declared once, in `visit`, which
+/// gives both the parameters `reach plugins` lists and the values read
+/// from a validated option block.
+struct SamplingSolver {
+    samples: u64,
+}
+
+impl Settings for SamplingSolver {
+    fn visit(p: &mut Params<'_>) -> Self {
+        SamplingSolver {
+            samples: p
+                .integer("samples", 5000, "postures to try")
+                .range(1.0, 1e7)
+                .get() as u64,
+        }
+    }
+}
 
 impl Plugin for Sampling {
     fn name(&self) -> &'static str {
@@ -29,20 +48,14 @@ impl Plugin for Sampling {
     }
 
     fn params(&self) -> Vec<ParamSpec> {
-        vec![ParamSpec::integer("samples", 5000, "postures to try").range(1.0, 1e7)]
+        SamplingSolver::params()
     }
 }
 
 impl SolverPlugin for Sampling {
-    fn build(&self, options: &Options) -> Box<dyn Solver> {
-        Box::new(SamplingSolver {
-            samples: options.integer("samples") as u64,
-        })
+    fn build(&self, options: &Options) -> Result<Box<dyn Solver>, SettingsError> {
+        Ok(Box::new(SamplingSolver::from_options(options)?))
     }
-}
-
-struct SamplingSolver {
-    samples: u64,
 }
 
 impl Solver for SamplingSolver {
@@ -106,7 +119,7 @@ pub fn run_scenario() -> Report {
         &registry,
     );
     match checked {
-        Ok(scenario) => reach::run(&scenario, &registry),
+        Ok(scenario) => reach::run(&scenario),
         Err(d) => panic!("{}", d.render(true)),
     }
 }

@@ -137,7 +137,7 @@ fn run(registry: &Registry, e: &Evaluate) -> i32 {
         Err(d) => return report_diagnostics(&d),
     };
     let bar = crate::bar::Bar::new();
-    let report = reach::run_with_progress(&scenario, registry, &bar);
+    let report = reach::run_with_progress(&scenario, &bar);
     bar.clear();
     if let Some(dir) = &e.out {
         if let Err(error) = reach::output::write_outputs(&report, dir) {

@@ -12,6 +12,8 @@ use crate::scene::{BoxObstacle, Room};
 /// One obstacle: its shape posed in the room, and its name for reports.
 #[derive(Clone)]
 struct Obstacle {
+    /// Its index among the room's obstacles (the boxes, then the meshes).
+    index: usize,
     name: String,
     pose_room: Isometry3<f64>,
     shape: SharedShape,
@@ -42,13 +44,15 @@ impl Obstacles {
     /// Meshes come after the boxes, as is; a mesh is solid where its
     /// triangles close and face outwards, else only its surface counts.
     pub fn new(room: &Room, clearance_mm: f64) -> Self {
-        let boxes = room.boxes.iter().map(|b| Obstacle {
+        let boxes = room.boxes.iter().enumerate().map(|(index, b)| Obstacle {
+            index,
             name: b.name.clone(),
             pose_room: box_pose_room(b),
             shape: SharedShape::new(Cuboid::new(b.size_mm / 2.0 + Vector3::repeat(clearance_mm))),
             closed_mesh: false,
         });
-        let meshes = room.meshes.iter().filter_map(|m| {
+        let first_mesh = room.boxes.len();
+        let meshes = room.meshes.iter().enumerate().filter_map(|(k, m)| {
             let (vertices, triangles) = (m.vertices_mm.clone(), m.triangles.clone());
             let oriented = SharedShape::trimesh_with_flags(
                 vertices.clone(),
@@ -60,6 +64,7 @@ impl Obstacles {
                 Err(_) => (SharedShape::trimesh(vertices, triangles).ok()?, false),
             };
             Some(Obstacle {
+                index: first_mesh + k,
                 name: m.name.clone(),
                 pose_room: Isometry3::identity(),
                 shape,
@@ -75,18 +80,26 @@ impl Obstacles {
         self.items.is_empty()
     }
 
+    /// The name of the room's obstacle `index` (as the hits give it).
     pub fn name(&self, index: usize) -> &str {
-        &self.items[index].name
+        self.items
+            .iter()
+            .find(|o| o.index == index)
+            .map_or("", |o| o.name.as_str())
     }
 
     /// The first obstacle (in declaration order) the segment from `a` to
-    /// `b` touches or lies in.
+    /// `b` touches or lies in, by its index among the room's obstacles.
     pub fn segment_hit(&self, a: &Point3<f64>, b: &Point3<f64>) -> Option<usize> {
         let ray = Ray::new(*a, b - a);
-        self.items.iter().position(|o| o.entry(&ray, 1.0).is_some())
+        self.items
+            .iter()
+            .find(|o| o.entry(&ray, 1.0).is_some())
+            .map(|o| o.index)
     }
 
-    /// What the line of sight from `eye` to `target` hits first, and where
+    /// What the line of sight from `eye` to `target` hits first (its index
+    /// among the room's obstacles), and where
     /// along it (0 at the eye, 1 at the target; 0 for a box that holds the
     /// eye). The last `end_gap_mm` before the target is not checked, so
     /// that an object resting on a shelf is not hidden by the shelf.
@@ -104,8 +117,7 @@ impl Obstacles {
         let max = 1.0 - end_gap_mm / length;
         self.items
             .iter()
-            .enumerate()
-            .filter_map(|(i, o)| o.entry(&ray, max).map(|toi| (i, toi)))
+            .filter_map(|o| o.entry(&ray, max).map(|toi| (o.index, toi)))
             .min_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)))
     }
 }

@@ -152,6 +152,8 @@ pub enum ErrorKind {
     },
     #[error("option `{name}` of {plugin} must be given")]
     MissingOption { plugin: String, name: String },
+    #[error("{plugin}: {message}")]
+    BadOption { plugin: String, message: String },
 }
 
 impl ErrorKind {
@@ -178,7 +180,10 @@ impl ErrorKind {
             NoEffector { .. } => "reach::name",
             TooLarge { .. } | TooManyStarts { .. } => "reach::limit",
             FitsNowhere { .. } => "reach::scene",
-            UnknownPlugin { .. } | UnknownOption { .. } | MissingOption { .. } => "reach::plugin",
+            UnknownPlugin { .. }
+            | UnknownOption { .. }
+            | MissingOption { .. }
+            | BadOption { .. } => "reach::plugin",
         }
     }
 
@@ -225,6 +230,7 @@ impl ErrorKind {
             UnknownPlugin { kind, .. } => format!("no {kind} of this name"),
             UnknownOption { .. } => "unknown option".into(),
             MissingOption { .. } => "needs this option".into(),
+            BadOption { .. } => "here".into(),
         }
     }
 

@@ -3,15 +3,15 @@
 //! The pipeline, from text to report (ARCHITECTURE.md has the map):
 //! [`load`] reads the scenario file and everything it `use`s and parses
 //! each; [`check`] resolves names, evaluates expressions with units and
-//! validates plugin options into a [`scene::Scenario`]; [`run`] runs its
-//! tasks with the plugins of a [`plugin::Registry`] into a
-//! [`report::Report`], which an output format renders.
+//! validates plugin options against the plugins of a [`plugin::Registry`]
+//! and configures them into a [`scenario::Scenario`]; [`run`] runs its
+//! tasks into a [`report::Report`], which an output format renders.
 //!
 //! ```no_run
 //! let registry = reach::plugin::Registry::builtin();
 //! let (_sources, checked) = reach::check(reach::Input::Path("kitchen.reach".as_ref()), &registry);
 //! match checked {
-//!     Ok(scenario) => println!("{:?}", reach::run(&scenario, &registry).tasks),
+//!     Ok(scenario) => println!("{:?}", reach::run(&scenario).tasks),
 //!     Err(diagnostics) => eprintln!("{}", diagnostics.render(true)),
 //! }
 //! ```
@@ -32,6 +32,7 @@ pub mod output;
 pub mod plugin;
 pub mod progress;
 pub mod report;
+pub mod scenario;
 pub mod scene;
 pub mod solvers;
 pub mod source;
@@ -49,9 +50,9 @@ pub use error::{Diagnostics, Error, ErrorKind};
 pub use limits::Limits;
 pub use loader::Input;
 
-use plugin::{Registry, TaskContext};
+use plugin::Registry;
 use report::Report;
-use scene::Scenario;
+use scenario::Scenario;
 use source::Sources;
 
 /// Load and check a scenario within the default [`Limits`]. The sources
@@ -79,30 +80,16 @@ pub fn check_within(
 
 /// Run every task of a checked scenario, in parallel; the report lists them
 /// in the order of the file whatever the number of threads.
-pub fn run(scenario: &Scenario, registry: &Registry) -> Report {
-    run_with_progress(scenario, registry, &progress::NoProgress)
+pub fn run(scenario: &Scenario) -> Report {
+    run_with_progress(scenario, &progress::NoProgress)
 }
 
 /// [`run`], telling `progress` how long tasks (maps) advance.
-pub fn run_with_progress(
-    scenario: &Scenario,
-    registry: &Registry,
-    progress: &dyn progress::Progress,
-) -> Report {
+pub fn run_with_progress(scenario: &Scenario, progress: &dyn progress::Progress) -> Report {
     let tasks = scenario
         .tasks
         .par_iter()
-        .map(|task| {
-            let plugin = registry
-                .task(&task.kind)
-                .expect("the checker resolved every task kind");
-            plugin.run(&TaskContext {
-                scenario,
-                task,
-                registry,
-                progress,
-            })
-        })
+        .map(|task| task.task.run(&scenario.input(task, progress)))
         .collect();
     Report {
         schema: report::SCHEMA_VERSION,

@@ -17,7 +17,7 @@ use notify::event::ModifyKind;
 use notify::{EventKind, RecommendedWatcher, RecursiveMode, Watcher};
 use reach::cache::TaskCache;
 use reach::plugin::{FormatPlugin, Registry};
-use reach::report::{Report, TaskReport};
+use reach::report::{Answer, Report};
 use reach::{Input, Limits};
 
 /// A burst of events ends after this much quiet.
@@ -93,9 +93,7 @@ impl State {
         let mut screen = String::new();
         let summary = match checked {
             Ok(scenario) => {
-                let (report, stats) =
-                    self.cache
-                        .run(&scenario, registry, &reach::progress::NoProgress);
+                let (report, stats) = self.cache.run(&scenario, &reach::progress::NoProgress);
                 screen.push_str(&formatter.render(&report));
                 if let Some(dir) = out {
                     if let Err(e) = reach::output::write_outputs(&report, dir) {
@@ -213,62 +211,33 @@ fn absolute(path: &Path) -> PathBuf {
     std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf())
 }
 
-/// Which task results changed since `before`: "mug by ann: reachable -> NOT
-/// reachable", new and removed tasks too.
+/// Which answers changed since `before`: "mug by ann: reachable -> NOT
+/// reachable", new and removed tasks too. Answers compare by their
+/// verdict in words.
 fn changes(before: Option<&Report>, now: &Report) -> String {
     let Some(before) = before else {
         return "first results".to_string();
     };
-    let key = |t: &TaskReport| format!("{} {} by {}", t.kind(), t.name(), t.person());
+    let (before, now) = (before.answers(), now.answers());
+    let key = |a: &Answer| (a.task, a.subject.clone(), a.person.clone());
     let mut lines = Vec::new();
-    for t in &now.tasks {
-        match before.tasks.iter().find(|b| key(b) == key(t)) {
-            Some(b) if verdict(b) != verdict(t) => {
-                lines.push(format!(
-                    "{} by {}: {} -> {}",
-                    t.name(),
-                    t.person(),
-                    verdict(b),
-                    verdict(t)
-                ));
+    for a in &now {
+        match before.iter().find(|b| key(b) == key(a)) {
+            Some(b) if b.verdict != a.verdict => {
+                lines.push(format!("{}: {} -> {}", a.label(), b.verdict, a.verdict));
             }
             Some(_) => {}
-            None => lines.push(format!(
-                "{} by {}: new, {}",
-                t.name(),
-                t.person(),
-                verdict(t)
-            )),
+            None => lines.push(format!("{}: new, {}", a.label(), a.verdict)),
         }
     }
-    for b in &before.tasks {
-        if !now.tasks.iter().any(|t| key(t) == key(b)) {
-            lines.push(format!("{} by {}: removed", b.name(), b.person()));
+    for b in &before {
+        if !now.iter().any(|a| key(a) == key(b)) {
+            lines.push(format!("{}: removed", b.label()));
         }
     }
     if lines.is_empty() {
         "no result changed".to_string()
     } else {
         format!("changed: {}", lines.join("; "))
-    }
-}
-
-fn verdict(t: &TaskReport) -> String {
-    match t {
-        TaskReport::Reach(r) if r.ok => "reachable".into(),
-        TaskReport::Reach(_) => "NOT reachable".into(),
-        TaskReport::Gaze(g) if g.ok => "visible".into(),
-        TaskReport::Gaze(g) => format!("NOT visible ({})", g.reason.unwrap_or("?")),
-        TaskReport::ReachAndGaze(b) if b.ok => "reachable and visible".into(),
-        TaskReport::ReachAndGaze(b) => format!(
-            "{}, {}",
-            if b.reach.ok {
-                "reachable"
-            } else {
-                "NOT reachable"
-            },
-            if b.gaze.ok { "visible" } else { "NOT visible" }
-        ),
-        TaskReport::Map(m) => format!("{:.1} % reachable", m.fraction * 100.0),
     }
 }

@@ -3,10 +3,13 @@
 //! pose lies in the room and overlaps no obstacle below the clearance.
 
 use geo::{Area, BooleanOps, Coord, LineString, Polygon};
+use reach::bases::{TrolleySettings, WheelchairSettings};
 use reach::floor::Footprint;
 use reach::plugin::Registry;
+use reach::plugin::Settings;
 use reach::report::TaskReport;
-use reach::scene::{BoxObstacle, Scenario};
+use reach::scenario::Scenario;
+use reach::scene::BoxObstacle;
 use reach::Input;
 
 fn scenario(path: &str) -> Scenario {
@@ -34,7 +37,7 @@ fn outline(b: &BoxObstacle) -> Polygon<f64> {
 #[test]
 fn every_reported_base_pose_is_admissible() {
     let scenario = scenario("examples/kitchen_wheelchair.reach");
-    let report = reach::run(&scenario, &Registry::builtin());
+    let report = reach::run(&scenario);
     let room = &scenario.rooms[0];
     for task in &report.tasks {
         let TaskReport::Reach(r) = task else { continue };
@@ -42,14 +45,16 @@ fn every_reported_base_pose_is_admissible() {
         let (footprint, clearance) = match person.base.name.as_str() {
             "trolley" => (
                 Footprint::Circle {
-                    radius_mm: person.base.options.length_mm("radius"),
+                    radius_mm: TrolleySettings::from_options(&person.base.options)
+                        .unwrap()
+                        .radius_mm,
                 },
                 1900.0,
             ),
             "wheelchair" => {
-                let front = person.base.options.length_mm("hip_to_front");
-                let length = person.base.options.length_mm("length");
-                let width = person.base.options.length_mm("width");
+                let chair = WheelchairSettings::from_options(&person.base.options).unwrap();
+                let (front, length, width) =
+                    (chair.hip_to_front_mm, chair.length_mm, chair.width_mm);
                 (
                     Footprint::Rectangle {
                         front_mm: front,
@@ -93,7 +98,7 @@ fn every_reported_base_pose_is_admissible() {
 #[test]
 fn a_wheelchair_user_cannot_reach_what_a_standing_person_can() {
     let scenario = scenario("examples/kitchen_wheelchair.reach");
-    let report = reach::run(&scenario, &Registry::builtin());
+    let report = reach::run(&scenario);
     let reach = |target: &str, person: &str| {
         report
             .tasks

@@ -1,8 +1,11 @@
 //! Checker tests, table-driven: each bad scenario gives its messages, each
 //! pointing at the offending text; good ones give the values they mean.
 
-use reach::plugin::{Registry, Value};
-use reach::scene::Scenario;
+use reach::bases::FixedSettings;
+use reach::plugin::{Registry, Settings};
+use reach::scenario::Scenario;
+use reach::solvers::IncrementalSettings;
+use reach::tasks::ReachSettings;
 use reach::Input;
 
 const SCENE: &str = "
@@ -188,16 +191,14 @@ fn a_person_gets_the_mannequin_with_their_own_limits() {
         "{SCENE}person ann {{\n mannequin arm {{ limits elbow (10deg, 90deg) weight elbow 3 }}\n base fixed {{ at (900, 1200, 930) heading 90deg }}\n}}"
     );
     let s = ok(&text);
-    let elbow = &s.persons[0].chain.joints[1];
+    let elbow = &s.persons[0].body.chain(0).joints[1];
     assert!((elbow.min.to_degrees() - 10.0).abs() < 1e-9);
     assert!((elbow.max.to_degrees() - 90.0).abs() < 1e-9);
     assert_eq!(elbow.weight, 3.0);
     assert!((elbow.neutral.to_degrees() - 30.0).abs() < 1e-9);
     assert_eq!(s.persons[0].base.name, "fixed");
-    match s.persons[0].base.options.get("heading") {
-        Some(Value::Angle(a)) => assert!((a.to_degrees() - 90.0).abs() < 1e-9),
-        other => panic!("{other:?}"),
-    }
+    let base = FixedSettings::from_options(&s.persons[0].base.options).unwrap();
+    assert!((base.heading_rad.to_degrees() - 90.0).abs() < 1e-9);
 }
 
 #[test]
@@ -206,24 +207,25 @@ fn plugin_options_take_their_declared_defaults() {
         "{SCENE}person ann {{ mannequin arm base fixed {{ at (900, 1200, 930) }} }}\nreach mug by ann {{ solver incremental {{ rate 0.2 }} }}"
     );
     let s = ok(&text);
-    let task = &s.tasks[0];
-    assert_eq!(task.options.length_mm("tolerance"), 10.0);
-    let solver = task.options.plugin("solver");
-    assert_eq!(solver.name, "incremental");
-    assert_eq!(solver.options.number("rate"), 0.2);
-    assert_eq!(solver.options.number("gamma"), 3.0);
-    assert_eq!(solver.options.integer("stall"), 10);
-    assert_eq!(solver.options.integer("starts"), 6);
+    let ReachSettings(task) = ReachSettings::from_options(&s.tasks[0].options).unwrap();
+    assert_eq!(task.tolerance_mm, 10.0);
+    assert_eq!(task.solver.name, "incremental");
+    let solver = IncrementalSettings::from_options(&task.solver.options).unwrap();
+    assert_eq!(solver.rate, 0.2);
+    assert_eq!(solver.gamma, 3.0);
+    assert_eq!(solver.stall, 10);
+    assert_eq!(solver.starts, 6);
 }
 
 #[test]
 fn a_default_plugin_gets_its_own_default_options() {
     let text = format!("{SCENE}person ann {{ mannequin arm base fixed {{ at (900, 1200, 930) }} }}\nreach mug by ann");
     let s = ok(&text);
-    let solver = s.tasks[0].options.plugin("solver");
-    assert_eq!(solver.name, "incremental");
-    assert_eq!(solver.options.number("rate"), 0.05);
-    assert!(solver.options.boolean("incremental_fk"));
+    let ReachSettings(task) = ReachSettings::from_options(&s.tasks[0].options).unwrap();
+    assert_eq!(task.solver.name, "incremental");
+    let solver = IncrementalSettings::from_options(&task.solver.options).unwrap();
+    assert_eq!(solver.rate, 0.05);
+    assert!(solver.incremental_fk);
 }
 
 #[test]
@@ -235,7 +237,7 @@ fn one_task_per_subject_and_person_in_order() {
     let order: Vec<(&str, &str)> = s
         .tasks
         .iter()
-        .map(|t| (t.subject.as_str(), t.person.as_str()))
+        .map(|t| (t.subject_name(&s), s.persons[t.person].name.as_str()))
         .collect();
     assert_eq!(
         order,

@@ -10,7 +10,7 @@ use reach::Input;
 fn run(input: Input<'_>) -> Report {
     let registry = Registry::builtin();
     let (_, scenario) = reach::check(input, &registry);
-    reach::run(&scenario.expect("the scenario checks"), &registry)
+    reach::run(&scenario.expect("the scenario checks"))
 }
 
 fn gaze<'r>(report: &'r Report, target: &str, person: &str) -> &'r GazeReport {

@@ -180,7 +180,7 @@ proptest! {
                 prop_assert!(!diagnostics.render(true).is_empty());
             }
             Ok(scenario) => {
-                let report = reach::run(&scenario, &registry);
+                let report = reach::run(&scenario);
                 prop_assert_eq!(report.tasks.len(), scenario.tasks.len());
             }
         }

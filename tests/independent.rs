@@ -141,7 +141,7 @@ fn every_reported_posture_is_what_the_report_says() {
         let registry = Registry::builtin();
         let (_, scenario) = reach::check(Input::Path(example.as_ref()), &registry);
         let scenario = scenario.unwrap();
-        let report = reach::run(&scenario, &registry);
+        let report = reach::run(&scenario);
         for task in &report.tasks {
             let TaskReport::Reach(r) = task else { continue };
             let body = &scenario.person(&r.person).unwrap().body;
@@ -225,7 +225,7 @@ fn every_reported_gaze_is_what_the_report_says() {
     let registry = Registry::builtin();
     let (_, scenario) = reach::check(Input::Path("examples/gaze_shelf.reach".as_ref()), &registry);
     let scenario = scenario.unwrap();
-    let report = reach::run(&scenario, &registry);
+    let report = reach::run(&scenario);
     let mut checked = 0;
     for task in &report.tasks {
         let g = match task {
@@ -234,7 +234,7 @@ fn every_reported_gaze_is_what_the_report_says() {
             _ => continue,
         };
         let person = scenario.person(&g.person).unwrap();
-        let chain = person.chain_for(Some(&g.effector)).unwrap();
+        let chain = person.body.chain_named(Some(&g.effector)).unwrap();
         let n = chain.joints.len();
         for (joint, (_, value)) in chain.joints[..n - 1].iter().zip(&g.posture.0) {
             let (min, max) = (joint.min.to_degrees(), joint.max.to_degrees());

@@ -49,27 +49,33 @@ fn registering_adds_to_the_listing_and_validates_options() {
 fn every_plugin_builds_from_its_declared_defaults() {
     use reach::plugin::{Options, ParamSpec, Value};
     use reach::report::Report;
-    // A plugin must read only options it declares; required ones get a value.
+    // Options at their defaults; a required one (a fixed base's `at`) gets a
+    // point. Every plugin must build from them without an error.
     let fill = |params: Vec<ParamSpec>| {
         let mut o = Options::defaults(&params);
-        for p in params.iter().filter(|p| p.default.is_none()) {
-            o = Options::new(
-                o.iter()
-                    .cloned()
-                    .chain([(p.name, Value::Point(Default::default()))])
-                    .collect(),
-            );
+        for p in params.iter().filter(|p| p.default.is_none() && !p.optional) {
+            o = o.set(p.name, Value::Point(Default::default()));
         }
         o
     };
     let registry = Registry::builtin();
     for name in registry.names(PluginKind::Solver) {
         let p = registry.solver(name).unwrap();
-        p.build(&fill(p.params()));
+        if let Err(e) = p.build(&fill(p.params())) {
+            panic!("solver {name}: {e}");
+        }
     }
     for name in registry.names(PluginKind::Base) {
         let p = registry.base(name).unwrap();
-        p.build(&fill(p.params()));
+        if let Err(e) = p.build(&fill(p.params())) {
+            panic!("base {name}: {e}");
+        }
+    }
+    for name in registry.names(PluginKind::Task) {
+        let p = registry.task(name).unwrap();
+        if let Err(e) = p.configure(&fill(p.params()), &registry) {
+            panic!("task {name}: {e}");
+        }
     }
     for name in registry.names(PluginKind::Format) {
         let p = registry.format(name).unwrap();
@@ -79,4 +85,21 @@ fn every_plugin_builds_from_its_declared_defaults() {
             tasks: Vec::new(),
         });
     }
+}
+
+#[test]
+fn options_built_by_hand_that_miss_a_value_are_an_error_not_a_panic() {
+    use reach::plugin::{Options, Value};
+    let registry = Registry::builtin();
+    let fixed = registry.base("fixed").unwrap();
+    let missing = fixed
+        .build(&Options::default())
+        .err()
+        .expect("`at` is required");
+    assert_eq!(missing.to_string(), "option `at` must be given");
+    let params = fixed.params();
+    let at = params.iter().find(|p| p.name == "at").unwrap().name;
+    let wrong = Options::default().set(at, Value::Length(1.0));
+    let wrong = fixed.build(&wrong).err().expect("`at` is a point");
+    assert_eq!(wrong.to_string(), "option `at` must be a point (x, y, z)");
 }

@@ -6,7 +6,7 @@ use nalgebra::{Point3, Vector3};
 use proptest::prelude::*;
 use reach::collision::{Obstacles, PlacedObstacles};
 use reach::kinematics::{Chain, Dh, IncrementalFk, Joint, JointKind};
-use reach::plugin::{BasePose, IkProblem, IkSolution, Options, Registry, Solver, Value};
+use reach::plugin::{BasePose, IkProblem, IkSolution, Options, Registry, Settings, Solver, Value};
 use reach::scene::{BoxObstacle, Room};
 use reach::solvers::fabrik::{solve_tree, TreeGoal, TreeProblem};
 use reach::solvers::FabrikSettings;
@@ -74,9 +74,10 @@ fn solver(name: &str, set: &[(&str, Value)]) -> Box<dyn Solver> {
     let plugin = registry.solver(name).unwrap();
     let mut options = Options::defaults(&plugin.params());
     for (k, v) in set {
-        options = options.with(k, v.clone());
+        let name = plugin.params().iter().find(|p| p.name == *k).unwrap().name;
+        options = options.set(name, v.clone());
     }
-    plugin.build(&options)
+    plugin.build(&options).expect("the solver builds")
 }
 
 fn solve(solver: &dyn Solver, chain: &Chain, target: Point3<f64>, seed: u64) -> IkSolution {
@@ -212,12 +213,9 @@ proptest! {
             TreeGoal { effector: 0, target_mm: targets[0], weight: 1.0 },
             TreeGoal { effector: 1, target_mm: targets[1], weight: 0.1 },
         ];
-        let registry = Registry::builtin();
-        let plugin = registry.solver("fabrik").unwrap();
-        let o = Options::defaults(&plugin.params());
         let settings = FabrikSettings {
-            starts: 1, neutral_start: true, max_iterations: 50, stall: 4, sweeps: 2, samples: 5,
-            avoid_obstacles: true, kicks: 3, kick: o.number("kick"), ccd: true,
+            starts: 1, max_iterations: 50, samples: 5, kicks: 3,
+            ..FabrikSettings::with_defaults()
         };
         let s = solve_tree(&settings, &TreeProblem { body: &body, goals: &goals, tolerance_mm: 5.0, seed, obstacles: None });
         prop_assert!(whole.within_limits(&s.q));

@@ -35,7 +35,7 @@ fn run(tasks: &str) -> Report {
         &registry,
     );
     let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(true)));
-    reach::run(&scenario, &registry)
+    reach::run(&scenario)
 }
 
 fn reach_report(report: &Report, index: usize) -> &ReachReport {

@@ -138,12 +138,16 @@ person mum {
         .unwrap();
     assert!((elbow.max.to_degrees() - 143.0).abs() < 1e-9);
     assert_eq!(mum.base.name, "wheelchair");
-    assert_eq!(mum.base.options.length_mm("seat_height"), 538.0);
-    assert_eq!(mum.base.options.integer("headings"), 4);
-    let mar = match mum.vision.get("mar_far") {
-        Some(reach::plugin::Value::Angle(v)) => v.to_degrees() * 60.0,
-        other => panic!("{other:?}"),
-    };
+    use reach::plugin::Settings;
+    let chair = reach::bases::WheelchairSettings::from_options(&mum.base.options).unwrap();
+    assert_eq!(chair.seat_height_mm, 538.0);
+    assert_eq!(chair.headings, 4);
+    let mar = mum
+        .vision
+        .mar_far_rad
+        .expect("low_vision gives it")
+        .to_degrees()
+        * 60.0;
     assert!((mar - 6.0).abs() < 1e-9);
 }
 

@@ -25,8 +25,8 @@ fn chain_of(text: &str) -> reach::kinematics::Chain {
         &registry,
     );
     checked.expect("the scenario checks").persons[0]
-        .chain
-        .clone()
+        .body
+        .chain(0)
 }
 
 fn our_chain() -> reach::kinematics::Chain {
@@ -127,8 +127,8 @@ fn a_urdf_mannequin_reaches() {
         },
         &registry,
     );
-    let report = reach::run(&checked.unwrap(), &registry);
-    assert!(report.tasks[0].ok(), "{:?}", report.tasks[0]);
+    let report = reach::run(&checked.unwrap());
+    assert!(report.tasks[0].answer().ok, "{:?}", report.tasks[0]);
 }
 
 #[test]

@@ -21,8 +21,11 @@ use nalgebra::Point3;
 use rand_chacha::rand_core::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use reach::kinematics::Chain;
-use reach::plugin::{IkProblem, Options, Registry, Solver, Value};
+use reach::plugin::{IkProblem, Options, ParamKind, Settings, Solver, Value};
 use reach::solvers::random_posture;
+use reach::solvers::{
+    DlsSolver, FabrikSettings, FabrikSolver, IncrementalSettings, IncrementalSolver,
+};
 
 /// The paper's tolerance: 0.5 units, taken as centimetres.
 const TOLERANCE_MM: f64 = 5.0;
@@ -74,8 +77,7 @@ fn main() {
     let only_ours = args.iter().any(|a| a == "--only-incremental");
     let only_upper = args.iter().any(|a| a == "--only-upper-body");
     if only_upper {
-        let registry = Registry::builtin();
-        let upper = upper_body::rows(&registry, solves);
+        let upper = upper_body::rows(solves);
         return if json {
             print_json(&upper)
         } else {
@@ -85,9 +87,8 @@ fn main() {
 
     let chain = paper_chain();
     let targets = targets(&chain, solves);
-    let registry = Registry::builtin();
     let mut rows = Vec::new();
-    for (name, solver) in our_solvers(&registry, &overrides) {
+    for (name, solver) in our_solvers(&overrides) {
         if only_ours && !name.starts_with("incremental") {
             continue;
         }
@@ -109,7 +110,7 @@ fn main() {
     let upper = if only_ours {
         Vec::new()
     } else {
-        upper_body::rows(&registry, solves)
+        upper_body::rows(solves)
     };
     print_rows(&rows, json, &chain);
     if json {
@@ -133,52 +134,41 @@ fn targets(chain: &Chain, n: usize) -> Vec<Point3<f64>> {
 }
 
 /// The variants of the paper's table 1 and our solvers, by row name.
-fn our_solvers(
-    registry: &Registry,
-    overrides: &[(String, String)],
-) -> Vec<(String, Box<dyn Solver>)> {
-    let incremental = registry.solver("incremental").unwrap();
-    let mut defaults = Options::defaults(&incremental.params());
-    for (name, text) in overrides {
-        let value = match defaults.get(name) {
-            Some(Value::Number(_)) => Value::Number(text.parse().expect("a number")),
-            Some(Value::Length(_)) => Value::Length(text.parse().expect("a length in mm")),
-            Some(Value::Integer(_)) => Value::Integer(text.parse().expect("a whole number")),
-            Some(Value::Bool(_)) => Value::Bool(text.parse().expect("true or false")),
-            _ => panic!("--set {name}: not a number or bool option of incremental"),
-        };
-        defaults = defaults.with(name, value);
-    }
+fn our_solvers(overrides: &[(String, String)]) -> Vec<(String, Box<dyn Solver>)> {
+    let defaults = incremental_with(overrides);
     // The paper's algorithm and cost model: one random start, fixed
     // increments, the second direction tried only after the first.
-    let paper = defaults
-        .clone()
-        .with("starts", Value::Integer(1))
-        .with("neutral_start", Value::Bool(false))
-        .with("grow", Value::Number(1.0))
-        .with("shrink", Value::Number(1.0))
-        .with("eager_pair", Value::Bool(false));
+    let paper = IncrementalSettings {
+        starts: 1,
+        neutral_start: false,
+        grow: 1.0,
+        shrink: 1.0,
+        eager_pair: false,
+        ..defaults
+    };
     // Variants A-D: constant rate 0.015, stop when a sweep no longer improves.
-    let constant = paper
-        .clone()
-        .with("rate", Value::Number(0.015))
-        .with("gamma", Value::Number(1.0))
-        .with("threshold", Value::Length(0.0))
-        .with("stall", Value::Integer(1))
-        .with("stall_ratio", Value::Number(0.0));
-    let variant = |sign: bool, incremental_fk: bool| {
-        constant
-            .clone()
-            .with("sign_memory", Value::Bool(sign))
-            .with("incremental_fk", Value::Bool(incremental_fk))
+    let constant = IncrementalSettings {
+        rate: 0.015,
+        gamma: 1.0,
+        threshold_mm: 0.0,
+        stall: 1,
+        stall_ratio: 0.0,
+        ..paper
+    };
+    let variant = |sign_memory: bool, incremental_fk: bool| IncrementalSettings {
+        sign_memory,
+        incremental_fk,
+        ..constant
     };
     // Variant F: rate 0.5, divided by 3 when a sweep improves less than 0.1 units.
-    let f = paper
-        .with("rate", Value::Number(0.5))
-        .with("gamma", Value::Number(3.0))
-        .with("threshold", Value::Length(1.0))
-        .with("stall", Value::Integer(1_000_000));
-    let dls = registry.solver("dls").unwrap();
+    let f = IncrementalSettings {
+        rate: 0.5,
+        gamma: 3.0,
+        threshold_mm: 1.0,
+        stall: 1_000_000,
+        ..paper
+    };
+    let incremental = |settings| Box::new(IncrementalSolver { settings }) as Box<dyn Solver>;
     vec![
         ("A", variant(false, false)),
         ("B", variant(true, false)),
@@ -187,30 +177,57 @@ fn our_solvers(
         ("F", f),
         (
             "incremental",
-            defaults.clone().with("starts", Value::Integer(1)),
+            IncrementalSettings {
+                starts: 1,
+                ..defaults
+            },
         ),
         ("incremental-restarts", defaults),
     ]
     .into_iter()
-    .map(|(name, o)| (name.to_string(), incremental.build(&o)))
+    .map(|(name, settings)| (name.to_string(), incremental(settings)))
     .chain(std::iter::once((
         "dls".to_string(),
-        dls.build(&Options::defaults(&dls.params())),
+        Box::new(DlsSolver::with_defaults()) as Box<dyn Solver>,
     )))
-    .chain(fabrik_rows(registry))
+    .chain(fabrik_rows())
     .collect()
 }
 
+/// `incremental`'s defaults with the `--set OPTION=VALUE` overrides, read
+/// through its declared parameters as a scenario's would be.
+fn incremental_with(overrides: &[(String, String)]) -> IncrementalSettings {
+    let params = IncrementalSettings::params();
+    let mut options = Options::defaults(&params);
+    for (name, text) in overrides {
+        let Some(spec) = params.iter().find(|p| p.name == name) else {
+            panic!("--set {name}: incremental has no such option");
+        };
+        let value = match spec.kind {
+            ParamKind::Number => Value::Number(text.parse().expect("a number")),
+            ParamKind::Length => Value::Length(text.parse().expect("a length in mm")),
+            ParamKind::Integer => Value::Integer(text.parse().expect("a whole number")),
+            ParamKind::Bool => Value::Bool(text.parse().expect("true or false")),
+            _ => panic!("--set {name}: not a number or bool option of incremental"),
+        };
+        options = options.set(spec.name, value);
+    }
+    IncrementalSettings::from_options(&options).expect("the overrides are valid")
+}
+
 /// `fabrik` with one start and with its default restarts.
-fn fabrik_rows(registry: &Registry) -> Vec<(String, Box<dyn Solver>)> {
-    let fabrik = registry.solver("fabrik").unwrap();
-    let defaults = Options::defaults(&fabrik.params());
+fn fabrik_rows() -> Vec<(String, Box<dyn Solver>)> {
+    let defaults = FabrikSettings::with_defaults();
+    let fabrik = |settings| Box::new(FabrikSolver { settings }) as Box<dyn Solver>;
     vec![
         (
             "fabrik".to_string(),
-            fabrik.build(&defaults.clone().with("starts", Value::Integer(1))),
+            fabrik(FabrikSettings {
+                starts: 1,
+                ..defaults
+            }),
         ),
-        ("fabrik-restarts".to_string(), fabrik.build(&defaults)),
+        ("fabrik-restarts".to_string(), fabrik(defaults)),
     ]
 }
 

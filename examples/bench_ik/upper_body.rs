@@ -12,7 +12,7 @@ use rand_chacha::rand_core::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use reach::collision::{Obstacles, PlacedObstacles};
 use reach::kinematics::{Body, Chain};
-use reach::plugin::{BasePose, Options, Registry};
+use reach::plugin::{BasePose, Settings};
 use reach::scene::{BoxObstacle, Room};
 use reach::solvers::fabrik::{solve_tree, TreeGoal, TreeProblem};
 use reach::solvers::{random_posture, FabrikSettings};
@@ -88,18 +88,17 @@ fn targets(body: &Body, placed: Option<&PlacedObstacles<'_>>, n: usize) -> Vec<[
     out
 }
 
-fn settings(registry: &Registry) -> FabrikSettings {
-    let plugin = registry.solver("fabrik").expect("fabrik is built in");
+fn settings() -> FabrikSettings {
     FabrikSettings {
         starts: 1,
-        ..FabrikSettings::from_options(&Options::defaults(&plugin.params()))
+        ..FabrikSettings::with_defaults()
     }
 }
 
 /// The two rows: without and with the board.
-pub fn rows(registry: &Registry, solves: usize) -> Vec<Row> {
+pub fn rows(solves: usize) -> Vec<Row> {
     let body = body();
-    let settings = settings(registry);
+    let settings = settings();
     [
         ("fabrik-upper-body", false),
         ("fabrik-upper-body-box", true),

@@ -1,17 +1,44 @@
 //! The `fixed` base: the person's hip point at a given place and heading.
 
-use nalgebra::Point3;
+use nalgebra::{Point3, Vector3};
 
 use super::search::search;
 use crate::kinematics::Chain;
 use crate::plugin::{
-    Base, BasePlugin, BasePose, Options, ParamSpec, Placement, Plugin, PreparedBase, ReachQuery,
-    Solver,
+    Base, BasePlugin, BasePose, Options, ParamSpec, Params, Placement, Plugin, PreparedBase,
+    ReachQuery, Settings, SettingsError, Solver,
 };
-use crate::scene::Room;
+use crate::scene::{IkSolution, Room};
 
 /// The plugin `fixed`.
 pub struct Fixed;
+
+/// Its settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FixedSettings {
+    pub at_mm: Vector3<f64>,
+    pub heading_rad: f64,
+}
+
+impl Settings for FixedSettings {
+    fn visit(p: &mut Params<'_>) -> Self {
+        FixedSettings {
+            at_mm: p
+                .point(
+                    "at",
+                    "the hip point in the room: x, y on the floor and z its height",
+                )
+                .get(),
+            heading_rad: p
+                .angle(
+                    "heading",
+                    0.0,
+                    "the direction the person faces, counter-clockwise from the room's x axis",
+                )
+                .get(),
+        }
+    }
+}
 
 impl Plugin for Fixed {
     fn name(&self) -> &'static str {
@@ -23,28 +50,19 @@ impl Plugin for Fixed {
     }
 
     fn params(&self) -> Vec<ParamSpec> {
-        vec![
-            ParamSpec::point(
-                "at",
-                "the hip point in the room: x, y on the floor and z its height",
-            ),
-            ParamSpec::angle(
-                "heading",
-                0.0,
-                "the direction the person faces, counter-clockwise from the room's x axis",
-            ),
-        ]
+        FixedSettings::params()
     }
 }
 
 impl BasePlugin for Fixed {
-    fn build(&self, o: &Options) -> Box<dyn Base> {
-        Box::new(FixedBase {
+    fn build(&self, options: &Options) -> Result<Box<dyn Base>, SettingsError> {
+        let s = FixedSettings::from_options(options)?;
+        Ok(Box::new(FixedBase {
             pose: BasePose {
-                position_mm: Point3::from(o.point_mm("at")),
-                heading_rad: o.angle_rad("heading"),
+                position_mm: Point3::from(s.at_mm),
+                heading_rad: s.heading_rad,
             },
-        })
+        }))
     }
 }
 
@@ -73,6 +91,14 @@ struct Prepared<'a> {
 
 impl PreparedBase for Prepared<'_> {
     fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement {
-        search(query, self.chain, &[self.pose], solver).expect("one pose gives one placement")
+        search(query, self.chain, &[self.pose], solver).unwrap_or_else(|| Placement {
+            pose: self.pose,
+            solution: IkSolution::unsolved(self.chain),
+            retried: false,
+        })
+    }
+
+    fn candidates(&self, _target_room_mm: &Point3<f64>) -> Vec<BasePose> {
+        vec![self.pose]
     }
 }

@@ -8,19 +8,40 @@ mod search;
 mod trolley;
 mod wheelchair;
 
-pub use fixed::Fixed;
+pub use fixed::{Fixed, FixedSettings};
 pub use placement::Mobile;
-pub use trolley::Trolley;
-pub use wheelchair::Wheelchair;
+pub use trolley::{Trolley, TrolleySettings};
+pub use wheelchair::{Wheelchair, WheelchairSettings};
+
+use nalgebra::Vector3;
 
 use crate::floor::Zone;
-use crate::plugin::Options;
+use crate::plugin::{Params, SettingsError};
 
-/// The zone given by options `zone_from` and `zone_to`, if both are.
-fn zone(o: &Options) -> Option<Zone> {
-    let (a, b) = (o.point_mm_opt("zone_from")?, o.point_mm_opt("zone_to")?);
-    Some(Zone {
-        min: (a.x.min(b.x), a.y.min(b.y)),
-        max: (a.x.max(b.x), a.y.max(b.y)),
-    })
+/// The options `zone_from` and `zone_to` of a mobile base: two opposite
+/// corners of the floor zone, `what` standing for who stays in it.
+fn zone_params(p: &mut Params<'_>, what: &'static str) -> [Option<Vector3<f64>>; 2] {
+    [
+        p.optional_point("zone_from", what).get(),
+        p.optional_point("zone_to", "the opposite corner").get(),
+    ]
+}
+
+/// The zone two corners give: both or neither must be given.
+fn zone(corners: [Option<Vector3<f64>>; 2]) -> Result<Option<Zone>, SettingsError> {
+    match corners {
+        [Some(a), Some(b)] => Ok(Some(Zone {
+            min: (a.x.min(b.x), a.y.min(b.y)),
+            max: (a.x.max(b.x), a.y.max(b.y)),
+        })),
+        [None, None] => Ok(None),
+        [Some(_), None] => Err(SettingsError::invalid(
+            "zone_from",
+            "a zone needs `zone_to` too, its opposite corner",
+        )),
+        [None, Some(_)] => Err(SettingsError::invalid(
+            "zone_to",
+            "a zone needs `zone_from` too, its opposite corner",
+        )),
+    }
 }

@@ -117,6 +117,10 @@ impl PreparedBase for PreparedMobile<'_> {
         let poses = self.candidates(&query.target_room_mm);
         search(query, self.chain, &poses, solver).unwrap_or_else(|| nowhere(self.room, self.chain))
     }
+
+    fn candidates(&self, target_room_mm: &Point3<f64>) -> Vec<BasePose> {
+        PreparedMobile::candidates(self, target_room_mm)
+    }
 }
 
 /// The admissible point nearest to `p` (itself if admissible).
@@ -157,12 +161,7 @@ fn nowhere(room: &Room, chain: &Chain) -> Placement {
             position_mm: Point3::new(room.size_mm.x / 2.0, room.size_mm.y / 2.0, 0.0),
             heading_rad: 0.0,
         },
-        solution: IkSolution {
-            q: chain.neutral(),
-            distance_mm: f64::INFINITY,
-            iterations: 0,
-            collision: None,
-        },
+        solution: IkSolution::unsolved(chain),
         retried: false,
     }
 }

@@ -14,6 +14,7 @@
 
 use crate::kinematics::Chain;
 use crate::plugin::{BasePose, Placement, ReachQuery, Retry, Search, Solver};
+use crate::scene::Preferred;
 
 /// The placement kept over `poses` (none when there are no poses).
 pub fn search(
@@ -22,7 +23,7 @@ pub fn search(
     poses: &[BasePose],
     solver: &dyn Solver,
 ) -> Option<Placement> {
-    let mut best = Best::new(chain, query.tolerance_mm);
+    let mut best = Preferred::new(query.tolerance_mm);
     let mut blocked = Vec::new();
     for &pose in poses {
         let placement = query.solve_at(chain, pose, solver);
@@ -31,15 +32,16 @@ pub fn search(
         {
             blocked.push(pose);
         }
-        best.offer(placement);
+        let comfort = chain.discomfort(&placement.solution.q);
+        best.offer(placement, comfort);
         if best.reaches() && query.search == Search::FirstReaching {
-            return best.kept();
+            return best.into_kept();
         }
     }
     if let (false, Some(retry)) = (best.reaches(), query.retry) {
         retry_blocked(query, chain, &blocked, retry, &mut best);
     }
-    best.kept()
+    best.into_kept()
 }
 
 /// Try again from the first `retry.placements` of the `blocked` poses (the
@@ -50,56 +52,15 @@ fn retry_blocked(
     chain: &Chain,
     blocked: &[BasePose],
     retry: Retry<'_>,
-    best: &mut Best<'_>,
+    best: &mut Preferred<Placement>,
 ) {
     for &pose in blocked.iter().take(retry.placements) {
         let mut placement = query.retried().solve_at(chain, pose, retry.solver);
         placement.retried = true;
-        best.offer(placement);
+        let comfort = chain.discomfort(&placement.solution.q);
+        best.offer(placement, comfort);
         if best.reaches() {
             return;
         }
-    }
-}
-
-/// The best placement so far and its discomfort.
-struct Best<'a> {
-    chain: &'a Chain,
-    tolerance_mm: f64,
-    kept: Option<(Placement, f64)>,
-}
-
-impl<'a> Best<'a> {
-    fn new(chain: &'a Chain, tolerance_mm: f64) -> Self {
-        Best {
-            chain,
-            tolerance_mm,
-            kept: None,
-        }
-    }
-
-    fn offer(&mut self, placement: Placement) {
-        let comfort = self.chain.discomfort(&placement.solution.q);
-        let better = self.kept.as_ref().is_none_or(|(kept, kept_comfort)| {
-            placement.solution.preferred_to(
-                comfort,
-                &kept.solution,
-                *kept_comfort,
-                self.tolerance_mm,
-            )
-        });
-        if better {
-            self.kept = Some((placement, comfort));
-        }
-    }
-
-    fn reaches(&self) -> bool {
-        self.kept
-            .as_ref()
-            .is_some_and(|(kept, _)| kept.solution.reaches(self.tolerance_mm))
-    }
-
-    fn kept(self) -> Option<Placement> {
-        self.kept.map(|(placement, _)| placement)
     }
 }

@@ -2,15 +2,62 @@
 //! hip point is at standing hip height; the footprint is a circle, so
 //! turning does not change where it fits (section 4.3 of the paper).
 
+use nalgebra::Vector3;
+
 use super::placement::Mobile;
-use super::zone;
+use super::{zone, zone_params};
 use crate::floor::Footprint;
 use crate::kinematics::Chain;
-use crate::plugin::{Base, BasePlugin, Options, ParamSpec, Plugin, PreparedBase};
+use crate::plugin::{
+    Base, BasePlugin, Options, ParamSpec, Params, Plugin, PreparedBase, Settings, SettingsError,
+};
 use crate::scene::Room;
 
 /// The plugin `trolley`.
 pub struct Trolley;
+
+/// Its settings.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TrolleySettings {
+    pub radius_mm: f64,
+    pub hip_height_mm: f64,
+    pub clearance_mm: f64,
+    pub headings: u32,
+    pub zone_mm: [Option<Vector3<f64>>; 2],
+}
+
+impl Settings for TrolleySettings {
+    fn visit(p: &mut Params<'_>) -> Self {
+        TrolleySettings {
+            radius_mm: p
+                .length("radius", 450.0, "the circle the person and trolley need")
+                .range(100.0, 2000.0)
+                .get(),
+            // 0.530 x 1755 mm: hip height of the 50th-percentile man (human-data.md).
+            hip_height_mm: p
+                .length(
+                    "hip_height",
+                    930.0,
+                    "height of the hip point (the chain's base)",
+                )
+                .range(200.0, 1500.0)
+                .get(),
+            clearance_mm: p
+                .length(
+                    "clearance",
+                    1900.0,
+                    "obstacles whose bottom is lower than this block the floor",
+                )
+                .range(0.0, 5000.0)
+                .get(),
+            headings: p
+                .integer("headings", 16, "directions tried to face the target")
+                .range(1.0, 360.0)
+                .get() as u32,
+            zone_mm: zone_params(p, "one corner of the floor zone the person must stay in"),
+        }
+    }
+}
 
 impl Plugin for Trolley {
     fn name(&self) -> &'static str {
@@ -22,44 +69,22 @@ impl Plugin for Trolley {
     }
 
     fn params(&self) -> Vec<ParamSpec> {
-        vec![
-            ParamSpec::length("radius", 450.0, "the circle the person and trolley need")
-                .range(100.0, 2000.0),
-            // 0.530 x 1755 mm: hip height of the 50th-percentile man (human-data.md).
-            ParamSpec::length(
-                "hip_height",
-                930.0,
-                "height of the hip point (the chain's base)",
-            )
-            .range(200.0, 1500.0),
-            ParamSpec::length(
-                "clearance",
-                1900.0,
-                "obstacles whose bottom is lower than this block the floor",
-            )
-            .range(0.0, 5000.0),
-            ParamSpec::integer("headings", 16, "directions tried to face the target")
-                .range(1.0, 360.0),
-            ParamSpec::optional_point(
-                "zone_from",
-                "one corner of the floor zone the person must stay in",
-            ),
-            ParamSpec::optional_point("zone_to", "the opposite corner"),
-        ]
+        TrolleySettings::params()
     }
 }
 
 impl BasePlugin for Trolley {
-    fn build(&self, o: &Options) -> Box<dyn Base> {
-        Box::new(Mobile {
+    fn build(&self, options: &Options) -> Result<Box<dyn Base>, SettingsError> {
+        let s = TrolleySettings::from_options(options)?;
+        Ok(Box::new(Mobile {
             footprint: Footprint::Circle {
-                radius_mm: o.length_mm("radius"),
+                radius_mm: s.radius_mm,
             },
-            hip_height_mm: o.length_mm("hip_height"),
-            clearance_mm: o.length_mm("clearance"),
-            headings: o.integer("headings") as u32,
-            zone: zone(o),
-        })
+            hip_height_mm: s.hip_height_mm,
+            clearance_mm: s.clearance_mm,
+            headings: s.headings,
+            zone: zone(s.zone_mm)?,
+        }))
     }
 }
 

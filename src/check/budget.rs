@@ -5,20 +5,28 @@
 //! beyond it is refused before it runs, at the task declaration that asks
 //! the most.
 
+use std::sync::Arc;
+
 use super::Checker;
 use crate::error::{Error, ErrorKind};
-use crate::plugin::{Options, Value};
-use crate::scene::{Person, Room, TaskSpec};
+use crate::plugin::Base;
+use crate::scenario::TaskSpec;
+use crate::scene::Room;
 use crate::span::Span;
 
 impl Checker<'_> {
     /// Refuse the tasks if together they may need more solver starts than
     /// the limit.
-    pub(super) fn check_budget(&mut self, tasks: &[TaskSpec], rooms: &[Room], persons: &[Person]) {
+    pub(super) fn check_budget(
+        &mut self,
+        tasks: &[TaskSpec],
+        rooms: &[Room],
+        bases: &[Arc<dyn Base>],
+    ) {
         // Per declaration (one declaration gives a task per subject and person).
         let mut by_decl: Vec<(Span, u64)> = Vec::new();
         for task in tasks {
-            let starts = self.task_starts(task, rooms, persons);
+            let starts = task_starts(task, rooms, bases);
             let same = |span: &Span| (span.file, span.start) == (task.span.file, task.span.start);
             match by_decl.iter_mut().find(|(span, _)| same(span)) {
                 Some((_, sum)) => *sum = sum.saturating_add(starts),
@@ -43,43 +51,13 @@ impl Checker<'_> {
             span,
         ));
     }
+}
 
-    /// The most solver starts `task` may need.
-    fn task_starts(&self, task: &TaskSpec, rooms: &[Room], persons: &[Person]) -> u64 {
-        let (Some(plugin), Some(room), Some(person)) = (
-            self.registry.task(&task.kind),
-            rooms.iter().find(|r| r.holds(&task.subject)),
-            persons.iter().find(|p| p.name == task.person),
-        ) else {
-            return 0;
-        };
-        let placements = self
-            .registry
-            .base(&person.base.name)
-            .map_or(1, |b| b.build(&person.base.options).placements());
-        let points = plugin.points(room, &task.subject, &task.options);
-        let per_placement = self.starts_of(&task.options, "solver");
-        let retries = match (
-            task.options.get("blocked_retries"),
-            task.options.get("collisions"),
-        ) {
-            (Some(Value::Integer(n)), Some(Value::Bool(true))) => (*n as u64).min(placements),
-            _ => 0,
-        };
-        let per_point = placements.saturating_mul(per_placement).saturating_add(
-            retries.saturating_mul(self.starts_of(&task.options, "blocked_solver")),
-        );
-        points.saturating_mul(per_point)
-    }
-
-    /// The starts of the solver that option `option` names (1 without one).
-    fn starts_of(&self, options: &Options, option: &str) -> u64 {
-        match options.get(option) {
-            Some(Value::Plugin(config)) => self
-                .registry
-                .solver(&config.name)
-                .map_or(1, |s| s.starts(&config.options)),
-            _ => 1,
-        }
-    }
+/// The most solver starts `task` may need.
+fn task_starts(task: &TaskSpec, rooms: &[Room], bases: &[Arc<dyn Base>]) -> u64 {
+    let placements = bases[task.person].placements();
+    let subject = task.subject_in(&rooms[task.room]);
+    task.task
+        .points(&subject)
+        .saturating_mul(task.task.starts_per_point(placements))
 }

@@ -1,8 +1,8 @@
 //! The semantic pass: from the syntax trees of the loaded files to a
 //! [`Scenario`]. Resolves every name, evaluates every expression with unit
 //! checking, validates every plugin option block against the plugin's
-//! declared parameters, and reports every error it finds, not just the
-//! first.
+//! declared parameters and builds the plugin from it, and reports every
+//! error it finds, not just the first.
 
 mod budget;
 mod eval;
@@ -23,7 +23,7 @@ use crate::kinematics::Body;
 use crate::limits::Limits;
 use crate::loader::LoadedFile;
 use crate::plugin::Registry;
-use crate::scene::Scenario;
+use crate::scenario::Scenario;
 use crate::source::Sources;
 use crate::span::{FileId, Spanned};
 use crate::syntax::ast::{Item, LetDecl};
@@ -49,16 +49,17 @@ pub fn check(
     c.evaluate_lets();
     let rooms = c.rooms();
     c.build_mannequins();
-    let persons = c.persons();
-    let tasks = c.tasks(&rooms, &persons);
+    let (persons, bases): (Vec<_>, Vec<_>) = c.persons().into_iter().unzip();
+    let tasks = c.tasks(&rooms, &persons, &bases);
     if c.errors.is_empty() {
-        c.check_budget(&tasks, &rooms, &persons);
+        c.check_budget(&tasks, &rooms, &bases);
     }
     let result = if c.errors.is_empty() {
         Ok(Scenario {
             file: sources.get(root).name.clone(),
             rooms,
             persons,
+            bases,
             tasks,
         })
     } else {

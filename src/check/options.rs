@@ -5,7 +5,7 @@ use super::eval::fmt_num;
 use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::names::suggest;
-use crate::plugin::{Options, ParamKind, ParamSpec, Value};
+use crate::options::{Options, ParamKind, ParamSpec, SettingsError, Value};
 use crate::span::Span;
 use crate::syntax::ast::{ExprKind, OptionDecl, OptionValue, PluginUse};
 
@@ -94,7 +94,7 @@ impl Checker<'_> {
                 };
                 let mut config = self.plugin_config(kind, &use_)?;
                 for (name, value) in cfg.options.iter() {
-                    config.options = config.options.with(name, value.clone());
+                    config.options = config.options.set(name, value.clone());
                 }
                 Some(Value::Plugin(config))
             }
@@ -138,6 +138,29 @@ impl Checker<'_> {
             (_, other) => return self.mismatch(spec, describe(other), opt.value_span),
         };
         self.in_range(spec, &value, opt.value_span).then_some(value)
+    }
+
+    /// A plugin that could not be built from its options (`label`: the
+    /// plugin, `given`: its block): reported at the option the error names
+    /// if the block gives it, else at `at`.
+    pub(super) fn settings_error(
+        &mut self,
+        label: &str,
+        e: &SettingsError,
+        given: &[OptionDecl],
+        at: Span,
+    ) {
+        let span = given
+            .iter()
+            .find(|o| o.name.value == e.option)
+            .map_or(at, |o| o.value_span);
+        self.error(Error::new(
+            ErrorKind::BadOption {
+                plugin: label.to_string(),
+                message: e.to_string(),
+            },
+            span,
+        ));
     }
 
     fn mismatch(&mut self, spec: &ParamSpec, found: &str, span: Span) -> Option<Value> {

@@ -1,17 +1,21 @@
 //! Persons: a mannequin with this person's own joint limits, neutral values
 //! and weights, and a base.
 
+use std::sync::Arc;
+
 use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::kinematics::{Body, Joint, JointKind};
 use crate::names::suggest;
-use crate::plugin::{Options, PluginConfig, PluginKind, Value};
-use crate::scene::Person;
+use crate::options::{Options, PluginConfig, PluginKind, Settings};
+use crate::plugin::Base;
+use crate::scene::{Person, Vision};
 use crate::span::Name;
 use crate::syntax::ast::{self, JointOverride, OptionDecl, PersonDecl, PersonMannequin};
 
 impl Checker<'_> {
-    pub(super) fn persons(&mut self) -> Vec<Person> {
+    /// The persons, each with their base built.
+    pub(super) fn persons(&mut self) -> Vec<(Person, Arc<dyn Base>)> {
         let decls: Vec<_> = self.persons.iter().map(|(_, d, f)| (d, f)).collect();
         decls
             .into_iter()
@@ -19,7 +23,7 @@ impl Checker<'_> {
             .collect()
     }
 
-    fn person(&mut self, decl: &PersonDecl) -> Option<Person> {
+    fn person(&mut self, decl: &PersonDecl) -> Option<(Person, Arc<dyn Base>)> {
         let owner = format!("person `{}`", decl.name.value);
         let mannequin = self.one_of(
             &decl.mannequins,
@@ -28,18 +32,21 @@ impl Checker<'_> {
             "mannequin",
             decl.name.span,
         );
-        let base = self.one_of(&decl.bases, |b| b.span, &owner, "base", decl.name.span);
+        let base_use = self.one_of(&decl.bases, |b| b.span, &owner, "base", decl.name.span);
         let body = mannequin.and_then(|m| self.person_body(m));
-        let base = base.and_then(|b| self.base_config(b));
+        let base = base_use.and_then(|b| self.base_config(b));
+        let built = base_use
+            .zip(base.as_ref())
+            .and_then(|(b, config)| self.build_base(b, config));
         let vision = self.person_vision(&decl.visions);
-        Some(Person {
+        let person = Person {
             name: decl.name.value.clone(),
             mannequin: mannequin?.mannequin.name.value.clone(),
-            chain: body.as_ref()?.chain(0),
             body: body?,
             base: base?,
             vision: vision?,
-        })
+        };
+        Some((person, built?))
     }
 
     /// A base plugin, or a base preset (`base power_chair = wheelchair
@@ -60,24 +67,46 @@ impl Checker<'_> {
             span: b.span,
         };
         let own = self.plugin_config(PluginKind::Base, &own)?;
-        for given in &b.options {
-            if let Some(value) = own.options.get(&given.name.value) {
-                config.options = config.options.with(&given.name.value, value.clone());
+        for (name, value) in own.options.iter() {
+            if b.options.iter().any(|given| given.name.value == *name) {
+                config.options = config.options.set(name, value.clone());
             }
         }
         Some(config)
     }
 
-    /// The person's vision settings: a preset's options, then their own;
-    /// only the options given (a gaze task's own options come first, then
-    /// these, then the defaults).
-    fn person_vision(&mut self, visions: &[ast::PersonVision]) -> Option<Options> {
+    /// The base `config` gives, built; an error at the option it names (in
+    /// the person's block, else the preset's) if it cannot be.
+    fn build_base(&mut self, b: &ast::PluginUse, config: &PluginConfig) -> Option<Arc<dyn Base>> {
+        let plugin = self.registry.base(&config.name)?.clone();
+        match plugin.build(&config.options) {
+            Ok(base) => Some(Arc::from(base)),
+            Err(e) => {
+                let label = format!("base `{}`", config.name);
+                let given = b.options.iter().any(|o| o.name.value == e.option);
+                match self.base_presets.get(&b.name.value) {
+                    Some((preset, file)) if !given => {
+                        let options = preset.plugin.options.clone();
+                        let span = preset.plugin.span;
+                        self.in_file(file, |c| c.settings_error(&label, &e, &options, span));
+                    }
+                    _ => self.settings_error(&label, &e, &b.options, b.span),
+                }
+                None
+            }
+        }
+    }
+
+    /// The person's vision settings: a preset's, then their own over them;
+    /// only those given (a gaze task's own come first, then these, then the
+    /// defaults).
+    fn person_vision(&mut self, visions: &[ast::PersonVision]) -> Option<Vision> {
         self.repeated(visions.iter().skip(1).map(|v| v.span), "`vision`");
         let Some(vision) = visions.first() else {
-            return Some(Options::default());
+            return Some(Vision::default());
         };
-        let params = crate::tasks::person_vision_params();
-        let mut given: Vec<(&'static str, Value)> = Vec::new();
+        let params = Vision::params();
+        let mut preset_vision = Vision::default();
         if let Some(name) = &vision.preset {
             let (preset, file) = match self.vision_presets.resolve(name) {
                 Ok(found) => found,
@@ -90,14 +119,27 @@ impl Checker<'_> {
             let options = self.in_file(file, |c| {
                 c.options(&label, &params, &preset.options, preset.span)
             })?;
-            given.extend(explicit(&options, &preset.options));
+            preset_vision = self.vision_of(&label, &options, &preset.options, preset.span)?;
         }
         let options = self.options("`vision`", &params, &vision.options, vision.span)?;
-        for (name, value) in explicit(&options, &vision.options) {
-            given.retain(|(n, _)| *n != name);
-            given.push((name, value));
+        let own = self.vision_of("`vision`", &options, &vision.options, vision.span)?;
+        Some(own.or(&preset_vision))
+    }
+
+    fn vision_of(
+        &mut self,
+        label: &str,
+        options: &Options,
+        given: &[OptionDecl],
+        at: crate::span::Span,
+    ) -> Option<Vision> {
+        match Vision::from_options(options) {
+            Ok(v) => Some(v),
+            Err(e) => {
+                self.settings_error(label, &e, given, at);
+                None
+            }
         }
-        Some(Options::new(given))
     }
 
     /// Exactly one of `items`: errors for none and for each extra one.
@@ -236,13 +278,4 @@ impl Checker<'_> {
             options,
         })
     }
-}
-
-/// The values of `options` that `given` names.
-fn explicit(options: &Options, given: &[OptionDecl]) -> Vec<(&'static str, Value)> {
-    options
-        .iter()
-        .filter(|(name, _)| given.iter().any(|g| g.name.value == *name))
-        .cloned()
-        .collect()
 }

@@ -1,20 +1,32 @@
 //! Tasks: `KIND subjects by persons { options }`, one task per subject and
-//! person, each validated against its task plugin.
+//! person, each configured by its task plugin and resolved: its room,
+//! subject, person and effectors by index.
+
+use std::sync::Arc;
 
 use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::names::suggest;
-use crate::plugin::{Options, PluginKind, SubjectKind, TaskPlugin, Value};
-use crate::scene::{Person, Room, TaskSpec, FACES};
-use crate::span::Spanned;
+use crate::plugin::{Base, PluginKind, SubjectKind, Task};
+use crate::scenario::{SubjectRef, TaskSpec};
+use crate::scene::{Person, Room, FACES};
+use crate::span::{Span, Spanned};
 use crate::syntax::ast::TaskDecl;
 
+/// A task's subject resolved: its room and the subject there.
+type Resolved = (usize, SubjectRef);
+
 impl Checker<'_> {
-    pub(super) fn tasks(&mut self, rooms: &[Room], persons: &[Person]) -> Vec<TaskSpec> {
+    pub(super) fn tasks(
+        &mut self,
+        rooms: &[Room],
+        persons: &[Person],
+        bases: &[Arc<dyn Base>],
+    ) -> Vec<TaskSpec> {
         let decls = std::mem::take(&mut self.tasks);
         let mut out = Vec::new();
         for (decl, file) in decls {
-            if let Some(tasks) = self.in_file(file, |c| c.task(decl, rooms, persons)) {
+            if let Some(tasks) = self.in_file(file, |c| c.task(decl, rooms, persons, bases)) {
                 out.extend(tasks);
             }
         }
@@ -26,6 +38,7 @@ impl Checker<'_> {
         decl: &TaskDecl,
         rooms: &[Room],
         persons: &[Person],
+        bases: &[Arc<dyn Base>],
     ) -> Option<Vec<TaskSpec>> {
         let kind = &decl.kind;
         let Some(plugin) = self.registry.task(&kind.value).cloned() else {
@@ -43,34 +56,45 @@ impl Checker<'_> {
         };
         let label = format!("task `{}`", kind.value);
         let options = self.options(&label, &plugin.params(), &decl.options, decl.span);
-        let subjects: Vec<Option<String>> = decl
+        let subjects: Vec<Option<Resolved>> = decl
             .subjects
             .iter()
             .map(|s| self.subject(plugin.subject(), s, rooms))
             .collect();
-        let people: Vec<Option<String>> = decl
+        let people: Vec<Option<usize>> = decl
             .persons
             .iter()
             .map(|p| self.person_ref(p, persons))
             .collect();
         let options = options?;
-        let subjects: Vec<String> = subjects.into_iter().collect::<Option<_>>()?;
-        let people: Vec<String> = people.into_iter().collect::<Option<_>>()?;
-        self.check_bases_fit(decl, &subjects, &people, rooms, persons);
-        self.check_effector(plugin.as_ref(), decl, &options, &people, persons);
-        for (subject, at) in subjects.iter().zip(&decl.subjects) {
-            let room = rooms.iter().find(|r| r.holds(subject));
-            if let Some(kind) = room.and_then(|r| plugin.validate(r, subject, &options)) {
+        let subjects: Vec<Resolved> = subjects.into_iter().collect::<Option<_>>()?;
+        let people: Vec<usize> = people.into_iter().collect::<Option<_>>()?;
+        let task: Arc<dyn Task> = match plugin.configure(&options, self.registry) {
+            Ok(task) => Arc::from(task),
+            Err(e) => {
+                self.settings_error(&label, &e, &decl.options, decl.span);
+                return None;
+            }
+        };
+        self.check_bases_fit(decl, &subjects, &people, rooms, persons, bases);
+        let effectors = self.task_effectors(task.as_ref(), decl, &people, persons);
+        for ((room, subject), at) in subjects.iter().zip(&decl.subjects) {
+            let spec = subject.in_room(&rooms[*room]);
+            if let Some(kind) = task.validate(&spec) {
                 self.error(Error::new(kind, at.span));
             }
         }
         let mut tasks = Vec::new();
-        for subject in &subjects {
-            for person in &people {
+        for (room, subject) in &subjects {
+            for (person, effectors) in people.iter().zip(&effectors) {
+                let Some(effectors) = effectors else { continue };
                 tasks.push(TaskSpec {
                     kind: kind.value.clone(),
+                    task: Arc::clone(&task),
+                    room: *room,
                     subject: subject.clone(),
-                    person: person.clone(),
+                    person: *person,
+                    effectors: effectors.clone(),
                     options: options.clone(),
                     span: decl.span,
                 });
@@ -79,40 +103,45 @@ impl Checker<'_> {
         Some(tasks)
     }
 
-    /// Each option naming an effector must name one of every person's
-    /// body, and the task must accept each person's chain to it.
-    fn check_effector(
+    /// Each effector the task names, for each person: an index into the
+    /// person's body, and a chain the task accepts. `None` for a person
+    /// whose body lacks one (the error is reported).
+    fn task_effectors(
         &mut self,
-        plugin: &dyn TaskPlugin,
+        task: &dyn Task,
         decl: &TaskDecl,
-        options: &Options,
-        people: &[String],
+        people: &[usize],
         persons: &[Person],
-    ) {
-        for option in plugin.effector_options() {
-            let effector = match options.get(option) {
-                Some(Value::Name(e)) => Some(e.as_str()),
-                _ => None,
-            };
-            let at = decl.options.iter().find(|o| o.name.value == *option);
-            for (person, name) in people.iter().zip(&decl.persons) {
-                let Some(person) = persons.iter().find(|p| &p.name == person) else {
-                    continue;
+    ) -> Vec<Option<Vec<usize>>> {
+        let mut found: Vec<Option<Vec<usize>>> = vec![Some(Vec::new()); people.len()];
+        for (need_index, need) in task.effectors().iter().enumerate() {
+            let at = decl.options.iter().find(|o| o.name.value == need.option);
+            for ((&person, name), slot) in people.iter().zip(&decl.persons).zip(&mut found) {
+                let person = &persons[person];
+                let index = match &need.name {
+                    None => Some(0),
+                    Some(effector) => person.body.effector_index(effector),
                 };
-                let Some(chain) = person.chain_for(effector) else {
+                let Some(index) = index else {
                     // Where the file names the effector, or else at the person.
                     let span = at.map_or(name.span, |o| o.value_span);
-                    self.no_effector(person, effector.unwrap_or_default(), span);
+                    self.no_effector(person, need.name.as_deref().unwrap_or_default(), span);
+                    *slot = None;
                     continue;
                 };
-                if let Some(kind) = plugin.validate_chain(&person.name, option, &chain, options) {
+                let chain = person.body.chain(index);
+                if let Some(kind) = task.validate_chain(&person.name, need_index, &chain) {
                     self.error(Error::new(kind, name.span));
+                }
+                if let Some(indices) = slot {
+                    indices.push(index);
                 }
             }
         }
+        found
     }
 
-    fn no_effector(&mut self, person: &Person, effector: &str, span: crate::span::Span) {
+    fn no_effector(&mut self, person: &Person, effector: &str, span: Span) {
         let names: Vec<&str> = person
             .body
             .effectors
@@ -130,38 +159,29 @@ impl Checker<'_> {
         ));
     }
 
-    /// Each person's base must fit somewhere in the room of each target.
+    /// Each person's base must fit somewhere in the room of each subject.
     fn check_bases_fit(
         &mut self,
         decl: &TaskDecl,
-        subjects: &[String],
-        people: &[String],
+        subjects: &[Resolved],
+        people: &[usize],
         rooms: &[Room],
         persons: &[Person],
+        bases: &[Arc<dyn Base>],
     ) {
-        for (name, name_decl) in people.iter().zip(&decl.persons) {
-            let Some(person) = persons.iter().find(|p| &p.name == name) else {
-                continue;
-            };
-            let Some(plugin) = self.registry.base(&person.base.name).cloned() else {
-                continue;
-            };
-            let base = plugin.build(&person.base.options);
-            let mut checked: Vec<&str> = Vec::new();
-            for subject in subjects {
-                let Some(room) = rooms.iter().find(|r| r.holds(subject)) else {
-                    continue;
-                };
-                if checked.contains(&room.name.as_str()) {
+        for (&person, name_decl) in people.iter().zip(&decl.persons) {
+            let mut checked: Vec<usize> = Vec::new();
+            for (room, _) in subjects {
+                if checked.contains(room) {
                     continue;
                 }
-                checked.push(&room.name);
-                if !base.fits(room) {
+                checked.push(*room);
+                if !bases[person].fits(&rooms[*room]) {
                     self.error(Error::new(
                         ErrorKind::FitsNowhere {
-                            person: name.clone(),
-                            base: person.base.name.clone(),
-                            room: room.name.clone(),
+                            person: persons[person].name.clone(),
+                            base: persons[person].base.name.clone(),
+                            room: rooms[*room].name.clone(),
                         },
                         name_decl.span,
                     ));
@@ -175,23 +195,25 @@ impl Checker<'_> {
         kind: SubjectKind,
         s: &Spanned<Vec<String>>,
         rooms: &[Room],
-    ) -> Option<String> {
+    ) -> Option<Resolved> {
         match kind {
             SubjectKind::Target => self.target_subject(s, rooms),
             SubjectKind::Surface => self.surface_subject(s, rooms),
         }
     }
 
-    fn target_subject(&mut self, s: &Spanned<Vec<String>>, rooms: &[Room]) -> Option<String> {
+    fn target_subject(&mut self, s: &Spanned<Vec<String>>, rooms: &[Room]) -> Option<Resolved> {
         let name = s.value.join(".");
-        let targets = || {
-            rooms
-                .iter()
-                .flat_map(|r| r.targets.iter().map(|t| t.name.as_str()))
-        };
-        if targets().any(|t| t == name) {
-            return Some(name);
+        let found = rooms.iter().enumerate().find_map(|(r, room)| {
+            let t = room.targets.iter().position(|t| t.name == name)?;
+            Some((r, SubjectRef::Target(t)))
+        });
+        if found.is_some() {
+            return found;
         }
+        let targets = rooms
+            .iter()
+            .flat_map(|r| r.targets.iter().map(|t| t.name.as_str()));
         // A target whose room failed to check has reported its own errors.
         let declared =
             self.rooms.iter().flat_map(|(_, d, _)| d.items.iter()).any(
@@ -202,7 +224,7 @@ impl Checker<'_> {
                 ErrorKind::UnknownName {
                     what: "target",
                     name: name.clone(),
-                    suggestion: suggest(&name, targets()),
+                    suggestion: suggest(&name, targets),
                 },
                 s.span,
             ));
@@ -211,9 +233,13 @@ impl Checker<'_> {
     }
 
     /// `surface` or `box.face`.
-    fn surface_subject(&mut self, s: &Spanned<Vec<String>>, rooms: &[Room]) -> Option<String> {
-        if rooms.iter().any(|r| r.surface(&s.value).is_some()) {
-            return Some(s.value.join("."));
+    fn surface_subject(&mut self, s: &Spanned<Vec<String>>, rooms: &[Room]) -> Option<Resolved> {
+        let found = rooms
+            .iter()
+            .enumerate()
+            .find_map(|(r, room)| Some((r, SubjectRef::Surface(room.surface(&s.value)?))));
+        if found.is_some() {
+            return found;
         }
         let is_box = |name: &String| {
             rooms
@@ -253,9 +279,9 @@ impl Checker<'_> {
         None
     }
 
-    fn person_ref(&mut self, name: &crate::span::Name, persons: &[Person]) -> Option<String> {
-        if persons.iter().any(|p| p.name == name.value) {
-            return Some(name.value.clone());
+    fn person_ref(&mut self, name: &crate::span::Name, persons: &[Person]) -> Option<usize> {
+        if let Some(i) = persons.iter().position(|p| p.name == name.value) {
+            return Some(i);
         }
         if self.persons.get(&name.value).is_none() {
             if let Err(e) = self.persons.resolve(name) {

@@ -63,6 +63,22 @@ impl Joint {
         self.max - self.min
     }
 
+    /// The farthest this joint's frame origin can be from the previous
+    /// frame's origin, at any value within the limits.
+    pub fn longest_offset_mm(&self) -> f64 {
+        let slide_mm = match self.kind {
+            JointKind::Revolute => 0.0,
+            JointKind::Prismatic => self.min.abs().max(self.max.abs()),
+        };
+        match &self.fixed {
+            Some(fixed) => fixed.translation.vector.norm() + slide_mm,
+            None if self.kind == JointKind::Prismatic => {
+                self.dh.a_mm.hypot(self.dh.d_mm.abs() + slide_mm)
+            }
+            None => self.dh.a_mm.hypot(self.dh.d_mm),
+        }
+    }
+
     /// `q` moved into the limits.
     pub fn clamp(&self, q: f64) -> f64 {
         q.clamp(self.min, self.max)
@@ -101,6 +117,14 @@ impl Chain {
             .fold(IsometryMatrix3::identity(), |acc, (j, &qi)| {
                 acc * j.transform(qi)
             })
+    }
+
+    /// No posture puts a link point (a joint's frame origin or the
+    /// effector) farther than this from the base origin: the sum of the
+    /// links' longest lengths.
+    pub fn reach_bound_mm(&self) -> f64 {
+        let links_mm: f64 = self.joints.iter().map(Joint::longest_offset_mm).sum();
+        links_mm + self.effector_mm.norm()
     }
 
     /// The effector point in the base frame (eq. 5).
@@ -236,6 +260,18 @@ mod tests {
         assert_eq!(points.len(), 3, "{points:?}");
         assert!((points[1] - Point3::new(300.0, 0.0, 0.0)).norm() < 1e-9);
         assert!((points[2] - chain.effector(&[0.0, 0.3, 0.0])).norm() < 1e-9);
+    }
+
+    #[test]
+    fn reach_bound_is_the_sum_of_the_links() {
+        assert_eq!(planar().reach_bound_mm(), 500.0);
+        let mut chain = planar();
+        chain.joints[1].kind = JointKind::Prismatic;
+        chain.joints[1].dh.d_mm = 30.0;
+        chain.joints[1].min = -50.0;
+        chain.joints[1].max = 40.0;
+        // 300 + hypot(200, 30 + 50)
+        assert!((chain.reach_bound_mm() - (300.0 + 200.0f64.hypot(80.0))).abs() < 1e-9);
     }
 
     #[test]

@@ -10,13 +10,13 @@ use super::map_files;
 use super::Json;
 use crate::error::{Error, ErrorKind};
 use crate::plugin::FormatPlugin;
-use crate::report::{Report, TaskReport};
+use crate::report::Report;
 
 /// `DIR/report.json`, and a CSV and an SVG for each map.
 pub fn write_outputs(report: &Report, dir: &Path) -> Result<(), Error> {
     write_atomically(&dir.join("report.json"), Json.render(report).as_bytes())?;
     for task in &report.tasks {
-        if let TaskReport::Map(m) = task {
+        if let Some(m) = task.map() {
             let stem = map_files::file_stem(m);
             write_atomically(
                 &dir.join(format!("{stem}.csv")),

@@ -2,7 +2,10 @@
 
 use std::sync::Arc;
 
-use super::{BasePlugin, FormatPlugin, ParamSpec, Plugin, PluginKind, SolverPlugin, TaskPlugin};
+use super::{
+    BasePlugin, FormatPlugin, ParamSpec, Plugin, PluginConfig, PluginKind, SettingsError, Solver,
+    SolverPlugin, TaskPlugin,
+};
 
 /// Every plugin a run can use. [`Registry::builtin`] (`builtin.rs`, above
 /// the plugins it names) has the built-in ones; a program using the
@@ -58,6 +61,22 @@ impl Registry {
 
     pub fn format(&self, name: &str) -> Option<&Arc<dyn FormatPlugin>> {
         find(&self.formats, name)
+    }
+
+    /// The solver `config` names, built from its options (those it leaves
+    /// out at their defaults); `option` is the option that names it (where
+    /// an error points).
+    pub fn build_solver(
+        &self,
+        option: &'static str,
+        config: &PluginConfig,
+    ) -> Result<Box<dyn Solver>, SettingsError> {
+        let plugin = self.solver(&config.name).ok_or_else(|| {
+            SettingsError::invalid(option, format!("there is no solver `{}`", config.name))
+        })?;
+        plugin
+            .build(&config.options.completed(&plugin.params()))
+            .map_err(|e| SettingsError::invalid(option, format!("solver `{}`: {e}", config.name)))
     }
 
     /// The plugins of one kind, in registration order, as plain plugins.

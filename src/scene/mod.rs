@@ -1,48 +1,21 @@
-//! The checked scenario: rooms with obstacles and targets, persons with
-//! their chains and bases, and the tasks to run. Everything here is
-//! resolved and in internal units (mm, rad); spans remain only where a run
-//! may still need to point back at the text.
+//! The scene a checked scenario describes: rooms with obstacles, targets
+//! and surfaces, persons with their bodies, and the plain data of answers
+//! (base poses, postures, placements). Everything here is resolved and in
+//! internal units (mm, rad). The scenario (`crate::scenario`) adds the
+//! configured plugins and the tasks.
 
 mod placement;
 mod surface;
+mod vision;
 
-pub use placement::{BasePose, IkSolution, Placement};
+pub use placement::{BasePose, HasSolution, IkSolution, Placement, Preferred};
 pub use surface::{Grid, GridCell, Surface, FACES};
+pub use vision::Vision;
 
 use nalgebra::{Point3, Vector3};
 
-use crate::kinematics::{Body, Chain};
-use crate::options::{Options, PluginConfig};
-use crate::span::Span;
-
-#[derive(Clone, Debug, PartialEq)]
-pub struct Scenario {
-    /// The root file's name as given.
-    pub file: String,
-    pub rooms: Vec<Room>,
-    pub persons: Vec<Person>,
-    pub tasks: Vec<TaskSpec>,
-}
-
-impl Scenario {
-    pub fn person(&self, name: &str) -> Option<&Person> {
-        self.persons.iter().find(|p| p.name == name)
-    }
-
-    /// The target of this name and the room it is in.
-    pub fn target(&self, name: &str) -> Option<(&Room, &Target)> {
-        self.rooms
-            .iter()
-            .find_map(|r| r.targets.iter().find(|t| t.name == name).map(|t| (r, t)))
-    }
-
-    /// The surface a dotted subject names, and its room.
-    pub fn surface(&self, subject: &str) -> Option<(&Room, Surface)> {
-        self.rooms
-            .iter()
-            .find_map(|r| r.surface_named(subject).map(|s| (r, s)))
-    }
-}
+use crate::kinematics::Body;
+use crate::options::PluginConfig;
 
 /// A room: the box from the origin to `size_mm`, x and y on the floor, z up.
 #[derive(Clone, Debug, PartialEq)]
@@ -112,34 +85,12 @@ pub struct Target {
 pub struct Person {
     pub name: String,
     pub mannequin: String,
-    /// The whole body, every effector.
+    /// The whole body, every effector (the first is the default for tasks).
     pub body: Body,
-    /// The chain of the body's first effector, the default for tasks.
-    pub chain: Chain,
+    /// The base plugin and its validated options (the scenario holds it
+    /// built).
     pub base: PluginConfig,
-    /// The vision options the person's `vision` gives (only those given):
-    /// a gaze task's own options come first, then these, then defaults.
-    pub vision: Options,
-}
-
-impl Person {
-    /// The chain to the effector a task names (`None`: the first).
-    pub fn chain_for(&self, effector: Option<&str>) -> Option<Chain> {
-        match effector {
-            None => Some(self.chain.clone()),
-            Some(name) => self.body.chain_named(Some(name)),
-        }
-    }
-}
-
-/// One task to run: a task plugin on one subject by one person.
-#[derive(Clone, Debug, PartialEq)]
-pub struct TaskSpec {
-    /// The task plugin's name (`reach`).
-    pub kind: String,
-    /// The subject: a target name for reach.
-    pub subject: String,
-    pub person: String,
-    pub options: Options,
-    pub span: Span,
+    /// The vision settings the person's `vision` gives (only those given):
+    /// a gaze task's own come first, then these, then the defaults.
+    pub vision: Vision,
 }

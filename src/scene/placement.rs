@@ -4,6 +4,8 @@
 
 use nalgebra::{Point3, Vector3};
 
+use crate::kinematics::Chain;
+
 /// Where the base stands: its origin (the hip point) in the room, and the
 /// direction it faces, counter-clockwise from the room's x axis.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -81,5 +83,80 @@ impl IkSolution {
             (true, true) => comfort < other_comfort,
             (false, false) => self.distance_mm < other.distance_mm,
         }
+    }
+}
+
+impl IkSolution {
+    /// The neutral posture, infinitely far: what a solve that ran no start
+    /// gives (a solver always runs at least one).
+    pub fn unsolved(chain: &Chain) -> Self {
+        IkSolution {
+            q: chain.neutral(),
+            distance_mm: f64::INFINITY,
+            iterations: 0,
+            collision: None,
+        }
+    }
+}
+
+/// What holds a solution: a solution, or a placement.
+pub trait HasSolution {
+    fn solution(&self) -> &IkSolution;
+}
+
+impl HasSolution for IkSolution {
+    fn solution(&self) -> &IkSolution {
+        self
+    }
+}
+
+impl HasSolution for Placement {
+    fn solution(&self) -> &IkSolution {
+        &self.solution
+    }
+}
+
+/// The preferred of several solutions (or placements) offered one by one,
+/// by [`IkSolution::preferred_to`]: one that reaches over one that does
+/// not, the more comfortable of two that reach, the closer of two that do
+/// not; the first of equals stays.
+pub struct Preferred<T> {
+    tolerance_mm: f64,
+    kept: Option<(T, f64)>,
+}
+
+impl<T: HasSolution> Preferred<T> {
+    pub fn new(tolerance_mm: f64) -> Self {
+        Preferred {
+            tolerance_mm,
+            kept: None,
+        }
+    }
+
+    /// Keep `candidate`, of discomfort `comfort`, if it is preferred to the
+    /// one kept.
+    pub fn offer(&mut self, candidate: T, comfort: f64) {
+        let better = self.kept.as_ref().is_none_or(|(kept, kept_comfort)| {
+            candidate.solution().preferred_to(
+                comfort,
+                kept.solution(),
+                *kept_comfort,
+                self.tolerance_mm,
+            )
+        });
+        if better {
+            self.kept = Some((candidate, comfort));
+        }
+    }
+
+    /// Whether the one kept reaches.
+    pub fn reaches(&self) -> bool {
+        self.kept
+            .as_ref()
+            .is_some_and(|(kept, _)| kept.solution().reaches(self.tolerance_mm))
+    }
+
+    pub fn into_kept(self) -> Option<T> {
+        self.kept.map(|(kept, _)| kept)
     }
 }

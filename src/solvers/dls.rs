@@ -8,10 +8,61 @@ use nalgebra::{Matrix3, Point3, Vector3};
 
 use super::Starts;
 use crate::kinematics::{Chain, JointKind};
-use crate::plugin::{IkProblem, IkSolution, Options, ParamSpec, Plugin, Solver, SolverPlugin};
+use crate::plugin::{
+    IkProblem, IkSolution, Options, ParamSpec, Params, Plugin, Settings, SettingsError, Solver,
+    SolverPlugin,
+};
 
 /// The plugin `dls`.
 pub struct Dls;
+
+/// The configured solver, its settings from its option block.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DlsSolver {
+    pub damping_mm: f64,
+    pub max_step_mm: f64,
+    pub max_iterations: u64,
+    pub starts: u32,
+    pub neutral_start: bool,
+}
+
+impl Settings for DlsSolver {
+    fn visit(p: &mut Params<'_>) -> Self {
+        DlsSolver {
+            damping_mm: p
+                .length(
+                    "damping",
+                    20.0,
+                    "the damping lambda: larger is steadier near singularities",
+                )
+                .range(1e-6, 1e6)
+                .get(),
+            max_step_mm: p
+                .length(
+                    "max_step",
+                    100.0,
+                    "the error followed in one iteration is cut to this length",
+                )
+                .range(1e-3, 1e6)
+                .get(),
+            max_iterations: p
+                .integer("max_iterations", 200, "iterations per start")
+                .range(1.0, 1e6)
+                .get() as u64,
+            starts: p
+                .integer("starts", 1, "starting postures tried until one reaches")
+                .range(1.0, 1000.0)
+                .get() as u32,
+            neutral_start: p
+                .boolean(
+                    "neutral_start",
+                    true,
+                    "the first start is the neutral posture, the others random",
+                )
+                .get(),
+        }
+    }
+}
 
 impl Plugin for Dls {
     fn name(&self) -> &'static str {
@@ -23,50 +74,14 @@ impl Plugin for Dls {
     }
 
     fn params(&self) -> Vec<ParamSpec> {
-        vec![
-            ParamSpec::length(
-                "damping",
-                20.0,
-                "the damping lambda: larger is steadier near singularities",
-            )
-            .range(1e-6, 1e6),
-            ParamSpec::length(
-                "max_step",
-                100.0,
-                "the error followed in one iteration is cut to this length",
-            )
-            .range(1e-3, 1e6),
-            ParamSpec::integer("max_iterations", 200, "iterations per start").range(1.0, 1e6),
-            ParamSpec::integer("starts", 1, "starting postures tried until one reaches")
-                .range(1.0, 1000.0),
-            ParamSpec::boolean(
-                "neutral_start",
-                true,
-                "the first start is the neutral posture, the others random",
-            ),
-        ]
+        DlsSolver::params()
     }
 }
 
 impl SolverPlugin for Dls {
-    fn build(&self, o: &Options) -> Box<dyn Solver> {
-        Box::new(DlsSolver {
-            damping_mm: o.length_mm("damping"),
-            max_step_mm: o.length_mm("max_step"),
-            max_iterations: o.integer("max_iterations") as u64,
-            starts: o.integer("starts") as u32,
-            neutral_start: o.boolean("neutral_start"),
-        })
+    fn build(&self, options: &Options) -> Result<Box<dyn Solver>, SettingsError> {
+        Ok(Box::new(DlsSolver::from_options(options)?))
     }
-}
-
-/// The configured solver.
-pub struct DlsSolver {
-    pub damping_mm: f64,
-    pub max_step_mm: f64,
-    pub max_iterations: u64,
-    pub starts: u32,
-    pub neutral_start: bool,
 }
 
 impl Solver for DlsSolver {
@@ -86,7 +101,11 @@ impl Solver for DlsSolver {
                 break;
             }
         }
-        best.expect("at least one start")
+        best.unwrap_or_else(|| IkSolution::unsolved(problem.chain))
+    }
+
+    fn starts(&self) -> u64 {
+        u64::from(self.starts.max(1))
     }
 }
 

@@ -1,123 +1,157 @@
 //! What the reach-like tasks share: their common options (solver,
-//! tolerance, seed, collisions and the retry where obstacles block), the
-//! setup that builds the person's solvers and base and asks its queries,
-//! and seeds that depend on names rather than on the order of tasks.
+//! tolerance, seed, effector, collisions and the retry where obstacles
+//! block), those options with their solvers built ([`Reaching`]), the
+//! queries they ask a base, what their answers depend on, and seeds that
+//! depend on names rather than on the order of tasks.
+
+use nalgebra::Point3;
 
 use crate::collision::Obstacles;
 use crate::kinematics::Chain;
-use nalgebra::Point3;
-
 use crate::plugin::{
-    Base, ParamSpec, Placement, PluginConfig, PluginKind, ReachQuery, Retry, Search, Solver,
-    TaskContext, Value,
+    Dependence, EffectorNeed, Params, Placement, PluginConfig, PluginKind, ReachQuery, Registry,
+    Retry, Search, SettingsError, Solver, TaskInput, Value,
 };
-use crate::scene::{Person, Room};
+use crate::scene::Room;
 
-/// `solver`, `tolerance` and `seed`, with `what` in the docs ("target",
-/// "point").
-pub fn common_params(what: &'static str, seed_doc: &'static str) -> Vec<ParamSpec> {
-    let tolerance_doc = match what {
-        "point" => "a point counts as reached within this distance",
-        _ => "the target counts as reached within this distance",
-    };
-    vec![
-        ParamSpec::plugin(
-            "solver",
-            PluginKind::Solver,
-            "incremental",
-            "the IK solver and its options",
-        ),
-        ParamSpec::length("tolerance", 10.0, tolerance_doc).range(0.001, 1000.0),
-        ParamSpec::integer("seed", 1, seed_doc).range(0.0, 9_007_199_254_740_992.0),
-        ParamSpec::optional_name(
-            "effector",
-            "which of the mannequin's effectors (default: its first)",
-        ),
-        ParamSpec::boolean(
-            "collisions",
-            true,
-            "links must stay out of the room's obstacles (links are segments between joints)",
-        ),
-        ParamSpec::length(
-            "clearance",
-            0.0,
-            "with collisions: how close a link may come to an obstacle",
-        )
-        .range(0.0, 500.0),
-        ParamSpec::plugin_with(
-            "blocked_solver",
-            PluginKind::Solver,
-            "incremental",
-            vec![("starts", Value::Integer(64))],
-            "with collisions, where the solver reaches from no placement: the solver that tries again",
-        ),
-        ParamSpec::integer(
-            "blocked_retries",
-            4,
-            "how many of the most promising placements `blocked_solver` tries (0: none)",
-        )
-        .range(0.0, 360.0),
-    ]
+/// How a task declares its common options: what one of its subjects is
+/// called in the docs, the seed's doc, the default solver, and the
+/// effector option.
+pub struct CommonDecl {
+    /// `target` or `point`.
+    pub what: &'static str,
+    pub seed_doc: &'static str,
+    /// The default solver and the option's doc.
+    pub solver: (&'static str, &'static str),
+    /// `None`: the effector may be left out (the mannequin's first);
+    /// `Some((default, doc))`: a named default.
+    pub effector: Option<(&'static str, &'static str)>,
 }
 
-/// The person of a task with their solver and base built from the task's
-/// and the person's options (checked, so every name resolves).
-pub struct Setup<'a> {
-    pub person: &'a Person,
-    /// The chain to the effector the task names.
-    pub chain: Chain,
-    pub solver_name: &'a str,
-    pub solver: Box<dyn Solver>,
-    pub blocked_solver_name: &'a str,
-    pub blocked_solver: Box<dyn Solver>,
-    pub blocked_retries: usize,
-    pub base: Box<dyn Base>,
+/// The solver a reach-like task uses unless told otherwise, and its doc.
+pub const INCREMENTAL: (&str, &str) = ("incremental", "the IK solver and its options");
+
+/// The options every reach-like task has.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Common {
+    pub solver: PluginConfig,
     pub tolerance_mm: f64,
     pub seed: u64,
+    /// The effector's name (`None`: the mannequin's first).
+    pub effector: Option<String>,
     pub collisions: bool,
     pub clearance_mm: f64,
+    pub blocked_solver: PluginConfig,
+    pub blocked_retries: u32,
 }
 
-impl<'a> Setup<'a> {
-    pub fn new(ctx: &TaskContext<'a>) -> Self {
-        let task = ctx.task;
-        let person = ctx.scenario.person(&task.person).expect("checked person");
-        let solver_cfg = task.options.plugin("solver");
-        let blocked_cfg = task.options.plugin("blocked_solver");
-        let build = |cfg: &PluginConfig| {
-            ctx.registry
-                .solver(&cfg.name)
-                .expect("checked solver")
-                .build(&cfg.options)
+impl Common {
+    /// Declare and read the common options, as `decl` says.
+    pub fn visit(p: &mut Params<'_>, decl: &CommonDecl) -> Self {
+        let tolerance_doc = match decl.what {
+            "point" => "a point counts as reached within this distance",
+            _ => "the target counts as reached within this distance",
         };
-        let base = ctx
-            .registry
-            .base(&person.base.name)
-            .expect("checked base")
-            .build(&person.base.options);
-        let chain = person
-            .chain_for(task.options.name_opt("effector"))
-            .expect("checked effector");
-        Setup {
-            person,
-            chain,
-            solver_name: &solver_cfg.name,
-            solver: build(solver_cfg),
-            blocked_solver_name: &blocked_cfg.name,
-            blocked_solver: build(blocked_cfg),
-            blocked_retries: task.options.integer("blocked_retries") as usize,
-            base,
-            tolerance_mm: task.options.length_mm("tolerance"),
-            seed: task.options.integer("seed") as u64,
-            collisions: task.options.boolean("collisions"),
-            clearance_mm: task.options.length_mm("clearance"),
+        let (solver, solver_doc) = decl.solver;
+        Common {
+            solver: p.plugin("solver", PluginKind::Solver, solver, solver_doc).get(),
+            tolerance_mm: p
+                .length("tolerance", 10.0, tolerance_doc)
+                .range(0.001, 1000.0)
+                .get(),
+            seed: p
+                .integer("seed", 1, decl.seed_doc)
+                .range(0.0, 9_007_199_254_740_992.0)
+                .get() as u64,
+            effector: match decl.effector {
+                None => p
+                    .optional_name(
+                        "effector",
+                        "which of the mannequin's effectors (default: its first)",
+                    )
+                    .get(),
+                Some((default, doc)) => Some(p.name("effector", default, doc).get()),
+            },
+            collisions: p
+                .boolean(
+                    "collisions",
+                    true,
+                    "links must stay out of the room's obstacles (links are segments between joints)",
+                )
+                .get(),
+            clearance_mm: p
+                .length(
+                    "clearance",
+                    0.0,
+                    "with collisions: how close a link may come to an obstacle",
+                )
+                .range(0.0, 500.0)
+                .get(),
+            blocked_solver: p
+                .plugin_with(
+                    "blocked_solver",
+                    PluginKind::Solver,
+                    "incremental",
+                    vec![("starts", Value::Integer(64))],
+                    "with collisions, where the solver reaches from no placement: the solver that tries again",
+                )
+                .get(),
+            blocked_retries: p
+                .integer(
+                    "blocked_retries",
+                    4,
+                    "how many of the most promising placements `blocked_solver` tries (0: none)",
+                )
+                .range(0.0, 360.0)
+                .get() as u32,
         }
+    }
+}
+
+/// A reach-like task's common options with its solvers built.
+pub struct Reaching {
+    pub common: Common,
+    pub solver: Box<dyn Solver>,
+    pub blocked_solver: Box<dyn Solver>,
+}
+
+impl Reaching {
+    /// Build the solvers `common` names.
+    pub fn new(common: Common, plugins: &Registry) -> Result<Self, SettingsError> {
+        Ok(Reaching {
+            solver: plugins.build_solver("solver", &common.solver)?,
+            blocked_solver: plugins.build_solver("blocked_solver", &common.blocked_solver)?,
+            common,
+        })
+    }
+
+    /// The effector option, for the checker to resolve.
+    pub fn effector_need(&self) -> EffectorNeed {
+        EffectorNeed {
+            option: "effector",
+            name: self.common.effector.clone(),
+        }
+    }
+
+    /// The most solver starts one point needs from `placements` candidate
+    /// placements: each runs the solver, and where obstacles block, the
+    /// retry runs `blocked_solver` from some of them.
+    pub fn starts_per_point(&self, placements: u64) -> u64 {
+        let retries = if self.common.collisions {
+            u64::from(self.common.blocked_retries).min(placements)
+        } else {
+            0
+        };
+        placements
+            .saturating_mul(self.solver.starts())
+            .saturating_add(retries.saturating_mul(self.blocked_solver.starts()))
     }
 
     /// The room's obstacles when the task checks collisions.
     pub fn obstacles(&self, room: &Room) -> Option<Obstacles> {
-        self.collisions
-            .then(|| Obstacles::new(room, self.clearance_mm))
+        self.common
+            .collisions
+            .then(|| Obstacles::new(room, self.common.clearance_mm))
     }
 
     /// A reach of `target_room_mm` keeping links out of `obstacles`, with
@@ -129,13 +163,13 @@ impl<'a> Setup<'a> {
         search: Search,
         obstacles: Option<&'q Obstacles>,
     ) -> ReachQuery<'q> {
-        let retry = (obstacles.is_some() && self.blocked_retries > 0).then(|| Retry {
+        let retry = (obstacles.is_some() && self.common.blocked_retries > 0).then(|| Retry {
             solver: self.blocked_solver.as_ref(),
-            placements: self.blocked_retries,
+            placements: self.common.blocked_retries as usize,
         });
         ReachQuery {
             target_room_mm,
-            tolerance_mm: self.tolerance_mm,
+            tolerance_mm: self.common.tolerance_mm,
             seed,
             search,
             obstacles,
@@ -144,13 +178,49 @@ impl<'a> Setup<'a> {
     }
 
     /// The name of the solver that found `placement`'s posture.
-    pub fn solver_of(&self, placement: &Placement) -> &'a str {
+    pub fn solver_of(&self, placement: &Placement) -> &str {
         if placement.retried {
-            self.blocked_solver_name
+            &self.common.blocked_solver.name
         } else {
-            self.solver_name
+            &self.common.solver.name
         }
     }
+
+    /// What the answer depends on when `chain` reaches for `points_mm`:
+    /// the obstacles within the reach of `chains` (grown by the
+    /// clearance) from a placement, when collisions are checked, and
+    /// (`sight_lines`) those between the eyes and each point.
+    pub fn dependence(
+        &self,
+        chain: &Chain,
+        chains: &[&Chain],
+        points_mm: Vec<Point3<f64>>,
+        sight_lines: bool,
+    ) -> Dependence {
+        let reach_mm = chains
+            .iter()
+            .map(|c| c.reach_bound_mm())
+            .fold(0.0, f64::max);
+        let looked_at = self.common.collisions || sight_lines;
+        let clearance_mm = if self.common.collisions {
+            self.common.clearance_mm
+        } else {
+            0.0
+        };
+        Dependence {
+            chain: chain.clone(),
+            points_mm,
+            reach_mm: looked_at.then_some(reach_mm + clearance_mm),
+            sight_lines,
+        }
+    }
+}
+
+/// The chain to the first effector a task names, for the person of
+/// `input`.
+pub fn chain_of(input: &TaskInput<'_>, need: usize) -> Chain {
+    let index = input.effectors.get(need).copied().unwrap_or(0);
+    input.person.body.chain(index)
 }
 
 /// A seed that depends on the task's seed and on names, never on the order

@@ -9,20 +9,131 @@
 
 use nalgebra::{Point3, Vector3};
 
-use super::common::{common_params, mix_seed, Setup};
+use super::common::{chain_of, mix_seed, Common, CommonDecl, Reaching};
 use crate::collision::{Obstacles, PlacedObstacles};
 use crate::error::ErrorKind;
 use crate::kinematics::{Chain, Joint, JointKind};
 use crate::plugin::{
-    Options, ParamSpec, Placement, Plugin, PluginKind, Search, SubjectKind, TaskContext,
-    TaskPlugin, Value,
+    Dependence, EffectorNeed, Options, ParamSpec, Params, Placement, Plugin, Registry, Search,
+    Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin,
 };
 use crate::report::{Asked, GazeReport, Sight, TaskReport};
-use crate::scene::Room;
-use crate::vision::{self, ARCMIN_RAD};
+use crate::scene::{Room, Vision};
+use crate::vision;
 
 /// The plugin `gaze`.
 pub struct Gaze;
+
+/// The options of a gaze at a target or a point: the common ones with the
+/// eyes as effector and fabrik as solver, and what the eyes must make out.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) struct GazeSettings {
+    pub common: Common,
+    pub looking: Looking,
+}
+
+impl GazeSettings {
+    /// Declare and read them; `what` is `target` or `point`.
+    pub fn visit(p: &mut Params<'_>, what: &'static str) -> Self {
+        let common = Common::visit(
+            p,
+            &CommonDecl {
+                what,
+                seed_doc: "seeds the solver's random starts (mixed with subject and person)",
+                // FABRIK turns the neck and eyes before the trunk, as people
+                // do; the incremental solver moves every joint alike.
+                solver: ("fabrik", "the IK solver and its options"),
+                effector: Some(("eyes", "the effector whose chain ends in the look link")),
+            },
+        );
+        GazeSettings {
+            common,
+            looking: Looking::visit(p),
+        }
+    }
+}
+
+/// What the eyes must make out: the object's size, and the vision settings
+/// a task leaves to the person's `vision`, and that to the defaults.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) struct Looking {
+    pub size_mm: f64,
+    pub vision: Vision,
+}
+
+impl Settings for Looking {
+    fn visit(p: &mut Params<'_>) -> Self {
+        Looking {
+            size_mm: p
+                .length(
+                    "size",
+                    20.0,
+                    "the object's size S (a letter's height, a dial)",
+                )
+                .range(0.01, 10_000.0)
+                .get(),
+            vision: Vision::visit(p),
+        }
+    }
+}
+
+impl Looking {
+    /// Every setting filled in: the task's own, else the person's (if
+    /// given), else the default.
+    pub fn eyes(&self, person: Option<&Vision>) -> Eyes {
+        let person = person.copied().unwrap_or_default();
+        let v = self.vision.or(&person).or(&Vision::DEFAULT);
+        Eyes {
+            size_mm: self.size_mm,
+            mar_far_rad: v.mar_far_rad.unwrap_or(vision::ARCMIN_RAD),
+            mar_near_rad: v.mar_near_rad,
+            near_point_mm: v.near_point_mm.unwrap_or(250.0),
+            acuity: v.acuity.unwrap_or(0.5),
+        }
+    }
+}
+
+/// What the eyes must make out, every setting filled in.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Eyes {
+    pub size_mm: f64,
+    pub mar_far_rad: f64,
+    pub mar_near_rad: Option<f64>,
+    pub near_point_mm: f64,
+    /// The least acuity at which a target counts as seen.
+    pub acuity: f64,
+}
+
+impl Eyes {
+    /// The legible range `[D_min, D_max]` (eq. 1-2).
+    pub fn legible_mm(&self) -> [f64; 2] {
+        let d_max = vision::d_max_mm(self.size_mm, self.mar_far_rad);
+        let d_min = match self.mar_near_rad {
+            Some(mar_near) => vision::d_min_mm(self.size_mm, mar_near),
+            None => self.near_point_mm,
+        };
+        [d_min, d_max]
+    }
+
+    /// An object too small to be legible anywhere.
+    pub fn illegible(&self) -> Option<ErrorKind> {
+        let [d_min, d_max] = self.legible_mm();
+        (d_min >= d_max).then(|| ErrorKind::Illegible {
+            size: format!("{}mm", self.size_mm),
+            d_min: format!("{d_min:.0}mm"),
+            d_max: format!("{d_max:.0}mm"),
+        })
+    }
+}
+
+/// The settings of `gaze`.
+struct GazeTaskSettings(GazeSettings);
+
+impl Settings for GazeTaskSettings {
+    fn visit(p: &mut Params<'_>) -> Self {
+        GazeTaskSettings(GazeSettings::visit(p, "target"))
+    }
+}
 
 impl Plugin for Gaze {
     fn name(&self) -> &'static str {
@@ -34,120 +145,8 @@ impl Plugin for Gaze {
     }
 
     fn params(&self) -> Vec<ParamSpec> {
-        gaze_params("target")
+        GazeTaskSettings::params()
     }
-}
-
-/// The options of a gaze at a target or a point (`what`): the common ones
-/// with the eyes as effector and fabrik as solver, and those of vision.
-pub(super) fn gaze_params(what: &'static str) -> Vec<ParamSpec> {
-    let mut params = common_params(
-        what,
-        "seeds the solver's random starts (mixed with subject and person)",
-    );
-    for p in &mut params {
-        match p.name {
-            "effector" => {
-                *p = ParamSpec::name(
-                    "effector",
-                    "eyes",
-                    "the effector whose chain ends in the look link",
-                )
-            }
-            // FABRIK turns the neck and eyes before the trunk, as people
-            // do; the incremental solver moves every joint alike.
-            "solver" => {
-                *p = ParamSpec::plugin(
-                    "solver",
-                    PluginKind::Solver,
-                    "fabrik",
-                    "the IK solver and its options",
-                )
-            }
-            _ => {}
-        }
-    }
-    params.extend(vision_params());
-    params
-}
-
-/// The options of what the eyes must make out: the object's size, the
-/// minimum angles of resolution, the near point and the acuity threshold.
-/// But for the size, a task leaves them to the person's `vision`, and
-/// that to the defaults of [`VISION_DEFAULTS`].
-pub(super) fn vision_params() -> Vec<ParamSpec> {
-    vec![
-        ParamSpec::length("size", 20.0, "the object's size S (a letter's height, a dial)").range(0.01, 10_000.0),
-        ParamSpec::optional_angle("mar_far", "minimum angle of resolution, far vision (eq. 1); default 1arcmin")
-            .range(0.01 * ARCMIN_RAD, 600.0 * ARCMIN_RAD),
-        ParamSpec::optional_angle(
-            "mar_near",
-            "minimum angle of resolution, near vision (eq. 2); if left out the nearest distance is `near_point`",
-        )
-        .range(0.01 * ARCMIN_RAD, 600.0 * ARCMIN_RAD),
-        ParamSpec::optional_length("near_point", "the nearest distance the eyes focus at when `mar_near` is not given; default 250mm")
-            .range(0.0, 10_000.0),
-        ParamSpec::optional_number("acuity", "the least acuity e^(-7 |angle|) at which the target counts as seen (eq. 3); default 0.5")
-            .range(0.001, 1.0),
-    ]
-}
-
-/// The defaults of the vision options a task and a person may leave out.
-pub const VISION_DEFAULTS: [(&str, Value); 3] = [
-    ("mar_far", Value::Angle(ARCMIN_RAD)),
-    ("near_point", Value::Length(250.0)),
-    ("acuity", Value::Number(0.5)),
-];
-
-/// The options a person's `vision` may give: those of `vision_params`
-/// but the object's size.
-pub fn person_vision_params() -> Vec<ParamSpec> {
-    vision_params()
-        .into_iter()
-        .filter(|p| p.name != "size")
-        .collect()
-}
-
-/// The task's options with every vision option filled in: the task's own,
-/// else the person's `vision`, else the default.
-pub(super) fn effective_vision(options: &Options, person: Option<&Options>) -> Options {
-    let mut out = options.clone();
-    for spec in person_vision_params() {
-        if out.get(spec.name).is_some() {
-            continue;
-        }
-        let value = person.and_then(|p| p.get(spec.name)).cloned().or_else(|| {
-            VISION_DEFAULTS
-                .iter()
-                .find(|(n, _)| *n == spec.name)
-                .map(|(_, v)| v.clone())
-        });
-        if let Some(value) = value {
-            out = out.set(spec.name, value);
-        }
-    }
-    out
-}
-
-/// An object too small to be legible anywhere, by the options.
-pub(super) fn illegible(options: &Options) -> Option<ErrorKind> {
-    let [d_min, d_max] = legible_mm(options);
-    (d_min >= d_max).then(|| ErrorKind::Illegible {
-        size: format!("{}mm", options.length_mm("size")),
-        d_min: format!("{d_min:.0}mm"),
-        d_max: format!("{d_max:.0}mm"),
-    })
-}
-
-/// The legible range `[D_min, D_max]` the options give.
-pub(super) fn legible_mm(options: &Options) -> [f64; 2] {
-    let size = options.length_mm("size");
-    let d_max = vision::d_max_mm(size, options.angle_rad("mar_far"));
-    let d_min = match options.number_opt("mar_near") {
-        Some(mar_near) => vision::d_min_mm(size, mar_near),
-        None => options.length_mm("near_point"),
-    };
-    [d_min, d_max]
 }
 
 impl TaskPlugin for Gaze {
@@ -155,54 +154,87 @@ impl TaskPlugin for Gaze {
         SubjectKind::Target
     }
 
-    fn validate(&self, _room: &Room, _subject: &str, options: &Options) -> Option<ErrorKind> {
-        illegible(&effective_vision(options, None))
+    fn configure(
+        &self,
+        options: &Options,
+        plugins: &Registry,
+    ) -> Result<Box<dyn Task>, SettingsError> {
+        let GazeTaskSettings(settings) = GazeTaskSettings::from_options(options)?;
+        Ok(Box::new(GazeTask {
+            reaching: Reaching::new(settings.common, plugins)?,
+            looking: settings.looking,
+        }))
+    }
+}
+
+/// A configured gaze.
+struct GazeTask {
+    reaching: Reaching,
+    looking: Looking,
+}
+
+impl Task for GazeTask {
+    fn effectors(&self) -> Vec<EffectorNeed> {
+        vec![self.reaching.effector_need()]
     }
 
-    fn validate_chain(
-        &self,
-        person: &str,
-        _: &str,
-        chain: &Chain,
-        _: &Options,
-    ) -> Option<ErrorKind> {
+    fn validate(&self, _subject: &Subject<'_>) -> Option<ErrorKind> {
+        self.looking.eyes(None).illegible()
+    }
+
+    fn validate_chain(&self, person: &str, _need: usize, chain: &Chain) -> Option<ErrorKind> {
         needs_look_link(person, chain)
     }
 
-    fn run(&self, ctx: &TaskContext<'_>) -> TaskReport {
-        let task = ctx.task;
-        let setup = Setup::new(ctx);
-        let (room, target) = ctx.scenario.target(&task.subject).expect("checked target");
-        let options = effective_vision(&task.options, Some(&setup.person.vision));
-        let legible = legible_mm(&options);
-        let chain = with_look_range(&setup.chain, legible);
+    fn starts_per_point(&self, placements: u64) -> u64 {
+        self.reaching.starts_per_point(placements)
+    }
+
+    fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
+        let eyes = self.looking.eyes(Some(&input.person.vision));
+        let chain = with_look_range(&chain_of(input, 0), eyes.legible_mm());
+        let points = match input.subject {
+            Subject::Target(t) => vec![t.position_mm],
+            Subject::Surface(_) => Vec::new(),
+        };
+        self.reaching.dependence(&chain, &[&chain], points, true)
+    }
+
+    fn run(&self, input: &TaskInput<'_>) -> TaskReport {
+        let reaching = &self.reaching;
+        let Subject::Target(target) = input.subject else {
+            unreachable!("the checker gives a gaze a target")
+        };
+        let eyes = self.looking.eyes(Some(&input.person.vision));
+        let chain = with_look_range(&chain_of(input, 0), eyes.legible_mm());
         // With collisions on, the look link is a link like any other: the
         // solver and the base prefer a posture whose line of sight is clear.
-        let obstacles = GazeObstacles::new(room, &setup);
-        let query = setup.query(
+        let obstacles = GazeObstacles::new(input.room, reaching);
+        let query = reaching.query(
             target.position_mm,
-            mix_seed(setup.seed, &[&task.subject, &setup.person.name, "gaze"]),
+            mix_seed(
+                reaching.common.seed,
+                &[&target.name, &input.person.name, "gaze"],
+            ),
             Search::MostComfortable,
             obstacles.body.as_ref(),
         );
-        let placement = setup
+        let placement = input
             .base
-            .prepare(room, &chain)
-            .reach(&query, setup.solver.as_ref());
-        let sight = see(
-            &chain,
-            &placement,
-            target.position_mm,
-            &obstacles,
-            &setup,
-            &options,
-        );
-        let asked = Asked {
-            task,
-            person: setup.person,
+            .prepare(input.room, &chain)
+            .reach(&query, reaching.solver.as_ref());
+        let looked = Looked {
             chain: &chain,
-            solver: setup.solver_of(&placement),
-            tolerance_mm: setup.tolerance_mm,
+            placement: &placement,
+            target: target.position_mm,
+        };
+        let sight = looked.see(&obstacles, reaching.common.tolerance_mm, &eyes);
+        let asked = Asked {
+            subject: &target.name,
+            person: input.person,
+            chain: &chain,
+            solver: reaching.solver_of(&placement),
+            tolerance_mm: reaching.common.tolerance_mm,
         };
         TaskReport::Gaze(GazeReport::new(
             &asked,
@@ -222,40 +254,76 @@ pub(super) struct GazeObstacles {
 }
 
 impl GazeObstacles {
-    pub fn new(room: &Room, setup: &Setup<'_>) -> Self {
+    pub fn new(room: &Room, reaching: &Reaching) -> Self {
         GazeObstacles {
             sight: Obstacles::new(room, 0.0),
-            body: setup.obstacles(room),
+            body: reaching.obstacles(room),
         }
     }
 }
 
-/// What the eyes of `chain` see of `target` in the placed posture, and if
-/// not, why: the sight line is always checked, by a ray cast that names
-/// the first obstacle it meets; the body's links when collisions are on.
-pub(super) fn see(
-    chain: &Chain,
-    placement: &Placement,
-    target: Point3<f64>,
-    obstacles: &GazeObstacles,
-    setup: &Setup<'_>,
-    options: &Options,
-) -> Sight {
-    let size_mm = options.length_mm("size");
-    let look = look(chain, placement, target, &obstacles.sight, size_mm);
-    let sight = Sight {
-        reason: None,
-        occluded_by: look.occluded_by,
-        body_collision: obstacles_met_by_body(chain, placement, obstacles.body.as_ref()),
-        distance_mm: look.distance_mm,
-        legible_mm: legible_mm(options),
-        off_axis_rad: look.off_axis_rad,
-        acuity_threshold: options.number("acuity"),
-        size_mm,
-        eyes_room_mm: look.eyes_room_mm,
-    };
-    let reason = sight.reason(setup.tolerance_mm, placement.solution.distance_mm);
-    Sight { reason, ..sight }
+/// A posture placed to look at `target`, with `chain` the eyes' chain.
+pub(super) struct Looked<'a> {
+    pub chain: &'a Chain,
+    pub placement: &'a Placement,
+    pub target: Point3<f64>,
+}
+
+impl Looked<'_> {
+    /// What the eyes see of the target, and if not, why: the sight line is
+    /// always checked, by a ray cast that names the first obstacle it
+    /// meets; the body's links when collisions are on.
+    pub fn see(&self, obstacles: &GazeObstacles, tolerance_mm: f64, eyes: &Eyes) -> Sight {
+        let look = self.look(&obstacles.sight, eyes.size_mm);
+        let sight = Sight {
+            reason: None,
+            occluded_by: look.occluded_by,
+            body_collision: self.obstacle_met_by_body(obstacles.body.as_ref()),
+            distance_mm: look.distance_mm,
+            legible_mm: eyes.legible_mm(),
+            off_axis_rad: look.off_axis_rad,
+            acuity_threshold: eyes.acuity,
+            size_mm: eyes.size_mm,
+            eyes_room_mm: look.eyes_room_mm,
+        };
+        let reason = sight.reason(tolerance_mm, self.placement.solution.distance_mm);
+        Sight { reason, ..sight }
+    }
+
+    /// Where the eyes are in the placed posture, and what lies between
+    /// them and the target.
+    fn look(&self, obstacles: &Obstacles, size_mm: f64) -> Look {
+        let q = &self.placement.solution.q;
+        let pose = &self.placement.pose;
+        // The eyes: the frame before the look link, looking along its z axis.
+        let eye_frame = self.chain.end_frame(&q[..q.len() - 1]);
+        let eyes_room = pose.to_room(&Point3::from(eye_frame.translation.vector));
+        let look_room = pose.direction_to_room(&(eye_frame.rotation * Vector3::z()));
+        let to_target = self.target - eyes_room;
+        Look {
+            eyes_room_mm: eyes_room,
+            distance_mm: to_target.norm(),
+            off_axis_rad: look_room.angle(&to_target),
+            occluded_by: obstacles
+                .first_on_sight_line(&eyes_room, &self.target, size_mm / 2.0)
+                .map(|(i, _)| obstacles.name(i).to_string()),
+        }
+    }
+
+    /// The first obstacle the body's links (all but the look link) pass
+    /// through, when collisions are checked.
+    fn obstacle_met_by_body(&self, obstacles: Option<&Obstacles>) -> Option<String> {
+        let obstacles = obstacles?;
+        let mut points = self.chain.link_points(&self.placement.solution.q);
+        points.pop();
+        let placed = PlacedObstacles {
+            obstacles,
+            base_pose: self.placement.pose,
+        };
+        placed
+            .polyline_hit(&points, 0.0)
+            .map(|i| obstacles.name(i).to_string())
+    }
 }
 
 /// A gaze effector's chain must end in its look link.
@@ -287,59 +355,12 @@ pub(super) fn limit_look(look: &mut Joint, [d_min, d_max]: [f64; 2]) {
     look.neutral = look.neutral.clamp(look.min, look.max);
 }
 
-/// Where the eyes are in the placed posture, and what lies between them
-/// and the target.
+/// Where the eyes are, and what lies between them and the target.
 struct Look {
     eyes_room_mm: Point3<f64>,
     distance_mm: f64,
     off_axis_rad: f64,
     occluded_by: Option<String>,
-}
-
-fn look(
-    chain: &Chain,
-    placement: &Placement,
-    target: Point3<f64>,
-    obstacles: &Obstacles,
-    size_mm: f64,
-) -> Look {
-    let q = &placement.solution.q;
-    // The eyes: the frame before the look link, looking along its z axis.
-    let eye_frame = chain.end_frame(&q[..q.len() - 1]);
-    let eyes_room = placement
-        .pose
-        .to_room(&Point3::from(eye_frame.translation.vector));
-    let look_room = placement
-        .pose
-        .direction_to_room(&(eye_frame.rotation * Vector3::z()));
-    let to_target = target - eyes_room;
-    Look {
-        eyes_room_mm: eyes_room,
-        distance_mm: to_target.norm(),
-        off_axis_rad: look_room.angle(&to_target),
-        occluded_by: obstacles
-            .first_on_sight_line(&eyes_room, &target, size_mm / 2.0)
-            .map(|(i, _)| obstacles.name(i).to_string()),
-    }
-}
-
-/// The first obstacle the body's links (all but the look link) pass
-/// through, when collisions are checked.
-fn obstacles_met_by_body(
-    chain: &Chain,
-    placement: &Placement,
-    obstacles: Option<&Obstacles>,
-) -> Option<String> {
-    let obstacles = obstacles?;
-    let mut points = chain.link_points(&placement.solution.q);
-    points.pop();
-    let placed = PlacedObstacles {
-        obstacles,
-        base_pose: placement.pose,
-    };
-    placed
-        .polyline_hit(&points, 0.0)
-        .map(|i| obstacles.name(i).to_string())
 }
 
 impl Sight {

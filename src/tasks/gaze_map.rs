@@ -4,20 +4,29 @@
 //! when an object of `size` there is legible, on the line of sight and
 //! not hidden.
 
-use super::common::Setup;
-use super::gaze::{
-    effective_vision, gaze_params, illegible, legible_mm, needs_look_link, see, with_look_range,
-    GazeObstacles,
-};
-use super::map::{grid_params, grid_points, run_map, too_large};
+use super::common::{chain_of, Reaching};
+use super::gaze::{needs_look_link, with_look_range, GazeObstacles, GazeSettings, Looked, Looking};
+use super::map::{run_map, GridSettings, MapAsked};
 use crate::error::ErrorKind;
 use crate::kinematics::Chain;
-use crate::plugin::{Options, ParamSpec, Placement, Plugin, SubjectKind, TaskContext, TaskPlugin};
+use crate::plugin::{
+    Dependence, EffectorNeed, Options, ParamSpec, Params, Placement, Plugin, Registry, Settings,
+    SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin,
+};
 use crate::report::TaskReport;
-use crate::scene::Room;
 
 /// The plugin `gaze_map`.
 pub struct GazeMap;
+
+/// Its settings: a gaze's at each point, and the grid's.
+struct GazeMapSettings(GazeSettings, GridSettings);
+
+impl Settings for GazeMapSettings {
+    fn visit(p: &mut Params<'_>) -> Self {
+        let gaze = GazeSettings::visit(p, "point");
+        GazeMapSettings(gaze, GridSettings::visit(p))
+    }
+}
 
 impl Plugin for GazeMap {
     fn name(&self) -> &'static str {
@@ -29,9 +38,7 @@ impl Plugin for GazeMap {
     }
 
     fn params(&self) -> Vec<ParamSpec> {
-        let mut params = gaze_params("point");
-        params.extend(grid_params());
-        params
+        GazeMapSettings::params()
     }
 }
 
@@ -40,38 +47,78 @@ impl TaskPlugin for GazeMap {
         SubjectKind::Surface
     }
 
-    fn validate(&self, room: &Room, subject: &str, options: &Options) -> Option<ErrorKind> {
-        illegible(&effective_vision(options, None)).or_else(|| too_large(room, subject, options))
-    }
-
-    fn points(&self, room: &Room, subject: &str, options: &Options) -> u64 {
-        grid_points(room, subject, options)
-    }
-
-    fn validate_chain(
+    fn configure(
         &self,
-        person: &str,
-        _: &str,
-        chain: &Chain,
-        _: &Options,
-    ) -> Option<ErrorKind> {
+        options: &Options,
+        plugins: &Registry,
+    ) -> Result<Box<dyn Task>, SettingsError> {
+        let GazeMapSettings(gaze, grid) = GazeMapSettings::from_options(options)?;
+        Ok(Box::new(GazeMapTask {
+            reaching: Reaching::new(gaze.common, plugins)?,
+            looking: gaze.looking,
+            grid,
+        }))
+    }
+}
+
+/// A configured gaze map.
+struct GazeMapTask {
+    reaching: Reaching,
+    looking: Looking,
+    grid: GridSettings,
+}
+
+impl Task for GazeMapTask {
+    fn effectors(&self) -> Vec<EffectorNeed> {
+        vec![self.reaching.effector_need()]
+    }
+
+    fn validate(&self, subject: &Subject<'_>) -> Option<ErrorKind> {
+        self.looking
+            .eyes(None)
+            .illegible()
+            .or_else(|| self.grid.too_large(subject))
+    }
+
+    fn validate_chain(&self, person: &str, _need: usize, chain: &Chain) -> Option<ErrorKind> {
         needs_look_link(person, chain)
     }
 
-    fn run(&self, ctx: &TaskContext<'_>) -> TaskReport {
-        let setup = Setup::new(ctx);
-        let options = &effective_vision(&ctx.task.options, Some(&setup.person.vision));
-        let chain = with_look_range(&setup.chain, legible_mm(options));
-        let (room, _) = ctx
-            .scenario
-            .surface(&ctx.task.subject)
-            .expect("checked surface");
-        let obstacles = GazeObstacles::new(room, &setup);
-        let judge = |placement: &Placement, point| {
-            see(&chain, placement, point, &obstacles, &setup, options)
-                .reason
-                .is_none()
+    fn points(&self, subject: &Subject<'_>) -> u64 {
+        self.grid.points(subject)
+    }
+
+    fn starts_per_point(&self, placements: u64) -> u64 {
+        self.reaching.starts_per_point(placements)
+    }
+
+    fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
+        let eyes = self.looking.eyes(Some(&input.person.vision));
+        let chain = with_look_range(&chain_of(input, 0), eyes.legible_mm());
+        let points = self.grid.points_mm(&input.subject);
+        self.reaching.dependence(&chain, &[&chain], points, true)
+    }
+
+    fn run(&self, input: &TaskInput<'_>) -> TaskReport {
+        let eyes = self.looking.eyes(Some(&input.person.vision));
+        let chain = with_look_range(&chain_of(input, 0), eyes.legible_mm());
+        let obstacles = GazeObstacles::new(input.room, &self.reaching);
+        let tolerance_mm = self.reaching.common.tolerance_mm;
+        let judge = |placement: &Placement, target| {
+            let looked = Looked {
+                chain: &chain,
+                placement,
+                target,
+            };
+            looked.see(&obstacles, tolerance_mm, &eyes).reason.is_none()
         };
-        run_map(ctx, &setup, &chain, obstacles.body.as_ref(), "gaze", &judge)
+        let asked = MapAsked {
+            reaching: &self.reaching,
+            grid: &self.grid,
+            chain: &chain,
+            obstacles: obstacles.body.as_ref(),
+            of: "gaze",
+        };
+        run_map(input, &asked, &judge)
     }
 }

@@ -4,20 +4,101 @@
 //! fits, solved in parallel. A map stops at the first placement that
 //! reaches a point (in order of promise), where a reach task compares all.
 
+use nalgebra::Point3;
 use rayon::prelude::*;
 
-use super::common::{common_params, mix_seed, Setup};
+use super::common::{chain_of, mix_seed, Common, CommonDecl, Reaching, INCREMENTAL};
 use crate::collision::Obstacles;
 use crate::error::ErrorKind;
 use crate::kinematics::Chain;
-use crate::plugin::Placement;
-use crate::plugin::{Options, ParamSpec, Plugin, Search, SubjectKind, TaskContext, TaskPlugin};
+use crate::plugin::{
+    Dependence, EffectorNeed, Options, ParamSpec, Params, Placement, Plugin, Registry, Search,
+    Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin,
+};
 use crate::report::{MapCell, MapReport, TaskReport};
-use crate::scene::Room;
-use nalgebra::Point3;
+use crate::scene::Surface;
 
 /// The plugin `map`.
 pub struct Map;
+
+/// The grid's options: `step` and `max_points`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct GridSettings {
+    pub step_mm: f64,
+    pub max_points: u64,
+}
+
+impl Settings for GridSettings {
+    fn visit(p: &mut Params<'_>) -> Self {
+        GridSettings {
+            step_mm: p
+                .length("step", 50.0, "the grid's spacing on the surface")
+                .range(1.0, 10_000.0)
+                .get(),
+            max_points: p
+                .integer(
+                    "max_points",
+                    100_000,
+                    "refuse maps with more points than this",
+                )
+                .range(1.0, 1e8)
+                .get() as u64,
+        }
+    }
+}
+
+impl GridSettings {
+    /// How many points the grid of `subject` has (1 if it is not a
+    /// surface).
+    pub fn points(&self, subject: &Subject<'_>) -> u64 {
+        let Subject::Surface(surface) = subject else {
+            return 1;
+        };
+        let (columns, rows) = surface.grid_size(self.step_mm);
+        (columns as u64).saturating_mul(rows as u64)
+    }
+
+    /// A map whose grid would have more than `max_points` points.
+    pub fn too_large(&self, subject: &Subject<'_>) -> Option<ErrorKind> {
+        let points = self.points(subject);
+        let max = self.max_points;
+        (points > max).then(|| ErrorKind::TooLarge {
+            what: format!("the map of `{}` ({points} points)", subject.name()),
+            limit: format!("{max} points: raise `max_points` or the `step`"),
+        })
+    }
+
+    /// The grid's points on `subject`.
+    pub fn points_mm(&self, subject: &Subject<'_>) -> Vec<Point3<f64>> {
+        match subject {
+            Subject::Surface(s) => s
+                .grid(self.step_mm)
+                .cells
+                .iter()
+                .map(|c| c.point_mm)
+                .collect(),
+            Subject::Target(t) => vec![t.position_mm],
+        }
+    }
+}
+
+/// Its settings: the common ones and the grid's.
+struct MapSettings(Common, GridSettings);
+
+impl Settings for MapSettings {
+    fn visit(p: &mut Params<'_>) -> Self {
+        let common = Common::visit(
+            p,
+            &CommonDecl {
+                what: "point",
+                seed_doc: "seeds the solver's random starts (mixed with surface, person and cell)",
+                solver: INCREMENTAL,
+                effector: None,
+            },
+        );
+        MapSettings(common, GridSettings::visit(p))
+    }
+}
 
 impl Plugin for Map {
     fn name(&self) -> &'static str {
@@ -29,45 +110,8 @@ impl Plugin for Map {
     }
 
     fn params(&self) -> Vec<ParamSpec> {
-        let mut params = common_params(
-            "point",
-            "seeds the solver's random starts (mixed with surface, person and cell)",
-        );
-        params.extend(grid_params());
-        params
+        MapSettings::params()
     }
-}
-
-/// The grid's options: `step` and `max_points`.
-pub(super) fn grid_params() -> [ParamSpec; 2] {
-    [
-        ParamSpec::length("step", 50.0, "the grid's spacing on the surface").range(1.0, 10_000.0),
-        ParamSpec::integer(
-            "max_points",
-            100_000,
-            "refuse maps with more points than this",
-        )
-        .range(1.0, 1e8),
-    ]
-}
-
-/// How many points the grid of a map of `subject` has (1 if `subject` is
-/// not a surface of `room`).
-pub(super) fn grid_points(room: &Room, subject: &str, options: &Options) -> u64 {
-    room.surface_named(subject).map_or(1, |surface| {
-        let (columns, rows) = surface.grid_size(options.length_mm("step"));
-        (columns as u64).saturating_mul(rows as u64)
-    })
-}
-
-/// A map whose grid would have more than `max_points` points.
-pub(super) fn too_large(room: &Room, subject: &str, options: &Options) -> Option<ErrorKind> {
-    let points = grid_points(room, subject, options);
-    let max = options.integer("max_points") as u64;
-    (points > max).then(|| ErrorKind::TooLarge {
-        what: format!("the map of `{subject}` ({points} points)"),
-        limit: format!("{max} points: raise `max_points` or the `step`"),
-    })
 }
 
 impl TaskPlugin for Map {
@@ -75,31 +119,61 @@ impl TaskPlugin for Map {
         SubjectKind::Surface
     }
 
-    fn validate(&self, room: &Room, subject: &str, options: &Options) -> Option<ErrorKind> {
-        too_large(room, subject, options)
+    fn configure(
+        &self,
+        options: &Options,
+        plugins: &Registry,
+    ) -> Result<Box<dyn Task>, SettingsError> {
+        let MapSettings(common, grid) = MapSettings::from_options(options)?;
+        Ok(Box::new(MapTask {
+            reaching: Reaching::new(common, plugins)?,
+            grid,
+        }))
+    }
+}
+
+/// A configured map.
+struct MapTask {
+    reaching: Reaching,
+    grid: GridSettings,
+}
+
+impl Task for MapTask {
+    fn effectors(&self) -> Vec<EffectorNeed> {
+        vec![self.reaching.effector_need()]
     }
 
-    fn points(&self, room: &Room, subject: &str, options: &Options) -> u64 {
-        grid_points(room, subject, options)
+    fn validate(&self, subject: &Subject<'_>) -> Option<ErrorKind> {
+        self.grid.too_large(subject)
     }
 
-    fn run(&self, ctx: &TaskContext<'_>) -> TaskReport {
-        let setup = Setup::new(ctx);
-        let tolerance_mm = setup.tolerance_mm;
-        let (room, _) = ctx
-            .scenario
-            .surface(&ctx.task.subject)
-            .expect("checked surface");
-        let obstacles = setup.obstacles(room);
+    fn points(&self, subject: &Subject<'_>) -> u64 {
+        self.grid.points(subject)
+    }
+
+    fn starts_per_point(&self, placements: u64) -> u64 {
+        self.reaching.starts_per_point(placements)
+    }
+
+    fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
+        let chain = chain_of(input, 0);
+        let points = self.grid.points_mm(&input.subject);
+        self.reaching.dependence(&chain, &[&chain], points, false)
+    }
+
+    fn run(&self, input: &TaskInput<'_>) -> TaskReport {
+        let tolerance_mm = self.reaching.common.tolerance_mm;
+        let chain = chain_of(input, 0);
+        let obstacles = self.reaching.obstacles(input.room);
         let judge = |placement: &Placement, _| placement.solution.reaches(tolerance_mm);
-        run_map(
-            ctx,
-            &setup,
-            &setup.chain,
-            obstacles.as_ref(),
-            "reach",
-            &judge,
-        )
+        let asked = MapAsked {
+            reaching: &self.reaching,
+            grid: &self.grid,
+            chain: &chain,
+            obstacles: obstacles.as_ref(),
+            of: "reach",
+        };
+        run_map(input, &asked, &judge)
     }
 }
 
@@ -107,57 +181,71 @@ impl TaskPlugin for Map {
 /// the posture found, and the point.
 pub(super) type Judge<'a> = dyn Fn(&Placement, Point3<f64>) -> bool + Sync + 'a;
 
-/// A map of the task's surface with `chain`: each point's placement found
-/// as for a reach of `chain`'s effector (links kept out of `obstacles`),
-/// judged by `judge`.
+/// What a map (or a gaze map) asks of each point of its grid.
+pub(super) struct MapAsked<'a> {
+    pub reaching: &'a Reaching,
+    pub grid: &'a GridSettings,
+    /// The chain whose effector goes to each point.
+    pub chain: &'a Chain,
+    /// The obstacles its links keep out of.
+    pub obstacles: Option<&'a Obstacles>,
+    /// `reach` or `gaze`.
+    pub of: &'static str,
+}
+
+/// A map of the task's surface: each point's placement found as for a
+/// reach of the chain's effector, judged by `judge`.
 pub(super) fn run_map(
-    ctx: &TaskContext<'_>,
-    setup: &Setup<'_>,
-    chain: &Chain,
-    obstacles: Option<&Obstacles>,
-    of: &'static str,
+    input: &TaskInput<'_>,
+    asked: &MapAsked<'_>,
     judge: &Judge<'_>,
 ) -> TaskReport {
-    let task = ctx.task;
-    let person = setup.person;
-    let (room, surface) = ctx
-        .scenario
-        .surface(&task.subject)
-        .expect("checked surface");
-    let prepared = setup.base.prepare(room, chain);
-    let step_mm = task.options.length_mm("step");
-    let grid = surface.grid(step_mm);
-    ctx.progress.add_work(grid.cells.len() as u64);
+    let Subject::Surface(surface) = input.subject else {
+        unreachable!("the checker gives a map a surface")
+    };
+    TaskReport::Map(map_report(input, surface, asked, judge))
+}
+
+fn map_report(
+    input: &TaskInput<'_>,
+    surface: &Surface,
+    asked: &MapAsked<'_>,
+    judge: &Judge<'_>,
+) -> MapReport {
+    let person = input.person;
+    let reaching = asked.reaching;
+    let prepared = input.base.prepare(input.room, asked.chain);
+    let grid = surface.grid(asked.grid.step_mm);
+    input.progress.add_work(grid.cells.len() as u64);
     let cells: Vec<(MapCell, bool)> = grid
         .cells
         .par_iter()
         .map(|cell| {
             let (column, row) = (cell.column.to_string(), cell.row.to_string());
-            let query = setup.query(
-                cell.point_mm,
-                mix_seed(setup.seed, &[&task.subject, &person.name, &column, &row]),
-                Search::FirstReaching,
-                obstacles,
+            let seed = mix_seed(
+                reaching.common.seed,
+                &[&surface.name, &person.name, &column, &row],
             );
-            let placement = prepared.reach(&query, setup.solver.as_ref());
-            ctx.progress.advance(1);
+            let query = reaching.query(cell.point_mm, seed, Search::FirstReaching, asked.obstacles);
+            let placement = prepared.reach(&query, reaching.solver.as_ref());
+            input.progress.advance(1);
             let counts = judge(&placement, cell.point_mm);
-            let cell = MapCell::new(cell, &placement, chain, counts);
+            let cell = MapCell::new(cell, &placement, asked.chain, counts);
             (cell, counts && placement.retried)
         })
         .collect();
     let retried = cells.iter().filter(|(_, retried)| *retried).count();
     let cells: Vec<MapCell> = cells.into_iter().map(|(cell, _)| cell).collect();
     let mut report = MapReport::new(
-        &surface,
+        surface,
         person,
-        setup.solver_name,
-        step_mm,
-        setup.tolerance_mm,
+        &reaching.common.solver.name,
+        asked.grid.step_mm,
+        reaching.common.tolerance_mm,
         &grid,
         cells,
     );
-    report.of = of;
+    report.of = asked.of;
     report.retried = retried;
-    TaskReport::Map(report)
+    report
 }

@@ -1,4 +1,6 @@
-//! Tasks: what a scenario asks of a person, each a plugin.
+//! Tasks: what a scenario asks of a person, each a plugin. A task plugin
+//! is configured from its options into a [`crate::plugin::Task`], which
+//! runs on what the checker resolved.
 
 mod common;
 mod gaze;
@@ -7,9 +9,9 @@ mod map;
 mod reach;
 mod reach_and_gaze;
 
-pub use common::mix_seed;
-pub use gaze::{person_vision_params, Gaze};
+pub use common::{mix_seed, Common};
+pub use gaze::Gaze;
 pub use gaze_map::GazeMap;
 pub use map::Map;
-pub use reach::Reach;
+pub use reach::{Reach, ReachSettings};
 pub use reach_and_gaze::ReachAndGaze;

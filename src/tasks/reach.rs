@@ -1,11 +1,31 @@
 //! The `reach` task: can this person bring their hand to this target?
 
-use super::common::{common_params, mix_seed, Setup};
-use crate::plugin::{ParamSpec, Plugin, Search, SubjectKind, TaskContext, TaskPlugin};
+use super::common::{chain_of, mix_seed, Common, CommonDecl, Reaching, INCREMENTAL};
+use crate::plugin::{
+    Dependence, EffectorNeed, Options, ParamSpec, Params, Plugin, Registry, Search, Settings,
+    SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin,
+};
 use crate::report::{Asked, ReachReport, TaskReport};
 
 /// The plugin `reach`.
 pub struct Reach;
+
+/// Its settings: the common ones.
+pub struct ReachSettings(pub Common);
+
+impl Settings for ReachSettings {
+    fn visit(p: &mut Params<'_>) -> Self {
+        ReachSettings(Common::visit(
+            p,
+            &CommonDecl {
+                what: "target",
+                seed_doc: "seeds the solver's random starts (mixed with target and person)",
+                solver: INCREMENTAL,
+                effector: None,
+            },
+        ))
+    }
+}
 
 impl Plugin for Reach {
     fn name(&self) -> &'static str {
@@ -17,10 +37,7 @@ impl Plugin for Reach {
     }
 
     fn params(&self) -> Vec<ParamSpec> {
-        common_params(
-            "target",
-            "seeds the solver's random starts (mixed with target and person)",
-        )
+        ReachSettings::params()
     }
 }
 
@@ -29,33 +46,66 @@ impl TaskPlugin for Reach {
         SubjectKind::Target
     }
 
-    fn run(&self, ctx: &TaskContext<'_>) -> TaskReport {
-        let task = ctx.task;
-        let setup = Setup::new(ctx);
-        let (room, target) = ctx.scenario.target(&task.subject).expect("checked target");
-        let obstacles = setup.obstacles(room);
-        let query = setup.query(
+    fn configure(
+        &self,
+        options: &Options,
+        plugins: &Registry,
+    ) -> Result<Box<dyn Task>, SettingsError> {
+        let ReachSettings(common) = ReachSettings::from_options(options)?;
+        Ok(Box::new(ReachTask(Reaching::new(common, plugins)?)))
+    }
+}
+
+/// A configured reach.
+struct ReachTask(Reaching);
+
+impl Task for ReachTask {
+    fn effectors(&self) -> Vec<EffectorNeed> {
+        vec![self.0.effector_need()]
+    }
+
+    fn starts_per_point(&self, placements: u64) -> u64 {
+        self.0.starts_per_point(placements)
+    }
+
+    fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
+        let chain = chain_of(input, 0);
+        let Subject::Target(target) = input.subject else {
+            return self.0.dependence(&chain, &[&chain], Vec::new(), false);
+        };
+        self.0
+            .dependence(&chain, &[&chain], vec![target.position_mm], false)
+    }
+
+    fn run(&self, input: &TaskInput<'_>) -> TaskReport {
+        let reaching = &self.0;
+        let Subject::Target(target) = input.subject else {
+            unreachable!("the checker gives a reach a target")
+        };
+        let chain = chain_of(input, 0);
+        let obstacles = reaching.obstacles(input.room);
+        let query = reaching.query(
             target.position_mm,
-            mix_seed(setup.seed, &[&task.subject, &setup.person.name]),
+            mix_seed(reaching.common.seed, &[&target.name, &input.person.name]),
             Search::MostComfortable,
             obstacles.as_ref(),
         );
-        let placement = setup
+        let placement = input
             .base
-            .prepare(room, &setup.chain)
-            .reach(&query, setup.solver.as_ref());
+            .prepare(input.room, &chain)
+            .reach(&query, reaching.solver.as_ref());
         let asked = Asked {
-            task,
-            person: setup.person,
-            chain: &setup.chain,
-            solver: setup.solver_of(&placement),
-            tolerance_mm: setup.tolerance_mm,
+            subject: &target.name,
+            person: input.person,
+            chain: &chain,
+            solver: reaching.solver_of(&placement),
+            tolerance_mm: reaching.common.tolerance_mm,
         };
         TaskReport::Reach(ReachReport::new(
             &asked,
             &placement,
             target.position_mm,
-            room,
+            input.room,
         ))
     }
 }

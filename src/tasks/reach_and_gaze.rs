@@ -8,25 +8,68 @@
 
 use nalgebra::Point3;
 
-use super::common::{common_params, mix_seed, Setup};
-use super::gaze::{
-    effective_vision, illegible, legible_mm, limit_look, needs_look_link, see, vision_params,
-    GazeObstacles,
-};
+use super::common::{chain_of, mix_seed, Common, CommonDecl, Reaching};
+use super::gaze::{limit_look, needs_look_link, GazeObstacles, Looked, Looking};
 use crate::collision::PlacedObstacles;
 use crate::error::ErrorKind;
 use crate::kinematics::{Body, Chain};
 use crate::plugin::{
-    BasePose, IkSolution, Options, ParamSpec, Placement, Plugin, PluginKind, Search, SubjectKind,
-    TaskContext, TaskPlugin,
+    BasePose, Dependence, EffectorNeed, IkSolution, Options, ParamSpec, Params, Placement, Plugin,
+    Registry, Search, Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin,
 };
 use crate::report::{Asked, GazeReport, ReachAndGazeReport, ReachReport, TaskReport};
-use crate::scene::Room;
 use crate::solvers::fabrik::{solve_tree, TreeGoal, TreeProblem, TreeSolution};
 use crate::solvers::FabrikSettings;
 
 /// The plugin `reach_and_gaze`.
 pub struct ReachAndGaze;
+
+/// Its settings: the common ones (fabrik as solver), the eyes, their
+/// weight, and what they must make out.
+struct ReachAndGazeSettings {
+    common: Common,
+    eyes: String,
+    gaze_weight: f64,
+    looking: Looking,
+}
+
+impl Settings for ReachAndGazeSettings {
+    fn visit(p: &mut Params<'_>) -> Self {
+        let common = Common::visit(
+            p,
+            &CommonDecl {
+                what: "target",
+                seed_doc: "seeds the solver's random starts (mixed with target and person)",
+                solver: (
+                    "fabrik",
+                    "fabrik, whose tree solve moves hand and eyes together",
+                ),
+                effector: None,
+            },
+        );
+        let eyes = p
+            .name(
+                "eyes",
+                "eyes",
+                "the effector whose chain ends in the look link",
+            )
+            .get();
+        let gaze_weight = p
+            .number(
+                "gaze_weight",
+                0.1,
+                "the eyes' priority in the shared joints, against the hand's 1",
+            )
+            .range(0.0, 100.0)
+            .get();
+        ReachAndGazeSettings {
+            common,
+            eyes,
+            gaze_weight,
+            looking: Looking::visit(p),
+        }
+    }
+}
 
 impl Plugin for ReachAndGaze {
     fn name(&self) -> &'static str {
@@ -38,35 +81,7 @@ impl Plugin for ReachAndGaze {
     }
 
     fn params(&self) -> Vec<ParamSpec> {
-        let mut params = common_params(
-            "target",
-            "seeds the solver's random starts (mixed with target and person)",
-        );
-        for p in &mut params {
-            if p.name == "solver" {
-                *p = ParamSpec::plugin(
-                    "solver",
-                    PluginKind::Solver,
-                    "fabrik",
-                    "fabrik, whose tree solve moves hand and eyes together",
-                );
-            }
-        }
-        params.extend([
-            ParamSpec::name(
-                "eyes",
-                "eyes",
-                "the effector whose chain ends in the look link",
-            ),
-            ParamSpec::number(
-                "gaze_weight",
-                0.1,
-                "the eyes' priority in the shared joints, against the hand's 1",
-            )
-            .range(0.0, 100.0),
-        ]);
-        params.extend(vision_params());
-        params
+        ReachAndGazeSettings::params()
     }
 }
 
@@ -75,53 +90,111 @@ impl TaskPlugin for ReachAndGaze {
         SubjectKind::Target
     }
 
-    fn validate(&self, _room: &Room, _subject: &str, options: &Options) -> Option<ErrorKind> {
-        let solver = &options.plugin("solver").name;
-        if solver != "fabrik" {
+    fn configure(
+        &self,
+        options: &Options,
+        plugins: &Registry,
+    ) -> Result<Box<dyn Task>, SettingsError> {
+        let s = ReachAndGazeSettings::from_options(options)?;
+        // The tree solve is fabrik's: its settings when fabrik is named
+        // (`validate` refuses any other solver).
+        let tree =
+            if s.common.solver.name == "fabrik" {
+                let options = s.common.solver.options.completed(&FabrikSettings::params());
+                Some(FabrikSettings::from_options(&options).map_err(|e| {
+                    SettingsError::invalid("solver", format!("solver `fabrik`: {e}"))
+                })?)
+            } else {
+                None
+            };
+        Ok(Box::new(ReachAndGazeTask {
+            reaching: Reaching::new(s.common, plugins)?,
+            eyes: s.eyes,
+            gaze_weight: s.gaze_weight,
+            looking: s.looking,
+            tree,
+        }))
+    }
+}
+
+/// A configured `reach T and gaze`.
+struct ReachAndGazeTask {
+    reaching: Reaching,
+    eyes: String,
+    gaze_weight: f64,
+    looking: Looking,
+    /// Fabrik's settings for the tree solve (`None`: another solver was
+    /// named, which `validate` refuses).
+    tree: Option<FabrikSettings>,
+}
+
+impl Task for ReachAndGazeTask {
+    fn effectors(&self) -> Vec<EffectorNeed> {
+        vec![
+            self.reaching.effector_need(),
+            EffectorNeed {
+                option: "eyes",
+                name: Some(self.eyes.clone()),
+            },
+        ]
+    }
+
+    fn validate(&self, _subject: &Subject<'_>) -> Option<ErrorKind> {
+        let solver = &self.reaching.common.solver.name;
+        if self.tree.is_none() {
             return Some(ErrorKind::Unsupported {
                 what: format!("`reach ... and gaze` with solver `{solver}`"),
                 help: "hand and eyes are solved together by the tree solve of `fabrik`: leave `solver` out or name fabrik".into(),
             });
         }
-        illegible(&effective_vision(options, None))
+        self.looking.eyes(None).illegible()
     }
 
-    fn effector_options(&self) -> &'static [&'static str] {
-        &["effector", "eyes"]
-    }
-
-    fn validate_chain(
-        &self,
-        person: &str,
-        option: &str,
-        chain: &Chain,
-        _: &Options,
-    ) -> Option<ErrorKind> {
-        (option == "eyes")
+    fn validate_chain(&self, person: &str, need: usize, chain: &Chain) -> Option<ErrorKind> {
+        (need == 1)
             .then(|| needs_look_link(person, chain))
             .flatten()
     }
 
-    fn run(&self, ctx: &TaskContext<'_>) -> TaskReport {
-        let task = ctx.task;
-        let setup = Setup::new(ctx);
-        let (room, target) = ctx.scenario.target(&task.subject).expect("checked target");
-        let options = &effective_vision(&task.options, Some(&setup.person.vision));
-        let (body, hand, eyes) = body_with_look_range(&setup, options);
-        let obstacles = GazeObstacles::new(room, &setup);
-        let query = setup.query(
+    fn starts_per_point(&self, placements: u64) -> u64 {
+        self.reaching.starts_per_point(placements)
+    }
+
+    fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
+        let eyes = self.looking.eyes(Some(&input.person.vision));
+        let (body, _, eyes_index) = body_with_look_range(input, eyes.legible_mm());
+        let hand_chain = chain_of(input, 0);
+        let eyes_chain = body.chain(eyes_index);
+        let points = match input.subject {
+            Subject::Target(t) => vec![t.position_mm],
+            Subject::Surface(_) => Vec::new(),
+        };
+        self.reaching
+            .dependence(&hand_chain, &[&hand_chain, &eyes_chain], points, true)
+    }
+
+    fn run(&self, input: &TaskInput<'_>) -> TaskReport {
+        let reaching = &self.reaching;
+        let Subject::Target(target) = input.subject else {
+            unreachable!("the checker gives a reach and gaze a target")
+        };
+        let eyes = self.looking.eyes(Some(&input.person.vision));
+        let (body, hand, eyes_index) = body_with_look_range(input, eyes.legible_mm());
+        let hand_chain = chain_of(input, 0);
+        let obstacles = GazeObstacles::new(input.room, reaching);
+        let query = reaching.query(
             target.position_mm,
             mix_seed(
-                setup.seed,
-                &[&task.subject, &setup.person.name, "reach+gaze"],
+                reaching.common.seed,
+                &[&target.name, &input.person.name, "reach+gaze"],
             ),
             Search::MostComfortable,
             obstacles.body.as_ref(),
         );
-        let pose = setup
+        let pose = input
             .base
-            .prepare(room, &setup.chain)
-            .reach(&query, setup.solver.as_ref())
+            .prepare(input.room, &hand_chain)
+            .reach(&query, reaching.solver.as_ref())
             .pose;
         let goal = pose.to_base(&target.position_mm);
         let goals = [
@@ -131,17 +204,17 @@ impl TaskPlugin for ReachAndGaze {
                 weight: 1.0,
             },
             TreeGoal {
-                effector: eyes,
+                effector: eyes_index,
                 target_mm: goal,
-                weight: options.number("gaze_weight"),
+                weight: self.gaze_weight,
             },
         ];
         let tree = solve_tree(
-            &FabrikSettings::from_options(&options.plugin("solver").options),
+            &self.tree.unwrap_or_else(FabrikSettings::with_defaults),
             &TreeProblem {
                 body: &body,
                 goals: &goals,
-                tolerance_mm: setup.tolerance_mm,
+                tolerance_mm: reaching.common.tolerance_mm,
                 seed: query.seed,
                 obstacles: obstacles.body.as_ref().map(|o| PlacedObstacles {
                     obstacles: o,
@@ -150,11 +223,11 @@ impl TaskPlugin for ReachAndGaze {
             },
         );
         let asked = |chain| Asked {
-            task,
-            person: setup.person,
+            subject: &target.name,
+            person: input.person,
             chain,
-            solver: setup.solver_name,
-            tolerance_mm: setup.tolerance_mm,
+            solver: &reaching.common.solver.name,
+            tolerance_mm: reaching.common.tolerance_mm,
         };
         let hand_chain = body.chain(hand);
         let mut hand_placement = placed(&body, hand, &hand_chain, &tree, pose, target.position_mm);
@@ -165,18 +238,23 @@ impl TaskPlugin for ReachAndGaze {
             &asked(&hand_chain),
             &hand_placement,
             target.position_mm,
-            room,
+            input.room,
         );
-        let eyes_chain = body.chain(eyes);
-        let eyes_placement = placed(&body, eyes, &eyes_chain, &tree, pose, target.position_mm);
-        let sight = see(
+        let eyes_chain = body.chain(eyes_index);
+        let eyes_placement = placed(
+            &body,
+            eyes_index,
             &eyes_chain,
-            &eyes_placement,
+            &tree,
+            pose,
             target.position_mm,
-            &obstacles,
-            &setup,
-            options,
         );
+        let looked = Looked {
+            chain: &eyes_chain,
+            placement: &eyes_placement,
+            target: target.position_mm,
+        };
+        let sight = looked.see(&obstacles, reaching.common.tolerance_mm, &eyes);
         let gaze = GazeReport::new(
             &asked(&eyes_chain),
             &eyes_placement,
@@ -184,8 +262,8 @@ impl TaskPlugin for ReachAndGaze {
             sight,
         );
         TaskReport::ReachAndGaze(Box::new(ReachAndGazeReport {
-            name: task.subject.clone(),
-            person: setup.person.name.clone(),
+            name: target.name.clone(),
+            person: input.person.name.clone(),
             ok: reach.ok && gaze.ok,
             reach,
             gaze,
@@ -195,16 +273,13 @@ impl TaskPlugin for ReachAndGaze {
 
 /// The person's body with the eyes' look link kept to the legible range,
 /// and the indices of the hand and eye effectors.
-fn body_with_look_range(setup: &Setup<'_>, options: &Options) -> (Body, usize, usize) {
-    let mut body = setup.person.body.clone();
-    let index = |name: Option<&str>| {
-        name.map_or(Some(0), |n| body.effector_index(n))
-            .expect("checked effector")
-    };
-    let hand = index(options.name_opt("effector"));
-    let eyes = index(options.name_opt("eyes"));
-    let look = body.effectors[eyes].joint.expect("checked look link");
-    limit_look(&mut body.joints[look], legible_mm(options));
+fn body_with_look_range(input: &TaskInput<'_>, legible_mm: [f64; 2]) -> (Body, usize, usize) {
+    let mut body = input.person.body.clone();
+    let hand = input.effectors.first().copied().unwrap_or(0);
+    let eyes = input.effectors.get(1).copied().unwrap_or(0);
+    if let Some(look) = body.effectors[eyes].joint {
+        limit_look(&mut body.joints[look], legible_mm);
+    }
     (body, hand, eyes)
 }
 

@@ -18,7 +18,11 @@ pub use tree::{solve_tree, TreeGoal, TreeProblem, TreeSolution};
 use rand_chacha::rand_core::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
-use crate::plugin::{IkProblem, IkSolution, Options, ParamSpec, Plugin, Solver, SolverPlugin};
+use crate::plugin::{
+    IkProblem, IkSolution, Options, ParamSpec, Params, Plugin, Settings, SettingsError, Solver,
+    SolverPlugin,
+};
+use crate::scene::Preferred;
 use crate::solvers::starts::Starts;
 
 /// The plugin `fabrik`.
@@ -39,6 +43,94 @@ pub struct FabrikSettings {
     pub ccd: bool,
 }
 
+impl Settings for FabrikSettings {
+    fn visit(p: &mut Params<'_>) -> Self {
+        // Read in the order `reach plugins` lists them; the struct's fields
+        // are in another.
+        let starts = p
+            .integer(
+                "starts",
+                4,
+                "starting postures; the most comfortable that reaches is kept",
+            )
+            .range(1.0, 1000.0)
+            .get() as u32;
+        let neutral_start = p
+            .boolean(
+                "neutral_start",
+                true,
+                "the first start is the neutral posture, the others random",
+            )
+            .get();
+        let max_iterations = p
+            .integer(
+                "max_iterations",
+                400,
+                "backward and forward passes per start, at most",
+            )
+            .range(1.0, 1e6)
+            .get() as u32;
+        let stall = p
+            .integer(
+                "stall",
+                4,
+                "stop after this many passes in a row that did not bring the effector closer",
+            )
+            .range(1.0, 1e6)
+            .get() as u32;
+        let sweeps = p
+            .integer("sweeps", 2, "turns of each group's joints per forward pass")
+            .range(1.0, 100.0)
+            .get() as u32;
+        let samples = p
+            .integer(
+                "samples",
+                7,
+                "values per joint when a bone must be moved out of an obstacle",
+            )
+            .range(2.0, 100.0)
+            .get() as u32;
+        let kicks = p
+            .integer("kicks", 40, "when a start stalls short of the target, kick the posture and go on, this many times")
+            .range(0.0, 1000.0)
+            .get() as u32;
+        let kick = p
+            .number(
+                "kick",
+                0.3,
+                "a kick moves each joint by up to this fraction of its range",
+            )
+            .range(0.0, 1.0)
+            .get();
+        let ccd = p
+            .boolean(
+                "ccd",
+                true,
+                "after each pass, a sweep of groups turning the effector itself towards the target",
+            )
+            .get();
+        let avoid_obstacles = p
+            .boolean(
+                "avoid_obstacles",
+                true,
+                "move bones out of obstacles, and prefer clear postures among starts",
+            )
+            .get();
+        FabrikSettings {
+            starts,
+            neutral_start,
+            max_iterations,
+            stall,
+            sweeps,
+            samples,
+            avoid_obstacles,
+            kicks,
+            kick,
+            ccd,
+        }
+    }
+}
+
 impl Plugin for Fabrik {
     fn name(&self) -> &'static str {
         "fabrik"
@@ -49,50 +141,15 @@ impl Plugin for Fabrik {
     }
 
     fn params(&self) -> Vec<ParamSpec> {
-        use ParamSpec as P;
-        vec![
-            P::integer("starts", 4, "starting postures; the most comfortable that reaches is kept")
-                .range(1.0, 1000.0),
-            P::boolean("neutral_start", true, "the first start is the neutral posture, the others random"),
-            P::integer("max_iterations", 400, "backward and forward passes per start, at most")
-                .range(1.0, 1e6),
-            P::integer("stall", 4, "stop after this many passes in a row that did not bring the effector closer")
-                .range(1.0, 1e6),
-            P::integer("sweeps", 2, "turns of each group's joints per forward pass").range(1.0, 100.0),
-            P::integer("samples", 7, "values per joint when a bone must be moved out of an obstacle")
-                .range(2.0, 100.0),
-            P::integer("kicks", 40, "when a start stalls short of the target, kick the posture and go on, this many times")
-                .range(0.0, 1000.0),
-            P::number("kick", 0.3, "a kick moves each joint by up to this fraction of its range").range(0.0, 1.0),
-            P::boolean("ccd", true, "after each pass, a sweep of groups turning the effector itself towards the target"),
-            P::boolean("avoid_obstacles", true, "move bones out of obstacles, and prefer clear postures among starts"),
-        ]
-    }
-}
-
-impl FabrikSettings {
-    /// The settings an option block of `fabrik` gives.
-    pub fn from_options(o: &Options) -> Self {
-        FabrikSettings {
-            starts: o.integer("starts") as u32,
-            neutral_start: o.boolean("neutral_start"),
-            max_iterations: o.integer("max_iterations") as u32,
-            stall: o.integer("stall") as u32,
-            sweeps: o.integer("sweeps") as u32,
-            samples: o.integer("samples") as u32,
-            avoid_obstacles: o.boolean("avoid_obstacles"),
-            kicks: o.integer("kicks") as u32,
-            kick: o.number("kick"),
-            ccd: o.boolean("ccd"),
-        }
+        FabrikSettings::params()
     }
 }
 
 impl SolverPlugin for Fabrik {
-    fn build(&self, o: &Options) -> Box<dyn Solver> {
-        Box::new(FabrikSolver {
-            settings: FabrikSettings::from_options(o),
-        })
+    fn build(&self, options: &Options) -> Result<Box<dyn Solver>, SettingsError> {
+        Ok(Box::new(FabrikSolver {
+            settings: FabrikSettings::from_options(options)?,
+        }))
     }
 }
 
@@ -108,20 +165,22 @@ impl Solver for FabrikSolver {
         // Kicks draw from their own stream, so a start's posture does not
         // depend on how many kicks the starts before it took.
         let mut rng = ChaCha8Rng::seed_from_u64(problem.seed ^ 0x6b69_636b);
-        let mut best: Option<(IkSolution, f64)> = None;
+        let mut best = Preferred::new(problem.tolerance_mm);
         let mut iterations = 0;
         for start in starts.take(self.settings.starts as usize) {
             let solution = pass::Pass::new(&self.settings, problem, &bones, start).run(&mut rng);
             iterations += solution.iterations;
             let comfort = problem.chain.discomfort(&solution.q);
-            if best.as_ref().is_none_or(|(b, b_comfort)| {
-                solution.preferred_to(comfort, b, *b_comfort, problem.tolerance_mm)
-            }) {
-                best = Some((solution, comfort));
-            }
+            best.offer(solution, comfort);
         }
-        let mut solution = best.expect("at least one start").0;
+        let mut solution = best
+            .into_kept()
+            .unwrap_or_else(|| IkSolution::unsolved(problem.chain));
         solution.iterations = iterations;
         solution
+    }
+
+    fn starts(&self) -> u64 {
+        u64::from(self.settings.starts.max(1))
     }
 }

@@ -24,7 +24,11 @@
 
 mod descent;
 
-use crate::plugin::{IkProblem, IkSolution, Options, ParamSpec, Plugin, Solver, SolverPlugin};
+use crate::plugin::{
+    IkProblem, IkSolution, Options, ParamSpec, Params, Plugin, Settings, SettingsError, Solver,
+    SolverPlugin,
+};
+use crate::scene::Preferred;
 use crate::solvers::starts::Starts;
 
 /// The plugin `incremental`.
@@ -50,6 +54,124 @@ pub struct IncrementalSettings {
     pub avoid_obstacles: bool,
 }
 
+impl Settings for IncrementalSettings {
+    fn visit(p: &mut Params<'_>) -> Self {
+        IncrementalSettings {
+            rate: p
+                .number("rate", 0.05, "first increment, as a fraction of each joint's range")
+                .range(1e-6, 1.0)
+                .get(),
+            gamma: p
+                .number(
+                    "gamma",
+                    3.0,
+                    "eq. 2: divide the rate by this when a sweep stops improving (1: never)",
+                )
+                .range(1.0, 100.0)
+                .get(),
+            threshold_mm: p
+                .length(
+                    "threshold",
+                    1.0,
+                    "a sweep improving the distance less than this is not improving",
+                )
+                .range(0.0, 1000.0)
+                .get(),
+            min_rate: p
+                .number(
+                    "min_rate",
+                    1e-5,
+                    "stop once every increment is below this fraction of its range",
+                )
+                .range(1e-12, 1.0)
+                .get(),
+            sign_memory: p
+                .boolean(
+                    "sign_memory",
+                    true,
+                    "try first the direction that last worked for each joint",
+                )
+                .get(),
+            grow: p
+                .number(
+                    "grow",
+                    2.0,
+                    "a joint's increment times this after a kept move (1: fixed)",
+                )
+                .range(1.0, 10.0)
+                .get(),
+            shrink: p
+                .number(
+                    "shrink",
+                    0.5,
+                    "a joint's increment times this after a miss (1: fixed)",
+                )
+                .range(0.01, 1.0)
+                .get(),
+            eager_pair: p
+                .boolean(
+                    "eager_pair",
+                    true,
+                    "evaluate both directions before choosing (same answer, faster)",
+                )
+                .get(),
+            incremental_fk: p
+                .boolean(
+                    "incremental_fk",
+                    true,
+                    "effector after a one-joint change at constant cost (eq. 6-8)",
+                )
+                .get(),
+            starts: p
+                .integer(
+                    "starts",
+                    6,
+                    "starting postures; the most comfortable that reaches is kept",
+                )
+                .range(1.0, 1000.0)
+                .get() as u32,
+            neutral_start: p
+                .boolean(
+                    "neutral_start",
+                    true,
+                    "the first start is the neutral posture, the others random",
+                )
+                .get(),
+            stall: p
+                .integer(
+                    "stall",
+                    10,
+                    "stop after this many sweeps in a row that did not improve",
+                )
+                .range(1.0, 1e6)
+                .get() as u32,
+            stall_ratio: p
+                .number(
+                    "stall_ratio",
+                    0.001,
+                    "a sweep improving the distance by less than this fraction did not",
+                )
+                .range(0.0, 1.0)
+                .get(),
+            max_sweeps: p
+                .integer(
+                    "max_sweeps",
+                    1000,
+                    "stop after this many sweeps over all joints",
+                )
+                .range(1.0, 1e6)
+                .get() as u32,
+            avoid_obstacles: p
+                .boolean(
+                    "avoid_obstacles",
+                    true,
+                    "a posture whose links pass through an obstacle does not count as reaching when choosing among starts",
+                )
+                .get(),
+        }
+    }
+}
+
 impl Plugin for Incremental {
     fn name(&self) -> &'static str {
         "incremental"
@@ -60,118 +182,15 @@ impl Plugin for Incremental {
     }
 
     fn params(&self) -> Vec<ParamSpec> {
-        use ParamSpec as P;
-        vec![
-            P::number(
-                "rate",
-                0.05,
-                "first increment, as a fraction of each joint's range",
-            )
-            .range(1e-6, 1.0),
-            P::number(
-                "gamma",
-                3.0,
-                "eq. 2: divide the rate by this when a sweep stops improving (1: never)",
-            )
-            .range(1.0, 100.0),
-            P::length(
-                "threshold",
-                1.0,
-                "a sweep improving the distance less than this is not improving",
-            )
-            .range(0.0, 1000.0),
-            P::number(
-                "min_rate",
-                1e-5,
-                "stop once every increment is below this fraction of its range",
-            )
-            .range(1e-12, 1.0),
-            P::boolean(
-                "sign_memory",
-                true,
-                "try first the direction that last worked for each joint",
-            ),
-            P::number(
-                "grow",
-                2.0,
-                "a joint's increment times this after a kept move (1: fixed)",
-            )
-            .range(1.0, 10.0),
-            P::number(
-                "shrink",
-                0.5,
-                "a joint's increment times this after a miss (1: fixed)",
-            )
-            .range(0.01, 1.0),
-            P::boolean(
-                "eager_pair",
-                true,
-                "evaluate both directions before choosing (same answer, faster)",
-            ),
-            P::boolean(
-                "incremental_fk",
-                true,
-                "effector after a one-joint change at constant cost (eq. 6-8)",
-            ),
-            P::integer(
-                "starts",
-                6,
-                "starting postures; the most comfortable that reaches is kept",
-            )
-            .range(1.0, 1000.0),
-            P::boolean(
-                "neutral_start",
-                true,
-                "the first start is the neutral posture, the others random",
-            ),
-            P::integer(
-                "stall",
-                10,
-                "stop after this many sweeps in a row that did not improve",
-            )
-            .range(1.0, 1e6),
-            P::number(
-                "stall_ratio",
-                0.001,
-                "a sweep improving the distance by less than this fraction did not",
-            )
-            .range(0.0, 1.0),
-            P::integer(
-                "max_sweeps",
-                1000,
-                "stop after this many sweeps over all joints",
-            )
-            .range(1.0, 1e6),
-            P::boolean(
-                "avoid_obstacles",
-                true,
-                "a posture whose links pass through an obstacle does not count as reaching when choosing among starts",
-            ),
-        ]
+        IncrementalSettings::params()
     }
 }
 
 impl SolverPlugin for Incremental {
-    fn build(&self, o: &Options) -> Box<dyn Solver> {
-        Box::new(IncrementalSolver {
-            settings: IncrementalSettings {
-                rate: o.number("rate"),
-                gamma: o.number("gamma"),
-                threshold_mm: o.length_mm("threshold"),
-                min_rate: o.number("min_rate"),
-                sign_memory: o.boolean("sign_memory"),
-                grow: o.number("grow"),
-                shrink: o.number("shrink"),
-                eager_pair: o.boolean("eager_pair"),
-                incremental_fk: o.boolean("incremental_fk"),
-                starts: o.integer("starts") as u32,
-                neutral_start: o.boolean("neutral_start"),
-                stall: o.integer("stall") as u32,
-                stall_ratio: o.number("stall_ratio"),
-                max_sweeps: o.integer("max_sweeps") as u32,
-                avoid_obstacles: o.boolean("avoid_obstacles"),
-            },
-        })
+    fn build(&self, options: &Options) -> Result<Box<dyn Solver>, SettingsError> {
+        Ok(Box::new(IncrementalSolver {
+            settings: IncrementalSettings::from_options(options)?,
+        }))
     }
 }
 
@@ -183,16 +202,17 @@ pub struct IncrementalSolver {
 impl Solver for IncrementalSolver {
     fn solve(&self, problem: &IkProblem<'_>) -> IkSolution {
         let starts = Starts::new(problem.chain, problem.seed, self.settings.neutral_start);
-        let mut best: Option<(IkSolution, f64)> = None;
+        let mut best = Preferred::new(problem.tolerance_mm);
         for start in starts.take(self.settings.starts as usize) {
             let solution = descent::descend(&self.settings, problem, start);
             let comfort = problem.chain.discomfort(&solution.q);
-            if best.as_ref().is_none_or(|(b, b_comfort)| {
-                solution.preferred_to(comfort, b, *b_comfort, problem.tolerance_mm)
-            }) {
-                best = Some((solution, comfort));
-            }
+            best.offer(solution, comfort);
         }
-        best.expect("at least one start").0
+        best.into_kept()
+            .unwrap_or_else(|| IkSolution::unsolved(problem.chain))
+    }
+
+    fn starts(&self) -> u64 {
+        u64::from(self.settings.starts.max(1))
     }
 }

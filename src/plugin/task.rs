@@ -1,0 +1,120 @@
+//! Tasks: what a scenario asks of a person. A task plugin is configured
+//! once, by the checker, from its validated options (the solvers they name
+//! built then); the checker also resolves the task's subject, person and
+//! effectors, and a run hands them to the configured task, which looks no
+//! name up.
+
+use nalgebra::Point3;
+
+use super::{Base, Options, Plugin, Registry, SettingsError};
+use crate::error::ErrorKind;
+use crate::kinematics::Chain;
+use crate::progress::Progress;
+use crate::report::TaskReport;
+use crate::scene::{Person, Room, Surface, Target};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SubjectKind {
+    /// A named target of a room.
+    Target,
+    /// A surface: a `surface` of a room or a face of a box (`counter.top`).
+    Surface,
+}
+
+/// What a task is about, resolved.
+#[derive(Clone, Copy, Debug)]
+pub enum Subject<'a> {
+    Target(&'a Target),
+    Surface(&'a Surface),
+}
+
+impl Subject<'_> {
+    /// As the file names it: `mug`, `counter.top`.
+    pub fn name(&self) -> &str {
+        match self {
+            Subject::Target(t) => &t.name,
+            Subject::Surface(s) => &s.name,
+        }
+    }
+}
+
+/// An effector a task's options name (`None`: the mannequin's first),
+/// which the checker resolves for each person.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EffectorNeed {
+    /// The option that names it, where a diagnostic points.
+    pub option: &'static str,
+    pub name: Option<String>,
+}
+
+/// Everything a configured task runs on, resolved by the checker.
+pub struct TaskInput<'a> {
+    pub room: &'a Room,
+    pub subject: Subject<'a>,
+    pub person: &'a Person,
+    /// The person's base, built.
+    pub base: &'a dyn Base,
+    /// The effectors of [`Task::effectors`], in that order, as indices into
+    /// the person's body.
+    pub effectors: &'a [usize],
+    /// Where a long task reports its progress.
+    pub progress: &'a dyn Progress,
+}
+
+/// What a task's answer depends on in its room beyond its own settings,
+/// subject and person, for the cache of watch mode: the placements its
+/// base may try for each point (through `chain`), and the obstacles within
+/// `reach_mm` of one of them.
+pub struct Dependence {
+    /// The chain whose placements the base searches.
+    pub chain: Chain,
+    /// The points the task reaches for, in the room.
+    pub points_mm: Vec<Point3<f64>>,
+    /// How far from the hip a link (grown by the clearance) or a line of
+    /// sight may go; `None`: no obstacle is looked at.
+    pub reach_mm: Option<f64>,
+    /// Lines of sight run from the eyes (within `reach_mm` of the hip) to
+    /// each point, so obstacles between count too.
+    pub sight_lines: bool,
+}
+
+pub trait TaskPlugin: Plugin {
+    /// Whether the task's subjects are targets (reach, gaze) or surfaces
+    /// (map); the checker resolves them accordingly.
+    fn subject(&self) -> SubjectKind;
+    /// The task that validated `options` configure; the plugins its options
+    /// name are built from `plugins`.
+    fn configure(
+        &self,
+        options: &Options,
+        plugins: &Registry,
+    ) -> Result<Box<dyn Task>, SettingsError>;
+}
+
+/// A task configured from its settings.
+pub trait Task: Send + Sync {
+    /// The effectors its options name, which the checker resolves for each
+    /// person.
+    fn effectors(&self) -> Vec<EffectorNeed>;
+    /// A check of the task on its resolved subject beyond its options (a
+    /// map too large, say); the checker reports it at the subject.
+    fn validate(&self, _subject: &Subject<'_>) -> Option<ErrorKind> {
+        None
+    }
+    /// A check of one person's chain to effector `need` (an index into
+    /// [`Task::effectors`]): a gaze needs a look link. Reported at the
+    /// person's name.
+    fn validate_chain(&self, _person: &str, _need: usize, _chain: &Chain) -> Option<ErrorKind> {
+        None
+    }
+    /// How many reaches the task asks of `subject` (a map: its points).
+    fn points(&self, _subject: &Subject<'_>) -> u64 {
+        1
+    }
+    /// The most solver starts one point may need from `placements`
+    /// candidate placements (what the limit on solver starts counts).
+    fn starts_per_point(&self, placements: u64) -> u64;
+    /// What the answer depends on in the room (for the cache).
+    fn dependence(&self, input: &TaskInput<'_>) -> Dependence;
+    fn run(&self, input: &TaskInput<'_>) -> TaskReport;
+}

@@ -1,0 +1,213 @@
+//! A map: which points of a surface the person reaches (or, a gaze map,
+//! sees), on a grid.
+
+use std::fmt::Write;
+
+use serde::Serialize;
+
+use super::parts::point;
+use super::{deg, fixed, mm, Answer, Figure, ReportKind};
+use crate::kinematics::Chain;
+use crate::scene::{Grid, GridCell, Person, Placement, Surface};
+
+/// How much a map's share may move (percentage points) before its answer
+/// counts as changed.
+const SHARE_TOLERANCE_PERCENT: f64 = 0.5;
+
+/// One map: which points of a surface the person reaches.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct MapReport {
+    /// The surface (`counter.top`).
+    pub name: String,
+    pub person: String,
+    /// What a point asks: `reach` (reached) or `gaze` (seen).
+    pub of: &'static str,
+    /// At least one point is reachable.
+    pub ok: bool,
+    pub points: usize,
+    pub reachable: usize,
+    /// `reachable / points`, four decimals.
+    pub fraction: f64,
+    /// Lowest and highest reachable point, if any.
+    pub reachable_heights_mm: Option<[f64; 2]>,
+    pub step_mm: f64,
+    pub tolerance_mm: f64,
+    pub solver: String,
+    /// Points that count only thanks to the task's `blocked_solver` (the
+    /// solver reached them from no placement without going through an
+    /// obstacle).
+    pub retried: usize,
+    /// The base plugin.
+    pub base: String,
+    /// `plan` for a horizontal surface, `elevation` for a vertical one.
+    pub view: &'static str,
+    /// The surface's corner and its two edges: columns run along the first,
+    /// rows along the second.
+    pub corner_mm: [f64; 3],
+    pub u_mm: [f64; 3],
+    pub v_mm: [f64; 3],
+    pub columns: usize,
+    pub rows: usize,
+    /// One string per row, the last row first: `#` reachable, `.` not.
+    pub grid: Vec<String>,
+    /// Every point, row by row.
+    pub cells: Vec<MapCell>,
+}
+
+/// One point of a map.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct MapCell {
+    pub column: usize,
+    pub row: usize,
+    pub point_mm: [f64; 3],
+    pub reachable: bool,
+    /// Distance left in the best posture found (null if the base fits
+    /// nowhere).
+    pub distance_mm: f64,
+    pub comfort: f64,
+    /// Where the base stood: x, y and heading in degrees.
+    pub base_mm_deg: [f64; 3],
+}
+
+impl MapCell {
+    /// The cell of `placement`, `reachable` as the task judged it.
+    pub fn new(cell: &GridCell, placement: &Placement, chain: &Chain, reachable: bool) -> Self {
+        let pose = &placement.pose;
+        MapCell {
+            column: cell.column,
+            row: cell.row,
+            point_mm: point(cell.point_mm),
+            reachable,
+            distance_mm: mm(placement.solution.distance_mm),
+            comfort: fixed(chain.discomfort(&placement.solution.q), 4),
+            base_mm_deg: [
+                mm(pose.position_mm.x),
+                mm(pose.position_mm.y),
+                deg(pose.heading_rad),
+            ],
+        }
+    }
+}
+
+impl MapReport {
+    /// How a point that counts is described: `reached`/`reachable`, or
+    /// `seen`/`visible` for a gaze map.
+    pub fn words(&self) -> [&'static str; 2] {
+        if self.of == "gaze" {
+            ["seen", "visible"]
+        } else {
+            ["reached", "reachable"]
+        }
+    }
+
+    pub fn new(
+        surface: &Surface,
+        person: &Person,
+        solver: &str,
+        step_mm: f64,
+        tolerance_mm: f64,
+        grid: &Grid,
+        cells: Vec<MapCell>,
+    ) -> Self {
+        let reachable = cells.iter().filter(|c| c.reachable).count();
+        let heights: Vec<f64> = cells
+            .iter()
+            .filter(|c| c.reachable)
+            .map(|c| c.point_mm[2])
+            .collect();
+        let band = (!heights.is_empty()).then(|| {
+            let lo = heights.iter().copied().fold(f64::INFINITY, f64::min);
+            let hi = heights.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            [lo, hi]
+        });
+        let rows: Vec<String> = (0..grid.rows)
+            .rev()
+            .map(|r| {
+                cells[r * grid.columns..(r + 1) * grid.columns]
+                    .iter()
+                    .map(|c| if c.reachable { '#' } else { '.' })
+                    .collect()
+            })
+            .collect();
+        let v3 = |v: nalgebra::Vector3<f64>| [mm(v.x), mm(v.y), mm(v.z)];
+        MapReport {
+            name: surface.name.clone(),
+            person: person.name.clone(),
+            of: "reach",
+            ok: reachable > 0,
+            points: cells.len(),
+            reachable,
+            fraction: fixed(reachable as f64 / cells.len().max(1) as f64, 4),
+            reachable_heights_mm: band,
+            step_mm: mm(step_mm),
+            tolerance_mm: mm(tolerance_mm),
+            solver: solver.to_string(),
+            retried: 0,
+            base: person.base.name.clone(),
+            view: if surface.is_horizontal() {
+                "plan"
+            } else {
+                "elevation"
+            },
+            corner_mm: point(surface.corner_mm),
+            u_mm: v3(surface.u_mm),
+            v_mm: v3(surface.v_mm),
+            columns: grid.columns,
+            rows: grid.rows,
+            grid: rows,
+            cells,
+        }
+    }
+}
+
+impl ReportKind for MapReport {
+    fn answer(&self) -> Answer {
+        let [verb, _] = self.words();
+        Answer {
+            task: if self.of == "gaze" { "gaze_map" } else { "map" },
+            subject: self.name.clone(),
+            person: self.person.clone(),
+            ok: self.ok,
+            verdict: format!("{:.1} % of {} {verb}", self.fraction * 100.0, self.points),
+            figures: vec![
+                Figure::new(
+                    "share",
+                    fixed(self.fraction * 100.0, 2),
+                    "%",
+                    SHARE_TOLERANCE_PERCENT,
+                ),
+                Figure::new("points", self.points as f64, "", 0.0),
+            ],
+        }
+    }
+
+    fn details(&self, out: &mut String) {
+        let heights = match self.reachable_heights_mm {
+            Some([lo, hi]) if self.of == "gaze" => format!("seen at heights {lo:.0} to {hi:.0} mm"),
+            Some([lo, hi]) => format!("reachable heights {lo:.0} to {hi:.0} mm"),
+            None if self.of == "gaze" => "nothing seen".to_string(),
+            None => "nothing reachable".to_string(),
+        };
+        let retried = match self.retried {
+            0 => String::new(),
+            n => format!("; {n} only on the retry where obstacles blocked"),
+        };
+        let _ = writeln!(
+            out,
+            "\n{} by {} ({} base): {} of {} points {} ({:.1} %{}), {}; {} view, {} x {} cells of {:.0} mm",
+            self.name,
+            self.person,
+            self.base,
+            self.reachable,
+            self.points,
+            if self.of == "gaze" { "seen" } else { "reachable" },
+            self.fraction * 100.0,
+            retried,
+            heights,
+            self.view,
+            self.columns,
+            self.rows,
+            self.step_mm
+        );
+    }
+}

@@ -1,0 +1,90 @@
+//! The report of a run: one entry per task, in the order of the file. Its
+//! JSON form is a documented, stable schema (docs/report.md): lengths in
+//! millimetres and angles in degrees whatever units the file used, every
+//! number rounded to a fixed number of decimals so that runs compare byte
+//! for byte.
+//!
+//! Each kind of task report is in its own file and says there, once, what
+//! its answer is ([`Answer`]: the verdict in words and the figures that
+//! matter); the text output, watch mode's list of changes and comparisons
+//! with golden reports read that answer. [`TaskReport`] is the enum serde
+//! writes, tagged by kind.
+
+mod answer;
+mod gaze;
+mod map;
+mod parts;
+mod reach;
+mod reach_and_gaze;
+
+pub use answer::{Answer, Figure};
+pub use gaze::{GazeReport, Sight};
+pub use map::{MapCell, MapReport};
+pub use parts::{deg, fixed, mm, Asked, BaseReport, Posture};
+pub use reach::ReachReport;
+pub use reach_and_gaze::ReachAndGazeReport;
+
+use serde::Serialize;
+
+/// Version of the JSON schema; raised when a field changes meaning.
+pub const SCHEMA_VERSION: u32 = 1;
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Report {
+    pub schema: u32,
+    pub file: String,
+    pub tasks: Vec<TaskReport>,
+}
+
+impl Report {
+    /// The answers, one per task, in the order of the file.
+    pub fn answers(&self) -> Vec<Answer> {
+        self.tasks.iter().map(TaskReport::answer).collect()
+    }
+}
+
+/// One task's result, tagged by task kind.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "lowercase")]
+pub enum TaskReport {
+    Reach(ReachReport),
+    Gaze(GazeReport),
+    #[serde(rename = "reach_and_gaze")]
+    ReachAndGaze(Box<ReachAndGazeReport>),
+    Map(MapReport),
+}
+
+/// What every kind of task report says of itself.
+pub trait ReportKind {
+    /// The answer: by whom, of what, the verdict and the figures.
+    fn answer(&self) -> Answer;
+    /// The lines the text report prints after its table.
+    fn details(&self, out: &mut String);
+}
+
+impl TaskReport {
+    fn kind_report(&self) -> &dyn ReportKind {
+        match self {
+            TaskReport::Reach(r) => r,
+            TaskReport::Gaze(g) => g,
+            TaskReport::ReachAndGaze(b) => b.as_ref(),
+            TaskReport::Map(m) => m,
+        }
+    }
+
+    pub fn answer(&self) -> Answer {
+        self.kind_report().answer()
+    }
+
+    pub fn details(&self, out: &mut String) {
+        self.kind_report().details(out)
+    }
+
+    /// The map, for a map or a gaze map (its points have files of their own).
+    pub fn map(&self) -> Option<&MapReport> {
+        match self {
+            TaskReport::Map(m) => Some(m),
+            _ => None,
+        }
+    }
+}

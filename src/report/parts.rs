@@ -1,0 +1,153 @@
+//! What the kinds of task report share: where the base stood, the posture,
+//! what was asked, and the fixed rounding of every number.
+
+use std::fmt::Write;
+
+use nalgebra::Point3;
+use serde::ser::{SerializeMap, Serializer};
+use serde::Serialize;
+
+use super::Figure;
+use crate::kinematics::{Chain, JointKind};
+use crate::scene::{BasePose, Person};
+
+/// Where the base stood.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct BaseReport {
+    /// The base plugin's name.
+    pub kind: String,
+    pub x_mm: f64,
+    pub y_mm: f64,
+    pub z_mm: f64,
+    pub heading_deg: f64,
+}
+
+impl BaseReport {
+    pub fn new(kind: &str, pose: &BasePose) -> Self {
+        BaseReport {
+            kind: kind.to_string(),
+            x_mm: mm(pose.position_mm.x),
+            y_mm: mm(pose.position_mm.y),
+            z_mm: mm(pose.position_mm.z),
+            heading_deg: deg(pose.heading_rad),
+        }
+    }
+
+    /// Where it stood, as figures of an answer.
+    pub fn figures(&self) -> [Figure; 3] {
+        [
+            Figure::new("base x", self.x_mm, "mm", BASE_TOLERANCE_MM),
+            Figure::new("base y", self.y_mm, "mm", BASE_TOLERANCE_MM),
+            Figure::new("heading", self.heading_deg, "deg", HEADING_TOLERANCE_DEG),
+        ]
+    }
+
+    /// `\nNAME VERB PERSON (SOLVER): KIND base at (x, y, z) mm, heading h deg`.
+    pub fn write_line(&self, out: &mut String, what: [&str; 4]) {
+        let [name, verb, person, solver] = what;
+        let _ = writeln!(
+            out,
+            "\n{name} {verb} {person} ({solver}): {} base at ({:.0}, {:.0}, {:.0}) mm, heading {:.0} deg",
+            self.kind, self.x_mm, self.y_mm, self.z_mm, self.heading_deg
+        );
+    }
+}
+
+/// How far the base may move, and turn, before an answer counts as changed.
+const BASE_TOLERANCE_MM: f64 = 5.0;
+const HEADING_TOLERANCE_DEG: f64 = 1.0;
+/// How much a distance may move before an answer counts as changed.
+pub(super) const DISTANCE_TOLERANCE_MM: f64 = 1.0;
+/// How much the comfort criterion may move before an answer counts as
+/// changed.
+pub(super) const COMFORT_TOLERANCE: f64 = 0.05;
+
+/// Joint values by joint name, in chain order: degrees for revolute joints,
+/// millimetres for prismatic ones.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Posture(pub Vec<(String, f64)>);
+
+impl Serialize for Posture {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut map = s.serialize_map(Some(self.0.len()))?;
+        for (k, v) in &self.0 {
+            map.serialize_entry(k, v)?;
+        }
+        map.end()
+    }
+}
+
+impl Posture {
+    /// Joint values of `chain` in the units a user reads.
+    pub fn new(chain: &Chain, q: &[f64]) -> Self {
+        let values = chain
+            .joints
+            .iter()
+            .zip(q)
+            .map(|(j, &v)| {
+                let shown = match j.kind {
+                    JointKind::Revolute => deg(v),
+                    JointKind::Prismatic => mm(v),
+                };
+                (j.name.clone(), shown)
+            })
+            .collect();
+        Posture(values)
+    }
+
+    /// `  posture (UNITS): joint value, ...`.
+    pub fn write_line(&self, out: &mut String, units: &str) {
+        let values: Vec<String> = self.0.iter().map(|(j, v)| format!("{j} {v:.1}")).collect();
+        let _ = writeln!(out, "  posture ({units}): {}", values.join(", "));
+    }
+}
+
+/// What a reach-like task asked: of what, by whom, with which chain and
+/// solver.
+pub struct Asked<'a> {
+    /// The target.
+    pub subject: &'a str,
+    pub person: &'a Person,
+    /// The chain of the effector the task names.
+    pub chain: &'a Chain,
+    pub solver: &'a str,
+    pub tolerance_mm: f64,
+}
+
+/// `v` rounded to `decimals` places, without negative zero.
+pub fn fixed(v: f64, decimals: i32) -> f64 {
+    let scale = 10f64.powi(decimals);
+    let r = (v * scale).round() / scale;
+    if r == 0.0 {
+        0.0
+    } else {
+        r
+    }
+}
+
+/// A length for the report: millimetres, two decimals.
+pub fn mm(v: f64) -> f64 {
+    fixed(v, 2)
+}
+
+/// An angle for the report: radians in, degrees out, two decimals.
+pub fn deg(rad: f64) -> f64 {
+    fixed(rad.to_degrees(), 2)
+}
+
+pub(super) fn point(p: Point3<f64>) -> [f64; 3] {
+    [mm(p.x), mm(p.y), mm(p.z)]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rounding_is_fixed_and_has_no_negative_zero() {
+        assert_eq!(mm(12.3456), 12.35);
+        assert_eq!(mm(-0.001), 0.0);
+        assert!(mm(-0.001).is_sign_positive());
+        assert_eq!(deg(std::f64::consts::FRAC_PI_2), 90.0);
+    }
+}

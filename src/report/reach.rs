@@ -1,0 +1,111 @@
+//! A reach: whether the person's effector comes to the target, from where,
+//! in which posture.
+
+use std::fmt::Write;
+
+use nalgebra::Point3;
+use serde::Serialize;
+
+use super::parts::{point, COMFORT_TOLERANCE, DISTANCE_TOLERANCE_MM};
+use super::{fixed, mm, Answer, Asked, BaseReport, Figure, Posture, ReportKind};
+use crate::scene::{Placement, Room};
+
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ReachReport {
+    /// The target.
+    pub name: String,
+    pub person: String,
+    /// Reached: `distance_mm <= tolerance_mm` and no link through an
+    /// obstacle.
+    pub ok: bool,
+    /// Distance left between effector and target.
+    pub distance_mm: f64,
+    /// The obstacle a link of the posture passes through (null: none, or
+    /// collisions not checked).
+    pub collision: Option<String>,
+    pub tolerance_mm: f64,
+    /// Sweeps (solver iterations) of the kept solution.
+    pub iterations: u64,
+    /// The comfort criterion C of the posture: 0 is the neutral posture.
+    pub comfort: f64,
+    pub solver: String,
+    pub effector: String,
+    pub base: BaseReport,
+    pub posture: Posture,
+    pub effector_mm: [f64; 3],
+    pub target_mm: [f64; 3],
+}
+
+impl ReachReport {
+    pub fn new(asked: &Asked<'_>, placement: &Placement, target: Point3<f64>, room: &Room) -> Self {
+        let chain = asked.chain;
+        let q = &placement.solution.q;
+        let effector_room = placement.pose.to_room(&chain.effector(q));
+        ReachReport {
+            name: asked.subject.to_string(),
+            person: asked.person.name.clone(),
+            ok: placement.solution.reaches(asked.tolerance_mm),
+            distance_mm: mm(placement.solution.distance_mm),
+            collision: placement
+                .solution
+                .collision
+                .map(|i| room.obstacle_name(i).to_string()),
+            tolerance_mm: mm(asked.tolerance_mm),
+            iterations: placement.solution.iterations,
+            comfort: fixed(chain.discomfort(q), 4),
+            solver: asked.solver.to_string(),
+            effector: chain.effector_name.clone(),
+            base: BaseReport::new(&asked.person.base.name, &placement.pose),
+            posture: Posture::new(chain, q),
+            effector_mm: point(effector_room),
+            target_mm: point(target),
+        }
+    }
+
+    /// `reachable` or `NOT reachable`.
+    pub fn verdict(&self) -> &'static str {
+        if self.ok {
+            "reachable"
+        } else {
+            "NOT reachable"
+        }
+    }
+
+    /// Distance left, sweeps, comfort and where the base stood.
+    pub fn figures(&self) -> Vec<Figure> {
+        let mut figures = vec![
+            Figure::new("distance", self.distance_mm, "mm", DISTANCE_TOLERANCE_MM),
+            Figure::new("sweeps", self.iterations as f64, "", f64::INFINITY),
+            Figure::new("comfort", self.comfort, "", COMFORT_TOLERANCE),
+        ];
+        figures.extend(self.base.figures());
+        figures
+    }
+}
+
+impl ReportKind for ReachReport {
+    fn answer(&self) -> Answer {
+        Answer {
+            task: "reach",
+            subject: self.name.clone(),
+            person: self.person.clone(),
+            ok: self.ok,
+            verdict: self.verdict().to_string(),
+            figures: self.figures(),
+        }
+    }
+
+    fn details(&self, out: &mut String) {
+        let what = [
+            self.name.as_str(),
+            "by",
+            self.person.as_str(),
+            self.solver.as_str(),
+        ];
+        self.base.write_line(out, what);
+        self.posture.write_line(out, "deg");
+        if let Some(obstacle) = &self.collision {
+            let _ = writeln!(out, "  a link passes through `{obstacle}`");
+        }
+    }
+}

@@ -1,0 +1,120 @@
+//! The checked scenario: the scene (rooms, persons), each person's base
+//! built, and the tasks to run, each configured from its options and
+//! resolved: its room, subject, person and effectors are indices, so that a
+//! run looks no name up. Spans remain only where a run may still need to
+//! point back at the text.
+
+use std::fmt;
+use std::sync::Arc;
+
+use crate::options::Options;
+use crate::plugin::{Base, Subject, Task, TaskInput};
+use crate::progress::Progress;
+use crate::scene::{Person, Room, Surface};
+use crate::span::Span;
+
+#[derive(Clone)]
+pub struct Scenario {
+    /// The root file's name as given.
+    pub file: String,
+    pub rooms: Vec<Room>,
+    pub persons: Vec<Person>,
+    /// Each person's base, built, in the order of `persons`.
+    pub bases: Vec<Arc<dyn Base>>,
+    pub tasks: Vec<TaskSpec>,
+}
+
+/// A task's subject, resolved in its room.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SubjectRef {
+    /// The room's target of this index.
+    Target(usize),
+    /// A surface of the room (a `surface`, or a box's face).
+    Surface(Surface),
+}
+
+/// One task to run: a configured task plugin on one subject by one person.
+#[derive(Clone)]
+pub struct TaskSpec {
+    /// The task plugin's name (`reach`).
+    pub kind: String,
+    pub task: Arc<dyn Task>,
+    /// Its room, subject and person, by index.
+    pub room: usize,
+    pub subject: SubjectRef,
+    pub person: usize,
+    /// The effectors the task names, resolved for the person: indices
+    /// into the person's body, in the order of [`Task::effectors`].
+    pub effectors: Vec<usize>,
+    /// The validated options it was configured from (what a cache keys on).
+    pub options: Options,
+    pub span: Span,
+}
+
+impl fmt::Debug for Scenario {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Scenario")
+            .field("file", &self.file)
+            .field("rooms", &self.rooms)
+            .field("persons", &self.persons)
+            .field("tasks", &self.tasks)
+            .finish_non_exhaustive()
+    }
+}
+
+impl fmt::Debug for TaskSpec {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("TaskSpec")
+            .field("kind", &self.kind)
+            .field("room", &self.room)
+            .field("subject", &self.subject)
+            .field("person", &self.person)
+            .field("effectors", &self.effectors)
+            .field("options", &self.options)
+            .finish_non_exhaustive()
+    }
+}
+
+impl Scenario {
+    pub fn person(&self, name: &str) -> Option<&Person> {
+        self.persons.iter().find(|p| p.name == name)
+    }
+
+    /// What `task` runs on.
+    pub fn input<'a>(&'a self, task: &'a TaskSpec, progress: &'a dyn Progress) -> TaskInput<'a> {
+        let room = &self.rooms[task.room];
+        TaskInput {
+            room,
+            subject: task.subject_in(room),
+            person: &self.persons[task.person],
+            base: self.bases[task.person].as_ref(),
+            effectors: &task.effectors,
+            progress,
+        }
+    }
+}
+
+impl SubjectRef {
+    /// The subject in `room` (the task's own room).
+    pub fn in_room<'a>(&'a self, room: &'a Room) -> Subject<'a> {
+        match self {
+            SubjectRef::Target(i) => Subject::Target(&room.targets[*i]),
+            SubjectRef::Surface(s) => Subject::Surface(s),
+        }
+    }
+}
+
+impl TaskSpec {
+    /// The subject in `room` (the task's own room).
+    pub fn subject_in<'a>(&'a self, room: &'a Room) -> Subject<'a> {
+        self.subject.in_room(room)
+    }
+
+    /// The subject's name as the file wrote it.
+    pub fn subject_name<'a>(&'a self, scenario: &'a Scenario) -> &'a str {
+        match &self.subject {
+            SubjectRef::Target(i) => &scenario.rooms[self.room].targets[*i].name,
+            SubjectRef::Surface(s) => &s.name,
+        }
+    }
+}

@@ -1,0 +1,18 @@
+//! The integration tests, one binary: each module is the file of its name
+//! under tests/ (ARCHITECTURE.md says what each checks).
+
+mod bases;
+mod checker;
+mod cli;
+mod gaze;
+mod golden;
+mod hostile;
+mod independent;
+mod layers;
+mod parser;
+mod plugins;
+mod properties;
+mod retry;
+mod stdlib;
+mod urdf;
+mod watch;
