@@ -2,6 +2,7 @@
 //! under tests/ (ARCHITECTURE.md says what each checks).
 
 mod bases;
+mod cache;
 mod checker;
 mod cli;
 mod gaze;

@@ -10,7 +10,7 @@
 //! theta_0 of section 5.3.6 as the outer loop.
 
 use geo::{Closest, ClosestPoint, Contains, MultiPolygon, Point};
-use nalgebra::{Point3, Vector2};
+use nalgebra::{Point3, Rotation2, Vector2};
 use rand_chacha::rand_core::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
@@ -93,11 +93,7 @@ impl PreparedMobile<'_> {
             .regions
             .iter()
             .filter_map(|(heading, region)| {
-                let (s, c) = heading.sin_cos();
-                let offset = Vector2::new(
-                    c * self.hint.x - s * self.hint.y,
-                    s * self.hint.x + c * self.hint.y,
-                );
+                let offset = Rotation2::new(*heading) * self.hint;
                 let preferred = Point::new(target.x - offset.x, target.y - offset.y);
                 let p = nearest(region, preferred)?;
                 let pose = BasePose {

@@ -3,61 +3,96 @@
 //! task's base may try for each point (they hold all the floor's obstacles
 //! do to the answer: the admissible region is computed over all of them,
 //! and only its candidate points are used), and the obstacles within reach
-//! of those placements (`reach.rs`).
+//! of those placements (`reach.rs`). Placements are computed again only
+//! when the room's obstacles, the person or the points change.
 
 use std::collections::hash_map::DefaultHasher;
 use std::collections::HashMap;
 use std::hash::{Hash, Hasher};
+use std::sync::Arc;
 
 use rayon::prelude::*;
 
 use super::reach::{obstacles_within, Tried};
 use crate::kinematics::{Body, Chain, Joint};
-use crate::plugin::{Dependence, PreparedBase};
+use crate::plugin::Dependence;
 use crate::progress::NoProgress;
 use crate::scenario::{Scenario, SubjectRef, TaskSpec};
 use crate::scene::{BasePose, Person, Room};
 
-/// The keys of the scenario's tasks, in order.
-pub(super) fn keys(scenario: &Scenario) -> Vec<u64> {
+/// The placements tried for each point of a task, by what they depend on.
+pub(super) type Placements = HashMap<u64, Arc<Vec<Tried>>>;
+
+/// The keys of the scenario's tasks, in order; `placements` holds, after,
+/// the placements of this scenario's tasks (reused from it where nothing
+/// they depend on changed).
+pub(super) fn keys(scenario: &Scenario, placements: &mut Placements) -> Vec<u64> {
     let dependences: Vec<Dependence> = scenario
         .tasks
         .par_iter()
         .map(|t| t.task.dependence(&scenario.input(t, &NoProgress)))
         .collect();
-    // A base is prepared once per person, room and chain.
-    let mut prepared: HashMap<(usize, usize, u64), Box<dyn PreparedBase + '_>> = HashMap::new();
-    for (task, dependence) in scenario.tasks.iter().zip(&dependences) {
-        let at = (
-            task.person,
-            task.room,
-            hash_of(|h| hash_chain(&dependence.chain, h)),
-        );
-        prepared.entry(at).or_insert_with(|| {
-            scenario.bases[task.person].prepare(&scenario.rooms[task.room], &dependence.chain)
-        });
+    let floor_keys: Vec<u64> = scenario
+        .tasks
+        .par_iter()
+        .zip(&dependences)
+        .map(|(t, d)| placements_key(scenario, t, d))
+        .collect();
+    let mut fresh = Placements::new();
+    for ((task, dependence), floor_key) in scenario.tasks.iter().zip(&dependences).zip(&floor_keys)
+    {
+        if fresh.contains_key(floor_key) {
+            continue;
+        }
+        let tried = match placements.get(floor_key) {
+            Some(tried) => Arc::clone(tried),
+            None => Arc::new(tried(scenario, task, dependence)),
+        };
+        fresh.insert(*floor_key, tried);
     }
+    *placements = fresh;
     scenario
         .tasks
         .par_iter()
         .zip(&dependences)
-        .map(|(task, dependence)| {
-            let at = (
-                task.person,
-                task.room,
-                hash_of(|h| hash_chain(&dependence.chain, h)),
-            );
-            key(scenario, task, dependence, prepared[&at].as_ref())
+        .zip(&floor_keys)
+        .map(|((task, dependence), floor_key)| {
+            key(scenario, task, dependence, &placements[floor_key])
         })
         .collect()
 }
 
-fn key(
-    scenario: &Scenario,
-    task: &TaskSpec,
-    dependence: &Dependence,
-    prepared: &dyn PreparedBase,
-) -> u64 {
+/// The placements a task's base may try for each of its points.
+fn tried(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence) -> Vec<Tried> {
+    let room = &scenario.rooms[task.room];
+    let prepared = scenario.bases[task.person].prepare(room, &dependence.chain);
+    dependence
+        .points_mm
+        .par_iter()
+        .map(|p| Tried {
+            point_mm: *p,
+            poses: prepared.candidates(p),
+        })
+        .collect()
+}
+
+/// What a task's placements depend on: the person's base, the chain, the
+/// points, and the room (its size and every obstacle).
+fn placements_key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence) -> u64 {
+    let room = &scenario.rooms[task.room];
+    hash_of(|h| {
+        (task.person, &scenario.persons[task.person].base).hash(h);
+        hash_chain(&dependence.chain, h);
+        dependence
+            .points_mm
+            .iter()
+            .for_each(|p| hash_bits(p.iter(), h));
+        hash_bits(room.size_mm.iter(), h);
+        (0..room.boxes.len() + room.meshes.len()).for_each(|i| hash_obstacle(room, i, h));
+    })
+}
+
+fn key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence, tried: &[Tried]) -> u64 {
     let room = &scenario.rooms[task.room];
     hash_of(|h| {
         (&task.kind, &task.options, &task.effectors).hash(h);
@@ -65,20 +100,11 @@ fn key(
         hash_person(&scenario.persons[task.person], h);
         room.name.hash(h);
         hash_bits(room.size_mm.iter(), h);
-        let tried: Vec<Tried> = dependence
-            .points_mm
-            .iter()
-            .map(|p| {
-                let poses = prepared.candidates(p);
-                poses.iter().for_each(|pose| hash_pose(pose, h));
-                Tried {
-                    point_mm: *p,
-                    hips_mm: poses.iter().map(|pose| pose.position_mm).collect(),
-                }
-            })
-            .collect();
+        for t in tried {
+            t.poses.iter().for_each(|pose| hash_pose(pose, h));
+        }
         if let Some(reach_mm) = dependence.reach_mm {
-            for i in obstacles_within(room, &tried, reach_mm, dependence.sight_lines) {
+            for i in obstacles_within(room, tried, reach_mm, dependence.sight_lines) {
                 hash_obstacle(room, i, h);
             }
         }

@@ -22,6 +22,9 @@ use crate::scenario::Scenario;
 #[derive(Default)]
 pub struct TaskCache {
     results: HashMap<u64, TaskReport>,
+    /// The placements each task's base may try, kept while the room and
+    /// the person stay as they are.
+    placements: key::Placements,
 }
 
 /// How many tasks a cached run reused and how many it ran.
@@ -35,7 +38,7 @@ impl TaskCache {
     /// Run the scenario, reusing the results of tasks whose inputs have not
     /// changed; afterwards the cache holds exactly this run's results.
     pub fn run(&mut self, scenario: &Scenario, progress: &dyn Progress) -> (Report, CacheStats) {
-        let keys = key::keys(scenario);
+        let keys = key::keys(scenario, &mut self.placements);
         let fresh: Vec<Option<TaskReport>> = scenario
             .tasks
             .par_iter()

@@ -1,18 +1,19 @@
 //! Which obstacles a task can meet: those within its reach of one of the
 //! placements its base may try, or (lines of sight) of the segment from
-//! such a placement to the point looked at. Tested against each
-//! obstacle's axis-aligned bounds grown by the reach, which holds every
-//! point within the reach of the obstacle: an obstacle left out cannot
-//! touch a link or a line of sight.
+//! such a placement to the point looked at. Measured to each obstacle's
+//! axis-aligned bounds, which hold the obstacle: an obstacle left out
+//! cannot touch a link or a line of sight.
 
-use nalgebra::{Point3, Vector3};
+use nalgebra::{Isometry3, Point3, Translation3, Vector2, Vector3};
+use parry3d_f64::query::{self, PointQuery};
+use parry3d_f64::shape::{Cuboid, Segment};
 
-use crate::scene::{BoxObstacle, MeshObstacle, Room};
+use crate::scene::{BasePose, BoxObstacle, MeshObstacle, Room};
 
-/// The placements (hips) tried for one point, and the point.
+/// The placements a base may try for one point, and the point.
 pub(super) struct Tried {
     pub point_mm: Point3<f64>,
-    pub hips_mm: Vec<Point3<f64>>,
+    pub poses: Vec<BasePose>,
 }
 
 /// The indices (boxes, then meshes) of the room's obstacles within
@@ -32,17 +33,20 @@ pub(super) fn obstacles_within(
     bounds
         .enumerate()
         .filter(|(_, b)| {
-            let grown = b.grown(reach_mm);
             tried.iter().any(|t| {
-                t.hips_mm.iter().any(|hip| {
-                    let end = if sight_lines { t.point_mm } else { *hip };
-                    grown.meets_segment(hip, &end)
+                t.poses.iter().any(|pose| {
+                    let hip = pose.position_mm;
+                    let end = if sight_lines { t.point_mm } else { hip };
+                    b.distance_to_segment(&hip, &end) <= reach_mm + MARGIN_MM
                 })
             })
         })
         .map(|(i, _)| i)
         .collect()
 }
+
+/// Added to the reach, against rounding in the distances.
+const MARGIN_MM: f64 = 1.0;
 
 /// An axis-aligned box.
 #[derive(Clone, Copy, Debug)]
@@ -64,48 +68,48 @@ impl Bounds {
         b
     }
 
-    fn grown(&self, by: f64) -> Self {
-        Bounds {
-            min: self.min - Vector3::repeat(by),
-            max: self.max + Vector3::repeat(by),
+    /// The distance from the segment `a`-`b` (a point if they are one)
+    /// to the box; 0 where it meets it, and 0 (to be safe) for a box that
+    /// is not finite.
+    fn distance_to_segment(&self, a: &Point3<f64>, b: &Point3<f64>) -> f64 {
+        let finite = self
+            .min
+            .iter()
+            .chain(self.max.iter())
+            .all(|v| v.is_finite());
+        if !finite {
+            return 0.0;
         }
-    }
-
-    /// Whether the segment from `a` to `b` meets the box (slab test; a
-    /// box that is not finite meets everything, to be safe).
-    fn meets_segment(&self, a: &Point3<f64>, b: &Point3<f64>) -> bool {
-        if !(self.min.coords.iter().chain(self.max.coords.iter())).all(|v| v.is_finite()) {
-            return true;
+        let half = (self.max - self.min) / 2.0;
+        let pose = Isometry3::from_parts(
+            Translation3::from(self.min.coords + half),
+            Default::default(),
+        );
+        let cuboid = Cuboid::new(half);
+        if (b - a).norm() < 1e-9 {
+            return cuboid.distance_to_point(&pose, a, true);
         }
-        let d = b - a;
-        let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
-        for i in 0..3 {
-            if d[i].abs() < 1e-12 {
-                if a[i] < self.min[i] || a[i] > self.max[i] {
-                    return false;
-                }
-                continue;
-            }
-            let (u, v) = ((self.min[i] - a[i]) / d[i], (self.max[i] - a[i]) / d[i]);
-            t0 = t0.max(u.min(v));
-            t1 = t1.min(u.max(v));
-            if t0 > t1 {
-                return false;
-            }
-        }
-        true
+        query::distance(
+            &Isometry3::identity(),
+            &Segment::new(*a, *b),
+            &pose,
+            &cuboid,
+        )
+        .unwrap_or(0.0)
     }
 }
 
 /// A box's bounds, turned by its yaw about its corner.
 fn box_bounds(b: &BoxObstacle) -> Bounds {
-    let (s, c) = b.yaw_rad.sin_cos();
     let corners = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)]
         .into_iter()
         .flat_map(|(u, v)| {
-            let (x, y) = (u * b.size_mm.x, v * b.size_mm.y);
-            let at = b.corner_mm + Vector3::new(c * x - s * y, s * x + c * y, 0.0);
-            [at, at + Vector3::new(0.0, 0.0, b.size_mm.z)]
+            let xy = b.floor_point(Vector2::new(u * b.size_mm.x, v * b.size_mm.y));
+            let z = b.corner_mm.z;
+            [
+                Point3::new(xy.x, xy.y, z),
+                Point3::new(xy.x, xy.y, z + b.size_mm.z),
+            ]
         });
     Bounds::of(corners)
 }
@@ -119,14 +123,15 @@ mod tests {
     use super::*;
 
     #[test]
-    fn a_segment_meets_a_box_it_crosses_and_misses_one_beside_it() {
+    fn distances_to_a_box_from_a_point_and_a_segment() {
         let b = Bounds::of([Point3::new(0.0, 0.0, 0.0), Point3::new(10.0, 10.0, 10.0)]);
-        let (a, z) = (Point3::new(-5.0, 5.0, 5.0), Point3::new(15.0, 5.0, 5.0));
-        assert!(b.meets_segment(&a, &z));
-        assert!(!b.meets_segment(&Point3::new(-5.0, 20.0, 5.0), &Point3::new(15.0, 20.0, 5.0)));
-        assert!(b
-            .grown(10.0)
-            .meets_segment(&Point3::new(-5.0, 20.0, 5.0), &Point3::new(15.0, 20.0, 5.0)));
-        assert!(b.meets_segment(&Point3::new(5.0, 5.0, 5.0), &Point3::new(5.0, 5.0, 5.0)));
+        let at =
+            |p: [f64; 3], q: [f64; 3]| b.distance_to_segment(&Point3::from(p), &Point3::from(q));
+        assert!((at([13.0, 14.0, 5.0], [13.0, 14.0, 5.0]) - 5.0).abs() < 1e-9);
+        assert!((at([-5.0, 20.0, 5.0], [15.0, 20.0, 5.0]) - 10.0).abs() < 1e-9);
+        assert_eq!(at([-5.0, 5.0, 5.0], [15.0, 5.0, 5.0]), 0.0);
+        // A corner: the distance, not the largest of the axes'.
+        assert!((at([13.0, 14.0, 10.0], [13.0, 14.0, 10.0]) - 5.0).abs() < 1e-9);
+        assert!((at([20.0, 20.0, 20.0], [20.0, 20.0, 20.0]) - 300f64.sqrt()).abs() < 1e-9);
     }
 }

@@ -2,6 +2,7 @@
 //! y to the left, origin at the hip point).
 
 use geo::{Coord, LineString, Polygon};
+use nalgebra::{Rotation2, Vector2};
 
 /// Sides of the polygon that stands for a circle. It is circumscribed, so
 /// a clearance check with it never lets the circle overlap an obstacle.
@@ -43,12 +44,12 @@ impl Footprint {
                 vec![(front_mm, h), (-back_mm, h), (-back_mm, -h), (front_mm, -h)]
             }
         };
-        let (s, c) = heading_rad.sin_cos();
+        let turn = Rotation2::new(heading_rad);
         local
             .into_iter()
-            .map(|(x, y)| Coord {
-                x: c * x - s * y,
-                y: s * x + c * y,
+            .map(|(x, y)| {
+                let p = turn * Vector2::new(x, y);
+                Coord { x: p.x, y: p.y }
             })
             .collect()
     }

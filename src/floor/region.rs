@@ -9,6 +9,8 @@ use geo::{
     BooleanOps, ConvexHull, Coord, LineString, MultiPoint, MultiPolygon, Point, Polygon, Rect,
 };
 
+use nalgebra::Vector2;
+
 use super::Footprint;
 use crate::scene::{BoxObstacle, MeshObstacle, Room};
 
@@ -65,13 +67,12 @@ fn shrunk_room(room: &Room, corners: &[Coord<f64>], zone: Option<Zone>) -> Optio
 
 /// A box obstacle's outline on the floor, turned about its corner.
 fn box_outline(b: &BoxObstacle) -> Vec<Coord<f64>> {
-    let (s, c) = b.yaw_rad.sin_cos();
     let (w, d) = (b.size_mm.x, b.size_mm.y);
     [(0.0, 0.0), (w, 0.0), (w, d), (0.0, d)]
         .into_iter()
-        .map(|(x, y)| Coord {
-            x: b.corner_mm.x + c * x - s * y,
-            y: b.corner_mm.y + s * x + c * y,
+        .map(|(x, y)| {
+            let p = b.floor_point(Vector2::new(x, y));
+            Coord { x: p.x, y: p.y }
         })
         .collect()
 }

@@ -12,7 +12,7 @@ pub use placement::{BasePose, HasSolution, IkSolution, Placement, Preferred};
 pub use surface::{Grid, GridCell, Surface, FACES};
 pub use vision::Vision;
 
-use nalgebra::{Point3, Vector3};
+use nalgebra::{Point3, Rotation2, Vector2, Vector3};
 
 use crate::kinematics::Body;
 use crate::options::PluginConfig;
@@ -64,12 +64,23 @@ pub struct BoxObstacle {
 }
 
 impl BoxObstacle {
+    /// The box's own axes in the room's, on the floor: turned by its yaw.
+    pub fn rotation(&self) -> Rotation2<f64> {
+        Rotation2::new(self.yaw_rad)
+    }
+
+    /// A point of the floor given in the box's own axes (from its corner),
+    /// in the room.
+    pub fn floor_point(&self, local_mm: Vector2<f64>) -> Vector2<f64> {
+        self.corner_mm.xy().coords + self.rotation() * local_mm
+    }
+
     /// Whether `p` is inside the box and not on its surface (within a
     /// micrometre).
     pub fn holds_strictly(&self, p: &Point3<f64>) -> bool {
         let d = p - self.corner_mm;
-        let (s, c) = self.yaw_rad.sin_cos();
-        let local = Vector3::new(c * d.x + s * d.y, -s * d.x + c * d.y, d.z);
+        let xy = self.rotation().inverse() * d.xy();
+        let local = Vector3::new(xy.x, xy.y, d.z);
         (0..3).all(|i| local[i] > 1e-3 && local[i] < self.size_mm[i] - 1e-3)
     }
 }

@@ -2,7 +2,7 @@
 //! from there: plain data that the solvers and bases produce, collision
 //! checks read and reports show.
 
-use nalgebra::{Point3, Vector3};
+use nalgebra::{Point3, Rotation2, Vector3};
 
 use crate::kinematics::Chain;
 
@@ -15,24 +15,28 @@ pub struct BasePose {
 }
 
 impl BasePose {
+    /// The base frame's axes in the room's: turned by the heading about
+    /// the vertical.
+    pub fn rotation(&self) -> Rotation2<f64> {
+        Rotation2::new(self.heading_rad)
+    }
+
     /// A point of the room in the base frame.
     pub fn to_base(&self, room_point: &Point3<f64>) -> Point3<f64> {
         let d = room_point - self.position_mm;
-        let (s, c) = self.heading_rad.sin_cos();
-        Point3::new(c * d.x + s * d.y, -s * d.x + c * d.y, d.z)
+        let xy = self.rotation().inverse() * d.xy();
+        Point3::new(xy.x, xy.y, d.z)
     }
 
     /// A direction of the base frame in the room.
     pub fn direction_to_room(&self, v: &Vector3<f64>) -> Vector3<f64> {
-        let (s, c) = self.heading_rad.sin_cos();
-        Vector3::new(c * v.x - s * v.y, s * v.x + c * v.y, v.z)
+        let xy = self.rotation() * v.xy();
+        Vector3::new(xy.x, xy.y, v.z)
     }
 
     /// A point of the base frame in the room.
     pub fn to_room(&self, base_point: &Point3<f64>) -> Point3<f64> {
-        let (s, c) = self.heading_rad.sin_cos();
-        let p = base_point;
-        self.position_mm + Vector3::new(c * p.x - s * p.y, s * p.x + c * p.y, p.z)
+        self.position_mm + self.direction_to_room(&base_point.coords)
     }
 }
 

@@ -4,7 +4,7 @@
 //! `back`, or by its side of the box's own axes: `x_min`, `x_max`, `y_min`,
 //! `y_max`.
 
-use nalgebra::{Point3, Vector3};
+use nalgebra::{Point3, Vector2, Vector3};
 
 use super::{BoxObstacle, Room};
 
@@ -109,9 +109,10 @@ impl Room {
 type Face = (Point3<f64>, Vector3<f64>, Vector3<f64>);
 
 fn box_face(b: &BoxObstacle, face: &str, room: &Room) -> Option<Face> {
-    let (s, c) = b.yaw_rad.sin_cos();
-    let ex = Vector3::new(c, s, 0.0) * b.size_mm.x;
-    let ey = Vector3::new(-s, c, 0.0) * b.size_mm.y;
+    let axes = b.rotation();
+    let (x, y) = (axes * Vector2::x(), axes * Vector2::y());
+    let ex = Vector3::new(x.x, x.y, 0.0) * b.size_mm.x;
+    let ey = Vector3::new(y.x, y.y, 0.0) * b.size_mm.y;
     let ez = Vector3::new(0.0, 0.0, b.size_mm.z);
     let o = b.corner_mm;
     Some(match face {

@@ -1,0 +1,172 @@
+//! Watch mode's cache: a cached answer is the answer a fresh run gives,
+//! byte for byte, after random obstacle moves and target edits in random
+//! rooms (fixed, trolley and wheelchair bases; reaches, a gaze and a map);
+//! and it does reuse what an edit cannot touch.
+
+use proptest::prelude::*;
+use reach::cache::TaskCache;
+use reach::plugin::Registry;
+use reach::progress::NoProgress;
+use reach::Input;
+
+/// A box of the generated room: corner and size, mm.
+#[derive(Clone, Debug)]
+struct Block {
+    at: [i32; 3],
+    size: [i32; 3],
+}
+
+/// A generated room: its boxes and targets, and the edits to make.
+#[derive(Clone, Debug)]
+struct Room {
+    blocks: Vec<Block>,
+    targets: Vec<[i32; 3]>,
+}
+
+fn block() -> impl Strategy<Value = Block> {
+    (
+        (0..3000i32, 0..2500i32, 0..2000i32),
+        (20..800i32, 20..800i32, 20..900i32),
+    )
+        .prop_map(|((x, y, z), (w, d, h))| Block {
+            at: [x, y, z],
+            size: [w, d, h],
+        })
+}
+
+fn target() -> impl Strategy<Value = [i32; 3]> {
+    (200..3400i32, 200..2600i32, 300..1900i32).prop_map(|(x, y, z)| [x, y, z])
+}
+
+fn room() -> impl Strategy<Value = Room> {
+    (
+        prop::collection::vec(block(), 1..6),
+        prop::collection::vec(target(), 1..4),
+    )
+        .prop_map(|(blocks, targets)| Room { blocks, targets })
+}
+
+/// One edit: move a box (by index, modulo the count) or a target.
+#[derive(Clone, Debug)]
+enum Edit {
+    MoveBlock(usize, [i32; 3]),
+    MoveTarget(usize, [i32; 3]),
+}
+
+fn edit() -> impl Strategy<Value = Edit> {
+    let delta = (-600..600i32, -600..600i32, -400..400i32).prop_map(|(x, y, z)| [x, y, z]);
+    prop_oneof![
+        (0..6usize, delta.clone()).prop_map(|(i, d)| Edit::MoveBlock(i, d)),
+        (0..4usize, delta).prop_map(|(i, d)| Edit::MoveTarget(i, d)),
+    ]
+}
+
+impl Room {
+    fn apply(&mut self, edit: &Edit) {
+        let shift = |p: &mut [i32; 3], d: &[i32; 3]| {
+            for k in 0..3 {
+                p[k] = (p[k] + d[k]).clamp(0, 2400);
+            }
+        };
+        match edit {
+            Edit::MoveBlock(i, d) => {
+                let n = self.blocks.len();
+                shift(&mut self.blocks[i % n].at, d);
+            }
+            Edit::MoveTarget(i, d) => {
+                let n = self.targets.len();
+                shift(&mut self.targets[i % n], d);
+            }
+        }
+    }
+
+    /// The scenario: three people (fixed, trolley, wheelchair), a reach of
+    /// every target, a gaze at the first, a small map of the first box's
+    /// top.
+    fn text(&self) -> String {
+        let mut t =
+            String::from("use std::arm\nuse std::body\nroom r {\n  size 3600 x 2800 x 2500\n");
+        for (i, b) in self.blocks.iter().enumerate() {
+            t += &format!(
+                "  box b{i} at ({}, {}, {}) size ({}, {}, {})\n",
+                b.at[0], b.at[1], b.at[2], b.size[0], b.size[1], b.size[2]
+            );
+        }
+        for (i, p) in self.targets.iter().enumerate() {
+            t += &format!("  target t{i} at ({}, {}, {})\n", p[0], p[1], p[2]);
+        }
+        t += "}\n";
+        t += "person fix { mannequin right_arm base fixed { at (1800, 1400, 930) heading 90deg } }\n";
+        t += "person rol { mannequin right_arm base trolley { headings 4 } }\n";
+        t += "person chair { mannequin upper_body base wheelchair { headings 4 } }\n";
+        let targets: Vec<String> = (0..self.targets.len()).map(|i| format!("t{i}")).collect();
+        t += &format!(
+            "reach {} by fix, rol, chair {{ solver incremental {{ starts 2 }} blocked_retries 1 blocked_solver incremental {{ starts 2 }} }}\n",
+            targets.join(", ")
+        );
+        t += "gaze t0 by chair { solver fabrik { starts 1 kicks 2 } blocked_retries 0 }\n";
+        t += "map b0.top by fix { step 400mm solver incremental { starts 1 } blocked_retries 1 blocked_solver incremental { starts 2 } }\n";
+        t
+    }
+}
+
+fn checked(text: &str) -> Option<reach::scenario::Scenario> {
+    let (_, checked) = reach::check(
+        Input::Text {
+            name: "cache.reach",
+            text,
+        },
+        &Registry::builtin(),
+    );
+    // A generated room may refuse (a target inside a box, a base that fits
+    // nowhere): nothing to compare.
+    checked.ok()
+}
+
+fn json(report: &reach::report::Report) -> String {
+    Registry::builtin().format("json").unwrap().render(report)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(40))]
+
+    /// After each edit, the cached run's report is the fresh run's.
+    #[test]
+    fn a_cached_answer_is_a_fresh_one(mut room in room(), edits in prop::collection::vec(edit(), 1..4)) {
+        let mut cache = TaskCache::default();
+        if let Some(s) = checked(&room.text()) {
+            cache.run(&s, &NoProgress);
+        }
+        for e in &edits {
+            room.apply(e);
+            let Some(s) = checked(&room.text()) else { continue };
+            let (cached, _) = cache.run(&s, &NoProgress);
+            let fresh = reach::run(&s);
+            prop_assert_eq!(json(&cached), json(&fresh), "after {:?}", e);
+        }
+    }
+}
+
+/// A fixed-base person at one end of a long room: moving a box at the
+/// other end leaves their reach cached; moving it into their arm's way
+/// runs it again (and its answer changes).
+#[test]
+fn an_obstacle_moved_far_away_leaves_a_task_cached() {
+    // A board standing on edge, 20 mm thick, 800 mm wide and high.
+    let text = |board_x: i32| {
+        format!(
+            "use std::arm\nroom r {{\n  size 8000 x 3000 x 2500\n  box board at ({board_x}, 900, 700) size (20, 800, 800)\n  target mug at (600, 1300, 1000)\n}}\nperson ben {{ mannequin right_arm base fixed {{ at (1000, 1300, 930) heading 180deg }} }}\nreach mug by ben\n"
+        )
+    };
+    let mut cache = TaskCache::default();
+    let first = checked(&text(7000)).unwrap();
+    let (before, stats) = cache.run(&first, &NoProgress);
+    assert_eq!(stats.ran, 1);
+    let far = checked(&text(7200)).unwrap();
+    let (_, stats) = cache.run(&far, &NoProgress);
+    assert_eq!((stats.reused, stats.ran), (1, 0), "moved 5 m away");
+    let near = checked(&text(750)).unwrap();
+    let (after, stats) = cache.run(&near, &NoProgress);
+    assert_eq!(stats.ran, 1, "moved between ben and the mug");
+    assert_ne!(json(&before), json(&after));
+}
