@@ -4,7 +4,8 @@
 //! colour, fixed width) compared with `golden__diagnostics@NAME.snap`.
 //!
 //! After an intended change, update the expected files with
-//! `INSTA_UPDATE=always cargo test --test golden` and review the diff.
+//! `INSTA_UPDATE=always cargo test --release --test main golden` and review
+//! the diff.
 
 use std::path::Path;
 
