@@ -80,6 +80,7 @@ fn main() {
         times.push(ms);
     }
     let _ = child.kill();
+    let _ = child.wait();
     times.sort_by(f64::total_cmp);
     println!(
         "{edit}: least {:.0} ms, median {:.0} ms, greatest {:.0} ms over {saves} saves",
