@@ -6,7 +6,7 @@
 
 use nalgebra::{Matrix3, Point3, Vector3};
 
-use super::Starts;
+use super::starts::{neutral_start, Starts};
 use crate::kinematics::{Chain, JointKind};
 use crate::plugin::{
     IkProblem, IkSolution, Options, ParamSpec, Params, Plugin, Settings, SettingsError, Solver,
@@ -53,13 +53,7 @@ impl Settings for DlsSolver {
                 .integer("starts", 1, "starting postures tried until one reaches")
                 .range(1.0, 1000.0)
                 .get() as u32,
-            neutral_start: p
-                .boolean(
-                    "neutral_start",
-                    true,
-                    "the first start is the neutral posture, the others random",
-                )
-                .get(),
+            neutral_start: neutral_start(p),
         }
     }
 }

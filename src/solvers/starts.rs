@@ -6,6 +6,17 @@ use rand_chacha::rand_core::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
 use crate::kinematics::Chain;
+use crate::options::Params;
+
+/// The option `neutral_start`, which every solver that draws starts has.
+pub fn neutral_start(p: &mut Params<'_>) -> bool {
+    p.boolean(
+        "neutral_start",
+        true,
+        "the first start is the neutral posture, the others random",
+    )
+    .get()
+}
 
 /// A posture drawn uniformly within the joint limits.
 pub fn random_posture(chain: &Chain, rng: &mut ChaCha8Rng) -> Vec<f64> {

@@ -23,7 +23,7 @@ use crate::plugin::{
     SolverPlugin,
 };
 use crate::scene::Preferred;
-use crate::solvers::starts::Starts;
+use crate::solvers::starts::{neutral_start, Starts};
 
 /// The plugin `fabrik`.
 pub struct Fabrik;
@@ -55,13 +55,7 @@ impl Settings for FabrikSettings {
             )
             .range(1.0, 1000.0)
             .get() as u32;
-        let neutral_start = p
-            .boolean(
-                "neutral_start",
-                true,
-                "the first start is the neutral posture, the others random",
-            )
-            .get();
+        let neutral_start = neutral_start(p);
         let max_iterations = p
             .integer(
                 "max_iterations",

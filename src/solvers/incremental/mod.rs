@@ -29,7 +29,7 @@ use crate::plugin::{
     SolverPlugin,
 };
 use crate::scene::Preferred;
-use crate::solvers::starts::Starts;
+use crate::solvers::starts::{neutral_start, Starts};
 
 /// The plugin `incremental`.
 pub struct Incremental;
@@ -130,13 +130,7 @@ impl Settings for IncrementalSettings {
                 )
                 .range(1.0, 1000.0)
                 .get() as u32,
-            neutral_start: p
-                .boolean(
-                    "neutral_start",
-                    true,
-                    "the first start is the neutral posture, the others random",
-                )
-                .get(),
+            neutral_start: neutral_start(p),
             stall: p
                 .integer(
                     "stall",
