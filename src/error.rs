@@ -154,6 +154,12 @@ pub enum ErrorKind {
     MissingOption { plugin: String, name: String },
     #[error("{plugin}: {message}")]
     BadOption { plugin: String, message: String },
+    #[error("the {base} base does not suit `{person}`: {reason}")]
+    Unfit {
+        person: String,
+        base: String,
+        reason: String,
+    },
 }
 
 impl ErrorKind {
@@ -184,6 +190,7 @@ impl ErrorKind {
             | UnknownOption { .. }
             | MissingOption { .. }
             | BadOption { .. } => "reach::plugin",
+            Unfit { .. } => "reach::scene",
         }
     }
 
@@ -231,6 +238,7 @@ impl ErrorKind {
             UnknownOption { .. } => "unknown option".into(),
             MissingOption { .. } => "needs this option".into(),
             BadOption { .. } => "here".into(),
+            Unfit { .. } => "for this person".into(),
         }
     }
 

@@ -3,12 +3,12 @@
 use nalgebra::{Point3, Vector3};
 
 use super::search::search;
-use crate::kinematics::Chain;
+use crate::kinematics::{Chain, Posture};
 use crate::plugin::{
-    Base, BasePlugin, BasePose, Options, ParamSpec, Params, Placement, Plugin, PreparedBase,
-    ReachQuery, Settings, SettingsError, Solver,
+    Base, BaseError, BasePlugin, BasePose, Options, ParamSpec, Params, Placement, Plugin,
+    PreparedBase, ReachQuery, Settings, Solver,
 };
-use crate::scene::{IkSolution, Room};
+use crate::scene::{IkSolution, OwnBody, Physique, Room};
 
 /// The plugin `fixed`.
 pub struct Fixed;
@@ -55,22 +55,36 @@ impl Plugin for Fixed {
 }
 
 impl BasePlugin for Fixed {
-    fn build(&self, options: &Options) -> Result<Box<dyn Base>, SettingsError> {
+    /// The person's legs as their mannequin has them: seated (on a seat
+    /// their `hip_above_seat` below the hip point, feet forward), or
+    /// standing.
+    fn build(&self, options: &Options, person: &Physique) -> Result<Box<dyn Base>, BaseError> {
         let s = FixedSettings::from_options(options)?;
+        let legs = person.legs.as_ref().map(|l| match person.posture {
+            Some(Posture::Seated) => l.seated(20f64.to_radians()),
+            _ => l.standing(),
+        });
+        let pelvis = person.legs.as_ref().map_or(0.0, |l| l.pelvis_mm);
         Ok(Box::new(FixedBase {
             pose: BasePose {
                 position_mm: Point3::from(s.at_mm),
                 heading_rad: s.heading_rad,
             },
+            own: OwnBody::new(legs.unwrap_or_default(), pelvis),
         }))
     }
 }
 
 struct FixedBase {
     pose: BasePose,
+    own: OwnBody,
 }
 
 impl Base for FixedBase {
+    fn own_body(&self) -> &OwnBody {
+        &self.own
+    }
+
     /// The hip point must be inside the room.
     fn fits(&self, room: &Room) -> bool {
         room.contains(&self.pose.position_mm)

@@ -9,6 +9,9 @@
 //! target minus admissible base positions) made discrete, with the heading
 //! theta_0 of section 5.3.6 as the outer loop.
 
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock};
+
 use geo::{Closest, ClosestPoint, Contains, MultiPolygon, Point};
 use nalgebra::{Point3, Rotation2, Vector2};
 use rand_chacha::rand_core::SeedableRng;
@@ -16,56 +19,110 @@ use rand_chacha::ChaCha8Rng;
 
 use super::search::search;
 use crate::floor::{admissible, Footprint, Zone};
+use crate::geometry::Solid;
 use crate::kinematics::Chain;
-use crate::plugin::{BasePose, IkSolution, Placement, PreparedBase, ReachQuery, Solver};
-use crate::scene::Room;
+use crate::plugin::{Base, BasePose, IkSolution, Placement, PreparedBase, ReachQuery, Solver};
+use crate::scene::{column_solid, OwnBody, Physique, Room};
 use crate::solvers::random_posture;
 
-/// A base that moves on the floor: its footprint and how it is searched.
-#[derive(Clone, Debug, PartialEq)]
+/// The admissible region at each heading searched.
+type Regions = Vec<(f64, MultiPolygon<f64>)>;
+
+/// A base that moves on the floor: its footprint, the person's own body
+/// and the base's parts, and how it is searched.
 pub struct Mobile {
     pub footprint: Footprint,
     pub hip_height_mm: f64,
-    pub clearance_mm: f64,
     pub headings: u32,
     pub zone: Option<Zone>,
+    pub own: OwnBody,
+    /// The regions of each room, by name, worked out once.
+    regions: Mutex<HashMap<String, Arc<OnceLock<Regions>>>>,
 }
 
 impl Mobile {
+    pub fn new(
+        footprint: Footprint,
+        hip_height_mm: f64,
+        headings: u32,
+        zone: Option<Zone>,
+        own: OwnBody,
+    ) -> Self {
+        Mobile {
+            footprint,
+            hip_height_mm,
+            headings,
+            zone,
+            own,
+            regions: Mutex::default(),
+        }
+    }
+
+    /// The base with its parts and the person's legs (`solids`, in the
+    /// base frame, the hip point `hip_height_mm` above the floor): the
+    /// floor must find room for them and for the upright upper body, and
+    /// links must stay out of them (but for the pelvis, `pelvis_mm` about
+    /// the hip point).
+    pub fn carrying(
+        solids: Vec<Solid>,
+        person: &Physique,
+        pelvis_mm: f64,
+        hip_height_mm: f64,
+        headings: u32,
+        zone: Option<Zone>,
+    ) -> Self {
+        let column = person.column_mm.map(|c| column_solid("the upper body", c));
+        let footprint = Footprint::of_solids(solids.iter().chain(&column), hip_height_mm);
+        Mobile::new(
+            footprint,
+            hip_height_mm,
+            headings,
+            zone,
+            OwnBody::new(solids, pelvis_mm),
+        )
+    }
+
     /// The admissible regions, one per heading searched (one for all when
-    /// turning does not change the footprint).
-    fn regions(&self, room: &Room) -> Vec<(f64, MultiPolygon<f64>)> {
+    /// turning does not change the footprint), worked out once per room.
+    fn regions(&self, room: &Room) -> Arc<OnceLock<Regions>> {
+        let cell = {
+            let mut by_room = self.regions.lock().unwrap_or_else(|e| e.into_inner());
+            Arc::clone(by_room.entry(room.name.clone()).or_default())
+        };
+        cell.get_or_init(|| self.compute_regions(room));
+        cell
+    }
+
+    fn compute_regions(&self, room: &Room) -> Regions {
         let headings: Vec<f64> = (0..self.headings)
             .map(|k| 2.0 * std::f64::consts::PI * f64::from(k) / f64::from(self.headings))
             .collect();
         if !self.footprint.turns() {
-            let region = admissible(room, &self.footprint, 0.0, self.clearance_mm, self.zone);
+            let region = admissible(room, &self.footprint, 0.0, self.zone);
             return headings.into_iter().map(|h| (h, region.clone())).collect();
         }
         headings
             .into_iter()
-            .map(|h| {
-                (
-                    h,
-                    admissible(room, &self.footprint, h, self.clearance_mm, self.zone),
-                )
-            })
+            .map(|h| (h, admissible(room, &self.footprint, h, self.zone)))
             .collect()
     }
 
     /// Whether the base fits anywhere in the room.
     pub fn fits(&self, room: &Room) -> bool {
-        self.regions(room).iter().any(|(_, r)| !r.0.is_empty())
+        let regions = self.regions(room);
+        regions
+            .get()
+            .is_some_and(|r| r.iter().any(|(_, r)| !r.0.is_empty()))
     }
 
     /// Ready for reaches in `room`: the regions and the workspace centre
     /// are computed once.
     pub fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> PreparedMobile<'a> {
-        let regions = self
-            .regions(room)
-            .into_iter()
-            .filter(|(_, r)| !r.0.is_empty())
-            .collect();
+        let regions = self.regions(room);
+        let regions = regions
+            .get()
+            .map(|r| r.iter().filter(|(_, r)| !r.0.is_empty()).cloned().collect())
+            .unwrap_or_default();
         PreparedMobile {
             mobile: self,
             room,
@@ -73,6 +130,32 @@ impl Mobile {
             regions,
             hint: workspace_centre(chain),
         }
+    }
+}
+
+impl Base for Mobile {
+    fn own_body(&self) -> &OwnBody {
+        &self.own
+    }
+
+    fn hip_height_mm(&self) -> Option<f64> {
+        Some(self.hip_height_mm)
+    }
+
+    fn fits(&self, room: &Room) -> bool {
+        Mobile::fits(self, room)
+    }
+
+    fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a> {
+        Box::new(Mobile::prepare(self, room, chain))
+    }
+
+    fn placements(&self) -> u64 {
+        u64::from(self.headings)
+    }
+
+    fn footprint(&self) -> Option<&Footprint> {
+        Some(&self.footprint)
     }
 }
 

@@ -6,15 +6,25 @@
 //!
 //! Where the room's obstacles are checked and no placement reaches, the
 //! most promising placements where the solver's posture reached the target
-//! through an obstacle are tried again with the query's [`Retry`] solver
-//! (by default `incremental` with 64 starts) before the target is called
-//! unreachable: a solver that ignores obstacles while it searches can miss
-//! postures that go round a board, and an unreachable answer must mean
-//! unreachable.
+//! through something (an obstacle, the person's own body, their chair) are
+//! tried again with the query's [`Retry`] solver before the target is
+//! called unreachable: a solver that ignores obstacles while it searches
+//! can miss postures that go round a board, and an unreachable answer must
+//! mean unreachable. The retry starts near the blocked posture (most of
+//! the way round is usually a small change of it) and, one start in four,
+//! anywhere.
 
 use crate::kinematics::Chain;
-use crate::plugin::{BasePose, Placement, ReachQuery, Retry, Search, Solver};
+
+use crate::plugin::{BasePose, IkProblem, Placement, ReachQuery, Retry, Search, Solver};
 use crate::scene::Preferred;
+use crate::solvers::Kicks;
+
+/// A placement whose posture reached the target through something.
+struct Blocked {
+    pose: BasePose,
+    q: Vec<f64>,
+}
 
 /// The placement kept over `poses` (none when there are no poses).
 pub fn search(
@@ -25,12 +35,14 @@ pub fn search(
 ) -> Option<Placement> {
     let mut best = Preferred::new(query.tolerance_mm);
     let mut blocked = Vec::new();
-    for &pose in poses {
+    for &pose in within_reach(query, chain, poses) {
         let placement = query.solve_at(chain, pose, solver);
-        if placement.solution.collision.is_some()
-            && placement.solution.distance_mm <= query.tolerance_mm
-        {
-            blocked.push(pose);
+        let solution = &placement.solution;
+        if solution.collision.is_some() && solution.distance_mm <= query.tolerance_mm {
+            blocked.push(Blocked {
+                pose,
+                q: solution.q.clone(),
+            });
         }
         let comfort = chain.discomfort(&placement.solution.q);
         best.offer(placement, comfort);
@@ -44,21 +56,75 @@ pub fn search(
     best.into_kept()
 }
 
-/// Try again from the first `retry.placements` of the `blocked` poses (the
-/// solver's posture there reached the target through an obstacle), until
-/// one reaches.
+/// The first of up to `draws` starts that is clear of obstacles and of
+/// the person's own body (a solver that steers clear stays clear from it),
+/// or the last drawn if none is.
+fn clear_start(problem: &IkProblem<'_>, kicks: &mut Kicks<'_>, draws: usize) -> Vec<f64> {
+    let mut start = Vec::new();
+    for _ in 0..draws {
+        start = kicks.next().unwrap_or_default();
+        if problem.collision(&start).is_none() {
+            break;
+        }
+    }
+    start
+}
+
+/// How many starts are drawn at most for one that is clear, for a solver
+/// that steers clear (a check costs a microsecond or two, a descent tens).
+const CLEAR_DRAWS: usize = 16;
+
+/// The poses from which the target is within the chain's reach (no
+/// longer than its links end to end); if there are none, the most
+/// promising pose alone, so that the answer still shows the closest the
+/// person came.
+fn within_reach<'p>(
+    query: &ReachQuery<'_>,
+    chain: &Chain,
+    poses: &'p [BasePose],
+) -> Vec<&'p BasePose> {
+    let bound_mm = chain.reach_bound_mm() + query.tolerance_mm;
+    let near: Vec<&BasePose> = poses
+        .iter()
+        .filter(|pose| pose.to_base(&query.target_room_mm).coords.norm() <= bound_mm)
+        .collect();
+    if near.is_empty() {
+        poses.iter().take(1).collect()
+    } else {
+        near
+    }
+}
+
+/// Try again from the first `retry.placements` of the `blocked`
+/// placements, until one reaches: from each, one descent of the retry
+/// solver per start it has, the starts drawn around the blocked posture.
 fn retry_blocked(
     query: &ReachQuery<'_>,
     chain: &Chain,
-    blocked: &[BasePose],
+    blocked: &[Blocked],
     retry: Retry<'_>,
     best: &mut Preferred<Placement>,
 ) {
-    for &pose in blocked.iter().take(retry.placements) {
-        let mut placement = query.retried().solve_at(chain, pose, retry.solver);
-        placement.retried = true;
-        let comfort = chain.discomfort(&placement.solution.q);
-        best.offer(placement, comfort);
+    let starts = retry.solver.starts() as usize;
+    for (k, placement) in blocked.iter().take(retry.placements).enumerate() {
+        let seed = query.seed ^ 0x7e72_1ed5_0000_0001 ^ ((k as u64) << 32);
+        let mut kicks = Kicks::new(chain, &placement.q, retry.spread, seed);
+        let problem = query.problem(chain, placement.pose);
+        let draws = if retry.solver.steers_clear() {
+            CLEAR_DRAWS
+        } else {
+            1
+        };
+        for _ in 0..starts {
+            let start = clear_start(&problem, &mut kicks, draws);
+            let mut tried = query.solve_from_at(chain, placement.pose, retry.solver, start);
+            tried.retried = true;
+            let comfort = chain.discomfort(&tried.solution.q);
+            best.offer(tried, comfort);
+            if best.reaches() && query.search == Search::FirstReaching {
+                return;
+            }
+        }
         if best.reaches() {
             return;
         }

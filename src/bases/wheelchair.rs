@@ -1,21 +1,31 @@
-//! The `wheelchair` base: a seated person. The hip point is at seated hip
-//! height; the footprint is a rectangle whose place on the floor depends on
+//! The `wheelchair` base: a seated person in a manual wheelchair. The hip
+//! point is `hip_above_seat` above the seat; the chair's parts (seat,
+//! backrest, rear wheels, footrests, armrests if it has them) and the
+//! person's legs on it are solids the arm must stay out of, and what the
+//! floor must find room for at their heights: the knees and toes go under a
+//! counter as far as its knee and toe clearance allow. The chair turns with
 //! the heading theta_0 (section 5.3.6 of the paper).
 //!
-//! Defaults from ../shared/reference/human-data.md: a manual chair for a
-//! large adult is 1065 mm long (plus about 150 mm for the toes) and 660 mm
-//! wide (1991 ADA guidelines, fig. A3); manual seat height 495 mm (IDeA
-//! Center, 2010); the hip point is taken 100 mm above the seat and 650 mm
-//! behind the toes.
+//! Defaults from ../shared/reference/human-data.md and the sources it
+//! names: the 1991 ADA Accessibility Guidelines' large adult chair (figure
+//! A3: 660 mm wide, seat 485 mm, armrests 760 mm, footrests 455 mm across);
+//! the IDeA Center's measured manual seat height, 495 mm (2010); seat
+//! 430 x 460 mm, backrest 420 mm above the seat and 610 mm (24 in) rear
+//! wheels from Redford, Orthotics Etcetera (1986); the lower legs 20 deg
+//! forward of the vertical (Kamenetz, via Panero & Zelnik 1979). Assumed:
+//! the rear axle 60 mm ahead of the backrest, wheels 35 mm wide, the seat
+//! and footrest boards 60 and 30 mm thick. The chair's length comes out of
+//! the person's legs: 1,200 mm for the 50th-percentile man, against
+//! ADA's 1,065 mm plus 150 mm of toes.
 
-use nalgebra::Vector3;
+use nalgebra::{Point3, Vector3};
 
 use super::placement::Mobile;
 use super::{zone, zone_params};
-use crate::floor::Footprint;
-use crate::plugin::{
-    Base, BasePlugin, Options, ParamSpec, Params, Plugin, Settings, SettingsError,
-};
+use crate::geometry::{Cuboid, Shape, Solid};
+use crate::kinematics::{Legs, Posture};
+use crate::plugin::{Base, BaseError, BasePlugin, Options, ParamSpec, Params, Plugin, Settings};
+use crate::scene::Physique;
 
 /// The plugin `wheelchair`.
 pub struct Wheelchair;
@@ -23,12 +33,17 @@ pub struct Wheelchair;
 /// Its settings.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct WheelchairSettings {
-    pub length_mm: f64,
-    pub width_mm: f64,
-    pub hip_to_front_mm: f64,
     pub seat_height_mm: f64,
-    pub hip_above_seat_mm: f64,
-    pub clearance_mm: f64,
+    pub hip_above_seat_mm: Option<f64>,
+    pub width_mm: f64,
+    pub seat_width_mm: f64,
+    pub seat_depth_mm: f64,
+    pub backrest_mm: f64,
+    pub wheel_mm: f64,
+    pub footrest_width_mm: f64,
+    pub shank_forward_rad: f64,
+    pub armrests: bool,
+    pub armrest_height_mm: f64,
     pub headings: u32,
     pub zone_mm: [Option<Vector3<f64>>; 2],
 }
@@ -36,37 +51,59 @@ pub struct WheelchairSettings {
 impl Settings for WheelchairSettings {
     fn visit(p: &mut Params<'_>) -> Self {
         WheelchairSettings {
-            length_mm: p
-                .length("length", 1215.0, "length with footrests and toes")
-                .range(300.0, 3000.0)
-                .get(),
-            width_mm: p
-                .length("width", 660.0, "overall width")
-                .range(300.0, 2000.0)
-                .get(),
-            hip_to_front_mm: p
-                .length(
-                    "hip_to_front",
-                    650.0,
-                    "from the hip point forward to the front of the footprint",
-                )
-                .range(0.0, 3000.0)
-                .get(),
             seat_height_mm: p
                 .length("seat_height", 495.0, "seat height above the floor")
                 .range(200.0, 1000.0)
                 .get(),
             hip_above_seat_mm: p
-                .length("hip_above_seat", 100.0, "hip point above the seat")
+                .optional_length(
+                    "hip_above_seat",
+                    "the hip point above the seat (default: the mannequin's legs, else 100mm)",
+                )
                 .range(0.0, 400.0)
                 .get(),
-            clearance_mm: p
+            width_mm: p
+                .length("width", 660.0, "overall width, outside the rear wheels")
+                .range(300.0, 2000.0)
+                .get(),
+            seat_width_mm: p
+                .length("seat_width", 460.0, "the seat's width")
+                .range(200.0, 1000.0)
+                .get(),
+            seat_depth_mm: p
+                .length("seat_depth", 430.0, "the seat's depth, from the backrest")
+                .range(200.0, 1000.0)
+                .get(),
+            backrest_mm: p
                 .length(
-                    "clearance",
-                    1400.0,
-                    "obstacles whose bottom is lower than this block the floor",
+                    "backrest",
+                    420.0,
+                    "the backrest's height above the seat (0: none)",
                 )
-                .range(0.0, 5000.0)
+                .range(0.0, 1500.0)
+                .get(),
+            wheel_mm: p
+                .length("wheel", 610.0, "the rear wheels' diameter")
+                .range(100.0, 1500.0)
+                .get(),
+            footrest_width_mm: p
+                .length("footrest_width", 455.0, "across the footrests")
+                .range(100.0, 1500.0)
+                .get(),
+            shank_forward_rad: p
+                .angle(
+                    "shank_angle",
+                    20f64.to_radians(),
+                    "the lower legs forward of the vertical, to the footrests",
+                )
+                .range(0.0, 90f64.to_radians())
+                .get(),
+            armrests: p
+                .boolean("armrests", false, "armrests at `armrest_height`")
+                .get(),
+            armrest_height_mm: p
+                .length("armrest_height", 760.0, "the armrests' top above the floor")
+                .range(200.0, 1500.0)
                 .get(),
             headings: p
                 .integer("headings", 16, "headings of the chair tried")
@@ -83,7 +120,7 @@ impl Plugin for Wheelchair {
     }
 
     fn doc(&self) -> &'static str {
-        "seated in a wheelchair: a rectangle on the floor that turns with the chair"
+        "seated in a wheelchair: seat, backrest, wheels and footrests, the legs on it, turning with the chair"
     }
 
     fn params(&self) -> Vec<ParamSpec> {
@@ -92,19 +129,149 @@ impl Plugin for Wheelchair {
 }
 
 impl BasePlugin for Wheelchair {
-    fn build(&self, options: &Options) -> Result<Box<dyn Base>, SettingsError> {
+    fn build(&self, options: &Options, person: &Physique) -> Result<Box<dyn Base>, BaseError> {
         let s = WheelchairSettings::from_options(options)?;
-        let front = s.hip_to_front_mm;
-        Ok(Box::new(Mobile {
-            footprint: Footprint::Rectangle {
-                front_mm: front,
-                back_mm: (s.length_mm - front).max(0.0),
-                width_mm: s.width_mm,
-            },
-            hip_height_mm: s.seat_height_mm + s.hip_above_seat_mm,
-            clearance_mm: s.clearance_mm,
-            headings: s.headings,
-            zone: zone(s.zone_mm)?,
-        }))
+        if let Some(declared @ Posture::Standing) = person.posture {
+            return Err(BaseError::posture("wheelchair", declared, Posture::Seated));
+        }
+        let chair = Chair::new(&s, person);
+        let hip_height_mm = s.seat_height_mm + chair.above_seat_mm;
+        let mut solids = chair.parts(&s);
+        let legs = chair.legs.as_ref().map(|l| l.seated(s.shank_forward_rad));
+        solids.extend(legs.iter().flatten().cloned());
+        solids.push(match &legs {
+            Some(feet) => chair.footrests(&s, feet),
+            None => {
+                // No legs to put them under: where ADA's chair has them.
+                let half = s.footrest_width_mm / 2.0;
+                chair.part(&s, "footrests", [400.0, 640.0], [-half, half], [50.0, 80.0])
+            }
+        });
+        let pelvis = chair.legs.as_ref().map_or(0.0, |l| l.pelvis_mm);
+        Ok(Box::new(Mobile::carrying(
+            solids,
+            person,
+            pelvis,
+            hip_height_mm,
+            s.headings,
+            zone(s.zone_mm)?,
+        )))
+    }
+}
+
+/// A chair fitted to its user, in the base frame.
+struct Chair {
+    /// The person's legs with the hip point at the chair's height above
+    /// the seat.
+    legs: Option<Legs>,
+    above_seat_mm: f64,
+    /// The backrest's front: just behind the back of the upright trunk.
+    back_x_mm: f64,
+}
+
+/// The hip point above the seat where neither chair nor mannequin says.
+const HIP_ABOVE_SEAT_MM: f64 = 100.0;
+
+impl Chair {
+    fn new(s: &WheelchairSettings, person: &Physique) -> Self {
+        let above_seat_mm = s
+            .hip_above_seat_mm
+            .or(person.legs.as_ref().map(|l| l.hip_above_seat_mm))
+            .unwrap_or(HIP_ABOVE_SEAT_MM);
+        let legs = person.legs.clone().map(|l| Legs {
+            hip_above_seat_mm: above_seat_mm,
+            ..l
+        });
+        let back_x_mm = person.column_mm.map_or(-130.0, |[lo, _]| lo.x) - 5.0;
+        Chair {
+            legs,
+            above_seat_mm,
+            back_x_mm,
+        }
+    }
+
+    /// A box of the chair between heights `z_mm` above the floor.
+    fn part(
+        &self,
+        s: &WheelchairSettings,
+        name: &str,
+        x: [f64; 2],
+        y: [f64; 2],
+        z: [f64; 2],
+    ) -> Solid {
+        let hip = s.seat_height_mm + self.above_seat_mm;
+        let lo = Point3::new(x[0], y[0], z[0] - hip);
+        let hi = Point3::new(x[1], y[1], z[1] - hip);
+        Solid::new(
+            format!("the wheelchair's {name}"),
+            Shape::Cuboid(Cuboid::between(lo, hi)),
+        )
+    }
+
+    /// Seat, backrest, wheels and (if it has them) armrests.
+    fn parts(&self, s: &WheelchairSettings) -> Vec<Solid> {
+        let (back, seat) = (self.back_x_mm, s.seat_height_mm);
+        let half_seat = s.seat_width_mm / 2.0;
+        let mut parts = vec![self.part(
+            s,
+            "seat",
+            [back, back + s.seat_depth_mm],
+            [-half_seat, half_seat],
+            [seat - 60.0, seat],
+        )];
+        if s.backrest_mm > 0.0 {
+            parts.push(self.part(
+                s,
+                "backrest",
+                [back - 40.0, back],
+                [-half_seat, half_seat],
+                [seat, seat + s.backrest_mm],
+            ));
+        }
+        let (axle, r, half) = (back + 60.0, s.wheel_mm / 2.0, s.width_mm / 2.0);
+        for (side, y) in [
+            ("left", [half - 35.0, half]),
+            ("right", [-half, -half + 35.0]),
+        ] {
+            parts.push(self.part(
+                s,
+                &format!("{side} wheel"),
+                [axle - r, axle + r],
+                y,
+                [0.0, 2.0 * r],
+            ));
+        }
+        if s.armrests {
+            let z = [s.armrest_height_mm - 40.0, s.armrest_height_mm];
+            let x = [back, back + 330.0];
+            parts.push(self.part(s, "left armrest", x, [half_seat, half_seat + 50.0], z));
+            parts.push(self.part(s, "right armrest", x, [-half_seat - 50.0, -half_seat], z));
+        }
+        parts
+    }
+
+    /// One board under both feet of `legs` (the seated legs' solids).
+    fn footrests(&self, s: &WheelchairSettings, legs: &[Solid]) -> Solid {
+        let feet: Vec<[Point3<f64>; 2]> = legs
+            .iter()
+            .filter(|l| l.name.ends_with("foot"))
+            .map(|l| l.shape.bounds())
+            .collect();
+        let x0 = feet
+            .iter()
+            .map(|[lo, _]| lo.x)
+            .fold(f64::INFINITY, f64::min);
+        let x1 = feet
+            .iter()
+            .map(|[_, hi]| hi.x)
+            .fold(f64::NEG_INFINITY, f64::max);
+        let sole = feet
+            .iter()
+            .map(|[lo, _]| lo.z)
+            .fold(f64::INFINITY, f64::min);
+        let hip = s.seat_height_mm + self.above_seat_mm;
+        let half = s.footrest_width_mm / 2.0;
+        let top = sole + hip;
+        self.part(s, "footrests", [x0, x1], [-half, half], [top - 30.0, top])
     }
 }

@@ -1,12 +1,13 @@
 //! Mannequins: Denavit-Hartenberg joints with limits, neutral values and
-//! comfort weights, joined in a tree (`after`), and their effectors.
+//! comfort weights, joined in a tree (`after`), and their effectors; the
+//! solids of their links and spheres, their legs and posture (`legs.rs`).
 
 use nalgebra::Vector3;
 
 use super::eval::fmt_num;
 use super::Checker;
 use crate::error::{Error, ErrorKind};
-use crate::kinematics::{Body, Dh, Effector, Joint, JointKind};
+use crate::kinematics::{Body, Dh, Effector, Joint, JointKind, Link, Posture, Sphere};
 use crate::names::suggest;
 use crate::span::Span;
 use crate::span::{FileId, Name};
@@ -29,7 +30,9 @@ impl Checker<'_> {
             .collect();
         for (name, decl, file) in decls {
             let body = match (&decl.alias, &decl.urdf) {
-                (Some(target), _) => self.body_of(target, file, 0),
+                (Some(target), _) => self
+                    .body_of(target, file, 0)
+                    .map(|b| self.with_posture(b, decl)),
                 (None, Some(urdf)) => self.in_file(file, |c| c.urdf_body(urdf)),
                 (None, None) => self.body_with(decl, file, &[], file),
             };
@@ -48,9 +51,9 @@ impl Checker<'_> {
             }
         };
         match &decl.alias {
-            Some(target) if r.args.is_empty() && depth < self.limits.alias_chain => {
-                self.body_of(target, decl_file, depth + 1)
-            }
+            Some(target) if r.args.is_empty() && depth < self.limits.alias_chain => self
+                .body_of(target, decl_file, depth + 1)
+                .map(|b| self.with_posture(b, decl)),
             Some(_) if depth >= self.limits.alias_chain => {
                 self.error(Error::new(
                     ErrorKind::TooLarge {
@@ -164,17 +167,99 @@ impl Checker<'_> {
             joints.push(self.joint(j));
         }
         let effectors = self.effectors(decl, &names);
+        let spheres = self.spheres(decl, &names);
+        let legs = self.legs(decl);
         let joints: Option<Vec<Joint>> = joints.into_iter().collect();
         let parents: Option<Vec<Option<usize>>> = parents.into_iter().collect();
         let (joints, parents, effectors) = (joints?, parents?, effectors?);
         if joints.is_empty() {
             return None;
         }
-        Some(Body {
+        let body = Body {
             joints,
             parents,
             effectors,
-        })
+            spheres: spheres?,
+            legs: legs?,
+            posture: None,
+        };
+        Some(self.with_posture(body, decl))
+    }
+
+    /// `body` with the posture `decl` says (its first; an error on others).
+    fn with_posture(&mut self, mut body: Body, decl: &MannequinDecl) -> Body {
+        self.repeated(
+            decl.postures.iter().skip(1).map(|p| p.span),
+            "`seated` or `standing`",
+        );
+        if let Some(p) = decl.postures.first() {
+            body.posture = Some(match p.value {
+                ast::Posture::Seated => Posture::Seated,
+                ast::Posture::Standing => Posture::Standing,
+            });
+        }
+        body
+    }
+
+    /// The link a joint or an effector declares: its radius (a length, zero
+    /// or more; else the default) and its name ("the right forearm" for
+    /// `link right_forearm`; else after `fallback`).
+    fn link(&mut self, decl: &ast::LinkDecl, fallback: &str) -> Option<Link> {
+        let name = self.single_name(&decl.name, "`link`").map_or_else(
+            || format!("the link to `{fallback}`"),
+            |n| part_name(&n.value),
+        );
+        let radius_mm = match self.single(&decl.radius, "`radius`") {
+            None => Link::DEFAULT_RADIUS_MM,
+            Some(e) => self.radius(e)?,
+        };
+        Some(Link { name, radius_mm })
+    }
+
+    /// A radius: a length, zero or more.
+    fn radius(&mut self, e: &Expr) -> Option<f64> {
+        let r = self.length(e)?;
+        if r < 0.0 {
+            self.out_of_range(
+                e.span,
+                "a radius",
+                "zero or more",
+                &format!("{}mm", fmt_num(r)),
+            );
+            return None;
+        }
+        Some(r)
+    }
+
+    /// The first of `names`, with an error on each further one.
+    fn single_name<'n>(&mut self, names: &'n [Name], what: &str) -> Option<&'n Name> {
+        self.repeated(names.iter().skip(1).map(|n| n.span), what);
+        names.first()
+    }
+
+    /// The spheres: on the last joint unless `after` says which.
+    fn spheres(&mut self, decl: &MannequinDecl, joints: &[&Name]) -> Option<Vec<Sphere>> {
+        let last = joints.len().checked_sub(1);
+        let mut spheres = Vec::new();
+        let mut ok = true;
+        for s in &decl.spheres {
+            let joint = match &s.after {
+                None => Some(last),
+                Some(after) => self.earlier_joint(joints, after).map(Some),
+            };
+            let centre = self.point(&s.at);
+            let radius = self.radius(&s.radius);
+            match (joint, centre, radius) {
+                (Some(joint), Some(centre_mm), Some(radius_mm)) => spheres.push(Sphere {
+                    name: part_name(&s.name.value),
+                    joint,
+                    centre_mm,
+                    radius_mm,
+                }),
+                _ => ok = false,
+            }
+        }
+        ok.then_some(spheres)
     }
 
     /// The index of joint `name` among those declared before it.
@@ -210,6 +295,7 @@ impl Checker<'_> {
                 name: "end".to_string(),
                 joint: last,
                 offset_mm: Vector3::zeros(),
+                link: Link::named("the end"),
             }]);
         }
         let mut effectors = Vec::new();
@@ -227,11 +313,13 @@ impl Checker<'_> {
                 Some(after) => self.earlier_joint(joints, after).map(Some),
             };
             let offset = self.point(&e.at);
-            match (joint, offset) {
-                (Some(joint), Some(offset_mm)) => effectors.push(Effector {
+            let link = self.link(&e.link, &e.name.value);
+            match (joint, offset, link) {
+                (Some(joint), Some(offset_mm), Some(link)) => effectors.push(Effector {
                     name: e.name.value.clone(),
                     joint,
                     offset_mm,
+                    link,
                 }),
                 _ => ok = false,
             }
@@ -264,6 +352,7 @@ impl Checker<'_> {
             Some(e) => self.weight(e),
             None => Some(1.0),
         };
+        let link = self.link(&j.link, &j.name.value);
         let (min, max) = limits?;
         let neutral = match neutral {
             None => 0.0_f64.clamp(min, max),
@@ -281,6 +370,7 @@ impl Checker<'_> {
             max,
             neutral,
             weight: weight?,
+            link: link?,
         })
     }
 
@@ -405,6 +495,12 @@ impl Checker<'_> {
             ));
         }
     }
+}
+
+/// How a part's name reads in a report: `right_forearm` is "the right
+/// forearm".
+pub(super) fn part_name(name: &str) -> String {
+    format!("the {}", name.replace('_', " "))
 }
 
 /// A joint value in the unit a user reads: degrees or millimetres.

@@ -6,6 +6,7 @@
 
 mod budget;
 mod eval;
+mod legs;
 mod mannequin;
 mod mesh;
 mod options;

@@ -8,8 +8,8 @@ use crate::error::{Error, ErrorKind};
 use crate::kinematics::{Body, Joint, JointKind};
 use crate::names::suggest;
 use crate::options::{Options, PluginConfig, PluginKind, Settings};
-use crate::plugin::Base;
-use crate::scene::{Person, Vision};
+use crate::plugin::{Base, BaseError};
+use crate::scene::{Person, Physique, Vision};
 use crate::span::Name;
 use crate::syntax::ast::{self, JointOverride, OptionDecl, PersonDecl, PersonMannequin};
 
@@ -35,9 +35,12 @@ impl Checker<'_> {
         let base_use = self.one_of(&decl.bases, |b| b.span, &owner, "base", decl.name.span);
         let body = mannequin.and_then(|m| self.person_body(m));
         let base = base_use.and_then(|b| self.base_config(b));
-        let built = base_use
-            .zip(base.as_ref())
-            .and_then(|(b, config)| self.build_base(b, config));
+        let built = match (base_use, base.as_ref(), body.as_ref()) {
+            (Some(b), Some(config), Some(body)) => {
+                self.build_base(&decl.name.value, b, config, &Physique::of(body))
+            }
+            _ => None,
+        };
         let vision = self.person_vision(&decl.visions);
         let person = Person {
             name: decl.name.value.clone(),
@@ -75,13 +78,31 @@ impl Checker<'_> {
         Some(config)
     }
 
-    /// The base `config` gives, built; an error at the option it names (in
-    /// the person's block, else the preset's) if it cannot be.
-    fn build_base(&mut self, b: &ast::PluginUse, config: &PluginConfig) -> Option<Arc<dyn Base>> {
+    /// The base `config` gives, built for `person` of `physique`; an
+    /// error at the option it names (in the person's block, else the
+    /// preset's), or at the base if the person does not suit it.
+    fn build_base(
+        &mut self,
+        person: &str,
+        b: &ast::PluginUse,
+        config: &PluginConfig,
+        physique: &Physique,
+    ) -> Option<Arc<dyn Base>> {
         let plugin = self.registry.base(&config.name)?.clone();
-        match plugin.build(&config.options) {
+        match plugin.build(&config.options, physique) {
             Ok(base) => Some(Arc::from(base)),
-            Err(e) => {
+            Err(BaseError::Unfit(reason)) => {
+                self.error(Error::new(
+                    ErrorKind::Unfit {
+                        person: person.to_string(),
+                        base: config.name.clone(),
+                        reason,
+                    },
+                    b.span,
+                ));
+                None
+            }
+            Err(BaseError::Settings(e)) => {
                 let label = format!("base `{}`", config.name);
                 let given = b.options.iter().any(|o| o.name.value == e.option);
                 match self.base_presets.get(&b.name.value) {

@@ -91,7 +91,7 @@ impl Checker<'_> {
                 RoomItem::Size(_) => {}
                 RoomItem::Box(b) => boxes.extend(self.box_obstacle(b)),
                 RoomItem::Mesh(m) => meshes.extend(self.mesh(m)),
-                RoomItem::Surface(d) => surfaces.extend(self.surface(d)),
+                RoomItem::Surface(d) => surfaces.extend(self.surface(d, size)),
                 RoomItem::Target(t) => {
                     let Some(p) = self.point(&t.at) else { continue };
                     let position_mm = Point3::from(p);
@@ -125,7 +125,7 @@ impl Checker<'_> {
 
     /// A `surface` item: a rectangle parallel to the room's axes with exactly
     /// one size zero.
-    fn surface(&mut self, d: &SurfaceDecl) -> Option<Surface> {
+    fn surface(&mut self, d: &SurfaceDecl, room_size: Option<Vector3<f64>>) -> Option<Surface> {
         let corner = self.point(&d.at);
         let size = self.point(&d.size)?;
         let zeros = (0..3).filter(|&i| size[i] == 0.0).count();
@@ -151,11 +151,20 @@ impl Checker<'_> {
             v
         };
         let edges: Vec<Vector3<f64>> = (0..3).filter(|&i| size[i] != 0.0).map(axis).collect();
+        let corner_mm = Point3::from(corner?);
+        // Touched from above if level; if upright, from the room's middle.
+        let flat = (0..3).find(|&i| size[i] == 0.0).unwrap_or(2);
+        let mut normal = Vector3::zeros();
+        normal[flat] = match room_size {
+            Some(room) if flat < 2 && corner_mm[flat] > room[flat] / 2.0 => -1.0,
+            _ => 1.0,
+        };
         Some(Surface {
             name: d.name.value.clone(),
-            corner_mm: Point3::from(corner?),
+            corner_mm,
             u_mm: edges[0],
             v_mm: edges[1],
+            normal,
         })
     }
 

@@ -1,63 +1,90 @@
-//! The outline a base takes on the floor, in the base frame (x forward,
-//! y to the left, origin at the hip point).
+//! What a base takes up on the floor, as the floor sees it: each of its
+//! solids (the chair's seat, wheels and footrests, the rollator's frame,
+//! the person's legs and upright trunk) as a convex outline from above in
+//! the base frame (x forward, y to the left, origin at the hip point) and
+//! the heights it spans above the floor. An obstacle blocks a part only
+//! where their heights overlap, so knees and toes go under a counter as far
+//! as its knee and toe clearance allow.
 
 use geo::{Coord, LineString, Polygon};
 use nalgebra::{Rotation2, Vector2};
+
+use crate::geometry::{Shape, Solid};
 
 /// Sides of the polygon that stands for a circle. It is circumscribed, so
 /// a clearance check with it never lets the circle overlap an obstacle.
 const CIRCLE_SIDES: usize = 24;
 
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Footprint {
-    /// A circle about the hip point (a person with a trolley or rollator).
-    Circle { radius_mm: f64 },
-    /// A rectangle: `front_mm` ahead of the hip point, `back_mm` behind it,
-    /// `width_mm` wide and centred (a wheelchair with its user).
-    Rectangle {
-        front_mm: f64,
-        back_mm: f64,
-        width_mm: f64,
-    },
+/// One part: its outline from above and the heights it spans.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FloorPart {
+    /// Convex, in the base frame, millimetres.
+    pub outline_mm: Vec<Vector2<f64>>,
+    /// Lowest and highest, above the floor.
+    pub z_mm: [f64; 2],
+}
+
+/// A base's parts as the floor sees them.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Footprint {
+    pub parts: Vec<FloorPart>,
 }
 
 impl Footprint {
-    /// The outline's corners in the base frame turned by `heading_rad`
+    /// One circle about the hip point, from the floor to `height_mm`.
+    pub fn circle(radius_mm: f64, height_mm: f64) -> Self {
+        Footprint {
+            parts: vec![FloorPart {
+                outline_mm: circle(Vector2::zeros(), radius_mm),
+                z_mm: [0.0, height_mm],
+            }],
+        }
+    }
+
+    /// One rectangle, `front_mm` ahead of the hip point and `back_mm`
+    /// behind it, `width_mm` wide, from the floor to `height_mm`.
+    pub fn rectangle(front_mm: f64, back_mm: f64, width_mm: f64, height_mm: f64) -> Self {
+        let h = width_mm / 2.0;
+        let outline_mm = [(front_mm, h), (-back_mm, h), (-back_mm, -h), (front_mm, -h)]
+            .map(|(x, y)| Vector2::new(x, y))
+            .to_vec();
+        Footprint {
+            parts: vec![FloorPart {
+                outline_mm,
+                z_mm: [0.0, height_mm],
+            }],
+        }
+    }
+
+    /// The parts of `solids` (in the base frame) with the hip point
+    /// `hip_height_mm` above the floor.
+    pub fn of_solids<'a>(solids: impl IntoIterator<Item = &'a Solid>, hip_height_mm: f64) -> Self {
+        Footprint {
+            parts: solids
+                .into_iter()
+                .map(|s| part_of(&s.shape, hip_height_mm))
+                .collect(),
+        }
+    }
+
+    /// The outline of part `part` turned by `heading_rad`
     /// (counter-clockwise), relative to the hip point.
-    pub fn corners(&self, heading_rad: f64) -> Vec<Coord<f64>> {
-        let local: Vec<(f64, f64)> = match *self {
-            Footprint::Circle { radius_mm } => {
-                let r = radius_mm / (std::f64::consts::PI / CIRCLE_SIDES as f64).cos();
-                (0..CIRCLE_SIDES)
-                    .map(|k| {
-                        let a = 2.0 * std::f64::consts::PI * k as f64 / CIRCLE_SIDES as f64;
-                        (r * a.cos(), r * a.sin())
-                    })
-                    .collect()
-            }
-            Footprint::Rectangle {
-                front_mm,
-                back_mm,
-                width_mm,
-            } => {
-                let h = width_mm / 2.0;
-                vec![(front_mm, h), (-back_mm, h), (-back_mm, -h), (front_mm, -h)]
-            }
-        };
+    pub fn corners(&self, part: usize, heading_rad: f64) -> Vec<Coord<f64>> {
         let turn = Rotation2::new(heading_rad);
-        local
-            .into_iter()
-            .map(|(x, y)| {
-                let p = turn * Vector2::new(x, y);
-                Coord { x: p.x, y: p.y }
+        self.parts[part]
+            .outline_mm
+            .iter()
+            .map(|p| {
+                let q = turn * p;
+                Coord { x: q.x, y: q.y }
             })
             .collect()
     }
 
-    /// The outline as a polygon with the hip point at `(x, y)`.
-    pub fn polygon_at(&self, x: f64, y: f64, heading_rad: f64) -> Polygon<f64> {
+    /// Part `part` as a polygon with the hip point at `(x, y)`.
+    pub fn polygon_at(&self, part: usize, x: f64, y: f64, heading_rad: f64) -> Polygon<f64> {
         let ring: Vec<Coord<f64>> = self
-            .corners(heading_rad)
+            .corners(part, heading_rad)
             .into_iter()
             .map(|c| Coord {
                 x: c.x + x,
@@ -67,34 +94,132 @@ impl Footprint {
         Polygon::new(LineString::from(ring), Vec::new())
     }
 
-    /// Whether turning the base changes the outline (a circle does not).
+    /// Whether turning the base changes where it fits (parts other than
+    /// circles about the hip point do).
     pub fn turns(&self) -> bool {
-        matches!(self, Footprint::Rectangle { .. })
+        self.parts.iter().any(|p| {
+            let r0 = p.outline_mm.first().map_or(0.0, |c| c.norm());
+            p.outline_mm.iter().any(|c| (c.norm() - r0).abs() > 1e-9)
+                || p.outline_mm.len() != CIRCLE_SIDES
+        })
     }
+
+    /// The highest any part reaches above the floor.
+    pub fn top_mm(&self) -> f64 {
+        self.parts.iter().map(|p| p.z_mm[1]).fold(0.0, f64::max)
+    }
+}
+
+/// A solid's outline from above and its heights.
+fn part_of(shape: &Shape, hip_height_mm: f64) -> FloorPart {
+    let [lo, hi] = shape.bounds();
+    let z_mm = [lo.z + hip_height_mm, hi.z + hip_height_mm];
+    let outline_mm = match shape {
+        Shape::Capsule(c) => {
+            let (a, b) = (c.a.xy().coords, c.b.xy().coords);
+            convex_hull(
+                circle(a, c.radius_mm)
+                    .into_iter()
+                    .chain(circle(b, c.radius_mm)),
+            )
+        }
+        Shape::Cuboid(c) => {
+            let turn = Rotation2::new(c.yaw_rad);
+            let h = c.half_mm;
+            [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)]
+                .map(|(sx, sy)| c.centre.xy().coords + turn * Vector2::new(sx * h.x, sy * h.y))
+                .to_vec()
+        }
+    };
+    FloorPart { outline_mm, z_mm }
+}
+
+/// A circumscribed polygon about the circle of `radius_mm` at `centre`.
+fn circle(centre: Vector2<f64>, radius_mm: f64) -> Vec<Vector2<f64>> {
+    let r = radius_mm / (std::f64::consts::PI / CIRCLE_SIDES as f64).cos();
+    (0..CIRCLE_SIDES)
+        .map(|k| {
+            let a = 2.0 * std::f64::consts::PI * k as f64 / CIRCLE_SIDES as f64;
+            centre + Vector2::new(r * a.cos(), r * a.sin())
+        })
+        .collect()
+}
+
+/// The convex hull of `points`, counter-clockwise (Andrew's monotone chain).
+fn convex_hull(points: impl IntoIterator<Item = Vector2<f64>>) -> Vec<Vector2<f64>> {
+    let mut p: Vec<Vector2<f64>> = points.into_iter().collect();
+    p.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    p.dedup();
+    if p.len() < 3 {
+        return p;
+    }
+    let cross = |o: &Vector2<f64>, a: &Vector2<f64>, b: &Vector2<f64>| {
+        (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x)
+    };
+    let mut hull: Vec<Vector2<f64>> = Vec::with_capacity(2 * p.len());
+    for pass in [&p[..], &p.iter().rev().copied().collect::<Vec<_>>()[..]] {
+        let start = hull.len();
+        for q in pass {
+            while hull.len() >= start + 2
+                && cross(&hull[hull.len() - 2], &hull[hull.len() - 1], q) <= 0.0
+            {
+                hull.pop();
+            }
+            hull.push(*q);
+        }
+        hull.pop();
+    }
+    hull
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::{Capsule, Cuboid};
+    use nalgebra::Point3;
 
     #[test]
     fn a_rectangle_turned_a_quarter_points_its_front_along_y() {
-        let f = Footprint::Rectangle {
-            front_mm: 600.0,
-            back_mm: 400.0,
-            width_mm: 600.0,
-        };
-        let corners = f.corners(std::f64::consts::FRAC_PI_2);
+        let f = Footprint::rectangle(600.0, 400.0, 600.0, 1400.0);
+        let corners = f.corners(0, std::f64::consts::FRAC_PI_2);
         let max_y = corners.iter().map(|c| c.y).fold(f64::MIN, f64::max);
         let min_y = corners.iter().map(|c| c.y).fold(f64::MAX, f64::min);
         assert!((max_y - 600.0).abs() < 1e-9 && (min_y + 400.0).abs() < 1e-9);
+        assert!(f.turns());
     }
 
     #[test]
     fn the_circle_polygon_contains_the_circle() {
-        let f = Footprint::Circle { radius_mm: 400.0 };
-        for c in f.corners(0.3) {
+        let f = Footprint::circle(400.0, 1900.0);
+        for c in f.corners(0, 0.3) {
             assert!((c.x * c.x + c.y * c.y).sqrt() >= 400.0);
         }
+        assert!(!f.turns());
+    }
+
+    #[test]
+    fn solids_give_outlines_and_heights_above_the_floor() {
+        let thigh = Solid::new(
+            "the left thigh",
+            Shape::Capsule(Capsule::new(
+                Point3::new(0.0, 95.0, 0.0),
+                Point3::new(430.0, 95.0, 0.0),
+                99.0,
+            )),
+        );
+        let seat = Solid::new(
+            "the seat",
+            Shape::Cuboid(Cuboid::between(
+                Point3::new(-140.0, -230.0, -160.0),
+                Point3::new(290.0, 230.0, -100.0),
+            )),
+        );
+        let f = Footprint::of_solids([&thigh, &seat], 595.0);
+        assert_eq!(f.parts[0].z_mm, [496.0, 694.0]);
+        let xs: Vec<f64> = f.parts[0].outline_mm.iter().map(|c| c.x).collect();
+        let reach = xs.iter().copied().fold(f64::MIN, f64::max);
+        assert!((529.0..535.0).contains(&reach), "knee front {reach}");
+        assert_eq!(f.parts[1].z_mm, [435.0, 495.0]);
+        assert_eq!(f.parts[1].outline_mm.len(), 4);
     }
 }

@@ -5,5 +5,5 @@
 mod footprint;
 mod region;
 
-pub use footprint::Footprint;
+pub use footprint::{FloorPart, Footprint};
 pub use region::{admissible, Zone};

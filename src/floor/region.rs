@@ -1,14 +1,14 @@
-//! The admissible region: every hip point where a footprint, at a given
-//! heading, lies inside the room and overlaps no obstacle that reaches below
-//! the base's clearance height. It is the room shrunk by the footprint,
-//! minus each obstacle's footprint grown by the reflected base footprint
-//! (their Minkowski sum: for convex outlines, the convex hull of the
-//! pairwise differences of corners), optionally cut to a zone.
+//! The admissible region: every hip point where a base's footprint, at a
+//! given heading, lies inside the room and where none of its parts
+//! overlaps an obstacle at the heights they share. It is the room shrunk
+//! by the footprint, minus, for each obstacle and each part whose heights
+//! overlap it, the obstacle's outline grown by the reflected part (their
+//! Minkowski sum: for convex outlines, the convex hull of the pairwise
+//! differences of corners), optionally cut to a zone.
 
 use geo::{
     BooleanOps, ConvexHull, Coord, LineString, MultiPoint, MultiPolygon, Point, Polygon, Rect,
 };
-
 use nalgebra::Vector2;
 
 use super::Footprint;
@@ -26,23 +26,31 @@ pub fn admissible(
     room: &Room,
     footprint: &Footprint,
     heading_rad: f64,
-    clearance_mm: f64,
     zone: Option<Zone>,
 ) -> MultiPolygon<f64> {
-    let corners = footprint.corners(heading_rad);
-    let Some(inside) = shrunk_room(room, &corners, zone) else {
+    let parts: Vec<Vec<Coord<f64>>> = (0..footprint.parts.len())
+        .map(|k| footprint.corners(k, heading_rad))
+        .collect();
+    let all_corners: Vec<Coord<f64>> = parts.iter().flatten().copied().collect();
+    let Some(inside) = shrunk_room(room, &all_corners, zone) else {
         return MultiPolygon::new(Vec::new());
     };
-    let grown: Vec<Polygon<f64>> = room
-        .boxes
-        .iter()
-        .filter(|b| b.corner_mm.z < clearance_mm)
-        .map(|b| minkowski_with_reflected(&box_outline(b), &corners))
-        .chain(room.meshes.iter().filter_map(|m| {
-            let outline = mesh_outline(m, clearance_mm)?;
-            Some(minkowski_with_reflected(&outline, &corners))
-        }))
-        .collect();
+    let mut grown: Vec<Polygon<f64>> = Vec::new();
+    for (part, corners) in footprint.parts.iter().zip(&parts) {
+        let [p0, p1] = part.z_mm;
+        for b in room
+            .boxes
+            .iter()
+            .filter(|b| b.corner_mm.z < p1 && p0 < b.corner_mm.z + b.size_mm.z)
+        {
+            grown.push(minkowski_with_reflected(&box_outline(b), corners));
+        }
+        for m in &room.meshes {
+            if let Some(outline) = mesh_outline(m, [p0, p1]) {
+                grown.push(minkowski_with_reflected(&outline, corners));
+            }
+        }
+    }
     let blocked = geo::unary_union(&grown);
     MultiPolygon::new(vec![inside]).difference(&blocked)
 }
@@ -77,20 +85,22 @@ fn box_outline(b: &BoxObstacle) -> Vec<Coord<f64>> {
         .collect()
 }
 
-/// A mesh's footprint: the convex hull of its vertices below the
-/// clearance height (a chair's legs and seat, a fridge's base), or none
-/// when the whole mesh is above it.
-fn mesh_outline(m: &MeshObstacle, clearance_mm: f64) -> Option<Vec<Coord<f64>>> {
-    let low: Vec<Point<f64>> = m
-        .vertices_mm
-        .iter()
-        .filter(|v| v.z < clearance_mm)
-        .map(|v| Point::new(v.x, v.y))
-        .collect();
-    if low.is_empty() {
+/// A mesh's outline at the heights `z_mm`: the convex hull of the
+/// triangles that reach into them, or none when none does.
+fn mesh_outline(m: &MeshObstacle, [z0, z1]: [f64; 2]) -> Option<Vec<Coord<f64>>> {
+    let mut points: Vec<Point<f64>> = Vec::new();
+    for t in &m.triangles {
+        let v = t.map(|i| m.vertices_mm[i as usize]);
+        let lo = v.iter().map(|p| p.z).fold(f64::INFINITY, f64::min);
+        let hi = v.iter().map(|p| p.z).fold(f64::NEG_INFINITY, f64::max);
+        if lo < z1 && z0 < hi.max(lo + 1e-9) {
+            points.extend(v.iter().map(|p| Point::new(p.x, p.y)));
+        }
+    }
+    if points.is_empty() {
         return None;
     }
-    let hull = MultiPoint::new(low).convex_hull();
+    let hull = MultiPoint::new(points).convex_hull();
     Some(hull.exterior().0.clone())
 }
 
@@ -135,9 +145,8 @@ mod tests {
     fn a_circle_keeps_its_radius_from_walls_and_counter() {
         let region = admissible(
             &room_with_counter(),
-            &Footprint::Circle { radius_mm: 300.0 },
+            &Footprint::circle(300.0, 2000.0),
             0.0,
-            2000.0,
             None,
         );
         assert!(region.contains(&Point::new(1000.0, 1000.0)));
@@ -161,35 +170,18 @@ mod tests {
     fn obstacles_above_the_clearance_do_not_block() {
         let mut room = room_with_counter();
         room.boxes[0].corner_mm.z = 1450.0;
-        let region = admissible(
-            &room,
-            &Footprint::Circle { radius_mm: 300.0 },
-            0.0,
-            1400.0,
-            None,
-        );
+        let region = admissible(&room, &Footprint::circle(300.0, 1400.0), 0.0, None);
         assert!(region.contains(&Point::new(400.0, 1000.0)));
     }
 
     #[test]
     fn a_wheelchair_facing_the_counter_needs_its_front_clear() {
-        let chair = Footprint::Rectangle {
-            front_mm: 600.0,
-            back_mm: 500.0,
-            width_mm: 660.0,
-        };
-        let facing = admissible(
-            &room_with_counter(),
-            &chair,
-            std::f64::consts::PI,
-            2000.0,
-            None,
-        );
+        let chair = Footprint::rectangle(600.0, 500.0, 660.0, 2000.0);
+        let facing = admissible(&room_with_counter(), &chair, std::f64::consts::PI, None);
         let sideways = admissible(
             &room_with_counter(),
             &chair,
             std::f64::consts::FRAC_PI_2,
-            2000.0,
             None,
         );
         // Facing the counter the hip stays 600 mm from it; side on, 330 mm.
@@ -206,9 +198,8 @@ mod tests {
         };
         let region = admissible(
             &room_with_counter(),
-            &Footprint::Circle { radius_mm: 300.0 },
+            &Footprint::circle(300.0, 2000.0),
             0.0,
-            2000.0,
             Some(zone),
         );
         assert!(region.contains(&Point::new(1000.0, 1000.0)));
@@ -216,12 +207,39 @@ mod tests {
     }
 
     #[test]
+    fn knees_go_under_a_counter_that_clears_them_and_no_further() {
+        // A sink counter: its front 600 mm from the wall, 700 to 900 mm
+        // high (knee space under it); a chair whose knees (500 to 690 mm)
+        // reach 500 mm ahead of the hip and whose body (700 to 1400 mm)
+        // reaches 130 mm ahead of it.
+        let mut room = room_with_counter();
+        room.boxes[0].corner_mm.z = 700.0;
+        room.boxes[0].size_mm.z = 200.0;
+        let mut chair = Footprint::rectangle(500.0, 100.0, 400.0, 690.0);
+        chair.parts.push(
+            Footprint::rectangle(130.0, 130.0, 400.0, 1400.0)
+                .parts
+                .remove(0),
+        );
+        chair.parts[1].z_mm = [700.0, 1400.0];
+        let facing = admissible(&room, &chair, std::f64::consts::PI, None);
+        // Facing the wall (x falls ahead): the knees go under the counter;
+        // the body stops at its front.
+        assert!(facing.contains(&Point::new(600.0 + 131.0, 1000.0)));
+        assert!(!facing.contains(&Point::new(600.0 + 129.0, 1000.0)));
+        // The same chair with its knees at the counter's height cannot.
+        chair.parts[0].z_mm = [0.0, 800.0];
+        let blocked = admissible(&room, &chair, std::f64::consts::PI, None);
+        assert!(!blocked.contains(&Point::new(600.0 + 131.0, 1000.0)));
+        assert!(blocked.contains(&Point::new(600.0 + 501.0, 1000.0)));
+    }
+
+    #[test]
     fn a_footprint_larger_than_the_room_fits_nowhere() {
         let region = admissible(
             &room_with_counter(),
-            &Footprint::Circle { radius_mm: 5000.0 },
+            &Footprint::circle(5000.0, 2000.0),
             0.0,
-            2000.0,
             None,
         );
         assert!(region.0.is_empty());

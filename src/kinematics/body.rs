@@ -4,9 +4,10 @@
 //! which is what the solvers work on; several effectors share the joints
 //! their paths have in common.
 
-use nalgebra::Vector3;
+use nalgebra::{Point3, Vector3};
 
-use super::chain::{Chain, Joint};
+use super::chain::{Chain, Joint, Link, Rider};
+use super::legs::{Legs, Posture};
 
 /// One end of the body: a hand's grip point, or the eyes' look point.
 #[derive(Clone, Debug, PartialEq)]
@@ -16,6 +17,19 @@ pub struct Effector {
     pub joint: Option<usize>,
     /// The effector point in that joint's frame.
     pub offset_mm: Vector3<f64>,
+    /// The link from that joint's frame origin to the effector (the hand).
+    pub link: Link,
+}
+
+/// A sphere on a joint of the body: the head.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sphere {
+    pub name: String,
+    /// The joint it sits on (`None`: on the base itself).
+    pub joint: Option<usize>,
+    /// Its centre in that joint's frame.
+    pub centre_mm: Vector3<f64>,
+    pub radius_mm: f64,
 }
 
 /// Joints in declaration order; a parent always comes before its children.
@@ -26,6 +40,12 @@ pub struct Body {
     pub parents: Vec<Option<usize>>,
     /// At least one; the first is the default for tasks.
     pub effectors: Vec<Effector>,
+    pub spheres: Vec<Sphere>,
+    /// The legs, which no joint moves: placed by the base (seated or
+    /// standing). `None`: the mannequin declares none.
+    pub legs: Option<Legs>,
+    /// Whether the mannequin sits or stands (`None`: as its base has it).
+    pub posture: Option<Posture>,
 }
 
 impl Body {
@@ -38,8 +58,12 @@ impl Body {
                 name: chain.effector_name,
                 joint: n.checked_sub(1),
                 offset_mm: chain.effector_mm,
+                link: chain.effector_link,
             }],
             joints: chain.joints,
+            spheres: Vec::new(),
+            legs: None,
+            posture: None,
         }
     }
 
@@ -71,17 +95,39 @@ impl Body {
         joints
     }
 
-    /// The chain from the base to effector `index`.
+    /// The chain from the base to effector `index`, carrying the body's
+    /// spheres.
     pub fn chain(&self, index: usize) -> Chain {
         let effector = &self.effectors[index];
+        let path = self.path(effector.joint);
         Chain {
-            joints: self
-                .path(effector.joint)
-                .into_iter()
-                .map(|i| self.joints[i].clone())
-                .collect(),
+            joints: path.iter().map(|&i| self.joints[i].clone()).collect(),
             effector_name: effector.name.clone(),
             effector_mm: effector.offset_mm,
+            effector_link: effector.link.clone(),
+            riders: self.spheres.iter().map(|s| self.rider(s, &path)).collect(),
+        }
+    }
+
+    /// Sphere `s` as a chain along `path` carries it: its centre in the
+    /// frame of the last joint of `path` among its joint's ancestors, the
+    /// joints between at their neutral values.
+    fn rider(&self, s: &Sphere, path: &[usize]) -> Rider {
+        let mut centre = Point3::from(s.centre_mm);
+        let mut at = s.joint;
+        while let Some(j) = at {
+            if path.contains(&j) {
+                break;
+            }
+            let joint = &self.joints[j];
+            centre = joint.transform(joint.neutral) * centre;
+            at = self.parents[j];
+        }
+        Rider {
+            name: s.name.clone(),
+            anchor: at.and_then(|j| path.iter().position(|&p| p == j)),
+            centre_mm: centre.coords,
+            radius_mm: s.radius_mm,
         }
     }
 
@@ -98,23 +144,13 @@ impl Body {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::kinematics::{Dh, JointKind};
+    use crate::kinematics::chain::revolute;
 
     fn joint(name: &str) -> Joint {
         Joint {
-            name: name.into(),
-            kind: JointKind::Revolute,
-            dh: Dh {
-                theta_rad: 0.0,
-                d_mm: 0.0,
-                alpha_rad: 0.0,
-                a_mm: 100.0,
-            },
-            fixed: None,
             min: -1.0,
             max: 1.0,
-            neutral: 0.0,
-            weight: 1.0,
+            ..revolute(name, 0.0, 0.0, 0.0, 100.0)
         }
     }
 
@@ -128,13 +164,18 @@ mod tests {
                     name: "grip".into(),
                     joint: Some(2),
                     offset_mm: Vector3::zeros(),
+                    link: Link::named("hand"),
                 },
                 Effector {
                     name: "eyes".into(),
                     joint: Some(3),
                     offset_mm: Vector3::zeros(),
+                    link: Link::named("look"),
                 },
             ],
+            spheres: Vec::new(),
+            legs: None,
+            posture: None,
         };
         let names = |c: Chain| c.joints.into_iter().map(|j| j.name).collect::<Vec<_>>();
         assert_eq!(names(body.chain(0)), ["spine", "arm", "hand"]);

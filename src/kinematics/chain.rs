@@ -14,6 +14,28 @@ pub enum JointKind {
     Prismatic,
 }
 
+/// The solid of a link: a capsule about the segment the link spans, of
+/// this radius, called this in reports ("the right forearm").
+#[derive(Clone, Debug, PartialEq)]
+pub struct Link {
+    pub name: String,
+    pub radius_mm: f64,
+}
+
+impl Link {
+    /// The radius of a link whose mannequin gives none (DH and URDF
+    /// mannequins without `radius`): assumed, about a forearm's.
+    pub const DEFAULT_RADIUS_MM: f64 = 30.0;
+
+    /// A link of the default radius.
+    pub fn named(name: &str) -> Self {
+        Link {
+            name: name.to_string(),
+            radius_mm: Self::DEFAULT_RADIUS_MM,
+        }
+    }
+}
+
 /// One joint. `min`, `max` and `neutral` are in radians for revolute joints
 /// and millimetres for prismatic ones, relative to the DH table's values.
 #[derive(Clone, Debug, PartialEq)]
@@ -29,6 +51,8 @@ pub struct Joint {
     pub max: f64,
     pub neutral: f64,
     pub weight: f64,
+    /// The link from the previous joint's frame origin to this one's.
+    pub link: Link,
 }
 
 impl Joint {
@@ -102,9 +126,37 @@ pub struct Chain {
     pub effector_name: String,
     /// The effector point in the frame of the last joint.
     pub effector_mm: Vector3<f64>,
+    /// The link from the last joint's frame origin to the effector.
+    pub effector_link: Link,
+    /// Spheres of the body the chain carries (a head on the spine).
+    pub riders: Vec<Rider>,
+}
+
+/// A sphere of the body carried by a chain: its centre in the frame of the
+/// chain's joint `anchor` (`None`: the base), the joints between that one
+/// and the sphere's own, off the chain, at their neutral values.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Rider {
+    pub name: String,
+    pub anchor: Option<usize>,
+    pub centre_mm: Vector3<f64>,
+    pub radius_mm: f64,
 }
 
 impl Chain {
+    /// A chain of `joints` ending in effector `name` at `effector_mm` in the
+    /// last joint's frame, its last link of the default radius, carrying
+    /// nothing.
+    pub fn new(joints: Vec<Joint>, name: &str, effector_mm: Vector3<f64>) -> Self {
+        Chain {
+            joints,
+            effector_name: name.to_string(),
+            effector_mm,
+            effector_link: Link::named(name),
+            riders: Vec::new(),
+        }
+    }
+
     pub fn dof(&self) -> usize {
         self.joints.len()
     }
@@ -125,6 +177,20 @@ impl Chain {
     pub fn reach_bound_mm(&self) -> f64 {
         let links_mm: f64 = self.joints.iter().map(Joint::longest_offset_mm).sum();
         links_mm + self.effector_mm.norm()
+    }
+
+    /// The largest radius of a link or a sphere the chain carries (a sphere
+    /// may sit off the links: its centre's distance from its anchor
+    /// counts too).
+    pub fn thickest_mm(&self) -> f64 {
+        let links = self
+            .joints
+            .iter()
+            .map(|j| &j.link)
+            .chain([&self.effector_link])
+            .map(|l| l.radius_mm);
+        let riders = self.riders.iter().map(|r| r.centre_mm.norm() + r.radius_mm);
+        links.chain(riders).fold(0.0, f64::max)
     }
 
     /// The effector point in the base frame (eq. 5).
@@ -181,41 +247,45 @@ fn push_distinct(points: &mut Vec<Point3<f64>>, p: Point3<f64>) {
     }
 }
 
+/// For tests: a revolute joint of these DH parameters, limits +/-3 rad,
+/// neutral 0, weight 1, its link of the default radius.
+#[cfg(test)]
+pub(crate) fn revolute(name: &str, theta_rad: f64, d_mm: f64, alpha_rad: f64, a_mm: f64) -> Joint {
+    Joint {
+        name: name.into(),
+        kind: JointKind::Revolute,
+        dh: Dh {
+            theta_rad,
+            d_mm,
+            alpha_rad,
+            a_mm,
+        },
+        fixed: None,
+        min: -3.0,
+        max: 3.0,
+        neutral: 0.0,
+        weight: 1.0,
+        link: Link::named(name),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use std::f64::consts::FRAC_PI_2;
 
-    fn revolute(name: &str, theta_rad: f64, d_mm: f64, alpha_rad: f64, a_mm: f64) -> Joint {
-        Joint {
-            name: name.into(),
-            kind: JointKind::Revolute,
-            dh: Dh {
-                theta_rad,
-                d_mm,
-                alpha_rad,
-                a_mm,
-            },
-            fixed: None,
-            min: -3.0,
-            max: 3.0,
-            neutral: 0.0,
-            weight: 1.0,
-        }
-    }
-
     /// A planar two-link arm (both axes along z, links 300 and 200 mm):
     /// the effector is at (300 cos q1 + 200 cos(q1 + q2), 300 sin q1 +
     /// 200 sin(q1 + q2), 0), worked out by hand.
     fn planar() -> Chain {
-        Chain {
-            joints: vec![
+        Chain::new(
+            vec![
                 revolute("j1", 0.0, 0.0, 0.0, 300.0),
                 revolute("j2", 0.0, 0.0, 0.0, 200.0),
             ],
-            effector_name: "tip".into(),
-            effector_mm: Vector3::zeros(),
-        }
+            "tip",
+            Vector3::zeros(),
+        )
     }
 
     #[test]
@@ -242,11 +312,7 @@ mod tests {
     fn prismatic_joint_slides_along_z() {
         let mut j = revolute("slide", 0.0, 100.0, 0.0, 0.0);
         j.kind = JointKind::Prismatic;
-        let chain = Chain {
-            joints: vec![j],
-            effector_name: "tip".into(),
-            effector_mm: Vector3::zeros(),
-        };
+        let chain = Chain::new(vec![j], "tip", Vector3::zeros());
         assert!((chain.effector(&[25.0]) - Point3::new(0.0, 0.0, 125.0)).norm() < 1e-12);
     }
 

@@ -311,17 +311,18 @@ mod tests {
             max: 2.0,
             neutral: 0.0,
             weight: 1.0,
+            link: crate::kinematics::Link::named(name),
         };
-        Chain {
-            joints: vec![
+        Chain::new(
+            vec![
                 joint("a", JointKind::Revolute, 0.3, 10.0, 1.2, 40.0),
                 joint("b", JointKind::Prismatic, -0.7, 25.0, -0.4, 5.0),
                 joint("c", JointKind::Revolute, 1.1, 0.0, 0.9, 30.0),
                 joint("d", JointKind::Revolute, 0.0, 12.0, 0.0, 0.0),
             ],
-            effector_name: "tip".into(),
-            effector_mm: Vector3::new(20.0, 3.0, -4.0),
-        }
+            "tip",
+            Vector3::new(20.0, 3.0, -4.0),
+        )
     }
 
     fn moved(q: &[f64], i: usize, qi: f64) -> Vec<f64> {

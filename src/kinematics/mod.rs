@@ -1,15 +1,20 @@
 //! Kinematic chains: Denavit-Hartenberg parameters, joints with limits, and
 //! forward kinematics, full (`chain.rs`) and incremental (`incremental.rs`);
-//! bodies (`body.rs`): joints as a tree with several effectors.
+//! bodies (`body.rs`): joints as a tree with several effectors; the legs
+//! no joint moves (`legs.rs`).
 
 mod body;
 mod chain;
 mod dh;
 mod incremental;
+mod legs;
 mod urdf;
+mod volumes;
 
-pub use body::{Body, Effector};
-pub use chain::{Chain, Joint, JointKind};
+pub use body::{Body, Effector, Sphere};
+pub use chain::{Chain, Joint, JointKind, Link, Rider};
 pub use dh::Dh;
 pub use incremental::{IncrementalFk, Step};
+pub use legs::{Legs, Posture};
 pub use urdf::{chain_from_urdf, UrdfError};
+pub use volumes::{Contact, Owner, Posed, Volumes};

@@ -9,7 +9,7 @@
 
 use nalgebra::{IsometryMatrix3, Rotation3, Translation3, Unit, Vector3};
 
-use super::chain::{Chain, Joint, JointKind};
+use super::chain::{Chain, Joint, JointKind, Link};
 use super::dh::Dh;
 
 /// Why a URDF chain cannot be built.
@@ -110,11 +110,7 @@ pub fn chain_from_urdf(robot: &urdf_rs::Robot, root: &str, tip: &str) -> Result<
         });
     };
     joints[k].fixed = Some(pre(first_index, k, &first_pre) * pending);
-    Ok(Chain {
-        joints,
-        effector_name: tip.to_string(),
-        effector_mm: Vector3::zeros(),
-    })
+    Ok(Chain::new(joints, tip, Vector3::zeros()))
 }
 
 /// `first_pre` for the first moving joint, nothing for the others.
@@ -202,6 +198,7 @@ fn moving(j: &urdf_rs::Joint, kind: JointKind) -> Joint {
         max,
         neutral: 0.0_f64.clamp(min, max),
         weight: 1.0,
+        link: Link::named(&j.name),
     }
 }
 
@@ -216,5 +213,6 @@ fn locked(name: &str, pose: IsometryMatrix3<f64>) -> Joint {
         max: 0.0,
         neutral: 0.0,
         weight: 0.0,
+        link: Link::named(name),
     }
 }

@@ -2,12 +2,15 @@
 //! for a room and a chain, then asked to reach: it chooses candidate
 //! placements and asks a solver for the posture from each.
 
+use std::fmt;
+
 use nalgebra::Point3;
 
 use super::{IkProblem, Options, Plugin, SettingsError, Solver};
 use crate::collision::{Obstacles, PlacedObstacles};
-use crate::kinematics::Chain;
-use crate::scene::{BasePose, Placement, Room};
+use crate::floor::Footprint;
+use crate::kinematics::{Chain, Posture};
+use crate::scene::{BasePose, OwnBody, Physique, Placement, Room};
 
 /// How hard a base looks for a placement.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -25,20 +28,27 @@ pub struct ReachQuery<'a> {
     pub tolerance_mm: f64,
     pub seed: u64,
     pub search: Search,
-    /// The room's obstacles, when links must stay out of them.
+    /// The room's obstacles, when the posture must stay out of them (and
+    /// out of the person's own body, `own`).
     pub obstacles: Option<&'a Obstacles>,
+    pub own: &'a OwnBody,
     /// Where no placement reaches, a second solver to try again with.
     pub retry: Option<Retry<'a>>,
 }
 
 /// A second try where the task's solver reaches from no placement (used
 /// when obstacles are checked: a solver blind to them while it searches
-/// can miss postures that go round them).
+/// can miss postures that go round them). From each blocked placement,
+/// `solver` descends once from each of as many starts as it has, drawn
+/// around the blocked posture (`solvers::Kicks`).
 #[derive(Clone, Copy)]
 pub struct Retry<'a> {
     pub solver: &'a dyn Solver,
-    /// How many of the most promising placements are tried again.
+    /// How many of the most promising blocked placements are tried again.
     pub placements: usize,
+    /// How far a start may stray from the blocked posture, as a fraction
+    /// of each joint's range.
+    pub spread: f64,
 }
 
 impl ReachQuery<'_> {
@@ -51,16 +61,21 @@ impl ReachQuery<'_> {
             seed: self.seed,
             obstacles: self.obstacles.map(|obstacles| PlacedObstacles {
                 obstacles,
+                own: self.own,
                 base_pose: pose,
             }),
         }
     }
 
-    /// Solve from `pose`; the collision is checked here whatever the
-    /// solver did, so that no solver can report a posture through a box.
+    /// Solve from `pose` (for a map, until a start reaches); the collision
+    /// is checked here whatever the solver did, so that no solver can
+    /// report a posture through a box.
     pub fn solve_at(&self, chain: &Chain, pose: BasePose, solver: &dyn Solver) -> Placement {
         let problem = self.problem(chain, pose);
-        let mut solution = solver.solve(&problem);
+        let mut solution = match self.search {
+            Search::MostComfortable => solver.solve(&problem),
+            Search::FirstReaching => solver.solve_until_reached(&problem),
+        };
         solution.collision = problem.collision(&solution.q);
         Placement {
             pose,
@@ -69,12 +84,22 @@ impl ReachQuery<'_> {
         }
     }
 
-    /// This query with another seed, so that a retry by the same solver
-    /// starts from other postures.
-    pub fn retried(&self) -> Self {
-        ReachQuery {
-            seed: self.seed ^ 0x7e72_1ed5_0000_0001,
-            ..*self
+    /// One solve from `pose` and posture `start` (a neighbouring point's on
+    /// a map), its collision checked as `solve_at` checks it.
+    pub fn solve_from_at(
+        &self,
+        chain: &Chain,
+        pose: BasePose,
+        solver: &dyn Solver,
+        start: Vec<f64>,
+    ) -> Placement {
+        let problem = self.problem(chain, pose);
+        let mut solution = solver.solve_from(&problem, start);
+        solution.collision = problem.collision(&solution.q);
+        Placement {
+            pose,
+            solution,
+            retried: false,
         }
     }
 }
@@ -82,6 +107,15 @@ impl ReachQuery<'_> {
 /// A base configured from its option block: it decides where the person
 /// stands (or sits).
 pub trait Base: Send + Sync {
+    /// The person's legs and the base's own parts (the chair's seat and
+    /// wheels, the rollator's frame), in the base frame, which the person's
+    /// links must stay out of.
+    fn own_body(&self) -> &OwnBody;
+    /// The height of the hip point above the floor, where it is the base's
+    /// to say (`None`: a fixed base, which puts it where it is told).
+    fn hip_height_mm(&self) -> Option<f64> {
+        None
+    }
     /// Whether the base can be anywhere in the room at all; the checker
     /// refuses a task whose base fits nowhere.
     fn fits(&self, room: &Room) -> bool;
@@ -92,6 +126,11 @@ pub trait Base: Send + Sync {
     /// solver starts counts).
     fn placements(&self) -> u64 {
         1
+    }
+    /// What a base that moves keeps off the floor's obstacles (none for a
+    /// fixed base).
+    fn footprint(&self) -> Option<&Footprint> {
+        None
     }
 }
 
@@ -106,6 +145,48 @@ pub trait PreparedBase: Send + Sync {
 }
 
 pub trait BasePlugin: Plugin {
-    /// The base that validated `options` configure.
-    fn build(&self, options: &Options) -> Result<Box<dyn Base>, SettingsError>;
+    /// The base that validated `options` configure for a person of
+    /// `physique` (their legs, posture and upright trunk).
+    fn build(&self, options: &Options, physique: &Physique) -> Result<Box<dyn Base>, BaseError>;
+}
+
+/// Why a base cannot be built for a person.
+#[derive(Clone, Debug, PartialEq)]
+pub enum BaseError {
+    /// Its options cannot be used.
+    Settings(SettingsError),
+    /// The person does not suit it: a mannequin that stands in a
+    /// wheelchair, or a standing base without a hip height for a mannequin
+    /// without legs.
+    Unfit(String),
+}
+
+impl fmt::Display for BaseError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            BaseError::Settings(e) => e.fmt(f),
+            BaseError::Unfit(reason) => f.write_str(reason),
+        }
+    }
+}
+
+impl std::error::Error for BaseError {}
+
+impl From<SettingsError> for BaseError {
+    fn from(e: SettingsError) -> Self {
+        BaseError::Settings(e)
+    }
+}
+
+impl BaseError {
+    /// The error for a mannequin whose declared posture is not the base's.
+    pub fn posture(base: &str, declared: Posture, needed: Posture) -> Self {
+        BaseError::Unfit(format!(
+            "the mannequin is {}, and a {base} needs one {}: give the person a mannequin declared `{}`, or a base for a {} person",
+            declared.word(),
+            needed.word(),
+            needed.word(),
+            declared.word()
+        ))
+    }
 }

@@ -5,8 +5,8 @@ use nalgebra::Point3;
 
 use super::{Options, Plugin, SettingsError};
 use crate::collision::PlacedObstacles;
-use crate::kinematics::Chain;
-use crate::scene::IkSolution;
+use crate::kinematics::{Chain, Volumes};
+use crate::scene::{Collision, IkSolution};
 
 /// An inverse kinematics problem: bring the chain's effector to a point
 /// given in the chain's base frame.
@@ -17,29 +17,52 @@ pub struct IkProblem<'a> {
     pub tolerance_mm: f64,
     /// Seeds every random choice the solver makes.
     pub seed: u64,
-    /// The room's obstacles, when links must stay out of them.
+    /// The room's obstacles and the person's own body, when the posture
+    /// must stay out of them.
     pub obstacles: Option<PlacedObstacles<'a>>,
 }
 
 impl IkProblem<'_> {
-    /// The first obstacle a link of posture `q` passes through (none when
-    /// obstacles are not checked).
-    pub fn collision(&self, q: &[f64]) -> Option<usize> {
+    /// The first thing a part of posture `q` runs into (none when
+    /// obstacles are not checked). The hand may press into what it reaches
+    /// by up to the tolerance.
+    pub fn collision(&self, q: &[f64]) -> Option<Collision> {
         let obstacles = self.obstacles.as_ref()?;
-        // The effector may rest on the target's surface: the last link
-        // stops a tolerance (at least a millimetre) short of it.
-        let gap_mm = self.tolerance_mm.max(1.0);
-        obstacles.polyline_hit(&self.chain.link_points(q), gap_mm)
+        obstacles.posture_hit(self.chain, q, self.tolerance_mm)
+    }
+
+    /// The first thing the chain's solids `v` (of some posture) run into,
+    /// as [`IkProblem::collision`] finds it.
+    pub fn collision_of(&self, v: &Volumes) -> Option<Collision> {
+        let obstacles = self.obstacles.as_ref()?;
+        obstacles.volumes_hit(self.chain, v, self.tolerance_mm)
     }
 }
 
 /// A solver built from its settings.
 pub trait Solver: Send + Sync {
     fn solve(&self, problem: &IkProblem<'_>) -> IkSolution;
+    /// A solve that may stop at the first start whose posture reaches the
+    /// target clear of obstacles, where only whether it can matters (a
+    /// map's point), not which of such postures is the most comfortable.
+    fn solve_until_reached(&self, problem: &IkProblem<'_>) -> IkSolution {
+        self.solve(problem)
+    }
+    /// One solve from posture `start` (a neighbour's, on a map), for
+    /// solvers that can take one; the others solve as usual.
+    fn solve_from(&self, problem: &IkProblem<'_>, start: Vec<f64>) -> IkSolution {
+        let _ = start;
+        self.solve(problem)
+    }
     /// How many starts one solve runs at most (what the limit on solver
     /// starts counts).
     fn starts(&self) -> u64 {
         1
+    }
+    /// Whether a descent from a clear posture stays clear (so that it pays
+    /// to start it from one).
+    fn steers_clear(&self) -> bool {
+        false
     }
 }
 

@@ -20,7 +20,7 @@ mod reach_and_gaze;
 pub use answer::{Answer, Figure};
 pub use gaze::{GazeReport, Sight};
 pub use map::{MapCell, MapReport};
-pub use parts::{deg, fixed, mm, Asked, BaseReport, Posture};
+pub use parts::{deg, fixed, mm, Asked, BaseReport, Names, Posture};
 pub use reach::ReachReport;
 pub use reach_and_gaze::ReachAndGazeReport;
 

@@ -9,7 +9,7 @@ use serde::Serialize;
 
 use super::Figure;
 use crate::kinematics::{Chain, JointKind};
-use crate::scene::{BasePose, Person};
+use crate::scene::{BasePose, Blocker, Collision, OwnBody, Person, Room, Wall};
 
 /// Where the base stood.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -103,7 +103,7 @@ impl Posture {
 }
 
 /// What a reach-like task asked: of what, by whom, with which chain and
-/// solver.
+/// solver, in which room.
 pub struct Asked<'a> {
     /// The target.
     pub subject: &'a str,
@@ -112,6 +112,61 @@ pub struct Asked<'a> {
     pub chain: &'a Chain,
     pub solver: &'a str,
     pub tolerance_mm: f64,
+    pub room: &'a Room,
+    /// The person's legs and base.
+    pub own: &'a OwnBody,
+}
+
+impl Asked<'_> {
+    /// A collision in words: the part of the person ("the right forearm"),
+    /// and what it runs into (`shelf_3`, "the left thigh", "the floor").
+    pub fn describe(&self, c: &Collision) -> (String, String) {
+        let names = Names {
+            room: self.room,
+            own: self.own,
+            chain: self.chain,
+        };
+        (names.part(c), names.blocker(c.blocker))
+    }
+}
+
+/// What the parts of a person and the things they meet are called.
+pub struct Names<'a> {
+    pub room: &'a Room,
+    pub own: &'a OwnBody,
+    pub chain: &'a Chain,
+}
+
+impl Names<'_> {
+    pub fn part(&self, c: &Collision) -> String {
+        self.chain.volume_name(c.part).to_string()
+    }
+
+    pub fn blocker(&self, b: Blocker) -> String {
+        match b {
+            Blocker::Obstacle(i) => self.room.obstacle_name(i).to_string(),
+            Blocker::Wall(wall) => wall_name(wall, self.room),
+            Blocker::Own(i) => self
+                .own
+                .solids
+                .get(i)
+                .map_or_else(String::new, |s| s.name.clone()),
+            Blocker::Body(owner) => self.chain.volume_name(owner).to_string(),
+        }
+    }
+}
+
+/// How a report names one of the room's sides.
+fn wall_name(wall: Wall, room: &Room) -> String {
+    let s = room.size_mm;
+    match wall {
+        Wall::Floor => "the floor".into(),
+        Wall::Ceiling => "the ceiling".into(),
+        Wall::XMin => "the wall at x = 0".into(),
+        Wall::XMax => format!("the wall at x = {} mm", mm(s.x)),
+        Wall::YMin => "the wall at y = 0".into(),
+        Wall::YMax => format!("the wall at y = {} mm", mm(s.y)),
+    }
 }
 
 /// `v` rounded to `decimals` places, without negative zero.

@@ -8,7 +8,7 @@ use serde::Serialize;
 
 use super::parts::{point, COMFORT_TOLERANCE, DISTANCE_TOLERANCE_MM};
 use super::{fixed, mm, Answer, Asked, BaseReport, Figure, Posture, ReportKind};
-use crate::scene::{Placement, Room};
+use crate::scene::Placement;
 
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ReachReport {
@@ -20,9 +20,12 @@ pub struct ReachReport {
     pub ok: bool,
     /// Distance left between effector and target.
     pub distance_mm: f64,
-    /// The obstacle a link of the posture passes through (null: none, or
-    /// collisions not checked).
+    /// What a part of the posture passes through: an obstacle of the room,
+    /// a wall, or the person's own body or base ("the left thigh"); null:
+    /// nothing, or collisions not checked.
     pub collision: Option<String>,
+    /// Which part of the person passes through it ("the right forearm").
+    pub collision_part: Option<String>,
     pub tolerance_mm: f64,
     /// Sweeps (solver iterations) of the kept solution.
     pub iterations: u64,
@@ -37,19 +40,18 @@ pub struct ReachReport {
 }
 
 impl ReachReport {
-    pub fn new(asked: &Asked<'_>, placement: &Placement, target: Point3<f64>, room: &Room) -> Self {
+    pub fn new(asked: &Asked<'_>, placement: &Placement, target: Point3<f64>) -> Self {
         let chain = asked.chain;
         let q = &placement.solution.q;
         let effector_room = placement.pose.to_room(&chain.effector(q));
+        let collision = placement.solution.collision.map(|c| asked.describe(&c));
         ReachReport {
             name: asked.subject.to_string(),
             person: asked.person.name.clone(),
             ok: placement.solution.reaches(asked.tolerance_mm),
             distance_mm: mm(placement.solution.distance_mm),
-            collision: placement
-                .solution
-                .collision
-                .map(|i| room.obstacle_name(i).to_string()),
+            collision_part: collision.as_ref().map(|(part, _)| part.clone()),
+            collision: collision.map(|(_, blocker)| blocker),
             tolerance_mm: mm(asked.tolerance_mm),
             iterations: placement.solution.iterations,
             comfort: fixed(chain.discomfort(q), 4),
@@ -104,8 +106,18 @@ impl ReportKind for ReachReport {
         ];
         self.base.write_line(out, what);
         self.posture.write_line(out, "deg");
-        if let Some(obstacle) = &self.collision {
-            let _ = writeln!(out, "  a link passes through `{obstacle}`");
+        if let (Some(part), Some(what)) = (&self.collision_part, &self.collision) {
+            let _ = writeln!(out, "  {part} passes through {}", quoted(what));
         }
+    }
+}
+
+/// A room's obstacle in backquotes; the person's own parts and the room's
+/// sides ("the left thigh", "the floor") as they are.
+pub(super) fn quoted(what: &str) -> String {
+    if what.starts_with("the ") {
+        what.to_string()
+    } else {
+        format!("`{what}`")
     }
 }

@@ -4,11 +4,15 @@
 //! internal units (mm, rad). The scenario (`crate::scenario`) adds the
 //! configured plugins and the tasks.
 
+mod person_parts;
 mod placement;
 mod surface;
 mod vision;
 
-pub use placement::{BasePose, HasSolution, IkSolution, Placement, Preferred};
+pub use person_parts::{column_solid, OwnBody, Physique};
+pub use placement::{
+    BasePose, Blocker, Collision, HasSolution, IkSolution, Placement, Preferred, Wall,
+};
 pub use surface::{Grid, GridCell, Surface, FACES};
 pub use vision::Vision;
 

@@ -4,7 +4,7 @@
 
 use nalgebra::{Point3, Rotation2, Vector3};
 
-use crate::kinematics::Chain;
+use crate::kinematics::{Chain, Owner};
 
 /// Where the base stands: its origin (the hip point) in the room, and the
 /// direction it faces, counter-clockwise from the room's x axis.
@@ -59,8 +59,42 @@ pub struct IkSolution {
     pub distance_mm: f64,
     /// Sweeps over all joints (or solver iterations), summed over starts.
     pub iterations: u64,
-    /// The first obstacle (by index in the room) a link passes through.
-    pub collision: Option<usize>,
+    /// The first thing a part of the posture runs into, if any.
+    pub collision: Option<Collision>,
+}
+
+/// What a posture runs into: which part of the person, and what.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Collision {
+    /// A volume of the chain (a link, or the head it carries).
+    pub part: Owner,
+    pub blocker: Blocker,
+}
+
+/// What a part of a person runs into.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Blocker {
+    /// An obstacle of the room, by index: its boxes, then its meshes.
+    Obstacle(usize),
+    /// A wall, the floor or the ceiling.
+    Wall(Wall),
+    /// A part of the person or their base that no joint moves, by index
+    /// in their [`crate::scene::OwnBody`] (a thigh, the chair's backrest).
+    Own(usize),
+    /// Another part of the person's moving body (a volume of the chain).
+    Body(Owner),
+}
+
+/// The room's six sides.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Wall {
+    Floor,
+    Ceiling,
+    /// x = 0, x = the room's length, y = 0, y = its width.
+    XMin,
+    XMax,
+    YMin,
+    YMax,
 }
 
 impl IkSolution {

@@ -22,6 +22,10 @@ pub struct Surface {
     pub u_mm: Vector3<f64>,
     /// The second edge: along it run the rows.
     pub v_mm: Vector3<f64>,
+    /// Unit, the side a hand touches it from: out of a box's face, up from
+    /// a level `surface`, towards the middle of the room from an upright
+    /// one.
+    pub normal: Vector3<f64>,
 }
 
 impl Surface {
@@ -94,11 +98,12 @@ impl Room {
             [name] => self.surfaces.iter().find(|s| &s.name == name).cloned(),
             [box_name, face] => {
                 let b = self.boxes.iter().find(|b| &b.name == box_name)?;
-                box_face(b, face, self).map(|(corner_mm, u_mm, v_mm)| Surface {
+                box_face(b, face, self).map(|(corner_mm, u_mm, v_mm, normal)| Surface {
                     name: format!("{box_name}.{face}"),
                     corner_mm,
                     u_mm,
                     v_mm,
+                    normal,
                 })
             }
             _ => None,
@@ -106,7 +111,8 @@ impl Room {
     }
 }
 
-type Face = (Point3<f64>, Vector3<f64>, Vector3<f64>);
+/// A face's corner, its two edges, and its outward normal.
+type Face = (Point3<f64>, Vector3<f64>, Vector3<f64>, Vector3<f64>);
 
 fn box_face(b: &BoxObstacle, face: &str, room: &Room) -> Option<Face> {
     let axes = b.rotation();
@@ -115,13 +121,14 @@ fn box_face(b: &BoxObstacle, face: &str, room: &Room) -> Option<Face> {
     let ey = Vector3::new(y.x, y.y, 0.0) * b.size_mm.y;
     let ez = Vector3::new(0.0, 0.0, b.size_mm.z);
     let o = b.corner_mm;
+    let unit = |v: Vector3<f64>| v.try_normalize(0.0).unwrap_or_else(Vector3::z);
     Some(match face {
-        "top" => (o + ez, ex, ey),
-        "bottom" => (o, ex, ey),
-        "x_min" => (o, ey, ez),
-        "x_max" => (o + ex, ey, ez),
-        "y_min" => (o, ex, ez),
-        "y_max" => (o + ey, ex, ez),
+        "top" => (o + ez, ex, ey, Vector3::z()),
+        "bottom" => (o, ex, ey, -Vector3::z()),
+        "x_min" => (o, ey, ez, -unit(ex)),
+        "x_max" => (o + ex, ey, ez, unit(ex)),
+        "y_min" => (o, ex, ez, -unit(ey)),
+        "y_max" => (o + ey, ex, ez, unit(ey)),
         "front" | "back" => {
             let towards = facing_centre(b, room, &[ex, ey]);
             let chosen = if face == "front" {

@@ -98,6 +98,10 @@ impl Solver for DlsSolver {
         best.unwrap_or_else(|| IkSolution::unsolved(problem.chain))
     }
 
+    fn solve_from(&self, problem: &IkProblem<'_>, start: Vec<f64>) -> IkSolution {
+        self.descend(problem, start)
+    }
+
     fn starts(&self) -> u64 {
         u64::from(self.starts.max(1))
     }

@@ -8,4 +8,4 @@ mod starts;
 pub use dls::{Dls, DlsSolver};
 pub use fabrik::{Fabrik, FabrikSettings, FabrikSolver};
 pub use incremental::{Incremental, IncrementalSettings, IncrementalSolver};
-pub use starts::{random_posture, Starts};
+pub use starts::{random_posture, Kicks, Starts};

@@ -61,6 +61,46 @@ impl Iterator for Starts<'_> {
     }
 }
 
+/// Starts near a posture that reached its target through something: the
+/// posture with each joint moved by up to `spread` of its range (clamped
+/// to its limits), and every fourth start drawn uniformly, so that a
+/// posture on the far side of the obstacle can still be found.
+pub struct Kicks<'a> {
+    chain: &'a Chain,
+    around: &'a [f64],
+    spread: f64,
+    rng: ChaCha8Rng,
+    given: u32,
+}
+
+impl<'a> Kicks<'a> {
+    pub fn new(chain: &'a Chain, around: &'a [f64], spread: f64, seed: u64) -> Self {
+        Kicks {
+            chain,
+            around,
+            spread,
+            rng: ChaCha8Rng::seed_from_u64(seed),
+            given: 0,
+        }
+    }
+}
+
+impl Iterator for Kicks<'_> {
+    type Item = Vec<f64>;
+
+    fn next(&mut self) -> Option<Vec<f64>> {
+        self.given += 1;
+        if self.given.is_multiple_of(4) {
+            return Some(random_posture(self.chain, &mut self.rng));
+        }
+        let kicked = self.chain.joints.iter().zip(self.around).map(|(j, &q)| {
+            let kick = (2.0 * unit_interval(&mut self.rng) - 1.0) * self.spread * j.range();
+            (q + kick).clamp(j.min, j.max)
+        });
+        Some(kicked.collect())
+    }
+}
+
 /// A uniform draw from [0, 1) with 53 random bits.
 fn unit_interval(rng: &mut ChaCha8Rng) -> f64 {
     (rng.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)

@@ -16,7 +16,7 @@ pub enum Item {
     Use(Spanned<UseTarget>),
     Let(LetDecl),
     Room(RoomDecl),
-    Mannequin(MannequinDecl),
+    Mannequin(Box<MannequinDecl>),
     Profile(ProfileDecl),
     BasePreset(BasePreset),
     VisionPreset(VisionPreset),
@@ -127,6 +127,41 @@ pub struct MannequinDecl {
     pub urdf: Option<UrdfSource>,
     pub joints: Vec<JointDecl>,
     pub effectors: Vec<EffectorDecl>,
+    pub spheres: Vec<SphereDecl>,
+    /// `legs(...)`, each given once at most (the checker says so).
+    pub legs: Vec<LegsDecl>,
+    /// `seated` or `standing`, in the body or after an alias.
+    pub postures: Vec<Spanned<Posture>>,
+    pub span: Span,
+}
+
+/// Whether a mannequin sits or stands.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Posture {
+    Seated,
+    Standing,
+}
+
+/// The solid of a link: `radius R`, `link NAME`, each at most once.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct LinkDecl {
+    pub radius: Vec<Expr>,
+    pub name: Vec<Name>,
+}
+
+/// `sphere NAME [after JOINT] at (x, y, z) radius R`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SphereDecl {
+    pub name: Name,
+    pub after: Option<Name>,
+    pub at: Vec3Expr,
+    pub radius: Expr,
+}
+
+/// `legs(name value, ...)`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LegsDecl {
+    pub args: Vec<(Name, Expr)>,
     pub span: Span,
 }
 
@@ -148,6 +183,7 @@ pub struct JointDecl {
     pub limits: Vec<LimitsExpr>,
     pub neutral: Vec<Expr>,
     pub weight: Vec<Expr>,
+    pub link: LinkDecl,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -163,6 +199,7 @@ pub struct EffectorDecl {
     /// The joint it sits on, if not the last.
     pub after: Option<Name>,
     pub at: Vec3Expr,
+    pub link: LinkDecl,
 }
 
 #[derive(Clone, Debug, PartialEq)]

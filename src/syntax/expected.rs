@@ -15,7 +15,7 @@ fn describe(rule: Rule) -> Option<&'static str> {
         EOI => "end of file",
         file | inline_space | WHITESPACE | COMMENT | line_comment | block_comment | item
         | ident_char | prefix | infix | primary | room_item | mannequin_item | joint_prop
-        | person_item | joint_override | and_task | mesh_prop => return None,
+        | person_item | joint_override | and_task | mesh_prop | link_prop => return None,
         ident | keyword => "a name",
         number | quantity => "a number",
         unit | bad_unit => "a unit",
@@ -48,6 +48,11 @@ fn describe(rule: Rule) -> Option<&'static str> {
         neutral => "`neutral`",
         weight => "`weight`",
         effector_decl => "`effector`",
+        radius => "`radius`",
+        link_name => "`link NAME`",
+        sphere_decl => "`sphere`",
+        legs_decl => "`legs(...)`",
+        posture => "`seated` or `standing`",
         mannequin_alias => "`= mannequin(...)`",
         mannequin_urdf => "`from urdf \"file\" root \"link\" tip \"link\"`",
         mannequin_params | call_args => "parameters `(...)`",

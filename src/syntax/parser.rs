@@ -107,7 +107,7 @@ impl Builder {
                 Item::Let(LetDecl { name, value })
             }
             Rule::room => Item::Room(self.room(pair)),
-            Rule::mannequin => Item::Mannequin(self.mannequin(pair)),
+            Rule::mannequin => Item::Mannequin(Box::new(self.mannequin(pair))),
             Rule::profile => {
                 let mut it = pair.into_inner();
                 let name = self.name(it.next().unwrap());
@@ -351,12 +351,22 @@ impl Builder {
         let name = self.name(it.next().unwrap());
         let mut joints = Vec::new();
         let mut effectors = Vec::new();
+        let mut spheres = Vec::new();
+        let mut legs = Vec::new();
+        let mut postures = Vec::new();
         let mut params = Vec::new();
         let mut alias = None;
         let mut urdf = None;
         for p in it {
             match p.as_rule() {
                 Rule::joint_decl => joints.push(self.joint(p)),
+                Rule::sphere_decl => spheres.push(self.sphere(p)),
+                Rule::legs_decl => {
+                    let span = self.span(&p);
+                    let args = self.call_args(p.into_inner().next().unwrap());
+                    legs.push(LegsDecl { args, span });
+                }
+                Rule::posture => postures.push(self.posture(p)),
                 Rule::mannequin_urdf => {
                     let mut strings = p.into_inner().map(|q| {
                         let span = self.span(&q);
@@ -370,7 +380,9 @@ impl Builder {
                     urdf = Some(UrdfSource { path, root, tip });
                 }
                 Rule::mannequin_alias => {
-                    alias = Some(self.mannequin_ref(p.into_inner().next().unwrap()));
+                    let mut parts = p.into_inner();
+                    alias = Some(self.mannequin_ref(parts.next().unwrap()));
+                    postures.extend(parts.map(|q| self.posture(q)));
                 }
                 Rule::mannequin_params => {
                     for param in p.into_inner() {
@@ -381,12 +393,17 @@ impl Builder {
                 }
                 _ => {
                     let mut e = p.into_inner().peekable();
-                    let name = self.name(e.next().unwrap());
-                    let after = e
-                        .next_if(|q| q.as_rule() == Rule::after)
-                        .map(|q| self.name(q.into_inner().next().unwrap()));
-                    let at = self.vec3(e.next().unwrap());
-                    effectors.push(EffectorDecl { name, after, at });
+                    let (name, after, at) = self.placed(&mut e);
+                    let mut link = LinkDecl::default();
+                    for q in e {
+                        self.link_prop(q, &mut link);
+                    }
+                    effectors.push(EffectorDecl {
+                        name,
+                        after,
+                        at,
+                        link,
+                    });
                 }
             }
         }
@@ -397,7 +414,54 @@ impl Builder {
             urdf,
             joints,
             effectors,
+            spheres,
+            legs,
+            postures,
             span,
+        }
+    }
+
+    fn posture(&mut self, p: Pair<Rule>) -> Spanned<Posture> {
+        let span = self.span(&p);
+        let posture = match p.as_str() {
+            "seated" => Posture::Seated,
+            _ => Posture::Standing,
+        };
+        Spanned::new(posture, span)
+    }
+
+    /// `radius R` or `link NAME` of a joint or an effector.
+    fn link_prop(&mut self, p: Pair<Rule>, link: &mut LinkDecl) {
+        match p.as_rule() {
+            Rule::radius => link.radius.push(self.expr(p.into_inner().next().unwrap())),
+            Rule::link_name => link.name.push(self.name(p.into_inner().next().unwrap())),
+            r => unreachable!("link part {r:?}"),
+        }
+    }
+
+    /// `NAME [after JOINT] at (x, y, z)`: an effector's or a sphere's
+    /// name, the joint it sits on if it says, and its point.
+    fn placed<'i>(
+        &mut self,
+        e: &mut std::iter::Peekable<pest::iterators::Pairs<'i, Rule>>,
+    ) -> (Name, Option<Name>, Vec3Expr) {
+        let name = self.name(e.next().unwrap());
+        let after = e
+            .next_if(|q| q.as_rule() == Rule::after)
+            .map(|q| self.name(q.into_inner().next().unwrap()));
+        let at = self.vec3(e.next().unwrap());
+        (name, after, at)
+    }
+
+    fn sphere(&mut self, p: Pair<Rule>) -> SphereDecl {
+        let mut e = p.into_inner().peekable();
+        let (name, after, at) = self.placed(&mut e);
+        let radius = self.expr(e.next().unwrap().into_inner().next().unwrap());
+        SphereDecl {
+            name,
+            after,
+            at,
+            radius,
         }
     }
 
@@ -413,6 +477,7 @@ impl Builder {
             limits: Vec::new(),
             neutral: Vec::new(),
             weight: Vec::new(),
+            link: LinkDecl::default(),
         };
         for p in it {
             match p.as_rule() {
@@ -433,6 +498,7 @@ impl Builder {
                     .neutral
                     .push(self.expr(p.into_inner().next().unwrap())),
                 Rule::weight => joint.weight.push(self.expr(p.into_inner().next().unwrap())),
+                Rule::radius | Rule::link_name => self.link_prop(p, &mut joint.link),
                 r => unreachable!("joint part {r:?}"),
             }
         }
@@ -506,17 +572,20 @@ impl Builder {
         let name = self.name(it.next().unwrap());
         let args = it
             .next()
-            .map(|args| {
-                args.into_inner()
-                    .map(|arg| {
-                        let mut kv = arg.into_inner();
-                        let key = self.name(kv.next().unwrap());
-                        (key, self.expr(kv.next().unwrap()))
-                    })
-                    .collect()
-            })
+            .map(|args| self.call_args(args))
             .unwrap_or_default();
         MannequinRef { name, args }
+    }
+
+    /// `(name value, ...)`.
+    fn call_args(&mut self, pair: Pair<Rule>) -> Vec<(Name, Expr)> {
+        pair.into_inner()
+            .map(|arg| {
+                let mut kv = arg.into_inner();
+                let key = self.name(kv.next().unwrap());
+                (key, self.expr(kv.next().unwrap()))
+            })
+            .collect()
     }
 
     fn joint_override(&mut self, pair: Pair<Rule>) -> JointOverride {

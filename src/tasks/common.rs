@@ -12,7 +12,7 @@ use crate::plugin::{
     Dependence, EffectorNeed, Params, Placement, PluginConfig, PluginKind, ReachQuery, Registry,
     Retry, Search, SettingsError, Solver, TaskInput, Value,
 };
-use crate::scene::Room;
+use crate::scene::{OwnBody, Room};
 
 /// How a task declares its common options: what one of its subjects is
 /// called in the docs, the seed's doc, the default solver, and the
@@ -26,7 +26,20 @@ pub struct CommonDecl {
     /// `None`: the effector may be left out (the mannequin's first);
     /// `Some((default, doc))`: a named default.
     pub effector: Option<(&'static str, &'static str)>,
+    /// The default retry solver's starts, and whether it steers clear of
+    /// obstacles: one target can afford 32 guarded descents per blocked
+    /// placement; a map of thousands of points retries with 8 (four times
+    /// faster, and finds a little less). Plain descents would be faster
+    /// still, but miss half of what the guarded ones reach between boards
+    /// (docs/benchmarks.md).
+    pub retry: (i64, bool),
 }
+
+/// The retry of one target: 32 starts per blocked placement, steering
+/// clear.
+pub const THOROUGH_RETRY: (i64, bool) = (32, true);
+/// The retry of each point of a map: 8 starts, steering clear.
+pub const MAP_RETRY: (i64, bool) = (8, true);
 
 /// The solver a reach-like task uses unless told otherwise, and its doc.
 pub const INCREMENTAL: (&str, &str) = ("incremental", "the IK solver and its options");
@@ -43,6 +56,7 @@ pub struct Common {
     pub clearance_mm: f64,
     pub blocked_solver: PluginConfig,
     pub blocked_retries: u32,
+    pub blocked_spread: f64,
 }
 
 impl Common {
@@ -92,8 +106,11 @@ impl Common {
                     "blocked_solver",
                     PluginKind::Solver,
                     "incremental",
-                    vec![("starts", Value::Integer(64))],
-                    "with collisions, where the solver reaches from no placement: the solver that tries again",
+                    vec![
+                        ("starts", Value::Integer(decl.retry.0)),
+                        ("steer_clear", Value::Bool(decl.retry.1)),
+                    ],
+                    "with collisions, where the solver reaches from no placement: the solver that tries again, one descent per start from starts near the blocked posture",
                 )
                 .get(),
             blocked_retries: p
@@ -104,6 +121,14 @@ impl Common {
                 )
                 .range(0.0, 360.0)
                 .get() as u32,
+            blocked_spread: p
+                .number(
+                    "blocked_spread",
+                    0.2,
+                    "how far the retry's starts stray from the blocked posture, as a fraction of each joint's range",
+                )
+                .range(0.0, 1.0)
+                .get(),
         }
     }
 }
@@ -154,18 +179,21 @@ impl Reaching {
             .then(|| Obstacles::new(room, self.common.clearance_mm))
     }
 
-    /// A reach of `target_room_mm` keeping links out of `obstacles`, with
-    /// the task's tolerance and, where obstacles are checked, its retry.
+    /// A reach of `target_room_mm` keeping the person out of `obstacles`
+    /// and their own body and base `own`, with the task's tolerance and,
+    /// where obstacles are checked, its retry.
     pub fn query<'q>(
         &'q self,
         target_room_mm: Point3<f64>,
         seed: u64,
         search: Search,
         obstacles: Option<&'q Obstacles>,
+        own: &'q OwnBody,
     ) -> ReachQuery<'q> {
         let retry = (obstacles.is_some() && self.common.blocked_retries > 0).then(|| Retry {
             solver: self.blocked_solver.as_ref(),
             placements: self.common.blocked_retries as usize,
+            spread: self.common.blocked_spread,
         });
         ReachQuery {
             target_room_mm,
@@ -173,6 +201,7 @@ impl Reaching {
             seed,
             search,
             obstacles,
+            own,
             retry,
         }
     }
@@ -197,9 +226,11 @@ impl Reaching {
         points_mm: Vec<Point3<f64>>,
         sight_lines: bool,
     ) -> Dependence {
+        // How far a solid of the chain reaches from the hip: its links'
+        // lengths and the thickest radius.
         let reach_mm = chains
             .iter()
-            .map(|c| c.reach_bound_mm())
+            .map(|c| c.reach_bound_mm() + c.thickest_mm())
             .fold(0.0, f64::max);
         let looked_at = self.common.collisions || sight_lines;
         let clearance_mm = if self.common.collisions {

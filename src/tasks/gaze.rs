@@ -9,7 +9,7 @@
 
 use nalgebra::{Point3, Vector3};
 
-use super::common::{chain_of, mix_seed, Common, CommonDecl, Reaching};
+use super::common::{chain_of, mix_seed, Common, CommonDecl, Reaching, MAP_RETRY, THOROUGH_RETRY};
 use crate::collision::{Obstacles, PlacedObstacles};
 use crate::error::ErrorKind;
 use crate::kinematics::{Chain, Joint, JointKind};
@@ -17,8 +17,8 @@ use crate::plugin::{
     Dependence, EffectorNeed, Options, ParamSpec, Params, Placement, Plugin, Registry, Search,
     Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin,
 };
-use crate::report::{Asked, GazeReport, Sight, TaskReport};
-use crate::scene::{Room, Vision};
+use crate::report::{Asked, GazeReport, Names, Sight, TaskReport};
+use crate::scene::{Blocker, OwnBody, Room, Vision};
 use crate::vision;
 
 /// The plugin `gaze`.
@@ -44,6 +44,11 @@ impl GazeSettings {
                 // do; the incremental solver moves every joint alike.
                 solver: ("fabrik", "the IK solver and its options"),
                 effector: Some(("eyes", "the effector whose chain ends in the look link")),
+                retry: if what == "target" {
+                    THOROUGH_RETRY
+                } else {
+                    MAP_RETRY
+                },
             },
         );
         GazeSettings {
@@ -209,7 +214,7 @@ impl Task for GazeTask {
         let chain = with_look_range(&chain_of(input, 0), eyes.legible_mm());
         // With collisions on, the look link is a link like any other: the
         // solver and the base prefer a posture whose line of sight is clear.
-        let obstacles = GazeObstacles::new(input.room, reaching);
+        let obstacles = GazeObstacles::new(input.room, reaching, input.base.own_body());
         let query = reaching.query(
             target.position_mm,
             mix_seed(
@@ -218,6 +223,7 @@ impl Task for GazeTask {
             ),
             Search::MostComfortable,
             obstacles.body.as_ref(),
+            input.base.own_body(),
         );
         let placement = input
             .base
@@ -235,6 +241,8 @@ impl Task for GazeTask {
             chain: &chain,
             solver: reaching.solver_of(&placement),
             tolerance_mm: reaching.common.tolerance_mm,
+            room: input.room,
+            own: input.base.own_body(),
         };
         TaskReport::Gaze(GazeReport::new(
             &asked,
@@ -247,17 +255,22 @@ impl Task for GazeTask {
 
 /// The obstacles a gaze is checked against, built once per task: all of
 /// them for the line of sight, and those the body must keep clear of
-/// (grown by the clearance) when the task checks collisions.
-pub(super) struct GazeObstacles {
+/// (grown by the clearance) when the task checks collisions; the person's
+/// own legs and base, which may hide a target too.
+pub(super) struct GazeObstacles<'a> {
     pub sight: Obstacles,
     pub body: Option<Obstacles>,
+    pub room: &'a Room,
+    pub own: &'a OwnBody,
 }
 
-impl GazeObstacles {
-    pub fn new(room: &Room, reaching: &Reaching) -> Self {
+impl<'a> GazeObstacles<'a> {
+    pub fn new(room: &'a Room, reaching: &Reaching, own: &'a OwnBody) -> Self {
         GazeObstacles {
             sight: Obstacles::new(room, 0.0),
             body: reaching.obstacles(room),
+            room,
+            own,
         }
     }
 }
@@ -271,14 +284,15 @@ pub(super) struct Looked<'a> {
 
 impl Looked<'_> {
     /// What the eyes see of the target, and if not, why: the sight line is
-    /// always checked, by a ray cast that names the first obstacle it
-    /// meets; the body's links when collisions are on.
-    pub fn see(&self, obstacles: &GazeObstacles, tolerance_mm: f64, eyes: &Eyes) -> Sight {
-        let look = self.look(&obstacles.sight, eyes.size_mm);
+    /// always checked, against the room and the person's own legs and
+    /// base, naming the first thing it meets; the body's parts when
+    /// collisions are on.
+    pub fn see(&self, obstacles: &GazeObstacles<'_>, tolerance_mm: f64, eyes: &Eyes) -> Sight {
+        let look = self.look(obstacles, eyes.size_mm);
         let sight = Sight {
             reason: None,
             occluded_by: look.occluded_by,
-            body_collision: self.obstacle_met_by_body(obstacles.body.as_ref()),
+            body_collision: self.obstacle_met_by_body(obstacles, tolerance_mm),
             distance_mm: look.distance_mm,
             legible_mm: eyes.legible_mm(),
             off_axis_rad: look.off_axis_rad,
@@ -290,40 +304,72 @@ impl Looked<'_> {
         Sight { reason, ..sight }
     }
 
+    fn names<'n>(&'n self, obstacles: &'n GazeObstacles<'_>) -> Names<'n> {
+        Names {
+            room: obstacles.room,
+            own: obstacles.own,
+            chain: self.chain,
+        }
+    }
+
     /// Where the eyes are in the placed posture, and what lies between
     /// them and the target.
-    fn look(&self, obstacles: &Obstacles, size_mm: f64) -> Look {
+    fn look(&self, obstacles: &GazeObstacles<'_>, size_mm: f64) -> Look {
         let q = &self.placement.solution.q;
         let pose = &self.placement.pose;
         // The eyes: the frame before the look link, looking along its z axis.
         let eye_frame = self.chain.end_frame(&q[..q.len() - 1]);
-        let eyes_room = pose.to_room(&Point3::from(eye_frame.translation.vector));
+        let eyes_base = Point3::from(eye_frame.translation.vector);
+        let eyes_room = pose.to_room(&eyes_base);
         let look_room = pose.direction_to_room(&(eye_frame.rotation * Vector3::z()));
         let to_target = self.target - eyes_room;
+        let gap = size_mm / 2.0;
+        let room_hit = obstacles
+            .sight
+            .first_on_sight_line(&eyes_room, &self.target, gap);
+        let own_hit = obstacles
+            .own
+            .first_on_line(&eyes_base, &pose.to_base(&self.target), gap)
+            .map(|(i, t)| (Blocker::Own(i), t));
+        let first = room_hit
+            .into_iter()
+            .chain(own_hit)
+            .min_by(|a, b| a.1.total_cmp(&b.1));
         Look {
             eyes_room_mm: eyes_room,
             distance_mm: to_target.norm(),
             off_axis_rad: look_room.angle(&to_target),
-            occluded_by: obstacles
-                .first_on_sight_line(&eyes_room, &self.target, size_mm / 2.0)
-                .map(|(i, _)| obstacles.name(i).to_string()),
+            occluded_by: first.map(|(b, _)| self.names(obstacles).blocker(b)),
         }
     }
 
-    /// The first obstacle the body's links (all but the look link) pass
-    /// through, when collisions are checked.
-    fn obstacle_met_by_body(&self, obstacles: Option<&Obstacles>) -> Option<String> {
-        let obstacles = obstacles?;
-        let mut points = self.chain.link_points(&self.placement.solution.q);
-        points.pop();
+    /// The first thing the body's parts (all but the look link) run into,
+    /// when collisions are checked.
+    fn obstacle_met_by_body(
+        &self,
+        obstacles: &GazeObstacles<'_>,
+        tolerance_mm: f64,
+    ) -> Option<String> {
+        let room = obstacles.body.as_ref()?;
+        let (body, q) = without_look(self.chain, &self.placement.solution.q);
         let placed = PlacedObstacles {
-            obstacles,
+            obstacles: room,
+            own: obstacles.own,
             base_pose: self.placement.pose,
         };
-        placed
-            .polyline_hit(&points, 0.0)
-            .map(|i| obstacles.name(i).to_string())
+        let hit = placed.posture_hit(&body, q, tolerance_mm)?;
+        Some(self.names(obstacles).blocker(hit.blocker))
     }
+}
+
+/// The eyes' chain without its look link (ending at the eyes), and the
+/// posture of its joints.
+fn without_look<'q>(chain: &Chain, q: &'q [f64]) -> (Chain, &'q [f64]) {
+    let mut body = chain.clone();
+    body.joints.pop();
+    body.effector_mm = Vector3::zeros();
+    body.effector_link.radius_mm = 0.0;
+    (body, &q[..q.len().saturating_sub(1)])
 }
 
 /// A gaze effector's chain must end in its look link.

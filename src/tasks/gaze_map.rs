@@ -102,7 +102,7 @@ impl Task for GazeMapTask {
     fn run(&self, input: &TaskInput<'_>) -> TaskReport {
         let eyes = self.looking.eyes(Some(&input.person.vision));
         let chain = with_look_range(&chain_of(input, 0), eyes.legible_mm());
-        let obstacles = GazeObstacles::new(input.room, &self.reaching);
+        let obstacles = GazeObstacles::new(input.room, &self.reaching, input.base.own_body());
         let tolerance_mm = self.reaching.common.tolerance_mm;
         let judge = |placement: &Placement, target| {
             let looked = Looked {
@@ -118,6 +118,7 @@ impl Task for GazeMapTask {
             chain: &chain,
             obstacles: obstacles.body.as_ref(),
             of: "gaze",
+            lift_mm: nalgebra::Vector3::zeros(),
         };
         run_map(input, &asked, &judge)
     }

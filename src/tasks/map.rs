@@ -4,10 +4,10 @@
 //! fits, solved in parallel. A map stops at the first placement that
 //! reaches a point (in order of promise), where a reach task compares all.
 
-use nalgebra::Point3;
+use nalgebra::{Point3, Vector3};
 use rayon::prelude::*;
 
-use super::common::{chain_of, mix_seed, Common, CommonDecl, Reaching, INCREMENTAL};
+use super::common::{chain_of, mix_seed, Common, CommonDecl, Reaching, INCREMENTAL, MAP_RETRY};
 use crate::collision::Obstacles;
 use crate::error::ErrorKind;
 use crate::kinematics::Chain;
@@ -94,6 +94,7 @@ impl Settings for MapSettings {
                 seed_doc: "seeds the solver's random starts (mixed with surface, person and cell)",
                 solver: INCREMENTAL,
                 effector: None,
+                retry: MAP_RETRY,
             },
         );
         MapSettings(common, GridSettings::visit(p))
@@ -157,7 +158,13 @@ impl Task for MapTask {
 
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
         let chain = chain_of(input, 0);
-        let points = self.grid.points_mm(&input.subject);
+        let lift = hand_lift(&input.subject, &chain);
+        let points = self
+            .grid
+            .points_mm(&input.subject)
+            .into_iter()
+            .map(|p| p + lift)
+            .collect();
         self.reaching.dependence(&chain, &[&chain], points, false)
     }
 
@@ -172,8 +179,19 @@ impl Task for MapTask {
             chain: &chain,
             obstacles: obstacles.as_ref(),
             of: "reach",
+            lift_mm: hand_lift(&input.subject, &chain),
         };
         run_map(input, &asked, &judge)
+    }
+}
+
+/// Where the hand's centre is when it touches a point of the surface: a
+/// hand's radius out of it, on the side it is touched from (the hand lies
+/// on a shelf; its centre, the grip, is above the board).
+fn hand_lift(subject: &Subject<'_>, chain: &Chain) -> Vector3<f64> {
+    match subject {
+        Subject::Surface(s) => s.normal * chain.effector_link.radius_mm,
+        Subject::Target(_) => Vector3::zeros(),
     }
 }
 
@@ -191,6 +209,10 @@ pub(super) struct MapAsked<'a> {
     pub obstacles: Option<&'a Obstacles>,
     /// `reach` or `gaze`.
     pub of: &'static str,
+    /// From each point of the surface to where the effector goes (a hand
+    /// touches a point with its side, a hand's radius out of it; the eyes
+    /// look at the point itself).
+    pub lift_mm: Vector3<f64>,
 }
 
 /// A map of the task's surface: each point's placement found as for a
@@ -217,21 +239,45 @@ fn map_report(
     let prepared = input.base.prepare(input.room, asked.chain);
     let grid = surface.grid(asked.grid.step_mm);
     input.progress.add_work(grid.cells.len() as u64);
+    let solver = reaching.solver.as_ref();
+    // Rows in parallel; along a row, each point first tries on from where
+    // the last point reached stood and how it stood (one solve, few
+    // sweeps), then searches as a reach would.
     let cells: Vec<(MapCell, bool)> = grid
         .cells
-        .par_iter()
-        .map(|cell| {
-            let (column, row) = (cell.column.to_string(), cell.row.to_string());
-            let seed = mix_seed(
-                reaching.common.seed,
-                &[&surface.name, &person.name, &column, &row],
-            );
-            let query = reaching.query(cell.point_mm, seed, Search::FirstReaching, asked.obstacles);
-            let placement = prepared.reach(&query, reaching.solver.as_ref());
-            input.progress.advance(1);
-            let counts = judge(&placement, cell.point_mm);
-            let cell = MapCell::new(cell, &placement, asked.chain, counts);
-            (cell, counts && placement.retried)
+        .par_chunks(grid.columns.max(1))
+        .flat_map_iter(|row| {
+            let mut last: Option<Placement> = None;
+            row.iter()
+                .map(|cell| {
+                    let (column, row) = (cell.column.to_string(), cell.row.to_string());
+                    let seed = mix_seed(
+                        reaching.common.seed,
+                        &[&surface.name, &person.name, &column, &row],
+                    );
+                    let query = reaching.query(
+                        cell.point_mm + asked.lift_mm,
+                        seed,
+                        Search::FirstReaching,
+                        asked.obstacles,
+                        input.base.own_body(),
+                    );
+                    let on = last.as_ref().and_then(|p| {
+                        let next =
+                            query.solve_from_at(asked.chain, p.pose, solver, p.solution.q.clone());
+                        judge(&next, cell.point_mm).then_some(next)
+                    });
+                    let placement = on.unwrap_or_else(|| prepared.reach(&query, solver));
+                    input.progress.advance(1);
+                    let counts = judge(&placement, cell.point_mm);
+                    let retried = counts && placement.retried;
+                    let cell = MapCell::new(cell, &placement, asked.chain, counts);
+                    if counts {
+                        last = Some(placement);
+                    }
+                    (cell, retried)
+                })
+                .collect::<Vec<_>>()
         })
         .collect();
     let retried = cells.iter().filter(|(_, retried)| *retried).count();

@@ -1,6 +1,8 @@
 //! The `reach` task: can this person bring their hand to this target?
 
-use super::common::{chain_of, mix_seed, Common, CommonDecl, Reaching, INCREMENTAL};
+use super::common::{
+    chain_of, mix_seed, Common, CommonDecl, Reaching, INCREMENTAL, THOROUGH_RETRY,
+};
 use crate::plugin::{
     Dependence, EffectorNeed, Options, ParamSpec, Params, Plugin, Registry, Search, Settings,
     SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin,
@@ -22,6 +24,7 @@ impl Settings for ReachSettings {
                 seed_doc: "seeds the solver's random starts (mixed with target and person)",
                 solver: INCREMENTAL,
                 effector: None,
+                retry: THOROUGH_RETRY,
             },
         ))
     }
@@ -89,6 +92,7 @@ impl Task for ReachTask {
             mix_seed(reaching.common.seed, &[&target.name, &input.person.name]),
             Search::MostComfortable,
             obstacles.as_ref(),
+            input.base.own_body(),
         );
         let placement = input
             .base
@@ -100,12 +104,9 @@ impl Task for ReachTask {
             chain: &chain,
             solver: reaching.solver_of(&placement),
             tolerance_mm: reaching.common.tolerance_mm,
+            room: input.room,
+            own: input.base.own_body(),
         };
-        TaskReport::Reach(ReachReport::new(
-            &asked,
-            &placement,
-            target.position_mm,
-            input.room,
-        ))
+        TaskReport::Reach(ReachReport::new(&asked, &placement, target.position_mm))
     }
 }

@@ -8,7 +8,7 @@
 
 use nalgebra::Point3;
 
-use super::common::{chain_of, mix_seed, Common, CommonDecl, Reaching};
+use super::common::{chain_of, mix_seed, Common, CommonDecl, Reaching, THOROUGH_RETRY};
 use super::gaze::{limit_look, needs_look_link, GazeObstacles, Looked, Looking};
 use crate::collision::PlacedObstacles;
 use crate::error::ErrorKind;
@@ -45,6 +45,7 @@ impl Settings for ReachAndGazeSettings {
                     "fabrik, whose tree solve moves hand and eyes together",
                 ),
                 effector: None,
+                retry: THOROUGH_RETRY,
             },
         );
         let eyes = p
@@ -181,7 +182,8 @@ impl Task for ReachAndGazeTask {
         let eyes = self.looking.eyes(Some(&input.person.vision));
         let (body, hand, eyes_index) = body_with_look_range(input, eyes.legible_mm());
         let hand_chain = chain_of(input, 0);
-        let obstacles = GazeObstacles::new(input.room, reaching);
+        let own = input.base.own_body();
+        let obstacles = GazeObstacles::new(input.room, reaching, own);
         let query = reaching.query(
             target.position_mm,
             mix_seed(
@@ -190,6 +192,7 @@ impl Task for ReachAndGazeTask {
             ),
             Search::MostComfortable,
             obstacles.body.as_ref(),
+            own,
         );
         let pose = input
             .base
@@ -218,6 +221,7 @@ impl Task for ReachAndGazeTask {
                 seed: query.seed,
                 obstacles: obstacles.body.as_ref().map(|o| PlacedObstacles {
                     obstacles: o,
+                    own,
                     base_pose: pose,
                 }),
             },
@@ -228,18 +232,15 @@ impl Task for ReachAndGazeTask {
             chain,
             solver: &reaching.common.solver.name,
             tolerance_mm: reaching.common.tolerance_mm,
+            room: input.room,
+            own,
         };
         let hand_chain = body.chain(hand);
         let mut hand_placement = placed(&body, hand, &hand_chain, &tree, pose, target.position_mm);
         hand_placement.solution.collision = query
             .problem(&hand_chain, pose)
             .collision(&hand_placement.solution.q);
-        let reach = ReachReport::new(
-            &asked(&hand_chain),
-            &hand_placement,
-            target.position_mm,
-            input.room,
-        );
+        let reach = ReachReport::new(&asked(&hand_chain), &hand_placement, target.position_mm);
         let eyes_chain = body.chain(eyes_index);
         let eyes_placement = placed(
             &body,

@@ -12,6 +12,7 @@ use nalgebra::{IsometryMatrix3, Point3};
 
 use super::bones::Bone;
 use crate::collision::PlacedObstacles;
+use crate::geometry::Capsule;
 use crate::kinematics::Chain;
 
 /// How many of a group's joints are sampled (the first ones); the others
@@ -63,15 +64,26 @@ impl Bend<'_> {
         best.map(|(_, _, q)| q)
     }
 
-    /// Whether the segment from `a` to `b`, as bone `bone`, is clear; the
-    /// effector's own bone may end on the target's surface.
+    /// Whether bone `bone` from `a` to `b` (a capsule of its link's
+    /// radius) is clear of the room and the person's own legs and base; the
+    /// effector's own bone may press by up to the tolerance into what it
+    /// reaches, as `PlacedObstacles::posture_hit` lets it.
     fn clear(&self, a: Point3<f64>, b: Point3<f64>, bone: usize) -> bool {
-        let gap = if bone == self.bones.len() - 1 {
-            self.tolerance_mm.max(1.0)
-        } else {
-            0.0
-        };
-        self.obstacles.polyline_hit(&[a, b], gap).is_none()
+        let mut capsule = Capsule::new(a, b, self.bones[bone].radius_mm);
+        if bone == self.bones.len() - 1 {
+            let radius = capsule.radius_mm - self.tolerance_mm;
+            if radius > 0.0 {
+                capsule.radius_mm = radius;
+            } else {
+                let gap = (-radius).max(1.0);
+                let length = (b - a).norm();
+                if length <= gap {
+                    return true;
+                }
+                capsule = Capsule::new(a, a + (b - a) * (1.0 - gap / length), 0.0);
+            }
+        }
+        self.obstacles.capsule_hit(&capsule).is_none()
     }
 
     /// Bone `k`'s end with posture `q`.

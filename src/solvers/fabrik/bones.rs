@@ -30,6 +30,8 @@ pub struct Bone {
     pub end: End,
     /// The bone's length, or its least and greatest for a prismatic bone.
     pub length_mm: [f64; 2],
+    /// The radius of the link it stands for.
+    pub radius_mm: f64,
 }
 
 impl Bone {
@@ -80,6 +82,7 @@ pub fn bones(chain: &Chain) -> Vec<Bone> {
             joints: start..group_end,
             end: End::Frame(j),
             length_mm,
+            radius_mm: joint.link.radius_mm,
         });
         start = group_end;
     }
@@ -89,6 +92,7 @@ pub fn bones(chain: &Chain) -> Vec<Bone> {
             joints: start..chain.joints.len(),
             end: End::Effector,
             length_mm: [offset; 2],
+            radius_mm: chain.effector_link.radius_mm,
         });
     }
     bones

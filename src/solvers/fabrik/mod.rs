@@ -174,6 +174,12 @@ impl Solver for FabrikSolver {
         solution
     }
 
+    fn solve_from(&self, problem: &IkProblem<'_>, start: Vec<f64>) -> IkSolution {
+        let bones = bones(problem.chain);
+        let mut rng = ChaCha8Rng::seed_from_u64(problem.seed ^ 0x6b69_636b);
+        pass::Pass::new(&self.settings, problem, &bones, start).run(&mut rng)
+    }
+
     fn starts(&self) -> u64 {
         u64::from(self.settings.starts.max(1))
     }

@@ -48,9 +48,9 @@ pub struct TreeSolution {
     pub q: Vec<f64>,
     pub distances_mm: Vec<f64>,
     pub iterations: u64,
-    /// The first obstacle (by index in the room) a link of some branch
-    /// passes through, when obstacles are checked.
-    pub collision: Option<usize>,
+    /// The first thing a part of some branch runs into, when obstacles
+    /// are checked.
+    pub collision: Option<crate::scene::Collision>,
 }
 
 impl TreeSolution {
@@ -185,11 +185,11 @@ struct Used {
 impl Used {
     fn new(body: &Body, effectors: &[usize]) -> Self {
         let joints = body.joints_to(effectors);
-        let chain = Chain {
-            joints: joints.iter().map(|&j| body.joints[j].clone()).collect(),
-            effector_name: String::new(),
-            effector_mm: nalgebra::Vector3::zeros(),
-        };
+        let chain = Chain::new(
+            joints.iter().map(|&j| body.joints[j].clone()).collect(),
+            "",
+            nalgebra::Vector3::zeros(),
+        );
         Used { joints, chain }
     }
 

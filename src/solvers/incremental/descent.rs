@@ -3,11 +3,16 @@
 //! either way, until the target is within tolerance, the increments have
 //! all shrunk below `min_rate`, `stall` sweeps in a row have not improved,
 //! or `max_sweeps` is reached.
+//!
+//! With `steer_clear`, once the posture is clear of obstacles and of the
+//! person's own body, a move that would take it into one is not made: the
+//! descent goes round a board or the chair's backrest instead of through
+//! it (each move it makes is checked, so it costs more per sweep).
 
 use nalgebra::{Point3, Vector3};
 
 use super::IncrementalSettings;
-use crate::kinematics::{Chain, IncrementalFk, Joint, Step};
+use crate::kinematics::{Chain, IncrementalFk, Joint, Posed, Step};
 use crate::plugin::{IkProblem, IkSolution};
 
 /// One descent from `q`.
@@ -104,12 +109,52 @@ impl Kinematics for FullProduct<'_> {
     }
 }
 
+/// What keeps a descent clear: the problem's obstacles, and whether the
+/// posture is clear of them yet.
+struct Guard<'p, 'a> {
+    problem: &'p IkProblem<'a>,
+    clear: bool,
+    posed: Posed<'a>,
+}
+
+impl<'p, 'a> Guard<'p, 'a> {
+    /// A guard for a descent from `q`, when the settings ask for one and
+    /// the problem has obstacles.
+    fn new(s: &IncrementalSettings, problem: &'p IkProblem<'a>, q: &[f64]) -> Option<Self> {
+        (s.steer_clear && problem.obstacles.is_some()).then(|| Guard {
+            problem,
+            clear: problem.collision(q).is_none(),
+            posed: Posed::new(problem.chain, q),
+        })
+    }
+
+    /// Whether joint `i` may move to `value`: always while the posture is
+    /// not yet clear, and then only if it stays clear.
+    fn allows(&self, i: usize, value: f64) -> bool {
+        !self.clear
+            || self
+                .problem
+                .collision_of(&self.posed.volumes_with(i, value))
+                .is_none()
+    }
+
+    /// After joint `i` moved to `value`: note whether the posture has come
+    /// clear.
+    fn moved(&mut self, i: usize, value: f64) {
+        self.posed.set(i, value);
+        if !self.clear {
+            self.clear = self.problem.collision_of(&self.posed.volumes()).is_none();
+        }
+    }
+}
+
 fn descend_with(
     s: &IncrementalSettings,
     problem: &IkProblem<'_>,
     mut fk: impl Kinematics,
 ) -> IkSolution {
     let chain = problem.chain;
+    let mut guard = Guard::new(s, problem, fk.q());
     let tolerance_sq = problem.tolerance_mm * problem.tolerance_mm;
     let mut d_sq = fk.distance_sq();
     let mut rate = s.rate;
@@ -134,7 +179,17 @@ fn descend_with(
             if steps[i].delta == 0.0 {
                 continue;
             }
-            let kept = try_joint(s, &mut fk, i, joint, &steps[i], &mut sign[i], &mut d_sq);
+            let step = &steps[i];
+            let kept = try_joint(
+                s,
+                &mut fk,
+                i,
+                joint,
+                step,
+                &mut sign[i],
+                &mut d_sq,
+                guard.as_mut(),
+            );
             let factor = if kept { s.grow } else { s.shrink };
             if factor != 1.0 {
                 let scaled = steps[i].scaled(factor);
@@ -198,7 +253,10 @@ fn descend_with(
 /// evaluated before either is chosen, so the second does not wait for the
 /// first comparison; lazily (the paper's cost), the second only if the
 /// first did not help. Returns whether a move was kept.
+/// With a `guard`, a move that takes a clear posture into an obstacle is
+/// not made.
 #[inline]
+#[allow(clippy::too_many_arguments)]
 fn try_joint<K: Kinematics>(
     s: &IncrementalSettings,
     fk: &mut K,
@@ -207,27 +265,37 @@ fn try_joint<K: Kinematics>(
     step: &Step,
     sign: &mut f64,
     d_sq: &mut f64,
+    guard: Option<&mut Guard<'_, '_>>,
 ) -> bool {
     let lever = fk.lever(i);
     let first = if s.sign_memory { *sign } else { 1.0 };
     let old = fk.q()[i];
-    let within = |v: f64| v >= joint.min && v <= joint.max;
+    let limits = |v: f64| v >= joint.min && v <= joint.max;
+    let within = |guard: &Option<&mut Guard<'_, '_>>, v: f64| {
+        limits(v) && guard.as_deref().is_none_or(|g| g.allows(i, v))
+    };
     let (plus, minus) = (old + first * step.delta, old - first * step.delta);
     let (d_first, cs_first) = fk.distance_sq_moved(i, step, first, &lever);
     let second = s
         .eager_pair
         .then(|| fk.distance_sq_moved(i, step, -first, &lever));
-    if d_first < *d_sq && within(plus) {
+    if d_first < *d_sq && within(&guard, plus) {
         *d_sq = d_first;
         fk.set_moved(i, plus, cs_first);
+        if let Some(g) = guard {
+            g.moved(i, plus);
+        }
         return true;
     }
     let (d_second, cs_second) =
         second.unwrap_or_else(|| fk.distance_sq_moved(i, step, -first, &lever));
-    if d_second < *d_sq && within(minus) {
+    if d_second < *d_sq && within(&guard, minus) {
         *d_sq = d_second;
         fk.set_moved(i, minus, cs_second);
         *sign = -first;
+        if let Some(g) = guard {
+            g.moved(i, minus);
+        }
         return true;
     }
     false

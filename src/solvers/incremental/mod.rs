@@ -52,6 +52,7 @@ pub struct IncrementalSettings {
     pub stall_ratio: f64,
     pub max_sweeps: u32,
     pub avoid_obstacles: bool,
+    pub steer_clear: bool,
 }
 
 impl Settings for IncrementalSettings {
@@ -162,6 +163,13 @@ impl Settings for IncrementalSettings {
                     "a posture whose links pass through an obstacle does not count as reaching when choosing among starts",
                 )
                 .get(),
+            steer_clear: p
+                .boolean(
+                    "steer_clear",
+                    false,
+                    "once a descent's posture is clear of obstacles and the body, it makes no move into one (slower per sweep)",
+                )
+                .get(),
         }
     }
 }
@@ -193,20 +201,43 @@ pub struct IncrementalSolver {
     pub settings: IncrementalSettings,
 }
 
-impl Solver for IncrementalSolver {
-    fn solve(&self, problem: &IkProblem<'_>) -> IkSolution {
+impl IncrementalSolver {
+    /// The most comfortable posture that reaches over the starts, or the
+    /// closest; with `first`, the first that reaches.
+    fn over_starts(&self, problem: &IkProblem<'_>, first: bool) -> IkSolution {
         let starts = Starts::new(problem.chain, problem.seed, self.settings.neutral_start);
         let mut best = Preferred::new(problem.tolerance_mm);
         for start in starts.take(self.settings.starts as usize) {
             let solution = descent::descend(&self.settings, problem, start);
             let comfort = problem.chain.discomfort(&solution.q);
             best.offer(solution, comfort);
+            if first && best.reaches() {
+                break;
+            }
         }
         best.into_kept()
             .unwrap_or_else(|| IkSolution::unsolved(problem.chain))
     }
+}
+
+impl Solver for IncrementalSolver {
+    fn solve(&self, problem: &IkProblem<'_>) -> IkSolution {
+        self.over_starts(problem, false)
+    }
+
+    fn solve_until_reached(&self, problem: &IkProblem<'_>) -> IkSolution {
+        self.over_starts(problem, true)
+    }
+
+    fn solve_from(&self, problem: &IkProblem<'_>, start: Vec<f64>) -> IkSolution {
+        descent::descend(&self.settings, problem, start)
+    }
 
     fn starts(&self) -> u64 {
         u64::from(self.settings.starts.max(1))
+    }
+
+    fn steers_clear(&self) -> bool {
+        self.settings.steer_clear
     }
 }

@@ -1,0 +1,429 @@
+//! Obstacles, for the questions the solvers and the gaze task ask: does a
+//! solid of the person (a capsule: a link, a limb, the head) overlap an
+//! obstacle of the room, a wall, the floor or the ceiling, and what does a
+//! line of sight meet first? Boxes are measured exactly (`geometry`),
+//! meshes with parry (`parry3d-f64`); all in the room frame, millimetres.
+//! `placed.rs` asks it of a whole posture, with the person's own body.
+
+mod placed;
+
+pub use placed::PlacedObstacles;
+
+use nalgebra::{Isometry3, Point3, Vector3};
+use parry3d_f64::query::{self, Ray};
+use parry3d_f64::shape::{Segment, SharedShape, TriMeshFlags};
+
+use crate::geometry::{Capsule, Cuboid};
+use crate::scene::{Blocker, Room, Wall};
+
+/// A mesh obstacle as parry holds it, and its name for reports.
+#[derive(Clone)]
+struct Mesh {
+    /// Its index among the room's obstacles (the boxes, then the meshes).
+    index: usize,
+    name: String,
+    shape: SharedShape,
+    /// A mesh whose inside is known (closed, faces outwards): a point in
+    /// it is in the obstacle. (A ray cast only finds the surface.)
+    closed: bool,
+    bounds: [Point3<f64>; 2],
+}
+
+/// The obstacles of one room.
+#[derive(Clone, Default)]
+pub struct Obstacles {
+    boxes: Vec<(String, Cuboid, [Point3<f64>; 2])>,
+    meshes: Vec<Mesh>,
+    /// The room's size: its walls, floor and ceiling.
+    size_mm: Vector3<f64>,
+    /// How close a solid may come to an obstacle.
+    clearance_mm: f64,
+}
+
+const WALLS: [Wall; 6] = [
+    Wall::Floor,
+    Wall::Ceiling,
+    Wall::XMin,
+    Wall::XMax,
+    Wall::YMin,
+    Wall::YMax,
+];
+
+impl Obstacles {
+    /// The room's boxes, meshes and sides; a solid closer than
+    /// `clearance_mm` to one counts as touching it. A mesh is solid where
+    /// its triangles close and face outwards, else only its surface counts.
+    pub fn new(room: &Room, clearance_mm: f64) -> Self {
+        let boxes = room
+            .boxes
+            .iter()
+            .map(|b| {
+                let cuboid = Cuboid::from_corner(b.corner_mm, b.size_mm, b.yaw_rad);
+                (b.name.clone(), cuboid, cuboid.bounds())
+            })
+            .collect();
+        let first_mesh = room.boxes.len();
+        let meshes = room
+            .meshes
+            .iter()
+            .enumerate()
+            .filter_map(|(k, m)| {
+                let (vertices, triangles) = (m.vertices_mm.clone(), m.triangles.clone());
+                let oriented = SharedShape::trimesh_with_flags(
+                    vertices.clone(),
+                    triangles.clone(),
+                    TriMeshFlags::ORIENTED,
+                );
+                let (shape, closed) = match oriented {
+                    Ok(shape) => (shape, true),
+                    Err(_) => (SharedShape::trimesh(vertices, triangles).ok()?, false),
+                };
+                let aabb = shape.compute_local_aabb();
+                Some(Mesh {
+                    index: first_mesh + k,
+                    name: m.name.clone(),
+                    shape,
+                    closed,
+                    bounds: [aabb.mins, aabb.maxs],
+                })
+            })
+            .collect();
+        Obstacles {
+            boxes,
+            meshes,
+            size_mm: room.size_mm,
+            clearance_mm,
+        }
+    }
+
+    /// The name of the room's obstacle `index` (as the hits give it).
+    pub fn name(&self, index: usize) -> &str {
+        match self.boxes.get(index) {
+            Some((name, ..)) => name,
+            None => self
+                .meshes
+                .iter()
+                .find(|m| m.index == index)
+                .map_or("", |m| m.name.as_str()),
+        }
+    }
+
+    /// The first obstacle (boxes, then meshes, then the room's sides) that
+    /// `capsule` (in the room frame) overlaps.
+    pub fn capsule_hit(&self, capsule: &Capsule) -> Option<Blocker> {
+        let r = capsule.radius_mm + self.clearance_mm;
+        let reach = |[lo, hi]: &[Point3<f64>; 2]| {
+            let [clo, chi] = capsule.bounds();
+            (0..3)
+                .all(|i| chi[i] + self.clearance_mm >= lo[i] && clo[i] - self.clearance_mm <= hi[i])
+        };
+        let touches = |d: f64| d < r.max(1e-9);
+        if let Some(i) = self.boxes.iter().position(|(_, cuboid, bounds)| {
+            reach(bounds) && touches(cuboid.distance_to_segment(&capsule.a, &capsule.b))
+        }) {
+            return Some(Blocker::Obstacle(i));
+        }
+        if let Some(m) = self
+            .meshes
+            .iter()
+            .find(|m| reach(&m.bounds) && touches(self.mesh_distance(m, capsule)))
+        {
+            return Some(Blocker::Obstacle(m.index));
+        }
+        self.wall_hit(capsule, r)
+    }
+
+    /// The least distance from the capsule's segment to a mesh (zero inside
+    /// a closed one).
+    fn mesh_distance(&self, m: &Mesh, c: &Capsule) -> f64 {
+        let at = Isometry3::identity();
+        if m.closed && (m.shape.contains_point(&at, &c.a) || m.shape.contains_point(&at, &c.b)) {
+            return 0.0;
+        }
+        if (c.b - c.a).norm() < 1e-9 {
+            return m.shape.distance_to_point(&at, &c.a, false);
+        }
+        query::distance(&at, &Segment::new(c.a, c.b), &at, m.shape.as_ref()).unwrap_or(0.0)
+    }
+
+    /// The first of the room's sides the capsule's points come within `r`
+    /// of, or pass beyond.
+    fn wall_hit(&self, c: &Capsule, r: f64) -> Option<Blocker> {
+        let size = self.size_mm;
+        WALLS.into_iter().find_map(|wall| {
+            let gap = |p: &Point3<f64>| match wall {
+                Wall::Floor => p.z,
+                Wall::Ceiling => size.z - p.z,
+                Wall::XMin => p.x,
+                Wall::XMax => size.x - p.x,
+                Wall::YMin => p.y,
+                Wall::YMax => size.y - p.y,
+            };
+            (gap(&c.a).min(gap(&c.b)) < r.max(1e-9)).then_some(Blocker::Wall(wall))
+        })
+    }
+
+    /// What the line of sight from `eye` to `target` meets first, and
+    /// where along it (0 at the eye, 1 at the target; 0 for a box that holds
+    /// the eye). The last `end_gap_mm` before the target is not checked, so
+    /// that an object resting on a shelf is not hidden by the shelf.
+    pub fn first_on_sight_line(
+        &self,
+        eye: &Point3<f64>,
+        target: &Point3<f64>,
+        end_gap_mm: f64,
+    ) -> Option<(Blocker, f64)> {
+        let length = (target - eye).norm();
+        if length <= end_gap_mm {
+            return None;
+        }
+        let max = 1.0 - end_gap_mm / length;
+        let end = eye + (target - eye) * max;
+        let boxes = self
+            .boxes
+            .iter()
+            .enumerate()
+            .filter_map(|(i, (_, cuboid, _))| {
+                entry_along(cuboid, eye, &end).map(|t| (Blocker::Obstacle(i), t * max))
+            });
+        let ray = Ray::new(*eye, target - eye);
+        let at = Isometry3::identity();
+        let meshes = self.meshes.iter().filter_map(|m| {
+            let toi = if m.closed && m.shape.contains_point(&at, eye) {
+                Some(0.0)
+            } else {
+                m.shape.cast_ray(&at, &ray, max, true)
+            };
+            toi.map(|t| (Blocker::Obstacle(m.index), t))
+        });
+        let outside = self
+            .wall_hit(&Capsule::sphere(*eye, 0.0), 0.0)
+            .map(|wall| (wall, 0.0));
+        boxes
+            .chain(meshes)
+            .chain(outside)
+            .min_by(|a, b| a.1.total_cmp(&b.1).then(rank(&a.0).cmp(&rank(&b.0))))
+    }
+}
+
+/// Obstacles before walls, and by index, where two are met at once.
+fn rank(b: &Blocker) -> (u8, usize) {
+    match b {
+        Blocker::Obstacle(i) => (0, *i),
+        _ => (1, 0),
+    }
+}
+
+/// Where along the segment `a`-`b` (0 to 1) it first enters `cuboid`.
+fn entry_along(cuboid: &Cuboid, a: &Point3<f64>, b: &Point3<f64>) -> Option<f64> {
+    if cuboid.distance_to_segment(a, b) > 0.0 {
+        return None;
+    }
+    if cuboid.contains(a) {
+        return Some(0.0);
+    }
+    // The entry is where the distance from the start first reaches zero:
+    // the distance from a to the part of the segment up to t falls with t.
+    let (mut lo, mut hi) = (0.0, 1.0);
+    for _ in 0..60 {
+        let mid = 0.5 * (lo + hi);
+        if cuboid.distance_to_segment(a, &(a + (b - a) * mid)) > 0.0 {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    Some(hi)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::BoxObstacle;
+
+    /// The obstacle a line (a capsule of no radius) meets, by index; the
+    /// walls left out.
+    fn line_hit(o: &Obstacles, a: [f64; 3], b: [f64; 3]) -> Option<usize> {
+        match o.capsule_hit(&Capsule::new(Point3::from(a), Point3::from(b), 0.0)) {
+            Some(Blocker::Obstacle(i)) => Some(i),
+            _ => None,
+        }
+    }
+
+    #[test]
+    fn a_capsule_meets_what_is_within_its_radius_and_the_room_sides() {
+        let o = Obstacles::new(
+            &room_with(vec![block("b", [1000.0, 1000.0, 0.0], [100.0; 3], 0.0)]),
+            0.0,
+        );
+        let arm = |y: f64, r: f64| {
+            o.capsule_hit(&Capsule::new(
+                Point3::new(900.0, y, 50.0),
+                Point3::new(1200.0, y, 50.0),
+                r,
+            ))
+        };
+        assert_eq!(
+            arm(1130.0, 40.0),
+            Some(Blocker::Obstacle(0)),
+            "30 mm away, radius 40"
+        );
+        assert_eq!(arm(1150.0, 40.0), None, "50 mm away");
+        let low = o.capsule_hit(&Capsule::new(
+            Point3::new(2000.0, 2000.0, 30.0),
+            Point3::new(2100.0, 2000.0, 500.0),
+            40.0,
+        ));
+        assert_eq!(low, Some(Blocker::Wall(Wall::Floor)));
+        let clear = o.capsule_hit(&Capsule::new(
+            Point3::new(2000.0, 2000.0, 50.0),
+            Point3::new(2100.0, 2000.0, 500.0),
+            40.0,
+        ));
+        assert_eq!(clear, None);
+    }
+
+    fn room_with(boxes: Vec<BoxObstacle>) -> Room {
+        Room {
+            name: "r".into(),
+            size_mm: Vector3::new(4000.0, 4000.0, 2500.0),
+            boxes,
+            meshes: Vec::new(),
+            targets: vec![],
+            surfaces: vec![],
+        }
+    }
+
+    fn block(name: &str, corner: [f64; 3], size: [f64; 3], yaw_rad: f64) -> BoxObstacle {
+        BoxObstacle {
+            name: name.into(),
+            corner_mm: Point3::from(corner),
+            size_mm: Vector3::from(size),
+            yaw_rad,
+        }
+    }
+
+    #[test]
+    fn a_segment_through_a_box_hits_it_and_one_beside_it_does_not() {
+        let o = Obstacles::new(
+            &room_with(vec![block("b", [0.0, 0.0, 0.0], [100.0; 3], 0.0)]),
+            0.0,
+        );
+        let hit = |a: [f64; 3], b: [f64; 3]| line_hit(&o, a, b);
+        assert_eq!(hit([-50.0, 50.0, 50.0], [150.0, 50.0, 50.0]), Some(0));
+        assert_eq!(
+            hit([50.0, 50.0, 50.0], [60.0, 60.0, 60.0]),
+            Some(0),
+            "inside"
+        );
+        assert_eq!(hit([-50.0, 50.0, 150.0], [150.0, 50.0, 150.0]), None);
+        assert_eq!(
+            hit([-50.0, 50.0, 50.0], [-10.0, 50.0, 50.0]),
+            None,
+            "stops short"
+        );
+    }
+
+    /// A closed cube of side 100 mm at the origin, faces outwards.
+    fn cube_mesh() -> crate::scene::MeshObstacle {
+        let v: Vec<Point3<f64>> = (0..8)
+            .map(|i| {
+                Point3::new(
+                    f64::from(i >> 2) * 100.0,
+                    f64::from((i >> 1) & 1) * 100.0,
+                    f64::from(i & 1) * 100.0,
+                )
+            })
+            .collect();
+        let quads = [
+            [0, 2, 6, 4],
+            [1, 5, 7, 3],
+            [0, 4, 5, 1],
+            [2, 3, 7, 6],
+            [0, 1, 3, 2],
+            [4, 6, 7, 5],
+        ];
+        let triangles = quads
+            .iter()
+            .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
+            .collect();
+        crate::scene::MeshObstacle {
+            name: "cube".into(),
+            vertices_mm: v,
+            triangles,
+        }
+    }
+
+    #[test]
+    fn a_mesh_is_hit_through_and_within() {
+        let mut room = room_with(vec![block("b", [1000.0; 3], [10.0; 3], 0.0)]);
+        room.meshes.push(cube_mesh());
+        let o = Obstacles::new(&room, 0.0);
+        let hit = |a: [f64; 3], b: [f64; 3]| line_hit(&o, a, b);
+        assert_eq!(
+            hit([-50.0, 50.0, 50.0], [150.0, 50.0, 50.0]),
+            Some(1),
+            "through"
+        );
+        assert_eq!(
+            hit([40.0, 50.0, 50.0], [60.0, 50.0, 50.0]),
+            Some(1),
+            "inside"
+        );
+        assert_eq!(
+            hit([-50.0, 50.0, 150.0], [150.0, 50.0, 150.0]),
+            None,
+            "above"
+        );
+        assert_eq!(o.name(1), "cube");
+    }
+
+    #[test]
+    fn a_turned_box_is_turned_about_its_corner() {
+        // Turned 90 degrees, the box spans x from -100 to 0.
+        let b = block(
+            "b",
+            [0.0, 0.0, 0.0],
+            [100.0, 10.0, 100.0],
+            std::f64::consts::FRAC_PI_2,
+        );
+        let o = Obstacles::new(&room_with(vec![b]), 0.0);
+        let at = |x: f64, y: f64| line_hit(&o, [x, y, 1.0], [x, y, 50.0]);
+        assert_eq!(at(-5.0, 50.0), Some(0));
+        assert_eq!(at(5.0, 50.0), None);
+    }
+
+    #[test]
+    fn the_sight_line_names_the_nearest_blocker_and_spares_the_shelf_under_the_target() {
+        // Along x at y = 1000, z = 50, from x = 1000.
+        let room = room_with(vec![
+            block("far", [1200.0, 950.0, 0.0], [10.0, 100.0, 100.0], 0.0),
+            block("near", [1100.0, 950.0, 0.0], [10.0, 100.0, 100.0], 0.0),
+            block("shelf", [1300.0, 950.0, 0.0], [100.0, 100.0, 50.0], 0.0),
+        ]);
+        let o = Obstacles::new(&room, 0.0);
+        let eye = Point3::new(1000.0, 1000.0, 50.0);
+        let (blocker, at) = o
+            .first_on_sight_line(&eye, &Point3::new(1350.0, 1000.0, 50.0), 10.0)
+            .unwrap();
+        assert_eq!(blocker, Blocker::Obstacle(1), "near");
+        assert!((at - 100.0 / 350.0).abs() < 1e-6, "{at}");
+        let above_shelf = Point3::new(1350.0, 1000.0, 55.0);
+        let from_above = Point3::new(1350.0, 1000.0, 500.0);
+        assert_eq!(o.first_on_sight_line(&from_above, &above_shelf, 10.0), None);
+        let inside = Point3::new(1105.0, 1000.0, 50.0);
+        let seen = o.first_on_sight_line(&inside, &Point3::new(1000.0, 1000.0, 50.0), 10.0);
+        assert_eq!(
+            seen,
+            Some((Blocker::Obstacle(1), 0.0)),
+            "an eye inside a box sees nothing"
+        );
+        let outside = Point3::new(-5.0, 1000.0, 50.0);
+        let seen = o.first_on_sight_line(&outside, &eye, 10.0);
+        assert_eq!(
+            seen,
+            Some((Blocker::Wall(Wall::XMin), 0.0)),
+            "nor one beyond a wall"
+        );
+    }
+}

@@ -1,0 +1,95 @@
+//! A posture against everything it may not pass through: the room's
+//! obstacles and sides (`Obstacles`), the parts of the person and their
+//! base that no joint moves (`OwnBody`: legs, the chair), and the person's
+//! other moving parts (the hand through the trunk). The chain's solids come
+//! in the base frame and are carried into the room by the base pose.
+
+use crate::geometry::Capsule;
+use crate::kinematics::{Chain, Owner, Volumes};
+use crate::scene::{BasePose, Blocker, Collision, OwnBody};
+
+use super::Obstacles;
+
+/// Obstacles seen from a placed person.
+#[derive(Clone, Copy)]
+pub struct PlacedObstacles<'a> {
+    pub obstacles: &'a Obstacles,
+    /// The person's legs and their base's parts (none: the stick figure of
+    /// a scenario that does not check them).
+    pub own: &'a OwnBody,
+    pub base_pose: BasePose,
+}
+
+impl PlacedObstacles<'_> {
+    /// What one solid of the person, in the base frame, overlaps first:
+    /// their own legs or base, then the room.
+    pub fn capsule_hit(&self, capsule: &Capsule) -> Option<Blocker> {
+        if let Some(i) = self.own.hit(capsule) {
+            return Some(Blocker::Own(i));
+        }
+        let room = Capsule::new(
+            self.base_pose.to_room(&capsule.a),
+            self.base_pose.to_room(&capsule.b),
+            capsule.radius_mm,
+        );
+        self.obstacles.capsule_hit(&room)
+    }
+
+    /// The first collision of `chain` in posture `q`: each solid of the
+    /// chain, from the base out, against the person's own legs and base and
+    /// the room; then the solids of the chain against each other. The
+    /// effector's link may touch what the effector reaches: it is checked
+    /// ending its radius short of the effector and `end_allowance_mm`
+    /// thinner.
+    pub fn posture_hit(
+        &self,
+        chain: &Chain,
+        q: &[f64],
+        end_allowance_mm: f64,
+    ) -> Option<Collision> {
+        self.volumes_hit(chain, &chain.volumes(q), end_allowance_mm)
+    }
+
+    /// The first collision of `chain`'s solids `v` in some posture, as
+    /// [`PlacedObstacles::posture_hit`] finds it.
+    pub fn volumes_hit(
+        &self,
+        chain: &Chain,
+        v: &Volumes,
+        end_allowance_mm: f64,
+    ) -> Option<Collision> {
+        let end = Owner::Link(chain.joints.len());
+        for (capsule, &part) in v.capsules.iter().zip(&v.owners) {
+            let tested = if part == end {
+                match shortened(capsule, end_allowance_mm) {
+                    Some(c) => c,
+                    None => continue,
+                }
+            } else {
+                *capsule
+            };
+            if let Some(blocker) = self.capsule_hit(&tested) {
+                return Some(Collision { part, blocker });
+            }
+        }
+        v.self_hit().map(|(i, j)| Collision {
+            part: v.owners[j],
+            blocker: Blocker::Body(v.owners[i]),
+        })
+    }
+}
+
+/// The effector's link as it is checked: ending its radius short of the
+/// effector, and `allowance_mm` (the tolerance) thinner. The hand may so
+/// touch what it reaches with its end (fingers on a switch on a wall), or
+/// lie on it (a hand on a shelf, its centre a hand's radius above the
+/// board) within the tolerance, but not pass into it. A link without a
+/// radius stops `allowance_mm` (a millimetre at least) short. None if
+/// nothing is left.
+fn shortened(c: &Capsule, allowance_mm: f64) -> Option<Capsule> {
+    let gap_mm = c.radius_mm.max(allowance_mm).max(1.0);
+    let radius_mm = (c.radius_mm - allowance_mm).max(0.0);
+    let link = c.b - c.a;
+    let length = link.norm();
+    (length > gap_mm).then(|| Capsule::new(c.a, c.a + link * (1.0 - gap_mm / length), radius_mm))
+}

@@ -1,0 +1,91 @@
+//! A placed person as solids in the room, for a picture: every link of the
+//! body in a posture (the joints a task moved, the others at neutral), the
+//! head, the legs and the base's parts where the base stands, and the
+//! room's boxes around them.
+
+use crate::geometry::{Capsule, Cuboid, Shape, Solid};
+use crate::kinematics::{Body, Owner};
+use crate::picture::Item;
+use crate::scene::{BasePose, OwnBody, Room};
+
+/// Colours: skin for the moving body, a darker skin for the legs, grey
+/// for the base, sand for the room's boxes.
+pub const SKIN: &str = "#e8b48a";
+pub const LEGS: &str = "#c8906a";
+pub const BASE: &str = "#7d8590";
+pub const FURNITURE: &str = "#d9ceb8";
+
+/// The body in posture `q` (a value per joint of `body`, in its order),
+/// standing at `pose`, with its legs and base `own`: each solid once, in
+/// the room frame.
+pub fn person(body: &Body, q: &[f64], pose: BasePose, own: &OwnBody) -> Vec<Item> {
+    let mut items = Vec::new();
+    let mut drawn = vec![false; body.joints.len()];
+    let mut riders_drawn = false;
+    for index in 0..body.effectors.len() {
+        let chain = body.chain(index);
+        let path = body.path(body.effectors[index].joint);
+        let chain_q: Vec<f64> = path.iter().map(|&j| q[j]).collect();
+        let volumes = chain.volumes(&chain_q);
+        for (capsule, &owner) in volumes.capsules.iter().zip(&volumes.owners) {
+            let new = match owner {
+                Owner::Link(j) if j < path.len() => !std::mem::replace(&mut drawn[path[j]], true),
+                Owner::Link(_) => true,
+                Owner::Rider(_) => !riders_drawn,
+            };
+            if new && capsule.radius_mm > 0.0 {
+                items.push(Item {
+                    shape: Shape::Capsule(capsule_in_room(capsule, pose)),
+                    fill: SKIN.into(),
+                    opacity: 0.9,
+                    label: chain.volume_name(owner).to_string(),
+                });
+            }
+        }
+        riders_drawn = true;
+    }
+    items.extend(own.solids.iter().map(|solid| Item {
+        shape: shape_in_room(&solid.shape, pose),
+        fill: if is_leg(solid) { LEGS } else { BASE }.into(),
+        // The base's parts let the body behind them show through.
+        opacity: if is_leg(solid) { 0.9 } else { 0.45 },
+        label: solid.name.clone(),
+    }));
+    items
+}
+
+/// The room's boxes.
+pub fn furniture(room: &Room) -> Vec<Item> {
+    room.boxes
+        .iter()
+        .map(|b| Item {
+            shape: Shape::Cuboid(Cuboid::from_corner(b.corner_mm, b.size_mm, b.yaw_rad)),
+            fill: FURNITURE.into(),
+            opacity: 0.6,
+            label: b.name.clone(),
+        })
+        .collect()
+}
+
+/// Whether a solid of the person's own body is a part of them (a thigh, a
+/// foot) rather than of their base.
+fn is_leg(solid: &Solid) -> bool {
+    ["thigh", "shank", "foot"]
+        .iter()
+        .any(|part| solid.name.ends_with(part))
+}
+
+fn capsule_in_room(c: &Capsule, pose: BasePose) -> Capsule {
+    Capsule::new(pose.to_room(&c.a), pose.to_room(&c.b), c.radius_mm)
+}
+
+fn shape_in_room(shape: &Shape, pose: BasePose) -> Shape {
+    match shape {
+        Shape::Capsule(c) => Shape::Capsule(capsule_in_room(c, pose)),
+        Shape::Cuboid(c) => Shape::Cuboid(Cuboid {
+            centre: pose.to_room(&c.centre),
+            yaw_rad: c.yaw_rad + pose.heading_rad,
+            ..*c
+        }),
+    }
+}

@@ -1,0 +1,148 @@
+//! The parts of a person that no joint moves, for the base they stand or
+//! sit on: the legs, and the upright trunk, head and shoulders as a column
+//! (what the floor must find room for); and, once the base has placed
+//! them, the person's own body and the base's parts as solids the links
+//! must stay out of.
+
+use nalgebra::Point3;
+
+use crate::geometry::{Capsule, Cuboid, Shape, Solid};
+use crate::kinematics::{Body, Legs, Owner, Posture};
+
+/// What a base needs to know of the person on it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Physique {
+    pub legs: Option<Legs>,
+    /// As the mannequin declares it (`None`: as the base has it).
+    pub posture: Option<Posture>,
+    /// The upright trunk, head and shoulders: least and greatest corners
+    /// in the base frame, at the neutral posture.
+    pub column_mm: Option<[Point3<f64>; 2]>,
+}
+
+impl Physique {
+    pub fn of(body: &Body) -> Self {
+        Physique {
+            legs: body.legs.clone(),
+            posture: body.posture,
+            column_mm: column(body),
+        }
+    }
+}
+
+/// The upright column of `body`: the first link of its first chain (the
+/// trunk), the shoulders level with the trunk's top, and the spheres (the
+/// head), at the neutral posture, as wide to the left as to the right.
+fn column(body: &Body) -> Option<[Point3<f64>; 2]> {
+    let chain = body.chain(0);
+    let v = chain.volumes(&chain.neutral());
+    let trunk = v
+        .owners
+        .iter()
+        .position(|o| matches!(o, Owner::Link(_)))
+        .map(|i| v.capsules[i])?;
+    let top = trunk.a.z.max(trunk.b.z) - 1.0;
+    let parts = v.capsules.iter().zip(&v.owners).filter(|(c, o)| {
+        matches!(o, Owner::Rider(_)) || (c.a.z >= top && c.b.z >= top) || **c == trunk
+    });
+    let mut bounds = trunk.bounds();
+    for (c, _) in parts {
+        let [lo, hi] = c.bounds();
+        bounds = [bounds[0].inf(&lo), bounds[1].sup(&hi)];
+    }
+    let half_width = bounds[0].y.abs().max(bounds[1].y.abs());
+    bounds[0].y = -half_width;
+    bounds[1].y = half_width;
+    Some(bounds)
+}
+
+/// The parts of a person and their base that no joint moves, in the base
+/// frame: the legs, the chair or the rollator. A link must stay out of
+/// them, but for its part within `pelvis_mm` of the hip point, where the
+/// trunk meets the seat and the thighs.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct OwnBody {
+    pub solids: Vec<Solid>,
+    pub pelvis_mm: f64,
+    /// Each solid's axis-aligned bounds.
+    bounds: Vec<[Point3<f64>; 2]>,
+}
+
+impl OwnBody {
+    pub fn new(solids: Vec<Solid>, pelvis_mm: f64) -> Self {
+        OwnBody {
+            bounds: solids.iter().map(|s| s.shape.bounds()).collect(),
+            solids,
+            pelvis_mm,
+        }
+    }
+
+    /// The first solid (by index) that `capsule` (in the base frame)
+    /// overlaps, but for its part within the pelvis.
+    pub fn hit(&self, capsule: &Capsule) -> Option<usize> {
+        let apart = |[lo, hi]: &[Point3<f64>; 2], b: &[Point3<f64>; 2]| {
+            (0..3).any(|i| hi[i] < b[0][i] || lo[i] > b[1][i])
+        };
+        // Most links are nowhere near the legs or the chair: the bounds
+        // say so before the pelvis is cut away.
+        let whole = capsule.bounds();
+        if self.bounds.iter().all(|b| apart(&whole, b)) {
+            return None;
+        }
+        let c = self.outside_pelvis(capsule)?;
+        let cut = c.bounds();
+        self.solids.iter().zip(&self.bounds).position(|(s, b)| {
+            !apart(&cut, b) && s.shape.distance_to_segment(&c.a, &c.b) < c.radius_mm.max(1e-9)
+        })
+    }
+
+    /// The first solid the line from `a` to `b` (in the base frame) enters,
+    /// and where along it (0 at `a`, 1 at `b`); the last `end_gap_mm` before
+    /// `b` is not looked at.
+    pub fn first_on_line(
+        &self,
+        a: &Point3<f64>,
+        b: &Point3<f64>,
+        end_gap_mm: f64,
+    ) -> Option<(usize, f64)> {
+        let length = (b - a).norm();
+        if length <= end_gap_mm {
+            return None;
+        }
+        let max = 1.0 - end_gap_mm / length;
+        let at = |t: f64| a + (b - a) * t;
+        let meets = |s: &Solid, t: f64| s.shape.distance_to_segment(a, &at(t)) <= 0.0;
+        self.solids
+            .iter()
+            .enumerate()
+            .filter(|(_, s)| meets(s, max))
+            .map(|(i, s)| {
+                // The distance from `a` to the part of the line up to t
+                // falls with t: the entry is where it first reaches zero.
+                let (mut lo, mut hi) = (0.0, max);
+                for _ in 0..50 {
+                    let mid = 0.5 * (lo + hi);
+                    if meets(s, mid) {
+                        hi = mid;
+                    } else {
+                        lo = mid;
+                    }
+                }
+                (i, hi)
+            })
+            .min_by(|x, y| x.1.total_cmp(&y.1))
+    }
+
+    /// `capsule` (in the base frame) without its part within the pelvis.
+    pub fn outside_pelvis(&self, capsule: &Capsule) -> Option<Capsule> {
+        if self.pelvis_mm <= 0.0 {
+            return Some(*capsule);
+        }
+        capsule.outside_ball(&Point3::origin(), self.pelvis_mm)
+    }
+}
+
+/// The column's corners as a box, a solid of that name.
+pub fn column_solid(name: &str, [lo, hi]: [Point3<f64>; 2]) -> Solid {
+    Solid::new(name, Shape::Cuboid(Cuboid::between(lo, hi)))
+}
