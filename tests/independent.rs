@@ -2,40 +2,18 @@
 //! reachable: every posture an example reports is checked by forward
 //! kinematics written again here (4x4 matrices of eq. 3 of the paper, in
 //! homogeneous coordinates), from the report's own rounded numbers, and its
-//! links are checked against the room's boxes by a slab test written here
-//! too: a reachable answer passes through no box, and a reported collision
-//! names a box a link meets.
+//! solids (`body_check.rs`) against the room's boxes, walls, floor and
+//! ceiling, the person's legs and base and the person's other parts: a
+//! reachable answer passes through nothing, and a reported collision names
+//! something a part meets.
 
 use nalgebra::{Matrix4, Vector4};
 use reach::kinematics::{Chain, JointKind};
 use reach::plugin::Registry;
 use reach::report::{BaseReport, Posture, ReachReport, TaskReport};
-use reach::scene::{BoxObstacle, Room};
 use reach::Input;
 
-/// Eq. 3: the DH matrix for theta, d, alpha, a.
-fn dh(theta: f64, d: f64, alpha: f64, a: f64) -> Matrix4<f64> {
-    let (st, ct) = theta.sin_cos();
-    let (sa, ca) = alpha.sin_cos();
-    Matrix4::new(
-        ct,
-        -ca * st,
-        sa * st,
-        a * ct, //
-        st,
-        ca * ct,
-        -sa * ct,
-        a * st, //
-        0.0,
-        sa,
-        ca,
-        d, //
-        0.0,
-        0.0,
-        0.0,
-        1.0,
-    )
-}
+use super::body_check::{dh, everything_met, parts};
 
 /// The hip, every joint frame's origin and the effector, in the room, for
 /// the report's posture and base pose; the effector is the last.
@@ -70,63 +48,9 @@ fn posture_points(chain: &Chain, posture: &Posture, base: &BaseReport) -> Vec<[f
     points
 }
 
-/// Whether the segment a-b meets the box grown by `grow_mm` (negative:
-/// shrunk), by the slab method in the box's own frame.
-fn segment_meets_box(a: [f64; 3], b: [f64; 3], bx: &BoxObstacle, grow_mm: f64) -> bool {
-    let (s, c) = bx.yaw_rad.sin_cos();
-    let local = |p: [f64; 3]| {
-        let (dx, dy) = (p[0] - bx.corner_mm.x, p[1] - bx.corner_mm.y);
-        [c * dx + s * dy, -s * dx + c * dy, p[2] - bx.corner_mm.z]
-    };
-    let (a, b) = (local(a), local(b));
-    let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
-    for i in 0..3 {
-        let (lo, hi) = (-grow_mm, bx.size_mm[i] + grow_mm);
-        let d = b[i] - a[i];
-        if d.abs() < 1e-12 {
-            if a[i] < lo || a[i] > hi {
-                return false;
-            }
-            continue;
-        }
-        let (mut ta, mut tb) = ((lo - a[i]) / d, (hi - a[i]) / d);
-        if ta > tb {
-            std::mem::swap(&mut ta, &mut tb);
-        }
-        t0 = t0.max(ta);
-        t1 = t1.min(tb);
-    }
-    t0 <= t1
-}
-
-/// The boxes the links meet, the last link stopping `end_gap_mm` short of
-/// the effector (as the solvers' rule says).
-fn boxes_met(points: &[[f64; 3]], room: &Room, end_gap_mm: f64, grow_mm: f64) -> Vec<String> {
-    let n = points.len();
-    let mut met = Vec::new();
-    for i in 0..n - 1 {
-        let (a, mut b) = (points[i], points[i + 1]);
-        let length = (0..3).map(|k| (b[k] - a[k]).powi(2)).sum::<f64>().sqrt();
-        if length < 1e-6 {
-            continue;
-        }
-        if i == n - 2 {
-            if length <= end_gap_mm {
-                continue;
-            }
-            let f = 1.0 - end_gap_mm / length;
-            b = [0, 1, 2].map(|k| a[k] + (b[k] - a[k]) * f);
-        }
-        for bx in &room.boxes {
-            if segment_meets_box(a, b, bx, grow_mm) && !met.contains(&bx.name) {
-                met.push(bx.name.clone());
-            }
-        }
-    }
-    met
-}
-
 /// Rounding the posture to 0.01 degree moves the hand by at most this much.
+/// (Reports round to 0.1 degree in text, 0.01 in JSON; the check reads the
+/// report structure, at 0.01.)
 const ROUNDING_MM: f64 = 1.5;
 
 #[test]
@@ -163,10 +87,16 @@ fn every_reported_posture_is_what_the_report_says() {
             }
             let points = points_in_room(chain, r);
             let room = &scenario.rooms[0];
-            let gap = r.tolerance_mm.max(1.0);
+            let index = scenario
+                .persons
+                .iter()
+                .position(|p| p.name == r.person)
+                .unwrap();
+            let own = scenario.bases[index].own_body();
+            let solids = parts(chain, &r.posture, &r.base, r.tolerance_mm);
             if r.ok {
                 // Shrunk by the rounding, so that grazing is not a miss.
-                let met = boxes_met(&points, room, gap + ROUNDING_MM, -ROUNDING_MM);
+                let met = everything_met(&solids, room, own, &r.base, -ROUNDING_MM);
                 assert!(
                     met.is_empty(),
                     "{} by {}: reachable through {met:?}",
@@ -174,13 +104,19 @@ fn every_reported_posture_is_what_the_report_says() {
                     r.person
                 );
             }
-            if let Some(obstacle) = &r.collision {
-                let met = boxes_met(&points, room, gap - ROUNDING_MM, ROUNDING_MM);
+            if let Some(blocker) = &r.collision {
+                let met = everything_met(&solids, room, own, &r.base, ROUNDING_MM);
+                let named = met
+                    .iter()
+                    .any(|m| m == blocker || m.contains(blocker.as_str()))
+                    || (blocker.starts_with("the wall")
+                        || blocker.starts_with("the floor")
+                        || blocker.starts_with("the ceiling"))
+                        && met.iter().any(|m| m == "a wall");
                 assert!(
-                    met.contains(obstacle),
-                    "{} by {}: no link meets {obstacle}",
-                    r.name,
-                    r.person
+                    named,
+                    "{} by {}: nothing meets {blocker}: {met:?}",
+                    r.name, r.person
                 );
                 collisions += 1;
             }
@@ -263,4 +199,135 @@ fn every_reported_gaze_is_what_the_report_says() {
         checked += 1;
     }
     assert_eq!(checked, 8 + 2);
+}
+
+mod random_rooms {
+    //! The same check over random rooms: boards and blocks at random
+    //! around people of the standard library on their bases, and targets
+    //! at random. Whatever the search finds, no posture it calls reachable
+    //! passes through anything, and a collision it reports is real.
+
+    use proptest::prelude::*;
+    use reach::plugin::Registry;
+    use reach::report::TaskReport;
+    use reach::Input;
+
+    use super::super::body_check::{everything_met, parts};
+    use super::ROUNDING_MM;
+
+    thread_local! {
+        /// Cases run (low 32 bits) and refused by the checker (high).
+        static RUN: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
+        /// Targets reached.
+        static REACHED: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
+    }
+
+    const PEOPLE: [(&str, &str); 4] = [
+        ("woman_5th_seated", "manual_wheelchair"),
+        ("man_95th_seated", "wheelchair { armrests true }"),
+        ("woman_5th", "rollator"),
+        ("man_95th", "rollator"),
+    ];
+
+    /// A box: corner and size in a 3 m x 3 m x 2.5 m room.
+    fn boxes() -> impl Strategy<Value = Vec<[f64; 6]>> {
+        let one = (
+            0.0..2600.0f64,
+            0.0..2600.0f64,
+            0.0..2200.0f64,
+            20.0..800.0f64,
+            20.0..800.0f64,
+            20.0..600.0f64,
+        )
+            .prop_map(|(x, y, z, w, d, h)| {
+                [
+                    x,
+                    y,
+                    z,
+                    w.min(3000.0 - x),
+                    d.min(3000.0 - y),
+                    h.min(2500.0 - z),
+                ]
+            });
+        prop::collection::vec(one, 1..5)
+    }
+
+    fn scenario(person: usize, boxes: &[[f64; 6]], targets: &[[f64; 3]]) -> String {
+        let (mannequin, base) = PEOPLE[person];
+        let mut text =
+            String::from("units mm deg\nuse std::people\nroom r {\n  size 3000 x 3000 x 2500\n");
+        for (i, b) in boxes.iter().enumerate() {
+            text += &format!(
+                "  box b{i} at ({:.0}, {:.0}, {:.0}) size ({:.0}, {:.0}, {:.0})\n",
+                b[0], b[1], b[2], b[3], b[4], b[5]
+            );
+        }
+        for (i, t) in targets.iter().enumerate() {
+            text += &format!("  target t{i} at ({:.0}, {:.0}, {:.0})\n", t[0], t[1], t[2]);
+        }
+        text += &format!("}}\nperson p {{\n  mannequin {mannequin}\n  base {base}\n}}\n");
+        let names: Vec<String> = (0..targets.len()).map(|i| format!("t{i}")).collect();
+        text += &format!(
+            "reach {} by p {{ blocked_solver incremental {{ starts 8 steer_clear true }} }}\n",
+            names.join(", ")
+        );
+        text
+    }
+
+    #[test]
+    fn most_random_rooms_are_run_not_refused() {
+        no_reported_posture_passes_through_anything();
+        let (run, refused) = RUN.with(|r| (r.get() & 0xffff_ffff, r.get() >> 32));
+        let reached = REACHED.with(|c| c.get());
+        eprintln!("{run} run, {refused} refused, {reached} targets reached");
+        assert!(
+            run >= 100 && refused <= run / 4,
+            "{run} run, {refused} refused"
+        );
+        assert!(reached >= run, "{reached} reached of {run} rooms' targets");
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(128))]
+
+        fn no_reported_posture_passes_through_anything(
+            person in 0usize..PEOPLE.len(),
+            boxes in boxes(),
+            targets in prop::collection::vec(prop::array::uniform3(100.0..2400.0f64), 3),
+        ) {
+            let inside = |t: &[f64; 3]| boxes.iter().any(|b| (0..3).all(|i| t[i] >= b[i] && t[i] <= b[i] + b[i + 3]));
+            let targets: Vec<[f64; 3]> = targets.into_iter().filter(|t| !inside(t)).collect();
+            prop_assume!(!targets.is_empty());
+            let text = scenario(person, &boxes, &targets);
+            let registry = Registry::builtin();
+            let (_, checked) = reach::check(Input::Text { name: "random.reach", text: &text }, &registry);
+            // A room the base fits nowhere in, or a target inside a box, is
+            // refused by the checker: not this test's business.
+            let Ok(scenario) = checked else {
+                RUN.with(|r| r.set(r.get() + (1 << 32)));
+                return Ok(());
+            };
+            RUN.with(|r| r.set(r.get() + 1));
+            let report = reach::run(&scenario);
+            let own = scenario.bases[0].own_body();
+            let body = &scenario.persons[0].body;
+            for task in &report.tasks {
+                let TaskReport::Reach(r) = task else { continue };
+                let chain = body.chain_named(Some(&r.effector)).unwrap();
+                let solids = parts(&chain, &r.posture, &r.base, r.tolerance_mm);
+                let room = &scenario.rooms[0];
+                if r.ok {
+                    REACHED.with(|c| c.set(c.get() + 1));
+                    let met = everything_met(&solids, room, own, &r.base, -ROUNDING_MM);
+                    prop_assert!(met.is_empty(), "{}: reachable through {met:?}\n{text}", r.name);
+                }
+                if let Some(blocker) = &r.collision {
+                    let met = everything_met(&solids, room, own, &r.base, ROUNDING_MM);
+                    let wall = ["the wall", "the floor", "the ceiling"].iter().any(|w| blocker.starts_with(w));
+                    let named = met.iter().any(|m| m.contains(blocker.as_str())) || wall && met.iter().any(|m| m == "a wall");
+                    prop_assert!(named, "{}: nothing meets {blocker}: {met:?}\n{text}", r.name);
+                }
+            }
+        }
+    }
 }

@@ -2,9 +2,12 @@
 //! under tests/ (ARCHITECTURE.md says what each checks).
 
 mod bases;
+mod body;
+mod body_check;
 mod cache;
 mod checker;
 mod cli;
+mod docs_picture;
 mod gaze;
 mod golden;
 mod hostile;

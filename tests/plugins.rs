@@ -33,7 +33,7 @@ fn registering_adds_to_the_listing_and_validates_options() {
         registry.names(PluginKind::Solver),
         ["incremental", "dls", "fabrik", "sampling"]
     );
-    let text = custom_solver::SCENARIO.replace("samples 20000", "sample 20000");
+    let text = custom_solver::SCENARIO.replace("samples 100000", "sample 100000");
     let (_, checked) = reach::check(
         reach::Input::Text {
             name: "t.reach",
@@ -65,9 +65,10 @@ fn every_plugin_builds_from_its_declared_defaults() {
             panic!("solver {name}: {e}");
         }
     }
+    let physique = physique();
     for name in registry.names(PluginKind::Base) {
         let p = registry.base(name).unwrap();
-        if let Err(e) = p.build(&fill(p.params())) {
+        if let Err(e) = p.build(&fill(p.params()), &physique) {
             panic!("base {name}: {e}");
         }
     }
@@ -87,19 +88,28 @@ fn every_plugin_builds_from_its_declared_defaults() {
     }
 }
 
+/// The body of `std::arm`'s mannequin, legs and all, as a base sees it.
+fn physique() -> reach::scene::Physique {
+    let body = reach::stdlib::body("arm", "right_arm").expect("std::arm checks");
+    reach::scene::Physique::of(&body)
+}
+
 #[test]
 fn options_built_by_hand_that_miss_a_value_are_an_error_not_a_panic() {
     use reach::plugin::{Options, Value};
     let registry = Registry::builtin();
     let fixed = registry.base("fixed").unwrap();
     let missing = fixed
-        .build(&Options::default())
+        .build(&Options::default(), &physique())
         .err()
         .expect("`at` is required");
     assert_eq!(missing.to_string(), "option `at` must be given");
     let params = fixed.params();
     let at = params.iter().find(|p| p.name == "at").unwrap().name;
     let wrong = Options::default().set(at, Value::Length(1.0));
-    let wrong = fixed.build(&wrong).err().expect("`at` is a point");
+    let wrong = fixed
+        .build(&wrong, &physique())
+        .err()
+        .expect("`at` is a point");
     assert_eq!(wrong.to_string(), "option `at` must be a point (x, y, z)");
 }

@@ -1,8 +1,8 @@
 //! The retry where obstacles block: a solver that ignores obstacles while
 //! it searches (`incremental { starts 1 }`) finds only a posture through
-//! the open door; with the default `blocked_retries` the search tries the
-//! placement again with `blocked_solver` and finds a clear one, so the
-//! target is no longer called unreachable.
+//! the open door or the board under it; with the default `blocked_retries`
+//! the search tries the placement again with `blocked_solver` and finds a
+//! clear one, so the target is no longer called unreachable.
 
 use reach::plugin::Registry;
 use reach::report::{ReachReport, Report, TaskReport};
@@ -51,7 +51,8 @@ fn without_the_retry_the_only_posture_found_goes_through_the_door() {
         run("reach mug_behind by ben { solver incremental { starts 1 } blocked_retries 0 }\n");
     let r = reach_report(&report, 0);
     assert!(!r.ok, "{r:?}");
-    assert_eq!(r.collision.as_deref(), Some("door"));
+    let through = r.collision.as_deref();
+    assert!(matches!(through, Some("door" | "cabinet_bottom")), "{r:?}");
     assert!(r.distance_mm <= r.tolerance_mm, "{r:?}");
 }
 
@@ -66,7 +67,9 @@ fn the_retry_finds_a_clear_posture_round_the_door() {
 #[test]
 fn a_map_counts_what_the_retry_added_and_loses_nothing() {
     // The retry runs only where no placement reached, so the points reached
-    // without it are reached with it, and `retried` counts the others.
+    // without it are reached with it, and more besides: those the retry
+    // found (`retried`), and their neighbours along a row, which start
+    // from them.
     let map = "map cabinet_bottom.top by ben { step 100mm solver incremental { starts 1 }";
     let report = run(&format!("{map} blocked_retries 0 }}\n{map} }}\n"));
     let [TaskReport::Map(without), TaskReport::Map(with)] = &report.tasks[..] else {
@@ -74,8 +77,11 @@ fn a_map_counts_what_the_retry_added_and_loses_nothing() {
     };
     assert_eq!(without.retried, 0);
     assert!(with.retried > 0, "{with:?}");
-    assert_eq!(with.reachable - with.retried, without.reachable);
+    assert!(
+        with.reachable >= without.reachable + with.retried,
+        "{with:?}"
+    );
     for (a, b) in without.cells.iter().zip(&with.cells) {
-        assert!(!a.reachable || b == a, "{a:?} {b:?}");
+        assert!(!a.reachable || b.reachable, "{a:?} {b:?}");
     }
 }

@@ -80,9 +80,13 @@ fn people_scale_with_stature_and_sit_by_the_seated_table() {
         let (_, eyes) = neutral_grip_and_eyes(name);
         assert!((eyes.z - eye_above_hip(h)).abs() < 1e-6, "{name}: {eyes}");
     }
-    // Seated: eyes 724 mm above the seat for the 5th-percentile woman, 862
-    // for the 95th-percentile man, with the hip 100 mm above the seat.
-    for (name, above_seat) in [("woman_5th_seated", 724.0), ("man_95th_seated", 862.0)] {
+    // Seated: the eyes as high above the seat as ANSUR II's sitting eye
+    // height (698, 804 and 860 mm), with the hip 100 mm above the seat.
+    for (name, above_seat) in [
+        ("woman_5th_seated", 698.0),
+        ("man_50th_seated", 804.0),
+        ("man_95th_seated", 860.0),
+    ] {
         let (_, eyes) = neutral_grip_and_eyes(name);
         assert!(
             (eyes.z - (above_seat - 100.0)).abs() < 1e-6,

@@ -1,0 +1,311 @@
+//! A reported posture's solids, built again from the report's numbers, and
+//! what they meet, by parry's intersection tests rather than the crate's
+//! own geometry: each link a capsule of its joint's radius (the effector's
+//! link ending its radius short of the effector and as much thinner as the
+//! tolerance), the head where its anchor frame puts it; against the room's boxes, its walls,
+//! floor and ceiling, the person's legs and base (but for the pelvis, the
+//! part within `pelvis_mm` of the hip point), and the person's other
+//! moving parts (links two apart may not overlap; a neighbour may not run
+//! its axis through a link's core beyond their joint's reach).
+
+use nalgebra::{Isometry3, Matrix4, Point3, Vector3, Vector4};
+use parry3d_f64::query::intersection_test;
+use parry3d_f64::shape::{Capsule as PCapsule, Cuboid as PCuboid};
+use reach::geometry::Shape;
+use reach::kinematics::{Chain, JointKind};
+use reach::report::{BaseReport, Posture};
+use reach::scene::{OwnBody, Room};
+
+/// Eq. 3 of the accessibility paper: the DH matrix for theta, d, alpha, a.
+pub fn dh(theta: f64, d: f64, alpha: f64, a: f64) -> Matrix4<f64> {
+    let (st, ct) = theta.sin_cos();
+    let (sa, ca) = alpha.sin_cos();
+    #[rustfmt::skip]
+    let m = Matrix4::new(
+        ct, -ca * st, sa * st, a * ct,
+        st, ca * ct, -sa * ct, a * st,
+        0.0, sa, ca, d,
+        0.0, 0.0, 0.0, 1.0,
+    );
+    m
+}
+
+/// One solid of the posture, in the room: a segment and a radius, its
+/// place along the chain (a link's count from the base; a sphere its
+/// anchor link's), and its name.
+#[derive(Clone, Debug)]
+pub struct Part {
+    pub a: Point3<f64>,
+    pub b: Point3<f64>,
+    pub radius_mm: f64,
+    pub order: i64,
+    pub sphere: bool,
+    pub name: String,
+}
+
+/// Where the base stands, from the report.
+fn to_room(base: &BaseReport, p: &Point3<f64>) -> Point3<f64> {
+    let (s, c) = base.heading_deg.to_radians().sin_cos();
+    Point3::new(
+        base.x_mm + c * p.x - s * p.y,
+        base.y_mm + s * p.x + c * p.y,
+        base.z_mm + p.z,
+    )
+}
+
+/// The posture's solids, the effector's link ending its radius (or
+/// `allowance_mm`, a millimetre at least) short and `allowance_mm` thinner
+/// (none if nothing is left).
+pub fn parts(chain: &Chain, posture: &Posture, base: &BaseReport, allowance_mm: f64) -> Vec<Part> {
+    let mut frames = Vec::new();
+    let mut m = Matrix4::identity();
+    for (joint, (name, value)) in chain.joints.iter().zip(&posture.0) {
+        assert_eq!(&joint.name, name);
+        let (theta, d) = match joint.kind {
+            JointKind::Revolute => (joint.dh.theta_rad + value.to_radians(), joint.dh.d_mm),
+            JointKind::Prismatic => (joint.dh.theta_rad, joint.dh.d_mm + value),
+        };
+        m *= dh(theta, d, joint.dh.alpha_rad, joint.dh.a_mm);
+        frames.push(m);
+    }
+    let point = |m: &Matrix4<f64>, v: &Vector3<f64>| {
+        let p = m * Vector4::new(v.x, v.y, v.z, 1.0);
+        Point3::new(p.x, p.y, p.z)
+    };
+    let mut parts = Vec::new();
+    let mut last = Point3::origin();
+    let mut links = 0;
+    let mut order_at = Vec::new();
+    for (joint, frame) in chain.joints.iter().zip(&frames) {
+        let origin = point(frame, &Vector3::zeros());
+        if (origin - last).norm() > 1e-6 {
+            parts.push(Part {
+                a: last,
+                b: origin,
+                radius_mm: joint.link.radius_mm,
+                order: links,
+                sphere: false,
+                name: joint.link.name.clone(),
+            });
+            links += 1;
+            last = origin;
+        }
+        order_at.push(links - 1);
+    }
+    let effector = point(
+        frames.last().unwrap_or(&Matrix4::identity()),
+        &chain.effector_mm,
+    );
+    let gap = chain.effector_link.radius_mm.max(allowance_mm).max(1.0);
+    if (effector - last).norm() > gap {
+        // It ends its radius (or the allowance, a millimetre at least)
+        // short of the effector, and the allowance thinner: the hand may
+        // touch what it reaches with its end.
+        let r = chain.effector_link.radius_mm;
+        let length = (effector - last).norm();
+        let radius_mm = (r - allowance_mm).max(0.0);
+        let b = last + (effector - last) * (1.0 - gap / length);
+        parts.push(Part {
+            a: last,
+            b,
+            radius_mm,
+            order: links,
+            sphere: false,
+            name: chain.effector_link.name.clone(),
+        });
+    }
+    for rider in &chain.riders {
+        let (centre, order) = match rider.anchor {
+            Some(a) => (point(&frames[a], &rider.centre_mm), order_at[a]),
+            None => (Point3::from(rider.centre_mm), -1),
+        };
+        parts.push(Part {
+            a: centre,
+            b: centre,
+            radius_mm: rider.radius_mm,
+            order,
+            sphere: true,
+            name: rider.name.clone(),
+        });
+    }
+    for p in &mut parts {
+        p.a = to_room(base, &p.a);
+        p.b = to_room(base, &p.b);
+    }
+    parts
+}
+
+fn capsule(a: &Point3<f64>, b: &Point3<f64>, radius_mm: f64) -> PCapsule {
+    PCapsule::new(*a, *b, radius_mm.max(1e-9))
+}
+
+fn meets_cuboid(
+    part: &Part,
+    grow_mm: f64,
+    centre: Point3<f64>,
+    half: Vector3<f64>,
+    yaw: f64,
+) -> bool {
+    let pose = Isometry3::new(centre.coords, Vector3::z() * yaw);
+    let c = capsule(&part.a, &part.b, part.radius_mm + grow_mm);
+    intersection_test(&Isometry3::identity(), &c, &pose, &PCuboid::new(half)).unwrap()
+}
+
+/// The room's boxes that `part`, grown by `grow_mm`, meets.
+pub fn boxes_met(part: &Part, room: &Room, grow_mm: f64) -> Vec<String> {
+    room.boxes
+        .iter()
+        .filter(|b| {
+            let (s, c) = b.yaw_rad.sin_cos();
+            let h = b.size_mm / 2.0;
+            let centre = b.corner_mm + Vector3::new(c * h.x - s * h.y, s * h.x + c * h.y, h.z);
+            meets_cuboid(part, grow_mm, centre, h, b.yaw_rad)
+        })
+        .map(|b| b.name.clone())
+        .collect()
+}
+
+/// Whether `part`, grown by `grow_mm`, leaves the room (through a wall, the
+/// floor or the ceiling).
+pub fn leaves_room(part: &Part, room: &Room, grow_mm: f64) -> bool {
+    let r = part.radius_mm + grow_mm;
+    (0..3).any(|i| {
+        let lo = part.a[i].min(part.b[i]) - r;
+        let hi = part.a[i].max(part.b[i]) + r;
+        lo < 0.0 || hi > room.size_mm[i]
+    })
+}
+
+/// `part` without what lies within `radius_mm` of `centre` (as the crate
+/// exempts the pelvis): none if both ends are inside, the part from where
+/// it leaves the ball if one is, the whole part if neither is.
+fn outside_ball(part: &Part, centre: &Point3<f64>, radius_mm: f64) -> Option<Part> {
+    let inside = |p: &Point3<f64>| (p - centre).norm() < radius_mm;
+    let (a_in, b_in) = (inside(&part.a), inside(&part.b));
+    if !a_in && !b_in {
+        return Some(part.clone());
+    }
+    if a_in && b_in {
+        return None;
+    }
+    // Bisect for the crossing (written differently from the crate's
+    // quadratic on purpose).
+    let (mut t_in, mut t_out) = if a_in { (0.0, 1.0) } else { (1.0, 0.0) };
+    let at = |t: f64| part.a + (part.b - part.a) * t;
+    for _ in 0..60 {
+        let mid = 0.5 * (t_in + t_out);
+        if inside(&at(mid)) {
+            t_in = mid;
+        } else {
+            t_out = mid;
+        }
+    }
+    let cut = at(t_out);
+    let mut kept = part.clone();
+    if a_in {
+        kept.a = cut;
+    } else {
+        kept.b = cut;
+    }
+    Some(kept)
+}
+
+/// The person's own legs and base solids (in the base frame) that
+/// `part`, grown by `grow_mm`, meets outside the pelvis.
+pub fn own_met(part: &Part, own: &OwnBody, base: &BaseReport, grow_mm: f64) -> Vec<String> {
+    let hip = to_room(base, &Point3::origin());
+    let Some(part) = (if own.pelvis_mm > 0.0 {
+        outside_ball(part, &hip, own.pelvis_mm)
+    } else {
+        Some(part.clone())
+    }) else {
+        return Vec::new();
+    };
+    let heading = base.heading_deg.to_radians();
+    own.solids
+        .iter()
+        .filter(|solid| match &solid.shape {
+            Shape::Cuboid(c) => meets_cuboid(
+                &part,
+                grow_mm,
+                to_room(base, &c.centre),
+                c.half_mm,
+                c.yaw_rad + heading,
+            ),
+            Shape::Capsule(c) => {
+                let mine = capsule(&part.a, &part.b, (part.radius_mm + grow_mm).max(1e-9));
+                let theirs = capsule(&to_room(base, &c.a), &to_room(base, &c.b), c.radius_mm);
+                intersection_test(
+                    &Isometry3::identity(),
+                    &mine,
+                    &Isometry3::identity(),
+                    &theirs,
+                )
+                .unwrap()
+            }
+        })
+        .map(|s| s.name.clone())
+        .collect()
+}
+
+/// Pairs of the posture's own parts that meet as they may not, grown by
+/// `grow_mm`: by name, the earlier first.
+pub fn self_met(parts: &[Part], grow_mm: f64) -> Vec<(String, String)> {
+    let mut met = Vec::new();
+    for (i, p) in parts.iter().enumerate() {
+        for q in &parts[i + 1..] {
+            if p.radius_mm <= 0.0 || q.radius_mm <= 0.0 || (p.sphere && q.sphere) {
+                continue;
+            }
+            let apart = (p.order - q.order).abs();
+            let meets = if !p.sphere && !q.sphere && apart == 1 {
+                // q starts at their joint, where p ends.
+                let reach = p.radius_mm + q.radius_mm;
+                let axis = Part {
+                    radius_mm: 0.0,
+                    ..q.clone()
+                };
+                outside_ball(&axis, &q.a, reach).is_some_and(|beyond| {
+                    let core = capsule(&p.a, &p.b, p.radius_mm / 2.0 + grow_mm);
+                    let line = capsule(&beyond.a, &beyond.b, 1e-9);
+                    intersection_test(&Isometry3::identity(), &line, &Isometry3::identity(), &core)
+                        .unwrap()
+                })
+            } else if apart >= 2 {
+                let a = capsule(&p.a, &p.b, p.radius_mm + grow_mm / 2.0);
+                let b = capsule(&q.a, &q.b, q.radius_mm + grow_mm / 2.0);
+                intersection_test(&Isometry3::identity(), &a, &Isometry3::identity(), &b).unwrap()
+            } else {
+                false
+            };
+            if meets {
+                met.push((p.name.clone(), q.name.clone()));
+            }
+        }
+    }
+    met
+}
+
+/// Everything the posture's parts meet, grown by `grow_mm` (negative:
+/// shrunk, so that grazing within the report's rounding does not count):
+/// the names of boxes, own solids, parts, and "a wall".
+pub fn everything_met(
+    parts: &[Part],
+    room: &Room,
+    own: &OwnBody,
+    base: &BaseReport,
+    grow_mm: f64,
+) -> Vec<String> {
+    let mut met = Vec::new();
+    for part in parts {
+        met.extend(boxes_met(part, room, grow_mm));
+        met.extend(own_met(part, own, base, grow_mm));
+        if leaves_room(part, room, grow_mm) {
+            met.push("a wall".into());
+        }
+    }
+    for (a, b) in self_met(parts, grow_mm) {
+        met.push(format!("{a} and {b}"));
+    }
+    met
+}
