@@ -15,7 +15,7 @@ use rand_chacha::ChaCha8Rng;
 use reach::bases::Mobile;
 use reach::floor::Footprint;
 use reach::plugin::{PreparedBase, ReachQuery, Registry, Search, Settings};
-use reach::scene::Room;
+use reach::scene::{OwnBody, Room};
 use reach::solvers::{IncrementalSettings, IncrementalSolver};
 use reach::Input;
 
@@ -43,32 +43,20 @@ fn main() {
         },
     };
 
-    let mobile = |footprint, hip_height_mm| Mobile {
-        footprint,
-        hip_height_mm,
-        clearance_mm: 1400.0,
-        headings: 16,
-        zone: None,
+    // The paper's bases are outlines on the floor as tall as the person
+    // (1.4 m seated, 2 m standing), with no body of their own.
+    let mobile = |footprint, hip_height_mm| {
+        Mobile::new(footprint, hip_height_mm, 16, None, OwnBody::default())
     };
     let bases = [
-        (
-            "point base",
-            mobile(Footprint::Circle { radius_mm: 1.0 }, 930.0),
-        ),
+        ("point base", mobile(Footprint::circle(1.0, 2000.0), 930.0)),
         (
             "circular base (trolley, r 450 mm)",
-            mobile(Footprint::Circle { radius_mm: 450.0 }, 930.0),
+            mobile(Footprint::circle(450.0, 2000.0), 930.0),
         ),
         (
             "rectangular base (wheelchair, turning)",
-            mobile(
-                Footprint::Rectangle {
-                    front_mm: 650.0,
-                    back_mm: 565.0,
-                    width_mm: 660.0,
-                },
-                595.0,
-            ),
+            mobile(Footprint::rectangle(650.0, 565.0, 660.0, 1400.0), 595.0),
         ),
     ];
     println!("Reach with a moving base, std::arm, {n} targets on kitchen surfaces, tolerance 10 mm, one start per placement\n");
@@ -79,6 +67,7 @@ fn main() {
         "1.34 ms, 1.02 sweeps",
         "2.9 ms, 1.49 sweeps",
     ];
+    let own = OwnBody::default();
     for ((name, base), paper) in bases.iter().zip(paper) {
         let prepared = base.prepare(room, &chain);
         let (mut ok, mut sweeps) = (0usize, 0u64);
@@ -90,6 +79,7 @@ fn main() {
                 seed: i as u64,
                 search: Search::FirstReaching,
                 obstacles: None,
+                own: &own,
                 retry: None,
             };
             let start = Instant::now();

@@ -17,46 +17,51 @@ use reach::report::TaskReport;
 use reach::scenario::Scenario;
 use reach::Input;
 
-/// One row: a label, the retries and the retry solver (`None`:
-/// collisions off).
-type Setting = (&'static str, i64, Option<(&'static str, i64)>);
+/// One row: a label, the retries and the retry solver with its starts and
+/// whether it steers clear (`None`: collisions off).
+type Setting = (&'static str, i64, Option<(&'static str, i64, bool)>);
 
-const SETTINGS: [Setting; 9] = [
-    ("no retry", 0, Some(("incremental", 1))),
+const SETTINGS: [Setting; 10] = [
+    ("no retry", 0, Some(("incremental", 1, false))),
     (
         "incremental { starts 8 }, 4 placements",
         4,
-        Some(("incremental", 8)),
+        Some(("incremental", 8, false)),
     ),
     (
         "incremental { starts 32 }, 4 placements",
         4,
-        Some(("incremental", 32)),
+        Some(("incremental", 32, false)),
     ),
     (
-        "incremental { starts 64 }, 4 placements (default)",
+        "incremental { starts 64 }, 4 placements",
         4,
-        Some(("incremental", 64)),
+        Some(("incremental", 64, false)),
     ),
     (
-        "incremental { starts 128 }, 4 placements",
+        "incremental { starts 8 steer_clear true }, 4 placements (default)",
         4,
-        Some(("incremental", 128)),
+        Some(("incremental", 8, true)),
     ),
     (
-        "incremental { starts 256 }, 4 placements",
+        "incremental { starts 16 steer_clear true }, 4 placements",
         4,
-        Some(("incremental", 256)),
+        Some(("incremental", 16, true)),
     ),
     (
-        "incremental { starts 64 }, 16 placements",
+        "incremental { starts 32 steer_clear true }, 4 placements",
+        4,
+        Some(("incremental", 32, true)),
+    ),
+    (
+        "incremental { starts 64 steer_clear true }, 16 placements",
         16,
-        Some(("incremental", 64)),
+        Some(("incremental", 64, true)),
     ),
     (
         "fabrik (defaults: 4 starts), 4 placements",
         4,
-        Some(("fabrik", 4)),
+        Some(("fabrik", 4, false)),
     ),
     ("collisions off (upper bound)", 0, None),
 ];
@@ -107,7 +112,7 @@ fn with_retry(
     scenario: &Scenario,
     registry: &Registry,
     retries: i64,
-    solver: Option<(&str, i64)>,
+    solver: Option<(&str, i64, bool)>,
 ) -> Scenario {
     let map = registry.task("map").expect("built in");
     let params = map.params();
@@ -115,13 +120,18 @@ fn with_retry(
     for task in &mut variant.tasks {
         let mut options = task.options.clone();
         match solver {
-            Some((name, starts)) => {
+            Some((name, starts, steer)) => {
                 let plugin = registry.solver(name).expect("built in");
                 let solver_params = plugin.params();
+                let mut solver_options = Options::defaults(&solver_params)
+                    .set(option(&solver_params, "starts"), Value::Integer(starts));
+                if steer {
+                    solver_options = solver_options
+                        .set(option(&solver_params, "steer_clear"), Value::Bool(true));
+                }
                 let config = PluginConfig {
                     name: name.to_string(),
-                    options: Options::defaults(&solver_params)
-                        .set(option(&solver_params, "starts"), Value::Integer(starts)),
+                    options: solver_options,
                 };
                 options = options
                     .set(option(&params, "blocked_solver"), Value::Plugin(config))

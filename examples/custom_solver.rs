@@ -44,7 +44,7 @@ impl Plugin for Sampling {
     }
 
     fn doc(&self) -> &'static str {
-        "random postures within the limits; keeps the closest (a baseline)"
+        "random postures within the limits; keeps the closest that is clear (a baseline)"
     }
 
     fn params(&self) -> Vec<ParamSpec> {
@@ -75,7 +75,10 @@ impl Solver for SamplingSolver {
                 .map(|j| j.min + (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64 * j.range())
                 .collect();
             let distance_mm = (problem.chain.effector(&q) - problem.target_mm).norm();
-            if distance_mm < best.distance_mm {
+            // A posture through an obstacle, the person's own legs or
+            // trunk does not count (checked only for a closer one, as
+            // the check costs more than the distance).
+            if distance_mm < best.distance_mm && problem.collision(&q).is_none() {
                 best = IkSolution {
                     q,
                     distance_mm,
@@ -84,9 +87,7 @@ impl Solver for SamplingSolver {
                 };
             }
         }
-        // The base checks the final posture against the room's obstacles
-        // whatever a solver says; a solver that avoids them would call
-        // `problem.collision(&q)` on each candidate.
+        // The base checks the final posture again whatever a solver says.
         best.collision = problem.collision(&best.q);
         best
     }
@@ -103,7 +104,7 @@ person ben {
   mannequin right_arm
   base fixed { at (850, 1300, 930) heading 180deg }
 }
-reach mug by ben { solver sampling { samples 20000 } tolerance 60mm }
+reach mug by ben { solver sampling { samples 100000 } tolerance 60mm }
 reach mug by ben { solver incremental tolerance 60mm }
 "#;
 

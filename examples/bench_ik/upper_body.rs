@@ -13,7 +13,7 @@ use rand_chacha::ChaCha8Rng;
 use reach::collision::{Obstacles, PlacedObstacles};
 use reach::kinematics::{Body, Chain};
 use reach::plugin::{BasePose, Settings};
-use reach::scene::{BoxObstacle, Room};
+use reach::scene::{BoxObstacle, OwnBody, Room};
 use reach::solvers::fabrik::{solve_tree, TreeGoal, TreeProblem};
 use reach::solvers::{random_posture, FabrikSettings};
 
@@ -54,15 +54,16 @@ fn room(board: bool) -> Room {
     }
 }
 
-/// Grip and eye targets of random postures whose links miss the obstacles.
+/// Grip and eye targets of random postures whose links miss the obstacles
+/// (and each other).
 fn targets(body: &Body, placed: Option<&PlacedObstacles<'_>>, n: usize) -> Vec<[Point3<f64>; 2]> {
     // The grip's and the eyes' joints (not the left arm).
     let used = body.joints_to(&[0, 1]);
-    let whole = Chain {
-        joints: used.iter().map(|&j| body.joints[j].clone()).collect(),
-        effector_name: String::new(),
-        effector_mm: Vector3::zeros(),
-    };
+    let whole = Chain::new(
+        used.iter().map(|&j| body.joints[j].clone()).collect(),
+        "",
+        Vector3::zeros(),
+    );
     let chains = [body.chain(0), body.chain(1)];
     let paths = [0, 1].map(|e| body.path(body.effectors[e].joint));
     let mut rng = ChaCha8Rng::seed_from_u64(SEED);
@@ -75,12 +76,8 @@ fn targets(body: &Body, placed: Option<&PlacedObstacles<'_>>, n: usize) -> Vec<[
         let qs = paths
             .clone()
             .map(|p| p.iter().map(|&j| q[j]).collect::<Vec<_>>());
-        let clear = placed.is_none_or(|o| {
-            (0..2).all(|e| {
-                o.polyline_hit(&chains[e].link_points(&qs[e]), 0.0)
-                    .is_none()
-            })
-        });
+        let clear =
+            placed.is_none_or(|o| (0..2).all(|e| o.posture_hit(&chains[e], &qs[e], 0.0).is_none()));
         if clear {
             out.push([0, 1].map(|e| chains[e].effector(&qs[e])));
         }
@@ -106,8 +103,10 @@ pub fn rows(solves: usize) -> Vec<Row> {
     .into_iter()
     .map(|(name, board)| {
         let obstacles = Obstacles::new(&room(board), 0.0);
+        let own = OwnBody::default();
         let placed = board.then_some(PlacedObstacles {
             obstacles: &obstacles,
+            own: &own,
             base_pose: BasePose {
                 position_mm: Point3::origin(),
                 heading_rad: 0.0,
