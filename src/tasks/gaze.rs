@@ -120,6 +120,20 @@ impl Eyes {
         [d_min, d_max]
     }
 
+    /// The range the look link is kept to: the legible range less the
+    /// tolerance at each end (its middle if that leaves nothing), so that
+    /// a look link ending within the tolerance of the target puts the eyes
+    /// within the legible range itself.
+    pub fn aimed_mm(&self, tolerance_mm: f64) -> [f64; 2] {
+        let [d_min, d_max] = self.legible_mm();
+        if d_max - d_min > 2.0 * tolerance_mm {
+            [d_min + tolerance_mm, d_max - tolerance_mm]
+        } else {
+            let middle = 0.5 * (d_min + d_max);
+            [middle, middle]
+        }
+    }
+
     /// An object too small to be legible anywhere.
     pub fn illegible(&self) -> Option<ErrorKind> {
         let [d_min, d_max] = self.legible_mm();
@@ -197,7 +211,10 @@ impl Task for GazeTask {
 
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
         let eyes = self.looking.eyes(Some(&input.person.vision));
-        let chain = with_look_range(&chain_of(input, 0), eyes.legible_mm());
+        let chain = with_look_range(
+            &chain_of(input, 0),
+            eyes.aimed_mm(self.reaching.common.tolerance_mm),
+        );
         let points = match input.subject {
             Subject::Target(t) => vec![t.position_mm],
             Subject::Surface(_) => Vec::new(),
@@ -211,7 +228,10 @@ impl Task for GazeTask {
             unreachable!("the checker gives a gaze a target")
         };
         let eyes = self.looking.eyes(Some(&input.person.vision));
-        let chain = with_look_range(&chain_of(input, 0), eyes.legible_mm());
+        let chain = with_look_range(
+            &chain_of(input, 0),
+            eyes.aimed_mm(self.reaching.common.tolerance_mm),
+        );
         // With collisions on, the look link is a link like any other: the
         // solver and the base prefer a posture whose line of sight is clear.
         let obstacles = GazeObstacles::new(input.room, reaching, input.base.own_body());
@@ -384,7 +404,7 @@ pub(super) fn needs_look_link(person: &str, chain: &Chain) -> Option<ErrorKind> 
     })
 }
 
-/// The chain with its look link limited to the legible range.
+/// The chain with its look link limited to `legible_mm` (the aimed range).
 pub(super) fn with_look_range(chain: &Chain, legible_mm: [f64; 2]) -> Chain {
     let mut chain = chain.clone();
     if let Some(look) = chain.joints.last_mut() {
@@ -393,8 +413,8 @@ pub(super) fn with_look_range(chain: &Chain, legible_mm: [f64; 2]) -> Chain {
     chain
 }
 
-/// Keep look link `look` (its end) within the legible range
-/// `[D_min, D_max]`, its neutral value moved inside.
+/// Keep look link `look` (its end) within `[d_min, d_max]` (the range
+/// `Eyes::aimed_mm` gives), its neutral value moved inside.
 pub(super) fn limit_look(look: &mut Joint, [d_min, d_max]: [f64; 2]) {
     look.min = d_min - look.rest_offset_mm().z;
     look.max = d_max - look.rest_offset_mm().z;
@@ -412,11 +432,13 @@ struct Look {
 impl Sight {
     /// Why the target is not seen, the first that applies, or `None`.
     fn reason(&self, tolerance_mm: f64, solver_distance_mm: f64) -> Option<&'static str> {
-        // Distances, like the look link's end, count within the tolerance.
+        // The legible range is the eye's, not the solver's: the eyes'
+        // distance to the target is held to it exactly, whatever the
+        // tolerance lets the look link's end miss by.
         let [d_min, d_max] = self.legible_mm;
-        if self.distance_mm < d_min - tolerance_mm {
+        if self.distance_mm < d_min {
             Some("too near")
-        } else if self.distance_mm > d_max + tolerance_mm {
+        } else if self.distance_mm > d_max {
             Some("too far")
         } else if vision::acuity(self.off_axis_rad) < self.acuity_threshold {
             // The solver could not bring the line of sight onto the target:
@@ -434,5 +456,36 @@ impl Sight {
         } else {
             None
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sight(distance_mm: f64) -> Sight {
+        Sight {
+            reason: None,
+            occluded_by: None,
+            body_collision: None,
+            distance_mm,
+            // A 2 mm label at 1 arcmin: legible up to 1,375 mm.
+            legible_mm: [250.0, vision::d_max_mm(2.0, (1.0f64 / 60.0).to_radians())],
+            off_axis_rad: 0.0,
+            acuity_threshold: 0.5,
+            size_mm: 2.0,
+            eyes_room_mm: Point3::origin(),
+        }
+    }
+
+    /// A label 8 mm beyond its legible range is too far, though a reach
+    /// tolerance of 10 mm would cover the 8 mm.
+    #[test]
+    fn the_reach_tolerance_does_not_widen_the_legible_range() {
+        let d_max = sight(0.0).legible_mm[1];
+        assert!((d_max - 1375.1).abs() < 0.1, "{d_max}");
+        assert_eq!(sight(d_max + 8.0).reason(10.0, 0.0), Some("too far"));
+        assert_eq!(sight(d_max - 1.0).reason(10.0, 0.0), None);
+        assert_eq!(sight(245.0).reason(10.0, 0.0), Some("too near"));
     }
 }

@@ -94,14 +94,20 @@ impl Task for GazeMapTask {
 
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
         let eyes = self.looking.eyes(Some(&input.person.vision));
-        let chain = with_look_range(&chain_of(input, 0), eyes.legible_mm());
+        let chain = with_look_range(
+            &chain_of(input, 0),
+            eyes.aimed_mm(self.reaching.common.tolerance_mm),
+        );
         let points = self.grid.points_mm(&input.subject);
         self.reaching.dependence(&chain, &[&chain], points, true)
     }
 
     fn run(&self, input: &TaskInput<'_>) -> TaskReport {
         let eyes = self.looking.eyes(Some(&input.person.vision));
-        let chain = with_look_range(&chain_of(input, 0), eyes.legible_mm());
+        let chain = with_look_range(
+            &chain_of(input, 0),
+            eyes.aimed_mm(self.reaching.common.tolerance_mm),
+        );
         let obstacles = GazeObstacles::new(input.room, &self.reaching, input.base.own_body());
         let tolerance_mm = self.reaching.common.tolerance_mm;
         let judge = |placement: &Placement, target| {

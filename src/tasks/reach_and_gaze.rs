@@ -163,7 +163,8 @@ impl Task for ReachAndGazeTask {
 
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
         let eyes = self.looking.eyes(Some(&input.person.vision));
-        let (body, _, eyes_index) = body_with_look_range(input, eyes.legible_mm());
+        let (body, _, eyes_index) =
+            body_with_look_range(input, eyes.aimed_mm(self.reaching.common.tolerance_mm));
         let hand_chain = chain_of(input, 0);
         let eyes_chain = body.chain(eyes_index);
         let points = match input.subject {
@@ -180,7 +181,8 @@ impl Task for ReachAndGazeTask {
             unreachable!("the checker gives a reach and gaze a target")
         };
         let eyes = self.looking.eyes(Some(&input.person.vision));
-        let (body, hand, eyes_index) = body_with_look_range(input, eyes.legible_mm());
+        let (body, hand, eyes_index) =
+            body_with_look_range(input, eyes.aimed_mm(self.reaching.common.tolerance_mm));
         let hand_chain = chain_of(input, 0);
         let own = input.base.own_body();
         let obstacles = GazeObstacles::new(input.room, reaching, own);
