@@ -1,19 +1,17 @@
 //! A placed person as solids in the room, for a picture: every link of the
 //! body in a posture (the joints a task moved, the others at neutral), the
-//! head, the legs and the base's parts where the base stands, and the
-//! room's boxes around them.
+//! head, the legs and the base's parts where the base stands.
 
 use crate::geometry::{Capsule, Cuboid, Shape, Solid};
 use crate::kinematics::{Body, Owner};
 use crate::picture::Item;
-use crate::scene::{BasePose, OwnBody, Room};
+use crate::scene::{BasePose, OwnBody};
 
 /// Colours: skin for the moving body, a darker skin for the legs, grey
-/// for the base, sand for the room's boxes.
+/// for the base.
 pub const SKIN: &str = "#e8b48a";
 pub const LEGS: &str = "#c8906a";
 pub const BASE: &str = "#7d8590";
-pub const FURNITURE: &str = "#d9ceb8";
 
 /// The body in posture `q` (a value per joint of `body`, in its order),
 /// standing at `pose`, with its legs and base `own`: each solid once, in
@@ -52,19 +50,6 @@ pub fn person(body: &Body, q: &[f64], pose: BasePose, own: &OwnBody) -> Vec<Item
         label: solid.name.clone(),
     }));
     items
-}
-
-/// The room's boxes.
-pub fn furniture(room: &Room) -> Vec<Item> {
-    room.boxes
-        .iter()
-        .map(|b| Item {
-            shape: Shape::Cuboid(Cuboid::from_corner(b.corner_mm, b.size_mm, b.yaw_rad)),
-            fill: FURNITURE.into(),
-            opacity: 0.6,
-            label: b.name.clone(),
-        })
-        .collect()
 }
 
 /// Whether a solid of the person's own body is a part of them (a thigh, a

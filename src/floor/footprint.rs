@@ -103,11 +103,6 @@ impl Footprint {
                 || p.outline_mm.len() != CIRCLE_SIDES
         })
     }
-
-    /// The highest any part reaches above the floor.
-    pub fn top_mm(&self) -> f64 {
-        self.parts.iter().map(|p| p.z_mm[1]).fold(0.0, f64::max)
-    }
 }
 
 /// A solid's outline from above and its heights.

@@ -198,20 +198,6 @@ impl Chain {
         self.end_frame(q) * Point3::from(self.effector_mm)
     }
 
-    /// The points the links join, in the base frame: the base origin, each
-    /// joint frame's origin that lies away from the point before it, and
-    /// the effector. Links are the segments between consecutive points.
-    pub fn link_points(&self, q: &[f64]) -> Vec<Point3<f64>> {
-        let mut points = vec![Point3::origin()];
-        let mut frame = IsometryMatrix3::identity();
-        for (j, &qi) in self.joints.iter().zip(q) {
-            frame *= j.transform(qi);
-            push_distinct(&mut points, Point3::from(frame.translation.vector));
-        }
-        push_distinct(&mut points, frame * Point3::from(self.effector_mm));
-        points
-    }
-
     /// The comfort criterion `C = sum_i w_i |theta_i^N - theta_i|` of
     /// section 5.3.4: smaller is more comfortable.
     pub fn discomfort(&self, q: &[f64]) -> f64 {
@@ -237,13 +223,6 @@ impl Chain {
 
     pub fn neutral(&self) -> Vec<f64> {
         self.joints.iter().map(|j| j.neutral).collect()
-    }
-}
-
-/// `p` appended unless it is where the last point already is.
-fn push_distinct(points: &mut Vec<Point3<f64>>, p: Point3<f64>) {
-    if points.last().is_none_or(|last| (p - last).norm() > 1e-6) {
-        points.push(p);
     }
 }
 
@@ -314,18 +293,6 @@ mod tests {
         j.kind = JointKind::Prismatic;
         let chain = Chain::new(vec![j], "tip", Vector3::zeros());
         assert!((chain.effector(&[25.0]) - Point3::new(0.0, 0.0, 125.0)).norm() < 1e-12);
-    }
-
-    #[test]
-    fn link_points_skip_frames_that_do_not_move() {
-        let mut chain = planar();
-        chain
-            .joints
-            .insert(1, revolute("twist", 0.0, 0.0, 0.0, 0.0));
-        let points = chain.link_points(&[0.0, 0.3, 0.0]);
-        assert_eq!(points.len(), 3, "{points:?}");
-        assert!((points[1] - Point3::new(300.0, 0.0, 0.0)).norm() < 1e-9);
-        assert!((points[2] - chain.effector(&[0.0, 0.3, 0.0])).norm() < 1e-9);
     }
 
     #[test]
