@@ -86,16 +86,7 @@ fn every_reported_base_pose_is_admissible() {
 fn a_wheelchair_user_cannot_reach_what_a_standing_person_can() {
     let scenario = scenario("examples/kitchen_wheelchair.reach");
     let report = reach::run(&scenario);
-    let reach = |target: &str, person: &str| {
-        report
-            .tasks
-            .iter()
-            .find_map(|t| match t {
-                TaskReport::Reach(r) if r.name == target && r.person == person => Some(r),
-                _ => None,
-            })
-            .expect("the example asks it")
-    };
+    let reach = |target: &str, person: &str| super::body::reach_of(&report, target, person);
     assert!(reach("cabinet_low", "ben").ok);
     assert!(reach("counter_front", "ann").ok);
     // The wall cabinet's shelf: within the standing person's arm (though

@@ -27,7 +27,7 @@ fn run(text: &str) -> (reach::scenario::Scenario, Report) {
     (scenario, report)
 }
 
-fn reach_of<'r>(report: &'r Report, target: &str, person: &str) -> &'r ReachReport {
+pub fn reach_of<'r>(report: &'r Report, target: &str, person: &str) -> &'r ReachReport {
     report
         .tasks
         .iter()

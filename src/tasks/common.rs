@@ -12,6 +12,7 @@ use crate::plugin::{
     Dependence, EffectorNeed, Params, Placement, PluginConfig, PluginKind, ReachQuery, Registry,
     Retry, Search, SettingsError, Solver, TaskInput, Value,
 };
+use crate::report::Asked;
 use crate::scene::{OwnBody, Room};
 
 /// How a task declares its common options: what one of its subjects is
@@ -206,12 +207,29 @@ impl Reaching {
         }
     }
 
-    /// The name of the solver that found `placement`'s posture.
-    pub fn solver_of(&self, placement: &Placement) -> &str {
-        if placement.retried {
+    /// What a report of `placement` (for `subject`, by `chain`) says was
+    /// asked: who, where, with which solver (the retry's if it found the
+    /// posture) and tolerance.
+    pub fn asked<'a>(
+        &'a self,
+        subject: &'a str,
+        input: &TaskInput<'a>,
+        chain: &'a Chain,
+        placement: &Placement,
+    ) -> Asked<'a> {
+        let solver = if placement.retried {
             &self.common.blocked_solver.name
         } else {
             &self.common.solver.name
+        };
+        Asked {
+            subject,
+            person: input.person,
+            chain,
+            solver,
+            tolerance_mm: self.common.tolerance_mm,
+            room: input.room,
+            own: input.base.own_body(),
         }
     }
 

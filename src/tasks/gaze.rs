@@ -17,7 +17,7 @@ use crate::plugin::{
     Dependence, EffectorNeed, Options, ParamSpec, Params, Placement, Plugin, Registry, Search,
     Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin,
 };
-use crate::report::{Asked, GazeReport, Names, Sight, TaskReport};
+use crate::report::{GazeReport, Names, Sight, TaskReport};
 use crate::scene::{Blocker, OwnBody, Room, Vision};
 use crate::vision;
 
@@ -255,15 +255,7 @@ impl Task for GazeTask {
             target: target.position_mm,
         };
         let sight = looked.see(&obstacles, reaching.common.tolerance_mm, &eyes);
-        let asked = Asked {
-            subject: &target.name,
-            person: input.person,
-            chain: &chain,
-            solver: reaching.solver_of(&placement),
-            tolerance_mm: reaching.common.tolerance_mm,
-            room: input.room,
-            own: input.base.own_body(),
-        };
+        let asked = reaching.asked(&target.name, input, &chain, &placement);
         TaskReport::Gaze(GazeReport::new(
             &asked,
             &placement,

@@ -7,7 +7,7 @@ use crate::plugin::{
     Dependence, EffectorNeed, Options, ParamSpec, Params, Plugin, Registry, Search, Settings,
     SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin,
 };
-use crate::report::{Asked, ReachReport, TaskReport};
+use crate::report::{ReachReport, TaskReport};
 
 /// The plugin `reach`.
 pub struct Reach;
@@ -98,15 +98,7 @@ impl Task for ReachTask {
             .base
             .prepare(input.room, &chain)
             .reach(&query, reaching.solver.as_ref());
-        let asked = Asked {
-            subject: &target.name,
-            person: input.person,
-            chain: &chain,
-            solver: reaching.solver_of(&placement),
-            tolerance_mm: reaching.common.tolerance_mm,
-            room: input.room,
-            own: input.base.own_body(),
-        };
+        let asked = reaching.asked(&target.name, input, &chain, &placement);
         TaskReport::Reach(ReachReport::new(&asked, &placement, target.position_mm))
     }
 }
