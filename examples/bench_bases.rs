@@ -12,7 +12,7 @@ use std::time::Instant;
 use nalgebra::Point3;
 use rand_chacha::rand_core::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
-use reach::bases::Mobile;
+use reach::bases::{Mobile, Placing};
 use reach::floor::Footprint;
 use reach::plugin::{PreparedBase, ReachQuery, Registry, Search, Settings};
 use reach::scene::{OwnBody, Room};
@@ -46,7 +46,12 @@ fn main() {
     // The paper's bases are outlines on the floor as tall as the person
     // (1.4 m seated, 2 m standing), with no body of their own.
     let mobile = |footprint, hip_height_mm| {
-        Mobile::new(footprint, hip_height_mm, 16, None, OwnBody::default())
+        Mobile::new(
+            footprint,
+            hip_height_mm,
+            Placing::all_round(16),
+            OwnBody::default(),
+        )
     };
     let bases = [
         ("point base", mobile(Footprint::circle(1.0, 2000.0), 930.0)),

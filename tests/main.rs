@@ -14,6 +14,7 @@ mod hostile;
 mod independent;
 mod layers;
 mod parser;
+mod placement;
 mod plugins;
 mod properties;
 mod retry;

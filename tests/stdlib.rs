@@ -145,7 +145,7 @@ person mum {
     use reach::plugin::Settings;
     let chair = reach::bases::WheelchairSettings::from_options(&mum.base.options).unwrap();
     assert_eq!(chair.seat_height_mm, 538.0);
-    assert_eq!(chair.headings, 4);
+    assert_eq!(chair.placing.headings, 4);
     let mar = mum
         .vision
         .mar_far_rad

@@ -2,10 +2,10 @@
 
 use nalgebra::{Point3, Vector3};
 
-use super::search::search;
+use super::search::{search, Candidate};
 use crate::kinematics::{Chain, Posture};
 use crate::plugin::{
-    Base, BaseError, BasePlugin, BasePose, Options, ParamSpec, Params, Placement, Plugin,
+    Base, BaseError, BasePlugin, BasePose, Hips, Options, ParamSpec, Params, Placement, Plugin,
     PreparedBase, ReachQuery, Settings, Solver,
 };
 use crate::scene::{IkSolution, OwnBody, Physique, Room};
@@ -105,14 +105,19 @@ struct Prepared<'a> {
 
 impl PreparedBase for Prepared<'_> {
     fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement {
-        search(query, self.chain, &[self.pose], solver).unwrap_or_else(|| Placement {
-            pose: self.pose,
-            solution: IkSolution::unsolved(self.chain),
-            retried: false,
+        search(query, self.chain, &[Candidate::at(self.pose)], solver).unwrap_or_else(|| {
+            Placement {
+                pose: self.pose,
+                solution: IkSolution::unsolved(self.chain),
+                retried: false,
+            }
         })
     }
 
-    fn candidates(&self, _target_room_mm: &Point3<f64>) -> Vec<BasePose> {
-        vec![self.pose]
+    fn hips(&self, _target_room_mm: &Point3<f64>, _tolerance_mm: f64) -> Hips {
+        Hips {
+            poses: vec![self.pose],
+            around: None,
+        }
     }
 }

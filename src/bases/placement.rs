@@ -1,13 +1,18 @@
 //! Placing a mobile base: where should the person stand or sit, and facing
-//! which way, to reach a target? For each of `headings` directions the
-//! preferred hip point is the one that puts the target where the arm works
-//! best (the average horizontal position of the effector over the chain's
-//! workspace, turned by the heading); the candidate is the admissible point
-//! nearest to it. The candidates are searched as every base's are
-//! (`search.rs`).
+//! which way, to reach a target? The person's capability map
+//! (`capability.rs`) answers it backwards: each posture of the map whose
+//! hand is near the target's height above the hip, turned by each heading
+//! searched, puts the hip point where that hand would be on the target; the
+//! candidates are those hip points inside the admissible region (at their
+//! heading) and the approach, the most comfortable postures first, each
+//! tried from its own posture. After them, for each heading, the
+//! admissible point nearest to where the arm works best on average (so
+//! that a target out of every sample's reach still gets tried and its
+//! closest distance reported). The candidates are searched as every
+//! base's are (`search.rs`).
 //! This is the paper's idea (section 5.3.5: the target becomes the region of
-//! target minus admissible base positions) made discrete, with the heading
-//! theta_0 of section 5.3.6 as the outer loop.
+//! target minus admissible base positions) made of samples, with the heading
+//! theta_0 of section 5.3.6 searched over the headings the options allow.
 
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
@@ -17,42 +22,43 @@ use nalgebra::{Point3, Rotation2, Vector2};
 use rand_chacha::rand_core::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
-use super::search::search;
-use crate::floor::{admissible, Footprint, Zone};
+use super::capability::Capability;
+use super::placing::{Approach, Placing};
+use super::search::{search, Candidate};
+use crate::floor::{admissible, Footprint, Inside};
 use crate::geometry::Solid;
 use crate::kinematics::Chain;
-use crate::plugin::{Base, BasePose, IkSolution, Placement, PreparedBase, ReachQuery, Solver};
+use crate::plugin::{
+    Base, BasePose, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Solver, Tries,
+};
 use crate::scene::{column_solid, OwnBody, Physique, Room};
 use crate::solvers::random_posture;
 
 /// The admissible region at each heading searched.
-type Regions = Vec<(f64, MultiPolygon<f64>)>;
+type Regions = Vec<(f64, Inside)>;
 
 /// A base that moves on the floor: its footprint, the person's own body
-/// and the base's parts, and how it is searched.
+/// and the base's parts, and how it may be placed.
 pub struct Mobile {
     pub footprint: Footprint,
     pub hip_height_mm: f64,
-    pub headings: u32,
-    pub zone: Option<Zone>,
+    pub placing: Placing,
     pub own: OwnBody,
     /// The regions of each room, by name, worked out once.
     regions: Mutex<HashMap<String, Arc<OnceLock<Regions>>>>,
 }
 
+/// The most candidates a reach takes from the capability map, and the most
+/// placements it looks at to find them.
+pub const SEEDED: usize = 16;
+const SCANNED: usize = 256;
+
 impl Mobile {
-    pub fn new(
-        footprint: Footprint,
-        hip_height_mm: f64,
-        headings: u32,
-        zone: Option<Zone>,
-        own: OwnBody,
-    ) -> Self {
+    pub fn new(footprint: Footprint, hip_height_mm: f64, placing: Placing, own: OwnBody) -> Self {
         Mobile {
             footprint,
             hip_height_mm,
-            headings,
-            zone,
+            placing,
             own,
             regions: Mutex::default(),
         }
@@ -68,22 +74,20 @@ impl Mobile {
         person: &Physique,
         pelvis_mm: f64,
         hip_height_mm: f64,
-        headings: u32,
-        zone: Option<Zone>,
+        placing: Placing,
     ) -> Self {
         let column = person.column_mm.map(|c| column_solid("the upper body", c));
         let footprint = Footprint::of_solids(solids.iter().chain(&column), hip_height_mm);
         Mobile::new(
             footprint,
             hip_height_mm,
-            headings,
-            zone,
+            placing,
             OwnBody::new(solids, pelvis_mm),
         )
     }
 
-    /// The admissible regions, one per heading searched (one for all when
-    /// turning does not change the footprint), worked out once per room.
+    /// The admissible regions, one per heading searched, worked out once
+    /// per room.
     fn regions(&self, room: &Room) -> Arc<OnceLock<Regions>> {
         let cell = {
             let mut by_room = self.regions.lock().unwrap_or_else(|e| e.into_inner());
@@ -94,16 +98,14 @@ impl Mobile {
     }
 
     fn compute_regions(&self, room: &Room) -> Regions {
-        let headings: Vec<f64> = (0..self.headings)
-            .map(|k| 2.0 * std::f64::consts::PI * f64::from(k) / f64::from(self.headings))
-            .collect();
+        let zone = self.placing.zone;
+        let headings = self.placing.headings.iter().copied();
         if !self.footprint.turns() {
-            let region = admissible(room, &self.footprint, 0.0, self.zone);
-            return headings.into_iter().map(|h| (h, region.clone())).collect();
+            let region = Inside::new(admissible(room, &self.footprint, 0.0, zone));
+            return headings.map(|h| (h, region.clone())).collect();
         }
         headings
-            .into_iter()
-            .map(|h| (h, admissible(room, &self.footprint, h, self.zone)))
+            .map(|h| (h, Inside::new(admissible(room, &self.footprint, h, zone))))
             .collect()
     }
 
@@ -112,22 +114,18 @@ impl Mobile {
         let regions = self.regions(room);
         regions
             .get()
-            .is_some_and(|r| r.iter().any(|(_, r)| !r.0.is_empty()))
+            .is_some_and(|r| r.iter().any(|(_, r)| !r.is_empty()))
     }
 
-    /// Ready for reaches in `room`: the regions and the workspace centre
-    /// are computed once.
+    /// Ready for reaches in `room`: the regions, the capability map and the
+    /// workspace centre are computed once.
     pub fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> PreparedMobile<'a> {
-        let regions = self.regions(room);
-        let regions = regions
-            .get()
-            .map(|r| r.iter().filter(|(_, r)| !r.0.is_empty()).cloned().collect())
-            .unwrap_or_default();
         PreparedMobile {
             mobile: self,
             room,
             chain,
-            regions,
+            regions: self.regions(room),
+            capability: Capability::of(chain, &self.own),
             hint: workspace_centre(chain),
         }
     }
@@ -150,8 +148,11 @@ impl Base for Mobile {
         Box::new(Mobile::prepare(self, room, chain))
     }
 
-    fn placements(&self) -> u64 {
-        u64::from(self.headings)
+    fn placements(&self) -> Tries {
+        Tries {
+            solved: self.placing.headings.len() as u64,
+            seeded: SEEDED as u64,
+        }
     }
 
     fn footprint(&self) -> Option<&Footprint> {
@@ -164,26 +165,114 @@ pub struct PreparedMobile<'a> {
     mobile: &'a Mobile,
     room: &'a Room,
     chain: &'a Chain,
-    regions: Vec<(f64, MultiPolygon<f64>)>,
+    regions: Arc<OnceLock<Regions>>,
+    capability: Arc<Capability>,
     hint: Vector2<f64>,
 }
 
+/// Two candidates at one heading closer than this are one.
+const APART_MM: f64 = 40.0;
+/// The heights below and above a target's within which samples are first
+/// taken, and how they are widened while fewer than `FEW` are found: up
+/// first (a hand above the target need only come down to it), then down.
+const NEAR_HEIGHT_MM: [[f64; 2]; 4] = [[30.0, 30.0], [30.0, 120.0], [60.0, 240.0], [120.0, 240.0]];
+const FEW: usize = 24;
+
 impl PreparedMobile<'_> {
-    /// Candidate poses for reaching `target`, the most promising first (the
-    /// hip nearest to where it would rather be), each with that distance.
-    pub fn candidates(&self, target: &Point3<f64>) -> Vec<BasePose> {
+    fn regions(&self) -> impl Iterator<Item = &(f64, Inside)> {
+        self.regions
+            .get()
+            .into_iter()
+            .flatten()
+            .filter(|(_, r)| !r.is_empty())
+    }
+
+    /// Candidate placements for `query`, the most promising first: from
+    /// the capability map, then the nearest to where the arm works best at
+    /// each heading.
+    pub fn candidates(&self, query: &ReachQuery<'_>) -> Vec<Candidate> {
+        let target = &query.target_room_mm;
+        let mut found = self.sampled(query);
+        for pose in self.nearest(target) {
+            let taken = found.iter().any(|c| same_place(&c.pose, &pose));
+            if !taken {
+                found.push(Candidate::at(pose));
+            }
+        }
+        found
+    }
+
+    /// Up to `SEEDED` placements from the capability map whose posture is
+    /// clear of the room (where the query checks it), of the first
+    /// `SCANNED` that the region and the approach admit.
+    fn sampled(&self, query: &ReachQuery<'_>) -> Vec<Candidate> {
+        let target = &query.target_room_mm;
+        let z_mm = target.z - self.mobile.hip_height_mm;
+        let mut near = Vec::new();
+        for [below, above] in NEAR_HEIGHT_MM {
+            near = self.capability.near_height(z_mm, below, above);
+            if near.len() >= FEW {
+                break;
+            }
+        }
+        let approach = self.mobile.placing.approach;
+        let mut scanned: Vec<BasePose> = Vec::new();
+        let mut found: Vec<Candidate> = Vec::new();
+        for sample in near {
+            if !approach.admits(&sample.effector_mm) {
+                continue;
+            }
+            let hand = sample.effector_mm.xy();
+            for (heading, region) in self.regions() {
+                let offset = Rotation2::new(*heading) * hand;
+                let (x, y) = (target.x - offset.x, target.y - offset.y);
+                let pose = BasePose {
+                    position_mm: Point3::new(x, y, self.mobile.hip_height_mm),
+                    heading_rad: *heading,
+                };
+                if !region.roughly_contains(x, y)
+                    || scanned.iter().any(|p| same_place(p, &pose))
+                    || !region.contains(x, y)
+                {
+                    continue;
+                }
+                scanned.push(pose);
+                let clear = query.obstacles.is_none()
+                    || query
+                        .problem(self.chain, pose)
+                        .collision(&sample.q)
+                        .is_none();
+                if clear {
+                    found.push(Candidate {
+                        pose,
+                        start: Some(sample.q.clone()),
+                    });
+                }
+                if found.len() == SEEDED || scanned.len() == SCANNED {
+                    return found;
+                }
+            }
+        }
+        found
+    }
+
+    /// For each heading, the admissible point nearest to where the arm
+    /// would rather have the target (its workspace centre, turned into the
+    /// approach), the nearest first; those the approach admits.
+    fn nearest(&self, target: &Point3<f64>) -> Vec<BasePose> {
+        let hint = toward(self.hint, self.mobile.placing.approach);
         let mut scored: Vec<(f64, BasePose)> = self
-            .regions
-            .iter()
+            .regions()
             .filter_map(|(heading, region)| {
-                let offset = Rotation2::new(*heading) * self.hint;
+                let offset = Rotation2::new(*heading) * hint;
                 let preferred = Point::new(target.x - offset.x, target.y - offset.y);
-                let p = nearest(region, preferred)?;
+                let p = nearest(region.region(), preferred)?;
                 let pose = BasePose {
                     position_mm: Point3::new(p.x(), p.y(), self.mobile.hip_height_mm),
                     heading_rad: *heading,
                 };
-                Some(((p.x() - preferred.x()).hypot(p.y() - preferred.y()), pose))
+                let admitted = self.mobile.placing.approach.admits_pose(&pose, target);
+                admitted.then(|| ((p.x() - preferred.x()).hypot(p.y() - preferred.y()), pose))
             })
             .collect();
         scored.sort_by(|a, b| a.0.total_cmp(&b.0));
@@ -191,14 +280,54 @@ impl PreparedMobile<'_> {
     }
 }
 
+/// Whether two poses are one candidate: the same heading, close.
+fn same_place(a: &BasePose, b: &BasePose) -> bool {
+    a.heading_rad == b.heading_rad && (a.position_mm - b.position_mm).xy().norm() < APART_MM
+}
+
+/// The workspace centre `hint` turned, if it must be, into the approach:
+/// straight ahead for a forward approach, straight to its side for a side
+/// one.
+fn toward(hint: Vector2<f64>, approach: Approach) -> Vector2<f64> {
+    let length = hint.norm();
+    if approach.admits(&hint.push(0.0)) {
+        return hint;
+    }
+    match approach {
+        Approach::Side if hint.y > 0.0 => Vector2::new(0.0, length),
+        Approach::Side => Vector2::new(0.0, -length),
+        _ => Vector2::new(length, 0.0),
+    }
+}
+
 impl PreparedBase for PreparedMobile<'_> {
     fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement {
-        let poses = self.candidates(&query.target_room_mm);
-        search(query, self.chain, &poses, solver).unwrap_or_else(|| nowhere(self.room, self.chain))
+        let candidates = self.candidates(query);
+        search(query, self.chain, &candidates, solver)
+            .unwrap_or_else(|| nowhere(self.room, self.chain))
     }
 
-    fn candidates(&self, target_room_mm: &Point3<f64>) -> Vec<BasePose> {
-        PreparedMobile::candidates(self, target_room_mm)
+    /// The nearest points of each heading's region, and the hip points
+    /// within the chain's reach of the target (where the search keeps its
+    /// candidates) grown by the footprint's extent (what decides whether
+    /// the base fits there) and by how far a sample's hand may be below or
+    /// above the target.
+    fn hips(&self, target_room_mm: &Point3<f64>, tolerance_mm: f64) -> Hips {
+        let radius_mm = self.chain.reach_bound_mm()
+            + tolerance_mm
+            + self.mobile.footprint.extent_mm()
+            + NEAR_HEIGHT_MM[NEAR_HEIGHT_MM.len() - 1][1];
+        Hips {
+            poses: self.nearest(target_room_mm),
+            around: Some((*target_room_mm, radius_mm)),
+        }
+    }
+
+    fn admits(&self, pose: &BasePose, target_room_mm: &Point3<f64>) -> bool {
+        self.mobile
+            .placing
+            .approach
+            .admits_pose(pose, target_room_mm)
     }
 }
 

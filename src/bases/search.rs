@@ -20,23 +20,44 @@ use crate::plugin::{BasePose, IkProblem, Placement, ReachQuery, Retry, Search, S
 use crate::scene::Preferred;
 use crate::solvers::Kicks;
 
+/// A placement to try: the base pose and, where one is known (a
+/// capability map's sample), the posture to start from.
+#[derive(Clone, Debug)]
+pub struct Candidate {
+    pub pose: BasePose,
+    pub start: Option<Vec<f64>>,
+}
+
+impl Candidate {
+    /// A pose with no known posture: the solver's own starts.
+    pub fn at(pose: BasePose) -> Self {
+        Candidate { pose, start: None }
+    }
+}
+
 /// A placement whose posture reached the target through something.
 struct Blocked {
     pose: BasePose,
     q: Vec<f64>,
 }
 
-/// The placement kept over `poses` (none when there are no poses).
+/// The placement kept over `candidates` (none when there are none): from
+/// a candidate with a start, one descent of the solver from it; from one
+/// without, the solver's own starts.
 pub fn search(
     query: &ReachQuery<'_>,
     chain: &Chain,
-    poses: &[BasePose],
+    candidates: &[Candidate],
     solver: &dyn Solver,
 ) -> Option<Placement> {
     let mut best = Preferred::new(query.tolerance_mm);
     let mut blocked = Vec::new();
-    for &pose in within_reach(query, chain, poses) {
-        let placement = query.solve_at(chain, pose, solver);
+    for candidate in within_reach(query, chain, candidates) {
+        let pose = candidate.pose;
+        let placement = match &candidate.start {
+            Some(start) => query.solve_from_at(chain, pose, solver, start.clone()),
+            None => query.solve_at(chain, pose, solver),
+        };
         let solution = &placement.solution;
         if solution.collision.is_some() && solution.distance_mm <= query.tolerance_mm {
             blocked.push(Blocked {
@@ -74,22 +95,22 @@ fn clear_start(problem: &IkProblem<'_>, kicks: &mut Kicks<'_>, draws: usize) -> 
 /// that steers clear (a check costs a microsecond or two, a descent tens).
 const CLEAR_DRAWS: usize = 16;
 
-/// The poses from which the target is within the chain's reach (no
+/// The candidates from which the target is within the chain's reach (no
 /// longer than its links end to end); if there are none, the most
-/// promising pose alone, so that the answer still shows the closest the
-/// person came.
+/// promising alone, so that the answer still shows the closest the person
+/// came.
 fn within_reach<'p>(
     query: &ReachQuery<'_>,
     chain: &Chain,
-    poses: &'p [BasePose],
-) -> Vec<&'p BasePose> {
+    candidates: &'p [Candidate],
+) -> Vec<&'p Candidate> {
     let bound_mm = chain.reach_bound_mm() + query.tolerance_mm;
-    let near: Vec<&BasePose> = poses
+    let near: Vec<&Candidate> = candidates
         .iter()
-        .filter(|pose| pose.to_base(&query.target_room_mm).coords.norm() <= bound_mm)
+        .filter(|c| c.pose.to_base(&query.target_room_mm).coords.norm() <= bound_mm)
         .collect();
     if near.is_empty() {
-        poses.iter().take(1).collect()
+        candidates.iter().take(1).collect()
     } else {
         near
     }

@@ -11,10 +11,10 @@
 //! (Stiftung Warentest's rollators, 540-600 mm). Assumed: the frame starts
 //! 150 mm ahead of the hip point, beside the feet; its sides 30 mm thick.
 
-use nalgebra::{Point3, Vector3};
+use nalgebra::Point3;
 
 use super::placement::Mobile;
-use super::{zone, zone_params};
+use super::PlacingSettings;
 use crate::geometry::{Cuboid, Shape, Solid};
 use crate::kinematics::Posture;
 use crate::plugin::{Base, BaseError, BasePlugin, Options, ParamSpec, Params, Plugin, Settings};
@@ -24,7 +24,7 @@ use crate::scene::Physique;
 pub struct Trolley;
 
 /// Its settings.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct TrolleySettings {
     pub hip_height_mm: Option<f64>,
     pub width_mm: f64,
@@ -32,8 +32,7 @@ pub struct TrolleySettings {
     pub ahead_mm: f64,
     pub handle_height_mm: Option<f64>,
     pub seat_height_mm: f64,
-    pub headings: u32,
-    pub zone_mm: [Option<Vector3<f64>>; 2],
+    pub placing: PlacingSettings,
 }
 
 impl Settings for TrolleySettings {
@@ -73,11 +72,10 @@ impl Settings for TrolleySettings {
                 .length("seat_height", 560.0, "the seat's height (0: none)")
                 .range(0.0, 2000.0)
                 .get(),
-            headings: p
-                .integer("headings", 16, "directions tried to face the target")
-                .range(1.0, 360.0)
-                .get() as u32,
-            zone_mm: zone_params(p, "one corner of the floor zone the person must stay in"),
+            placing: PlacingSettings::visit(
+                p,
+                "one corner of the floor zone the person must stay in",
+            ),
         }
     }
 }
@@ -125,8 +123,7 @@ impl BasePlugin for Trolley {
             person,
             pelvis,
             hip_height_mm,
-            s.headings,
-            zone(s.zone_mm)?,
+            s.placing.placing()?,
         )))
     }
 }

@@ -18,10 +18,10 @@
 //! the person's legs: 1,200 mm for the 50th-percentile man, against
 //! ADA's 1,065 mm plus 150 mm of toes.
 
-use nalgebra::{Point3, Vector3};
+use nalgebra::Point3;
 
 use super::placement::Mobile;
-use super::{zone, zone_params};
+use super::PlacingSettings;
 use crate::geometry::{Cuboid, Shape, Solid};
 use crate::kinematics::{Legs, Posture};
 use crate::plugin::{Base, BaseError, BasePlugin, Options, ParamSpec, Params, Plugin, Settings};
@@ -31,7 +31,7 @@ use crate::scene::Physique;
 pub struct Wheelchair;
 
 /// Its settings.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct WheelchairSettings {
     pub seat_height_mm: f64,
     pub hip_above_seat_mm: Option<f64>,
@@ -44,8 +44,7 @@ pub struct WheelchairSettings {
     pub shank_forward_rad: f64,
     pub armrests: bool,
     pub armrest_height_mm: f64,
-    pub headings: u32,
-    pub zone_mm: [Option<Vector3<f64>>; 2],
+    pub placing: PlacingSettings,
 }
 
 impl Settings for WheelchairSettings {
@@ -105,11 +104,10 @@ impl Settings for WheelchairSettings {
                 .length("armrest_height", 760.0, "the armrests' top above the floor")
                 .range(200.0, 1500.0)
                 .get(),
-            headings: p
-                .integer("headings", 16, "headings of the chair tried")
-                .range(1.0, 360.0)
-                .get() as u32,
-            zone_mm: zone_params(p, "one corner of the floor zone the chair must stay in"),
+            placing: PlacingSettings::visit(
+                p,
+                "one corner of the floor zone the chair must stay in",
+            ),
         }
     }
 }
@@ -153,8 +151,7 @@ impl BasePlugin for Wheelchair {
             person,
             pelvis,
             hip_height_mm,
-            s.headings,
-            zone(s.zone_mm)?,
+            s.placing.placing()?,
         )))
     }
 }

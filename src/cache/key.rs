@@ -1,9 +1,9 @@
 //! The key of each task's result: a hash, bit for bit, of every value its
-//! answer depends on. Of the room, that is its size, the placements the
-//! task's base may try for each point (they hold all the floor's obstacles
-//! do to the answer: the admissible region is computed over all of them,
-//! and only its candidate points are used), and the obstacles within reach
-//! of those placements (`reach.rs`). Placements are computed again only
+//! answer depends on. Of the room, that is its size, where the task's base
+//! may put the hip for each point (`Hips`: poses, and for a base that
+//! searches the floor a ball about the point that holds every hip point it
+//! may try and the floor that decides whether it fits there), and the
+//! obstacles within reach of those (`reach.rs`). Placements are computed again only
 //! when the room's obstacles, the person or the points change.
 
 use std::collections::hash_map::DefaultHasher;
@@ -71,7 +71,7 @@ fn tried(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence) -> Vec<T
         .par_iter()
         .map(|p| Tried {
             point_mm: *p,
-            poses: prepared.candidates(p),
+            hips: prepared.hips(p, dependence.tolerance_mm),
         })
         .collect()
 }
@@ -101,7 +101,10 @@ fn key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence, tried: &[T
         room.name.hash(h);
         hash_bits(room.size_mm.iter(), h);
         for t in tried {
-            t.poses.iter().for_each(|pose| hash_pose(pose, h));
+            t.hips.poses.iter().for_each(|pose| hash_pose(pose, h));
+            if let Some((centre, radius_mm)) = &t.hips.around {
+                hash_bits(centre.iter().chain([radius_mm]), h);
+            }
         }
         if let Some(reach_mm) = dependence.reach_mm {
             for i in obstacles_within(room, tried, reach_mm, dependence.sight_lines) {

@@ -1,6 +1,7 @@
 //! Which obstacles a task can meet: those within its reach of one of the
 //! placements its base may try, or (lines of sight) of the segment from
-//! such a placement to the point looked at. Measured to each obstacle's
+//! such a placement to the point looked at, or within the radius and the
+//! reach of the point where the base may try any hip in a ball about it. Measured to each obstacle's
 //! axis-aligned bounds, which hold the obstacle: an obstacle left out
 //! cannot touch a link or a line of sight.
 
@@ -8,12 +9,13 @@ use nalgebra::{Isometry3, Point3, Translation3, Vector2, Vector3};
 use parry3d_f64::query::{self, PointQuery};
 use parry3d_f64::shape::{Cuboid, Segment};
 
-use crate::scene::{BasePose, BoxObstacle, MeshObstacle, Room};
+use crate::plugin::Hips;
+use crate::scene::{BoxObstacle, MeshObstacle, Room};
 
-/// The placements a base may try for one point, and the point.
+/// Where a base may put the hip for one point, and the point.
 pub(super) struct Tried {
     pub point_mm: Point3<f64>,
-    pub poses: Vec<BasePose>,
+    pub hips: Hips,
 }
 
 /// The indices (boxes, then meshes) of the room's obstacles within
@@ -34,11 +36,18 @@ pub(super) fn obstacles_within(
         .enumerate()
         .filter(|(_, b)| {
             tried.iter().any(|t| {
-                t.poses.iter().any(|pose| {
+                let near_pose = t.hips.poses.iter().any(|pose| {
                     let hip = pose.position_mm;
                     let end = if sight_lines { t.point_mm } else { hip };
                     b.distance_to_segment(&hip, &end) <= reach_mm + MARGIN_MM
-                })
+                });
+                // A hip within the radius of the point: the segment from
+                // it to the point, and all within reach of either, is
+                // within the radius and the reach of the point.
+                near_pose
+                    || t.hips.around.is_some_and(|(centre, radius_mm)| {
+                        b.distance_to_segment(&centre, &centre) <= radius_mm + reach_mm + MARGIN_MM
+                    })
             })
         })
         .map(|(i, _)| i)

@@ -69,6 +69,15 @@ impl Footprint {
 
     /// The outline of part `part` turned by `heading_rad`
     /// (counter-clockwise), relative to the hip point.
+    /// The farthest any part reaches from the hip point, on the floor.
+    pub fn extent_mm(&self) -> f64 {
+        self.parts
+            .iter()
+            .flat_map(|p| &p.outline_mm)
+            .map(|c| c.norm())
+            .fold(0.0, f64::max)
+    }
+
     pub fn corners(&self, part: usize, heading_rad: f64) -> Vec<Coord<f64>> {
         let turn = Rotation2::new(heading_rad);
         self.parts[part]

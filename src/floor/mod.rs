@@ -3,7 +3,9 @@
 //! of hip points where it fits, computed with the `geo` polygon library.
 
 mod footprint;
+mod inside;
 mod region;
 
 pub use footprint::{FloorPart, Footprint};
+pub use inside::Inside;
 pub use region::{admissible, Zone};

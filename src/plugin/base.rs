@@ -104,6 +104,15 @@ impl ReachQuery<'_> {
     }
 }
 
+/// How many placements one reach may try: `solved` with each of the
+/// solver's starts, `seeded` with one descent from a posture known to
+/// reach near the target.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Tries {
+    pub solved: u64,
+    pub seeded: u64,
+}
+
 /// A base configured from its option block: it decides where the person
 /// stands (or sits).
 pub trait Base: Send + Sync {
@@ -124,8 +133,11 @@ pub trait Base: Send + Sync {
     fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a>;
     /// The most candidate placements one reach may try (what the limit on
     /// solver starts counts).
-    fn placements(&self) -> u64 {
-        1
+    fn placements(&self) -> Tries {
+        Tries {
+            solved: 1,
+            seeded: 0,
+        }
     }
     /// What a base that moves keeps off the floor's obstacles (none for a
     /// fixed base).
@@ -138,10 +150,26 @@ pub trait Base: Send + Sync {
 pub trait PreparedBase: Send + Sync {
     /// Place the base for the target and ask the solver for the posture.
     fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement;
-    /// The placements a reach of `target_room_mm` may try, the most
-    /// promising first (what a cache compares to know that a change of
-    /// the room leaves them alone).
-    fn candidates(&self, target_room_mm: &Point3<f64>) -> Vec<BasePose>;
+    /// Where a reach of `target_room_mm`, counted within `tolerance_mm`,
+    /// may put the hip point (what a cache compares to know that a change
+    /// of the room leaves the answer alone).
+    fn hips(&self, target_room_mm: &Point3<f64>, tolerance_mm: f64) -> Hips;
+    /// Whether a base at `pose` may reach `target_room_mm` from there (a
+    /// map's next point tried from where the last one was reached): a base
+    /// told to approach from the side may not face it.
+    fn admits(&self, _pose: &BasePose, _target_room_mm: &Point3<f64>) -> bool {
+        true
+    }
+}
+
+/// Where a base may put the hip point for one target: at these poses, and
+/// anywhere within `around`'s radius of its point (a base that searches the
+/// floor: the floor's obstacles within that radius decide where it fits,
+/// and the room's, within reach of it, what it reaches).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Hips {
+    pub poses: Vec<BasePose>,
+    pub around: Option<(Point3<f64>, f64)>,
 }
 
 pub trait BasePlugin: Plugin {

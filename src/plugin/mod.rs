@@ -11,7 +11,7 @@ mod registry;
 mod solver;
 mod task;
 
-pub use base::{Base, BaseError, BasePlugin, PreparedBase, ReachQuery, Retry, Search};
+pub use base::{Base, BaseError, BasePlugin, Hips, PreparedBase, ReachQuery, Retry, Search, Tries};
 pub use format::FormatPlugin;
 pub use registry::Registry;
 pub use solver::{IkProblem, Solver, SolverPlugin};

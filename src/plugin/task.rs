@@ -6,7 +6,7 @@
 
 use nalgebra::Point3;
 
-use super::{Base, Options, Plugin, Registry, SettingsError};
+use super::{Base, Options, Plugin, Registry, SettingsError, Tries};
 use crate::error::ErrorKind;
 use crate::kinematics::Chain;
 use crate::progress::Progress;
@@ -76,6 +76,8 @@ pub struct Dependence {
     /// Lines of sight run from the eyes (within `reach_mm` of the hip) to
     /// each point, so obstacles between count too.
     pub sight_lines: bool,
+    /// How close to a point counts as reaching it.
+    pub tolerance_mm: f64,
 }
 
 pub trait TaskPlugin: Plugin {
@@ -113,7 +115,7 @@ pub trait Task: Send + Sync {
     }
     /// The most solver starts one point may need from `placements`
     /// candidate placements (what the limit on solver starts counts).
-    fn starts_per_point(&self, placements: u64) -> u64;
+    fn starts_per_point(&self, placements: Tries) -> u64;
     /// What the answer depends on in the room (for the cache).
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence;
     fn run(&self, input: &TaskInput<'_>) -> TaskReport;

@@ -10,7 +10,7 @@ use crate::collision::Obstacles;
 use crate::kinematics::Chain;
 use crate::plugin::{
     Dependence, EffectorNeed, Params, Placement, PluginConfig, PluginKind, ReachQuery, Registry,
-    Retry, Search, SettingsError, Solver, TaskInput, Value,
+    Retry, Search, SettingsError, Solver, TaskInput, Tries, Value,
 };
 use crate::report::Asked;
 use crate::scene::{OwnBody, Room};
@@ -162,14 +162,17 @@ impl Reaching {
     /// The most solver starts one point needs from `placements` candidate
     /// placements: each runs the solver, and where obstacles block, the
     /// retry runs `blocked_solver` from some of them.
-    pub fn starts_per_point(&self, placements: u64) -> u64 {
+    pub fn starts_per_point(&self, placements: Tries) -> u64 {
+        let tried = placements.solved.saturating_add(placements.seeded);
         let retries = if self.common.collisions {
-            u64::from(self.common.blocked_retries).min(placements)
+            u64::from(self.common.blocked_retries).min(tried)
         } else {
             0
         };
         placements
+            .solved
             .saturating_mul(self.solver.starts())
+            .saturating_add(placements.seeded)
             .saturating_add(retries.saturating_mul(self.blocked_solver.starts()))
     }
 
@@ -261,6 +264,7 @@ impl Reaching {
             points_mm,
             reach_mm: looked_at.then_some(reach_mm + clearance_mm),
             sight_lines,
+            tolerance_mm: self.common.tolerance_mm,
         }
     }
 }

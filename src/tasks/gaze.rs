@@ -15,7 +15,7 @@ use crate::error::ErrorKind;
 use crate::kinematics::{Chain, Joint, JointKind};
 use crate::plugin::{
     Dependence, EffectorNeed, Options, ParamSpec, Params, Placement, Plugin, Registry, Search,
-    Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin,
+    Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
 };
 use crate::report::{GazeReport, Names, Sight, TaskReport};
 use crate::scene::{Blocker, OwnBody, Room, Vision};
@@ -205,7 +205,7 @@ impl Task for GazeTask {
         needs_look_link(person, chain)
     }
 
-    fn starts_per_point(&self, placements: u64) -> u64 {
+    fn starts_per_point(&self, placements: Tries) -> u64 {
         self.reaching.starts_per_point(placements)
     }
 

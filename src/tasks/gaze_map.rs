@@ -11,7 +11,7 @@ use crate::error::ErrorKind;
 use crate::kinematics::Chain;
 use crate::plugin::{
     Dependence, EffectorNeed, Options, ParamSpec, Params, Placement, Plugin, Registry, Settings,
-    SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin,
+    SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
 };
 use crate::report::TaskReport;
 
@@ -88,7 +88,7 @@ impl Task for GazeMapTask {
         self.grid.points(subject)
     }
 
-    fn starts_per_point(&self, placements: u64) -> u64 {
+    fn starts_per_point(&self, placements: Tries) -> u64 {
         self.reaching.starts_per_point(placements)
     }
 

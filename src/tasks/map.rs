@@ -13,7 +13,7 @@ use crate::error::ErrorKind;
 use crate::kinematics::Chain;
 use crate::plugin::{
     Dependence, EffectorNeed, Options, ParamSpec, Params, Placement, Plugin, Registry, Search,
-    Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin,
+    Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
 };
 use crate::report::{MapCell, MapReport, TaskReport};
 use crate::scene::Surface;
@@ -152,7 +152,7 @@ impl Task for MapTask {
         self.grid.points(subject)
     }
 
-    fn starts_per_point(&self, placements: u64) -> u64 {
+    fn starts_per_point(&self, placements: Tries) -> u64 {
         self.reaching.starts_per_point(placements)
     }
 
@@ -262,11 +262,18 @@ fn map_report(
                         asked.obstacles,
                         input.base.own_body(),
                     );
-                    let on = last.as_ref().and_then(|p| {
-                        let next =
-                            query.solve_from_at(asked.chain, p.pose, solver, p.solution.q.clone());
-                        judge(&next, cell.point_mm).then_some(next)
-                    });
+                    let on = last
+                        .as_ref()
+                        .filter(|p| prepared.admits(&p.pose, &query.target_room_mm))
+                        .and_then(|p| {
+                            let next = query.solve_from_at(
+                                asked.chain,
+                                p.pose,
+                                solver,
+                                p.solution.q.clone(),
+                            );
+                            judge(&next, cell.point_mm).then_some(next)
+                        });
                     let placement = on.unwrap_or_else(|| prepared.reach(&query, solver));
                     input.progress.advance(1);
                     let counts = judge(&placement, cell.point_mm);

@@ -5,7 +5,7 @@ use super::common::{
 };
 use crate::plugin::{
     Dependence, EffectorNeed, Options, ParamSpec, Params, Plugin, Registry, Search, Settings,
-    SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin,
+    SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
 };
 use crate::report::{ReachReport, TaskReport};
 
@@ -67,7 +67,7 @@ impl Task for ReachTask {
         vec![self.0.effector_need()]
     }
 
-    fn starts_per_point(&self, placements: u64) -> u64 {
+    fn starts_per_point(&self, placements: Tries) -> u64 {
         self.0.starts_per_point(placements)
     }
 

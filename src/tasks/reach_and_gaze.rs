@@ -16,6 +16,7 @@ use crate::kinematics::{Body, Chain};
 use crate::plugin::{
     BasePose, Dependence, EffectorNeed, IkSolution, Options, ParamSpec, Params, Placement, Plugin,
     Registry, Search, Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin,
+    Tries,
 };
 use crate::report::{Asked, GazeReport, ReachAndGazeReport, ReachReport, TaskReport};
 use crate::solvers::fabrik::{solve_tree, TreeGoal, TreeProblem, TreeSolution};
@@ -157,7 +158,7 @@ impl Task for ReachAndGazeTask {
             .flatten()
     }
 
-    fn starts_per_point(&self, placements: u64) -> u64 {
+    fn starts_per_point(&self, placements: Tries) -> u64 {
         self.reaching.starts_per_point(placements)
     }
 

@@ -1,0 +1,150 @@
+//! A person's capability map: where their hand can be, relative to the hip
+//! point, and how comfortably. Postures drawn at random within the joint
+//! limits, those that keep the arm out of the person's own body, legs and
+//! base, are sorted into horizontal slices of the base frame by the height
+//! of the effector, the most comfortable first in each slice. A mobile
+//! base reads it backwards: for a target at height z above the hip, each
+//! sample near that height, turned by a heading, says where the hip point
+//! would put the hand on the target in a posture known to be free of the
+//! body (the paper's target minus the admissible region, section 5.3.5,
+//! made of samples).
+//!
+//! Maps are kept for the process's life, keyed by everything they depend
+//! on (the chain and the person's own body), so watch mode and the people
+//! of a scenario who share a body share one map.
+
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock};
+
+use nalgebra::Vector3;
+use rand_chacha::rand_core::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+
+use crate::kinematics::{Chain, Owner};
+use crate::scene::OwnBody;
+use crate::solvers::random_posture;
+
+/// One posture of the map: where it puts the effector in the base frame,
+/// its discomfort and the joint values.
+#[derive(Clone, Debug)]
+pub struct Sample {
+    pub effector_mm: Vector3<f64>,
+    pub discomfort: f64,
+    pub q: Vec<f64>,
+}
+
+/// The samples by the effector's height above the hip point.
+#[derive(Debug)]
+pub struct Capability {
+    /// The height of the bottom of slice 0.
+    bottom_mm: f64,
+    slices: Vec<Vec<Sample>>,
+}
+
+/// How many postures are drawn for one map.
+pub const SAMPLES: usize = 8192;
+/// The height of one slice.
+const SLICE_MM: f64 = 20.0;
+
+impl Capability {
+    /// The map of `chain` for a person whose own body and base are `own`:
+    /// `samples` postures drawn from a fixed seed.
+    pub fn build(chain: &Chain, own: &OwnBody, samples: usize) -> Self {
+        let mut rng = ChaCha8Rng::seed_from_u64(0xcafa_b1e5);
+        let kept: Vec<Sample> = (0..samples)
+            .filter_map(|_| {
+                let q = random_posture(chain, &mut rng);
+                clear_of_body(chain, own, &q).then(|| Sample {
+                    effector_mm: chain.effector(&q).coords,
+                    discomfort: chain.discomfort(&q),
+                    q,
+                })
+            })
+            .collect();
+        let bottom_mm = kept
+            .iter()
+            .map(|s| s.effector_mm.z)
+            .fold(f64::INFINITY, f64::min);
+        let mut slices: Vec<Vec<Sample>> = Vec::new();
+        for s in kept {
+            let k = ((s.effector_mm.z - bottom_mm) / SLICE_MM) as usize;
+            if slices.len() <= k {
+                slices.resize_with(k + 1, Vec::new);
+            }
+            slices[k].push(s);
+        }
+        for slice in &mut slices {
+            slice.sort_by(|a, b| a.discomfort.total_cmp(&b.discomfort));
+        }
+        Capability { bottom_mm, slices }
+    }
+
+    /// The map of `chain` and `own`, built once per process.
+    pub fn of(chain: &Chain, own: &OwnBody) -> Arc<Capability> {
+        static MAPS: OnceLock<Mutex<Maps>> = OnceLock::new();
+        let key = format!("{chain:?}{own:?}");
+        let cell = {
+            let mut maps = MAPS
+                .get_or_init(Mutex::default)
+                .lock()
+                .unwrap_or_else(|e| e.into_inner());
+            if maps.len() >= MAPS_KEPT {
+                maps.clear();
+            }
+            Arc::clone(maps.entry(key).or_default())
+        };
+        Arc::clone(cell.get_or_init(|| Arc::new(Capability::build(chain, own, SAMPLES))))
+    }
+
+    /// The samples whose effector is between `below_mm` under height
+    /// `z_mm` and `above_mm` over it, the most comfortable first.
+    pub fn near_height(&self, z_mm: f64, below_mm: f64, above_mm: f64) -> Vec<&Sample> {
+        let slice = |z: f64| ((z - self.bottom_mm) / SLICE_MM).floor();
+        let first = slice(z_mm - below_mm).max(0.0) as usize;
+        let last = slice(z_mm + above_mm);
+        if last < 0.0 {
+            return Vec::new();
+        }
+        let last = (last as usize).min(self.slices.len().saturating_sub(1));
+        let mut near: Vec<&Sample> = self
+            .slices
+            .get(first..=last)
+            .into_iter()
+            .flatten()
+            .flatten()
+            .filter(|s| (-below_mm..=above_mm).contains(&(s.effector_mm.z - z_mm)))
+            .collect();
+        near.sort_by(|a, b| a.discomfort.total_cmp(&b.discomfort));
+        near
+    }
+
+    /// How many postures the map kept.
+    pub fn len(&self) -> usize {
+        self.slices.iter().map(Vec::len).sum()
+    }
+
+    /// Whether it kept none (a chain that is always inside its own body).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+/// The maps built, by what they depend on, each built once.
+type Maps = HashMap<String, Arc<OnceLock<Arc<Capability>>>>;
+
+/// How many maps the process keeps before it starts again.
+const MAPS_KEPT: usize = 256;
+
+/// Whether posture `q` keeps the chain out of the person's own body and
+/// base and out of itself (the hand, which may rest on what it reaches, is
+/// checked as the rest are: a sample is a start, not an answer).
+fn clear_of_body(chain: &Chain, own: &OwnBody, q: &[f64]) -> bool {
+    let v = chain.volumes(q);
+    let end = Owner::Link(chain.joints.len());
+    let into_own = v
+        .capsules
+        .iter()
+        .zip(&v.owners)
+        .any(|(c, &owner)| owner != end && own.hit(c).is_some());
+    !into_own && v.self_hit().is_none()
+}

