@@ -42,7 +42,7 @@ pub struct Capability {
 }
 
 /// How many postures are drawn for one map.
-pub const SAMPLES: usize = 8192;
+const SAMPLES: usize = 8192;
 /// The height of one slice.
 const SLICE_MM: f64 = 20.0;
 
@@ -116,16 +116,6 @@ impl Capability {
             .collect();
         near.sort_by(|a, b| a.discomfort.total_cmp(&b.discomfort));
         near
-    }
-
-    /// How many postures the map kept.
-    pub fn len(&self) -> usize {
-        self.slices.iter().map(Vec::len).sum()
-    }
-
-    /// Whether it kept none (a chain that is always inside its own body).
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
     }
 }
 

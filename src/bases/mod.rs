@@ -12,7 +12,6 @@ mod search;
 mod trolley;
 mod wheelchair;
 
-pub use capability::{Capability, Sample};
 pub use fixed::{Fixed, FixedSettings};
 pub use placement::Mobile;
 pub use placing::{Approach, Placing, PlacingSettings};

@@ -230,9 +230,11 @@ impl PreparedMobile<'_> {
                     position_mm: Point3::new(x, y, self.mobile.hip_height_mm),
                     heading_rad: *heading,
                 };
+                // The quick count first, the exact test (which would count
+                // again) only for a new point it lets in.
                 if !region.roughly_contains(x, y)
                     || scanned.iter().any(|p| same_place(p, &pose))
-                    || !region.contains(x, y)
+                    || !region.region().contains(&Point::new(x, y))
                 {
                     continue;
                 }
