@@ -54,6 +54,25 @@ fn to_room(base: &BaseReport, p: &Point3<f64>) -> Point3<f64> {
     )
 }
 
+/// The effector's link from `last` (the last joint's origin) toward
+/// `effector`, of radius `radius_mm`, as it is checked: ending its radius
+/// (or `allowance_mm`, a millimetre at least) short of the effector, and
+/// `allowance_mm` thinner, so that the hand may touch what it reaches with
+/// its end. Its end and radius, or none if nothing is left.
+pub fn effector_link_end(
+    last: Point3<f64>,
+    effector: Point3<f64>,
+    radius_mm: f64,
+    allowance_mm: f64,
+) -> Option<(Point3<f64>, f64)> {
+    let gap = radius_mm.max(allowance_mm).max(1.0);
+    let length = (effector - last).norm();
+    (length > gap).then(|| {
+        let b = last + (effector - last) * (1.0 - gap / length);
+        (b, (radius_mm - allowance_mm).max(0.0))
+    })
+}
+
 /// The posture's solids, the effector's link ending its radius (or
 /// `allowance_mm`, a millimetre at least) short and `allowance_mm` thinner
 /// (none if nothing is left).
@@ -97,15 +116,9 @@ pub fn parts(chain: &Chain, posture: &Posture, base: &BaseReport, allowance_mm: 
         frames.last().unwrap_or(&Matrix4::identity()),
         &chain.effector_mm,
     );
-    let gap = chain.effector_link.radius_mm.max(allowance_mm).max(1.0);
-    if (effector - last).norm() > gap {
-        // It ends its radius (or the allowance, a millimetre at least)
-        // short of the effector, and the allowance thinner: the hand may
-        // touch what it reaches with its end.
-        let r = chain.effector_link.radius_mm;
-        let length = (effector - last).norm();
-        let radius_mm = (r - allowance_mm).max(0.0);
-        let b = last + (effector - last) * (1.0 - gap / length);
+    if let Some((b, radius_mm)) =
+        effector_link_end(last, effector, chain.effector_link.radius_mm, allowance_mm)
+    {
         parts.push(Part {
             a: last,
             b,

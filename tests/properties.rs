@@ -11,6 +11,8 @@ use reach::scene::{Blocker, BoxObstacle, OwnBody, Room};
 use reach::solvers::fabrik::{solve_tree, TreeGoal, TreeProblem};
 use reach::solvers::FabrikSettings;
 
+use crate::body_check::effector_link_end;
+
 /// A random joint: revolute (limits within +/-pi) or prismatic (0 to 200 mm).
 fn joint() -> impl Strategy<Value = Joint> {
     (
@@ -117,17 +119,10 @@ fn links_meet_box(chain: &Chain, q: &[f64], allowance_mm: f64, b: &BoxObstacle) 
         .zip(&radii)
         .map(|(w, &r)| (w[0], w[1], r))
         .collect();
-    if (effector - last).norm() > 1e-6 {
-        let r = chain.effector_link.radius_mm - allowance_mm;
-        if r > 0.0 {
-            links.push((last, effector, r));
-        } else {
-            let gap = (-r).max(1.0);
-            let length = (effector - last).norm();
-            if length > gap {
-                links.push((last, last + (effector - last) * (1.0 - gap / length), 0.0));
-            }
-        }
+    if let Some((end, r)) =
+        effector_link_end(last, effector, chain.effector_link.radius_mm, allowance_mm)
+    {
+        links.push((last, end, r));
     }
     links.iter().any(|&(a, b, r)| {
         let capsule = Capsule::new(a, b, r);
