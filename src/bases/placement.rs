@@ -170,7 +170,7 @@ pub struct PreparedMobile<'a> {
     hint: Vector2<f64>,
 }
 
-/// Two candidates at one heading closer than this are one.
+/// Two sampled placements at one heading closer than this are one.
 const APART_MM: f64 = 40.0;
 /// The heights below and above a target's within which samples are first
 /// taken, and how they are widened while fewer than `FEW` are found: up
@@ -191,14 +191,14 @@ impl PreparedMobile<'_> {
     /// the capability map, then the nearest to where the arm works best at
     /// each heading.
     pub fn candidates(&self, query: &ReachQuery<'_>) -> Vec<Candidate> {
-        let target = &query.target_room_mm;
+        // A nearest placement is kept even beside a sampled one: that is
+        // descended from one seed, this from the solver's own starts.
         let mut found = self.sampled(query);
-        for pose in self.nearest(target) {
-            let taken = found.iter().any(|c| same_place(&c.pose, &pose));
-            if !taken {
-                found.push(Candidate::at(pose));
-            }
-        }
+        found.extend(
+            self.nearest(&query.target_room_mm)
+                .into_iter()
+                .map(Candidate::at),
+        );
         found
     }
 
