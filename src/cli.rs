@@ -5,6 +5,7 @@ use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 
 use clap::{Args, Parser, Subcommand};
+use reach::escape::escaped;
 use reach::limits::{CEILINGS, DEFAULTS};
 use reach::plugin::{PluginKind, Registry};
 use reach::{Diagnostics, Input, Limits};
@@ -80,6 +81,10 @@ struct LimitArgs {
     /// Most solver starts the tasks may need, counted at their worst
     #[arg(long, value_name = "N", default_value_t = DEFAULTS.solver_starts as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.solver_starts as u64))]
     max_solver_starts: u64,
+    /// Also read used files, meshes and URDFs from DIR (by default only
+    /// from the scenario's own directory and below); may be repeated
+    #[arg(long, value_name = "DIR")]
+    allow_path: Vec<PathBuf>,
 }
 
 impl LimitArgs {
@@ -108,13 +113,13 @@ pub fn main() -> i32 {
             let limits = e.limits.limits();
             crate::watch::watch(
                 &registry,
-                &limits,
+                (&limits, &e.limits.allow_path),
                 &e.file,
                 formatter.as_ref(),
                 e.out.as_deref(),
             )
         }
-        Command::Check { file, limits } => check(&registry, &limits.limits(), &file),
+        Command::Check { file, limits } => check(&registry, &limits, &file),
         Command::Plugins => {
             print!("{}", plugins_listing(&registry));
             0
@@ -131,7 +136,8 @@ fn run(registry: &Registry, e: &Evaluate) -> i32 {
         return unknown_format(registry, &e.format);
     };
     let limits = e.limits.limits();
-    let (_, checked) = reach::check_within(Input::Path(&e.file), registry, &limits);
+    let allowed = &e.limits.allow_path;
+    let (_, checked) = reach::check_allowing(Input::Path(&e.file), registry, &limits, allowed);
     let scenario = match checked {
         Ok(s) => s,
         Err(d) => return report_diagnostics(&d),
@@ -151,17 +157,21 @@ fn run(registry: &Registry, e: &Evaluate) -> i32 {
 
 fn unknown_format(registry: &Registry, format: &str) -> i32 {
     eprintln!(
-        "error: unknown format `{format}` (formats: {})",
+        "error: unknown format `{}` (formats: {})",
+        escaped(format),
         registry.names(PluginKind::Format).join(", ")
     );
     2
 }
 
-fn check(registry: &Registry, limits: &Limits, file: &Path) -> i32 {
-    let (_, checked) = reach::check_within(Input::Path(file), registry, limits);
+fn check(registry: &Registry, args: &LimitArgs, file: &Path) -> i32 {
+    let limits = args.limits();
+    let (_, checked) =
+        reach::check_allowing(Input::Path(file), registry, &limits, &args.allow_path);
     match checked {
         Ok(s) => {
-            println!("{}: ok ({} tasks)", file.display(), s.tasks.len());
+            let shown = file.display().to_string();
+            println!("{}: ok ({} tasks)", escaped(&shown), s.tasks.len());
             0
         }
         Err(d) => report_diagnostics(&d),

@@ -4,11 +4,12 @@
 //! [`Diagnostics`], which renders them with miette.
 
 use std::fmt;
-use std::sync::Arc;
 
-use miette::{Diagnostic, LabeledSpan, NamedSource, SourceCode};
+use miette::{Diagnostic, LabeledSpan, SourceCode, SourceSpan};
 use thiserror::Error as ThisError;
 
+use crate::escape::escaped;
+use crate::excerpt::{Excerpt, CONTEXT_LINES};
 use crate::source::Sources;
 use crate::span::{Name, Span};
 
@@ -334,7 +335,9 @@ struct ErrorData {
     span: Option<Span>,
     /// Further labels in the same file, such as "first defined here".
     notes: Vec<(Span, String)>,
-    source: Option<NamedSource<Arc<String>>>,
+    /// What the diagnostic shows of its file, and its labels (the span's,
+    /// then the notes') moved onto that; set by [`Diagnostics::attach`].
+    shown: Option<(Excerpt, Vec<SourceSpan>)>,
 }
 
 impl Error {
@@ -343,7 +346,7 @@ impl Error {
             kind,
             span: Some(span),
             notes: Vec::new(),
-            source: None,
+            shown: None,
         }))
     }
 
@@ -353,7 +356,7 @@ impl Error {
             kind,
             span: None,
             notes: Vec::new(),
-            source: None,
+            shown: None,
         }))
     }
 
@@ -385,16 +388,22 @@ impl Error {
         let data = &mut *self.0;
         if let Some(span) = data.span {
             if (span.file.0 as usize) < sources.len() {
-                data.source = Some(sources.get(span.file).named_source());
                 data.notes.retain(|(s, _)| s.file == span.file);
+                let file = sources.get(span.file);
+                let labels: Vec<(usize, usize)> = std::iter::once(span)
+                    .chain(data.notes.iter().map(|(s, _)| *s))
+                    .map(|s| (s.start as usize, s.end as usize))
+                    .collect();
+                data.shown = Some(Excerpt::new(file, &escaped(&file.name), &labels));
             }
         }
     }
 }
 
+/// Messages carry names and paths from files: shown escaped.
 impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        self.0.kind.fmt(f)
+        f.write_str(&escaped(&self.0.kind.to_string()))
     }
 }
 
@@ -409,22 +418,25 @@ impl Diagnostic for Error {
         self.0
             .kind
             .help()
-            .map(|h| Box::new(h) as Box<dyn fmt::Display>)
+            .map(|h| Box::new(escaped(&h).into_owned()) as Box<dyn fmt::Display>)
     }
 
     fn source_code(&self) -> Option<&dyn SourceCode> {
-        self.0.source.as_ref().map(|s| s as &dyn SourceCode)
+        self.0.shown.as_ref().map(|(s, _)| s as &dyn SourceCode)
     }
 
     fn labels(&self) -> Option<Box<dyn Iterator<Item = LabeledSpan> + '_>> {
-        let span = self.0.span?;
-        self.0.source.as_ref()?;
-        let primary = LabeledSpan::new_primary_with_span(Some(self.0.kind.label()), span);
+        let (_, spans) = self.0.shown.as_ref()?;
+        let label = escaped(&self.0.kind.label()).into_owned();
+        let primary = LabeledSpan::new_primary_with_span(Some(label), spans[0]);
         let notes = self
             .0
             .notes
             .iter()
-            .map(|(s, text)| LabeledSpan::new_with_span(Some(text.clone()), *s));
+            .zip(&spans[1..])
+            .map(|((_, text), span)| {
+                LabeledSpan::new_with_span(Some(escaped(text).into_owned()), *span)
+            });
         Some(Box::new(std::iter::once(primary).chain(notes)))
     }
 }
@@ -471,6 +483,7 @@ impl Diagnostics {
             GraphicalTheme::unicode()
         };
         let handler = GraphicalReportHandler::new_themed(theme)
+            .with_context_lines(CONTEXT_LINES)
             .with_width(100)
             .with_links(false);
         let mut out = String::new();

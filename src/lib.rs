@@ -22,6 +22,8 @@ pub mod cache;
 mod check;
 pub mod collision;
 pub mod error;
+pub mod escape;
+mod excerpt;
 pub mod figure;
 pub mod floor;
 pub mod geometry;
@@ -34,6 +36,7 @@ pub mod output;
 pub mod picture;
 pub mod plugin;
 pub mod progress;
+pub mod read;
 pub mod report;
 pub mod scenario;
 pub mod scene;
@@ -71,7 +74,19 @@ pub fn check_within(
     registry: &Registry,
     limits: &Limits,
 ) -> (Sources, Result<Scenario, Diagnostics>) {
-    let (mut sources, loaded) = loader::load(input, limits);
+    check_allowing(input, registry, limits, &[])
+}
+
+/// [`check_within`], reading files from the directories in `also_allowed`
+/// as well as the root's own (`--allow-path`; see [`read`]).
+pub fn check_allowing(
+    input: Input<'_>,
+    registry: &Registry,
+    limits: &Limits,
+    also_allowed: &[std::path::PathBuf],
+) -> (Sources, Result<Scenario, Diagnostics>) {
+    let _suggestions = names::fresh_budget();
+    let (mut sources, loaded) = loader::load(input, limits, also_allowed);
     let result = loaded.and_then(|files| {
         let (data_files, checked) = check::check(&sources, &files, registry, limits);
         sources.add_data_files(data_files);

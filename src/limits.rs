@@ -13,7 +13,8 @@ pub struct Limits {
     /// Deepest nesting of parentheses and braces (expressions, points,
     /// option blocks), counted together.
     pub nesting: usize,
-    /// Most operands and operators in one expression.
+    /// Most operands and operators in one expression, those inside its
+    /// parentheses included (each is a step of a recursion).
     pub expression_terms: usize,
     /// Longest chain of constants defined in terms of each other.
     pub constant_chain: usize,

@@ -9,6 +9,7 @@ use std::path::{Path, PathBuf};
 use crate::error::{Diagnostics, Error, ErrorKind};
 use crate::limits::Limits;
 use crate::names::suggest;
+use crate::read::{self, Allowed, FileKind, ReadError};
 use crate::source::{Origin, Sources};
 use crate::span::{FileId, Span};
 use crate::std_modules;
@@ -37,21 +38,31 @@ pub enum Input<'a> {
 
 /// Load the scenario. On failure the diagnostics come with the sources they
 /// point into.
-pub fn load(input: Input<'_>, limits: &Limits) -> (Sources, Result<Vec<LoadedFile>, Diagnostics>) {
+pub fn load(
+    input: Input<'_>,
+    limits: &Limits,
+    also_allowed: &[PathBuf],
+) -> (Sources, Result<Vec<LoadedFile>, Diagnostics>) {
     let mut loader = Loader {
         limits: *limits,
         ..Loader::default()
     };
+    let root = match input {
+        Input::Path(path) => Some(path),
+        Input::Text { .. } => None,
+    };
+    loader.loaded.sources.allowed = Allowed::around(root, also_allowed);
     match input {
         Input::Path(path) => {
             let key = Key::Disk(canonical(path));
             loader.load_disk(path, key, None);
         }
         Input::Text { name, text } => {
-            let id = loader
-                .loaded
-                .sources
-                .add(name.to_string(), Origin::Memory, text.to_string());
+            let id = loader.loaded.sources.add(
+                name.to_string(),
+                Origin::Memory,
+                as_lines(text.to_string()),
+            );
             loader.parse_and_follow(id, Key::Memory);
         }
     }
@@ -82,6 +93,26 @@ struct Loader {
     limits: Limits,
 }
 
+/// Scenario text as the parser and diagnostics read it: without the
+/// byte-order mark some editors save, and with a lone carriage return (old
+/// Mac line endings) taken as a line feed, so that every line number agrees
+/// (a line feed for a carriage return keeps every offset).
+fn as_lines(mut text: String) -> String {
+    if let Some(rest) = text.strip_prefix('\u{feff}') {
+        text = rest.to_string();
+    }
+    if !text.contains('\r') {
+        return text;
+    }
+    let mut bytes = text.into_bytes();
+    for i in 0..bytes.len() {
+        if bytes[i] == b'\r' && bytes.get(i + 1) != Some(&b'\n') {
+            bytes[i] = b'\n';
+        }
+    }
+    String::from_utf8(bytes).expect("a carriage return swapped for a line feed stays UTF-8")
+}
+
 fn canonical(path: &Path) -> PathBuf {
     path.canonicalize().unwrap_or_else(|_| path.to_path_buf())
 }
@@ -89,20 +120,28 @@ fn canonical(path: &Path) -> PathBuf {
 impl Loader {
     fn load_disk(&mut self, path: &Path, key: Key, used_at: Option<Span>) {
         let shown = path.display().to_string();
-        if let Ok(meta) = std::fs::metadata(path) {
-            if meta.len() > self.limits.file_bytes {
-                let what = format!("`{shown}` ({} bytes)", meta.len());
-                let limit = format!("{} bytes (--max-file-bytes)", self.limits.file_bytes);
-                return self.fail(ErrorKind::TooLarge { what, limit }, used_at);
-            }
-        }
-        let text = match std::fs::read(path) {
+        let limit = self.limits.file_bytes;
+        let read = match used_at {
+            None => read::read_root(path, limit),
+            Some(_) => read::read(
+                path,
+                FileKind::Scenario,
+                &self.loaded.sources.allowed,
+                limit,
+            ),
+        };
+        let text = match read {
             Ok(bytes) => match String::from_utf8(bytes) {
                 Ok(t) => t,
                 Err(e) => return self.not_utf8(path, shown, e),
             },
+            Err(ReadError::TooLarge { limit_bytes }) => {
+                let what = format!("`{shown}`");
+                let limit = format!("{limit_bytes} bytes (--max-file-bytes)");
+                return self.fail(ErrorKind::TooLarge { what, limit }, used_at);
+            }
             Err(e) => {
-                let reason = e.kind().to_string();
+                let reason = e.to_string();
                 return self.fail(
                     ErrorKind::ReadFile {
                         path: shown,
@@ -115,7 +154,7 @@ impl Loader {
         let id = self
             .loaded
             .sources
-            .add(shown, Origin::Path(path.to_path_buf()), text);
+            .add(shown, Origin::Path(path.to_path_buf()), as_lines(text));
         self.parse_and_follow(id, key);
     }
 

@@ -2,10 +2,9 @@
 //! with the names under which diagnostics show them.
 
 use std::path::PathBuf;
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
-use miette::NamedSource;
-
+use crate::read::Allowed;
 use crate::span::FileId;
 
 /// Where a loaded file came from.
@@ -26,12 +25,18 @@ pub struct SourceFile {
     pub name: String,
     pub origin: Origin,
     pub text: Arc<String>,
+    /// Where each line starts, found once when a diagnostic first needs it.
+    line_starts: OnceLock<Vec<usize>>,
 }
 
 impl SourceFile {
-    /// The file as miette wants it for a diagnostic's source code.
-    pub fn named_source(&self) -> NamedSource<Arc<String>> {
-        NamedSource::new(self.name.clone(), Arc::clone(&self.text)).with_language("reach")
+    /// The byte offset at which each line starts: 0, and each offset after
+    /// a line feed.
+    pub fn line_starts(&self) -> &[usize] {
+        self.line_starts.get_or_init(|| {
+            let after_feeds = self.text.match_indices('\n').map(|(i, _)| i + 1);
+            std::iter::once(0).chain(after_feeds).collect()
+        })
     }
 }
 
@@ -41,6 +46,8 @@ pub struct Sources {
     files: Vec<SourceFile>,
     /// Data files the scenario names (OBJ meshes, URDFs), read or not.
     data_files: Vec<PathBuf>,
+    /// The directories its files may be read from.
+    pub allowed: Allowed,
 }
 
 impl Sources {
@@ -50,6 +57,7 @@ impl Sources {
             name,
             origin,
             text: Arc::new(text),
+            line_starts: OnceLock::new(),
         });
         id
     }

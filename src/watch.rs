@@ -30,7 +30,7 @@ type Events = Receiver<notify::Result<notify::Event>>;
 
 pub fn watch(
     registry: &Registry,
-    limits: &Limits,
+    (limits, also_allowed): (&Limits, &[PathBuf]),
     file: &Path,
     formatter: &dyn FormatPlugin,
     out: Option<&Path>,
@@ -47,6 +47,7 @@ pub fn watch(
     let mut state = State {
         terminal: std::io::stdout().is_terminal(),
         limits: *limits,
+        also_allowed: also_allowed.to_vec(),
         cache: TaskCache::default(),
         last_good: None,
         evaluations: 0,
@@ -71,6 +72,7 @@ pub fn watch(
 struct State {
     terminal: bool,
     limits: Limits,
+    also_allowed: Vec<PathBuf>,
     cache: TaskCache,
     last_good: Option<Report>,
     evaluations: u64,
@@ -89,7 +91,12 @@ impl State {
     ) -> (Vec<PathBuf>, String) {
         let started = Instant::now();
         self.evaluations += 1;
-        let (sources, checked) = reach::check_within(Input::Path(file), registry, &self.limits);
+        let (sources, checked) = reach::check_allowing(
+            Input::Path(file),
+            registry,
+            &self.limits,
+            &self.also_allowed,
+        );
         let mut screen = String::new();
         let summary = match checked {
             Ok(scenario) => {

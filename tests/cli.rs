@@ -4,7 +4,7 @@
 use std::path::Path;
 use std::process::{Command, Output};
 
-fn reach(args: &[&str]) -> Output {
+pub(crate) fn reach(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_reach"))
         .args(args)
         .current_dir(env!("CARGO_MANIFEST_DIR"))
@@ -13,11 +13,11 @@ fn reach(args: &[&str]) -> Output {
         .expect("the binary runs")
 }
 
-fn stdout(o: &Output) -> String {
+pub(crate) fn stdout(o: &Output) -> String {
     String::from_utf8_lossy(&o.stdout).into_owned()
 }
 
-fn stderr(o: &Output) -> String {
+pub(crate) fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
@@ -300,7 +300,7 @@ fn stdlib_lists_people_chairs_and_visions() {
 fn every_limit_holds_at_its_ceiling_and_refuses_beyond() {
     use reach::limits::CEILINGS;
     type Make = fn(&std::path::Path, usize) -> String;
-    let cases: [(&str, usize, Make); 6] = [
+    let cases: [(&str, usize, Make); 7] = [
         ("--max-nesting", CEILINGS.nesting, |_, n| {
             format!("let a = {}1{}\n", "(".repeat(n), ")".repeat(n))
         }),
@@ -308,6 +308,20 @@ fn every_limit_holds_at_its_ceiling_and_refuses_beyond() {
             "--max-expression-terms",
             CEILINGS.expression_terms,
             |_, n| format!("let a = {}1\n", "-".repeat(n - 1)),
+        ),
+        // Unary minus inside nested parentheses: every term counts, the
+        // parentheses' as well, since each is a step of the recursion.
+        (
+            "--max-expression-terms",
+            CEILINGS.expression_terms,
+            |_, n| {
+                let levels = reach::limits::DEFAULTS.nesting - 1;
+                let minus = (n - 1 - levels) / levels;
+                let last = n - 1 - levels - minus * (levels - 1);
+                let open = format!("{}(", "-".repeat(minus)).repeat(levels - 1);
+                let close = ")".repeat(levels - 1);
+                format!("let a = {open}{}(1){close}\n", "-".repeat(last))
+            },
         ),
         ("--max-constant-chain", CEILINGS.constant_chain, |_, n| {
             (0..n - 1)
@@ -348,7 +362,7 @@ fn every_limit_holds_at_its_ceiling_and_refuses_beyond() {
             let limit = ceiling.to_string();
             let o = reach(&["check", path.to_str().unwrap(), flag, &limit]);
             let err = stderr(&o);
-            let shown = &err[..err.len().min(600)];
+            let shown: String = err.chars().take(600).collect();
             assert_eq!(
                 o.status.code(),
                 Some(if refused { 1 } else { 0 }),

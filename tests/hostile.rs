@@ -186,3 +186,157 @@ proptest! {
         }
     }
 }
+
+// ------------------------------------------------------------------------
+// Hand-made hostile inputs, by class (issue "Hostile input, round two").
+
+use crate::cli::{reach as reach_bin, stderr, stdout};
+use std::path::Path;
+
+/// Write `text` to `name` in a fresh directory; the directory and path.
+fn scenario(name: &str, text: &[u8]) -> (tempfile::TempDir, std::path::PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join(name);
+    std::fs::write(&path, text).unwrap();
+    (dir, path)
+}
+
+fn check(path: &Path, extra: &[&str]) -> (Option<i32>, String, String) {
+    let mut args = vec!["check", path.to_str().unwrap()];
+    args.extend(extra);
+    let o = reach_bin(&args);
+    (o.status.code(), stdout(&o), stderr(&o))
+}
+
+/// A diagnostic's lines joined, so that a message wrapped at the width
+/// reads as one line.
+fn flat(err: &str) -> String {
+    let lines = err
+        .lines()
+        .map(|l| l.trim_start_matches([' ', '│']).trim_end());
+    lines.collect::<Vec<_>>().join(" ")
+}
+
+/// No character that moves the cursor, recolours or reorders the screen.
+fn assert_printable(text: &str) {
+    let bad = text
+        .chars()
+        .find(|&c| reach::escape::is_unsafe(c) && c != '\n');
+    assert!(bad.is_none(), "{bad:?} printed raw in\n{text}");
+}
+
+#[test]
+fn a_label_far_along_a_long_line_is_shown_cut_about_it() {
+    let line = format!("let a = 1{}+ nope\n", " ".repeat(70_000));
+    let (_dir, path) = scenario("long.reach", line.as_bytes());
+    let (code, _, err) = check(&path, &[]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(err.contains("long.reach:1:70012]"), "{err}");
+    assert!(err.contains("…") && err.contains("nope"), "{err}");
+    assert!(err.lines().all(|l| l.chars().count() < 200), "{err}");
+}
+
+#[test]
+fn control_and_bidi_characters_are_escaped_in_diagnostics() {
+    let text = "// a comment \u{1b}[2J with \u{202e}reversed\u{202c} text\nlet b = zz\u{9b}1m\n";
+    let (_dir, path) = scenario("evil\u{1b}[31m.reach", text.as_bytes());
+    let (code, _, err) = check(&path, &[]);
+    assert_eq!(code, Some(1), "{err}");
+    assert_printable(&err);
+    assert!(
+        err.contains("\\u{1b}[2J") && err.contains("\\u{202e}"),
+        "{err}"
+    );
+    assert!(err.contains("evil\\u{1b}[31m.reach"), "{err}");
+}
+
+#[test]
+fn a_byte_order_mark_is_accepted_and_lone_carriage_returns_end_lines() {
+    let (_dir, path) = scenario("bom.reach", "\u{feff}let a = 1\nlet b = a\n".as_bytes());
+    let (code, out, err) = check(&path, &[]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.contains("ok"), "{out}");
+    let (_dir, path) = scenario("cr.reach", b"let a = 1\rlet b = 2\rlet c = q\r");
+    let (code, _, err) = check(&path, &[]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(err.contains("cr.reach:3:9]"), "{err}");
+    assert!(err.contains(" 3 │ let c = q"), "{err}");
+}
+
+#[cfg(unix)]
+#[test]
+fn fifos_devices_and_directories_are_refused_at_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let fifo = dir.path().join("pipe.reach");
+    assert!(std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap()
+        .success());
+    std::fs::create_dir(dir.path().join("folder.obj")).unwrap();
+    std::os::unix::fs::symlink("/dev/zero", dir.path().join("zero.urdf")).unwrap();
+    std::os::unix::fs::symlink("/dev/urandom", dir.path().join("random.reach")).unwrap();
+    let root = dir.path().join("root.reach");
+    for (line, said) in [
+        ("use \"pipe.reach\"", "a FIFO"),
+        ("use \"random.reach\"", "outside"),
+        (
+            "room r { size 1 x 1 x 1\n mesh m from \"folder.obj\" }",
+            "a directory",
+        ),
+        (
+            "mannequin m from urdf \"zero.urdf\" root \"a\" tip \"b\"",
+            "outside",
+        ),
+    ] {
+        std::fs::write(&root, line).unwrap();
+        let (code, _, err) = check(&root, &[]);
+        assert_eq!(code, Some(1), "{line}: {err}");
+        assert!(flat(&err).contains(said), "{line}: {err}");
+        // Allowed, a device is still not a regular file.
+        let (code, _, err) = check(&root, &["--allow-path", "/dev"]);
+        assert_eq!(code, Some(1), "{line}: {err}");
+        assert!(!err.contains("outside"), "{line}: {err}");
+    }
+    // The root itself: a FIFO or a device is refused, not waited on.
+    for root in [fifo.as_path(), Path::new("/dev/zero")] {
+        let (code, _, err) = check(root, &[]);
+        assert_eq!(code, Some(1), "{err}");
+        assert!(flat(&err).contains("not a regular file"), "{err}");
+    }
+}
+
+#[test]
+fn a_used_file_that_is_not_a_scenario_is_never_shown() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("secret.txt"), "password = hunter2\n").unwrap();
+    let root = dir.path().join("root.reach");
+    for used in [
+        "secret.txt",
+        "/etc/passwd",
+        "../../../../../../etc/hostname",
+    ] {
+        std::fs::write(&root, format!("use \"{used}\"\n")).unwrap();
+        let (code, _, err) = check(&root, &[]);
+        assert_eq!(code, Some(1), "{used}: {err}");
+        assert!(
+            flat(&err).contains("must be a `.reach` file"),
+            "{used}: {err}"
+        );
+        assert!(
+            !err.contains("hunter2") && !err.contains("root:"),
+            "{used}: {err}"
+        );
+    }
+    // A scenario outside the root's directory needs --allow-path.
+    let other = tempfile::tempdir().unwrap();
+    std::fs::write(other.path().join("people.reach"), "let x = 1\n").unwrap();
+    let used = other.path().join("people.reach");
+    std::fs::write(&root, format!("use \"{}\"\nlet y = x\n", used.display())).unwrap();
+    let (code, _, err) = check(&root, &[]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(flat(&err).contains("--allow-path"), "{err}");
+    let allowed = other.path().to_str().unwrap();
+    let (code, _, err) = check(&root, &["--allow-path", allowed]);
+    assert_eq!(code, Some(0), "{err}");
+}

@@ -9,6 +9,7 @@ use nalgebra::{Point3, Rotation3, Vector3};
 
 use super::Checker;
 use crate::error::{Error, ErrorKind};
+use crate::read::{self, FileKind};
 use crate::scene::MeshObstacle;
 use crate::source::Origin;
 use crate::syntax::ast::MeshDecl;
@@ -78,29 +79,17 @@ impl Checker<'_> {
             ));
             None
         };
-        match std::fs::metadata(&path) {
-            Ok(meta) if meta.len() > self.limits.file_bytes => {
-                return bad(
-                    self,
-                    format!(
-                        "larger than the limit of {} bytes (--max-file-bytes)",
-                        self.limits.file_bytes
-                    ),
-                );
-            }
+        let limit = self.limits.file_bytes;
+        let bytes = match read::read(&path, FileKind::Mesh, &self.sources.allowed, limit) {
+            Ok(bytes) => bytes,
             Err(e) => return bad(self, e.to_string()),
-            Ok(_) => {}
-        }
+        };
         let options = tobj::LoadOptions {
             triangulate: true,
             single_index: true,
             ..Default::default()
         };
-        let file = match std::fs::File::open(&path) {
-            Ok(f) => f,
-            Err(e) => return bad(self, e.to_string()),
-        };
-        let mut reader = std::io::BufReader::new(file);
+        let mut reader = std::io::Cursor::new(bytes);
         let models = match tobj::load_obj_buf(&mut reader, &options, |_| {
             Err(tobj::LoadError::OpenFileFailed)
         }) {

@@ -7,6 +7,7 @@ use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::kinematics::{chain_from_urdf, Body, UrdfError};
 use crate::names::suggest;
+use crate::read::{self, FileKind};
 use crate::syntax::ast::UrdfSource;
 
 impl Checker<'_> {
@@ -23,20 +24,14 @@ impl Checker<'_> {
             c.error(Error::new(kind, span));
             None
         };
-        let text = match std::fs::metadata(&path) {
-            Ok(meta) if meta.len() > self.limits.file_bytes => {
-                let reason = format!(
-                    "larger than the limit of {} bytes (--max-file-bytes)",
-                    self.limits.file_bytes
-                );
-                return fail(self, reason, None, source.path.span);
-            }
-            Ok(_) => std::fs::read_to_string(&path),
-            Err(e) => Err(e),
+        let limit = self.limits.file_bytes;
+        let text = match read::read(&path, FileKind::Urdf, &self.sources.allowed, limit) {
+            Ok(bytes) => String::from_utf8(bytes).map_err(|_| "it is not UTF-8 text".to_string()),
+            Err(e) => Err(e.to_string()),
         };
         let text = match text {
             Ok(t) => t,
-            Err(e) => return fail(self, e.to_string(), None, source.path.span),
+            Err(reason) => return fail(self, reason, None, source.path.span),
         };
         let robot = match urdf_rs::read_from_string(&text) {
             Ok(r) => r,

@@ -43,6 +43,7 @@ pub fn parse_file_within(file: FileId, text: &str, limits: &Limits) -> Result<Fi
         file,
         errors: Vec::new(),
         expression_terms: limits.expression_terms,
+        terms_so_far: None,
     };
     let items = root
         .into_inner()
@@ -70,8 +71,13 @@ static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
 struct Builder {
     file: FileId,
     errors: Vec<Error>,
-    /// Most operands and operators in one expression.
+    /// Most operands and operators in one expression, those inside its
+    /// parentheses included: every one is a step of the recursion that
+    /// builds, evaluates and drops it.
     expression_terms: usize,
+    /// Operands and operators of the outermost expression being built so
+    /// far; `None` outside an expression.
+    terms_so_far: Option<usize>,
 }
 
 impl Builder {
@@ -166,25 +172,46 @@ impl Builder {
         Spanned::new(target, span)
     }
 
+    /// An expression, refused (as the number 0, with a diagnostic) if it
+    /// has more terms than the limit, its parentheses' terms included.
     fn expr(&mut self, pair: Pair<Rule>) -> Expr {
+        let outermost = self.terms_so_far.is_none();
+        let before = self.terms_so_far.unwrap_or(0);
+        let expr = self.expr_within(pair, before);
+        if outermost {
+            self.terms_so_far = None;
+        }
+        expr
+    }
+
+    fn expr_within(&mut self, pair: Pair<Rule>, before: usize) -> Expr {
         let span = self.span(&pair);
         let pairs = pair.into_inner();
-        if pairs.len() > self.expression_terms {
+        let terms = before.saturating_add(pairs.len());
+        // Once refused, the outermost expression's count stays past the
+        // limit, so that its other parentheses are not refused again.
+        let refused_already = before > self.expression_terms;
+        self.terms_so_far = Some(terms);
+        if terms > self.expression_terms {
+            let kind = ExprKind::Number {
+                value: 0.0,
+                unit: None,
+            };
+            if refused_already {
+                return Expr { kind, span };
+            }
             // Refused before a tree of that depth is built (or dropped).
             self.errors.push(Error::new(
                 ErrorKind::TooLarge {
                     what: "this expression".into(),
                     limit: format!(
-                        "{} operands and operators (--max-expression-terms)",
+                        "{} operands and operators, those in parentheses included \
+                         (--max-expression-terms)",
                         self.expression_terms
                     ),
                 },
                 span,
             ));
-            let kind = ExprKind::Number {
-                value: 0.0,
-                unit: None,
-            };
             return Expr { kind, span };
         }
         let file = self.file;
