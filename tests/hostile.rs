@@ -340,3 +340,134 @@ fn a_used_file_that_is_not_a_scenario_is_never_shown() {
     let (code, _, err) = check(&root, &["--allow-path", allowed]);
     assert_eq!(code, Some(0), "{err}");
 }
+
+/// `tests/data/human_arm.urdf` with `from` replaced by `to`, checked as a
+/// mannequin; the diagnostics' text (None if it checks).
+fn urdf_with(from: &str, to: &str) -> Option<String> {
+    let urdf = std::fs::read_to_string("tests/data/human_arm.urdf").unwrap();
+    assert!(urdf.contains(from), "{from}");
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("arm.urdf"), urdf.replacen(from, to, 1)).unwrap();
+    let root = dir.path().join("root.reach");
+    std::fs::write(
+        &root,
+        "mannequin arm from urdf \"arm.urdf\" root \"pelvis\" tip \"grip\"\n",
+    )
+    .unwrap();
+    let (code, _, err) = check(&root, &[]);
+    (code != Some(0)).then(|| flat(&err))
+}
+
+#[test]
+fn urdf_limits_origins_and_axes_are_checked_like_reach_text() {
+    let limit = r#"lower="-1.05" upper="3.14""#;
+    assert_eq!(urdf_with(limit, limit), None);
+    for (to, said) in [
+        (r#"lower="2" upper="1""#, "lower 2 above the upper 1"),
+        (r#"lower="NaN" upper="1""#, "not finite"),
+        (r#"lower="-inf" upper="1""#, "not finite"),
+        (r#"lower="-7" upper="1""#, "beyond +/-6.2832 rad"),
+    ] {
+        let err = urdf_with(limit, to).expect("refused");
+        assert!(err.contains(said), "{to}: {err}");
+    }
+    let origin = r#"<origin xyz="0 0 0.05""#;
+    for to in [r#"<origin xyz="0 NaN 0.05""#, r#"<origin xyz="0 0 1e9""#] {
+        let err = urdf_with(origin, to).expect("refused");
+        assert!(
+            err.contains("origin is not finite or lies more than"),
+            "{to}: {err}"
+        );
+    }
+    let axis = r#"<axis xyz="0 -1 0"/>"#;
+    for to in [r#"<axis xyz="0 inf 0"/>"#, r#"<axis xyz="0 0 0"/>"#] {
+        let err = urdf_with(axis, to).expect("refused");
+        assert!(err.contains("zero or not finite axis"), "{to}: {err}");
+    }
+    let deep = format!("{}{}<robot", "<x>".repeat(70), "</x>".repeat(70));
+    let err = urdf_with("<robot", &deep).expect("refused");
+    assert!(err.contains("nest 65 deep"), "{err}");
+}
+
+/// A cube as OBJ text from `min` to `min + size` (mm), its faces wound
+/// outwards or, if `inwards`, inwards; `extra` lines appended.
+fn cube_obj(min: [f64; 3], size: f64, inwards: bool, extra: &str) -> String {
+    let mut text = String::new();
+    for i in 0..8 {
+        let corner = |axis: usize| min[axis] + if i >> axis & 1 == 1 { size } else { 0.0 };
+        text += &format!("v {} {} {}\n", corner(0), corner(1), corner(2));
+    }
+    for face in [
+        "1 3 4 2", "5 6 8 7", "1 2 6 5", "3 7 8 4", "1 5 7 3", "2 4 8 6",
+    ] {
+        let face = if inwards {
+            face.split(' ').rev().collect::<Vec<_>>().join(" ")
+        } else {
+            face.to_string()
+        };
+        text += &format!("f {face}\n");
+    }
+    text + extra
+}
+
+/// The text report (without its first line, which names the file) of a
+/// person reaching a mug inside a crate and a cup beside them, the crate
+/// loaded from OBJ text.
+fn report_with_crate(obj: &str) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("crate.obj"), obj).unwrap();
+    let root = dir.path().join("root.reach");
+    std::fs::write(
+        &root,
+        "units mm deg\nuse std::arm\nroom r {\n  size 3000 x 3000 x 2500\n  \
+         mesh crate from \"crate.obj\"\n  target mug at (650, 1450, 1050)\n  \
+         target cup at (1300, 2300, 1000)\n}\n\
+         person p { mannequin right_arm base fixed { at (1000, 1500, 930) heading 180deg } }\n\
+         reach mug by p\nreach cup by p\n",
+    )
+    .unwrap();
+    let o = reach_bin(&["run", root.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    out.split_once('\n')
+        .map_or(out.clone(), |(_, rest)| rest.to_string())
+}
+
+#[test]
+fn a_mesh_wound_inwards_or_with_degenerate_faces_is_the_same_solid() {
+    let outwards = report_with_crate(&cube_obj([500.0, 1300.0, 900.0], 300.0, false, ""));
+    let inwards = report_with_crate(&cube_obj([500.0, 1300.0, 900.0], 300.0, true, ""));
+    assert_eq!(outwards, inwards);
+    // The crate holds the mug, and leaves the cup beside the person free.
+    let verdict = |target: &str| {
+        let line = outwards
+            .lines()
+            .find(|l| l.starts_with(&format!("reach  {target}")));
+        line.unwrap_or_default().to_string()
+    };
+    assert!(verdict("mug").contains("NOT reachable"), "{outwards}");
+    assert!(!verdict("cup").contains("NOT"), "{outwards}");
+    // Repeated corners, and corners on one line (v9 halfway from v1 to v2).
+    let junk = "v 650 1300 900\nv 1 1 1\nf 9 9 10\nf 1 2 9\nf 10 9 9\n";
+    let with_junk = report_with_crate(&cube_obj([500.0, 1300.0, 900.0], 300.0, false, junk));
+    assert_eq!(outwards, with_junk);
+    // Only degenerate faces: a diagnostic, not a solid that blocks all.
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("crate.obj"),
+        "v 0 0 0\nv 1 1 1\nv 2 2 2\nf 1 2 3\n",
+    )
+    .unwrap();
+    let root = dir.path().join("root.reach");
+    std::fs::write(
+        &root,
+        "room r { size 3000 x 3000 x 2500\n mesh crate from \"crate.obj\" }\n",
+    )
+    .unwrap();
+    let (code, _, err) = check(&root, &[]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(
+        flat(&err).contains("none of its 1 triangles has an area"),
+        "{err}"
+    );
+}

@@ -1,7 +1,9 @@
 //! Mesh obstacles: a Wavefront OBJ file (read with `tobj`, triangulated),
 //! its coordinates in the file's length unit times `scale`, turned by
-//! `rotate` about the vertical and moved to `at`. A file that cannot be
-//! read or parsed, or that has no triangles, is a diagnostic at its name.
+//! `rotate` about the vertical and moved to `at`. Triangles without an
+//! area are dropped and closed pieces wound outwards
+//! (`geometry::cleaned_triangles`). A file that cannot be read or parsed,
+//! or that has no triangle with an area, is a diagnostic at its name.
 
 use std::path::{Path, PathBuf};
 
@@ -9,6 +11,7 @@ use nalgebra::{Point3, Rotation3, Vector3};
 
 use super::Checker;
 use crate::error::{Error, ErrorKind};
+use crate::geometry::cleaned_triangles;
 use crate::read::{self, FileKind};
 use crate::scene::MeshObstacle;
 use crate::source::Origin;
@@ -113,14 +116,20 @@ impl Checker<'_> {
                     .map(|t| [base + t[0], base + t[1], base + t[2]]),
             );
         }
-        if triangles.is_empty() {
-            return bad(self, "it has no faces".into());
-        }
         if vertices
             .iter()
             .any(|v| !v.coords.iter().all(|x| x.is_finite()))
         {
             return bad(self, "a vertex is not a finite number".into());
+        }
+        let faces = triangles.len();
+        let triangles = cleaned_triangles(&vertices, &triangles);
+        if triangles.is_empty() {
+            let reason = match faces {
+                0 => "it has no faces".to_string(),
+                n => format!("none of its {n} triangles has an area"),
+            };
+            return bad(self, reason);
         }
         Some((vertices, triangles))
     }

@@ -33,6 +33,13 @@ impl Checker<'_> {
             Ok(t) => t,
             Err(reason) => return fail(self, reason, None, source.path.span),
         };
+        if let Some(depth) = xml_too_deep(&text, self.limits.nesting) {
+            let reason = format!(
+                "its elements nest {depth} deep, beyond the limit of {} levels (--max-nesting)",
+                self.limits.nesting
+            );
+            return fail(self, reason, None, source.path.span);
+        }
         let robot = match urdf_rs::read_from_string(&text) {
             Ok(r) => r,
             Err(e) => return fail(self, format!("not valid URDF: {e}"), None, source.path.span),
@@ -55,5 +62,81 @@ impl Checker<'_> {
             }
             Err(e) => fail(self, e.to_string(), None, source.tip.span),
         }
+    }
+}
+
+/// How deep the elements of an XML text nest, if deeper than `max_depth`
+/// (a URDF nests three or four deep): checked in one pass before the XML
+/// parser, whose cost grows with the depth, sees the text. Comments,
+/// processing instructions, declarations and quoted attribute values are
+/// skipped; a malformed text is left for the parser to report.
+fn xml_too_deep(text: &str, max_depth: usize) -> Option<usize> {
+    let bytes = text.as_bytes();
+    let skip_past = |from: usize, end: &[u8]| {
+        bytes[from..]
+            .windows(end.len())
+            .position(|w| w == end)
+            .map_or(bytes.len(), |p| from + p + end.len())
+    };
+    let (mut depth, mut i) = (0usize, 0usize);
+    while let Some(p) = bytes[i..].iter().position(|&b| b == b'<') {
+        i += p + 1;
+        match bytes.get(i) {
+            Some(b'!') if bytes[i..].starts_with(b"!--") => i = skip_past(i, b"-->"),
+            Some(b'!') if bytes[i..].starts_with(b"![CDATA[") => i = skip_past(i, b"]]>"),
+            Some(b'!' | b'?') => i = skip_past(i, b">"),
+            Some(b'/') => {
+                depth = depth.saturating_sub(1);
+                i = skip_past(i, b">");
+            }
+            Some(_) => {
+                let (end, self_closing) = tag_end(bytes, i);
+                i = end;
+                if !self_closing {
+                    depth += 1;
+                    if depth > max_depth {
+                        return Some(depth);
+                    }
+                }
+            }
+            None => break,
+        }
+    }
+    None
+}
+
+/// Where a start tag beginning at `from` ends (past its `>`), and whether
+/// it closes itself (`/>`); quoted attribute values may hold `>`.
+fn tag_end(bytes: &[u8], from: usize) -> (usize, bool) {
+    let mut quote = None;
+    for (k, &b) in bytes[from..].iter().enumerate() {
+        match (quote, b) {
+            (Some(q), _) if b == q => quote = None,
+            (Some(_), _) => {}
+            (None, b'"' | b'\'') => quote = Some(b),
+            (None, b'>') => {
+                let self_closing = k > 0 && bytes[from + k - 1] == b'/';
+                return (from + k + 1, self_closing);
+            }
+            _ => {}
+        }
+    }
+    (bytes.len(), false)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::xml_too_deep;
+
+    #[test]
+    fn nesting_is_counted_past_comments_quotes_and_empty_elements() {
+        let urdf = r#"<?xml version="1.0"?><!-- <a><b><c> -->
+            <robot name="r"><link name="a>b"/><joint name="j" type="fixed">
+            <origin xyz="0 0 1"/><parent link="a"/><child link="b"/></joint></robot>"#;
+        assert_eq!(xml_too_deep(urdf, 2), None);
+        assert_eq!(xml_too_deep(urdf, 1), Some(2));
+        let deep = format!("{}{}", "<a>".repeat(100_000), "</a>".repeat(100_000));
+        assert_eq!(xml_too_deep(&deep, 64), Some(65));
+        assert_eq!(xml_too_deep("<a><![CDATA[<b><c>]]></a>", 1), None);
     }
 }

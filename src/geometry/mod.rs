@@ -1,13 +1,16 @@
 //! Solid shapes and the distances between them, in millimetres: a capsule
 //! (a segment with a radius: a limb, a link; a sphere is a capsule of
 //! length zero) and an oriented box (a board, a chair's seat), each in any
-//! one frame. Plain geometry, below the scene that places them.
+//! one frame; and triangle meshes cleaned for collision. Plain geometry,
+//! below the scene that places them.
 
 mod capsule;
 mod cuboid;
+mod triangles;
 
 pub use capsule::{segment_distance, Capsule};
 pub use cuboid::Cuboid;
+pub use triangles::cleaned as cleaned_triangles;
 
 use nalgebra::Point3;
 

@@ -34,7 +34,20 @@ pub enum UrdfError {
     BadAxis {
         joint: String,
     },
+    BadLimits {
+        joint: String,
+        reason: String,
+    },
+    BadOrigin {
+        joint: String,
+    },
 }
+
+/// The farthest a joint's origin may lie from its parent's, in metres:
+/// far beyond any body, near enough that lengths stay exact.
+const FARTHEST_ORIGIN_M: f64 = 100.0;
+/// The longest a prismatic joint may slide, in metres.
+const LONGEST_SLIDE_M: f64 = 100.0;
 
 impl std::fmt::Display for UrdfError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -49,7 +62,17 @@ impl std::fmt::Display for UrdfError {
             UrdfError::NoJoints { root, tip } => {
                 write!(f, "no joint moves between `{root}` and `{tip}`")
             }
-            UrdfError::BadAxis { joint } => write!(f, "joint `{joint}` has a zero axis"),
+            UrdfError::BadAxis { joint } => {
+                write!(f, "joint `{joint}` has a zero or not finite axis")
+            }
+            UrdfError::BadLimits { joint, reason } => {
+                write!(f, "joint `{joint}`'s limits {reason}")
+            }
+            UrdfError::BadOrigin { joint } => write!(
+                f,
+                "joint `{joint}`'s origin is not finite or lies more than {FARTHEST_ORIGIN_M} m \
+                 from its parent"
+            ),
         }
     }
 }
@@ -75,7 +98,9 @@ pub fn chain_from_urdf(robot: &urdf_rs::Robot, root: &str, tip: &str) -> Result<
     let mut first_pre = IsometryMatrix3::identity();
     let mut first_index = None;
     for j in path {
-        let origin = pose_mm(&j.origin);
+        let origin = pose_mm(&j.origin).ok_or_else(|| UrdfError::BadOrigin {
+            joint: j.name.clone(),
+        })?;
         let kind = match j.joint_type {
             urdf_rs::JointType::Fixed => {
                 pending *= origin;
@@ -100,7 +125,7 @@ pub fn chain_from_urdf(robot: &urdf_rs::Robot, root: &str, tip: &str) -> Result<
             None => joints.push(locked(&format!("{}_base", j.name), before)),
         }
         first_index.get_or_insert(joints.len());
-        joints.push(moving(j, kind));
+        joints.push(moving(j, kind)?);
         pending = to_axis.inverse();
     }
     let Some(k) = joints.len().checked_sub(1) else {
@@ -139,10 +164,17 @@ fn path<'r>(
     root: &str,
     tip: &str,
 ) -> Result<Vec<&'r urdf_rs::Joint>, UrdfError> {
+    // Each link's parent joint, the first one listed: one pass, however
+    // many joints the file has.
+    let mut parent_joint: std::collections::HashMap<&str, &urdf_rs::Joint> =
+        std::collections::HashMap::with_capacity(robot.joints.len());
+    for j in robot.joints.iter().rev() {
+        parent_joint.insert(j.child.link.as_str(), j);
+    }
     let mut chain = Vec::new();
     let mut link = tip;
     while link != root {
-        let Some(j) = robot.joints.iter().find(|j| j.child.link == link) else {
+        let Some(&j) = parent_joint.get(link) else {
             return Err(UrdfError::NoPath {
                 root: root.into(),
                 tip: tip.into(),
@@ -161,18 +193,27 @@ fn path<'r>(
     Ok(chain)
 }
 
-/// A URDF pose (metres, roll-pitch-yaw) in millimetres.
-fn pose_mm(p: &urdf_rs::Pose) -> IsometryMatrix3<f64> {
+/// A URDF pose (metres, roll-pitch-yaw) in millimetres; none if a number
+/// is not finite or the offset is farther than [`FARTHEST_ORIGIN_M`].
+fn pose_mm(p: &urdf_rs::Pose) -> Option<IsometryMatrix3<f64>> {
     let [x, y, z] = *p.xyz;
     let [roll, pitch, yaw] = *p.rpy;
-    IsometryMatrix3::from_parts(
+    let finite = p.xyz.iter().chain(p.rpy.iter()).all(|v| v.is_finite());
+    if !finite || x.hypot(y).hypot(z) > FARTHEST_ORIGIN_M {
+        return None;
+    }
+    Some(IsometryMatrix3::from_parts(
         Translation3::new(x * 1000.0, y * 1000.0, z * 1000.0),
         Rotation3::from_euler_angles(roll, pitch, yaw),
-    )
+    ))
 }
 
-/// A rotation taking the z axis onto `axis` (none for a zero axis).
+/// A rotation taking the z axis onto `axis` (none for a zero or not
+/// finite axis).
 fn z_onto(axis: &[f64; 3]) -> Option<IsometryMatrix3<f64>> {
+    if !axis.iter().all(|v| v.is_finite()) {
+        return None;
+    }
     let a = Vector3::from(*axis);
     let a = Unit::try_new(a, 1e-12)?;
     let rotation = Rotation3::rotation_between(&Vector3::z(), &a)
@@ -183,13 +224,16 @@ fn z_onto(axis: &[f64; 3]) -> Option<IsometryMatrix3<f64>> {
     ))
 }
 
-fn moving(j: &urdf_rs::Joint, kind: JointKind) -> Joint {
+fn moving(j: &urdf_rs::Joint, kind: JointKind) -> Result<Joint, UrdfError> {
     let (min, max) = match (&j.joint_type, kind) {
         (urdf_rs::JointType::Continuous, _) => (-std::f64::consts::PI, std::f64::consts::PI),
-        (_, JointKind::Prismatic) => (j.limit.lower * 1000.0, j.limit.upper * 1000.0),
-        _ => (j.limit.lower, j.limit.upper),
+        (_, JointKind::Prismatic) => {
+            let (lower, upper) = limits(j, LONGEST_SLIDE_M, "m")?;
+            (lower * 1000.0, upper * 1000.0)
+        }
+        _ => limits(j, 2.0 * std::f64::consts::PI, "rad (360 deg)")?,
     };
-    Joint {
+    Ok(Joint {
         name: j.name.clone(),
         kind,
         dh: Dh::default(),
@@ -199,7 +243,31 @@ fn moving(j: &urdf_rs::Joint, kind: JointKind) -> Joint {
         neutral: 0.0_f64.clamp(min, max),
         weight: 1.0,
         link: Link::named(&j.name),
+    })
+}
+
+/// A joint's lower and upper limits, if they are finite, in order and
+/// within `+/-largest` (in `unit`).
+fn limits(j: &urdf_rs::Joint, largest: f64, unit: &str) -> Result<(f64, f64), UrdfError> {
+    let (lower, upper) = (j.limit.lower, j.limit.upper);
+    let bad = |reason: String| UrdfError::BadLimits {
+        joint: j.name.clone(),
+        reason,
+    };
+    if !lower.is_finite() || !upper.is_finite() {
+        return Err(bad(format!("({lower}, {upper}) are not finite numbers")));
     }
+    if lower > upper {
+        return Err(bad(format!(
+            "have the lower {lower} above the upper {upper}"
+        )));
+    }
+    if lower < -largest || upper > largest {
+        return Err(bad(format!(
+            "({lower}, {upper}) go beyond +/-{largest:.4} {unit}"
+        )));
+    }
+    Ok((lower, upper))
 }
 
 /// A joint that cannot move: a fixed pose in a chain of joints.

@@ -18,7 +18,7 @@ use crate::plugin::{IkProblem, IkSolution};
 /// One descent from `q`.
 pub(super) fn descend(s: &IncrementalSettings, problem: &IkProblem<'_>, q: Vec<f64>) -> IkSolution {
     let (chain, target) = (problem.chain, problem.target_mm);
-    if s.incremental_fk && chain.is_dh() {
+    if s.incremental_fk {
         descend_with(s, problem, IncrementalFk::new(chain, q, target))
     } else {
         descend_with(s, problem, FullProduct { chain, q, target })
