@@ -471,3 +471,37 @@ fn a_mesh_wound_inwards_or_with_degenerate_faces_is_the_same_solid() {
         "{err}"
     );
 }
+
+#[test]
+fn a_box_outside_the_room_changes_no_answer() {
+    let scenario = |far: &str| {
+        format!(
+            "units mm deg\nuse std::people\nroom kitchen {{\n  size 3600 x 2800 x 2500\n  \
+             box counter at (0, 0, 0) size (600, 2800, 900)\n{far}  \
+             target mug at (400, 1150, 960)\n}}\n\
+             person mum {{ mannequin woman_5th_seated base manual_wheelchair }}\n\
+             reach mug by mum\n"
+        )
+    };
+    let report = |text: &str| {
+        let (_dir, path) = scenario_file(text);
+        let o = reach_bin(&["run", path.to_str().unwrap(), "--format", "json"]);
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        let json: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        json["tasks"].clone()
+    };
+    let alone = report(&scenario(""));
+    for far in [
+        "  box far at (1e6, 1e6, 0) size (500, 500, 900)\n",
+        "  box far at (1e13, 1e13, 0) size (500, 500, 900)\n",
+        "  box far at (1e15, 1e15, 0) size (500, 500, 900)\n",
+        "  box far at (-1e12, 100, 0) size (500, 500, 900)\n",
+        "  box far at (5000, -1e12, 0) size (1e6, 2e12, 900)\n",
+    ] {
+        assert_eq!(report(&scenario(far)), alone, "{far}");
+    }
+}
+
+fn scenario_file(text: &str) -> (tempfile::TempDir, std::path::PathBuf) {
+    scenario("root.reach", text.as_bytes())
+}

@@ -13,7 +13,7 @@ use nalgebra::{Isometry3, Point3, Vector3};
 use parry3d_f64::query::{self, Ray};
 use parry3d_f64::shape::{Segment, SharedShape, TriMeshFlags};
 
-use crate::geometry::{Capsule, Cuboid};
+use crate::geometry::{enclose, Capsule, Cuboid};
 use crate::scene::{Blocker, Room, Wall};
 
 /// A mesh obstacle as parry holds it, and its name for reports.
@@ -69,14 +69,18 @@ impl Obstacles {
             .enumerate()
             .filter_map(|(k, m)| {
                 let (vertices, triangles) = (m.vertices_mm.clone(), m.triangles.clone());
-                let oriented = SharedShape::trimesh_with_flags(
-                    vertices.clone(),
-                    triangles.clone(),
-                    TriMeshFlags::ORIENTED,
-                );
+                // Solid only where it encloses: parry's orientation alone
+                // would take one sheet for the edge of a solid half-space.
+                let oriented = enclose(&triangles).then(|| {
+                    SharedShape::trimesh_with_flags(
+                        vertices.clone(),
+                        triangles.clone(),
+                        TriMeshFlags::ORIENTED,
+                    )
+                });
                 let (shape, closed) = match oriented {
-                    Ok(shape) => (shape, true),
-                    Err(_) => (SharedShape::trimesh(vertices, triangles).ok()?, false),
+                    Some(Ok(shape)) => (shape, true),
+                    _ => (SharedShape::trimesh(vertices, triangles).ok()?, false),
                 };
                 let aabb = shape.compute_local_aabb();
                 Some(Mesh {

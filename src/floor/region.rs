@@ -51,8 +51,65 @@ pub fn admissible(
             }
         }
     }
+    // What lies outside the room cannot block it, and a box far outside
+    // (1e15 mm away) would break the boolean operations' precision.
+    let within = grown_bounds(&inside);
+    let grown: Vec<Polygon<f64>> = grown.iter().filter_map(|g| clipped(g, &within)).collect();
     let blocked = geo::unary_union(&grown);
     MultiPolygon::new(vec![inside]).difference(&blocked)
+}
+
+/// The bounds of `inside`, a metre wider on every side.
+fn grown_bounds(inside: &Polygon<f64>) -> Rect<f64> {
+    use geo::BoundingRect;
+    let r = inside.bounding_rect().expect("the shrunk room has corners");
+    let margin = Coord {
+        x: 1000.0,
+        y: 1000.0,
+    };
+    Rect::new(r.min() - margin, r.max() + margin)
+}
+
+/// The convex polygon `p` cut to `rect` (Sutherland-Hodgman), none if
+/// nothing is left.
+fn clipped(p: &Polygon<f64>, rect: &Rect<f64>) -> Option<Polygon<f64>> {
+    let (lo, hi) = (rect.min(), rect.max());
+    let mut points: Vec<Coord<f64>> = p.exterior().0.clone();
+    points.dedup();
+    if points.len() > 1 && points.first() == points.last() {
+        points.pop();
+    }
+    // Each side of the rectangle: which coordinate, its value, and
+    // whether points keep above (true) or below it.
+    let sides = [
+        (0, lo.x, true),
+        (0, hi.x, false),
+        (1, lo.y, true),
+        (1, hi.y, false),
+    ];
+    for (axis, at, above) in sides {
+        let get = |c: &Coord<f64>| if axis == 0 { c.x } else { c.y };
+        let keeps = |c: &Coord<f64>| if above { get(c) >= at } else { get(c) <= at };
+        let mut next = Vec::with_capacity(points.len() + 1);
+        for (i, a) in points.iter().enumerate() {
+            let b = &points[(i + 1) % points.len()];
+            if keeps(a) {
+                next.push(*a);
+            }
+            if keeps(a) != keeps(b) {
+                let t = (at - get(a)) / (get(b) - get(a));
+                next.push(Coord {
+                    x: a.x + t * (b.x - a.x),
+                    y: a.y + t * (b.y - a.y),
+                });
+            }
+        }
+        points = next;
+        if points.len() < 3 {
+            return None;
+        }
+    }
+    Some(Polygon::new(LineString::from(points), Vec::new()))
 }
 
 /// Hip points keeping the whole footprint inside the room (and the zone).
@@ -123,6 +180,26 @@ fn minkowski_with_reflected(obstacle: &[Coord<f64>], footprint: &[Coord<f64>]) -
 mod tests {
     use super::*;
     use geo::{Area, Contains};
+
+    #[test]
+    fn clipping_keeps_what_is_inside_and_drops_what_is_outside() {
+        let rect = Rect::new(Coord { x: 0.0, y: 0.0 }, Coord { x: 10.0, y: 10.0 });
+        let square = |x0: f64, y0: f64, size: f64| {
+            Rect::new(
+                Coord { x: x0, y: y0 },
+                Coord {
+                    x: x0 + size,
+                    y: y0 + size,
+                },
+            )
+            .to_polygon()
+        };
+        let inner = square(2.0, 2.0, 3.0);
+        assert_eq!(clipped(&inner, &rect).unwrap().unsigned_area(), 9.0);
+        assert!(clipped(&square(1e15, 1e15, 5.0), &rect).is_none());
+        let huge = square(-1e15, 5.0, 2e15);
+        assert_eq!(clipped(&huge, &rect).unwrap().unsigned_area(), 50.0);
+    }
     use nalgebra::{Point3, Vector3};
 
     fn room_with_counter() -> Room {

@@ -28,6 +28,13 @@ pub fn cleaned(vertices: &[Point3<f64>], triangles: &[[u32; 3]]) -> Vec<[u32; 3]
     kept
 }
 
+/// Whether the triangles enclose solids: every piece closed and
+/// consistently wound. A single sheet (one triangle, an open box) does not:
+/// only its surface is an obstacle.
+pub fn enclose(triangles: &[[u32; 3]]) -> bool {
+    !triangles.is_empty() && pieces(triangles).iter().all(|p| is_closed(triangles, p))
+}
+
 /// Whether a triangle has three distinct corners that do not lie on one
 /// line (relative to its size, so that millimetres and metres agree).
 fn has_area(vertices: &[Point3<f64>], [a, b, c]: &[u32; 3]) -> bool {
@@ -161,6 +168,7 @@ mod tests {
         let (mut v, mut t) = cube();
         v.push(Point3::new(0.5, 0.5, 0.0));
         t.extend([[0, 0, 1], [0, 1, 3], [0, 3, 8]]);
+        assert!(enclose(&t) && !enclose(&t[..11]) && !enclose(&t[..1]));
         let kept = cleaned(&v, &t);
         // [0, 1, 3] has an area; it opens the cube, so nothing is turned.
         assert_eq!(kept.len(), 13);
