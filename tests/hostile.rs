@@ -505,3 +505,33 @@ fn a_box_outside_the_room_changes_no_answer() {
 fn scenario_file(text: &str) -> (tempfile::TempDir, std::path::PathBuf) {
     scenario("root.reach", text.as_bytes())
 }
+
+#[test]
+fn a_name_from_a_urdf_can_neither_forge_a_line_nor_reorder_one() {
+    let urdf = std::fs::read_to_string("tests/data/human_arm.urdf").unwrap();
+    let evil = "elbow_&#x202E;x&#x9B;2J&#10;reach  cup  p  reachable";
+    let dir = tempfile::tempdir().unwrap();
+    let urdf = urdf.replace("name=\"elbow_flexion\"", &format!("name=\"{evil}\""));
+    std::fs::write(dir.path().join("arm.urdf"), urdf).unwrap();
+    let root = dir.path().join("root.reach");
+    std::fs::write(
+        &root,
+        "units mm\nmannequin arm from urdf \"arm.urdf\" root \"pelvis\" tip \"grip\"\n\
+         room r { size 3000 x 3000 x 2500 target cup at (1300, 1300, 1200) }\n\
+         person p { mannequin arm base fixed { at (1000, 1500, 930) } }\nreach cup by p\n",
+    )
+    .unwrap();
+    let o = reach_bin(&["run", root.to_str().unwrap()]);
+    let out = stdout(&o);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_printable(&out);
+    assert_eq!(
+        out.lines().filter(|l| l.starts_with("reach ")).count(),
+        1,
+        "{out}"
+    );
+    assert!(
+        out.contains("elbow_\\u{202e}x\\u{9b}2J\\u{a}reach"),
+        "{out}"
+    );
+}

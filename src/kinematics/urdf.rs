@@ -11,6 +11,7 @@ use nalgebra::{IsometryMatrix3, Rotation3, Translation3, Unit, Vector3};
 
 use super::chain::{Chain, Joint, JointKind, Link};
 use super::dh::Dh;
+use crate::escape::escaped;
 
 /// Why a URDF chain cannot be built.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -122,7 +123,7 @@ pub fn chain_from_urdf(robot: &urdf_rs::Robot, root: &str, tip: &str) -> Result<
         match joints.len().checked_sub(1) {
             Some(k) => joints[k].fixed = Some(pre(first_index, k, &first_pre) * before),
             None if along_z(&before) => first_pre = before,
-            None => joints.push(locked(&format!("{}_base", j.name), before)),
+            None => joints.push(locked(&format!("{}_base", shown(&j.name)), before)),
         }
         first_index.get_or_insert(joints.len());
         joints.push(moving(j, kind)?);
@@ -234,7 +235,7 @@ fn moving(j: &urdf_rs::Joint, kind: JointKind) -> Result<Joint, UrdfError> {
         _ => limits(j, 2.0 * std::f64::consts::PI, "rad (360 deg)")?,
     };
     Ok(Joint {
-        name: j.name.clone(),
+        name: shown(&j.name),
         kind,
         dh: Dh::default(),
         fixed: Some(IsometryMatrix3::identity()),
@@ -242,7 +243,7 @@ fn moving(j: &urdf_rs::Joint, kind: JointKind) -> Result<Joint, UrdfError> {
         max,
         neutral: 0.0_f64.clamp(min, max),
         weight: 1.0,
-        link: Link::named(&j.name),
+        link: Link::named(&shown(&j.name)),
     })
 }
 
@@ -268,6 +269,13 @@ fn limits(j: &urdf_rs::Joint, largest: f64, unit: &str) -> Result<(f64, f64), Ur
         )));
     }
     Ok((lower, upper))
+}
+
+/// A joint's name as the chain keeps it: escaped, so that a name in a file
+/// (where XML allows `&#10;` or a bidirectional override) can never forge
+/// a line of a report or reorder it on a terminal.
+fn shown(name: &str) -> String {
+    escaped(name).into_owned()
 }
 
 /// A joint that cannot move: a fixed pose in a chain of joints.

@@ -4,6 +4,7 @@
 
 use std::fmt::Write;
 
+use crate::escape::{escaped, escaped_keeping};
 use crate::plugin::{FormatPlugin, ParamSpec, Plugin};
 use crate::report::{Answer, Report};
 
@@ -28,12 +29,15 @@ impl FormatPlugin for Text {
         let answers = report.answers();
         let mut out = String::new();
         let ok = answers.iter().filter(|a| a.ok).count();
-        let _ = writeln!(out, "{}: {} tasks, {} ok\n", report.file, answers.len(), ok);
+        let file = escaped(&report.file);
+        let _ = writeln!(out, "{file}: {} tasks, {} ok\n", answers.len(), ok);
         out.push_str(&table(&answers));
         for task in &report.tasks {
             task.details(&mut out);
         }
-        out
+        // Names are escaped where they come from (files, URDFs); this
+        // keeps the terminal safe whatever a report carries.
+        escaped_keeping(&out, |c| c == '\n').into_owned()
     }
 
     fn extension(&self) -> &'static str {
