@@ -146,7 +146,7 @@ fn run(registry: &Registry, e: &Evaluate) -> i32 {
     let report = reach::run_with_progress(&scenario, &bar);
     bar.clear();
     if let Some(dir) = &e.out {
-        if let Err(error) = reach::output::write_outputs(&report, dir) {
+        if let Err(error) = crate::signals::whole(|| reach::output::write_outputs(&report, dir)) {
             return report_diagnostics(&Diagnostics::single(error));
         }
     }

@@ -251,7 +251,7 @@ impl ErrorKind {
                 "lengths: mm, cm, m, in; angles: deg, rad, arcmin (write the unit right after the number: `90deg`)"
                     .into(),
             ),
-            BadNumber { .. } | NotFinite => Some("numbers must be finite and below 1e15".into()),
+            BadNumber { .. } | NotFinite => Some("numbers must be finite and at most 2^53 (9007199254740992)".into()),
             ImportCycle { chain, .. } => Some(format!("the cycle: {}", chain.join(" -> "))),
             UnknownStdModule {
                 suggestion,

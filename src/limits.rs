@@ -23,19 +23,20 @@ pub struct Limits {
     /// Longest chain of mannequins naming each other (`a = b(...)`).
     pub alias_chain: usize,
     /// Most solver starts the tasks of a scenario may need, counted at
-    /// their worst (every placement tried, every retry run).
+    /// their worst (every placement tried, every retry run), each weighted
+    /// by its solver's iteration options over their defaults.
     pub solver_starts: u64,
 }
 
 /// The limits unless told otherwise: far beyond any real scenario.
 pub const DEFAULTS: Limits = Limits {
-    file_bytes: 16 * 1024 * 1024,
+    file_bytes: 64 * 1024 * 1024,
     nesting: 64,
     expression_terms: 1024,
     constant_chain: 256,
     use_chain: 64,
     alias_chain: 16,
-    solver_starts: 100_000_000,
+    solver_starts: 10_000_000,
 };
 
 impl Default for Limits {

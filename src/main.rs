@@ -2,6 +2,7 @@
 
 mod bar;
 mod cli;
+mod signals;
 mod watch;
 
 /// The stack of the thread that parses and checks: the parser and the

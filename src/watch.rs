@@ -103,7 +103,9 @@ impl State {
                 let (report, stats) = self.cache.run(&scenario, &reach::progress::NoProgress);
                 screen.push_str(&formatter.render(&report));
                 if let Some(dir) = out {
-                    if let Err(e) = reach::output::write_outputs(&report, dir) {
+                    let written =
+                        crate::signals::whole(|| reach::output::write_outputs(&report, dir));
+                    if let Err(e) = written {
                         screen.push_str(&reach::Diagnostics::single(e).render(!self.terminal));
                     }
                 }

@@ -535,3 +535,128 @@ fn a_name_from_a_urdf_can_neither_forge_a_line_nor_reorder_one() {
         "{out}"
     );
 }
+
+/// A scenario with a reach map, a gaze map and a second reach map of one
+/// surface by one person.
+const THREE_MAPS: &str = "units mm deg
+use std::body
+room r {
+  size 3000 x 3000 x 2500
+  box shelf at (0, 1000, 1200) size (300, 600, 20)
+}
+person p { mannequin upper_body base fixed { at (700, 1300, 930) heading 180deg } }
+map shelf.top by p { step 150mm solver incremental { starts 2 } blocked_retries 0 }
+gaze_map shelf.top by p { step 200mm solver fabrik { starts 1 } }
+map shelf.top by p { step 100mm solver incremental { starts 2 } blocked_retries 0 }
+";
+
+fn names_in(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+#[test]
+fn an_output_set_has_a_file_per_map_and_is_written_whole_or_not_at_all() {
+    let (dir, path) = scenario_file(THREE_MAPS);
+    let out = dir.path().join("out");
+    let run = |out: &Path| {
+        reach_bin(&[
+            "run",
+            path.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ])
+    };
+    let o = run(&out);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let set = names_in(&out);
+    assert_eq!(
+        set,
+        [
+            "gaze_map-shelf-top-p.csv",
+            "gaze_map-shelf-top-p.svg",
+            "map-shelf-top-p-2.csv",
+            "map-shelf-top-p-2.svg",
+            "map-shelf-top-p.csv",
+            "map-shelf-top-p.svg",
+            "report.json"
+        ]
+    );
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        // SAFETY: umask only swaps the process's file mode mask; it is put
+        // back at once.
+        let umask = unsafe {
+            let mask = libc::umask(0o022);
+            libc::umask(mask);
+            mask
+        };
+        let mode = std::fs::metadata(out.join("report.json"))
+            .unwrap()
+            .permissions()
+            .mode();
+        assert_eq!(mode & 0o777, 0o666 & !umask, "{mode:o}");
+    }
+    // A name taken by a directory: nothing of the new set is written, the
+    // previous set stays as it was, and no temporary is left.
+    let before: Vec<Vec<u8>> = set
+        .iter()
+        .map(|n| std::fs::read(out.join(n)).unwrap_or_default())
+        .collect();
+    std::fs::remove_file(out.join("map-shelf-top-p-2.svg")).unwrap();
+    std::fs::create_dir(out.join("map-shelf-top-p-2.svg")).unwrap();
+    std::fs::write(&path, THREE_MAPS.replace("step 150mm", "step 120mm")).unwrap();
+    let o = run(&out);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        flat(&stderr(&o)).contains("a directory has that name"),
+        "{}",
+        stderr(&o)
+    );
+    assert_eq!(names_in(&out), set);
+    for (name, old) in set.iter().zip(&before) {
+        if name != "map-shelf-top-p-2.svg" {
+            assert_eq!(&std::fs::read(out.join(name)).unwrap(), old, "{name}");
+        }
+    }
+}
+
+#[test]
+fn temporaries_a_killed_run_left_are_swept() {
+    let (dir, path) = scenario_file(THREE_MAPS);
+    let out = dir.path().join("out");
+    std::fs::create_dir(&out).unwrap();
+    let stale = out.join(".reach-tmp-99999-report.json");
+    let fresh = out.join(".reach-tmp-99998-report.json");
+    for p in [&stale, &fresh] {
+        std::fs::write(p, "half").unwrap();
+    }
+    let hour_ago = std::time::SystemTime::now() - std::time::Duration::from_secs(3600);
+    std::fs::File::options()
+        .write(true)
+        .open(&stale)
+        .unwrap()
+        .set_modified(hour_ago)
+        .unwrap();
+    let o = reach_bin(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    // The fresh one may be another run's, writing now: it stays.
+    assert!(!stale.exists() && fresh.exists());
+    assert!(
+        names_in(&out)
+            .iter()
+            .filter(|n| n.starts_with(".reach-tmp"))
+            .count()
+            == 1
+    );
+}

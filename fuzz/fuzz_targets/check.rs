@@ -26,7 +26,7 @@ fuzz_target!(|data: &[u8]| {
             let _ = diagnostics.render(true);
         }
         Ok(scenario) => {
-            let _ = reach::run(&scenario, &registry);
+            let _ = reach::run(&scenario);
         }
     }
 });

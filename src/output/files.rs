@@ -1,10 +1,16 @@
 //! What `--out DIR` writes: `DIR/report.json` and, for each map, its CSV
-//! and SVG (`map_files.rs`), each written atomically, so that a reader
-//! (a browser, a diff in watch mode) sees the old file or the new one,
-//! never half of one.
+//! and SVG (`map_files.rs`), as one set. Every file is rendered first,
+//! then written as a temporary beside its place (with the user's umask),
+//! and only once all are written are they renamed into place; a failure
+//! before that (a name taken by a directory, a full disk) removes the
+//! temporaries and leaves the previous set as it was. Temporaries a killed
+//! run left behind are swept at the next run. (The command line holds
+//! SIGINT and SIGTERM back while a set is written, so that they too leave
+//! a whole set.)
 
 use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, SystemTime};
 
 use super::map_files;
 use super::Json;
@@ -12,39 +18,105 @@ use crate::error::{Error, ErrorKind};
 use crate::plugin::FormatPlugin;
 use crate::report::Report;
 
-/// `DIR/report.json`, and a CSV and an SVG for each map.
+/// Temporaries start with this, then the process id and the file's name.
+const TEMPORARY: &str = ".reach-tmp-";
+/// A temporary older than this is a killed run's, and is swept.
+const STALE: Duration = Duration::from_secs(60);
+
+/// The set's files, by name, in the order they are written.
+pub fn output_set(report: &Report) -> Vec<(String, Vec<u8>)> {
+    let mut files = vec![("report.json".to_string(), Json.render(report).into_bytes())];
+    let mut stems: Vec<String> = Vec::new();
+    for m in report.tasks.iter().filter_map(|t| t.map()) {
+        let base = map_files::file_stem(m);
+        // Two maps of one surface by one person (a reach and a gaze map,
+        // or two option sets) get distinct names, in the order of tasks.
+        let taken = stems.iter().filter(|s| s.as_str() == base).count();
+        stems.push(base.clone());
+        let stem = match taken {
+            0 => base,
+            n => format!("{base}-{}", n + 1),
+        };
+        files.push((format!("{stem}.csv"), map_files::csv(m).into_bytes()));
+        files.push((format!("{stem}.svg"), map_files::svg(m).into_bytes()));
+    }
+    files
+}
+
+/// `DIR/report.json`, and a CSV and an SVG for each map, as one set.
 pub fn write_outputs(report: &Report, dir: &Path) -> Result<(), Error> {
-    write_atomically(&dir.join("report.json"), Json.render(report).as_bytes())?;
-    for task in &report.tasks {
-        if let Some(m) = task.map() {
-            let stem = map_files::file_stem(m);
-            write_atomically(
-                &dir.join(format!("{stem}.csv")),
-                map_files::csv(m).as_bytes(),
-            )?;
-            write_atomically(
-                &dir.join(format!("{stem}.svg")),
-                map_files::svg(m).as_bytes(),
-            )?;
+    write_set(dir, &output_set(report))
+}
+
+fn write_error(path: &Path, e: &std::io::Error) -> Error {
+    Error::unplaced(ErrorKind::WriteFile {
+        path: path.display().to_string(),
+        reason: e.to_string(),
+    })
+}
+
+/// Write `files` into `dir` as one set: all of them, or (on an error
+/// before the renames) none.
+pub fn write_set(dir: &Path, files: &[(String, Vec<u8>)]) -> Result<(), Error> {
+    std::fs::create_dir_all(dir).map_err(|e| write_error(dir, &e))?;
+    sweep_stale(dir);
+    for (name, _) in files {
+        let path = dir.join(name);
+        if path.is_dir() {
+            let e = std::io::Error::other("a directory has that name");
+            return Err(write_error(&path, &e));
+        }
+    }
+    let mut written: Vec<(PathBuf, PathBuf)> = Vec::with_capacity(files.len());
+    for (name, bytes) in files {
+        let temporary = dir.join(format!("{TEMPORARY}{}-{name}", std::process::id()));
+        if let Err(e) = write_new(&temporary, bytes) {
+            let _ = std::fs::remove_file(&temporary);
+            remove_all(&written);
+            return Err(write_error(&dir.join(name), &e));
+        }
+        written.push((temporary, dir.join(name)));
+    }
+    for (k, (temporary, path)) in written.iter().enumerate() {
+        if let Err(e) = std::fs::rename(temporary, path) {
+            remove_all(&written[k..]);
+            return Err(write_error(path, &e));
         }
     }
     Ok(())
 }
 
-/// Write `bytes` to a temporary file beside `path`, then rename it over
-/// `path`: a reader sees the old file or the new one, never half of one.
-fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), Error> {
-    let fail = |e: std::io::Error| {
-        Error::unplaced(ErrorKind::WriteFile {
-            path: path.display().to_string(),
-            reason: e.to_string(),
-        })
+/// A new file (replacing a temporary a run with this process id left),
+/// created with the user's umask, written and flushed to disk.
+fn write_new(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let _ = std::fs::remove_file(path);
+    let mut file = std::fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(path)?;
+    file.write_all(bytes)?;
+    file.sync_all()
+}
+
+fn remove_all(written: &[(PathBuf, PathBuf)]) {
+    for (temporary, _) in written {
+        let _ = std::fs::remove_file(temporary);
+    }
+}
+
+/// Remove temporaries that a killed run left in `dir` (older than
+/// [`STALE`], so that a run writing beside this one keeps its own).
+fn sweep_stale(dir: &Path) {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return;
     };
-    let dir = path.parent().unwrap_or(Path::new("."));
-    std::fs::create_dir_all(dir).map_err(fail)?;
-    let mut tmp = tempfile::NamedTempFile::new_in(dir).map_err(fail)?;
-    tmp.write_all(bytes).map_err(fail)?;
-    tmp.as_file().sync_all().map_err(fail)?;
-    tmp.persist(path).map_err(|e| fail(e.error))?;
-    Ok(())
+    let now = SystemTime::now();
+    for entry in entries.flatten() {
+        let is_temporary = entry.file_name().to_string_lossy().starts_with(TEMPORARY);
+        let modified = entry.metadata().and_then(|m| m.modified());
+        let old = modified.is_ok_and(|t| now.duration_since(t).unwrap_or_default() > STALE);
+        if is_temporary && old {
+            let _ = std::fs::remove_file(entry.path());
+        }
+    }
 }

@@ -6,10 +6,12 @@ use std::fmt::Write;
 
 use crate::report::MapReport;
 
-/// File names for a map: `map-SURFACE-PERSON.csv` and `.svg`.
+/// File names for a map: `map-SURFACE-PERSON.csv` and `.svg`
+/// (`gaze_map-...` for a gaze map).
 pub fn file_stem(m: &MapReport) -> String {
     let clean = |s: &str| s.replace(|c: char| !c.is_ascii_alphanumeric() && c != '_', "-");
-    format!("map-{}-{}", clean(&m.name), clean(&m.person))
+    let kind = if m.of == "gaze" { "gaze_map" } else { "map" };
+    format!("{kind}-{}-{}", clean(&m.name), clean(&m.person))
 }
 
 /// One line per point: where it is, whether it is reachable, the distance

@@ -14,7 +14,7 @@ mod task;
 pub use base::{Base, BaseError, BasePlugin, Hips, PreparedBase, ReachQuery, Retry, Search, Tries};
 pub use format::FormatPlugin;
 pub use registry::Registry;
-pub use solver::{IkProblem, Solver, SolverPlugin};
+pub use solver::{work_ratio, IkProblem, Solver, SolverPlugin};
 pub use task::{Dependence, EffectorNeed, Subject, SubjectKind, Task, TaskInput, TaskPlugin};
 // The data the traits speak of, so that a plugin needs one `use`.
 pub use crate::options::{

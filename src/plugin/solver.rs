@@ -59,6 +59,12 @@ pub trait Solver: Send + Sync {
     fn starts(&self) -> u64 {
         1
     }
+    /// How many default starts one start may cost: its iteration options
+    /// over their defaults (at least 1), so that the limit on solver
+    /// starts bounds the work, not only the count.
+    fn work_per_start(&self) -> u64 {
+        1
+    }
     /// Whether a descent from a clear posture stays clear (so that it pays
     /// to start it from one).
     fn steers_clear(&self) -> bool {
@@ -69,4 +75,15 @@ pub trait Solver: Send + Sync {
 pub trait SolverPlugin: Plugin {
     /// The solver that validated `options` configure.
     fn build(&self, options: &Options) -> Result<Box<dyn Solver>, SettingsError>;
+}
+
+/// The work of one start with these options, in default starts: the
+/// product of each `(value, default)` ratio, rounded up, at least 1.
+pub fn work_ratio(options: &[(f64, f64)]) -> u64 {
+    let ratio: f64 = options
+        .iter()
+        .map(|(value, default)| value / default)
+        .product();
+    // At most 1e12: the ceiling of the limit itself.
+    ratio.ceil().clamp(1.0, 1e12) as u64
 }

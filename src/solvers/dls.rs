@@ -9,8 +9,8 @@ use nalgebra::{Matrix3, Point3, Vector3};
 use super::starts::{neutral_start, Starts};
 use crate::kinematics::{Chain, JointKind};
 use crate::plugin::{
-    IkProblem, IkSolution, Options, ParamSpec, Params, Plugin, Settings, SettingsError, Solver,
-    SolverPlugin,
+    work_ratio, IkProblem, IkSolution, Options, ParamSpec, Params, Plugin, Settings, SettingsError,
+    Solver, SolverPlugin,
 };
 
 /// The plugin `dls`.
@@ -104,6 +104,10 @@ impl Solver for DlsSolver {
 
     fn starts(&self) -> u64 {
         u64::from(self.starts.max(1))
+    }
+
+    fn work_per_start(&self) -> u64 {
+        work_ratio(&[(self.max_iterations as f64, 200.0)])
     }
 }
 

@@ -13,9 +13,10 @@ use crate::limits::Limits;
 use crate::span::{FileId, Name, Span, Spanned};
 use crate::units::Unit;
 
-/// Largest magnitude a number literal may have: far beyond any room, far
-/// below where arithmetic in f64 loses whole millimetres.
-pub const MAX_LITERAL: f64 = 1e15;
+/// Largest magnitude a number literal may have: 2^53, the last integer
+/// below which every integer is exact in f64 (so that the largest seed can
+/// be written); far beyond any room.
+pub const MAX_LITERAL: f64 = 9_007_199_254_740_992.0;
 
 /// Parse one file within the default [`Limits`].
 pub fn parse_file(file: FileId, text: &str) -> Result<File, Diagnostics> {

@@ -169,11 +169,16 @@ impl Reaching {
         } else {
             0
         };
+        let work = |solver: &dyn Solver| solver.starts().saturating_mul(solver.work_per_start());
         placements
             .solved
-            .saturating_mul(self.solver.starts())
-            .saturating_add(placements.seeded)
-            .saturating_add(retries.saturating_mul(self.blocked_solver.starts()))
+            .saturating_mul(work(self.solver.as_ref()))
+            .saturating_add(
+                placements
+                    .seeded
+                    .saturating_mul(self.solver.work_per_start()),
+            )
+            .saturating_add(retries.saturating_mul(work(self.blocked_solver.as_ref())))
     }
 
     /// The room's obstacles when the task checks collisions.

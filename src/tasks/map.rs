@@ -60,9 +60,15 @@ impl GridSettings {
 
     /// A map whose grid would have more than `max_points` points.
     pub fn too_large(&self, subject: &Subject<'_>) -> Option<ErrorKind> {
-        let points = self.points(subject);
         let max = self.max_points;
-        (points > max).then(|| ErrorKind::TooLarge {
+        let Subject::Surface(surface) = subject else {
+            return None;
+        };
+        // Counted in 128 bits, so that the message never shows a
+        // saturated count.
+        let (columns, rows) = surface.grid_size(self.step_mm);
+        let points = columns as u128 * rows as u128;
+        (points > u128::from(max)).then(|| ErrorKind::TooLarge {
             what: format!("the map of `{}` ({points} points)", subject.name()),
             limit: format!("{max} points: raise `max_points` or the `step`"),
         })

@@ -19,8 +19,8 @@ use rand_chacha::rand_core::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
 use crate::plugin::{
-    IkProblem, IkSolution, Options, ParamSpec, Params, Plugin, Settings, SettingsError, Solver,
-    SolverPlugin,
+    work_ratio, IkProblem, IkSolution, Options, ParamSpec, Params, Plugin, Settings, SettingsError,
+    Solver, SolverPlugin,
 };
 use crate::scene::Preferred;
 use crate::solvers::starts::{neutral_start, Starts};
@@ -182,5 +182,14 @@ impl Solver for FabrikSolver {
 
     fn starts(&self) -> u64 {
         u64::from(self.settings.starts.max(1))
+    }
+
+    fn work_per_start(&self) -> u64 {
+        let s = &self.settings;
+        work_ratio(&[
+            (f64::from(s.max_iterations), 400.0),
+            (f64::from(s.sweeps), 2.0),
+            (f64::from(s.samples), 7.0),
+        ])
     }
 }

@@ -25,8 +25,8 @@
 mod descent;
 
 use crate::plugin::{
-    IkProblem, IkSolution, Options, ParamSpec, Params, Plugin, Settings, SettingsError, Solver,
-    SolverPlugin,
+    work_ratio, IkProblem, IkSolution, Options, ParamSpec, Params, Plugin, Settings, SettingsError,
+    Solver, SolverPlugin,
 };
 use crate::scene::Preferred;
 use crate::solvers::starts::{neutral_start, Starts};
@@ -235,6 +235,10 @@ impl Solver for IncrementalSolver {
 
     fn starts(&self) -> u64 {
         u64::from(self.settings.starts.max(1))
+    }
+
+    fn work_per_start(&self) -> u64 {
+        work_ratio(&[(f64::from(self.settings.max_sweeps), 1000.0)])
     }
 
     fn steers_clear(&self) -> bool {
