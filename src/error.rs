@@ -21,7 +21,7 @@ pub enum ErrorKind {
     Syntax { expected: String, found: String },
     #[error("unknown unit `{unit}`")]
     UnknownUnit { unit: String },
-    #[error("`{text}` is not a finite number")]
+    #[error("`{text}` is too large or not a finite number")]
     BadNumber { text: String },
     #[error("`units` names the {dimension} unit twice")]
     UnitsRepeated { dimension: &'static str },

@@ -660,3 +660,38 @@ fn temporaries_a_killed_run_left_are_swept() {
             == 1
     );
 }
+
+#[test]
+fn integers_up_to_two_to_the_53_are_exact_and_beyond_are_refused() {
+    let seed = |n: &str| {
+        format!(
+            "units mm deg\nuse std::arm\nroom r {{ size 3000 x 3000 x 2500 target t at (900, 1300, 1000) }}\n\
+             person p {{ mannequin right_arm base fixed {{ at (700, 1300, 930) }} }}\n\
+             reach t by p {{ seed {n} }}\n"
+        )
+    };
+    for (n, ok) in [
+        ("9007199254740991", true),
+        ("9007199254740992", true),
+        ("9007199254740993", false),
+        ("18446744073709551616", false),
+    ] {
+        let (_dir, path) = scenario_file(&seed(n));
+        let (code, _, err) = check(&path, &[]);
+        assert_eq!(code, Some(if ok { 0 } else { 1 }), "{n}: {err}");
+        if !ok {
+            assert!(err.contains(&format!("`{n}` is too large")), "{err}");
+        }
+    }
+    // A count in a message is never saturated.
+    let huge = "units mm deg\nuse std::arm\nroom big {\n  size 1e15 x 1e15 x 2500\n  \
+                surface s at (0, 0, 900) size (1e15, 1e15, 0)\n}\n\
+                person p { mannequin right_arm base fixed { at (5000, 5000, 930) } }\nmap s by p { step 1mm }\n";
+    let (_dir, path) = scenario_file(huge);
+    let (code, _, err) = check(&path, &[]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(
+        err.contains("(1000000000000000000000000000000 points)"),
+        "{err}"
+    );
+}

@@ -270,7 +270,10 @@ fn literal_errors_are_all_reported() {
     let messages: Vec<String> = d.errors.iter().map(|e| e.kind().to_string()).collect();
     assert_eq!(
         messages,
-        ["unknown unit `mx`", "`1e400` is not a finite number"]
+        [
+            "unknown unit `mx`",
+            "`1e400` is too large or not a finite number"
+        ]
     );
 }
 

@@ -269,7 +269,14 @@ impl Builder {
         let number = it.next().unwrap();
         let text = number.as_str();
         let value: f64 = text.parse().unwrap_or(f64::INFINITY);
-        if !value.is_finite() || value.abs() > MAX_LITERAL {
+        // An integer beyond 2^53 would round to a neighbour unseen: its
+        // digits are compared, not its rounded value.
+        let integer_too_large = text.bytes().all(|b| b.is_ascii_digit())
+            && text.trim_start_matches('0').len() >= 16
+            && text
+                .parse::<u128>()
+                .map_or(true, |n| n > MAX_LITERAL as u128);
+        if !value.is_finite() || value.abs() > MAX_LITERAL || integer_too_large {
             self.errors.push(Error::new(
                 ErrorKind::BadNumber {
                     text: text.to_string(),
