@@ -57,6 +57,8 @@ pub enum ErrorKind {
         name: String,
         suggestion: Option<String>,
     },
+    #[error("`{name}` is in more than one room: {}", rooms.join(", "))]
+    AmbiguousSurface { name: String, rooms: Vec<String> },
     #[error("{what} `{name}` is defined twice")]
     Duplicate { what: &'static str, name: String },
     #[error("`{name}` is defined in terms of itself")]
@@ -177,7 +179,9 @@ impl ErrorKind {
             | BadMesh { .. }
             | BadUrdf { .. } => "reach::file",
             ImportCycle { .. } | UnknownStdModule { .. } => "reach::use",
-            UnknownName { .. } | Duplicate { .. } | LetCycle { .. } => "reach::name",
+            UnknownName { .. } | AmbiguousSurface { .. } | Duplicate { .. } | LetCycle { .. } => {
+                "reach::name"
+            }
             Dimension { .. } | Operands { .. } | MixedDefaults => "reach::unit",
             OutOfRange { .. } | LimitsReversed { .. } => "reach::range",
             Missing { .. } | Repeated { .. } | TargetOutsideRoom { .. } => "reach::scene",
@@ -212,6 +216,7 @@ impl ErrorKind {
             UnknownStdModule { .. } => "no such module".into(),
             WriteFile { .. } => "here".into(),
             UnknownName { what, .. } => format!("no {what} of this name"),
+            AmbiguousSurface { .. } => "which room's?".into(),
             Duplicate { .. } => "defined again here".into(),
             LetCycle { .. } => "used in its own definition".into(),
             Dimension { found, .. } => format!("this is {found}"),
@@ -258,6 +263,10 @@ impl ErrorKind {
                 available,
                 ..
             } => Some(did_you_mean(suggestion, &format!("modules: {available}"))),
+            AmbiguousSurface { name, rooms } => Some(format!(
+                "name the room: `{}.{name}`",
+                rooms.first().map_or("", String::as_str)
+            )),
             UnknownName { suggestion, .. } | BadUrdf { suggestion, .. } => {
                 suggestion.as_ref().map(|s| format!("did you mean `{s}`?"))
             }

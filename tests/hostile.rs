@@ -695,3 +695,40 @@ fn integers_up_to_two_to_the_53_are_exact_and_beyond_are_refused() {
         "{err}"
     );
 }
+
+#[test]
+fn a_box_name_in_two_rooms_is_ambiguous_until_the_room_is_named() {
+    let text = |subject: &str| {
+        format!(
+            "units mm deg\nuse std::arm\n\
+             room kitchen {{ size 3600 x 2800 x 2500 box counter at (0, 0, 0) size (600, 2800, 900) }}\n\
+             room garage {{ size 3600 x 2800 x 2500 box counter at (0, 0, 0) size (600, 2800, 2000) }}\n\
+             person ben {{ mannequin right_arm base fixed {{ at (850, 1300, 930) heading 180deg }} }}\n\
+             map {subject} by ben {{ step 200mm solver incremental {{ starts 1 }} }}\n"
+        )
+    };
+    let (_dir, path) = scenario_file(&text("counter.top"));
+    let (code, _, err) = check(&path, &[]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(
+        flat(&err).contains("`counter.top` is in more than one room: kitchen, garage"),
+        "{err}"
+    );
+    let share = |subject: &str| {
+        let (_dir, path) = scenario_file(&text(subject));
+        let o = reach_bin(&["run", path.to_str().unwrap()]);
+        assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+        stdout(&o).lines().nth(3).unwrap_or_default().to_string()
+    };
+    // The garage's counter top, at 2000 mm, is out of reach; the kitchen's is not.
+    assert!(
+        share("garage.counter.top").contains(" 0.0 % of"),
+        "{}",
+        share("garage.counter.top")
+    );
+    assert!(
+        !share("kitchen.counter.top").contains(" 0.0 % of"),
+        "{}",
+        share("kitchen.counter.top")
+    );
+}

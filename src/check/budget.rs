@@ -5,6 +5,7 @@
 //! beyond it is refused before it runs, at the task declaration that asks
 //! the most.
 
+use std::collections::HashMap;
 use std::sync::Arc;
 
 use super::Checker;
@@ -12,7 +13,7 @@ use crate::error::{Error, ErrorKind};
 use crate::plugin::Base;
 use crate::scenario::TaskSpec;
 use crate::scene::Room;
-use crate::span::Span;
+use crate::span::{FileId, Span};
 
 impl Checker<'_> {
     /// Refuse the tasks if together they may need more solver starts than
@@ -25,12 +26,16 @@ impl Checker<'_> {
     ) {
         // Per declaration (one declaration gives a task per subject and person).
         let mut by_decl: Vec<(Span, u64)> = Vec::new();
+        let mut index: HashMap<(FileId, u32), usize> = HashMap::new();
         for task in tasks {
             let starts = task_starts(task, rooms, bases);
-            let same = |span: &Span| (span.file, span.start) == (task.span.file, task.span.start);
-            match by_decl.iter_mut().find(|(span, _)| same(span)) {
-                Some((_, sum)) => *sum = sum.saturating_add(starts),
-                None => by_decl.push((task.span, starts)),
+            let key = (task.span.file, task.span.start);
+            match index.get(&key) {
+                Some(&i) => by_decl[i].1 = by_decl[i].1.saturating_add(starts),
+                None => {
+                    index.insert(key, by_decl.len());
+                    by_decl.push((task.span, starts));
+                }
             }
         }
         let total = by_decl

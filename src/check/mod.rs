@@ -97,6 +97,8 @@ struct Checker<'a> {
     params: Vec<(String, Option<Quantity>)>,
     persons: Table<'a, crate::syntax::ast::PersonDecl>,
     tasks: Vec<(&'a crate::syntax::ast::TaskDecl, FileId)>,
+    /// Each target's room and place in it, by name, once tasks name them.
+    target_index: HashMap<String, (usize, usize)>,
 }
 
 impl<'a> Checker<'a> {
@@ -122,6 +124,7 @@ impl<'a> Checker<'a> {
             params: Vec::new(),
             persons: Table::new("person"),
             tasks: Vec::new(),
+            target_index: HashMap::new(),
         }
     }
 

@@ -1,25 +1,30 @@
 //! Rooms: size, box obstacles and targets.
 
+use std::collections::HashMap;
+
 use nalgebra::{Point3, Vector3};
 
 use super::eval::fmt_num;
 use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::scene::{BoxObstacle, Room, Surface, Target};
+use crate::span::Span;
 use crate::syntax::ast::{BoxDecl, RoomDecl, RoomItem, SurfaceDecl};
 
 impl Checker<'_> {
     pub(super) fn rooms(&mut self) -> Vec<Room> {
         let decls: Vec<_> = self.rooms.iter().map(|(_, d, f)| (d, f)).collect();
         let mut rooms = Vec::new();
-        let mut target_names: Vec<&crate::span::Name> = Vec::new();
+        // Names to where they were first declared: one lookup per name.
+        let mut target_names: HashMap<&str, Span> = HashMap::new();
         for (decl, file) in decls {
             for item in &decl.items {
                 if let RoomItem::Target(t) = item {
-                    if let Some(first) = target_names.iter().find(|n| n.value == t.name.value) {
-                        self.error(Error::duplicate("target", &t.name, first.span));
-                    } else {
-                        target_names.push(&t.name);
+                    match target_names.get(t.name.value.as_str()) {
+                        Some(&first) => self.error(Error::duplicate("target", &t.name, first)),
+                        None => {
+                            target_names.insert(&t.name.value, t.name.span);
+                        }
                     }
                 }
             }
@@ -32,7 +37,7 @@ impl Checker<'_> {
 
     /// Boxes and surfaces of one room share a namespace (a map names them).
     fn check_room_names(&mut self, decl: &RoomDecl) {
-        let mut seen: Vec<&crate::span::Name> = Vec::new();
+        let mut seen: HashMap<&str, Span> = HashMap::new();
         for item in &decl.items {
             let name = match item {
                 RoomItem::Box(b) => &b.name,
@@ -40,10 +45,11 @@ impl Checker<'_> {
                 RoomItem::Surface(s) => &s.name,
                 _ => continue,
             };
-            if let Some(first) = seen.iter().find(|n| n.value == name.value) {
-                self.error(Error::duplicate("box, mesh or surface", name, first.span));
-            } else {
-                seen.push(name);
+            match seen.get(name.value.as_str()) {
+                Some(&first) => self.error(Error::duplicate("box, mesh or surface", name, first)),
+                None => {
+                    seen.insert(&name.value, name.span);
+                }
             }
         }
     }

@@ -204,12 +204,20 @@ impl Checker<'_> {
 
     fn target_subject(&mut self, s: &Spanned<Vec<String>>, rooms: &[Room]) -> Option<Resolved> {
         let name = s.value.join(".");
-        let found = rooms.iter().enumerate().find_map(|(r, room)| {
-            let t = room.targets.iter().position(|t| t.name == name)?;
-            Some((r, SubjectRef::Target(t)))
-        });
-        if found.is_some() {
-            return found;
+        if self.target_index.is_empty() {
+            self.target_index = rooms
+                .iter()
+                .enumerate()
+                .flat_map(|(r, room)| {
+                    room.targets
+                        .iter()
+                        .enumerate()
+                        .map(move |(t, target)| (target.name.clone(), (r, t)))
+                })
+                .collect();
+        }
+        if let Some(&(r, t)) = self.target_index.get(&name) {
+            return Some((r, SubjectRef::Target(t)));
         }
         let targets = rooms
             .iter()
@@ -233,13 +241,39 @@ impl Checker<'_> {
     }
 
     /// `surface` or `box.face`.
+    /// A name in two rooms is ambiguous: `room.surface` or `room.box.face`
+    /// picks one.
     fn surface_subject(&mut self, s: &Spanned<Vec<String>>, rooms: &[Room]) -> Option<Resolved> {
-        let found = rooms
+        let in_named_room = match s.value.split_first() {
+            Some((room, rest)) if !rest.is_empty() => rooms
+                .iter()
+                .position(|r| &r.name == room)
+                .and_then(|r| Some((r, SubjectRef::Surface(rooms[r].surface(rest)?)))),
+            _ => None,
+        };
+        if in_named_room.is_some() {
+            return in_named_room;
+        }
+        let found: Vec<(usize, SubjectRef)> = rooms
             .iter()
             .enumerate()
-            .find_map(|(r, room)| Some((r, SubjectRef::Surface(room.surface(&s.value)?))));
-        if found.is_some() {
-            return found;
+            .filter_map(|(r, room)| Some((r, SubjectRef::Surface(room.surface(&s.value)?))))
+            .collect();
+        match found.as_slice() {
+            [one] => return Some(one.clone()),
+            [_, _, ..] => {
+                let names: Vec<String> =
+                    found.iter().map(|(r, _)| rooms[*r].name.clone()).collect();
+                self.error(Error::new(
+                    ErrorKind::AmbiguousSurface {
+                        name: s.value.join("."),
+                        rooms: names,
+                    },
+                    s.span,
+                ));
+                return None;
+            }
+            [] => {}
         }
         let is_box = |name: &String| {
             rooms
