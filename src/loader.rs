@@ -141,6 +141,8 @@ impl Loader {
                 return self.fail(ErrorKind::TooLarge { what, limit }, used_at);
             }
             Err(e) => {
+                // Watched all the same: it may appear, or its directory.
+                self.loaded.sources.add_data_files([path.to_path_buf()]);
                 let reason = e.to_string();
                 return self.fail(
                     ErrorKind::ReadFile {

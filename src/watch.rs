@@ -62,7 +62,7 @@ pub fn watch(
         let (files, screen) = state.evaluate(registry, file, formatter, out);
         state.rewatch(&mut watcher, &root, files);
         state.show(&screen);
-        if !wait_for_change(&rx, &state.watched_files) {
+        if !wait_for_change(&rx, &state.watched_files, &state.watched_dirs) {
             return 0;
         }
         wait_until_present(&root);
@@ -147,21 +147,33 @@ impl State {
 
     /// Watch the directories of the scenario's files (and of the root file,
     /// even while it is missing); stop watching those no longer needed.
+    ///
+    /// A file reached through a symbolic link is watched at both ends (an
+    /// edit of the link's target changes no entry of the link's
+    /// directory). Each directory's own directory is watched too, so that
+    /// a directory removed and made again is seen, and every directory is
+    /// watched afresh at each evaluation (a removed one's watch is gone).
     fn rewatch(&mut self, watcher: &mut RecommendedWatcher, root: &Path, files: Vec<PathBuf>) {
         let files: BTreeSet<PathBuf> = files
             .iter()
-            .map(|f| absolute(f))
-            .chain([root.to_path_buf()])
+            .chain([&root.to_path_buf()])
+            .flat_map(|f| {
+                let shown = absolute(f);
+                let target = f.canonicalize().ok().filter(|t| *t != shown);
+                std::iter::once(shown).chain(target)
+            })
             .collect();
         let dirs: BTreeSet<PathBuf> = files
             .iter()
-            .filter_map(|f| f.parent().map(Path::to_path_buf))
+            .filter_map(|f| f.parent())
+            .flat_map(|d| std::iter::once(d).chain(d.parent()))
+            .map(Path::to_path_buf)
             .collect();
         for gone in self.watched_dirs.difference(&dirs) {
             let _ = watcher.unwatch(gone);
         }
-        for new in dirs.difference(&self.watched_dirs) {
-            let _ = watcher.watch(new, RecursiveMode::NonRecursive);
+        for dir in &dirs {
+            let _ = watcher.watch(dir, RecursiveMode::NonRecursive);
         }
         self.watched_dirs = dirs;
         self.watched_files = files;
@@ -169,9 +181,10 @@ impl State {
 }
 
 /// Block until one of `files` (or another `.reach` file beside them, which
-/// may be a file about to be used) changes, then until events have been
-/// quiet for a moment. False when the watcher is gone.
-fn wait_for_change(rx: &Events, files: &BTreeSet<PathBuf>) -> bool {
+/// may be a file about to be used, or one of the watched `dirs` itself)
+/// changes, then until events have been quiet for a moment. False when
+/// the watcher is gone.
+fn wait_for_change(rx: &Events, files: &BTreeSet<PathBuf>, dirs: &BTreeSet<PathBuf>) -> bool {
     // Reading the files (as every evaluation does) raises access events;
     // only writes, renames, creations and removals are changes.
     let relevant = |event: &notify::Result<notify::Event>| match event {
@@ -185,9 +198,11 @@ fn wait_for_change(rx: &Events, files: &BTreeSet<PathBuf>) -> bool {
                     )
             );
             change
-                && e.paths
-                    .iter()
-                    .any(|p| files.contains(p) || p.extension().is_some_and(|x| x == "reach"))
+                && e.paths.iter().any(|p| {
+                    files.contains(p)
+                        || dirs.contains(p)
+                        || p.extension().is_some_and(|x| x == "reach")
+                })
         }
         Err(_) => false,
     };

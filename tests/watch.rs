@@ -155,3 +155,50 @@ fn watch_follows_a_mesh_file_and_a_moved_mesh() {
     std::fs::write(&file, scenario(-2250)).unwrap();
     w.expect("mug by ben: reachable -> NOT reachable", 1);
 }
+
+/// The gaps hostile users found: a root that is a symbolic link whose
+/// target is edited, a used file's directory removed and made again, and a
+/// used file swapped for a FIFO (which must not block the watcher).
+#[cfg(unix)]
+#[test]
+fn watch_follows_links_remade_directories_and_is_not_held_by_a_fifo() {
+    let dir = tempfile::tempdir().unwrap();
+    let real = dir.path().join("real");
+    let sub = real.join("sub");
+    std::fs::create_dir_all(&sub).unwrap();
+    std::fs::write(sub.join("parts.reach"), PARTS).unwrap();
+    let target = real.join("target.reach");
+    let text = |extra_mm| scenario(extra_mm).replace("\"parts.reach\"", "\"real/sub/parts.reach\"");
+    std::fs::write(&target, text(0)).unwrap();
+    let link = dir.path().join("link.reach");
+    std::os::unix::fs::symlink(&target, &link).unwrap();
+    let mut w = Watch::start(&link);
+    w.expect("first results", 1);
+
+    // The link's target is edited.
+    std::fs::write(&target, text(1500)).unwrap();
+    w.expect("mug by ben: reachable -> NOT reachable", 1);
+    std::fs::write(&target, text(0)).unwrap();
+    w.expect("mug by ben: NOT reachable -> reachable", 1);
+
+    // The used file's directory goes, then comes back with another file.
+    std::fs::remove_dir_all(&sub).unwrap();
+    w.expect("errors found", 1);
+    std::fs::create_dir(&sub).unwrap();
+    std::thread::sleep(Duration::from_millis(200));
+    std::fs::write(sub.join("parts.reach"), PARTS.replace("960", "2500")).unwrap();
+    w.expect("mug by ben: reachable -> NOT reachable", 2);
+
+    // The used file becomes a FIFO: refused at once, and the watcher goes
+    // on to see it become a file again.
+    std::fs::remove_file(sub.join("parts.reach")).unwrap();
+    let made = Command::new("mkfifo")
+        .arg(sub.join("parts.reach"))
+        .status()
+        .unwrap();
+    assert!(made.success());
+    w.expect("errors found", 3);
+    std::fs::remove_file(sub.join("parts.reach")).unwrap();
+    std::fs::write(sub.join("parts.reach"), PARTS).unwrap();
+    w.expect("mug by ben: NOT reachable -> reachable", 2);
+}
