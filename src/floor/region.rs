@@ -59,13 +59,14 @@ pub fn admissible(
     MultiPolygon::new(vec![inside]).difference(&blocked)
 }
 
-/// The bounds of `inside`, a metre wider on every side.
+/// The bounds of `inside`, ten metres wider on every side: furniture in
+/// or beside the room, grown by any footprint, stays within them as it is.
 fn grown_bounds(inside: &Polygon<f64>) -> Rect<f64> {
     use geo::BoundingRect;
     let r = inside.bounding_rect().expect("the shrunk room has corners");
     let margin = Coord {
-        x: 1000.0,
-        y: 1000.0,
+        x: 10_000.0,
+        y: 10_000.0,
     };
     Rect::new(r.min() - margin, r.max() + margin)
 }
@@ -73,7 +74,14 @@ fn grown_bounds(inside: &Polygon<f64>) -> Rect<f64> {
 /// The convex polygon `p` cut to `rect` (Sutherland-Hodgman), none if
 /// nothing is left.
 fn clipped(p: &Polygon<f64>, rect: &Rect<f64>) -> Option<Polygon<f64>> {
+    use geo::BoundingRect;
     let (lo, hi) = (rect.min(), rect.max());
+    let bounds = p.bounding_rect()?;
+    let (b0, b1) = (bounds.min(), bounds.max());
+    if b0.x >= lo.x && b0.y >= lo.y && b1.x <= hi.x && b1.y <= hi.y {
+        // Inside already: kept exactly as it was.
+        return Some(p.clone());
+    }
     let mut points: Vec<Coord<f64>> = p.exterior().0.clone();
     points.dedup();
     if points.len() > 1 && points.first() == points.last() {
