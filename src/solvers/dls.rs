@@ -47,7 +47,7 @@ impl Settings for DlsSolver {
                 .get(),
             max_iterations: p
                 .integer("max_iterations", 200, "iterations per start")
-                .range(1.0, 1e6)
+                .range(1.0, 1e4)
                 .get() as u64,
             starts: p
                 .integer("starts", 1, "starting postures tried until one reaches")

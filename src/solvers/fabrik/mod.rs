@@ -62,7 +62,7 @@ impl Settings for FabrikSettings {
                 400,
                 "backward and forward passes per start, at most",
             )
-            .range(1.0, 1e6)
+            .range(1.0, 1e4)
             .get() as u32;
         let stall = p
             .integer(
@@ -70,7 +70,7 @@ impl Settings for FabrikSettings {
                 4,
                 "stop after this many passes in a row that did not bring the effector closer",
             )
-            .range(1.0, 1e6)
+            .range(1.0, 1e4)
             .get() as u32;
         let sweeps = p
             .integer("sweeps", 2, "turns of each group's joints per forward pass")

@@ -138,7 +138,7 @@ impl Settings for IncrementalSettings {
                     10,
                     "stop after this many sweeps in a row that did not improve",
                 )
-                .range(1.0, 1e6)
+                .range(1.0, 1e5)
                 .get() as u32,
             stall_ratio: p
                 .number(
@@ -154,7 +154,7 @@ impl Settings for IncrementalSettings {
                     1000,
                     "stop after this many sweeps over all joints",
                 )
-                .range(1.0, 1e6)
+                .range(1.0, 1e5)
                 .get() as u32,
             avoid_obstacles: p
                 .boolean(
