@@ -36,7 +36,7 @@ pub const DEFAULTS: Limits = Limits {
     constant_chain: 256,
     use_chain: 64,
     alias_chain: 16,
-    solver_starts: 10_000_000,
+    solver_starts: 20_000_000,
 };
 
 impl Default for Limits {

@@ -215,7 +215,13 @@ fn z_onto(axis: &[f64; 3]) -> Option<IsometryMatrix3<f64>> {
     if !axis.iter().all(|v| v.is_finite()) {
         return None;
     }
-    let a = Vector3::from(*axis);
+    // Scaled by its largest component first, so that a huge axis (1e300)
+    // keeps its direction instead of overflowing to no direction at all.
+    let largest = axis.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    if largest == 0.0 {
+        return None;
+    }
+    let a = Vector3::from(*axis) / largest;
     let a = Unit::try_new(a, 1e-12)?;
     let rotation = Rotation3::rotation_between(&Vector3::z(), &a)
         .unwrap_or_else(|| Rotation3::from_axis_angle(&Vector3::x_axis(), std::f64::consts::PI));
@@ -290,5 +296,30 @@ fn locked(name: &str, pose: IsometryMatrix3<f64>) -> Joint {
         neutral: 0.0,
         weight: 0.0,
         link: Link::named(name),
+    }
+}
+
+#[cfg(test)]
+mod axis_tests {
+    use super::z_onto;
+    use nalgebra::Vector3;
+
+    #[test]
+    fn a_huge_axis_keeps_its_direction_and_a_bad_one_has_none() {
+        for (axis, expected) in [
+            ([0.0, 1e300, 0.0], Vector3::y()),
+            ([0.0, 2.0, 0.0], Vector3::y()),
+            ([-1e300, 0.0, 0.0], -Vector3::x()),
+        ] {
+            let turned = z_onto(&axis).unwrap().rotation * Vector3::z();
+            assert!((turned - expected).norm() < 1e-12, "{axis:?}: {turned}");
+        }
+        for axis in [
+            [0.0, 0.0, 0.0],
+            [0.0, f64::INFINITY, 0.0],
+            [f64::NAN, 1.0, 0.0],
+        ] {
+            assert!(z_onto(&axis).is_none(), "{axis:?}");
+        }
     }
 }

@@ -41,7 +41,7 @@ impl Settings for GridSettings {
                     100_000,
                     "refuse maps with more points than this",
                 )
-                .range(1.0, 1e8)
+                .range(1.0, 1e6)
                 .get() as u64,
         }
     }
