@@ -2,7 +2,7 @@
 //! its coordinates in the file's length unit times `scale`, turned by
 //! `rotate` about the vertical and moved to `at`. Triangles without an
 //! area are dropped and closed pieces wound outwards
-//! (`geometry::cleaned_triangles`). A file that cannot be read or parsed,
+//! (`MeshObstacle::new`). A file that cannot be read or parsed,
 //! or that has no triangle with an area, is a diagnostic at its name.
 
 use std::path::{Path, PathBuf};
@@ -11,7 +11,6 @@ use nalgebra::{Point3, Rotation3, Vector3};
 
 use super::Checker;
 use crate::error::{Error, ErrorKind};
-use crate::geometry::cleaned_triangles;
 use crate::read::{self, FileKind};
 use crate::scene::MeshObstacle;
 use crate::source::Origin;
@@ -60,26 +59,21 @@ impl Checker<'_> {
             .into_iter()
             .map(|v| at + turn * (v.coords * scale * unit_mm))
             .collect();
-        Some(MeshObstacle {
-            name: d.name.value.clone(),
-            vertices_mm,
-            triangles,
-        })
+        let mesh = MeshObstacle::new(d.name.value.clone(), vertices_mm, &triangles);
+        if mesh.triangles.is_empty() {
+            let n = triangles.len();
+            self.bad_mesh(d, format!("none of its {n} triangles has an area"));
+            return None;
+        }
+        Some(mesh)
     }
 
     /// The OBJ's vertices (in its own units) and triangles.
     fn read_obj(&mut self, d: &MeshDecl) -> Option<ObjMesh> {
         let path = self.relative_to_file(&d.path.value);
         self.data_files.push(path.clone());
-        let shown = path.display().to_string();
         let bad = |c: &mut Self, reason: String| {
-            c.error(Error::new(
-                ErrorKind::BadMesh {
-                    path: shown.clone(),
-                    reason,
-                },
-                d.path.span,
-            ));
+            c.bad_mesh(d, reason);
             None
         };
         let limit = self.limits.file_bytes;
@@ -122,16 +116,16 @@ impl Checker<'_> {
         {
             return bad(self, "a vertex is not a finite number".into());
         }
-        let faces = triangles.len();
-        let triangles = cleaned_triangles(&vertices, &triangles);
         if triangles.is_empty() {
-            let reason = match faces {
-                0 => "it has no faces".to_string(),
-                n => format!("none of its {n} triangles has an area"),
-            };
-            return bad(self, reason);
+            return bad(self, "it has no faces".into());
         }
         Some((vertices, triangles))
+    }
+
+    /// A diagnostic at the mesh's file name.
+    fn bad_mesh(&mut self, d: &MeshDecl, reason: String) {
+        let path = self.relative_to_file(&d.path.value).display().to_string();
+        self.error(Error::new(ErrorKind::BadMesh { path, reason }, d.path.span));
     }
 
     /// `relative` against the directory of the file being checked (the

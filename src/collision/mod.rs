@@ -13,7 +13,7 @@ use nalgebra::{Isometry3, Point3, Vector3};
 use parry3d_f64::query::{self, Ray};
 use parry3d_f64::shape::{Segment, SharedShape, TriMeshFlags};
 
-use crate::geometry::{enclose, Capsule, Cuboid};
+use crate::geometry::{Capsule, Cuboid};
 use crate::scene::{Blocker, Room, Wall};
 
 /// A mesh obstacle as parry holds it, and its name for reports.
@@ -71,7 +71,7 @@ impl Obstacles {
                 let (vertices, triangles) = (m.vertices_mm.clone(), m.triangles.clone());
                 // Solid only where it encloses: parry's orientation alone
                 // would take one sheet for the edge of a solid half-space.
-                let oriented = enclose(&triangles).then(|| {
+                let oriented = m.encloses().then(|| {
                     SharedShape::trimesh_with_flags(
                         vertices.clone(),
                         triangles.clone(),
@@ -347,15 +347,11 @@ mod tests {
             [0, 1, 3, 2],
             [4, 6, 7, 5],
         ];
-        let triangles = quads
+        let triangles: Vec<[u32; 3]> = quads
             .iter()
             .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
             .collect();
-        crate::scene::MeshObstacle {
-            name: "cube".into(),
-            vertices_mm: v,
-            triangles,
-        }
+        crate::scene::MeshObstacle::new("cube".into(), v, &triangles)
     }
 
     #[test]

@@ -10,7 +10,7 @@ mod triangles;
 
 pub use capsule::{segment_distance, Capsule};
 pub use cuboid::Cuboid;
-pub use triangles::{cleaned as cleaned_triangles, enclose};
+pub use triangles::cleaned as cleaned_triangles;
 
 use nalgebra::Point3;
 

@@ -11,28 +11,39 @@ use nalgebra::Point3;
 
 /// The triangles of `triangles` that have an area (and corners within
 /// `vertices`), each closed piece (every edge shared by exactly two of its
-/// triangles) turned to face outwards.
-pub fn cleaned(vertices: &[Point3<f64>], triangles: &[[u32; 3]]) -> Vec<[u32; 3]> {
+/// triangles, once in each direction) turned to face outwards; and whether
+/// they enclose solids: every piece closed. A single sheet (one triangle,
+/// an open box) does not: only its surface is an obstacle.
+pub fn cleaned(vertices: &[Point3<f64>], triangles: &[[u32; 3]]) -> (Vec<[u32; 3]>, bool) {
     let mut kept: Vec<[u32; 3]> = triangles
         .iter()
         .copied()
         .filter(|t| has_area(vertices, t))
         .collect();
+    // Counted once for all pieces: triangles sharing an edge are one piece,
+    // so an edge's count is its piece's.
+    let mut directed: HashMap<(u32, u32), u32> = HashMap::new();
+    for t in &kept {
+        for edge in edges(t) {
+            *directed.entry(edge).or_default() += 1;
+        }
+    }
+    let closed_edge =
+        |(a, b): (u32, u32)| directed[&(a, b)] == 1 && directed.get(&(b, a)) == Some(&1);
+    let mut every_piece_closed = true;
     for piece in pieces(&kept) {
-        if is_closed(&kept, &piece) && signed_volume(vertices, &kept, &piece) < 0.0 {
+        let closed = piece
+            .iter()
+            .all(|&i| edges(&kept[i]).into_iter().all(closed_edge));
+        every_piece_closed &= closed;
+        if closed && signed_volume(vertices, &kept, &piece) < 0.0 {
             for &i in &piece {
                 kept[i].swap(1, 2);
             }
         }
     }
-    kept
-}
-
-/// Whether the triangles enclose solids: every piece closed and
-/// consistently wound. A single sheet (one triangle, an open box) does not:
-/// only its surface is an obstacle.
-pub fn enclose(triangles: &[[u32; 3]]) -> bool {
-    !triangles.is_empty() && pieces(triangles).iter().all(|p| is_closed(triangles, p))
+    let encloses = every_piece_closed && !kept.is_empty();
+    (kept, encloses)
 }
 
 /// Whether a triangle has three distinct corners that do not lie on one
@@ -99,20 +110,6 @@ fn edges([a, b, c]: &[u32; 3]) -> [(u32, u32); 3] {
     [(*a, *b), (*b, *c), (*c, *a)]
 }
 
-/// Whether every edge of the piece is shared by exactly two of its
-/// triangles, once in each direction (closed and consistently wound).
-fn is_closed(triangles: &[[u32; 3]], piece: &[usize]) -> bool {
-    let mut count: HashMap<(u32, u32), i32> = HashMap::new();
-    for &i in piece {
-        for (a, b) in edges(&triangles[i]) {
-            *count.entry((a, b)).or_default() += 1;
-        }
-    }
-    count
-        .iter()
-        .all(|(&(a, b), &n)| n == 1 && count.get(&(b, a)) == Some(&1))
-}
-
 /// Six times the volume the piece's triangles enclose, positive when they
 /// face outwards.
 fn signed_volume(vertices: &[Point3<f64>], triangles: &[[u32; 3]], piece: &[usize]) -> f64 {
@@ -158,23 +155,23 @@ mod tests {
     fn an_outward_cube_stays_and_an_inward_one_turns() {
         let (v, t) = cube();
         assert!(signed_volume(&v, &t, &(0..12).collect::<Vec<_>>()) > 0.0);
-        assert_eq!(cleaned(&v, &t), t);
+        assert_eq!(cleaned(&v, &t), (t.clone(), true));
         let inward: Vec<[u32; 3]> = t.iter().map(|&[a, b, c]| [a, c, b]).collect();
-        assert_eq!(cleaned(&v, &inward), t);
+        assert_eq!(cleaned(&v, &inward), (t, true));
     }
 
     #[test]
     fn degenerate_triangles_go_and_open_pieces_keep_their_winding() {
         let (mut v, mut t) = cube();
-        assert!(enclose(&t) && !enclose(&t[..11]) && !enclose(&t[..1]));
+        assert!(!cleaned(&v, &t[..11]).1 && !cleaned(&v, &t[..1]).1);
         v.push(Point3::new(0.5, 0.5, 0.0));
         t.extend([[0, 0, 1], [0, 1, 3], [0, 3, 8]]);
-        assert!(!enclose(&t));
-        let kept = cleaned(&v, &t);
+        let (kept, encloses) = cleaned(&v, &t);
+        assert!(!encloses);
         // [0, 1, 3] has an area; it opens the cube, so nothing is turned.
         assert_eq!(kept.len(), 13);
         assert!(kept.contains(&[0, 1, 3]));
         let open: Vec<[u32; 3]> = t[..11].iter().map(|&[a, b, c]| [a, c, b]).collect();
-        assert_eq!(cleaned(&v, &open), open);
+        assert_eq!(cleaned(&v, &open), (open, false));
     }
 }
