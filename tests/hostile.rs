@@ -390,24 +390,20 @@ fn urdf_limits_origins_and_axes_are_checked_like_reach_text() {
 }
 
 /// A cube as OBJ text from `min` to `min + size` (mm), its faces wound
-/// outwards or, if `inwards`, inwards; `extra` lines appended.
-fn cube_obj(min: [f64; 3], size: f64, inwards: bool, extra: &str) -> String {
-    let mut text = String::new();
-    for i in 0..8 {
-        let corner = |axis: usize| min[axis] + if i >> axis & 1 == 1 { size } else { 0.0 };
-        text += &format!("v {} {} {}\n", corner(0), corner(1), corner(2));
+/// outwards ([`crate::watch::cube_obj`]) or, if `inwards`, inwards.
+fn cube_obj(min: [f64; 3], size: f64, inwards: bool) -> String {
+    let outwards = crate::watch::cube_obj(min, size);
+    if !inwards {
+        return outwards;
     }
-    for face in [
-        "1 3 4 2", "5 6 8 7", "1 2 6 5", "3 7 8 4", "1 5 7 3", "2 4 8 6",
-    ] {
-        let face = if inwards {
+    let reversed = |line: &str| match line.strip_prefix("f ") {
+        Some(face) => format!(
+            "f {}\n",
             face.split(' ').rev().collect::<Vec<_>>().join(" ")
-        } else {
-            face.to_string()
-        };
-        text += &format!("f {face}\n");
-    }
-    text + extra
+        ),
+        None => format!("{line}\n"),
+    };
+    outwards.lines().map(reversed).collect()
 }
 
 /// The text report (without its first line, which names the file) of a
@@ -435,8 +431,8 @@ fn report_with_crate(obj: &str) -> String {
 
 #[test]
 fn a_mesh_wound_inwards_or_with_degenerate_faces_is_the_same_solid() {
-    let outwards = report_with_crate(&cube_obj([500.0, 1300.0, 900.0], 300.0, false, ""));
-    let inwards = report_with_crate(&cube_obj([500.0, 1300.0, 900.0], 300.0, true, ""));
+    let outwards = report_with_crate(&cube_obj([500.0, 1300.0, 900.0], 300.0, false));
+    let inwards = report_with_crate(&cube_obj([500.0, 1300.0, 900.0], 300.0, true));
     assert_eq!(outwards, inwards);
     // The crate holds the mug, and leaves the cup beside the person free.
     let verdict = |target: &str| {
@@ -449,7 +445,7 @@ fn a_mesh_wound_inwards_or_with_degenerate_faces_is_the_same_solid() {
     assert!(!verdict("cup").contains("NOT"), "{outwards}");
     // Repeated corners, and corners on one line (v9 halfway from v1 to v2).
     let junk = "v 650 1300 900\nv 1 1 1\nf 9 9 10\nf 1 2 9\nf 10 9 9\n";
-    let with_junk = report_with_crate(&cube_obj([500.0, 1300.0, 900.0], 300.0, false, junk));
+    let with_junk = report_with_crate(&(cube_obj([500.0, 1300.0, 900.0], 300.0, false) + junk));
     assert_eq!(outwards, with_junk);
     // Only degenerate faces: a diagnostic, not a solid that blocks all.
     let dir = tempfile::tempdir().unwrap();

@@ -113,7 +113,7 @@ fn watch_follows_every_way_of_saving() {
 }
 
 /// A closed cube as OBJ text, from `min` to `min + size` (mm).
-fn cube_obj(min: [f64; 3], size: f64) -> String {
+pub(crate) fn cube_obj(min: [f64; 3], size: f64) -> String {
     let mut text = String::new();
     for i in 0..8 {
         let corner = |axis: usize| min[axis] + if i >> axis & 1 == 1 { size } else { 0.0 };

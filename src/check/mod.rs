@@ -97,7 +97,7 @@ struct Checker<'a> {
     params: Vec<(String, Option<Quantity>)>,
     persons: Table<'a, crate::syntax::ast::PersonDecl>,
     tasks: Vec<(&'a crate::syntax::ast::TaskDecl, FileId)>,
-    /// Each target's room and place in it, by name, once tasks name them.
+    /// Each target's room and place in it, by name, for the tasks.
     target_index: HashMap<String, (usize, usize)>,
 }
 

@@ -24,6 +24,16 @@ impl Checker<'_> {
         bases: &[Arc<dyn Base>],
     ) -> Vec<TaskSpec> {
         let decls = std::mem::take(&mut self.tasks);
+        self.target_index = rooms
+            .iter()
+            .enumerate()
+            .flat_map(|(r, room)| {
+                room.targets
+                    .iter()
+                    .enumerate()
+                    .map(move |(t, target)| (target.name.clone(), (r, t)))
+            })
+            .collect();
         let mut out = Vec::new();
         for (decl, file) in decls {
             if let Some(tasks) = self.in_file(file, |c| c.task(decl, rooms, persons, bases)) {
@@ -204,18 +214,6 @@ impl Checker<'_> {
 
     fn target_subject(&mut self, s: &Spanned<Vec<String>>, rooms: &[Room]) -> Option<Resolved> {
         let name = s.value.join(".");
-        if self.target_index.is_empty() {
-            self.target_index = rooms
-                .iter()
-                .enumerate()
-                .flat_map(|(r, room)| {
-                    room.targets
-                        .iter()
-                        .enumerate()
-                        .map(move |(t, target)| (target.name.clone(), (r, t)))
-                })
-                .collect();
-        }
         if let Some(&(r, t)) = self.target_index.get(&name) {
             return Some((r, SubjectRef::Target(t)));
         }

@@ -49,25 +49,25 @@ impl Settings for GridSettings {
 
 impl GridSettings {
     /// How many points the grid of `subject` has (1 if it is not a
-    /// surface).
+    /// surface), at most `u64::MAX`.
     pub fn points(&self, subject: &Subject<'_>) -> u64 {
+        u64::try_from(self.exact_points(subject)).unwrap_or(u64::MAX)
+    }
+
+    /// The points counted in 128 bits, so that a message never shows a
+    /// saturated count.
+    fn exact_points(&self, subject: &Subject<'_>) -> u128 {
         let Subject::Surface(surface) = subject else {
             return 1;
         };
         let (columns, rows) = surface.grid_size(self.step_mm);
-        (columns as u64).saturating_mul(rows as u64)
+        columns as u128 * rows as u128
     }
 
     /// A map whose grid would have more than `max_points` points.
     pub fn too_large(&self, subject: &Subject<'_>) -> Option<ErrorKind> {
         let max = self.max_points;
-        let Subject::Surface(surface) = subject else {
-            return None;
-        };
-        // Counted in 128 bits, so that the message never shows a
-        // saturated count.
-        let (columns, rows) = surface.grid_size(self.step_mm);
-        let points = columns as u128 * rows as u128;
+        let points = self.exact_points(subject);
         (points > u128::from(max)).then(|| ErrorKind::TooLarge {
             what: format!("the map of `{}` ({points} points)", subject.name()),
             limit: format!("{max} points: raise `max_points` or the `step`"),
