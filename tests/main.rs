@@ -13,6 +13,7 @@ mod golden;
 mod hostile;
 mod independent;
 mod layers;
+mod meshes;
 mod parser;
 mod placement;
 mod plugins;

@@ -17,7 +17,7 @@
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
 
-use geo::{Closest, ClosestPoint, Contains, MultiPolygon, Point};
+use geo::Point;
 use nalgebra::{Point3, Rotation2, Vector2};
 use rand_chacha::rand_core::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -25,7 +25,7 @@ use rand_chacha::ChaCha8Rng;
 use super::capability::Capability;
 use super::placing::{Approach, Placing};
 use super::search::{search, Candidate};
-use crate::floor::{admissible, Footprint, Inside};
+use crate::floor::{FloorObstacles, Footprint, Region};
 use crate::geometry::Solid;
 use crate::kinematics::Chain;
 use crate::plugin::{
@@ -34,8 +34,9 @@ use crate::plugin::{
 use crate::scene::{column_solid, OwnBody, Physique, Room};
 use crate::solvers::random_posture;
 
-/// The admissible region at each heading searched.
-type Regions = Vec<(f64, Inside)>;
+/// The admissible region at each heading searched (one region for every
+/// heading when turning changes nothing).
+type Regions = Vec<(f64, Arc<Region>)>;
 
 /// A base that moves on the floor: its footprint, the person's own body
 /// and the base's parts, and how it may be placed.
@@ -100,13 +101,16 @@ impl Mobile {
     fn compute_regions(&self, room: &Room) -> Regions {
         let zone = self.placing.zone;
         let headings = self.placing.headings.iter().copied();
+        let obstacles = Arc::new(FloorObstacles::new(room, &self.footprint));
+        let region = |h: f64| {
+            let obstacles = Arc::clone(&obstacles);
+            Arc::new(Region::new(room, &self.footprint, h, zone, obstacles))
+        };
         if !self.footprint.turns() {
-            let region = Inside::new(admissible(room, &self.footprint, 0.0, zone));
-            return headings.map(|h| (h, region.clone())).collect();
+            let one = region(0.0);
+            return headings.map(|h| (h, Arc::clone(&one))).collect();
         }
-        headings
-            .map(|h| (h, Inside::new(admissible(room, &self.footprint, h, zone))))
-            .collect()
+        headings.map(|h| (h, region(h))).collect()
     }
 
     /// Whether the base fits anywhere in the room.
@@ -179,7 +183,7 @@ const NEAR_HEIGHT_MM: [[f64; 2]; 4] = [[30.0, 30.0], [30.0, 120.0], [60.0, 240.0
 const FEW: usize = 24;
 
 impl PreparedMobile<'_> {
-    fn regions(&self) -> impl Iterator<Item = &(f64, Inside)> {
+    fn regions(&self) -> impl Iterator<Item = &(f64, Arc<Region>)> {
         self.regions
             .get()
             .into_iter()
@@ -234,7 +238,7 @@ impl PreparedMobile<'_> {
                 // again) only for a new point it lets in.
                 if !region.roughly_contains(x, y)
                     || scanned.iter().any(|p| same_place(p, &pose))
-                    || !region.region().contains(&Point::new(x, y))
+                    || !region.contains(x, y)
                 {
                     continue;
                 }
@@ -268,7 +272,7 @@ impl PreparedMobile<'_> {
             .filter_map(|(heading, region)| {
                 let offset = Rotation2::new(*heading) * hint;
                 let preferred = Point::new(target.x - offset.x, target.y - offset.y);
-                let p = nearest(region.region(), preferred)?;
+                let p = region.nearest(preferred)?;
                 let pose = BasePose {
                     position_mm: Point3::new(p.x(), p.y(), self.mobile.hip_height_mm),
                     heading_rad: *heading,
@@ -330,24 +334,6 @@ impl PreparedBase for PreparedMobile<'_> {
             .placing
             .approach
             .admits_pose(pose, target_room_mm)
-    }
-}
-
-/// The admissible point nearest to `p` (itself if admissible).
-fn nearest(region: &MultiPolygon<f64>, p: Point<f64>) -> Option<Point<f64>> {
-    if region.0.is_empty() {
-        return None;
-    }
-    if region.contains(&p) {
-        return Some(p);
-    }
-    match region.closest_point(&p) {
-        Closest::Intersection(q) | Closest::SinglePoint(q) => Some(q),
-        Closest::Indeterminate => region
-            .0
-            .first()
-            .and_then(|poly| poly.exterior().0.first())
-            .map(|c| Point::new(c.x, c.y)),
     }
 }
 

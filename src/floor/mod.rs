@@ -1,11 +1,19 @@
 //! The floor: where a base can stand. A footprint (a circle for a trolley,
-//! a rectangle for a wheelchair) placed in a room, and the admissible region
-//! of hip points where it fits, computed with the `geo` polygon library.
+//! a rectangle for a wheelchair, or the solids of a chair and legs) placed
+//! in a room, the room's boxes and meshes as the footprint's parts meet
+//! them, and the admissible region of hip points where it fits, computed
+//! with the `geo` polygon library a tile at a time.
 
 mod footprint;
 mod inside;
+mod mesh_cells;
+mod obstacles;
 mod region;
+mod tiles;
 
 pub use footprint::{FloorPart, Footprint};
 pub use inside::Inside;
+pub use mesh_cells::{CELL_MM, FLOOR_TOLERANCE_MM};
+pub use obstacles::FloorObstacles;
 pub use region::{admissible, Zone};
+pub use tiles::Region;

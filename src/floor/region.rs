@@ -1,18 +1,18 @@
-//! The admissible region: every hip point where a base's footprint, at a
-//! given heading, lies inside the room and where none of its parts
-//! overlaps an obstacle at the heights they share. It is the room shrunk
-//! by the footprint, minus, for each obstacle and each part whose heights
-//! overlap it, the obstacle's outline grown by the reflected part (their
+//! The admissible region within a rectangle of floor: every hip point
+//! where a base's footprint, at a given heading, lies inside the room and
+//! where none of its parts overlaps an obstacle at the heights they share.
+//! It is the rectangle minus, for each part, the outlines it meets near
+//! the rectangle (`obstacles.rs`) grown by the reflected part (their
 //! Minkowski sum: for convex outlines, the convex hull of the pairwise
-//! differences of corners), optionally cut to a zone.
+//! differences of corners), each cut to the rectangle first.
 
 use geo::{
     BooleanOps, ConvexHull, Coord, LineString, MultiPoint, MultiPolygon, Point, Polygon, Rect,
 };
-use nalgebra::Vector2;
 
+use super::obstacles::{bounds, FloorObstacles};
 use super::Footprint;
-use crate::scene::{BoxObstacle, MeshObstacle, Room};
+use crate::scene::Room;
 
 /// A rectangle of the floor a user restricts the base to (an approach zone).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -21,54 +21,64 @@ pub struct Zone {
     pub max: (f64, f64),
 }
 
-/// The hip points where `footprint` fits in `room` at `heading_rad`.
+/// A footprint turned to one heading: each part's corners about the hip
+/// point, and the farthest any reaches along x and y.
+pub struct Turned {
+    pub parts: Vec<Vec<Coord<f64>>>,
+    reach: Vec<(Coord<f64>, Coord<f64>)>,
+}
+
+impl Turned {
+    pub fn new(footprint: &Footprint, heading_rad: f64) -> Self {
+        let parts: Vec<Vec<Coord<f64>>> = (0..footprint.parts.len())
+            .map(|k| footprint.corners(k, heading_rad))
+            .collect();
+        let reach = parts.iter().map(|p| bounds(p)).collect();
+        Turned { parts, reach }
+    }
+}
+
+/// The hip points within `within` where `turned` fits among `obstacles`
+/// (`within` already inside the room shrunk by the footprint).
+pub fn admissible_in(
+    within: Rect<f64>,
+    turned: &Turned,
+    obstacles: &FloorObstacles,
+) -> MultiPolygon<f64> {
+    // Grown outlines are cut a little wider than `within`, so that none
+    // ends exactly on its edge.
+    let margin = Coord { x: 1.0, y: 1.0 };
+    let cut = Rect::new(within.min() - margin, within.max() + margin);
+    let mut grown: Vec<Polygon<f64>> = Vec::new();
+    for (k, corners) in turned.parts.iter().enumerate() {
+        // The obstacles that overlap the rectangle swept by the part.
+        let (lo, hi) = turned.reach[k];
+        for outline in obstacles.near(k, cut.min() + lo, cut.max() + hi) {
+            let g = minkowski_with_reflected(outline, corners);
+            grown.extend(clipped(&g, &cut));
+        }
+    }
+    let free = MultiPolygon::new(vec![within.to_polygon()]);
+    if grown.is_empty() {
+        return free;
+    }
+    free.difference(&geo::unary_union(&grown))
+}
+
+/// The hip points where `footprint` fits in `room` at `heading_rad`, as
+/// one region over the whole room (`Region` gives the same, piece by piece,
+/// as it is asked).
 pub fn admissible(
     room: &Room,
     footprint: &Footprint,
     heading_rad: f64,
     zone: Option<Zone>,
 ) -> MultiPolygon<f64> {
-    let parts: Vec<Vec<Coord<f64>>> = (0..footprint.parts.len())
-        .map(|k| footprint.corners(k, heading_rad))
-        .collect();
-    let all_corners: Vec<Coord<f64>> = parts.iter().flatten().copied().collect();
-    let Some(inside) = shrunk_room(room, &all_corners, zone) else {
+    let turned = Turned::new(footprint, heading_rad);
+    let Some(within) = shrunk_room(room, &turned, zone) else {
         return MultiPolygon::new(Vec::new());
     };
-    let mut grown: Vec<Polygon<f64>> = Vec::new();
-    for (part, corners) in footprint.parts.iter().zip(&parts) {
-        let [p0, p1] = part.z_mm;
-        for b in room
-            .boxes
-            .iter()
-            .filter(|b| b.corner_mm.z < p1 && p0 < b.corner_mm.z + b.size_mm.z)
-        {
-            grown.push(minkowski_with_reflected(&box_outline(b), corners));
-        }
-        for m in &room.meshes {
-            if let Some(outline) = mesh_outline(m, [p0, p1]) {
-                grown.push(minkowski_with_reflected(&outline, corners));
-            }
-        }
-    }
-    // What lies outside the room cannot block it, and a box far outside
-    // (1e15 mm away) would break the boolean operations' precision.
-    let within = grown_bounds(&inside);
-    let grown: Vec<Polygon<f64>> = grown.iter().filter_map(|g| clipped(g, &within)).collect();
-    let blocked = geo::unary_union(&grown);
-    MultiPolygon::new(vec![inside]).difference(&blocked)
-}
-
-/// The bounds of `inside`, ten metres wider on every side: furniture in
-/// or beside the room, grown by any footprint, stays within them as it is.
-fn grown_bounds(inside: &Polygon<f64>) -> Rect<f64> {
-    use geo::BoundingRect;
-    let r = inside.bounding_rect().expect("the shrunk room has corners");
-    let margin = Coord {
-        x: 10_000.0,
-        y: 10_000.0,
-    };
-    Rect::new(r.min() - margin, r.max() + margin)
+    admissible_in(within, &turned, &FloorObstacles::new(room, footprint))
 }
 
 /// The convex polygon `p` cut to `rect` (Sutherland-Hodgman), none if
@@ -81,6 +91,9 @@ fn clipped(p: &Polygon<f64>, rect: &Rect<f64>) -> Option<Polygon<f64>> {
     if b0.x >= lo.x && b0.y >= lo.y && b1.x <= hi.x && b1.y <= hi.y {
         // Inside already: kept exactly as it was.
         return Some(p.clone());
+    }
+    if b1.x <= lo.x || b1.y <= lo.y || b0.x >= hi.x || b0.y >= hi.y {
+        return None;
     }
     let mut points: Vec<Coord<f64>> = p.exterior().0.clone();
     points.dedup();
@@ -121,10 +134,10 @@ fn clipped(p: &Polygon<f64>, rect: &Rect<f64>) -> Option<Polygon<f64>> {
 }
 
 /// Hip points keeping the whole footprint inside the room (and the zone).
-fn shrunk_room(room: &Room, corners: &[Coord<f64>], zone: Option<Zone>) -> Option<Polygon<f64>> {
+pub fn shrunk_room(room: &Room, turned: &Turned, zone: Option<Zone>) -> Option<Rect<f64>> {
     let (mut x0, mut y0) = (0.0_f64, 0.0_f64);
     let (mut x1, mut y1) = (room.size_mm.x, room.size_mm.y);
-    for c in corners {
+    for c in turned.parts.iter().flatten() {
         x0 = x0.max(-c.x);
         y0 = y0.max(-c.y);
         x1 = x1.min(room.size_mm.x - c.x);
@@ -134,39 +147,7 @@ fn shrunk_room(room: &Room, corners: &[Coord<f64>], zone: Option<Zone>) -> Optio
         (x0, y0) = (x0.max(z.min.0), y0.max(z.min.1));
         (x1, y1) = (x1.min(z.max.0), y1.min(z.max.1));
     }
-    (x0 < x1 && y0 < y1)
-        .then(|| Rect::new(Coord { x: x0, y: y0 }, Coord { x: x1, y: y1 }).to_polygon())
-}
-
-/// A box obstacle's outline on the floor, turned about its corner.
-fn box_outline(b: &BoxObstacle) -> Vec<Coord<f64>> {
-    let (w, d) = (b.size_mm.x, b.size_mm.y);
-    [(0.0, 0.0), (w, 0.0), (w, d), (0.0, d)]
-        .into_iter()
-        .map(|(x, y)| {
-            let p = b.floor_point(Vector2::new(x, y));
-            Coord { x: p.x, y: p.y }
-        })
-        .collect()
-}
-
-/// A mesh's outline at the heights `z_mm`: the convex hull of the
-/// triangles that reach into them, or none when none does.
-fn mesh_outline(m: &MeshObstacle, [z0, z1]: [f64; 2]) -> Option<Vec<Coord<f64>>> {
-    let mut points: Vec<Point<f64>> = Vec::new();
-    for t in &m.triangles {
-        let v = t.map(|i| m.vertices_mm[i as usize]);
-        let lo = v.iter().map(|p| p.z).fold(f64::INFINITY, f64::min);
-        let hi = v.iter().map(|p| p.z).fold(f64::NEG_INFINITY, f64::max);
-        if lo < z1 && z0 < hi.max(lo + 1e-9) {
-            points.extend(v.iter().map(|p| Point::new(p.x, p.y)));
-        }
-    }
-    if points.is_empty() {
-        return None;
-    }
-    let hull = MultiPoint::new(points).convex_hull();
-    Some(hull.exterior().0.clone())
+    (x0 < x1 && y0 < y1).then(|| Rect::new(Coord { x: x0, y: y0 }, Coord { x: x1, y: y1 }))
 }
 
 /// `O + (-F)`: the hip points at which footprint `F` would overlap the
@@ -187,6 +168,7 @@ fn minkowski_with_reflected(obstacle: &[Coord<f64>], footprint: &[Coord<f64>]) -
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene::BoxObstacle;
     use geo::{Area, Contains};
 
     #[test]

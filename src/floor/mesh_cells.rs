@@ -1,0 +1,538 @@
+//! What a mesh blocks on the floor, whatever its shape: a raster of small
+//! square cells over the room, each holding the heights at which some
+//! triangle lies above it. The heights are the slabs between the ends of a
+//! footprint's parts, and the planes between them (a flat face exactly at
+//! a part's top or bottom touches it without blocking it, as a box's does).
+//! A triangle marks a cell where its piece within a slab, seen from above,
+//! overlaps the cell's inside; a vertical one (a wall, a cabinet's front),
+//! whose piece is a segment, marks the cells it crosses. So an L-shaped
+//! counter blocks an L, not its convex hull, and an open mesh (a scan)
+//! blocks as well as a closed one. Triangles lying on the floor (below
+//! `FLOOR_TOLERANCE_MM`) are floor and block nothing.
+//!
+//! For a part, the cells it is blocked by become rectangles (runs along x,
+//! merged over rows while they stay within a cell of the first row's), which
+//! the region grows by the part like boxes: exact where the mesh follows the
+//! cells, conservative by at most two cells elsewhere.
+
+use geo::Coord;
+use nalgebra::Point3;
+
+use super::Footprint;
+use crate::scene::MeshObstacle;
+
+/// The side of a cell, as long as the room allows (see `MAX_CELLS`).
+pub const CELL_MM: f64 = 5.0;
+/// Triangles whose every corner is this low lie on the floor: a scan's
+/// floor, a mat, a threshold a wheelchair rolls over (ADA 2010 303.3: a
+/// change in level of up to 1/2 inch is bevelled, not a step).
+pub const FLOOR_TOLERANCE_MM: f64 = 13.0;
+/// At most this many cells over the room (16 MiB of masks); a larger room
+/// gets larger cells.
+const MAX_CELLS: f64 = 2_097_152.0;
+/// Slab boundaries kept at most: 32 slabs and 31 planes between them fit in
+/// a 64-bit mask.
+const MAX_BOUNDS: usize = 33;
+
+/// The room's meshes, as cells over its floor, for one footprint's parts.
+#[derive(Clone, Debug)]
+pub struct MeshCells {
+    cell_mm: f64,
+    nx: usize,
+    ny: usize,
+    /// Slab boundaries, rising.
+    bounds_mm: Vec<f64>,
+    /// Per cell, row by row: bit `2k` for slab `k`, bit `2k - 1` for the
+    /// plane `bounds_mm[k]` between slabs `k - 1` and `k`.
+    masks: Vec<u64>,
+}
+
+impl MeshCells {
+    /// The cells of `meshes` over a floor of `size_mm` for the parts of
+    /// `footprint`; none when there are no meshes.
+    pub fn new(meshes: &[MeshObstacle], size_mm: [f64; 2], footprint: &Footprint) -> Option<Self> {
+        if meshes.is_empty() || footprint.parts.is_empty() {
+            return None;
+        }
+        let cell_mm = CELL_MM.max((size_mm[0] * size_mm[1] / MAX_CELLS).sqrt());
+        let nx = ((size_mm[0] / cell_mm).ceil() as usize).max(1);
+        let ny = ((size_mm[1] / cell_mm).ceil() as usize).max(1);
+        let mut cells = MeshCells {
+            cell_mm,
+            nx,
+            ny,
+            bounds_mm: slab_bounds(footprint),
+            masks: vec![0; nx * ny],
+        };
+        let mut crossings: Vec<Crossing> = Vec::new();
+        for m in meshes {
+            for t in &m.triangles {
+                let v = t.map(|i| m.vertices_mm[i as usize]);
+                if v.iter().all(|p| p.z <= FLOOR_TOLERANCE_MM) {
+                    continue;
+                }
+                cells.mark_triangle(&v);
+                cells.cross_centres(&v, &mut crossings);
+            }
+        }
+        cells.fill_solids(crossings);
+        Some(cells)
+    }
+
+    /// Where triangle `v` passes over cell centres: the height there, and
+    /// whether it faces up.
+    fn cross_centres(&self, v: &[Point3<f64>; 3], out: &mut Vec<Crossing>) {
+        let normal = (v[1] - v[0]).cross(&(v[2] - v[0]));
+        if normal.z.abs() <= 1e-9 * normal.norm() {
+            return;
+        }
+        let c = self.cell_mm;
+        let (x_lo, x_hi) = min_max(v.iter().map(|p| p.x));
+        let (y_lo, y_hi) = min_max(v.iter().map(|p| p.y));
+        let first = |lo: f64| (lo / c - SAMPLE.0).ceil().max(0.0) as usize;
+        let last = |hi: f64, n: usize| ((hi / c - SAMPLE.0).floor()).min(n as f64 - 1.0);
+        let (i1, j1) = (last(x_hi, self.nx), last(y_hi, self.ny));
+        if i1 < 0.0 || j1 < 0.0 {
+            return;
+        }
+        for j in first(y_lo)..=j1 as usize {
+            for i in first(x_lo)..=i1 as usize {
+                // Off the centre by a hair no round coordinate shares, so
+                // that an edge between two faces never passes through it
+                // (which would count it twice).
+                let (x, y) = ((i as f64 + SAMPLE.0) * c, (j as f64 + SAMPLE.1) * c);
+                // The plane's height at (x, y), if (x, y) is in the triangle.
+                if let Some(z_mm) = height_in(v, x, y) {
+                    out.push(Crossing {
+                        cell: (j * self.nx + i) as u32,
+                        z_mm,
+                        up: normal.z > 0.0,
+                    });
+                }
+            }
+        }
+    }
+
+    /// Marks the solid below each face that faces up, down to the face
+    /// that faces down below it (the bottom of a closed mesh, the underside
+    /// of a worktop over knee space) or to the floor (a scan's counter,
+    /// which has no bottom): going down a column, a face up enters a solid
+    /// and a face down leaves one, so solids that overlap stay filled.
+    fn fill_solids(&mut self, mut crossings: Vec<Crossing>) {
+        crossings.sort_by(|a, b| a.cell.cmp(&b.cell).then(b.z_mm.total_cmp(&a.z_mm)));
+        for column in crossings.chunk_by(|a, b| a.cell == b.cell) {
+            let mut depth = 0_u32;
+            let mut top_mm = f64::INFINITY;
+            let mut mask = 0;
+            for x in column {
+                if x.up {
+                    if depth == 0 {
+                        top_mm = x.z_mm;
+                    }
+                    depth += 1;
+                } else if depth > 0 {
+                    depth -= 1;
+                    if depth == 0 {
+                        mask |= self.interval_mask([x.z_mm, top_mm]);
+                    }
+                }
+            }
+            if depth > 0 {
+                mask |= self.interval_mask([f64::NEG_INFINITY, top_mm]);
+            }
+            self.masks[column[0].cell as usize] |= mask;
+        }
+    }
+
+    /// The bits of the slabs and planes a solid spanning `z_mm` fills.
+    fn interval_mask(&self, z_mm: [f64; 2]) -> u64 {
+        if z_mm[0] < z_mm[1] {
+            self.part_mask(z_mm)
+        } else {
+            0
+        }
+    }
+
+    /// The bits of the slabs and planes a part spanning `z_mm` meets.
+    fn part_mask(&self, [z0, z1]: [f64; 2]) -> u64 {
+        let b = &self.bounds_mm;
+        let mut mask = 0;
+        for k in 0..b.len().saturating_sub(1) {
+            if b[k] < z1 && z0 < b[k + 1] {
+                mask |= 1 << (2 * k);
+            }
+            if k > 0 && z0 < b[k] && b[k] < z1 {
+                mask |= 1 << (2 * k - 1);
+            }
+        }
+        mask
+    }
+
+    /// Marks the cells under each piece of triangle `v` in a slab.
+    fn mark_triangle(&mut self, v: &[Point3<f64>; 3]) {
+        let lo = v.iter().map(|p| p.z).fold(f64::INFINITY, f64::min);
+        let hi = v.iter().map(|p| p.z).fold(f64::NEG_INFINITY, f64::max);
+        if hi <= FLOOR_TOLERANCE_MM {
+            return;
+        }
+        // A vertical face, seen from above a segment, is moved 0.01 mm
+        // behind itself (against its normal, towards the solid it bounds):
+        // one on a cell's edge then marks the cell behind it, which the
+        // solid's top already marks, not the free cell in front.
+        let normal = (v[1] - v[0]).cross(&(v[2] - v[0]));
+        let across = normal.xy().norm();
+        let behind = (normal.z.abs() <= 1e-9 * normal.norm() && across > 0.0).then(|| {
+            let step = -normal.xy() / across * (self.cell_mm * 2.0 * SNAP_CELLS);
+            Coord {
+                x: step.x,
+                y: step.y,
+            }
+        });
+        for k in 0..self.bounds_mm.len().saturating_sub(1) {
+            let (s0, s1) = (self.bounds_mm[k], self.bounds_mm[k + 1]);
+            if lo == hi {
+                if s0 < lo && lo < s1 {
+                    self.mark_piece(&project(v), 1 << (2 * k));
+                } else if k > 0 && lo == s0 {
+                    self.mark_piece(&project(v), 1 << (2 * k - 1));
+                }
+            } else if lo < s1 && s0 < hi {
+                let mut piece = clip_to_slab(v, s0, s1);
+                if let Some(behind) = behind {
+                    for p in &mut piece {
+                        *p = *p + behind;
+                    }
+                }
+                if !piece.is_empty() {
+                    self.mark_piece(&piece, 1 << (2 * k));
+                }
+            }
+        }
+    }
+
+    /// Marks with `bit` the cells whose inside the convex polygon `piece`
+    /// overlaps (the cells it crosses, when it is a segment or a point).
+    fn mark_piece(&mut self, piece: &[Coord<f64>], bit: u64) {
+        let c = self.cell_mm;
+        let (y_lo, y_hi) = min_max(piece.iter().map(|p| p.y));
+        let Some((j0, j1)) = span(y_lo / c, y_hi / c, self.ny) else {
+            return;
+        };
+        for j in j0..=j1 {
+            let (band0, band1) = (j as f64 * c, (j + 1) as f64 * c);
+            let Some((x_lo, x_hi)) = x_range_in_band(piece, band0.max(y_lo), band1.min(y_hi))
+            else {
+                continue;
+            };
+            let Some((i0, i1)) = span(x_lo / c, x_hi / c, self.nx) else {
+                continue;
+            };
+            let row = &mut self.masks[j * self.nx..(j + 1) * self.nx];
+            for m in &mut row[i0..=i1] {
+                *m |= bit;
+            }
+        }
+    }
+
+    /// The rectangles of cells that block a part spanning `z_mm`, as
+    /// outlines on the floor.
+    pub fn rectangles(&self, z_mm: [f64; 2]) -> Vec<Vec<Coord<f64>>> {
+        let mask = self.part_mask(z_mm);
+        if mask == 0 {
+            return Vec::new();
+        }
+        let mut done: Vec<Rectangle> = Vec::new();
+        let mut open: Vec<Rectangle> = Vec::new();
+        for j in 0..self.ny {
+            let row = &self.masks[j * self.nx..(j + 1) * self.nx];
+            let mut next: Vec<Rectangle> = Vec::new();
+            for (i0, i1) in runs(row, mask) {
+                match open.iter().position(|r| r.takes(i0, i1)) {
+                    Some(k) => {
+                        let mut r = open.swap_remove(k);
+                        r.x = [r.x[0].min(i0), r.x[1].max(i1)];
+                        r.y[1] = j;
+                        next.push(r);
+                    }
+                    None => next.push(Rectangle {
+                        first: [i0, i1],
+                        x: [i0, i1],
+                        y: [j, j],
+                    }),
+                }
+            }
+            done.append(&mut open);
+            open = next;
+        }
+        done.append(&mut open);
+        done.sort_by_key(|r| (r.y[0], r.x[0]));
+        done.iter().map(|r| r.outline(self.cell_mm)).collect()
+    }
+}
+
+/// Where in a cell (in cells from its corner) faces are sampled.
+const SAMPLE: (f64, f64) = (0.500_000_314_159, 0.500_000_271_828);
+
+/// A face passing over a cell's centre.
+struct Crossing {
+    cell: u32,
+    z_mm: f64,
+    up: bool,
+}
+
+/// The height of triangle `v`'s plane at `(x, y)`, if `(x, y)` is in the
+/// triangle seen from above (its edges included).
+fn height_in(v: &[Point3<f64>; 3], x: f64, y: f64) -> Option<f64> {
+    let (a, b, c) = (v[0], v[1], v[2]);
+    let d = (b.y - c.y) * (a.x - c.x) + (c.x - b.x) * (a.y - c.y);
+    let l0 = ((b.y - c.y) * (x - c.x) + (c.x - b.x) * (y - c.y)) / d;
+    let l1 = ((c.y - a.y) * (x - c.x) + (a.x - c.x) * (y - c.y)) / d;
+    let l2 = 1.0 - l0 - l1;
+    // Within the corners' heights, so that a flat face's height is exact.
+    let (lo, hi) = min_max([a.z, b.z, c.z].into_iter());
+    (l0 >= 0.0 && l1 >= 0.0 && l2 >= 0.0).then(|| (l0 * a.z + l1 * b.z + l2 * c.z).clamp(lo, hi))
+}
+
+/// Cells `[x0, x1]` over rows `[y0, y1]`, inclusive; `first` is the run it
+/// began with.
+struct Rectangle {
+    first: [usize; 2],
+    x: [usize; 2],
+    y: [usize; 2],
+}
+
+impl Rectangle {
+    /// Whether the run `i0..=i1` may join it: its ends are within a cell
+    /// of the ends of the run it began with.
+    fn takes(&self, i0: usize, i1: usize) -> bool {
+        i0.abs_diff(self.first[0]) <= 1 && i1.abs_diff(self.first[1]) <= 1
+    }
+
+    fn outline(&self, cell_mm: f64) -> Vec<Coord<f64>> {
+        let (x0, x1) = (self.x[0] as f64 * cell_mm, (self.x[1] + 1) as f64 * cell_mm);
+        let (y0, y1) = (self.y[0] as f64 * cell_mm, (self.y[1] + 1) as f64 * cell_mm);
+        vec![
+            Coord { x: x0, y: y0 },
+            Coord { x: x1, y: y0 },
+            Coord { x: x1, y: y1 },
+            Coord { x: x0, y: y1 },
+        ]
+    }
+}
+
+/// The runs of cells in `row` that meet `mask`, as inclusive index pairs.
+fn runs(row: &[u64], mask: u64) -> Vec<(usize, usize)> {
+    let mut out = Vec::new();
+    let mut start = None;
+    for (i, m) in row.iter().enumerate() {
+        match (m & mask != 0, start) {
+            (true, None) => start = Some(i),
+            (false, Some(s)) => {
+                out.push((s, i - 1));
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    if let Some(s) = start {
+        out.push((s, row.len() - 1));
+    }
+    out
+}
+
+/// The cell boundaries of the slabs: the ends of every part, rising, at
+/// most `MAX_BOUNDS` of them (every other one dropped until they fit, which
+/// only widens slabs: conservative).
+fn slab_bounds(footprint: &Footprint) -> Vec<f64> {
+    let mut b: Vec<f64> = footprint.parts.iter().flat_map(|p| p.z_mm).collect();
+    b.sort_by(f64::total_cmp);
+    b.dedup();
+    while b.len() > MAX_BOUNDS {
+        let last = b[b.len() - 1];
+        b = b.iter().copied().step_by(2).collect();
+        if b.last() != Some(&last) {
+            b.push(last);
+        }
+    }
+    b
+}
+
+/// How far (in cells) within a cell's edge a coordinate counts as on it: a
+/// mesh in metres read as 32-bit floats puts 0.6 m at 600.00002 mm.
+const SNAP_CELLS: f64 = 1e-3;
+
+/// The cells `[a, b]` (in cell units) overlap inside, clamped to `0..n`:
+/// those whose inside they overlap, or the one they touch when they have
+/// no length. None when all are outside.
+fn span(a: f64, b: f64, n: usize) -> Option<(usize, usize)> {
+    if b < 0.0 || a > n as f64 {
+        return None;
+    }
+    let first = (a + SNAP_CELLS).floor().max(0.0);
+    let last = ((b - SNAP_CELLS).ceil() - 1.0)
+        .max(first)
+        .min(n as f64 - 1.0);
+    (first <= last).then_some((first as usize, last as usize))
+}
+
+fn min_max(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    values.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+        (a.min(v), b.max(v))
+    })
+}
+
+/// The x extent of convex polygon `piece` between heights `y0 <= y1` on
+/// the floor (its vertices there and its edges' crossings of them).
+fn x_range_in_band(piece: &[Coord<f64>], y0: f64, y1: f64) -> Option<(f64, f64)> {
+    let mut xs: Vec<f64> = Vec::new();
+    for (k, a) in piece.iter().enumerate() {
+        if (y0..=y1).contains(&a.y) {
+            xs.push(a.x);
+        }
+        let b = piece[(k + 1) % piece.len()];
+        for y in [y0, y1] {
+            if (a.y < y) != (b.y < y) && a.y != b.y {
+                xs.push(a.x + (y - a.y) / (b.y - a.y) * (b.x - a.x));
+            }
+        }
+    }
+    (!xs.is_empty()).then(|| min_max(xs.into_iter()))
+}
+
+/// The triangle's corners seen from above.
+fn project(v: &[Point3<f64>; 3]) -> Vec<Coord<f64>> {
+    v.iter().map(|p| Coord { x: p.x, y: p.y }).collect()
+}
+
+/// The part of triangle `v` between heights `z0` and `z1`, seen from above
+/// (a convex polygon; a segment for a vertical triangle).
+fn clip_to_slab(v: &[Point3<f64>; 3], z0: f64, z1: f64) -> Vec<Coord<f64>> {
+    let mut points: Vec<Point3<f64>> = v.to_vec();
+    for (at, keep_above) in [(z0, true), (z1, false)] {
+        let keeps = |p: &Point3<f64>| if keep_above { p.z >= at } else { p.z <= at };
+        let mut next = Vec::with_capacity(points.len() + 2);
+        for (k, a) in points.iter().enumerate() {
+            let b = &points[(k + 1) % points.len()];
+            if keeps(a) {
+                next.push(*a);
+            }
+            if keeps(a) != keeps(b) {
+                let t = (at - a.z) / (b.z - a.z);
+                next.push(a + (b - a) * t);
+            }
+        }
+        points = next;
+        if points.is_empty() {
+            return Vec::new();
+        }
+    }
+    points.iter().map(|p| Coord { x: p.x, y: p.y }).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use geo::{Area, BooleanOps, LineString, MultiPolygon, Polygon};
+
+    fn mesh(quads: &[[[f64; 3]; 4]]) -> MeshObstacle {
+        let mut vertices = Vec::new();
+        let mut triangles = Vec::new();
+        for q in quads {
+            let base = vertices.len() as u32;
+            vertices.extend(q.iter().map(|p| Point3::new(p[0], p[1], p[2])));
+            triangles.push([base, base + 1, base + 2]);
+            triangles.push([base, base + 2, base + 3]);
+        }
+        MeshObstacle::new("m".into(), vertices, &triangles)
+    }
+
+    fn top(x0: f64, y0: f64, x1: f64, y1: f64, z: f64) -> [[f64; 3]; 4] {
+        [[x0, y0, z], [x1, y0, z], [x1, y1, z], [x0, y1, z]]
+    }
+
+    fn area(outlines: &[Vec<Coord<f64>>]) -> f64 {
+        let polygons: Vec<Polygon<f64>> = outlines
+            .iter()
+            .map(|o| Polygon::new(LineString::from(o.clone()), vec![]))
+            .collect();
+        geo::unary_union(&polygons)
+            .union(&MultiPolygon::new(vec![]))
+            .unsigned_area()
+    }
+
+    #[test]
+    fn an_l_shaped_top_blocks_an_l_not_its_hull() {
+        // Two counter tops 600 mm deep along two walls, at 900 mm.
+        let m = mesh(&[
+            top(0.0, 0.0, 3000.0, 600.0, 900.0),
+            top(0.0, 600.0, 600.0, 2000.0, 900.0),
+        ]);
+        let mut f = Footprint::circle(300.0, 1400.0);
+        for z_mm in [[0.0, 900.0], [900.0, 1400.0]] {
+            let mut part = f.parts[0].clone();
+            part.z_mm = z_mm;
+            f.parts.push(part);
+        }
+        let cells = MeshCells::new(&[m], [4000.0, 3000.0], &f).unwrap();
+        let blocked = area(&cells.rectangles([0.0, 1400.0]));
+        let l = 3000.0 * 600.0 + 600.0 * 1400.0;
+        assert!((blocked - l).abs() < 1.0, "{blocked} against {l}");
+        // A part above the top is not blocked; one below it is (a top
+        // with nothing under it is a scan's counter, solid to the floor).
+        assert!(cells.rectangles([900.0, 1400.0]).is_empty());
+        assert!((area(&cells.rectangles([0.0, 900.0])) - l).abs() < 1.0);
+    }
+
+    #[test]
+    fn a_wall_marks_the_cells_it_stands_on_and_the_floor_marks_none() {
+        let wall = [
+            [1000.0, 0.0, 0.0],
+            [1000.0, 2000.0, 0.0],
+            [1000.0, 2000.0, 2000.0],
+            [1000.0, 0.0, 2000.0],
+        ];
+        let floor = top(0.0, 0.0, 4000.0, 3000.0, 8.0);
+        let f = Footprint::circle(300.0, 1400.0);
+        let cells = MeshCells::new(&[mesh(&[wall, floor])], [4000.0, 3000.0], &f).unwrap();
+        let rects = cells.rectangles([0.0, 1400.0]);
+        let blocked = area(&rects);
+        assert!((blocked - 2000.0 * CELL_MM).abs() < 1.0, "{blocked}");
+    }
+
+    #[test]
+    fn a_sloping_triangle_blocks_only_where_it_is_within_the_heights() {
+        // A wedge's top rising from 0 at x = 0 to 1000 mm at x = 1000 mm:
+        // above 500 mm it lies over x > 500; below 500 mm the wedge fills
+        // all of it.
+        let ramp = [
+            [0.0, 0.0, 0.0],
+            [1000.0, 0.0, 1000.0],
+            [1000.0, 1000.0, 1000.0],
+            [0.0, 1000.0, 0.0],
+        ];
+        let mut f = Footprint::circle(300.0, 500.0);
+        f.parts
+            .push(Footprint::circle(300.0, 1400.0).parts.remove(0));
+        f.parts[1].z_mm = [500.0, 1400.0];
+        let cells = MeshCells::new(&[mesh(&[ramp])], [4000.0, 3000.0], &f).unwrap();
+        let low = area(&cells.rectangles([0.0, 500.0]));
+        assert!((low - 1000.0 * 1000.0).abs() < 1.0, "{low}");
+        let high = area(&cells.rectangles([500.0, 1400.0]));
+        assert!((high - 500.0 * 1000.0).abs() < 1.0, "{high}");
+    }
+
+    #[test]
+    fn a_row_of_noisy_runs_merges_into_one_rectangle_a_cell_wider() {
+        let mut quads = Vec::new();
+        for j in 0..40 {
+            let wobble = if j % 2 == 0 { 0.0 } else { CELL_MM };
+            let y = j as f64 * CELL_MM;
+            quads.push(top(0.0, y, 600.0 + wobble, y + CELL_MM, 900.0));
+        }
+        let f = Footprint::circle(300.0, 1400.0);
+        let cells = MeshCells::new(&[mesh(&quads)], [4000.0, 3000.0], &f).unwrap();
+        let rects = cells.rectangles([0.0, 1400.0]);
+        assert_eq!(rects.len(), 1);
+        assert_eq!(rects[0][2], Coord { x: 605.0, y: 200.0 });
+    }
+}

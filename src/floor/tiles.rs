@@ -1,0 +1,201 @@
+//! The admissible region at one heading, worked out a tile at a time as it
+//! is asked about: a placement asks only about the floor within an arm's
+//! length of its target, so a large room costs what the floor near its
+//! targets costs. Each tile (a square of the shrunk room, about a metre)
+//! is `admissible_in` over the tile widened by a millimetre, so that a
+//! point on a tile's edge is inside its own tile's piece; the pieces,
+//! together, are the region `admissible` gives whole.
+
+use std::sync::{Arc, OnceLock};
+
+use geo::{Closest, ClosestPoint, Coord, MultiPolygon, Point, Rect};
+
+use super::obstacles::FloorObstacles;
+use super::region::{admissible_in, shrunk_room, Turned, Zone};
+use super::{Footprint, Inside};
+use crate::scene::Room;
+
+/// The side of a tile, for rooms up to `MAX_TILES` of them.
+const TILE_MM: f64 = 1000.0;
+const MAX_TILES: f64 = 4096.0;
+/// How far each tile's piece reaches beyond the tile.
+const OVERLAP_MM: f64 = 1.0;
+
+/// The admissible region at one heading.
+pub struct Region {
+    turned: Turned,
+    obstacles: Arc<FloorObstacles>,
+    /// The shrunk room (and zone), none if the footprint fits in neither.
+    free: Option<Rect<f64>>,
+    tile_mm: f64,
+    nx: usize,
+    ny: usize,
+    tiles: Vec<OnceLock<Inside>>,
+    empty: OnceLock<bool>,
+}
+
+impl Region {
+    pub fn new(
+        room: &Room,
+        footprint: &Footprint,
+        heading_rad: f64,
+        zone: Option<Zone>,
+        obstacles: Arc<FloorObstacles>,
+    ) -> Self {
+        let turned = Turned::new(footprint, heading_rad);
+        let free = shrunk_room(room, &turned, zone);
+        let (w, h) = free.map_or((0.0, 0.0), |r| (r.width(), r.height()));
+        let tile_mm = TILE_MM.max((w * h / MAX_TILES).sqrt());
+        let nx = (w / tile_mm).ceil().max(1.0) as usize;
+        let ny = (h / tile_mm).ceil().max(1.0) as usize;
+        Region {
+            turned,
+            obstacles,
+            free,
+            tile_mm,
+            nx,
+            ny,
+            tiles: (0..nx * ny).map(|_| OnceLock::new()).collect(),
+            empty: OnceLock::new(),
+        }
+    }
+
+    /// Tile `(i, j)`'s piece of the region.
+    fn tile(&self, i: usize, j: usize) -> &Inside {
+        self.tiles[j * self.nx + i].get_or_init(|| {
+            let piece = self
+                .tile_rect(i, j)
+                .map(|r| admissible_in(r, &self.turned, &self.obstacles));
+            Inside::new(piece.unwrap_or_else(|| MultiPolygon::new(Vec::new())))
+        })
+    }
+
+    /// Tile `(i, j)` widened by `OVERLAP_MM`, within the shrunk room.
+    fn tile_rect(&self, i: usize, j: usize) -> Option<Rect<f64>> {
+        let free = self.free?;
+        let t = self.tile_mm;
+        let lo = Coord {
+            x: (free.min().x + i as f64 * t - OVERLAP_MM).max(free.min().x),
+            y: (free.min().y + j as f64 * t - OVERLAP_MM).max(free.min().y),
+        };
+        let hi = Coord {
+            x: (free.min().x + (i + 1) as f64 * t + OVERLAP_MM).min(free.max().x),
+            y: (free.min().y + (j + 1) as f64 * t + OVERLAP_MM).min(free.max().y),
+        };
+        (lo.x < hi.x && lo.y < hi.y).then(|| Rect::new(lo, hi))
+    }
+
+    /// The tile `(x, y)` lies in, if it is in the shrunk room.
+    fn tile_of(&self, x: f64, y: f64) -> Option<(usize, usize)> {
+        let free = self.free?;
+        let fx = (x - free.min().x) / self.tile_mm;
+        let fy = (y - free.min().y) / self.tile_mm;
+        if !(fx >= 0.0 && fy >= 0.0 && x <= free.max().x && y <= free.max().y) {
+            return None;
+        }
+        Some((
+            (fx as usize).min(self.nx - 1),
+            (fy as usize).min(self.ny - 1),
+        ))
+    }
+
+    /// Whether `(x, y)` is inside the region, not on its boundary.
+    pub fn contains(&self, x: f64, y: f64) -> bool {
+        self.tile_of(x, y)
+            .is_some_and(|(i, j)| self.tile(i, j).contains(x, y))
+    }
+
+    /// Like `contains`, for ruling points out quickly (a point on the
+    /// boundary may go either way).
+    pub fn roughly_contains(&self, x: f64, y: f64) -> bool {
+        self.tile_of(x, y)
+            .is_some_and(|(i, j)| self.tile(i, j).roughly_contains(x, y))
+    }
+
+    /// Whether the base fits nowhere at this heading.
+    pub fn is_empty(&self) -> bool {
+        *self.empty.get_or_init(|| {
+            let Some(free) = self.free else {
+                return true;
+            };
+            let centre = Point::from(free.center());
+            self.nearest(centre).is_none()
+        })
+    }
+
+    /// The admissible point nearest to `p` (itself if admissible), found
+    /// tile by tile outwards from `p`'s, none if the region is empty.
+    pub fn nearest(&self, p: Point<f64>) -> Option<Point<f64>> {
+        let free = self.free?;
+        let clamped = Point::new(
+            p.x().clamp(free.min().x, free.max().x),
+            p.y().clamp(free.min().y, free.max().y),
+        );
+        let (ci, cj) = self.tile_of(clamped.x(), clamped.y())?;
+        let mut best: Option<(f64, Point<f64>)> = None;
+        for ring in 0..self.nx.max(self.ny) {
+            // Every tile's piece in this ring is at least this far from `p`.
+            let bound = (ring.saturating_sub(1) as f64 * self.tile_mm - OVERLAP_MM).max(0.0);
+            if best.is_some_and(|(d, _)| d <= bound) {
+                break;
+            }
+            for (i, j) in ring_tiles(ci, cj, ring, self.nx, self.ny) {
+                let Some(q) = closest(self.tile(i, j).region(), p) else {
+                    continue;
+                };
+                let d = (q.x() - p.x()).hypot(q.y() - p.y());
+                if best.is_none_or(|(b, _)| d < b) {
+                    best = Some((d, q));
+                }
+            }
+        }
+        best.map(|(_, q)| q)
+    }
+
+    /// The whole region, every tile worked out (for pictures and tests).
+    pub fn whole(&self) -> MultiPolygon<f64> {
+        let mut pieces = Vec::new();
+        for j in 0..self.ny {
+            for i in 0..self.nx {
+                pieces.extend(self.tile(i, j).region().0.iter().cloned());
+            }
+        }
+        MultiPolygon::new(pieces)
+    }
+}
+
+/// The tiles `ring` steps (in the larger of x and y) from `(ci, cj)`, in
+/// rows, within `nx` by `ny`.
+fn ring_tiles(
+    ci: usize,
+    cj: usize,
+    ring: usize,
+    nx: usize,
+    ny: usize,
+) -> impl Iterator<Item = (usize, usize)> {
+    let (ci, cj, r) = (ci as i64, cj as i64, ring as i64);
+    (cj - r..=cj + r)
+        .flat_map(move |j| (ci - r..=ci + r).map(move |i| (i, j)))
+        .filter(move |&(i, j)| (i - ci).abs().max((j - cj).abs()) == r)
+        .filter(move |&(i, j)| i >= 0 && j >= 0 && i < nx as i64 && j < ny as i64)
+        .map(|(i, j)| (i as usize, j as usize))
+}
+
+/// The point of `region` nearest to `p`, none if it is empty.
+fn closest(region: &MultiPolygon<f64>, p: Point<f64>) -> Option<Point<f64>> {
+    use geo::Contains;
+    if region.0.is_empty() {
+        return None;
+    }
+    if region.contains(&p) {
+        return Some(p);
+    }
+    match region.closest_point(&p) {
+        Closest::Intersection(q) | Closest::SinglePoint(q) => Some(q),
+        Closest::Indeterminate => region
+            .0
+            .first()
+            .and_then(|poly| poly.exterior().0.first())
+            .map(|c| Point::new(c.x, c.y)),
+    }
+}
