@@ -11,10 +11,10 @@ pub use placed::PlacedObstacles;
 
 use nalgebra::{Isometry3, Point3, Vector3};
 use parry3d_f64::query::{self, Ray};
-use parry3d_f64::shape::{Segment, SharedShape, TriMeshFlags};
+use parry3d_f64::shape::{Capsule as ParryCapsule, SharedShape};
 
 use crate::geometry::{Capsule, Cuboid};
-use crate::scene::{Blocker, Room, Wall};
+use crate::scene::{Blocker, MeshShape, Room, Wall};
 
 /// A mesh obstacle as parry holds it, and its name for reports.
 #[derive(Clone)]
@@ -68,20 +68,8 @@ impl Obstacles {
             .iter()
             .enumerate()
             .filter_map(|(k, m)| {
-                let (vertices, triangles) = (m.vertices_mm.clone(), m.triangles.clone());
-                // Solid only where it encloses: parry's orientation alone
-                // would take one sheet for the edge of a solid half-space.
-                let oriented = m.encloses().then(|| {
-                    SharedShape::trimesh_with_flags(
-                        vertices.clone(),
-                        triangles.clone(),
-                        TriMeshFlags::ORIENTED,
-                    )
-                });
-                let (shape, closed) = match oriented {
-                    Some(Ok(shape)) => (shape, true),
-                    _ => (SharedShape::trimesh(vertices, triangles).ok()?, false),
-                };
+                let MeshShape { shape, solid } = m.shape()?.clone();
+                let closed = solid;
                 let aabb = shape.compute_local_aabb();
                 Some(Mesh {
                     index: first_mesh + k,
@@ -130,24 +118,11 @@ impl Obstacles {
         if let Some(m) = self
             .meshes
             .iter()
-            .find(|m| reach(&m.bounds) && touches(self.mesh_distance(m, capsule)))
+            .find(|m| reach(&m.bounds) && mesh_touches(m, capsule, r.max(1e-9)))
         {
             return Some(Blocker::Obstacle(m.index));
         }
         self.wall_hit(capsule, r)
-    }
-
-    /// The least distance from the capsule's segment to a mesh (zero inside
-    /// a closed one).
-    fn mesh_distance(&self, m: &Mesh, c: &Capsule) -> f64 {
-        let at = Isometry3::identity();
-        if m.closed && (m.shape.contains_point(&at, &c.a) || m.shape.contains_point(&at, &c.b)) {
-            return 0.0;
-        }
-        if (c.b - c.a).norm() < 1e-9 {
-            return m.shape.distance_to_point(&at, &c.a, false);
-        }
-        query::distance(&at, &Segment::new(c.a, c.b), &at, m.shape.as_ref()).unwrap_or(0.0)
     }
 
     /// The first of the room's sides the capsule's points come within `r`
@@ -208,6 +183,18 @@ impl Obstacles {
             .chain(outside)
             .min_by(|a, b| a.1.total_cmp(&b.1).then(rank(&a.0).cmp(&rank(&b.0))))
     }
+}
+
+/// Whether the capsule's segment comes within `r` of mesh `m` (or lies in
+/// it, when it is closed): parry's intersection test of the capsule of
+/// radius `r`, which stops at the first triangle it meets.
+fn mesh_touches(m: &Mesh, c: &Capsule, r: f64) -> bool {
+    let at = Isometry3::identity();
+    if m.closed && (m.shape.contains_point(&at, &c.a) || m.shape.contains_point(&at, &c.b)) {
+        return true;
+    }
+    let swept = ParryCapsule::new(c.a, c.b, r);
+    query::intersection_test(&at, &swept, &at, m.shape.as_ref()).unwrap_or(true)
 }
 
 /// Obstacles before walls, and by index, where two are met at once.

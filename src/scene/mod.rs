@@ -4,11 +4,13 @@
 //! internal units (mm, rad). The scenario (`crate::scenario`) adds the
 //! configured plugins and the tasks.
 
+mod mesh;
 mod person_parts;
 mod placement;
 mod surface;
 mod vision;
 
+pub use mesh::{MeshObstacle, MeshShape};
 pub use person_parts::{column_solid, OwnBody, Physique};
 pub use placement::{
     BasePose, Blocker, Collision, HasSolution, IkSolution, Placement, Preferred, Wall,
@@ -18,7 +20,6 @@ pub use vision::Vision;
 
 use nalgebra::{Point3, Rotation2, Vector2, Vector3};
 
-use crate::geometry::cleaned_triangles;
 use crate::kinematics::Body;
 use crate::options::PluginConfig;
 
@@ -46,36 +47,6 @@ impl Room {
             Some(b) => &b.name,
             None => &self.meshes[index - self.boxes.len()].name,
         }
-    }
-}
-
-/// A triangle mesh obstacle, its vertices in the room: only triangles with
-/// an area, closed pieces wound outwards ([`cleaned_triangles`]).
-#[derive(Clone, Debug, PartialEq)]
-pub struct MeshObstacle {
-    pub name: String,
-    pub vertices_mm: Vec<Point3<f64>>,
-    pub triangles: Vec<[u32; 3]>,
-    /// Whether every piece closes, found when the triangles were cleaned.
-    encloses: bool,
-}
-
-impl MeshObstacle {
-    /// The mesh of `triangles` (indices into `vertices_mm`), cleaned.
-    pub fn new(name: String, vertices_mm: Vec<Point3<f64>>, triangles: &[[u32; 3]]) -> Self {
-        let (triangles, encloses) = cleaned_triangles(&vertices_mm, triangles);
-        MeshObstacle {
-            name,
-            vertices_mm,
-            triangles,
-            encloses,
-        }
-    }
-
-    /// Whether the mesh encloses solids (every piece closed): then inside
-    /// counts as well as the surface.
-    pub fn encloses(&self) -> bool {
-        self.encloses
     }
 }
 

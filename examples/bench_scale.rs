@@ -1,0 +1,221 @@
+//! Rooms at real scale: how long a run takes and how much memory it
+//! holds as the room grows. Each row is generated (boxes in shelving
+//! units; a scanned kitchen as one open mesh of small triangles; a map of
+//! a counter's front), then checked and run in a child process of this
+//! program, which reports its time and its peak resident memory (Linux:
+//! `VmHWM`). Prints one table row per size and the growth exponent
+//! between the two largest sizes of each kind.
+//!
+//! `cargo run --release --example bench_scale` (all rows), or with a kind
+//! (`boxes`, `mesh`, `map`) to run only those.
+
+use std::fmt::Write as _;
+use std::path::Path;
+use std::process::Command;
+use std::time::Instant;
+
+use reach::plugin::Registry;
+use reach::Input;
+
+/// The sizes of each kind: boxes, triangles, map points.
+const ROWS: [(&str, [usize; 2]); 3] = [
+    ("boxes", [200, 2_000]),
+    ("mesh", [100_000, 1_000_000]),
+    ("map", [10_000, 100_000]),
+];
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    if args.len() == 4 && args[1] == "--child" {
+        child(&args[2], args[3].parse().expect("a size"));
+        return;
+    }
+    let only = args.get(1).cloned();
+    println!("| work | size | time (s) | peak memory (MB) |\n|---|---|---|---|");
+    for (kind, sizes) in ROWS {
+        if only.as_deref().is_some_and(|o| o != kind) {
+            continue;
+        }
+        let mut figures = Vec::new();
+        for size in sizes {
+            let out = Command::new(&args[0])
+                .args(["--child", kind, &size.to_string()])
+                .output()
+                .expect("the child runs");
+            let text = String::from_utf8_lossy(&out.stdout);
+            let mut it = text
+                .split_whitespace()
+                .map(|x| x.parse::<f64>().unwrap_or(f64::NAN));
+            let (seconds, mb) = (it.next().unwrap_or(f64::NAN), it.next().unwrap_or(f64::NAN));
+            println!("| {} | {size} | {seconds:.2} | {mb:.0} |", describe(kind));
+            figures.push((size as f64, seconds));
+        }
+        let [(n0, t0), (n1, t1)] = [figures[0], figures[1]];
+        println!(
+            "| {} | growth | time x{:.1} for size x{:.0} (exponent {:.2}) | |",
+            describe(kind),
+            t1 / t0,
+            n1 / n0,
+            (t1 / t0).ln() / (n1 / n0).ln()
+        );
+    }
+}
+
+fn describe(kind: &str) -> &'static str {
+    match kind {
+        "boxes" => "box obstacles, wheelchair, 20 targets",
+        "mesh" => "one scanned mesh (triangles), wheelchair, 20 targets",
+        _ => "map points, wheelchair, JSON report",
+    }
+}
+
+/// Writes the scenario, checks and runs it, prints seconds and peak MB.
+fn child(kind: &str, size: usize) {
+    let dir = tempfile::tempdir().expect("a temporary directory");
+    let text = match kind {
+        "boxes" => boxes(size),
+        "mesh" => {
+            std::fs::write(dir.path().join("scan.obj"), scan(size)).expect("written");
+            mesh_room()
+        }
+        _ => map(size),
+    };
+    let path = dir.path().join("scale.reach");
+    std::fs::write(&path, text).expect("written");
+    let start = Instant::now();
+    let json = run(&path);
+    let seconds = start.elapsed().as_secs_f64();
+    assert!(json.len() > 100);
+    println!("{seconds} {}", peak_mb());
+}
+
+fn run(path: &Path) -> String {
+    let registry = Registry::builtin();
+    let limits = reach::limits::Limits::default();
+    let (_, checked) = reach::check_within(Input::Path(path), &registry, &limits);
+    let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(false)));
+    let report = reach::run(&scenario);
+    let json = registry.format("json").expect("the json format");
+    json.render(&report)
+}
+
+/// Peak resident memory of this process, in MB (Linux), or NaN.
+fn peak_mb() -> f64 {
+    let status = std::fs::read_to_string("/proc/self/status").unwrap_or_default();
+    status
+        .lines()
+        .find_map(|l| l.strip_prefix("VmHWM:"))
+        .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<f64>().ok())
+        .map_or(f64::NAN, |kb| kb / 1024.0)
+}
+
+const PERSON: &str =
+    "person ann {\n  mannequin right_arm { limits trunk_flexion (-10deg, 40deg) }\n  \
+                      base wheelchair\n}\n";
+
+/// `n` boxes as shelving units of ten boards, 2 m apart, 20 targets on
+/// their shelves.
+fn boxes(n: usize) -> String {
+    let units = (n / 10).max(1);
+    let cols = (units as f64).sqrt().ceil() as usize;
+    let side = cols * 2000 + 1000;
+    let mut t = format!("units mm deg\nuse std::arm\nroom k {{\n  size {side} x {side} x 2500\n");
+    for u in 0..units {
+        let (x, y) = (500 + 2000 * (u % cols), 500 + 2000 * (u / cols));
+        writeln!(t, "  box s{u}a at ({x}, {y}, 0) size (20, 400, 1800)").unwrap();
+        writeln!(
+            t,
+            "  box s{u}b at ({}, {y}, 0) size (20, 400, 1800)",
+            x + 780
+        )
+        .unwrap();
+        for s in 0..8 {
+            let z = 100 + 220 * s;
+            writeln!(
+                t,
+                "  box s{u}_{s} at ({}, {y}, {z}) size (760, 400, 20)",
+                x + 20
+            )
+            .unwrap();
+        }
+    }
+    let mut names = Vec::new();
+    for k in 0..20 {
+        let u = (k * 7) % units;
+        let (x, y) = (500 + 2000 * (u % cols) + 400, 500 + 2000 * (u / cols) + 300);
+        let z = 100 + 220 * (2 + k % 3) + 60;
+        writeln!(t, "  target t{k} at ({x}, {y}, {z})").unwrap();
+        names.push(format!("t{k}"));
+    }
+    t + "}\n" + PERSON + &format!("reach {} by ann\n", names.join(", "))
+}
+
+/// A kitchen scanned as one mesh of about `n` triangles: an L-shaped
+/// counter's tops and fronts, the floor 4 mm up, two walls, a wall
+/// cabinet's underside and front; in metres, as scans are.
+fn scan(n: usize) -> String {
+    type Quad = ([f64; 3], [f64; 3], [f64; 3]);
+    let quads: [Quad; 9] = [
+        ([0.0, 0.0, 900.0], [3000.0, 0.0, 0.0], [0.0, 600.0, 0.0]),
+        ([0.0, 600.0, 900.0], [600.0, 0.0, 0.0], [0.0, 2000.0, 0.0]),
+        ([600.0, 600.0, 0.0], [2400.0, 0.0, 0.0], [0.0, 0.0, 900.0]),
+        ([600.0, 600.0, 0.0], [0.0, 2000.0, 0.0], [0.0, 0.0, 900.0]),
+        ([0.0, 0.0, 4.0], [4000.0, 0.0, 0.0], [0.0, 3200.0, 0.0]),
+        ([0.0, 0.0, 0.0], [0.0, 3200.0, 0.0], [0.0, 0.0, 2500.0]),
+        ([0.0, 0.0, 0.0], [4000.0, 0.0, 0.0], [0.0, 0.0, 2500.0]),
+        ([0.0, 0.0, 1450.0], [350.0, 0.0, 0.0], [0.0, 3200.0, 0.0]),
+        ([350.0, 0.0, 1450.0], [0.0, 3200.0, 0.0], [0.0, 0.0, 700.0]),
+    ];
+    let norm = |v: &[f64; 3]| v.iter().map(|c| c.abs()).sum::<f64>();
+    let total: f64 = quads.iter().map(|(_, u, v)| norm(u) * norm(v)).sum();
+    let (mut vertices, mut faces) = (String::new(), String::new());
+    let mut next = 1;
+    for (o, u, v) in quads {
+        let cells = ((n as f64 / 2.0) * norm(&u) * norm(&v) / total).max(1.0);
+        let rows = cells.sqrt().floor().max(1.0) as usize;
+        let cols = (cells / rows as f64).floor().max(1.0) as usize;
+        for i in 0..=rows {
+            for j in 0..=cols {
+                let (a, b) = (i as f64 / rows as f64, j as f64 / cols as f64);
+                let p: Vec<f64> = (0..3)
+                    .map(|k| (o[k] + u[k] * a + v[k] * b) / 1000.0)
+                    .collect();
+                writeln!(vertices, "v {:.5} {:.5} {:.5}", p[0], p[1], p[2]).unwrap();
+            }
+        }
+        for i in 0..rows {
+            for j in 0..cols {
+                let a = next + i * (cols + 1) + j;
+                let b = a + cols + 1;
+                writeln!(faces, "f {a} {b} {}\nf {a} {} {}", b + 1, b + 1, a + 1).unwrap();
+            }
+        }
+        next += (rows + 1) * (cols + 1);
+    }
+    vertices + &faces
+}
+
+fn mesh_room() -> String {
+    let mut t = String::from(
+        "units mm deg\nuse std::arm\nroom kitchen {\n  size 4000 x 3200 x 2500\n  \
+         mesh scan from \"scan.obj\" scale 1000\n",
+    );
+    let mut names = Vec::new();
+    for k in 0..20 {
+        writeln!(t, "  target t{k} at ({}, 450, 950)", 700 + 110 * k).unwrap();
+        names.push(format!("t{k}"));
+    }
+    t + "}\n" + PERSON + &format!("reach {} by ann\n", names.join(", "))
+}
+
+/// A map of about `n` points on the plane of a 5 m counter's front.
+fn map(n: usize) -> String {
+    let step = (5000.0 * 2000.0 / n as f64).sqrt();
+    format!(
+        "units mm deg\nuse std::arm\nroom kitchen {{\n  size 3500 x 6000 x 2600\n  \
+         box counter at (0, 0, 0) size (600, 5000, 900)\n  \
+         box wall_cabinet at (0, 0, 1450) size (350, 5000, 700)\n  \
+         surface front at (600, 0, 0) size (0, 5000, 2000)\n}}\n{PERSON}\
+         map front by ann {{\n  step {step:.3}mm\n  solver incremental {{ starts 1 }}\n}}\n"
+    )
+}
