@@ -16,7 +16,7 @@
 //! cells, conservative by at most two cells elsewhere.
 
 use geo::Coord;
-use nalgebra::Point3;
+use nalgebra::{Point3, Vector3};
 
 use super::Footprint;
 use crate::scene::MeshObstacle;
@@ -71,21 +71,21 @@ impl MeshCells {
                 if v.iter().all(|p| p.z <= FLOOR_TOLERANCE_MM) {
                     continue;
                 }
-                cells.mark_triangle(&v);
-                cells.cross_centres(&v, &mut crossings);
+                let normal = (v[1] - v[0]).cross(&(v[2] - v[0]));
+                let vertical = normal.z.abs() <= 1e-9 * normal.norm();
+                cells.mark_triangle(&v, &normal, vertical);
+                if !vertical {
+                    cells.cross_centres(&v, normal.z > 0.0, &mut crossings);
+                }
             }
         }
         cells.fill_solids(crossings);
         Some(cells)
     }
 
-    /// Where triangle `v` passes over cell centres: the height there, and
-    /// whether it faces up.
-    fn cross_centres(&self, v: &[Point3<f64>; 3], out: &mut Vec<Crossing>) {
-        let normal = (v[1] - v[0]).cross(&(v[2] - v[0]));
-        if normal.z.abs() <= 1e-9 * normal.norm() {
-            return;
-        }
+    /// Where triangle `v`, not vertical, passes over cell centres: the
+    /// height there, and whether it faces up (`up`).
+    fn cross_centres(&self, v: &[Point3<f64>; 3], up: bool, out: &mut Vec<Crossing>) {
         let c = self.cell_mm;
         let (x_lo, x_hi) = min_max(v.iter().map(|p| p.x));
         let (y_lo, y_hi) = min_max(v.iter().map(|p| p.y));
@@ -106,7 +106,7 @@ impl MeshCells {
                     out.push(Crossing {
                         cell: (j * self.nx + i) as u32,
                         z_mm,
-                        up: normal.z > 0.0,
+                        up,
                     });
                 }
             }
@@ -168,20 +168,16 @@ impl MeshCells {
         mask
     }
 
-    /// Marks the cells under each piece of triangle `v` in a slab.
-    fn mark_triangle(&mut self, v: &[Point3<f64>; 3]) {
-        let lo = v.iter().map(|p| p.z).fold(f64::INFINITY, f64::min);
-        let hi = v.iter().map(|p| p.z).fold(f64::NEG_INFINITY, f64::max);
-        if hi <= FLOOR_TOLERANCE_MM {
-            return;
-        }
+    /// Marks the cells under each piece of triangle `v` (of `normal`,
+    /// `vertical` or not) in a slab.
+    fn mark_triangle(&mut self, v: &[Point3<f64>; 3], normal: &Vector3<f64>, vertical: bool) {
+        let (lo, hi) = min_max(v.iter().map(|p| p.z));
         // A vertical face, seen from above a segment, is moved 0.01 mm
         // behind itself (against its normal, towards the solid it bounds):
         // one on a cell's edge then marks the cell behind it, which the
         // solid's top already marks, not the free cell in front.
-        let normal = (v[1] - v[0]).cross(&(v[2] - v[0]));
         let across = normal.xy().norm();
-        let behind = (normal.z.abs() <= 1e-9 * normal.norm() && across > 0.0).then(|| {
+        let behind = (vertical && across > 0.0).then(|| {
             let step = -normal.xy() / across * (self.cell_mm * 2.0 * SNAP_CELLS);
             Coord {
                 x: step.x,

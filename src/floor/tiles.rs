@@ -152,7 +152,8 @@ impl Region {
         best.map(|(_, q)| q)
     }
 
-    /// The whole region, every tile worked out (for pictures and tests).
+    /// The whole region, every tile worked out and the pieces (which
+    /// overlap by `OVERLAP_MM`) united (for pictures and tests).
     pub fn whole(&self) -> MultiPolygon<f64> {
         let mut pieces = Vec::new();
         for j in 0..self.ny {
@@ -160,7 +161,7 @@ impl Region {
                 pieces.extend(self.tile(i, j).region().0.iter().cloned());
             }
         }
-        MultiPolygon::new(pieces)
+        geo::unary_union(&pieces)
     }
 }
 
@@ -197,5 +198,73 @@ fn closest(region: &MultiPolygon<f64>, p: Point<f64>) -> Option<Point<f64>> {
             .first()
             .and_then(|poly| poly.exterior().0.first())
             .map(|c| Point::new(c.x, c.y)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::floor::admissible;
+    use crate::scene::BoxObstacle;
+    use geo::{Area, BooleanOps};
+    use nalgebra::{Point3, Vector3};
+
+    /// A 5 x 4 m room with an island across a tile edge and a counter.
+    fn room() -> Room {
+        let block = |name: &str, corner: [f64; 3], size: [f64; 3]| BoxObstacle {
+            name: name.into(),
+            corner_mm: Point3::from(corner),
+            size_mm: Vector3::from(size),
+            yaw_rad: 0.3,
+        };
+        Room {
+            name: "r".into(),
+            size_mm: Vector3::new(5000.0, 4000.0, 2500.0),
+            boxes: vec![
+                block("island", [1800.0, 1500.0, 0.0], [1400.0, 700.0, 900.0]),
+                block("counter", [0.0, 0.0, 0.0], [600.0, 4000.0, 900.0]),
+            ],
+            meshes: Vec::new(),
+            targets: Vec::new(),
+            surfaces: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn the_tiles_together_are_the_whole_region() {
+        let room = room();
+        let chair = Footprint::rectangle(600.0, 500.0, 660.0, 1400.0);
+        let heading = 0.7;
+        let whole = admissible(&room, &chair, heading, None);
+        let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
+        let tiled = Region::new(&room, &chair, heading, None, obstacles);
+        let differ = whole.xor(&tiled.whole()).unsigned_area();
+        assert!(differ < 1.0, "{differ} mm2");
+    }
+
+    #[test]
+    fn the_nearest_point_is_the_whole_region_s() {
+        use geo::Contains;
+        let room = room();
+        let chair = Footprint::rectangle(600.0, 500.0, 660.0, 1400.0);
+        let whole = admissible(&room, &chair, 0.0, None);
+        let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
+        let tiled = Region::new(&room, &chair, 0.0, None, obstacles);
+        for (x, y) in [
+            (2500.0, 1850.0),
+            (300.0, 2000.0),
+            (4990.0, 10.0),
+            (9000.0, -50.0),
+        ] {
+            let p = Point::new(x, y);
+            let q = tiled.nearest(p).expect("the chair fits");
+            let expected = closest(&whole, p).expect("the chair fits");
+            let (d, e) = (
+                (q.x() - x).hypot(q.y() - y),
+                (expected.x() - x).hypot(expected.y() - y),
+            );
+            assert!((d - e).abs() < 1e-6, "({x}, {y}): {d} against {e}");
+            assert_eq!(whole.contains(&p), tiled.contains(x, y), "({x}, {y})");
+        }
     }
 }

@@ -71,19 +71,19 @@ impl MeshObstacle {
     }
 
     fn build_shape(&self) -> Option<MeshShape> {
-        let (vertices, triangles) = (self.vertices_mm.clone(), self.triangles.clone());
+        // One copy of the triangles at a time: parry takes them by value.
+        let copy = || (self.vertices_mm.clone(), self.triangles.clone());
         // Solid only where it encloses: parry's orientation alone would
         // take one sheet for the edge of a solid half-space.
         if self.encloses {
-            let oriented = SharedShape::trimesh_with_flags(
-                vertices.clone(),
-                triangles.clone(),
-                TriMeshFlags::ORIENTED,
-            );
+            let (vertices, triangles) = copy();
+            let oriented =
+                SharedShape::trimesh_with_flags(vertices, triangles, TriMeshFlags::ORIENTED);
             if let Ok(shape) = oriented {
                 return Some(MeshShape { shape, solid: true });
             }
         }
+        let (vertices, triangles) = copy();
         let shape = SharedShape::trimesh(vertices, triangles).ok()?;
         Some(MeshShape {
             shape,
