@@ -8,7 +8,7 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use geo::{Area, BooleanOps};
+use geo::{Area, BooleanOps, MultiPolygon};
 use proptest::prelude::*;
 use reach::floor::{admissible, Footprint, CELL_MM};
 use reach::plugin::Registry;
@@ -276,6 +276,26 @@ fn a_box(grain_mm: f64) -> impl Strategy<Value = [f64; 6]> {
         .prop_map(|(x, y, z, w, d, h)| [x, y, z, w, d, h])
 }
 
+/// The floor region of a chair (or, if not `chair`, a low robot that fits
+/// in the hollow of a box) among `boxes`, as boxes and as one mesh.
+fn regions(
+    boxes: &[[f64; 6]],
+    closed: bool,
+    chair: bool,
+    heading: f64,
+) -> (MultiPolygon<f64>, MultiPolygon<f64>) {
+    let footprint = if chair {
+        wheelchair()
+    } else {
+        Footprint::circle(250.0, 300.0)
+    };
+    let mesh = Some(as_mesh(boxes, closed));
+    (
+        admissible(&room(boxes, None), &footprint, heading, None),
+        admissible(&room(boxes, mesh), &footprint, heading, None),
+    )
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(32))]
 
@@ -286,10 +306,7 @@ proptest! {
         chair in any::<bool>(),
         heading in 0.0..std::f64::consts::TAU,
     ) {
-        // A chair, or a low robot that fits in the hollow of a box.
-        let footprint = if chair { wheelchair() } else { Footprint::circle(250.0, 300.0) };
-        let expected = admissible(&room(&boxes, None), &footprint, heading, None);
-        let got = admissible(&room(&boxes, Some(as_mesh(&boxes, closed))), &footprint, heading, None);
+        let (expected, got) = regions(&boxes, closed, chair, heading);
         let differ = expected.xor(&got).unsigned_area();
         prop_assert!(differ < 1.0, "{differ} mm2 differ");
     }
@@ -301,10 +318,7 @@ proptest! {
         chair in any::<bool>(),
         heading in 0.0..std::f64::consts::TAU,
     ) {
-        // A chair, or a low robot that fits in the hollow of a box.
-        let footprint = if chair { wheelchair() } else { Footprint::circle(250.0, 300.0) };
-        let expected = admissible(&room(&boxes, None), &footprint, heading, None);
-        let got = admissible(&room(&boxes, Some(as_mesh(&boxes, closed))), &footprint, heading, None);
+        let (expected, got) = regions(&boxes, closed, chair, heading);
         let extra = got.difference(&expected).unsigned_area();
         prop_assert!(extra < 1.0, "the mesh frees {extra} mm2 the boxes block");
         // And at most two cells' width more along every edge the boxes'

@@ -4,8 +4,9 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use reach::plugin::Registry;
-use reach::{Input, Limits};
+
+#[path = "data_file.rs"]
+mod data_file;
 
 const SCENARIO: &str = "units mm deg
 use std::arm
@@ -19,20 +20,5 @@ reach mug by p { solver incremental { starts 2 } blocked_retries 1 }
 ";
 
 fuzz_target!(|data: &[u8]| {
-    // Text input reads files from the working directory and below.
-    std::fs::create_dir_all("fuzz-scratch").unwrap();
-    std::fs::write("fuzz-scratch/m.obj", data).unwrap();
-    let registry = Registry::builtin();
-    let limits = Limits { solver_starts: 2_000, ..Limits::default() };
-    let input = Input::Text { name: "obj.reach", text: SCENARIO };
-    let (_, checked) = reach::check_within(input, &registry, &limits);
-    match checked {
-        Err(diagnostics) => {
-            let _ = diagnostics.render(true);
-        }
-        Ok(scenario) => {
-            let report = reach::run(&scenario);
-            assert_eq!(report.tasks.len(), 1);
-        }
-    }
+    data_file::check_with("m.obj", data, "obj.reach", SCENARIO);
 });

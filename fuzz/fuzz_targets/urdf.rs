@@ -4,8 +4,9 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use reach::plugin::Registry;
-use reach::{Input, Limits};
+
+#[path = "data_file.rs"]
+mod data_file;
 
 const SCENARIO: &str = "units mm deg
 mannequin arm from urdf \"fuzz-scratch/m.urdf\" root \"a\" tip \"b\"
@@ -15,19 +16,5 @@ reach cup by p { solver incremental { starts 2 } blocked_retries 1 }
 ";
 
 fuzz_target!(|data: &[u8]| {
-    std::fs::create_dir_all("fuzz-scratch").unwrap();
-    std::fs::write("fuzz-scratch/m.urdf", data).unwrap();
-    let registry = Registry::builtin();
-    let limits = Limits { solver_starts: 2_000, ..Limits::default() };
-    let input = Input::Text { name: "urdf.reach", text: SCENARIO };
-    let (_, checked) = reach::check_within(input, &registry, &limits);
-    match checked {
-        Err(diagnostics) => {
-            let _ = diagnostics.render(true);
-        }
-        Ok(scenario) => {
-            let report = reach::run(&scenario);
-            assert_eq!(report.tasks.len(), 1);
-        }
-    }
+    data_file::check_with("m.urdf", data, "urdf.reach", SCENARIO);
 });

@@ -355,6 +355,26 @@ mod tests {
     use super::*;
     use crate::kinematics::{Dh, Joint};
 
+    /// Moves joint `i` by `step` in direction `dir`, checking the distance
+    /// predicted before the move and the effector after it against the
+    /// full forward kinematics.
+    fn move_and_check(
+        fk: &mut IncrementalFk,
+        chain: &Chain,
+        q: &mut [f64],
+        i: usize,
+        step: &Step,
+        dir: f64,
+        target: &Point3<f64>,
+    ) {
+        let w = fk.lever(i);
+        let (d_sq, cos_sin) = fk.distance_sq_moved(i, step, dir, &w);
+        q[i] += dir * step.delta;
+        assert!((d_sq - (chain.effector(q) - target).norm_squared()).abs() < 1e-9);
+        fk.set_moved(i, q[i], cos_sin);
+        assert!((fk.effector() - chain.effector(q)).norm() < 1e-9);
+    }
+
     fn chain() -> Chain {
         let joint = |name: &str, kind, theta, d, alpha, a| Joint {
             name: name.into(),
@@ -415,12 +435,7 @@ mod tests {
         for (k, i) in [0, 2, 1, 3, 2, 0, 3, 1].into_iter().enumerate() {
             step = step.scaled(if k % 3 == 0 { 2.0 } else { 0.5 });
             let dir = if k % 2 == 0 { 1.0 } else { -1.0 };
-            let w = fk.lever(i);
-            let (d_sq, cos_sin) = fk.distance_sq_moved(i, &step, dir, &w);
-            q[i] += dir * step.delta;
-            assert!((d_sq - (chain.effector(&q) - target).norm_squared()).abs() < 1e-9);
-            fk.set_moved(i, q[i], cos_sin);
-            assert!((fk.effector() - chain.effector(&q)).norm() < 1e-9);
+            move_and_check(&mut fk, &chain, &mut q, i, &step, dir, &target);
         }
     }
 
@@ -455,12 +470,7 @@ mod tests {
             fk.set(i, qi);
             q[i] = qi;
             let dir = if k % 2 == 0 { 1.0 } else { -1.0 };
-            let w = fk.lever(i);
-            let (d_sq, cos_sin) = fk.distance_sq_moved(i, &step, dir, &w);
-            q[i] += dir * step.delta;
-            assert!((d_sq - (chain.effector(&q) - target).norm_squared()).abs() < 1e-9);
-            fk.set_moved(i, q[i], cos_sin);
-            assert!((fk.effector() - chain.effector(&q)).norm() < 1e-9);
+            move_and_check(&mut fk, &chain, &mut q, i, &step, dir, &target);
             step = step.scaled(0.5);
         }
     }

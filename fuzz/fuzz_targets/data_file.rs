@@ -1,0 +1,27 @@
+//! What the `obj` and `urdf` targets share: the fuzzed bytes written as the
+//! data file a fixed scenario reads, then checked and run within a small
+//! bound on solver starts. No input may panic or hang; a file that loads
+//! must give the scenario's one report.
+
+use reach::plugin::Registry;
+use reach::{Input, Limits};
+
+/// Writes `data` to `fuzz-scratch/{file}` (text input reads files from the
+/// working directory and below), then checks and runs `scenario`.
+pub fn check_with(file: &str, data: &[u8], name: &str, scenario: &str) {
+    std::fs::create_dir_all("fuzz-scratch").unwrap();
+    std::fs::write(format!("fuzz-scratch/{file}"), data).unwrap();
+    let registry = Registry::builtin();
+    let limits = Limits { solver_starts: 2_000, ..Limits::default() };
+    let input = Input::Text { name, text: scenario };
+    let (_, checked) = reach::check_within(input, &registry, &limits);
+    match checked {
+        Err(diagnostics) => {
+            let _ = diagnostics.render(true);
+        }
+        Ok(scenario) => {
+            let report = reach::run(&scenario);
+            assert_eq!(report.tasks.len(), 1);
+        }
+    }
+}
