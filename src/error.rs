@@ -47,6 +47,12 @@ pub enum ErrorKind {
     },
     #[error("cannot load the mesh `{path}`: {reason}")]
     BadMesh { path: String, reason: String },
+    #[error("a mesh's {what} must be {expected}, not `{found}`")]
+    BadMeshSetting {
+        what: &'static str,
+        expected: &'static str,
+        found: String,
+    },
     #[error("cannot write `{path}`: {reason}")]
     WriteFile { path: String, reason: String },
 
@@ -177,6 +183,7 @@ impl ErrorKind {
             | NotUtf8 { .. }
             | WriteFile { .. }
             | BadMesh { .. }
+            | BadMeshSetting { .. }
             | BadUrdf { .. } => "reach::file",
             ImportCycle { .. } | UnknownStdModule { .. } => "reach::use",
             UnknownName { .. } | AmbiguousSurface { .. } | Duplicate { .. } | LetCycle { .. } => {
@@ -210,6 +217,7 @@ impl ErrorKind {
             UnitsRepeated { .. } => "second unit of this kind".into(),
             ReadFile { .. } => "used here".into(),
             BadMesh { .. } => "loaded here".into(),
+            BadMeshSetting { expected, .. } => format!("not {expected}"),
             BadUrdf { .. } => "here".into(),
             NotUtf8 { .. } => "the first byte that is not UTF-8".into(),
             ImportCycle { .. } => "this `use` closes the cycle".into(),

@@ -30,6 +30,7 @@ pub mod geometry;
 pub mod kinematics;
 pub mod limits;
 mod loader;
+pub mod meshfile;
 mod names;
 pub mod options;
 pub mod output;

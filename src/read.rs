@@ -21,22 +21,48 @@ use std::path::{Path, PathBuf};
 pub enum FileKind {
     Scenario,
     Mesh,
+    /// A file a mesh refers to: a glTF's external buffer.
+    MeshBuffer,
     Urdf,
 }
 
 impl FileKind {
-    pub fn extension(self) -> &'static str {
+    /// The extensions a file of this kind may have (any case).
+    pub fn extensions(self) -> &'static [&'static str] {
         match self {
-            FileKind::Scenario => "reach",
-            FileKind::Mesh => "obj",
-            FileKind::Urdf => "urdf",
+            FileKind::Scenario => &["reach"],
+            FileKind::Mesh => &["obj", "stl", "glb", "gltf"],
+            FileKind::MeshBuffer => &["bin"],
+            FileKind::Urdf => &["urdf"],
         }
+    }
+
+    /// The extensions as a user reads them: "`.obj`, `.stl` or `.glb`".
+    fn extensions_shown(self) -> String {
+        let dotted: Vec<String> = self
+            .extensions()
+            .iter()
+            .map(|e| format!("`.{e}`"))
+            .collect();
+        match dotted.split_last() {
+            Some((last, [])) => last.clone(),
+            Some((last, rest)) => format!("{} or {last}", rest.join(", ")),
+            None => String::new(),
+        }
+    }
+
+    /// Whether `path` has one of this kind's extensions.
+    pub fn admits(self, path: &Path) -> bool {
+        path.extension()
+            .and_then(|e| e.to_str())
+            .is_some_and(|e| self.extensions().iter().any(|k| k.eq_ignore_ascii_case(e)))
     }
 
     fn what(self) -> &'static str {
         match self {
             FileKind::Scenario => "a scenario file",
             FileKind::Mesh => "a mesh",
+            FileKind::MeshBuffer => "a mesh's buffer",
             FileKind::Urdf => "a URDF",
         }
     }
@@ -92,9 +118,9 @@ impl fmt::Display for ReadError {
         match self {
             ReadError::WrongExtension { kind } => write!(
                 f,
-                "{} must be a `.{}` file (no other file is read)",
+                "{} must be a {} file (no other file is read)",
                 kind.what(),
-                kind.extension()
+                kind.extensions_shown()
             ),
             ReadError::Outside { allowed } => write!(
                 f,
@@ -118,7 +144,7 @@ pub fn read(
     allowed: &Allowed,
     limit_bytes: u64,
 ) -> Result<Vec<u8>, ReadError> {
-    if path.extension().and_then(|e| e.to_str()) != Some(kind.extension()) {
+    if !kind.admits(path) {
         return Err(ReadError::WrongExtension { kind });
     }
     let canonical = path.canonicalize().map_err(io)?;

@@ -66,19 +66,7 @@ fn obj(quads: &[[[f64; 3]; 4]], unit: f64) -> String {
 
 /// The L as one closed solid: its top, bottom and six sides.
 fn closed_l() -> String {
-    let h = COUNTER_H;
-    let at = |k: usize, z: f64| [L[k].0, L[k].1, z];
-    let mut quads = vec![
-        [at(0, h), at(1, h), at(2, h), at(3, h)],
-        [at(0, h), at(3, h), at(4, h), at(5, h)],
-        [at(0, 0.0), at(3, 0.0), at(2, 0.0), at(1, 0.0)],
-        [at(0, 0.0), at(5, 0.0), at(4, 0.0), at(3, 0.0)],
-    ];
-    for k in 0..L.len() {
-        let n = (k + 1) % L.len();
-        quads.push([at(k, 0.0), at(n, 0.0), at(n, h), at(k, h)]);
-    }
-    obj(&quads, 1.0)
+    obj(&closed_l_quads(), 1.0)
 }
 
 /// The L as a phone would scan it, in metres: the tops, the fronts and
@@ -139,10 +127,209 @@ fn scanned_l() -> String {
     obj(&quads, 1000.0)
 }
 
+/// Quads (four corners each, in mm, z up) as triangles: vertices and
+/// indices.
+fn triangulated(quads: &[[[f64; 3]; 4]]) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
+    let vertices = quads.iter().flatten().copied().collect();
+    let triangles = (0..quads.len() as u32)
+        .flat_map(|k| [[4 * k, 4 * k + 1, 4 * k + 2], [4 * k, 4 * k + 2, 4 * k + 3]])
+        .collect();
+    (vertices, triangles)
+}
+
+/// The closed L's quads (as `closed_l` writes them).
+fn closed_l_quads() -> Vec<[[f64; 3]; 4]> {
+    let h = COUNTER_H;
+    let at = |k: usize, z: f64| [L[k].0, L[k].1, z];
+    let mut quads = vec![
+        [at(0, h), at(1, h), at(2, h), at(3, h)],
+        [at(0, h), at(3, h), at(4, h), at(5, h)],
+        [at(0, 0.0), at(3, 0.0), at(2, 0.0), at(1, 0.0)],
+        [at(0, 0.0), at(5, 0.0), at(4, 0.0), at(3, 0.0)],
+    ];
+    for k in 0..L.len() {
+        let n = (k + 1) % L.len();
+        quads.push([at(k, 0.0), at(n, 0.0), at(n, h), at(k, h)]);
+    }
+    quads
+}
+
+/// A binary STL of the quads, in millimetres, z up; `count` overrides the
+/// triangle count its header states.
+fn binary_stl(quads: &[[[f64; 3]; 4]], count: Option<u32>) -> Vec<u8> {
+    let (v, t) = triangulated(quads);
+    let mut bytes = vec![b' '; 80];
+    bytes.extend(count.unwrap_or(t.len() as u32).to_le_bytes());
+    for tri in &t {
+        bytes.extend([0f32; 3].iter().flat_map(|x| x.to_le_bytes()));
+        for &k in tri {
+            bytes.extend(v[k as usize].iter().flat_map(|&x| (x as f32).to_le_bytes()));
+        }
+        bytes.extend([0u8; 2]);
+    }
+    bytes
+}
+
+/// An ASCII STL of the quads, in centimetres, y up (x, z, -y).
+fn ascii_stl_cm_y_up(quads: &[[[f64; 3]; 4]]) -> String {
+    let (v, t) = triangulated(quads);
+    let mut text = String::from("solid l\n");
+    for tri in &t {
+        text.push_str("facet normal 0 0 0\nouter loop\n");
+        for &k in tri {
+            let [x, y, z] = v[k as usize];
+            writeln!(text, "vertex {} {} {}", x / 10.0, z / 10.0, -y / 10.0).unwrap();
+        }
+        text.push_str("endloop\nendfacet\n");
+    }
+    text.push_str("endsolid l\n");
+    text
+}
+
+/// A GLB of the quads as glTF has them (metres, y up), its vertices 1 m
+/// off in x and put back by its node's translation; `declared` overrides
+/// the buffer's stated length.
+fn glb(quads: &[[[f64; 3]; 4]], declared: Option<usize>) -> Vec<u8> {
+    let (v, t) = triangulated(quads);
+    let mut bin = Vec::new();
+    for [x, y, z] in &v {
+        for c in [x / 1000.0 - 1.0, z / 1000.0, -y / 1000.0] {
+            bin.extend((c as f32).to_le_bytes());
+        }
+    }
+    let positions_len = bin.len();
+    bin.extend(t.iter().flatten().flat_map(|k| k.to_le_bytes()));
+    let (lo, hi) = (-10.0, 10.0);
+    let json = format!(
+        r#"{{"asset":{{"version":"2.0"}},"scene":0,"scenes":[{{"nodes":[0]}}],
+"nodes":[{{"mesh":0,"translation":[1,0,0]}}],
+"meshes":[{{"primitives":[{{"attributes":{{"POSITION":0}},"indices":1}}]}}],
+"accessors":[{{"bufferView":0,"componentType":5126,"count":{nv},"type":"VEC3","min":[{lo},{lo},{lo}],"max":[{hi},{hi},{hi}]}},
+{{"bufferView":1,"componentType":5125,"count":{ni},"type":"SCALAR"}}],
+"bufferViews":[{{"buffer":0,"byteOffset":0,"byteLength":{positions_len}}},{{"buffer":0,"byteOffset":{positions_len},"byteLength":{il}}}],
+"buffers":[{{"byteLength":{bl}}}]}}"#,
+        nv = v.len(),
+        ni = 3 * t.len(),
+        il = bin.len() - positions_len,
+        bl = declared.unwrap_or(bin.len()),
+    );
+    let mut json = json.into_bytes();
+    while json.len() % 4 != 0 {
+        json.push(b' ');
+    }
+    while bin.len() % 4 != 0 {
+        bin.push(0);
+    }
+    let total = 12 + 8 + json.len() + 8 + bin.len();
+    let mut out = Vec::new();
+    out.extend(b"glTF");
+    out.extend(2u32.to_le_bytes());
+    out.extend((total as u32).to_le_bytes());
+    out.extend((json.len() as u32).to_le_bytes());
+    out.extend(b"JSON");
+    out.extend(&json);
+    out.extend((bin.len() as u32).to_le_bytes());
+    out.extend(b"BIN\0");
+    out.extend(&bin);
+    out
+}
+
 fn run_file(path: &Path) -> Report {
     let (_, checked) = reach::check(Input::Path(path), &Registry::builtin());
     let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(false)));
     reach::run(&scenario)
+}
+
+/// The kitchen with its counters as the mesh file `file` (`props` after
+/// its name), written in `dir`.
+fn mesh_kitchen(dir: &Path, file: &str, bytes: &[u8], props: &str) -> std::path::PathBuf {
+    std::fs::write(dir.join(file), bytes).unwrap();
+    let path = dir.join(format!("{file}.reach"));
+    let line = format!("  mesh counters from \"{file}\"{props}");
+    std::fs::write(&path, kitchen(&line)).unwrap();
+    path
+}
+
+/// Two reports give the same verdicts with bases within 5 mm.
+fn assert_same_answers(expected: &Report, got: &Report, what: &str) {
+    assert_eq!(expected.tasks.len(), got.tasks.len());
+    for (e, g) in expected.tasks.iter().zip(&got.tasks) {
+        let (TaskReport::Reach(e), TaskReport::Reach(g)) = (e, g) else {
+            panic!("reach tasks only");
+        };
+        let what = format!("{} in {what}", e.name);
+        assert_eq!(e.ok, g.ok, "{what}");
+        let apart = (e.base.x_mm - g.base.x_mm).hypot(e.base.y_mm - g.base.y_mm);
+        assert!(apart <= 5.0, "{what}: bases {apart} mm apart");
+        assert_eq!(e.base.heading_deg, g.base.heading_deg, "{what}");
+    }
+}
+
+#[test]
+fn an_stl_a_glb_and_an_obj_of_one_room_answer_alike() {
+    let dir = tempfile::tempdir().unwrap();
+    let quads = closed_l_quads();
+    let obj = mesh_kitchen(dir.path(), "l.obj", closed_l().as_bytes(), "");
+    let expected = run_file(&obj);
+    assert!(expected
+        .tasks
+        .iter()
+        .all(|t| matches!(t, TaskReport::Reach(r) if r.ok)));
+    let files = [
+        mesh_kitchen(dir.path(), "l.stl", &binary_stl(&quads, None), ""),
+        mesh_kitchen(
+            dir.path(),
+            "l_ascii.stl",
+            ascii_stl_cm_y_up(&quads).as_bytes(),
+            " unit cm up y",
+        ),
+        mesh_kitchen(dir.path(), "l.glb", &glb(&quads, None), ""),
+    ];
+    for path in files {
+        assert_same_answers(&expected, &run_file(&path), &path.display().to_string());
+    }
+}
+
+#[test]
+fn a_broken_glb_buffer_and_a_wrong_stl_count_are_diagnostics_at_the_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let quads = closed_l_quads();
+    let n = 2 * quads.len() as u32;
+    let cases = [
+        (
+            "short.glb",
+            glb(&quads, Some(1 << 20)),
+            "declares 1048576 bytes but holds",
+        ),
+        (
+            "more.stl",
+            binary_stl(&quads, Some(n + 1)),
+            &*format!("header says {} triangles", n + 1),
+        ),
+        ("fewer.stl", binary_stl(&quads, Some(n - 1)), "header says"),
+    ];
+    for (file, bytes, says) in cases {
+        let path = mesh_kitchen(dir.path(), file, &bytes, "");
+        let o = std::process::Command::new(env!("CARGO_BIN_EXE_reach"))
+            .arg("check")
+            .arg(&path)
+            .env("NO_COLOR", "1")
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&o.stderr);
+        // The message as one line, as miette wraps it to the terminal.
+        let err = err
+            .replace('│', " ")
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ");
+        assert_eq!(o.status.code(), Some(1), "{file}: {err}");
+        assert!(err.contains(says), "{file}: {err}");
+        assert!(
+            err.contains(&format!("\"{file}\"")),
+            "{file}: the label is on the name: {err}"
+        );
+    }
 }
 
 #[test]

@@ -1,9 +1,11 @@
-//! Mesh obstacles: a Wavefront OBJ file (read with `tobj`, triangulated),
-//! its coordinates in the file's length unit times `scale`, turned by
-//! `rotate` about the vertical and moved to `at`. Triangles without an
-//! area are dropped and closed pieces wound outwards
-//! (`MeshObstacle::new`). A file that cannot be read or parsed,
-//! or that has no triangle with an area, is a diagnostic at its name.
+//! Mesh obstacles: an OBJ, STL or glTF/GLB file (`crate::meshfile`), its
+//! coordinates in its length unit (`unit`; by default the scenario's
+//! length unit, or the metre for glTF) times `scale`, its up axis (`up`;
+//! z, or y for glTF) turned to z, then turned by `rotate` about the
+//! vertical and moved to `at`. Triangles without an area are dropped and
+//! closed pieces wound outwards (`MeshObstacle::new`). A file that cannot
+//! be read or parsed, or that has no triangle with an area, is a
+//! diagnostic at its name.
 
 use std::path::{Path, PathBuf};
 
@@ -11,16 +13,51 @@ use nalgebra::{Point3, Rotation3, Vector3};
 
 use super::Checker;
 use crate::error::{Error, ErrorKind};
+use crate::meshfile::{self, MeshFormat, RawMesh, UpAxis};
 use crate::read::{self, FileKind};
 use crate::scene::MeshObstacle;
 use crate::source::Origin;
+use crate::span::Spanned;
 use crate::syntax::ast::MeshDecl;
+use crate::units::Unit;
 
-/// An OBJ's vertices (in its own units) and triangles.
-type ObjMesh = (Vec<Point3<f64>>, Vec<[u32; 3]>);
+/// The fewest bytes a file can spend on one triangle (three 32-bit
+/// indices), which bounds how many triangles a file within the byte limit
+/// may place.
+const MIN_BYTES_PER_TRIANGLE: u64 = 12;
+
+/// How a file's coordinates become the room's millimetres.
+struct Frame {
+    at: Point3<f64>,
+    /// Millimetres per unit of the file, `scale` included.
+    mm_per_unit: f64,
+    up: UpAxis,
+    yaw_rad: f64,
+}
 
 impl Checker<'_> {
     pub(super) fn mesh(&mut self, d: &MeshDecl) -> Option<MeshObstacle> {
+        let format = MeshFormat::of(&self.relative_to_file(&d.path.value));
+        let frame = self.mesh_frame(d, format);
+        let raw = self.read_mesh(d)?;
+        let frame = frame?;
+        let turn = Rotation3::from_axis_angle(&Vector3::z_axis(), frame.yaw_rad);
+        let vertices_mm = raw
+            .vertices
+            .into_iter()
+            .map(|v| frame.at + turn * (frame.up.to_z_up(v).coords * frame.mm_per_unit))
+            .collect();
+        let mesh = MeshObstacle::new(d.name.value.clone(), vertices_mm, &raw.triangles);
+        if mesh.triangles.is_empty() {
+            let n = raw.triangles.len();
+            self.bad_mesh(d, format!("none of its {n} triangles has an area"));
+            return None;
+        }
+        Some(mesh)
+    }
+
+    /// `at`, `scale`, `rotate`, `unit` and `up`, each given at most once.
+    fn mesh_frame(&mut self, d: &MeshDecl, format: Option<MeshFormat>) -> Option<Frame> {
         let at = match d.at.first() {
             Some(v) => self.point(v).map(Point3::from),
             None => Some(Point3::origin()),
@@ -33,93 +70,116 @@ impl Checker<'_> {
             Some(e) => self.angle(e),
             None => Some(0.0),
         };
+        let unit_mm = self.mesh_unit_mm(d.unit.first(), format);
+        let up = self.mesh_up(d.up.first(), format);
         for (extra, what) in [
             (d.at.get(1).map(|v| v.span), "`at`"),
             (d.scale.get(1).map(|e| e.span), "`scale`"),
             (d.rotate.get(1).map(|e| e.span), "`rotate`"),
+            (d.unit.get(1).map(|w| w.span), "`unit`"),
+            (d.up.get(1).map(|w| w.span), "`up`"),
         ] {
             if let Some(span) = extra {
                 self.error(Error::new(ErrorKind::Repeated { what: what.into() }, span));
             }
         }
-        let (vertices, triangles) = self.read_obj(d)?;
-        let (at, scale, yaw) = (at?, scale?, yaw?);
+        let (at, scale, yaw_rad, unit_mm, up) = (at?, scale?, yaw?, unit_mm?, up?);
         if scale.is_nan() || scale <= 0.0 {
-            self.out_of_range(
-                d.scale[0].span,
-                "a mesh's scale",
-                "more than 0",
-                &scale.to_string(),
-            );
+            let shown = scale.to_string();
+            self.out_of_range(d.scale[0].span, "a mesh's scale", "more than 0", &shown);
             return None;
         }
-        let unit_mm = self.defaults.length.to_internal();
-        let turn = Rotation3::from_axis_angle(&Vector3::z_axis(), yaw);
-        let vertices_mm = vertices
-            .into_iter()
-            .map(|v| at + turn * (v.coords * scale * unit_mm))
-            .collect();
-        let mesh = MeshObstacle::new(d.name.value.clone(), vertices_mm, &triangles);
-        if mesh.triangles.is_empty() {
-            let n = triangles.len();
-            self.bad_mesh(d, format!("none of its {n} triangles has an area"));
-            return None;
-        }
-        Some(mesh)
+        Some(Frame {
+            at,
+            mm_per_unit: scale * unit_mm,
+            up,
+            yaw_rad,
+        })
     }
 
-    /// The OBJ's vertices (in its own units) and triangles.
-    fn read_obj(&mut self, d: &MeshDecl) -> Option<ObjMesh> {
+    /// Millimetres per unit of the file: `unit` as written, else glTF's
+    /// metre, else the scenario's length unit.
+    fn mesh_unit_mm(
+        &mut self,
+        unit: Option<&Spanned<String>>,
+        format: Option<MeshFormat>,
+    ) -> Option<f64> {
+        match unit {
+            Some(w) => match Unit::parse(&w.value).filter(|u| u.is_length()) {
+                Some(u) => Some(u.to_internal()),
+                None => {
+                    self.bad_mesh_setting(w, "unit", "a length unit: mm, cm, m or in");
+                    None
+                }
+            },
+            None if format.is_some_and(MeshFormat::in_metres) => Some(Unit::M.to_internal()),
+            None => Some(self.defaults.length.to_internal()),
+        }
+    }
+
+    /// The file's up axis: `up` as written, else its format's.
+    fn mesh_up(
+        &mut self,
+        up: Option<&Spanned<String>>,
+        format: Option<MeshFormat>,
+    ) -> Option<UpAxis> {
+        match up.map(|w| (w, w.value.as_str())) {
+            Some((_, "z")) => Some(UpAxis::Z),
+            Some((_, "y")) => Some(UpAxis::Y),
+            Some((w, _)) => {
+                self.bad_mesh_setting(w, "up axis", "`z` or `y`");
+                None
+            }
+            None => Some(format.map_or(UpAxis::Z, MeshFormat::default_up)),
+        }
+    }
+
+    fn bad_mesh_setting(
+        &mut self,
+        w: &Spanned<String>,
+        what: &'static str,
+        expected: &'static str,
+    ) {
+        let kind = ErrorKind::BadMeshSetting {
+            what,
+            expected,
+            found: w.value.clone(),
+        };
+        self.error(Error::new(kind, w.span));
+    }
+
+    /// The file's vertices (in its own units and axes) and triangles.
+    fn read_mesh(&mut self, d: &MeshDecl) -> Option<RawMesh> {
         let path = self.relative_to_file(&d.path.value);
         self.data_files.push(path.clone());
-        let bad = |c: &mut Self, reason: String| {
-            c.bad_mesh(d, reason);
-            None
-        };
         let limit = self.limits.file_bytes;
         let bytes = match read::read(&path, FileKind::Mesh, &self.sources.allowed, limit) {
             Ok(bytes) => bytes,
-            Err(e) => return bad(self, e.to_string()),
+            Err(e) => {
+                self.bad_mesh(d, e.to_string());
+                return None;
+            }
         };
-        let options = tobj::LoadOptions {
-            triangulate: true,
-            single_index: true,
-            ..Default::default()
+        // `read` admits only the extensions `MeshFormat::of` knows.
+        let format = MeshFormat::of(&path)?;
+        let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        let mut buffers = Vec::new();
+        let allowed = &self.sources.allowed;
+        let mut related = |uri: &str| {
+            let buffer = dir.join(uri);
+            buffers.push(buffer.clone());
+            read::read(&buffer, FileKind::MeshBuffer, allowed, limit).map_err(|e| e.to_string())
         };
-        let mut reader = std::io::Cursor::new(bytes);
-        let models = match tobj::load_obj_buf(&mut reader, &options, |_| {
-            Err(tobj::LoadError::OpenFileFailed)
-        }) {
-            Ok((models, _materials)) => models,
-            Err(e) => return bad(self, format!("not a valid OBJ file: {e}")),
-        };
-        let mut vertices = Vec::new();
-        let mut triangles = Vec::new();
-        for model in &models {
-            let base = vertices.len() as u32;
-            let p = &model.mesh.positions;
-            vertices.extend(
-                p.chunks_exact(3)
-                    .map(|c| Point3::new(f64::from(c[0]), f64::from(c[1]), f64::from(c[2]))),
-            );
-            triangles.extend(
-                model
-                    .mesh
-                    .indices
-                    .chunks_exact(3)
-                    .map(|t| [base + t[0], base + t[1], base + t[2]]),
-            );
+        let max_triangles = usize::try_from(limit / MIN_BYTES_PER_TRIANGLE).unwrap_or(usize::MAX);
+        let parsed = meshfile::parse(format, &bytes, max_triangles, &mut related);
+        self.data_files.extend(buffers);
+        match parsed {
+            Ok(mesh) => Some(mesh),
+            Err(e) => {
+                self.bad_mesh(d, e.to_string());
+                None
+            }
         }
-        if vertices
-            .iter()
-            .any(|v| !v.coords.iter().all(|x| x.is_finite()))
-        {
-            return bad(self, "a vertex is not a finite number".into());
-        }
-        if triangles.is_empty() {
-            return bad(self, "it has no faces".into());
-        }
-        Some((vertices, triangles))
     }
 
     /// A diagnostic at the mesh's file name.

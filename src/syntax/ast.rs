@@ -84,7 +84,9 @@ pub enum RoomItem {
     Surface(SurfaceDecl),
 }
 
-/// `mesh NAME from "file.obj" at (x, y, z) scale k rotate a`.
+/// `mesh NAME from "file.obj" at (x, y, z) scale k rotate a unit m up y`.
+/// Each property is kept as often as it is written, so the checker can say
+/// that one is repeated.
 #[derive(Clone, Debug, PartialEq)]
 pub struct MeshDecl {
     pub name: Name,
@@ -92,6 +94,10 @@ pub struct MeshDecl {
     pub at: Vec<Vec3Expr>,
     pub scale: Vec<Expr>,
     pub rotate: Vec<Expr>,
+    /// The file's length unit (`mm`, `cm`, `m`, `in`).
+    pub unit: Vec<Spanned<String>>,
+    /// The file's up axis (`z` or `y`).
+    pub up: Vec<Spanned<String>>,
 }
 
 /// `surface NAME at (x, y, z) size (a, b, c)`, one size zero.

@@ -37,6 +37,8 @@ fn describe(rule: Rule) -> Option<&'static str> {
         mesh_at => "`at (x, y, z)`",
         mesh_scale => "`scale`",
         mesh_rotate => "`rotate`",
+        mesh_unit => "`unit`",
+        mesh_up => "`up`",
         surface_decl => "`surface`",
         mannequin => "`mannequin`",
         joint_decl => "`joint`",

@@ -351,6 +351,8 @@ impl Builder {
                     at: Vec::new(),
                     scale: Vec::new(),
                     rotate: Vec::new(),
+                    unit: Vec::new(),
+                    up: Vec::new(),
                 };
                 for prop in it {
                     let rule = prop.as_rule();
@@ -358,6 +360,8 @@ impl Builder {
                     match rule {
                         Rule::mesh_at => mesh.at.push(self.vec3(inner)),
                         Rule::mesh_scale => mesh.scale.push(self.expr(inner)),
+                        Rule::mesh_unit => mesh.unit.push(self.name(inner)),
+                        Rule::mesh_up => mesh.up.push(self.name(inner)),
                         _ => mesh.rotate.push(self.expr(inner)),
                     }
                 }
