@@ -96,7 +96,7 @@ fn run(path: &Path) -> String {
     let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(false)));
     let report = reach::run(&scenario);
     let json = registry.format("json").expect("the json format");
-    json.render(&report)
+    json.render(&report, &scenario.format_scene())
 }
 
 /// Peak resident memory of this process, in MB (Linux), or NaN.

@@ -15,6 +15,7 @@ use reach::plugin::{
     Solver, SolverPlugin,
 };
 use reach::report::Report;
+use reach::scenario::Scenario;
 use reach::Input;
 
 /// The plugin: its name, its doc line and its parameters.
@@ -110,6 +111,12 @@ reach mug by ben { solver incremental tolerance 60mm }
 
 /// Check and run `SCENARIO` with the built-in plugins plus `sampling`.
 pub fn run_scenario() -> Report {
+    run_checked().1
+}
+
+/// The scenario checked with the built-in plugins plus `sampling`, and its
+/// report.
+fn run_checked() -> (Scenario, Report) {
     let mut registry = Registry::builtin();
     registry.register_solver(Sampling);
     let (_, checked) = reach::check(
@@ -120,17 +127,20 @@ pub fn run_scenario() -> Report {
         &registry,
     );
     match checked {
-        Ok(scenario) => reach::run(&scenario),
+        Ok(scenario) => {
+            let report = reach::run(&scenario);
+            (scenario, report)
+        }
         Err(d) => panic!("{}", d.render(true)),
     }
 }
 
 #[allow(dead_code)]
 fn main() {
-    let report = run_scenario();
+    let (scenario, report) = run_checked();
     let text = Registry::builtin()
         .format("text")
         .expect("built in")
-        .render(&report);
+        .render(&report, &scenario.format_scene());
     print!("{text}");
 }

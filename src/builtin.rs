@@ -21,6 +21,7 @@ impl Registry {
         r.register_task(crate::tasks::GazeMap);
         r.register_format(crate::output::Text);
         r.register_format(crate::output::Json);
+        r.register_format(crate::output::Html);
         r
     }
 }

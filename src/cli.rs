@@ -146,12 +146,18 @@ fn run(registry: &Registry, e: &Evaluate) -> i32 {
     let report = reach::run_with_progress(&scenario, &bar);
     bar.clear();
     if let Some(dir) = &e.out {
-        if let Err(error) = crate::signals::whole(|| reach::output::write_outputs(&report, dir)) {
+        if let Err(error) =
+            crate::signals::whole(|| reach::output::write_outputs(&report, &scenario, dir))
+        {
             return report_diagnostics(&Diagnostics::single(error));
         }
     }
     let mut stdout = std::io::stdout().lock();
-    let _ = stdout.write_all(formatter.render(&report).as_bytes());
+    let _ = stdout.write_all(
+        formatter
+            .render(&report, &scenario.format_scene())
+            .as_bytes(),
+    );
     0
 }
 

@@ -8,7 +8,7 @@ use std::fmt;
 use std::sync::Arc;
 
 use crate::options::Options;
-use crate::plugin::{Base, Subject, Task, TaskInput};
+use crate::plugin::{Base, FormatScene, Subject, Task, TaskInput, TaskPlace};
 use crate::progress::Progress;
 use crate::scene::{Person, Room, Surface};
 use crate::span::Span;
@@ -76,6 +76,23 @@ impl fmt::Debug for TaskSpec {
 }
 
 impl Scenario {
+    /// What a format may draw of this scenario besides its report.
+    pub fn format_scene(&self) -> FormatScene<'_> {
+        FormatScene {
+            rooms: &self.rooms,
+            persons: &self.persons,
+            bases: &self.bases,
+            tasks: self
+                .tasks
+                .iter()
+                .map(|t| TaskPlace {
+                    room: t.room,
+                    person: t.person,
+                })
+                .collect(),
+        }
+    }
+
     pub fn person(&self, name: &str) -> Option<&Person> {
         self.persons.iter().find(|p| p.name == name)
     }

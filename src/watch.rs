@@ -101,10 +101,11 @@ impl State {
         let summary = match checked {
             Ok(scenario) => {
                 let (report, stats) = self.cache.run(&scenario, &reach::progress::NoProgress);
-                screen.push_str(&formatter.render(&report));
+                screen.push_str(&formatter.render(&report, &scenario.format_scene()));
                 if let Some(dir) = out {
-                    let written =
-                        crate::signals::whole(|| reach::output::write_outputs(&report, dir));
+                    let written = crate::signals::whole(|| {
+                        reach::output::write_outputs(&report, &scenario, dir)
+                    });
                     if let Err(e) = written {
                         screen.push_str(&reach::Diagnostics::single(e).render(!self.terminal));
                     }

@@ -124,7 +124,9 @@ fn checked(text: &str) -> Option<reach::scenario::Scenario> {
 }
 
 fn json(report: &reach::report::Report) -> String {
-    Registry::builtin().format("json").unwrap().render(report)
+    let registry = Registry::builtin();
+    let json = registry.format("json").unwrap();
+    json.render(report, &reach::plugin::FormatScene::empty())
 }
 
 proptest! {

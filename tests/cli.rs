@@ -103,11 +103,24 @@ fn out_dir_gets_report_json_and_nothing_half_written() {
     let written = std::fs::read_to_string(out.join("report.json")).unwrap();
     let json = reach(&["run", "examples/kitchen.reach", "--format", "json"]);
     assert_eq!(written, stdout(&json));
-    let names: Vec<_> = std::fs::read_dir(&out)
+    let mut names: Vec<_> = std::fs::read_dir(&out)
         .unwrap()
         .map(|e| e.unwrap().file_name())
         .collect();
-    assert_eq!(names, ["report.json"], "no temporary file is left behind");
+    names.sort();
+    assert_eq!(
+        names,
+        ["report-stamp.js", "report.html", "report.json"],
+        "no temporary file is left behind"
+    );
+    let html = std::fs::read_to_string(out.join("report.html")).unwrap();
+    let page = reach(&["run", "examples/kitchen.reach", "--format", "html"]);
+    assert!(html.starts_with("<!DOCTYPE html>") && html.contains("\"live\":true"));
+    assert_eq!(
+        html.replace("\"live\":true", "\"live\":false"),
+        stdout(&page),
+        "the page written is the page printed, but for its reload"
+    );
 }
 
 #[test]
@@ -129,8 +142,8 @@ fn out_dir_gets_a_csv_and_an_svg_per_map() {
     let files = std::fs::read_dir(dir.path()).unwrap().count();
     assert_eq!(
         files,
-        1 + 2 * 18,
-        "report.json and two files for each of eighteen maps"
+        3 + 2 * 18,
+        "report.json, report.html, its stamp and two files for each of eighteen maps"
     );
 }
 

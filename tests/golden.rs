@@ -27,7 +27,10 @@ fn json_report(path: &Path) -> String {
         Err(d) => panic!("{} does not check:\n{}", path.display(), d.render(true)),
     };
     let report = reach::run(&scenario);
-    registry.format("json").unwrap().render(&report)
+    registry
+        .format("json")
+        .unwrap()
+        .render(&report, &scenario.format_scene())
 }
 
 fn diagnostics(path: &Path) -> String {

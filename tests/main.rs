@@ -4,6 +4,7 @@
 mod bases;
 mod body;
 mod body_check;
+mod browser;
 mod cache;
 mod checker;
 mod cli;

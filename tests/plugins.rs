@@ -80,11 +80,12 @@ fn every_plugin_builds_from_its_declared_defaults() {
     }
     for name in registry.names(PluginKind::Format) {
         let p = registry.format(name).unwrap();
-        p.render(&Report {
+        let empty = Report {
             schema: 1,
             file: "x".into(),
             tasks: Vec::new(),
-        });
+        };
+        p.render(&empty, &reach::plugin::FormatScene::empty());
     }
 }
 

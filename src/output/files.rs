@@ -1,5 +1,6 @@
-//! What `--out DIR` writes: `DIR/report.json` and, for each map, its CSV
-//! and SVG (`map_files.rs`), as one set. Every file is rendered first,
+//! What `--out DIR` writes: `DIR/report.json`, `DIR/report.html` (the 3D
+//! view, `html/`) with the stamp it polls, and, for each map, its CSV and
+//! SVG (`map_files.rs`), as one set. Every file is rendered first,
 //! then written as a temporary beside its place (with the user's umask),
 //! and only once all are written are they renamed into place; a failure
 //! before that (a name taken by a directory, a full disk) removes the
@@ -12,11 +13,13 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, SystemTime};
 
+use super::html;
 use super::map_files;
 use super::Json;
 use crate::error::{Error, ErrorKind};
 use crate::plugin::FormatPlugin;
 use crate::report::Report;
+use crate::scenario::Scenario;
 
 /// Temporaries start with this, then the process id and the file's name.
 const TEMPORARY: &str = ".reach-tmp-";
@@ -24,8 +27,22 @@ const TEMPORARY: &str = ".reach-tmp-";
 const STALE: Duration = Duration::from_secs(60);
 
 /// The set's files, by name, in the order they are written.
-pub fn output_set(report: &Report) -> Vec<(String, Vec<u8>)> {
-    let mut files = vec![("report.json".to_string(), Json.render(report).into_bytes())];
+pub fn output_set(report: &Report, scenario: &Scenario) -> Vec<(String, Vec<u8>)> {
+    let scene = scenario.format_scene();
+    let mut files = vec![
+        (
+            "report.json".to_string(),
+            Json.render(report, &scene).into_bytes(),
+        ),
+        (
+            "report.html".to_string(),
+            html::page(report, &scene, true).into_bytes(),
+        ),
+        (
+            html::STAMP_FILE.to_string(),
+            html::stamp_script(report, &scene).into_bytes(),
+        ),
+    ];
     let mut stems: Vec<String> = Vec::new();
     for m in report.tasks.iter().filter_map(|t| t.map()) {
         let base = map_files::file_stem(m);
@@ -43,9 +60,10 @@ pub fn output_set(report: &Report) -> Vec<(String, Vec<u8>)> {
     files
 }
 
-/// `DIR/report.json`, and a CSV and an SVG for each map, as one set.
-pub fn write_outputs(report: &Report, dir: &Path) -> Result<(), Error> {
-    write_set(dir, &output_set(report))
+/// `DIR/report.json`, `DIR/report.html`, and a CSV and an SVG for each
+/// map, as one set.
+pub fn write_outputs(report: &Report, scenario: &Scenario, dir: &Path) -> Result<(), Error> {
+    write_set(dir, &output_set(report, scenario))
 }
 
 fn write_error(path: &Path, e: &std::io::Error) -> Error {

@@ -1,6 +1,6 @@
 //! The `json` format: the report as pretty-printed JSON (docs/report.md).
 
-use crate::plugin::{FormatPlugin, ParamSpec, Plugin};
+use crate::plugin::{FormatPlugin, FormatScene, ParamSpec, Plugin};
 use crate::report::Report;
 
 pub struct Json;
@@ -20,7 +20,7 @@ impl Plugin for Json {
 }
 
 impl FormatPlugin for Json {
-    fn render(&self, report: &Report) -> String {
+    fn render(&self, report: &Report, _: &FormatScene<'_>) -> String {
         let value = serde_json::to_value(report).expect("reports serialize");
         super::json_layout::to_string(&value)
     }

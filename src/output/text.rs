@@ -5,7 +5,7 @@
 use std::fmt::Write;
 
 use crate::escape::{escaped, escaped_keeping};
-use crate::plugin::{FormatPlugin, ParamSpec, Plugin};
+use crate::plugin::{FormatPlugin, FormatScene, ParamSpec, Plugin};
 use crate::report::{Answer, Report};
 
 pub struct Text;
@@ -25,7 +25,7 @@ impl Plugin for Text {
 }
 
 impl FormatPlugin for Text {
-    fn render(&self, report: &Report) -> String {
+    fn render(&self, report: &Report, _: &FormatScene<'_>) -> String {
         let answers = report.answers();
         let mut out = String::new();
         let ok = answers.iter().filter(|a| a.ok).count();

@@ -12,7 +12,7 @@ mod solver;
 mod task;
 
 pub use base::{Base, BaseError, BasePlugin, Hips, PreparedBase, ReachQuery, Retry, Search, Tries};
-pub use format::FormatPlugin;
+pub use format::{FormatPlugin, FormatScene, TaskPlace};
 pub use registry::Registry;
 pub use solver::{work_ratio, IkProblem, Solver, SolverPlugin};
 pub use task::{Dependence, EffectorNeed, Subject, SubjectKind, Task, TaskInput, TaskPlugin};

@@ -1,0 +1,422 @@
+// The report's 3D view: the room in millimetres with z up, one group of
+// objects per task, a list of tasks to click through, and the text report's
+// facts of the chosen task beside the view.
+import * as THREE from "three";
+import { OrbitControls } from "three/orbit";
+
+const COLOURS = {
+  ok: 0x2e9e4f,
+  not: 0xd64545,
+  idle: 0x8a93a3,
+  sight: 0x2b6cd6,
+  strained: 0xff2d95,
+  box: 0xd8c8a8,
+  mesh: 0xc9c1b1,
+  blocked: 0xff5a36,
+  floor: 0xeceff3,
+  surface: 0x4a7bd0,
+};
+
+// How far short a map cell fell, as a colour: green where reached, then
+// yellow to red as the shortfall grows to 300 mm and beyond.
+const RAMP_MM = 300;
+function shortColour(shortMm) {
+  const c = new THREE.Color();
+  if (shortMm <= 0) return c.setHex(COLOURS.ok);
+  const t = Math.min(shortMm / RAMP_MM, 1);
+  return c.setHex(0xe8d44d).lerp(new THREE.Color(COLOURS.not), t);
+}
+
+function v3(a) {
+  return new THREE.Vector3(a[0], a[1], a[2]);
+}
+
+function lambert(colour, opacity = 1) {
+  return new THREE.MeshLambertMaterial({
+    color: colour,
+    transparent: opacity < 1,
+    opacity,
+    side: THREE.DoubleSide,
+  });
+}
+
+// A capsule from a to b of radius r.
+function capsule(a, b, r, material) {
+  const from = v3(a), to = v3(b);
+  const axis = to.clone().sub(from);
+  const length = axis.length();
+  const mesh = new THREE.Mesh(new THREE.CapsuleGeometry(Math.max(r, 1), length, 6, 12), material);
+  mesh.position.copy(from).add(to).multiplyScalar(0.5);
+  if (length > 1e-9) {
+    mesh.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), axis.normalize());
+  }
+  return mesh;
+}
+
+function sphere(at, r, colour) {
+  const mesh = new THREE.Mesh(new THREE.SphereGeometry(r, 20, 14), lambert(colour));
+  mesh.position.copy(v3(at));
+  return mesh;
+}
+
+// A marker seen through whatever stands in front of it.
+function marker(at, r, colour) {
+  const mesh = sphere(at, r, colour);
+  // Transparent (though opaque) so it is drawn after the see-through
+  // furniture, last of all.
+  mesh.material = new THREE.MeshBasicMaterial({
+    color: colour,
+    depthTest: false,
+    transparent: true,
+    opacity: 1,
+  });
+  mesh.renderOrder = 10;
+  return mesh;
+}
+
+function line(points, colour, dashed) {
+  const geometry = new THREE.BufferGeometry().setFromPoints(points.map(v3));
+  const material = dashed
+    ? new THREE.LineDashedMaterial({ color: colour, dashSize: 40, gapSize: 25 })
+    : new THREE.LineBasicMaterial({ color: colour });
+  const l = new THREE.Line(geometry, material);
+  if (dashed) l.computeLineDistances();
+  return l;
+}
+
+// The room: floor, walls as edges, boxes, meshes, surfaces and targets.
+function buildRoom(room) {
+  const group = new THREE.Group();
+  const [x, y, z] = room.size;
+  const floor = new THREE.Mesh(new THREE.PlaneGeometry(x, y), lambert(COLOURS.floor));
+  floor.position.set(x / 2, y / 2, -0.5);
+  group.add(floor);
+  const grid = new THREE.GridHelper(Math.max(x, y), Math.ceil(Math.max(x, y) / 500), 0xc3c8d2, 0xd7dbe2);
+  grid.rotation.x = Math.PI / 2;
+  grid.position.set(Math.max(x, y) / 2, Math.max(x, y) / 2, 0);
+  grid.material.clippingPlanes = [];
+  group.add(grid);
+  const walls = new THREE.LineSegments(
+    new THREE.EdgesGeometry(new THREE.BoxGeometry(x, y, z)),
+    new THREE.LineBasicMaterial({ color: 0x9aa3b2 })
+  );
+  walls.position.set(x / 2, y / 2, z / 2);
+  group.add(walls);
+  const obstacles = new Map();
+  for (const b of room.boxes) {
+    const pivot = new THREE.Group();
+    pivot.position.copy(v3(b.corner));
+    pivot.rotation.z = THREE.MathUtils.degToRad(b.yaw_deg);
+    const geometry = new THREE.BoxGeometry(b.size[0], b.size[1], b.size[2]);
+    const mesh = new THREE.Mesh(geometry, lambert(COLOURS.box, 0.6));
+    mesh.position.set(b.size[0] / 2, b.size[1] / 2, b.size[2] / 2);
+    const edges = new THREE.LineSegments(
+      new THREE.EdgesGeometry(geometry),
+      new THREE.LineBasicMaterial({ color: 0x7a6a50 })
+    );
+    edges.position.copy(mesh.position);
+    pivot.add(mesh, edges);
+    mesh.userData.name = b.name;
+    group.add(pivot);
+    obstacles.set(b.name, mesh);
+  }
+  for (const m of room.meshes) {
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute("position", new THREE.Float32BufferAttribute(m.positions, 3));
+    geometry.setIndex(m.indices);
+    geometry.computeVertexNormals();
+    const mesh = new THREE.Mesh(geometry, lambert(COLOURS.mesh, 0.95));
+    mesh.userData.name = m.name;
+    group.add(mesh);
+    obstacles.set(m.name, mesh);
+  }
+  for (const s of room.surfaces) {
+    const c = v3(s.corner), u = v3(s.u), v = v3(s.v);
+    const corners = [c, c.clone().add(u), c.clone().add(u).add(v), c.clone().add(v), c];
+    group.add(line(corners.map((p) => [p.x, p.y, p.z]), COLOURS.surface, true));
+  }
+  const targets = new Map();
+  for (const t of room.targets) {
+    const mesh = marker(t.at, 28, COLOURS.idle);
+    mesh.userData.name = t.name;
+    group.add(mesh);
+    targets.set(t.name, mesh);
+  }
+  return { group, obstacles, targets };
+}
+
+// One task's objects: the person, the line of sight, the map's cells and
+// the joints at a limit.
+function buildTask(task) {
+  const group = new THREE.Group();
+  for (const s of task.solids) {
+    const material = lambert(new THREE.Color(s.color), s.opacity);
+    if (s.kind === "capsule") {
+      group.add(capsule(s.a, s.b, s.r, material));
+    } else {
+      const mesh = new THREE.Mesh(
+        new THREE.BoxGeometry(2 * s.half[0], 2 * s.half[1], 2 * s.half[2]),
+        material
+      );
+      mesh.position.copy(v3(s.centre));
+      mesh.rotation.z = THREE.MathUtils.degToRad(s.yaw_deg);
+      group.add(mesh);
+    }
+  }
+  if (task.reached && task.target) {
+    group.add(line([task.reached, task.target], task.ok ? COLOURS.ok : COLOURS.not, true));
+  }
+  if (task.sight) {
+    const s = task.sight;
+    group.add(line([s.eyes, s.target], s.ok ? COLOURS.sight : COLOURS.not, false));
+    group.add(sphere(s.eyes, 12, COLOURS.sight));
+  }
+  for (const j of task.strained) {
+    group.add(marker(j.at, 30, COLOURS.strained));
+  }
+  if (task.cells) {
+    const c = task.cells;
+    const u = v3(c.u).normalize(), v = v3(c.v).normalize();
+    const normal = u.clone().cross(v).normalize();
+    const size = 0.9 * c.step;
+    const cell = new THREE.PlaneGeometry(size, size);
+    const instances = new THREE.InstancedMesh(
+      cell,
+      new THREE.MeshBasicMaterial({ side: THREE.DoubleSide }),
+      c.points.length
+    );
+    const basis = new THREE.Matrix4().makeBasis(u, v, normal);
+    const m = new THREE.Matrix4();
+    c.points.forEach((p, k) => {
+      m.copy(basis).setPosition(p[0] + normal.x * 3, p[1] + normal.y * 3, p[2] + normal.z * 3);
+      instances.setMatrixAt(k, m);
+      const colour = c.of === "gaze"
+        ? new THREE.Color(p[3] > 0 ? COLOURS.not : COLOURS.sight)
+        : shortColour(p[3]);
+      instances.setColorAt(k, colour);
+    });
+    group.add(instances);
+  }
+  return group;
+}
+
+function legend(data) {
+  const rows = [
+    ["#2e9e4f", "reached / seen"],
+    ["#d64545", "NOT reached / seen"],
+    ["#e8b48a", "the person"],
+    ["#7d8590", "the base"],
+    ["#ff2d95", "a joint at its limit"],
+    ["#ff5a36", "what blocked it"],
+    ["#2b6cd6", "line of sight"],
+  ];
+  let html = rows
+    .map(([c, t]) => `<div class="row"><span class="swatch" style="background:${c}"></span>${t}</div>`)
+    .join("");
+  if (data.tasks.some((t) => t.cells)) {
+    html += `<div class="row"><span class="swatch" style="background:#2b6cd6"></span>gaze map: seen</div>`;
+    html += `<div class="row">reach map: reached &rarr; short by</div><div class="row"><span class="ramp"></span></div>` +
+      `<div class="row" style="justify-content:space-between;width:140px"><span>0</span><span>${RAMP_MM / 2}</span><span>&ge;${RAMP_MM} mm short</span></div>`;
+  }
+  document.getElementById("legend").innerHTML = html;
+}
+
+export function start(settings, data) {
+  const view = document.getElementById("view");
+  const status = document.getElementById("status");
+  const selftest = new URLSearchParams(location.search).has("selftest");
+  document.getElementById("file").textContent = data.title;
+  const ok = data.tasks.filter((t) => t.ok).length;
+  document.getElementById("summary").textContent = `${data.tasks.length} tasks, ${ok} ok`;
+
+  const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: selftest });
+  renderer.setPixelRatio(window.devicePixelRatio || 1);
+  renderer.setClearColor(0xffffff);
+  view.prepend(renderer.domElement);
+  const scene = new THREE.Scene();
+  scene.add(new THREE.AmbientLight(0xffffff, 1.6));
+  const sun = new THREE.DirectionalLight(0xffffff, 1.4);
+  sun.position.set(-0.4, -0.8, 1.2);
+  scene.add(sun);
+  const camera = new THREE.PerspectiveCamera(45, 1, 10, 200000);
+  camera.up.set(0, 0, 1);
+  const controls = new OrbitControls(camera, renderer.domElement);
+  controls.enableDamping = false;
+
+  const rooms = data.rooms.map(buildRoom);
+  rooms.forEach((r) => scene.add(r.group));
+  // Each task's objects are built the first time it is shown.
+  const groups = data.tasks.map(() => null);
+  function group(k) {
+    if (!groups[k]) {
+      groups[k] = buildTask(data.tasks[k]);
+      scene.add(groups[k]);
+    }
+    return groups[k];
+  }
+  legend(data);
+
+  const list = document.getElementById("tasks");
+  const buttons = data.tasks.map((t, k) => {
+    const item = document.createElement("li");
+    const button = document.createElement("button");
+    const dot = document.createElement("span");
+    dot.className = "dot";
+    dot.style.background = t.ok ? "#2e9e4f" : "#d64545";
+    const verdict = document.createElement("span");
+    verdict.className = "verdict";
+    verdict.textContent = t.verdict;
+    button.append(dot, document.createTextNode(t.label), verdict);
+    button.addEventListener("click", () => select(k));
+    item.append(button);
+    list.append(item);
+    return button;
+  });
+
+  // Look over the person's shoulder at what the task asked about; a map
+  // from above its surface; a room from a high corner.
+  function frame(room, task) {
+    const [x, y] = room.size;
+    const centre = new THREE.Vector3(x / 2, y / 2, 700);
+    let at = centre, from;
+    if (task && task.cells) {
+      const p = task.cells.points;
+      at = p.reduce((s, q) => s.add(v3(q)), new THREE.Vector3()).divideScalar(Math.max(p.length, 1));
+      from = at.clone().add(v3(task.cells.u).cross(v3(task.cells.v)).normalize().multiplyScalar(2200));
+      from.add(centre.clone().sub(at).setZ(0).normalize().multiplyScalar(1400));
+    } else if (task && task.target && task.base) {
+      const base = v3(task.base), target = v3(task.target);
+      at = base.clone().lerp(target, 0.55);
+      at.z = Math.max((base.z + target.z) / 2, 600);
+      const back = base.clone().sub(target).setZ(0);
+      if (back.lengthSq() < 1) back.set(-1, -1, 0);
+      back.normalize();
+      const side = new THREE.Vector3(-back.y, back.x, 0);
+      from = at.clone().add(back.multiplyScalar(1900)).add(side.multiplyScalar(900));
+      from.z = at.z + 1500;
+    } else {
+      from = new THREE.Vector3(-0.3 * x, -0.6 * y, 1.2 * Math.max(x, y));
+    }
+    controls.target.copy(at);
+    camera.position.copy(from);
+    controls.update();
+  }
+
+  let current = -1;
+  function select(k) {
+    if (k < 0 || k >= data.tasks.length) return;
+    current = k;
+    const task = data.tasks[k];
+    groups.forEach((g) => g && (g.visible = false));
+    group(k).visible = true;
+    rooms.forEach((r, i) => {
+      r.group.visible = i === task.room;
+      for (const mesh of r.targets.values()) mesh.material.color.setHex(COLOURS.idle);
+      for (const mesh of r.obstacles.values()) {
+        mesh.material.emissive.setHex(0x000000);
+      }
+    });
+    const room = rooms[task.room];
+    const subject = task.label.split(" ")[1];
+    const target = room.targets.get(subject);
+    if (target) target.material.color.setHex(task.ok ? COLOURS.ok : COLOURS.not);
+    const blocker = task.blocked_by && room.obstacles.get(task.blocked_by);
+    if (blocker) blocker.material.emissive.setHex(COLOURS.blocked);
+    buttons.forEach((b, i) => b.classList.toggle("selected", i === k));
+    const strained = task.strained.map((j) => j.name).join(", ");
+    document.getElementById("facts").textContent =
+      task.details + (strained ? `\n  at a limit (pink): ${strained}` : "");
+    frame(data.rooms[task.room], task);
+    render();
+  }
+
+  function resize() {
+    const w = view.clientWidth, h = view.clientHeight;
+    renderer.setSize(w, h);
+    camera.aspect = w / Math.max(h, 1);
+    camera.updateProjectionMatrix();
+    render();
+  }
+
+  function render() {
+    renderer.render(scene, camera);
+  }
+
+  controls.addEventListener("change", render);
+  window.addEventListener("resize", resize);
+  window.addEventListener("keydown", (e) => {
+    const n = Number.parseInt(e.key, 10);
+    if (n >= 1 && n <= 9) select(n - 1);
+  });
+  window.addEventListener("hashchange", () => select(taskFromHash()));
+  function taskFromHash() {
+    const m = /task=(\d+)/.exec(location.hash);
+    return m ? Number(m[1]) : 0;
+  }
+
+  resize();
+  if (data.tasks.length > 0) {
+    select(Math.min(taskFromHash(), data.tasks.length - 1));
+  } else {
+    frame(data.rooms[0] || { size: [3000, 3000, 2500] }, null);
+    render();
+  }
+  status.textContent = "";
+  document.body.dataset.readyMs = String(Math.round(performance.now()));
+  document.body.dataset.ready = "1";
+
+  if (settings.live) poll(settings, selftest);
+  if (selftest) runSelftest(renderer, buttons, render);
+}
+
+// Reload when `reach` writes new answers: the stamp file beside the page
+// calls window.reachStamp with the stamp of what the page would now show.
+function poll(settings, selftest) {
+  window.reachStamp = (stamp) => {
+    if (stamp === settings.stamp) return;
+    if (selftest) document.body.dataset.stale = "1";
+    else location.reload();
+  };
+  const load = () => {
+    const script = document.createElement("script");
+    script.src = `${settings.stampFile}?t=${Date.now()}`;
+    script.onload = script.onerror = () => script.remove();
+    document.head.append(script);
+  };
+  load();
+  setInterval(load, 1000);
+}
+
+// For the browser test: the picture's pixels before and after a click on
+// the second task, and how many differ.
+function runSelftest(renderer, buttons, render) {
+  const gl = renderer.getContext();
+  const pixels = () => {
+    render();
+    const w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
+    const out = new Uint8Array(w * h * 4);
+    gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, out);
+    return out;
+  };
+  const before = pixels();
+  let white = 0;
+  for (let i = 0; i < before.length; i += 4) {
+    if (before[i] > 250 && before[i + 1] > 250 && before[i + 2] > 250) white++;
+  }
+  let changed = 0;
+  if (buttons.length > 1) {
+    buttons[1].click();
+    const after = pixels();
+    for (let i = 0; i < after.length; i += 4) {
+      if (Math.abs(after[i] - before[i]) + Math.abs(after[i + 1] - before[i + 1]) +
+          Math.abs(after[i + 2] - before[i + 2]) > 30) changed++;
+    }
+    buttons[0].click();
+  }
+  document.body.dataset.selftest = JSON.stringify({
+    tasks: buttons.length,
+    pixels: before.length / 4,
+    notWhite: before.length / 4 - white,
+    changedByClick: changed,
+  });
+}

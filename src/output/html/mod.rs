@@ -1,0 +1,136 @@
+//! The `html` format: one self-contained page (`report.html` under `--out`)
+//! that opens offline in a browser and shows the room, the person in each
+//! task's posture where the base stood, the targets coloured by result, a
+//! gaze's line of sight and what blocked it, maps as graded cells, and the
+//! text report's facts beside the view. The scene is drawn by three.js
+//! (`three/`, vendored from the npm registry and embedded at build time):
+//! a well-kept WebGL library with orbit controls, rather than a renderer
+//! of our own. The modules are embedded as text and loaded from blob URLs,
+//! which a page opened from `file://` may import.
+//!
+//! Under `--out`, the page also loads `report-stamp.js` every second (a
+//! script element re-inserted, which works over `file://` where `fetch`
+//! does not) and reloads itself when the stamp changes, so a browser
+//! beside `reach watch` follows the file as it is edited.
+
+mod scene;
+mod simplify;
+
+use crate::plugin::{FormatPlugin, FormatScene, ParamSpec, Plugin};
+use crate::report::Report;
+
+pub use scene::{view_data, ViewData};
+
+const PAGE: &str = include_str!("page.html");
+const APP: &str = include_str!("app.js");
+const THREE_CORE: &str = include_str!("three/three.core.min.js");
+const THREE_MODULE: &str = include_str!("three/three.module.min.js");
+const ORBIT_CONTROLS: &str = include_str!("three/OrbitControls.js");
+const THREE_LICENSE: &str = include_str!("three/LICENSE");
+
+/// The name of the stamp file the page polls, beside it.
+pub const STAMP_FILE: &str = "report-stamp.js";
+
+pub struct Html;
+
+impl Plugin for Html {
+    fn name(&self) -> &'static str {
+        "html"
+    }
+
+    fn doc(&self) -> &'static str {
+        "one self-contained page: the room, the person in each task's posture, and the answers, in 3D"
+    }
+
+    fn params(&self) -> Vec<ParamSpec> {
+        Vec::new()
+    }
+}
+
+impl FormatPlugin for Html {
+    fn render(&self, report: &Report, scene: &FormatScene<'_>) -> String {
+        page(report, scene, false)
+    }
+
+    fn extension(&self) -> &'static str {
+        "html"
+    }
+}
+
+/// The page; `live` when a stamp file is written beside it to poll.
+pub fn page(report: &Report, scene: &FormatScene<'_>, live: bool) -> String {
+    let data = serde_json::to_string(&view_data(report, scene)).expect("plain data");
+    let stamp = stamp_of(&data);
+    let settings = serde_json::json!({ "live": live, "stamp": stamp, "stampFile": STAMP_FILE });
+    fill(
+        PAGE,
+        &[
+            ("title", &html_text(&report.file)),
+            ("settings", &script_safe(&settings.to_string())),
+            ("data", &script_safe(&data)),
+            ("three_license", &html_text(THREE_LICENSE)),
+            ("three_core", THREE_CORE),
+            ("three_module", THREE_MODULE),
+            ("orbit_controls", ORBIT_CONTROLS),
+            ("app", APP),
+        ],
+    )
+}
+
+/// `template` with each `{{key}}` replaced by its value, in one pass (so
+/// a value that holds `{{...}}` stays as it is).
+fn fill(template: &str, values: &[(&str, &str)]) -> String {
+    let mut out =
+        String::with_capacity(template.len() + values.iter().map(|v| v.1.len()).sum::<usize>());
+    let mut rest = template;
+    while let Some(start) = rest.find("{{") {
+        out.push_str(&rest[..start]);
+        let after = &rest[start + 2..];
+        let key = after.find("}}").map(|end| &after[..end]);
+        match key.and_then(|k| values.iter().find(|(name, _)| *name == k)) {
+            Some((name, value)) => {
+                out.push_str(value);
+                rest = &after[name.len() + 2..];
+            }
+            None => {
+                out.push_str("{{");
+                rest = after;
+            }
+        }
+    }
+    out.push_str(rest);
+    out
+}
+
+/// The stamp file's text for a page: it calls the page back with the stamp
+/// of the data the page would now show.
+pub fn stamp_script(report: &Report, scene: &FormatScene<'_>) -> String {
+    let data = serde_json::to_string(&view_data(report, scene)).expect("plain data");
+    format!(
+        "window.reachStamp && window.reachStamp(\"{}\");\n",
+        stamp_of(&data)
+    )
+}
+
+/// A 64-bit FNV-1a hash of the page's data, in hex: what changes when the
+/// answers or the scene do.
+fn stamp_of(data: &str) -> String {
+    let hash = data.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    });
+    format!("{hash:016x}")
+}
+
+/// JSON safe inside a `<script>` element: no `<` at all, so no `</script>`
+/// or `<!--` can end or confuse it.
+fn script_safe(json: &str) -> String {
+    json.replace('<', "\\u003c")
+}
+
+/// Text safe in HTML.
+fn html_text(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}

@@ -1,0 +1,397 @@
+//! The scene a report answers about, as the data the HTML view draws: each
+//! room's boxes, meshes, surfaces and targets, and for each task the
+//! person's solids in the reported posture where the base stood, the
+//! target's result, a gaze's line of sight and what blocked it, a map's
+//! cells graded by how far short each point fell, and the joints held at
+//! a limit. Numbers are rounded (0.1 mm, 0.1 degree) so the page is the
+//! same bytes on every run.
+
+use nalgebra::{IsometryMatrix3, Point3, Vector3};
+use serde::Serialize;
+
+use super::simplify::simplified;
+use crate::figure;
+use crate::geometry::Shape;
+use crate::kinematics::{Body, JointKind};
+use crate::plugin::{FormatScene, TaskPlace};
+use crate::report::{BaseReport, MapReport, Report, TaskReport};
+use crate::scene::{BasePose, Room};
+
+/// Most triangles of all meshes drawn; larger meshes are simplified.
+const MESH_TRIANGLE_BUDGET: usize = 150_000;
+/// A joint this close to a limit (degrees, or mm if it slides) is marked.
+const AT_LIMIT: f64 = 1.0;
+
+#[derive(Serialize)]
+pub struct ViewData {
+    pub title: String,
+    pub rooms: Vec<RoomView>,
+    pub tasks: Vec<TaskView>,
+}
+
+#[derive(Serialize)]
+pub struct RoomView {
+    name: String,
+    size: [f64; 3],
+    boxes: Vec<BoxView>,
+    meshes: Vec<MeshView>,
+    surfaces: Vec<SurfaceView>,
+    targets: Vec<Labelled>,
+}
+
+#[derive(Serialize)]
+struct BoxView {
+    name: String,
+    corner: [f64; 3],
+    size: [f64; 3],
+    yaw_deg: f64,
+}
+
+#[derive(Serialize)]
+struct MeshView {
+    name: String,
+    /// x, y, z per vertex, mm.
+    positions: Vec<f64>,
+    indices: Vec<u32>,
+    /// The triangles of the mesh itself where it was simplified to draw.
+    simplified_from: Option<usize>,
+}
+
+#[derive(Serialize)]
+struct SurfaceView {
+    name: String,
+    corner: [f64; 3],
+    u: [f64; 3],
+    v: [f64; 3],
+}
+
+#[derive(Serialize)]
+struct Labelled {
+    name: String,
+    at: [f64; 3],
+}
+
+#[derive(Serialize)]
+pub struct TaskView {
+    /// `reach mug by ann`.
+    label: String,
+    room: usize,
+    ok: bool,
+    verdict: String,
+    /// The text report's lines for this task.
+    details: String,
+    /// The person's solids, where a posture was reported.
+    solids: Vec<SolidView>,
+    /// Joints at a limit: where they are and what they are.
+    strained: Vec<Labelled>,
+    /// What the task asked about: a target's point.
+    target: Option<[f64; 3]>,
+    /// The hand's point the posture reached.
+    reached: Option<[f64; 3]>,
+    /// Where the base put the hip: x, y, z (mm) and heading (degrees).
+    base: Option<[f64; 4]>,
+    sight: Option<SightView>,
+    /// The obstacle a posture or a line of sight met.
+    blocked_by: Option<String>,
+    cells: Option<CellsView>,
+}
+
+#[derive(Serialize)]
+#[serde(tag = "kind", rename_all = "lowercase")]
+enum SolidView {
+    Capsule {
+        name: String,
+        a: [f64; 3],
+        b: [f64; 3],
+        r: f64,
+        color: String,
+        opacity: f64,
+    },
+    Box {
+        name: String,
+        centre: [f64; 3],
+        half: [f64; 3],
+        yaw_deg: f64,
+        color: String,
+        opacity: f64,
+    },
+}
+
+#[derive(Serialize)]
+struct SightView {
+    eyes: [f64; 3],
+    target: [f64; 3],
+    ok: bool,
+}
+
+#[derive(Serialize)]
+struct CellsView {
+    /// `reach` (graded by how far short) or `gaze` (seen or not).
+    of: &'static str,
+    step: f64,
+    u: [f64; 3],
+    v: [f64; 3],
+    /// Each point: x, y, z, and how far short it fell (mm, 0 if reached).
+    points: Vec<[f64; 4]>,
+}
+
+/// The view's data for `report` over `scene`.
+pub fn view_data(report: &Report, scene: &FormatScene<'_>) -> ViewData {
+    let budget = mesh_budget(scene.rooms);
+    ViewData {
+        title: report.file.clone(),
+        rooms: scene.rooms.iter().map(|r| room_view(r, budget)).collect(),
+        tasks: report
+            .tasks
+            .iter()
+            .zip(&scene.tasks)
+            .map(|(task, place)| task_view(task, place, scene))
+            .collect(),
+    }
+}
+
+/// Triangles per mesh when all of them would exceed the budget.
+fn mesh_budget(rooms: &[Room]) -> Option<usize> {
+    let meshes = rooms.iter().flat_map(|r| &r.meshes);
+    let total: usize = meshes.clone().map(|m| m.triangles.len()).sum();
+    let count = meshes.count().max(1);
+    (total > MESH_TRIANGLE_BUDGET).then_some(MESH_TRIANGLE_BUDGET / count)
+}
+
+fn room_view(room: &Room, budget: Option<usize>) -> RoomView {
+    RoomView {
+        name: room.name.clone(),
+        size: v3(&room.size_mm),
+        boxes: room
+            .boxes
+            .iter()
+            .map(|b| BoxView {
+                name: b.name.clone(),
+                corner: p3(&b.corner_mm),
+                size: v3(&b.size_mm),
+                yaw_deg: deg(b.yaw_rad),
+            })
+            .collect(),
+        meshes: room
+            .meshes
+            .iter()
+            .map(|m| {
+                let (vertices, indices, from) = match budget {
+                    Some(most) if m.triangles.len() > most => {
+                        let (v, t) = simplified(&m.vertices_mm, &m.triangles, most);
+                        (v, t, Some(m.triangles.len()))
+                    }
+                    _ => (m.vertices_mm.clone(), m.triangles.clone(), None),
+                };
+                MeshView {
+                    name: m.name.clone(),
+                    positions: vertices.iter().flat_map(p3).collect(),
+                    indices: indices.into_iter().flatten().collect(),
+                    simplified_from: from,
+                }
+            })
+            .collect(),
+        surfaces: room
+            .surfaces
+            .iter()
+            .map(|s| SurfaceView {
+                name: s.name.clone(),
+                corner: p3(&s.corner_mm),
+                u: v3(&s.u_mm),
+                v: v3(&s.v_mm),
+            })
+            .collect(),
+        targets: room
+            .targets
+            .iter()
+            .map(|t| Labelled {
+                name: t.name.clone(),
+                at: p3(&t.position_mm),
+            })
+            .collect(),
+    }
+}
+
+fn task_view(task: &TaskReport, place: &TaskPlace, scene: &FormatScene<'_>) -> TaskView {
+    let answer = task.answer();
+    let mut details = String::new();
+    task.details(&mut details);
+    let mut view = TaskView {
+        label: format!("{} {} by {}", answer.task, answer.subject, answer.person),
+        room: place.room,
+        ok: answer.ok,
+        verdict: answer.verdict.clone(),
+        details: details.trim().to_string(),
+        solids: Vec::new(),
+        strained: Vec::new(),
+        target: None,
+        reached: None,
+        base: None,
+        sight: None,
+        blocked_by: None,
+        cells: None,
+    };
+    let mut postures = Vec::new();
+    match task {
+        TaskReport::Reach(r) => {
+            view.target = Some(r.target_mm);
+            view.reached = Some(r.effector_mm);
+            view.blocked_by.clone_from(&r.collision);
+            postures.push((&r.base, &r.posture));
+        }
+        TaskReport::Gaze(g) => {
+            view.target = Some(g.target_mm);
+            view.sight = Some(SightView {
+                eyes: g.eyes_mm,
+                target: g.target_mm,
+                ok: g.ok,
+            });
+            view.blocked_by = g.occluded_by.clone().or_else(|| g.collision.clone());
+            postures.push((&g.base, &g.posture));
+        }
+        TaskReport::ReachAndGaze(rg) => {
+            view.target = Some(rg.reach.target_mm);
+            view.reached = Some(rg.reach.effector_mm);
+            view.sight = Some(SightView {
+                eyes: rg.gaze.eyes_mm,
+                target: rg.gaze.target_mm,
+                ok: rg.gaze.ok,
+            });
+            view.blocked_by = (rg.reach.collision.clone())
+                .or_else(|| rg.gaze.occluded_by.clone())
+                .or_else(|| rg.gaze.collision.clone());
+            postures.push((&rg.reach.base, &rg.reach.posture));
+            postures.push((&rg.gaze.base, &rg.gaze.posture));
+        }
+        TaskReport::Map(m) => view.cells = Some(cells(m)),
+    }
+    if let Some(&(base, _)) = postures.first() {
+        let person = place.person;
+        let body = &scene.persons[person].body;
+        let mut q: Vec<f64> = body.joints.iter().map(|j| j.neutral).collect();
+        for (_, posture) in &postures {
+            set_posture(body, &mut q, &posture.0);
+        }
+        let pose = base_pose(base);
+        view.base = Some([base.x_mm, base.y_mm, base.z_mm, base.heading_deg]);
+        let own = scene.bases[person].own_body();
+        view.solids = figure::person(body, &q, pose, own)
+            .into_iter()
+            .map(|item| solid_view(item.shape, item.label, item.fill, item.opacity))
+            .collect();
+        view.strained = strained(body, &q, pose);
+    }
+    view
+}
+
+/// `q` with the reported values (degrees, or mm for a sliding joint) of
+/// the joints named.
+fn set_posture(body: &Body, q: &mut [f64], values: &[(String, f64)]) {
+    for (name, value) in values {
+        if let Some(j) = body.joints.iter().position(|j| &j.name == name) {
+            q[j] = match body.joints[j].kind {
+                JointKind::Revolute => value.to_radians(),
+                JointKind::Prismatic => *value,
+            };
+        }
+    }
+}
+
+fn base_pose(b: &BaseReport) -> BasePose {
+    BasePose {
+        position_mm: Point3::new(b.x_mm, b.y_mm, b.z_mm),
+        heading_rad: b.heading_deg.to_radians(),
+    }
+}
+
+/// The joints of `body` within [`AT_LIMIT`] of a limit in posture `q`, at
+/// their place in the room.
+fn strained(body: &Body, q: &[f64], pose: BasePose) -> Vec<Labelled> {
+    let mut marks = Vec::new();
+    for index in 0..body.effectors.len() {
+        let path = body.path(body.effectors[index].joint);
+        let mut frame = IsometryMatrix3::identity();
+        for &j in &path {
+            let joint = &body.joints[j];
+            let shown = |x: f64| match joint.kind {
+                JointKind::Revolute => x.to_degrees(),
+                JointKind::Prismatic => x,
+            };
+            let margin = shown(q[j] - joint.min).min(shown(joint.max - q[j]));
+            let at = pose.to_room(&Point3::from(frame.translation.vector));
+            if margin <= AT_LIMIT && !marks.iter().any(|m: &Labelled| m.name == joint.name) {
+                let which = if shown(q[j] - joint.min) <= AT_LIMIT {
+                    "least"
+                } else {
+                    "most"
+                };
+                marks.push(Labelled {
+                    name: format!("{} at its {which}", joint.name),
+                    at: p3(&at),
+                });
+            }
+            frame *= joint.transform(q[j]);
+        }
+    }
+    marks
+}
+
+fn solid_view(shape: Shape, name: String, color: String, opacity: f64) -> SolidView {
+    match shape {
+        Shape::Capsule(c) => SolidView::Capsule {
+            name,
+            a: p3(&c.a),
+            b: p3(&c.b),
+            r: mm(c.radius_mm),
+            color,
+            opacity,
+        },
+        Shape::Cuboid(c) => SolidView::Box {
+            name,
+            centre: p3(&c.centre),
+            half: v3(&c.half_mm),
+            yaw_deg: deg(c.yaw_rad),
+            color,
+            opacity,
+        },
+    }
+}
+
+fn cells(m: &MapReport) -> CellsView {
+    CellsView {
+        of: m.of,
+        step: m.step_mm,
+        u: m.u_mm,
+        v: m.v_mm,
+        points: m
+            .cells
+            .iter()
+            .map(|c| {
+                // A point not seen is not short by a distance: any
+                // positive value marks it.
+                let short = match (c.reachable, m.of) {
+                    (true, _) => 0.0,
+                    (false, "gaze") => 1.0,
+                    (false, _) => mm(c.distance_mm).max(0.1),
+                };
+                [c.point_mm[0], c.point_mm[1], c.point_mm[2], short]
+            })
+            .collect(),
+    }
+}
+
+fn mm(x: f64) -> f64 {
+    (x * 10.0).round() / 10.0
+}
+
+fn deg(rad: f64) -> f64 {
+    mm(rad.to_degrees())
+}
+
+fn p3(p: &Point3<f64>) -> [f64; 3] {
+    [mm(p.x), mm(p.y), mm(p.z)]
+}
+
+fn v3(v: &Vector3<f64>) -> [f64; 3] {
+    [mm(v.x), mm(v.y), mm(v.z)]
+}
