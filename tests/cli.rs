@@ -110,7 +110,7 @@ fn out_dir_gets_report_json_and_nothing_half_written() {
     names.sort();
     assert_eq!(
         names,
-        ["report-stamp.js", "report.html", "report.json"],
+        ["report-stamp.js", "report.html", "report.json", "scene.glb"],
         "no temporary file is left behind"
     );
     let html = std::fs::read_to_string(out.join("report.html")).unwrap();
@@ -123,16 +123,17 @@ fn out_dir_gets_report_json_and_nothing_half_written() {
     );
 }
 
+/// A temporary directory holding `reach run FILE --out DIR`'s set.
+fn out_dir_of(file: &str) -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    let o = reach(&["run", file, "--out", dir.path().to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    dir
+}
+
 #[test]
 fn out_dir_gets_a_csv_and_an_svg_per_map() {
-    let dir = tempfile::tempdir().unwrap();
-    let o = reach(&[
-        "run",
-        "examples/kitchen_wheelchair.reach",
-        "--out",
-        dir.path().to_str().unwrap(),
-    ]);
-    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let dir = out_dir_of("examples/kitchen_wheelchair.reach");
     let csv = std::fs::read_to_string(dir.path().join("map-tall_cabinet-front-ann.csv")).unwrap();
     assert!(csv.starts_with("column,row,x_mm,y_mm,z_mm,reachable"));
     assert_eq!(csv.lines().count(), 1 + 6 * 14);
@@ -142,8 +143,8 @@ fn out_dir_gets_a_csv_and_an_svg_per_map() {
     let files = std::fs::read_dir(dir.path()).unwrap().count();
     assert_eq!(
         files,
-        3 + 2 * 18,
-        "report.json, report.html, its stamp and two files for each of eighteen maps"
+        4 + 2 * 18,
+        "report.json, report.html, its stamp, scene.glb and two files for each of eighteen maps"
     );
 }
 
@@ -405,4 +406,97 @@ fn solver_starts_are_bounded_before_anything_runs() {
     assert!(stdout(&o).is_empty());
     let o = reach(&["check", file, "--max-solver-starts", "71680"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+}
+
+/// `scene.glb` under `--out`: valid glTF (the `gltf` crate's validation),
+/// one scene per task named as the report names it, and its default scene,
+/// read back as a mesh, lies in the room (metres, y up) and holds the
+/// person as well as the furniture.
+#[test]
+fn out_dir_gets_a_gltf_scene_per_task() {
+    let dir = out_dir_of("examples/kitchen_wheelchair.reach");
+    let bytes = std::fs::read(dir.path().join("scene.glb")).unwrap();
+    let gltf = gltf::Gltf::from_slice(&bytes).expect("valid glTF");
+    let report: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("report.json")).unwrap())
+            .unwrap();
+    let tasks = report["tasks"].as_array().unwrap();
+    assert_eq!(gltf.scenes().count(), tasks.len());
+    let first = gltf.scenes().next().unwrap();
+    assert_eq!(first.name(), Some("reach counter_front by ben"));
+    let names: Vec<&str> = gltf.nodes().filter_map(|n| n.name()).collect();
+    for part in [
+        "back_counter",
+        "the head",
+        "the wheelchair's seat",
+        "target",
+    ] {
+        assert!(names.contains(&part), "no node {part} in {names:?}");
+    }
+    let mut none = |_: &str| Err("none".to_string());
+    let mesh = reach::meshfile::parse(
+        reach::meshfile::MeshFormat::Gltf,
+        &bytes,
+        1 << 24,
+        &mut none,
+    )
+    .expect("our own reader reads it");
+    // Back in the room's frame (mm, z up): within the room's 4 x 3.2 x
+    // 2.5 m.
+    let room = [4000.0, 3200.0, 2500.0];
+    for v in &mesh.vertices {
+        let p = reach::meshfile::UpAxis::Y.to_z_up(*v) * 1000.0;
+        for k in 0..3 {
+            assert!(p[k] > -1.0 && p[k] < room[k] + 1.0, "{p:?}");
+        }
+    }
+}
+
+/// A map's SVG shows the furniture near it and, in plan, where the base
+/// stood; its tick labels are round numbers far enough apart never to meet.
+#[test]
+fn map_pictures_show_context_and_readable_ticks() {
+    let dir = out_dir_of("examples/kitchen_wheelchair.reach");
+    let plan = std::fs::read_to_string(dir.path().join("map-back_counter-top-ann.svg")).unwrap();
+    assert!(
+        plan.contains("<title>left_counter</title>"),
+        "the furniture is drawn"
+    );
+    assert!(plan.contains("<title>base at ("), "the bases are drawn");
+    assert!(
+        plan.contains("short by up to 75 mm"),
+        "graded colours have a legend"
+    );
+    for svg in [
+        plan,
+        std::fs::read_to_string(dir.path().join("map-tall_cabinet-front-ann.svg")).unwrap(),
+    ] {
+        // The labels under the x axis: `text-anchor="middle">NUMBER<`.
+        let xs: Vec<(f64, f64)> = svg
+            .lines()
+            .filter(|l| l.starts_with("<line") && l.contains(r#"text-anchor="middle">"#))
+            .map(|l| {
+                let x = l.split("x1=\"").nth(1).unwrap().split('"').next().unwrap();
+                let label = l
+                    .split(r#"text-anchor="middle">"#)
+                    .nth(1)
+                    .unwrap()
+                    .split('<')
+                    .next()
+                    .unwrap();
+                (x.parse().unwrap(), label.parse().unwrap())
+            })
+            .collect();
+        assert!(xs.len() >= 3, "{xs:?}");
+        for pair in xs.windows(2) {
+            assert!(pair[1].0 - pair[0].0 >= 55.0, "labels too close: {xs:?}");
+            let step = pair[1].1 - pair[0].1;
+            assert!(
+                [1.0, 2.0, 5.0]
+                    .iter()
+                    .any(|k| (step / k).log10().fract().abs() < 1e-9),
+                "{step}"
+            );
+        }
+    }
 }

@@ -581,7 +581,8 @@ fn an_output_set_has_a_file_per_map_and_is_written_whole_or_not_at_all() {
             "map-shelf-top-p.svg",
             "report-stamp.js",
             "report.html",
-            "report.json"
+            "report.json",
+            "scene.glb"
         ]
     );
     #[cfg(unix)]

@@ -213,25 +213,7 @@ fn glb(quads: &[[[f64; 3]; 4]], declared: Option<usize>) -> Vec<u8> {
         il = bin.len() - positions_len,
         bl = declared.unwrap_or(bin.len()),
     );
-    let mut json = json.into_bytes();
-    while json.len() % 4 != 0 {
-        json.push(b' ');
-    }
-    while bin.len() % 4 != 0 {
-        bin.push(0);
-    }
-    let total = 12 + 8 + json.len() + 8 + bin.len();
-    let mut out = Vec::new();
-    out.extend(b"glTF");
-    out.extend(2u32.to_le_bytes());
-    out.extend((total as u32).to_le_bytes());
-    out.extend((json.len() as u32).to_le_bytes());
-    out.extend(b"JSON");
-    out.extend(&json);
-    out.extend((bin.len() as u32).to_le_bytes());
-    out.extend(b"BIN\0");
-    out.extend(&bin);
-    out
+    reach::output::glb::container(json.as_bytes(), &bin)
 }
 
 fn run_file(path: &Path) -> Report {

@@ -24,8 +24,13 @@ struct Watch {
 
 impl Watch {
     fn start(file: &Path) -> Watch {
+        Watch::start_with(file, &[])
+    }
+
+    fn start_with(file: &Path, more: &[&str]) -> Watch {
         let mut child = Command::new(env!("CARGO_BIN_EXE_reach"))
             .args(["watch", file.to_str().unwrap()])
+            .args(more)
             .stdout(Stdio::piped())
             .stderr(Stdio::null())
             .spawn()
@@ -110,6 +115,38 @@ fn watch_follows_every_way_of_saving() {
     // The used file changes.
     std::fs::write(dir.path().join("parts.reach"), PARTS.replace("960", "2500")).unwrap();
     w.expect("mug by ben: reachable -> NOT reachable", 3);
+}
+
+/// `reach watch --out DIR` keeps the page current: each evaluation writes
+/// a new `report.html` and a new stamp beside it, which the open page polls.
+#[test]
+fn watch_keeps_the_page_and_its_stamp_current() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("watched.reach");
+    let out = dir.path().join("out");
+    std::fs::write(dir.path().join("parts.reach"), PARTS).unwrap();
+    std::fs::write(&file, scenario(0)).unwrap();
+    let mut w = Watch::start_with(&file, &["--out", out.to_str().unwrap()]);
+    w.expect("first results", 1);
+    let stamp = std::fs::read_to_string(out.join("report-stamp.js")).unwrap();
+    let page = std::fs::read_to_string(out.join("report.html")).unwrap();
+    assert!(
+        page.contains("\"at\":[400.0,1150.0,960.0]"),
+        "the mug where it stands"
+    );
+    std::fs::write(&file, scenario(1500)).unwrap();
+    w.expect("mug by ben: reachable -> NOT reachable", 1);
+    let new_stamp = std::fs::read_to_string(out.join("report-stamp.js")).unwrap();
+    let new_page = std::fs::read_to_string(out.join("report.html")).unwrap();
+    assert_ne!(stamp, new_stamp);
+    assert!(
+        new_page.contains("\"at\":[400.0,1150.0,2460.0]"),
+        "the mug moved up"
+    );
+    assert!(
+        new_page.contains(new_stamp.split('"').nth(1).unwrap()),
+        "the page holds its stamp"
+    );
 }
 
 /// A closed cube as OBJ text, from `min` to `min + size` (mm).

@@ -13,8 +13,10 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, SystemTime};
 
+use super::glb;
 use super::html;
 use super::map_files;
+use super::view::view_data;
 use super::Json;
 use crate::error::{Error, ErrorKind};
 use crate::plugin::FormatPlugin;
@@ -29,22 +31,26 @@ const STALE: Duration = Duration::from_secs(60);
 /// The set's files, by name, in the order they are written.
 pub fn output_set(report: &Report, scenario: &Scenario) -> Vec<(String, Vec<u8>)> {
     let scene = scenario.format_scene();
+    let view = view_data(report, &scene);
+    // The stamp last: a page that sees it new finds itself new too.
     let mut files = vec![
         (
             "report.json".to_string(),
             Json.render(report, &scene).into_bytes(),
         ),
+        ("scene.glb".to_string(), glb::glb(&view)),
         (
             "report.html".to_string(),
-            html::page(report, &scene, true).into_bytes(),
+            html::page(&view, true).into_bytes(),
         ),
         (
             html::STAMP_FILE.to_string(),
-            html::stamp_script(report, &scene).into_bytes(),
+            html::stamp_script(&view).into_bytes(),
         ),
     ];
     let mut stems: Vec<String> = Vec::new();
-    for m in report.tasks.iter().filter_map(|t| t.map()) {
+    let maps = (report.tasks.iter().enumerate()).filter_map(|(k, t)| Some((k, t.map()?)));
+    for (index, m) in maps {
         let base = map_files::file_stem(m);
         // Two maps of one surface by one person (a reach and a gaze map,
         // or two option sets) get distinct names, in the order of tasks.
@@ -55,7 +61,8 @@ pub fn output_set(report: &Report, scenario: &Scenario) -> Vec<(String, Vec<u8>)
             n => format!("{base}-{}", n + 1),
         };
         files.push((format!("{stem}.csv"), map_files::csv(m).into_bytes()));
-        files.push((format!("{stem}.svg"), map_files::svg(m).into_bytes()));
+        let room = scene.tasks.get(index).and_then(|t| view.rooms.get(t.room));
+        files.push((format!("{stem}.svg"), map_files::svg(m, room).into_bytes()));
     }
     files
 }

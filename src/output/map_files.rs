@@ -1,9 +1,17 @@
 //! Files for each map, written with `--out DIR`: the points as CSV and a
-//! heat map as SVG (plan view for a horizontal surface, elevation for a
-//! vertical one), named after the surface and the person.
+//! heat map as SVG, named after the surface and the person. The SVG shows
+//! a horizontal surface in plan (x to the right, y up) and a vertical one
+//! in elevation as seen from the room (from the side a hand touches it
+//! from, height up), each point's cell graded by how far short it fell,
+//! with the room's furniture near it for context (outlines in plan,
+//! faces in elevation) and, in plan, where the base stood for the points.
+//! Ticks fall on round millimetres, spaced so their labels never meet.
 
 use std::fmt::Write;
 
+use nalgebra::{Vector2, Vector3};
+
+use super::view::RoomView;
 use crate::report::MapReport;
 
 /// File names for a map: `map-SURFACE-PERSON.csv` and `.svg`
@@ -30,15 +38,91 @@ pub fn csv(m: &MapReport) -> String {
     out
 }
 
-const CELL_PX: f64 = 12.0;
+/// How much room around the map the picture shows, for context.
+const CONTEXT_MM: f64 = 400.0;
+/// The drawing's largest side, and the margins for axes and the legend.
+const DRAWING_PX: f64 = 640.0;
 const MARGIN: f64 = 70.0;
-const REACHABLE: &str = "#2e8b57";
-const UNREACHABLE: &str = "#e8b4b0";
+const LEGEND_PX: f64 = 190.0;
+/// Least space between two tick labels.
+const TICK_GAP_PX: f64 = 55.0;
+const FURNITURE: &str = "#e9dfcc";
+const FURNITURE_EDGE: &str = "#9c8b6c";
+const BASE: &str = "#4b5563";
+const NOTE: &str = "#555d6b";
 
-/// The heat map: a cell per point, axes in millimetres along the
-/// surface's two edges, a legend, and the surface and person in the title.
-pub fn svg(m: &MapReport) -> String {
-    let (w, h) = (m.columns as f64 * CELL_PX, m.rows as f64 * CELL_PX);
+/// The cell colours: reached (or seen), then short by up to 75, 150, 225
+/// and 300 mm or more; not seen.
+const REACHED: &str = "#2e9e4f";
+const SEEN: &str = "#2b6cd6";
+const SHORT: [(&str, &str); 4] = [
+    ("#e8d44d", "short by up to 75 mm"),
+    ("#e6a84a", "75-150 mm"),
+    ("#df7d48", "150-225 mm"),
+    ("#d64545", "225 mm or more"),
+];
+const NOT_SEEN: &str = "#d64545";
+
+/// How the map is seen: two unit directions in the room for the
+/// picture's right and up.
+struct Frame {
+    right: Vector3<f64>,
+    up: Vector3<f64>,
+}
+
+impl Frame {
+    fn of(m: &MapReport) -> Frame {
+        if m.view == "plan" {
+            return Frame {
+                right: Vector3::x(),
+                up: Vector3::y(),
+            };
+        }
+        // An elevation, seen from the room: looking along -normal, the
+        // right hand points along (-normal) x z.
+        let (u, v) = (Vector3::from(m.u_mm), Vector3::from(m.v_mm));
+        let mut normal = u.cross(&v).normalize();
+        if let Some(c) = m.cells.first() {
+            let base = Vector3::new(c.base_mm_deg[0], c.base_mm_deg[1], c.point_mm[2]);
+            if normal.dot(&(base - Vector3::from(c.point_mm))) < 0.0 {
+                normal = -normal;
+            }
+        }
+        let right = (-normal).cross(&Vector3::z());
+        Frame {
+            right: right.try_normalize(1e-9).unwrap_or_else(Vector3::x),
+            up: Vector3::z(),
+        }
+    }
+
+    fn at(&self, p: Vector3<f64>) -> Vector2<f64> {
+        Vector2::new(p.dot(&self.right), p.dot(&self.up))
+    }
+}
+
+/// Millimetres of the picture to pixels.
+struct Scale {
+    lo: Vector2<f64>,
+    hi: Vector2<f64>,
+    px_per_mm: f64,
+}
+
+impl Scale {
+    fn x(&self, mm: f64) -> f64 {
+        MARGIN + (mm - self.lo.x) * self.px_per_mm
+    }
+    fn y(&self, mm: f64) -> f64 {
+        MARGIN + (self.hi.y - mm) * self.px_per_mm
+    }
+    fn size(&self) -> Vector2<f64> {
+        (self.hi - self.lo) * self.px_per_mm
+    }
+}
+
+/// The heat map of `m`, with `room`'s furniture around it.
+pub fn svg(m: &MapReport, room: Option<&RoomView>) -> String {
+    let frame = Frame::of(m);
+    let scale = scale(m, &frame, room);
     let title = format!(
         "{} {} by {} ({} base): {:.1} % of {} points",
         m.name,
@@ -48,14 +132,15 @@ pub fn svg(m: &MapReport) -> String {
         m.fraction * 100.0,
         m.points
     );
-    // Wide enough for the grid and legend, and for the title (about 9 px
-    // a character at 15 px bold).
-    let width = (w + 2.0 * MARGIN + 160.0).max(9.0 * title.len() as f64 + 2.0 * MARGIN);
-    let height = h + 2.0 * MARGIN;
+    let size = scale.size();
+    // Wide enough for the drawing and legend, and for the title (about
+    // 9 px a character at 15 px bold).
+    let width = (size.x + 2.0 * MARGIN + LEGEND_PX).max(9.0 * title.len() as f64 + 2.0 * MARGIN);
+    let height = (size.y + 2.0 * MARGIN).max(MARGIN + 7.0 * 22.0 + 40.0);
     let mut s = String::new();
     let _ = writeln!(
         s,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" viewBox="0 0 {width} {height}" font-family="sans-serif" font-size="12">"#
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{width:.0}" height="{height:.0}" viewBox="0 0 {width:.0} {height:.0}" font-family="sans-serif" font-size="12">"#
     );
     let _ = writeln!(s, r#"<rect width="100%" height="100%" fill="white"/>"#);
     let _ = writeln!(
@@ -63,110 +148,324 @@ pub fn svg(m: &MapReport) -> String {
         r#"<text x="{MARGIN}" y="24" font-size="15" font-weight="bold">{}</text>"#,
         escape(&title)
     );
-    // Row 0 at the bottom, like the surface's second edge pointing up.
-    for c in &m.cells {
-        let x = MARGIN + c.column as f64 * CELL_PX;
-        let y = MARGIN + h - (c.row as f64 + 1.0) * CELL_PX;
-        let fill = if c.reachable { REACHABLE } else { UNREACHABLE };
-        let _ = writeln!(
-            s,
-            r#"<rect x="{x}" y="{y}" width="{CELL_PX}" height="{CELL_PX}" fill="{fill}" stroke="white" stroke-width="0.5"><title>({}, {}, {}) mm: {}</title></rect>"#,
-            c.point_mm[0],
-            c.point_mm[1],
-            c.point_mm[2],
-            match (c.reachable, m.of) {
-                (true, _) => m.words()[1].to_string(),
-                (false, "gaze") => "not seen".to_string(),
-                (false, _) => format!("{} mm short", c.distance_mm),
-            }
-        );
+    let _ = writeln!(
+        s,
+        r#"<text x="{MARGIN}" y="44" fill="{NOTE}">{}</text>"#,
+        if m.view == "plan" {
+            "plan, from above"
+        } else {
+            "elevation, as seen from the room"
+        }
+    );
+    let _ = writeln!(
+        s,
+        r#"<svg x="{MARGIN}" y="{MARGIN}" width="{:.1}" height="{:.1}" viewBox="{MARGIN} {MARGIN} {:.1} {:.1}" overflow="hidden">"#,
+        size.x, size.y, size.x, size.y
+    );
+    if let Some(room) = room {
+        furniture(&mut s, m, room, &frame, &scale);
     }
-    axes(&mut s, m, w, h);
-    legend(&mut s, w, m.words()[1]);
+    cells(&mut s, m, &frame, &scale);
+    if m.view == "plan" {
+        bases(&mut s, m, &scale);
+    }
+    s.push_str("</svg>\n");
+    axes(&mut s, m, &scale);
+    legend(&mut s, m, MARGIN + size.x + 24.0, room.is_some());
     s.push_str("</svg>\n");
     s
 }
 
-/// Ticks every few cells, labelled with millimetres along each edge.
-fn axes(s: &mut String, m: &MapReport, w: f64, h: f64) {
-    let len = |v: [f64; 3]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-    let (u_len, v_len) = (len(m.u_mm), len(m.v_mm));
-    let (u_name, v_name) = (axis_name(m.u_mm), axis_name(m.v_mm));
-    let _ = writeln!(
-        s,
-        r#"<rect x="{MARGIN}" y="{MARGIN}" width="{w}" height="{h}" fill="none" stroke="black"/>"#
-    );
-    for k in 0..=4 {
-        let f = k as f64 / 4.0;
-        let x = MARGIN + f * w;
-        let u_mm = m.corner_mm[axis(m.u_mm)] + f * u_len * sign(m.u_mm);
+/// The picture's extent: the cells, and in plan the bases, with room
+/// around them; and the scale that fits it in the drawing.
+fn scale(m: &MapReport, frame: &Frame, room: Option<&RoomView>) -> Scale {
+    let half = m.step_mm / 2.0;
+    let mut lo = Vector2::repeat(f64::INFINITY);
+    let mut hi = Vector2::repeat(f64::NEG_INFINITY);
+    let mut grow = |p: Vector2<f64>, by: f64| {
+        lo = lo.inf(&(p - Vector2::repeat(by)));
+        hi = hi.sup(&(p + Vector2::repeat(by)));
+    };
+    for c in &m.cells {
+        grow(frame.at(Vector3::from(c.point_mm)), half + CONTEXT_MM);
+        if m.view == "plan" {
+            let [x, y, _] = c.base_mm_deg;
+            if x.is_finite() && y.is_finite() {
+                grow(Vector2::new(x, y), 150.0);
+            }
+        }
+    }
+    if !lo.x.is_finite() {
+        (lo, hi) = (Vector2::zeros(), Vector2::repeat(1000.0));
+    }
+    // Nothing outside the room to see: below its floor, or in plan beyond
+    // its walls.
+    let (inf, none) = (f64::INFINITY, f64::NEG_INFINITY);
+    let (lo_bound, hi_bound) = match (room, m.view) {
+        (Some(r), "plan") => (Vector2::zeros(), Vector2::new(r.size[0], r.size[1])),
+        (None, "plan") => (Vector2::repeat(none), Vector2::repeat(inf)),
+        _ => (Vector2::new(none, 0.0), Vector2::repeat(inf)),
+    };
+    lo = lo.sup(&lo_bound).inf(&(hi - Vector2::repeat(1.0)));
+    hi = hi.inf(&hi_bound).sup(&(lo + Vector2::repeat(1.0)));
+    let extent = hi - lo;
+    let px_per_mm = DRAWING_PX / extent.x.max(extent.y).max(1.0);
+    Scale { lo, hi, px_per_mm }
+}
+
+fn cells(s: &mut String, m: &MapReport, frame: &Frame, scale: &Scale) {
+    let side = m.step_mm * scale.px_per_mm;
+    for c in &m.cells {
+        let p = frame.at(Vector3::from(c.point_mm));
+        let (x, y) = (scale.x(p.x) - side / 2.0, scale.y(p.y) - side / 2.0);
+        let (fill, words) = match (c.reachable, m.of) {
+            (true, "gaze") => (SEEN, m.words()[1].to_string()),
+            (true, _) => (REACHED, m.words()[1].to_string()),
+            (false, "gaze") => (NOT_SEEN, "not seen".to_string()),
+            (false, _) => (
+                short_colour(c.distance_mm),
+                format!("{} mm short", c.distance_mm),
+            ),
+        };
         let _ = writeln!(
             s,
-            r#"<text x="{x}" y="{}" text-anchor="middle">{u_mm:.0}</text>"#,
-            MARGIN + h + 18.0
-        );
-        let y = MARGIN + h - f * h;
-        let v_mm = m.corner_mm[axis(m.v_mm)] + f * v_len * sign(m.v_mm);
-        let _ = writeln!(
-            s,
-            r#"<text x="{}" y="{}" text-anchor="end">{v_mm:.0}</text>"#,
-            MARGIN - 6.0,
-            y + 4.0
+            r#"<rect x="{x:.1}" y="{y:.1}" width="{side:.1}" height="{side:.1}" fill="{fill}" stroke="white" stroke-width="0.5"><title>({}, {}, {}) mm: {words}</title></rect>"#,
+            c.point_mm[0], c.point_mm[1], c.point_mm[2],
         );
     }
+}
+
+fn short_colour(distance_mm: f64) -> &'static str {
+    let band = (distance_mm / 75.0).floor().clamp(0.0, 3.0) as usize;
+    SHORT[band].0
+}
+
+/// The room's boxes near the map: footprints in plan; in elevation, the
+/// faces of boxes between the surface and the room, as seen from it.
+fn furniture(s: &mut String, m: &MapReport, room: &RoomView, frame: &Frame, scale: &Scale) {
+    let viewer = frame.right.cross(&frame.up);
+    let plane = m.cells.first().map(|c| Vector3::from(c.point_mm));
+    for b in &room.boxes {
+        let corners = box_corners(b.corner, b.size, b.yaw_deg);
+        if m.view != "plan" {
+            // Only what stands in front of (or in) the surface, not behind
+            // it or across the room.
+            if let Some(p) = plane {
+                let depth: Vec<f64> = corners.iter().map(|c| (c - p).dot(&viewer)).collect();
+                let (near, far) = depth
+                    .iter()
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &d| {
+                        (a.min(d), b.max(d))
+                    });
+                if far < -m.step_mm || near > 1200.0 {
+                    continue;
+                }
+            }
+        }
+        let shown: Vec<Vector2<f64>> = corners.iter().map(|c| frame.at(*c)).collect();
+        let outline = if m.view == "plan" {
+            shown[..4].to_vec()
+        } else {
+            let (lo, hi) = shown.iter().fold(
+                (
+                    Vector2::repeat(f64::INFINITY),
+                    Vector2::repeat(f64::NEG_INFINITY),
+                ),
+                |(lo, hi), p| (lo.inf(p), hi.sup(p)),
+            );
+            vec![lo, Vector2::new(hi.x, lo.y), hi, Vector2::new(lo.x, hi.y)]
+        };
+        let points: Vec<String> = outline
+            .iter()
+            .map(|p| format!("{:.1},{:.1}", scale.x(p.x), scale.y(p.y)))
+            .collect();
+        let _ = writeln!(
+            s,
+            r#"<polygon points="{}" fill="{FURNITURE}" stroke="{FURNITURE_EDGE}" stroke-width="1" fill-opacity="0.8"><title>{}</title></polygon>"#,
+            points.join(" "),
+            escape(&b.name)
+        );
+    }
+}
+
+/// A box's eight corners: the four of its bottom first, in order round it.
+fn box_corners(corner: [f64; 3], size: [f64; 3], yaw_deg: f64) -> Vec<Vector3<f64>> {
+    let (sin, cos) = yaw_deg.to_radians().sin_cos();
+    let at = |x: f64, y: f64, z: f64| {
+        Vector3::new(
+            corner[0] + cos * x - sin * y,
+            corner[1] + sin * x + cos * y,
+            corner[2] + z,
+        )
+    };
+    let [w, d, h] = size;
+    vec![
+        at(0.0, 0.0, 0.0),
+        at(w, 0.0, 0.0),
+        at(w, d, 0.0),
+        at(0.0, d, 0.0),
+        at(0.0, 0.0, h),
+        at(w, 0.0, h),
+        at(w, d, h),
+        at(0.0, d, h),
+    ]
+}
+
+/// Where the base stood for the points, each place once: a dot and a
+/// tick along its heading.
+fn bases(s: &mut String, m: &MapReport, scale: &Scale) {
+    let mut drawn: Vec<[i64; 3]> = Vec::new();
+    for c in &m.cells {
+        let [x, y, heading] = c.base_mm_deg;
+        if !(x.is_finite() && y.is_finite() && heading.is_finite()) {
+            continue;
+        }
+        let key = [
+            (x / 10.0).round() as i64,
+            (y / 10.0).round() as i64,
+            heading.round() as i64,
+        ];
+        if drawn.contains(&key) {
+            continue;
+        }
+        drawn.push(key);
+        let (px, py) = (scale.x(x), scale.y(y));
+        let (sin, cos) = heading.to_radians().sin_cos();
+        let _ = writeln!(
+            s,
+            r#"<g stroke="{BASE}" fill="{BASE}"><circle cx="{px:.1}" cy="{py:.1}" r="3"/><line x1="{px:.1}" y1="{py:.1}" x2="{:.1}" y2="{:.1}" stroke-width="1.5"/><title>base at ({x}, {y}) mm, heading {heading} deg</title></g>"#,
+            px + 12.0 * cos,
+            py - 12.0 * sin
+        );
+    }
+}
+
+/// A round step (1, 2 or 5 times a power of ten) for ticks at least
+/// `min_mm` apart.
+fn nice_step(min_mm: f64) -> f64 {
+    let power = 10f64.powf(min_mm.max(1e-9).log10().floor());
+    [1.0, 2.0, 5.0, 10.0]
+        .iter()
+        .map(|k| k * power)
+        .find(|&step| step >= min_mm)
+        .unwrap_or(10.0 * power)
+}
+
+/// The drawing's frame and round ticks along both sides.
+fn axes(s: &mut String, m: &MapReport, scale: &Scale) {
+    let size = scale.size();
     let _ = writeln!(
         s,
-        r#"<text x="{}" y="{}" text-anchor="middle">{u_name} (mm)</text>"#,
-        MARGIN + w / 2.0,
-        MARGIN + h + 40.0
+        r#"<rect x="{MARGIN}" y="{MARGIN}" width="{:.1}" height="{:.1}" fill="none" stroke="black"/>"#,
+        size.x, size.y
     );
+    let step = nice_step(TICK_GAP_PX / scale.px_per_mm);
+    let (bottom, left) = (MARGIN + size.y, MARGIN);
+    let mut x_mm = (scale.lo.x / step).ceil() * step;
+    while x_mm <= scale.hi.x {
+        let x = scale.x(x_mm);
+        let _ = writeln!(
+            s,
+            r#"<line x1="{x:.1}" y1="{bottom:.1}" x2="{x:.1}" y2="{:.1}" stroke="black"/><text x="{x:.1}" y="{:.1}" text-anchor="middle">{x_mm:.0}</text>"#,
+            bottom + 5.0,
+            bottom + 18.0,
+            x_mm = x_mm + 0.0, // no "-0"
+        );
+        x_mm += step;
+    }
+    let mut y_mm = (scale.lo.y / step).ceil() * step;
+    while y_mm <= scale.hi.y {
+        let y = scale.y(y_mm);
+        let _ = writeln!(
+            s,
+            r#"<line x1="{:.1}" y1="{y:.1}" x2="{left:.1}" y2="{y:.1}" stroke="black"/><text x="{:.1}" y="{:.1}" text-anchor="end">{y_mm:.0}</text>"#,
+            left - 5.0,
+            left - 8.0,
+            y + 4.0,
+            y_mm = y_mm + 0.0,
+        );
+        y_mm += step;
+    }
+    let (right_name, up_name) = if m.view == "plan" {
+        ("x", "y")
+    } else {
+        (along_name(m), "height z")
+    };
     let _ = writeln!(
         s,
-        r#"<text x="18" y="{}" text-anchor="middle" transform="rotate(-90 18 {})">{v_name} (mm)</text>"#,
-        MARGIN + h / 2.0,
-        MARGIN + h / 2.0
+        r#"<text x="{:.1}" y="{:.1}" text-anchor="middle">{right_name} (mm)</text>"#,
+        MARGIN + size.x / 2.0,
+        bottom + 40.0
+    );
+    let mid = MARGIN + size.y / 2.0;
+    let _ = writeln!(
+        s,
+        r#"<text x="18" y="{mid:.1}" text-anchor="middle" transform="rotate(-90 18 {mid:.1})">{up_name} (mm)</text>"#
     );
 }
 
-fn legend(s: &mut String, w: f64, yes: &str) {
-    let x = MARGIN + w + 24.0;
-    let no = format!("not {yes}");
-    for (k, (fill, label)) in [(REACHABLE, yes), (UNREACHABLE, no.as_str())]
-        .into_iter()
-        .enumerate()
-    {
+/// An elevation's horizontal axis: along the room's x or y, whichever the
+/// picture's right runs along, with its sign.
+fn along_name(m: &MapReport) -> &'static str {
+    let frame = Frame::of(m);
+    match (
+        frame.right.x.abs() >= frame.right.y.abs(),
+        frame.right.x + frame.right.y >= 0.0,
+    ) {
+        (true, true) => "x",
+        (true, false) => "x, decreasing to the right,",
+        (false, true) => "y",
+        (false, false) => "y, decreasing to the right,",
+    }
+}
+
+fn legend(s: &mut String, m: &MapReport, x: f64, furniture: bool) {
+    let mut rows: Vec<(&str, String)> = Vec::new();
+    if m.of == "gaze" {
+        rows.push((SEEN, m.words()[1].to_string()));
+        rows.push((NOT_SEEN, format!("not {}", m.words()[1])));
+    } else {
+        rows.push((REACHED, m.words()[1].to_string()));
+        rows.extend(SHORT.iter().map(|(c, t)| (*c, (*t).to_string())));
+    }
+    if furniture {
+        rows.push((FURNITURE, "furniture".to_string()));
+    }
+    if m.view == "plan" {
+        rows.push((BASE, "where the base stood".to_string()));
+    }
+    for (k, (fill, label)) in rows.iter().enumerate() {
         let y = MARGIN + k as f64 * 22.0;
         let _ = writeln!(
             s,
-            r#"<rect x="{x}" y="{y}" width="14" height="14" fill="{fill}"/>"#
-        );
-        let _ = writeln!(
-            s,
-            r#"<text x="{}" y="{}">{label}</text>"#,
+            r#"<rect x="{x:.1}" y="{y:.1}" width="14" height="14" fill="{fill}" stroke="{NOTE}" stroke-width="0.5"/><text x="{:.1}" y="{:.1}">{}</text>"#,
             x + 20.0,
-            y + 11.0
+            y + 11.0,
+            escape(label)
         );
     }
-}
-
-/// The room axis an edge runs along (edges of maps run along one axis,
-/// except faces of turned boxes, named by their largest part).
-fn axis(v: [f64; 3]) -> usize {
-    (0..3)
-        .max_by(|&a, &b| v[a].abs().total_cmp(&v[b].abs()))
-        .unwrap_or(0)
-}
-
-fn axis_name(v: [f64; 3]) -> &'static str {
-    ["x", "y", "height z"][axis(v)]
-}
-
-fn sign(v: [f64; 3]) -> f64 {
-    v[axis(v)].signum()
 }
 
 fn escape(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ticks_are_round_and_at_least_as_far_apart_as_asked() {
+        for (min, step) in [
+            (0.7, 1.0),
+            (55.0, 100.0),
+            (120.0, 200.0),
+            (260.0, 500.0),
+            (1000.0, 1000.0),
+        ] {
+            assert_eq!(nice_step(min), step, "{min}");
+        }
+    }
 }

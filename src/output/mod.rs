@@ -1,11 +1,13 @@
 //! Output formats, each a plugin, and the files `--out DIR` writes.
 
 mod files;
+pub mod glb;
 pub mod html;
 mod json;
 pub mod json_layout;
 pub mod map_files;
 mod text;
+pub mod view;
 
 pub use files::write_outputs;
 pub use html::Html;

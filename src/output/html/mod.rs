@@ -13,13 +13,9 @@
 //! does not) and reloads itself when the stamp changes, so a browser
 //! beside `reach watch` follows the file as it is edited.
 
-mod scene;
-mod simplify;
-
+use super::view::{view_data, ViewData};
 use crate::plugin::{FormatPlugin, FormatScene, ParamSpec, Plugin};
 use crate::report::Report;
-
-pub use scene::{view_data, ViewData};
 
 const PAGE: &str = include_str!("page.html");
 const APP: &str = include_str!("app.js");
@@ -49,7 +45,7 @@ impl Plugin for Html {
 
 impl FormatPlugin for Html {
     fn render(&self, report: &Report, scene: &FormatScene<'_>) -> String {
-        page(report, scene, false)
+        page(&view_data(report, scene), false)
     }
 
     fn extension(&self) -> &'static str {
@@ -57,15 +53,16 @@ impl FormatPlugin for Html {
     }
 }
 
-/// The page; `live` when a stamp file is written beside it to poll.
-pub fn page(report: &Report, scene: &FormatScene<'_>, live: bool) -> String {
-    let data = serde_json::to_string(&view_data(report, scene)).expect("plain data");
+/// The page of `view`; `live` when a stamp file is written beside it to
+/// poll.
+pub fn page(view: &ViewData, live: bool) -> String {
+    let data = serde_json::to_string(view).expect("plain data");
     let stamp = stamp_of(&data);
     let settings = serde_json::json!({ "live": live, "stamp": stamp, "stampFile": STAMP_FILE });
     fill(
         PAGE,
         &[
-            ("title", &html_text(&report.file)),
+            ("title", &html_text(&view.title)),
             ("settings", &script_safe(&settings.to_string())),
             ("data", &script_safe(&data)),
             ("three_license", &html_text(THREE_LICENSE)),
@@ -104,8 +101,8 @@ fn fill(template: &str, values: &[(&str, &str)]) -> String {
 
 /// The stamp file's text for a page: it calls the page back with the stamp
 /// of the data the page would now show.
-pub fn stamp_script(report: &Report, scene: &FormatScene<'_>) -> String {
-    let data = serde_json::to_string(&view_data(report, scene)).expect("plain data");
+pub fn stamp_script(view: &ViewData) -> String {
+    let data = serde_json::to_string(view).expect("plain data");
     format!(
         "window.reachStamp && window.reachStamp(\"{}\");\n",
         stamp_of(&data)

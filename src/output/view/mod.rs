@@ -1,4 +1,5 @@
-//! The scene a report answers about, as the data the HTML view draws: each
+//! The scene a report answers about, as the data the HTML page and the
+//! glTF scene draw: each
 //! room's boxes, meshes, surfaces and targets, and for each task the
 //! person's solids in the reported posture where the base stood, the
 //! target's result, a gaze's line of sight and what blocked it, a map's
@@ -9,13 +10,15 @@
 use nalgebra::{IsometryMatrix3, Point3, Vector3};
 use serde::Serialize;
 
-use super::simplify::simplified;
+mod simplify;
+
 use crate::figure;
 use crate::geometry::Shape;
 use crate::kinematics::{Body, JointKind};
 use crate::plugin::{FormatScene, TaskPlace};
 use crate::report::{BaseReport, MapReport, Report, TaskReport};
 use crate::scene::{BasePose, Room};
+use simplify::simplified;
 
 /// Most triangles of all meshes drawn; larger meshes are simplified.
 const MESH_TRIANGLE_BUDGET: usize = 150_000;
@@ -31,74 +34,74 @@ pub struct ViewData {
 
 #[derive(Serialize)]
 pub struct RoomView {
-    name: String,
-    size: [f64; 3],
-    boxes: Vec<BoxView>,
-    meshes: Vec<MeshView>,
-    surfaces: Vec<SurfaceView>,
-    targets: Vec<Labelled>,
+    pub name: String,
+    pub size: [f64; 3],
+    pub boxes: Vec<BoxView>,
+    pub meshes: Vec<MeshView>,
+    pub surfaces: Vec<SurfaceView>,
+    pub targets: Vec<Labelled>,
 }
 
 #[derive(Serialize)]
-struct BoxView {
-    name: String,
-    corner: [f64; 3],
-    size: [f64; 3],
-    yaw_deg: f64,
+pub struct BoxView {
+    pub name: String,
+    pub corner: [f64; 3],
+    pub size: [f64; 3],
+    pub yaw_deg: f64,
 }
 
 #[derive(Serialize)]
-struct MeshView {
-    name: String,
+pub struct MeshView {
+    pub name: String,
     /// x, y, z per vertex, mm.
-    positions: Vec<f64>,
-    indices: Vec<u32>,
+    pub positions: Vec<f64>,
+    pub indices: Vec<u32>,
     /// The triangles of the mesh itself where it was simplified to draw.
-    simplified_from: Option<usize>,
+    pub simplified_from: Option<usize>,
 }
 
 #[derive(Serialize)]
-struct SurfaceView {
-    name: String,
-    corner: [f64; 3],
-    u: [f64; 3],
-    v: [f64; 3],
+pub struct SurfaceView {
+    pub name: String,
+    pub corner: [f64; 3],
+    pub u: [f64; 3],
+    pub v: [f64; 3],
 }
 
 #[derive(Serialize)]
-struct Labelled {
-    name: String,
-    at: [f64; 3],
+pub struct Labelled {
+    pub name: String,
+    pub at: [f64; 3],
 }
 
 #[derive(Serialize)]
 pub struct TaskView {
     /// `reach mug by ann`.
-    label: String,
-    room: usize,
-    ok: bool,
-    verdict: String,
+    pub label: String,
+    pub room: usize,
+    pub ok: bool,
+    pub verdict: String,
     /// The text report's lines for this task.
-    details: String,
+    pub details: String,
     /// The person's solids, where a posture was reported.
-    solids: Vec<SolidView>,
+    pub solids: Vec<SolidView>,
     /// Joints at a limit: where they are and what they are.
-    strained: Vec<Labelled>,
+    pub strained: Vec<Labelled>,
     /// What the task asked about: a target's point.
-    target: Option<[f64; 3]>,
+    pub target: Option<[f64; 3]>,
     /// The hand's point the posture reached.
-    reached: Option<[f64; 3]>,
+    pub reached: Option<[f64; 3]>,
     /// Where the base put the hip: x, y, z (mm) and heading (degrees).
-    base: Option<[f64; 4]>,
-    sight: Option<SightView>,
+    pub base: Option<[f64; 4]>,
+    pub sight: Option<SightView>,
     /// The obstacle a posture or a line of sight met.
-    blocked_by: Option<String>,
-    cells: Option<CellsView>,
+    pub blocked_by: Option<String>,
+    pub cells: Option<CellsView>,
 }
 
 #[derive(Serialize)]
 #[serde(tag = "kind", rename_all = "lowercase")]
-enum SolidView {
+pub enum SolidView {
     Capsule {
         name: String,
         a: [f64; 3],
@@ -118,21 +121,21 @@ enum SolidView {
 }
 
 #[derive(Serialize)]
-struct SightView {
-    eyes: [f64; 3],
-    target: [f64; 3],
-    ok: bool,
+pub struct SightView {
+    pub eyes: [f64; 3],
+    pub target: [f64; 3],
+    pub ok: bool,
 }
 
 #[derive(Serialize)]
-struct CellsView {
+pub struct CellsView {
     /// `reach` (graded by how far short) or `gaze` (seen or not).
-    of: &'static str,
-    step: f64,
-    u: [f64; 3],
-    v: [f64; 3],
+    pub of: &'static str,
+    pub step: f64,
+    pub u: [f64; 3],
+    pub v: [f64; 3],
     /// Each point: x, y, z, and how far short it fell (mm, 0 if reached).
-    points: Vec<[f64; 4]>,
+    pub points: Vec<[f64; 4]>,
 }
 
 /// The view's data for `report` over `scene`.
