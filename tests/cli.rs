@@ -89,6 +89,40 @@ fn identical_across_threads(example: &str) {
     assert_eq!(first, run("4"));
 }
 
+/// Every file of an `--out` set (the page, the glTF scene, the maps' SVG
+/// and CSV) is the same bytes on one thread and on four.
+#[test]
+fn out_sets_are_byte_identical_across_thread_counts() {
+    let set = |threads: &str| {
+        let dir = tempfile::tempdir().unwrap();
+        let o = Command::new(env!("CARGO_BIN_EXE_reach"))
+            .args(["run", "examples/kitchen_wheelchair.reach", "--out"])
+            .arg(dir.path())
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .env("RAYON_NUM_THREADS", threads)
+            .output()
+            .unwrap();
+        assert_eq!(o.status.code(), Some(0));
+        let mut files: Vec<(String, Vec<u8>)> = std::fs::read_dir(dir.path())
+            .unwrap()
+            .map(|e| e.unwrap())
+            .map(|e| {
+                (
+                    e.file_name().to_string_lossy().into_owned(),
+                    std::fs::read(e.path()).unwrap(),
+                )
+            })
+            .collect();
+        files.sort();
+        files
+    };
+    let (one, four) = (set("1"), set("4"));
+    assert_eq!(one.len(), four.len());
+    for ((name, a), (_, b)) in one.iter().zip(&four) {
+        assert!(a == b, "{name} differs between 1 and 4 threads");
+    }
+}
+
 #[test]
 fn out_dir_gets_report_json_and_nothing_half_written() {
     let dir = tempfile::tempdir().unwrap();

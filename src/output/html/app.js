@@ -125,7 +125,7 @@ function buildRoom(room) {
     geometry.setAttribute("position", new THREE.Float32BufferAttribute(m.positions, 3));
     geometry.setIndex(m.indices);
     geometry.computeVertexNormals();
-    const mesh = new THREE.Mesh(geometry, lambert(COLOURS.mesh, 0.95));
+    const mesh = new THREE.Mesh(geometry, lambert(COLOURS.mesh, 0.6));
     mesh.userData.name = m.name;
     group.add(mesh);
     obstacles.set(m.name, mesh);
@@ -227,7 +227,11 @@ export function start(settings, data) {
   const selftest = new URLSearchParams(location.search).has("selftest");
   document.getElementById("file").textContent = data.title;
   const ok = data.tasks.filter((t) => t.ok).length;
-  document.getElementById("summary").textContent = `${data.tasks.length} tasks, ${ok} ok`;
+  const simplified = data.rooms.flatMap((r) => r.meshes)
+    .filter((m) => m.simplified_from)
+    .map((m) => `; ${m.name} drawn with ${m.indices.length / 3} of its ${m.simplified_from} triangles (answers use them all)`);
+  document.getElementById("summary").textContent =
+    `${data.tasks.length} tasks, ${ok} ok` + simplified.join("");
 
   const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: selftest });
   renderer.setPixelRatio(window.devicePixelRatio || 1);
