@@ -7,9 +7,9 @@
 //! report names things. Coordinates are glTF's: metres, y up (the room's
 //! z), the room's y towards -z.
 //!
-//! The JSON is built with serde_json and the file laid out here (a GLB is
-//! a 12-byte header and two chunks); reading it back with the `gltf`
-//! crate's validation is the test.
+//! The JSON is built with serde_json, the file laid out by the `gltf`
+//! crate (`Glb`); reading it back with that crate's validation is the
+//! test.
 
 mod tessellate;
 
@@ -282,27 +282,20 @@ impl Builder {
     }
 }
 
-/// A GLB file of a glTF document's JSON and its binary buffer: a 12-byte
-/// header, then each as a chunk padded to four bytes (JSON with spaces,
-/// the buffer with zeros).
+/// A GLB file of a glTF document's JSON and its binary buffer, laid out
+/// (header, chunks padded to four bytes) by the `gltf` crate.
 pub fn container(json: &[u8], bin: &[u8]) -> Vec<u8> {
-    let padded = |bytes: &[u8], pad: u8| {
-        let mut v = bytes.to_vec();
-        v.resize(bytes.len().next_multiple_of(4), pad);
-        v
+    let glb = gltf::Glb {
+        // The length is worked out as the file is written.
+        header: gltf::binary::Header {
+            magic: *b"glTF",
+            version: 2,
+            length: 0,
+        },
+        json: json.into(),
+        bin: Some(bin.into()),
     };
-    let (json, bin) = (padded(json, b' '), padded(bin, 0));
-    let total = 12 + 8 + json.len() + 8 + bin.len();
-    let mut out = Vec::with_capacity(total);
-    out.extend(b"glTF");
-    out.extend(2u32.to_le_bytes());
-    out.extend((total as u32).to_le_bytes());
-    for (chunk, kind) in [(&json, b"JSON"), (&bin, b"BIN\0")] {
-        out.extend((chunk.len() as u32).to_le_bytes());
-        out.extend(kind);
-        out.extend(chunk);
-    }
-    out
+    glb.to_vec().expect("written to memory")
 }
 
 /// A map cell's colour, as the page draws it (the ramp in five steps).
