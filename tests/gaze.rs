@@ -84,3 +84,40 @@ fn the_obstacle_in_the_way_is_named_and_distance_limits_give_their_reason() {
     // 0.5 mm is legible to 344 mm; the eyes stay more than a metre away.
     assert_eq!(tiny.reason, Some("too far"), "{tiny:?}");
 }
+
+/// What the 3D view marks as held at a limit: joints the task moved, each
+/// once, within a degree of its limit as the report gives it; the blocker
+/// of the jar seen by ann is named.
+#[test]
+fn the_view_marks_only_moved_joints_at_their_limits() {
+    let registry = Registry::builtin();
+    let (_, checked) = reach::check(Input::Path("examples/gaze_shelf.reach".as_ref()), &registry);
+    let scenario = checked.expect("the scenario checks");
+    let report = reach::run(&scenario);
+    let view = reach::output::view::view_data(&report, &scenario.format_scene());
+    for (task, seen) in report.tasks.iter().zip(&view.tasks) {
+        let TaskReport::Gaze(g) = task else { continue };
+        let mut names: Vec<&str> = seen.strained.iter().map(|m| m.name.as_str()).collect();
+        let count = names.len();
+        names.dedup();
+        assert_eq!(names.len(), count, "a joint marked twice: {names:?}");
+        for mark in &seen.strained {
+            let joint = mark.name.split(" at its ").next().unwrap();
+            assert!(
+                g.posture.0.iter().any(|(name, _)| name == joint),
+                "{joint} is marked but not in the posture of {}",
+                seen.label
+            );
+        }
+    }
+    let jar_by_ann = view
+        .tasks
+        .iter()
+        .find(|t| t.label == "gaze jar by ann")
+        .unwrap();
+    assert_eq!(jar_by_ann.blocked_by.as_deref(), Some("shelf_high"));
+    assert!(jar_by_ann
+        .strained
+        .iter()
+        .any(|m| m.name == "neck_lateral at its most"));
+}

@@ -282,7 +282,11 @@ fn task_view(task: &TaskReport, place: &TaskPlace, scene: &FormatScene<'_>) -> T
             .into_iter()
             .map(|item| solid_view(item.shape, item.label, item.fill, item.opacity))
             .collect();
-        view.strained = strained(body, &q, pose);
+        let moved: Vec<&str> = postures
+            .iter()
+            .flat_map(|(_, p)| p.0.iter().map(|(name, _)| name.as_str()))
+            .collect();
+        view.strained = strained(body, &q, pose, &moved);
     }
     view
 }
@@ -309,8 +313,9 @@ fn base_pose(b: &BaseReport) -> BasePose {
 
 /// The joints of `body` within [`AT_LIMIT`] of a limit in posture `q`, at
 /// their place in the room.
-fn strained(body: &Body, q: &[f64], pose: BasePose) -> Vec<Labelled> {
+fn strained(body: &Body, q: &[f64], pose: BasePose, moved: &[&str]) -> Vec<Labelled> {
     let mut marks = Vec::new();
+    let mut marked = vec![false; body.joints.len()];
     for index in 0..body.effectors.len() {
         let path = body.path(body.effectors[index].joint);
         let mut frame = IsometryMatrix3::identity();
@@ -322,7 +327,8 @@ fn strained(body: &Body, q: &[f64], pose: BasePose) -> Vec<Labelled> {
             };
             let margin = shown(q[j] - joint.min).min(shown(joint.max - q[j]));
             let at = pose.to_room(&Point3::from(frame.translation.vector));
-            if margin <= AT_LIMIT && !marks.iter().any(|m: &Labelled| m.name == joint.name) {
+            let strains = margin <= AT_LIMIT && moved.contains(&joint.name.as_str());
+            if strains && !std::mem::replace(&mut marked[j], true) {
                 let which = if shown(q[j] - joint.min) <= AT_LIMIT {
                     "least"
                 } else {
