@@ -85,3 +85,50 @@ fn a_map_counts_what_the_retry_added_and_loses_nothing() {
         assert!(!a.reachable || b.reachable, "{a:?} {b:?}");
     }
 }
+
+/// Maps that start each point from its neighbour's base and posture reach
+/// every point the search alone reaches (with the same seeds), on the
+/// wheelchair kitchen's shelves, wall cabinet and cabinet front, where
+/// boards are in the way.
+#[test]
+fn neighbour_starts_reach_every_point_cold_solves_reach() {
+    let example = std::fs::read_to_string("examples/kitchen_wheelchair.reach").unwrap();
+    let tasks_at = example.find("reach counter_front").unwrap();
+    let room_and_people = &example[..tasks_at];
+    let maps = |neighbours: bool| {
+        let text = format!(
+            "{room_and_people}\nmap wall_cab_bottom.top, wall_cab_shelf.top, tall_cabinet.front, \
+             shelf_2.top, shelf_3.top by ben, ann {{\n  step 100mm\n  solver incremental {{ starts 1 }}\n  \
+             neighbour_starts {neighbours}\n}}\n"
+        );
+        let registry = Registry::builtin();
+        let (_, checked) = reach::check(
+            Input::Text {
+                name: "kitchen_maps.reach",
+                text: &text,
+            },
+            &registry,
+        );
+        let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(true)));
+        reach::run(&scenario)
+    };
+    let (warm, cold) = (maps(true), maps(false));
+    let (mut gained, mut total) = (0, 0);
+    for (w, c) in warm.tasks.iter().zip(&cold.tasks) {
+        let (TaskReport::Map(w), TaskReport::Map(c)) = (w, c) else {
+            panic!("maps only");
+        };
+        for (wc, cc) in w.cells.iter().zip(&c.cells) {
+            total += 1;
+            assert!(
+                wc.reachable || !cc.reachable,
+                "{} by {}: the point {:?} is reached cold but not from its neighbour",
+                w.name,
+                w.person,
+                cc.point_mm
+            );
+            gained += usize::from(wc.reachable && !cc.reachable);
+        }
+    }
+    eprintln!("neighbour starts: {gained} of {total} points reached that cold solves miss");
+}

@@ -21,11 +21,14 @@ use crate::scene::Surface;
 /// The plugin `map`.
 pub struct Map;
 
-/// The grid's options: `step` and `max_points`.
+/// The grid's options: `step`, `max_points` and `neighbour_starts`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) struct GridSettings {
     pub step_mm: f64,
     pub max_points: u64,
+    /// Whether each point is first tried from where the point before it
+    /// in its row was reached, before the search a reach would make.
+    pub neighbour_starts: bool,
 }
 
 impl Settings for GridSettings {
@@ -43,6 +46,13 @@ impl Settings for GridSettings {
                 )
                 .range(1.0, 1e6)
                 .get() as u64,
+            neighbour_starts: p
+                .boolean(
+                    "neighbour_starts",
+                    true,
+                    "try each point first from the base and posture that reached the point before it in its row",
+                )
+                .get(),
         }
     }
 }
@@ -270,6 +280,7 @@ fn map_report(
                     );
                     let on = last
                         .as_ref()
+                        .filter(|_| asked.grid.neighbour_starts)
                         .filter(|p| prepared.admits(&p.pose, &query.target_room_mm))
                         .and_then(|p| {
                             let next = query.solve_from_at(
