@@ -31,7 +31,7 @@ impl FileKind {
     pub fn extensions(self) -> &'static [&'static str] {
         match self {
             FileKind::Scenario => &["reach"],
-            FileKind::Mesh => &["obj", "stl", "glb", "gltf"],
+            FileKind::Mesh => &crate::meshfile::EXTENSIONS,
             FileKind::MeshBuffer => &["bin"],
             FileKind::Urdf => &["urdf"],
         }

@@ -37,9 +37,10 @@ struct Frame {
 
 impl Checker<'_> {
     pub(super) fn mesh(&mut self, d: &MeshDecl) -> Option<MeshObstacle> {
-        let format = MeshFormat::of(&self.relative_to_file(&d.path.value));
+        let path = self.relative_to_file(&d.path.value);
+        let format = MeshFormat::of(&path);
         let frame = self.mesh_frame(d, format);
-        let raw = self.read_mesh(d)?;
+        let raw = self.read_mesh(d, path, format)?;
         let frame = frame?;
         let turn = Rotation3::from_axis_angle(&Vector3::z_axis(), frame.yaw_rad);
         let vertices_mm = raw
@@ -149,8 +150,12 @@ impl Checker<'_> {
     }
 
     /// The file's vertices (in its own units and axes) and triangles.
-    fn read_mesh(&mut self, d: &MeshDecl) -> Option<RawMesh> {
-        let path = self.relative_to_file(&d.path.value);
+    fn read_mesh(
+        &mut self,
+        d: &MeshDecl,
+        path: PathBuf,
+        format: Option<MeshFormat>,
+    ) -> Option<RawMesh> {
         self.data_files.push(path.clone());
         let limit = self.limits.file_bytes;
         let bytes = match read::read(&path, FileKind::Mesh, &self.sources.allowed, limit) {
@@ -160,8 +165,8 @@ impl Checker<'_> {
                 return None;
             }
         };
-        // `read` admits only the extensions `MeshFormat::of` knows.
-        let format = MeshFormat::of(&path)?;
+        // `read` admits only `meshfile::EXTENSIONS`, each with a format.
+        let format = format?;
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         let mut buffers = Vec::new();
         let allowed = &self.sources.allowed;

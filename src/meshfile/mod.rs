@@ -38,22 +38,21 @@ pub enum UpAxis {
     Y,
 }
 
-impl MeshFormat {
-    /// The extensions read, each with its format.
-    pub const EXTENSIONS: [(&'static str, MeshFormat); 4] = [
-        ("obj", MeshFormat::Obj),
-        ("stl", MeshFormat::Stl),
-        ("glb", MeshFormat::Gltf),
-        ("gltf", MeshFormat::Gltf),
-    ];
+/// The extensions of the mesh files read: the file policy (`read.rs`)
+/// admits these and no other, and each has its format
+/// ([`MeshFormat::of`]).
+pub const EXTENSIONS: [&str; 4] = ["obj", "stl", "glb", "gltf"];
 
+impl MeshFormat {
     /// The format of `path`, by its extension (any case).
     pub fn of(path: &Path) -> Option<MeshFormat> {
         let ext = path.extension()?.to_str()?.to_ascii_lowercase();
-        Self::EXTENSIONS
-            .iter()
-            .find(|(e, _)| *e == ext)
-            .map(|&(_, f)| f)
+        match ext.as_str() {
+            "obj" => Some(MeshFormat::Obj),
+            "stl" => Some(MeshFormat::Stl),
+            "glb" | "gltf" => Some(MeshFormat::Gltf),
+            _ => None,
+        }
     }
 
     /// The up axis when the scenario does not say: glTF's is y by its
@@ -159,4 +158,18 @@ pub fn parse(
 /// `[x, y, z]` in single precision as a point.
 fn point(c: [f32; 3]) -> Point3<f64> {
     Point3::new(f64::from(c[0]), f64::from(c[1]), f64::from(c[2]))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_extension_admitted_has_a_format() {
+        for ext in EXTENSIONS {
+            let path = format!("room.{}", ext.to_uppercase());
+            assert!(MeshFormat::of(Path::new(&path)).is_some(), "{ext}");
+        }
+        assert_eq!(MeshFormat::of(Path::new("room.ply")), None);
+    }
 }
