@@ -2,7 +2,8 @@
 //! control characters (C0, DEL, C1, and so ESC), bidirectional overrides and
 //! other invisible format characters are written as `\u{..}` escapes, so
 //! that a name can neither move the cursor, recolour the screen, reorder
-//! what is shown nor forge a line of a report or a diagnostic.
+//! what is shown nor forge a line of a report or a diagnostic. And text
+//! made safe inside HTML and SVG markup ([`markup`]).
 
 use std::borrow::Cow;
 use std::fmt::Write;
@@ -49,9 +50,23 @@ pub fn push_escaped(out: &mut String, c: char, keep: impl Fn(char) -> bool) {
     }
 }
 
+/// `text` safe as HTML or SVG text or a quoted attribute: `&`, `<`, `>`
+/// and `"` as entities.
+pub fn markup(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn markup_keeps_text_text() {
+        assert_eq!(markup("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
+    }
 
     #[test]
     fn unsafe_characters_are_escaped_and_others_kept() {

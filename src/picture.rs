@@ -7,6 +7,7 @@ use std::fmt::Write;
 
 use nalgebra::{Point2, Point3, Vector2, Vector3};
 
+use crate::escape::markup;
 use crate::geometry::Shape;
 
 /// Which way a panel looks.
@@ -79,7 +80,7 @@ pub fn svg(caption: &str, panels: &[Panel], px_per_mm: f64) -> String {
         s,
         r#"<text x="{MARGIN_PX}" y="{:.1}" font-size="15" font-weight="bold">{}</text>"#,
         MARGIN_PX,
-        escape(caption)
+        markup(caption)
     );
     let mut left = MARGIN_PX;
     for (panel, frame) in panels.iter().zip(&frames) {
@@ -143,7 +144,7 @@ fn draw_panel(s: &mut String, panel: &Panel, frame: &Frame, left: f64, top: f64)
         s,
         r#"<text x="{left:.1}" y="{:.1}" font-weight="bold">{}</text>"#,
         top + 16.0,
-        escape(&panel.title)
+        markup(&panel.title)
     );
     for (z, label) in &panel.levels_mm {
         let (x0, y) = frame.page(&Point2::new(frame.min.x, *z), left, top);
@@ -153,7 +154,7 @@ fn draw_panel(s: &mut String, panel: &Panel, frame: &Frame, left: f64, top: f64)
             r##"<line x1="{x0:.1}" y1="{y:.1}" x2="{x1:.1}" y2="{y:.1}" stroke="#999" stroke-dasharray="4 3"/><text x="{:.1}" y="{:.1}" fill="#666" font-size="11" text-anchor="end">{}</text>"##,
             x1,
             y - 3.0,
-            escape(label)
+            markup(label)
         );
     }
     let mut shapes: Vec<(f64, Vec<Point2<f64>>, &Item)> = panel
@@ -179,7 +180,7 @@ fn draw_panel(s: &mut String, panel: &Panel, frame: &Frame, left: f64, top: f64)
             path.join(" "),
             item.fill,
             item.opacity,
-            escape(&item.label)
+            markup(&item.label)
         );
     }
 }
@@ -246,12 +247,6 @@ fn hull(mut points: Vec<Point2<f64>>) -> Vec<Point2<f64>> {
     upper.pop();
     lower.extend(upper);
     lower
-}
-
-fn escape(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
 }
 
 #[cfg(test)]

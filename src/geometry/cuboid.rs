@@ -59,6 +59,14 @@ impl Cuboid {
         segment_box_distance_sq(&la, &(lb - la), &self.half_mm).sqrt()
     }
 
+    /// Corner `i` (0 to 7) of the box: bit 0 set for its own +x side,
+    /// bit 1 for +y, bit 2 for +z (0 is the least corner before turning).
+    pub fn corner(&self, i: usize) -> Point3<f64> {
+        let side = |bit: usize| if i & bit == 0 { -1.0 } else { 1.0 };
+        let local = Vector3::new(side(1), side(2), side(4)).component_mul(&self.half_mm);
+        self.centre + Rotation3::from_axis_angle(&Vector3::z_axis(), self.yaw_rad) * local
+    }
+
     /// Least and greatest corners of the box's axis-aligned bounds.
     pub fn bounds(&self) -> [Point3<f64>; 2] {
         let (s, c) = self.yaw_rad.sin_cos();

@@ -32,6 +32,7 @@ const STALE: Duration = Duration::from_secs(60);
 pub fn output_set(report: &Report, scenario: &Scenario) -> Vec<(String, Vec<u8>)> {
     let scene = scenario.format_scene();
     let view = view_data(report, &scene);
+    let page = html::PageData::of(&view);
     // The stamp last: a page that sees it new finds itself new too.
     let mut files = vec![
         (
@@ -39,13 +40,10 @@ pub fn output_set(report: &Report, scenario: &Scenario) -> Vec<(String, Vec<u8>)
             Json.render(report, &scene).into_bytes(),
         ),
         ("scene.glb".to_string(), glb::glb(&view)),
-        (
-            "report.html".to_string(),
-            html::page(&view, true).into_bytes(),
-        ),
+        ("report.html".to_string(), page.page(true).into_bytes()),
         (
             html::STAMP_FILE.to_string(),
-            html::stamp_script(&view).into_bytes(),
+            page.stamp_script().into_bytes(),
         ),
     ];
     let mut stems: Vec<String> = Vec::new();

@@ -12,6 +12,7 @@ use std::fmt::Write;
 use nalgebra::{Vector2, Vector3};
 
 use super::view::RoomView;
+use crate::escape::markup;
 use crate::report::MapReport;
 
 /// File names for a map: `map-SURFACE-PERSON.csv` and `.svg`
@@ -51,17 +52,18 @@ const FURNITURE_EDGE: &str = "#9c8b6c";
 const BASE: &str = "#4b5563";
 const NOTE: &str = "#555d6b";
 
-/// The cell colours: reached (or seen), then short by up to 75, 150, 225
-/// and 300 mm or more; not seen.
-const REACHED: &str = "#2e9e4f";
-const SEEN: &str = "#2b6cd6";
+/// The cell colours, which the glTF scene shares: reached, seen (and a
+/// line of sight), missed (not seen, or a target not reached), and short
+/// by up to 75, 150, 225 and 225 mm or more.
+pub(super) const REACHED: &str = "#2e9e4f";
+pub(super) const SEEN: &str = "#2b6cd6";
+pub(super) const MISSED: &str = "#d64545";
 const SHORT: [(&str, &str); 4] = [
     ("#e8d44d", "short by up to 75 mm"),
     ("#e6a84a", "75-150 mm"),
     ("#df7d48", "150-225 mm"),
-    ("#d64545", "225 mm or more"),
+    (MISSED, "225 mm or more"),
 ];
-const NOT_SEEN: &str = "#d64545";
 
 /// How the map is seen: two unit directions in the room for the
 /// picture's right and up.
@@ -146,7 +148,7 @@ pub fn svg(m: &MapReport, room: Option<&RoomView>) -> String {
     let _ = writeln!(
         s,
         r#"<text x="{MARGIN}" y="24" font-size="15" font-weight="bold">{}</text>"#,
-        escape(&title)
+        markup(&title)
     );
     let _ = writeln!(
         s,
@@ -218,14 +220,11 @@ fn cells(s: &mut String, m: &MapReport, frame: &Frame, scale: &Scale) {
     for c in &m.cells {
         let p = frame.at(Vector3::from(c.point_mm));
         let (x, y) = (scale.x(p.x) - side / 2.0, scale.y(p.y) - side / 2.0);
-        let (fill, words) = match (c.reachable, m.of) {
-            (true, "gaze") => (SEEN, m.words()[1].to_string()),
-            (true, _) => (REACHED, m.words()[1].to_string()),
-            (false, "gaze") => (NOT_SEEN, "not seen".to_string()),
-            (false, _) => (
-                short_colour(c.distance_mm),
-                format!("{} mm short", c.distance_mm),
-            ),
+        let fill = cell_colour(m.of, c.reachable, c.distance_mm);
+        let words = match (c.reachable, m.of) {
+            (true, _) => m.words()[1].to_string(),
+            (false, "gaze") => "not seen".to_string(),
+            (false, _) => format!("{} mm short", c.distance_mm),
         };
         let _ = writeln!(
             s,
@@ -235,9 +234,15 @@ fn cells(s: &mut String, m: &MapReport, frame: &Frame, scale: &Scale) {
     }
 }
 
-fn short_colour(distance_mm: f64) -> &'static str {
-    let band = (distance_mm / 75.0).floor().clamp(0.0, 3.0) as usize;
-    SHORT[band].0
+/// A map point's colour: reached or seen, not seen, or its band of
+/// shortfall (`short_mm`, the distance left).
+pub(super) fn cell_colour(of: &str, reachable: bool, short_mm: f64) -> &'static str {
+    match (reachable, of) {
+        (true, "gaze") => SEEN,
+        (true, _) => REACHED,
+        (false, "gaze") => MISSED,
+        (false, _) => SHORT[(short_mm / 75.0).floor().clamp(0.0, 3.0) as usize].0,
+    }
 }
 
 /// The room's boxes near the map: footprints in plan; in elevation, the
@@ -246,7 +251,8 @@ fn furniture(s: &mut String, m: &MapReport, room: &RoomView, frame: &Frame, scal
     let viewer = frame.right.cross(&frame.up);
     let plane = m.cells.first().map(|c| Vector3::from(c.point_mm));
     for b in &room.boxes {
-        let corners = box_corners(b.corner, b.size, b.yaw_deg);
+        let cuboid = b.cuboid();
+        let corners: Vec<Vector3<f64>> = (0..8).map(|k| cuboid.corner(k).coords).collect();
         if m.view != "plan" {
             // Only what stands in front of (or in) the surface, not behind
             // it or across the room.
@@ -264,7 +270,8 @@ fn furniture(s: &mut String, m: &MapReport, room: &RoomView, frame: &Frame, scal
         }
         let shown: Vec<Vector2<f64>> = corners.iter().map(|c| frame.at(*c)).collect();
         let outline = if m.view == "plan" {
-            shown[..4].to_vec()
+            // The bottom's corners in order round it.
+            [0, 1, 3, 2].map(|k| shown[k]).to_vec()
         } else {
             let (lo, hi) = shown.iter().fold(
                 (
@@ -283,32 +290,9 @@ fn furniture(s: &mut String, m: &MapReport, room: &RoomView, frame: &Frame, scal
             s,
             r#"<polygon points="{}" fill="{FURNITURE}" stroke="{FURNITURE_EDGE}" stroke-width="1" fill-opacity="0.8"><title>{}</title></polygon>"#,
             points.join(" "),
-            escape(&b.name)
+            markup(&b.name)
         );
     }
-}
-
-/// A box's eight corners: the four of its bottom first, in order round it.
-fn box_corners(corner: [f64; 3], size: [f64; 3], yaw_deg: f64) -> Vec<Vector3<f64>> {
-    let (sin, cos) = yaw_deg.to_radians().sin_cos();
-    let at = |x: f64, y: f64, z: f64| {
-        Vector3::new(
-            corner[0] + cos * x - sin * y,
-            corner[1] + sin * x + cos * y,
-            corner[2] + z,
-        )
-    };
-    let [w, d, h] = size;
-    vec![
-        at(0.0, 0.0, 0.0),
-        at(w, 0.0, 0.0),
-        at(w, d, 0.0),
-        at(0.0, d, 0.0),
-        at(0.0, 0.0, h),
-        at(w, 0.0, h),
-        at(w, d, h),
-        at(0.0, d, h),
-    ]
 }
 
 /// Where the base stood for the points, each place once: a dot and a
@@ -423,7 +407,7 @@ fn legend(s: &mut String, m: &MapReport, x: f64, furniture: bool) {
     let mut rows: Vec<(&str, String)> = Vec::new();
     if m.of == "gaze" {
         rows.push((SEEN, m.words()[1].to_string()));
-        rows.push((NOT_SEEN, format!("not {}", m.words()[1])));
+        rows.push((MISSED, format!("not {}", m.words()[1])));
     } else {
         rows.push((REACHED, m.words()[1].to_string()));
         rows.extend(SHORT.iter().map(|(c, t)| (*c, (*t).to_string())));
@@ -441,15 +425,9 @@ fn legend(s: &mut String, m: &MapReport, x: f64, furniture: bool) {
             r#"<rect x="{x:.1}" y="{y:.1}" width="14" height="14" fill="{fill}" stroke="{NOTE}" stroke-width="0.5"/><text x="{:.1}" y="{:.1}">{}</text>"#,
             x + 20.0,
             y + 11.0,
-            escape(label)
+            markup(label)
         );
     }
-}
-
-fn escape(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
 }
 
 #[cfg(test)]

@@ -1,8 +1,9 @@
 //! `scene.glb`: the scene of the 3D page as one binary glTF file, for
 //! Blender, a CAD tool or a colleague: each room's boxes, meshes and
 //! targets, and for each task its person (capsules, legs, chair or
-//! rollator) in the reported posture, its map's cells in their colours,
-//! its line of sight and the joints at a limit. One glTF scene per task
+//! rollator) in the reported posture, its map's cells in the colours of
+//! the map pictures (`map_files.rs`), its line of sight and the joints at
+//! a limit. One glTF scene per task
 //! (the room and that task), the first the default; nodes are named as the
 //! report names things. Coordinates are glTF's: metres, y up (the room's
 //! z), the room's y towards -z.
@@ -16,7 +17,9 @@ mod tessellate;
 use nalgebra::{Point3, Vector3};
 use serde_json::{json, Value};
 
+use super::map_files::{cell_colour, MISSED, REACHED, SEEN};
 use super::view::{RoomView, SolidView, TaskView, ViewData};
+use crate::geometry::Cuboid;
 use tessellate::Triangles;
 
 /// Colours as the page draws them (linear RGBA is close enough for a
@@ -24,11 +27,7 @@ use tessellate::Triangles;
 const BOX: &str = "#d8c8a8";
 const MESH: &str = "#c9c1b1";
 const TARGET_IDLE: &str = "#8a93a3";
-const OK: &str = "#2e9e4f";
-const NOT: &str = "#d64545";
 const STRAINED: &str = "#ff2d95";
-const SIGHT: &str = "#2b6cd6";
-const GAZE_MAP_SEEN: &str = "#2b6cd6";
 
 /// The GLB of `view`.
 pub fn glb(view: &ViewData) -> Vec<u8> {
@@ -60,11 +59,7 @@ impl Builder {
     fn room(&mut self, room: &RoomView) -> usize {
         let mut children = Vec::new();
         for b in &room.boxes {
-            let yaw = b.yaw_deg.to_radians();
-            let half = Vector3::from(b.size) / 2.0;
-            let turn = nalgebra::Rotation3::from_axis_angle(&Vector3::z_axis(), yaw);
-            let centre = Point3::from(b.corner) + turn * half;
-            let t = Triangles::cuboid(centre, half, yaw);
+            let t = Triangles::cuboid(&b.cuboid());
             children.push(self.mesh_node(&b.name, &t, BOX, 1.0));
         }
         for m in &room.meshes {
@@ -112,11 +107,11 @@ impl Builder {
                     opacity,
                 } => (
                     name,
-                    Triangles::cuboid(
-                        Point3::from(*centre),
-                        Vector3::from(*half),
-                        yaw_deg.to_radians(),
-                    ),
+                    Triangles::cuboid(&Cuboid {
+                        centre: Point3::from(*centre),
+                        half_mm: Vector3::from(*half),
+                        yaw_rad: yaw_deg.to_radians(),
+                    }),
                     color,
                     *opacity,
                 ),
@@ -125,7 +120,7 @@ impl Builder {
         }
         if let Some(at) = task.target {
             let p = Point3::from(at);
-            let colour = if task.ok { OK } else { NOT };
+            let colour = if task.ok { REACHED } else { MISSED };
             let t = Triangles::capsule(p, p, 30.0);
             children.push(self.mesh_node("target", &t, colour, 1.0));
         }
@@ -135,7 +130,7 @@ impl Builder {
         }
         if let Some(s) = &task.sight {
             let (eyes, target) = (Point3::from(s.eyes), Point3::from(s.target));
-            let colour = if s.ok { SIGHT } else { NOT };
+            let colour = if s.ok { SEEN } else { MISSED };
             children.push(self.mesh_node(
                 "line of sight",
                 &Triangles::capsule(eyes, target, 4.0),
@@ -149,7 +144,8 @@ impl Builder {
             let mut by_colour: Vec<(String, Triangles)> = Vec::new();
             for p in &c.points {
                 let centre = Point3::new(p[0], p[1], p[2]) + 3.0 * normal;
-                let colour = cell_colour(c.of, p[3]);
+                // The view's fourth number: how far short (0 where reached).
+                let colour = cell_colour(c.of, p[3] <= 0.0, p[3]).to_string();
                 let square = Triangles::square(centre, u, v, 0.9 * c.step);
                 match by_colour.iter_mut().find(|(k, _)| *k == colour) {
                     Some((_, t)) => t.append(&square),
@@ -296,19 +292,6 @@ pub fn container(json: &[u8], bin: &[u8]) -> Vec<u8> {
         bin: Some(bin.into()),
     };
     glb.to_vec().expect("written to memory")
-}
-
-/// A map cell's colour, as the page draws it (the ramp in five steps).
-fn cell_colour(of: &str, short_mm: f64) -> String {
-    if short_mm <= 0.0 {
-        return if of == "gaze" { GAZE_MAP_SEEN } else { OK }.to_string();
-    }
-    if of == "gaze" {
-        return NOT.to_string();
-    }
-    let steps = ["#e8d44d", "#e6b04b", "#e08c49", "#db6847", "#d64545"];
-    let k = ((short_mm / 300.0).min(1.0) * 4.0).round() as usize;
-    steps[k].to_string()
 }
 
 /// `#rrggbb` as fractions.

@@ -2,7 +2,9 @@
 //! length zero), boxes turned about the vertical, quads. Millimetres in the
 //! room's frame, z up; faces wound outwards.
 
-use nalgebra::{Point3, Rotation3, Vector3};
+use nalgebra::{Point3, Vector3};
+
+use crate::geometry::Cuboid;
 
 /// Triangles: vertices and indices into them.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -66,18 +68,9 @@ impl Triangles {
         t
     }
 
-    /// A box of half sizes `half` about `centre`, turned by `yaw_rad` about
-    /// the vertical.
-    pub fn cuboid(centre: Point3<f64>, half: Vector3<f64>, yaw_rad: f64) -> Self {
-        let turn = Rotation3::from_axis_angle(&Vector3::z_axis(), yaw_rad);
-        let corner = |sx: f64, sy: f64, sz: f64| {
-            centre + turn * Vector3::new(sx * half.x, sy * half.y, sz * half.z)
-        };
+    /// A box's six faces.
+    pub fn cuboid(c: &Cuboid) -> Self {
         let mut t = Triangles::default();
-        let c = |i: usize| {
-            let s = |bit: usize| if i & bit == 0 { -1.0 } else { 1.0 };
-            corner(s(1), s(2), s(4))
-        };
         for face in [
             [0, 2, 3, 1],
             [4, 5, 7, 6],
@@ -86,7 +79,7 @@ impl Triangles {
             [3, 2, 6, 7],
             [2, 0, 4, 6],
         ] {
-            t.add_quad(face.map(c));
+            t.add_quad(face.map(|k| c.corner(k)));
         }
         t
     }
@@ -151,8 +144,12 @@ mod tests {
 
     #[test]
     fn a_box_faces_outwards() {
-        let t = Triangles::cuboid(Point3::new(1.0, 2.0, 3.0), Vector3::new(1.0, 2.0, 3.0), 0.3);
         let centre = Point3::new(1.0, 2.0, 3.0);
+        let t = Triangles::cuboid(&Cuboid {
+            centre,
+            half_mm: Vector3::new(1.0, 2.0, 3.0),
+            yaw_rad: 0.3,
+        });
         for tri in t.indices.chunks(3) {
             let [p, q, s] = [0, 1, 2].map(|k| t.vertices[tri[k] as usize]);
             let normal = (q - p).cross(&(s - p));

@@ -14,6 +14,7 @@
 //! beside `reach watch` follows the file as it is edited.
 
 use super::view::{view_data, ViewData};
+use crate::escape::markup;
 use crate::plugin::{FormatPlugin, FormatScene, ParamSpec, Plugin};
 use crate::report::Report;
 
@@ -45,7 +46,7 @@ impl Plugin for Html {
 
 impl FormatPlugin for Html {
     fn render(&self, report: &Report, scene: &FormatScene<'_>) -> String {
-        page(&view_data(report, scene), false)
+        PageData::of(&view_data(report, scene)).page(false)
     }
 
     fn extension(&self) -> &'static str {
@@ -53,25 +54,51 @@ impl FormatPlugin for Html {
     }
 }
 
-/// The page of `view`; `live` when a stamp file is written beside it to
-/// poll.
-pub fn page(view: &ViewData, live: bool) -> String {
-    let data = serde_json::to_string(view).expect("plain data");
-    let stamp = stamp_of(&data);
-    let settings = serde_json::json!({ "live": live, "stamp": stamp, "stampFile": STAMP_FILE });
-    fill(
-        PAGE,
-        &[
-            ("title", &html_text(&view.title)),
-            ("settings", &script_safe(&settings.to_string())),
-            ("data", &script_safe(&data)),
-            ("three_license", &html_text(THREE_LICENSE)),
-            ("three_core", THREE_CORE),
-            ("three_module", THREE_MODULE),
-            ("orbit_controls", ORBIT_CONTROLS),
-            ("app", APP),
-        ],
-    )
+/// A view made page data once: its JSON and the stamp of that JSON, for
+/// the page and the stamp file beside it.
+pub struct PageData<'v> {
+    view: &'v ViewData,
+    json: String,
+    stamp: String,
+}
+
+impl<'v> PageData<'v> {
+    pub fn of(view: &'v ViewData) -> Self {
+        let json = serde_json::to_string(view).expect("plain data");
+        let stamp = stamp_of(&json);
+        PageData { view, json, stamp }
+    }
+
+    /// The page; `live` when a stamp file is written beside it to poll.
+    pub fn page(&self, live: bool) -> String {
+        let settings = serde_json::json!({
+            "live": live,
+            "stamp": self.stamp,
+            "stampFile": STAMP_FILE,
+        });
+        fill(
+            PAGE,
+            &[
+                ("title", &markup(&self.view.title)),
+                ("settings", &script_safe(&settings.to_string())),
+                ("data", &script_safe(&self.json)),
+                ("three_license", &markup(THREE_LICENSE)),
+                ("three_core", THREE_CORE),
+                ("three_module", THREE_MODULE),
+                ("orbit_controls", ORBIT_CONTROLS),
+                ("app", APP),
+            ],
+        )
+    }
+
+    /// The stamp file's text: it calls the page back with the stamp of the
+    /// data the page would now show.
+    pub fn stamp_script(&self) -> String {
+        format!(
+            "window.reachStamp && window.reachStamp(\"{}\");\n",
+            self.stamp
+        )
+    }
 }
 
 /// `template` with each `{{key}}` replaced by its value, in one pass (so
@@ -99,16 +126,6 @@ fn fill(template: &str, values: &[(&str, &str)]) -> String {
     out
 }
 
-/// The stamp file's text for a page: it calls the page back with the stamp
-/// of the data the page would now show.
-pub fn stamp_script(view: &ViewData) -> String {
-    let data = serde_json::to_string(view).expect("plain data");
-    format!(
-        "window.reachStamp && window.reachStamp(\"{}\");\n",
-        stamp_of(&data)
-    )
-}
-
 /// A 64-bit FNV-1a hash of the page's data, in hex: what changes when the
 /// answers or the scene do.
 fn stamp_of(data: &str) -> String {
@@ -122,12 +139,4 @@ fn stamp_of(data: &str) -> String {
 /// or `<!--` can end or confuse it.
 fn script_safe(json: &str) -> String {
     json.replace('<', "\\u003c")
-}
-
-/// Text safe in HTML.
-fn html_text(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
 }

@@ -13,10 +13,10 @@ use serde::Serialize;
 mod simplify;
 
 use crate::figure;
-use crate::geometry::Shape;
+use crate::geometry::{Cuboid, Shape};
 use crate::kinematics::{Body, JointKind};
 use crate::plugin::{FormatScene, TaskPlace};
-use crate::report::{BaseReport, MapReport, Report, TaskReport};
+use crate::report::{fixed, BaseReport, MapReport, Report, TaskReport};
 use crate::scene::{BasePose, Room};
 use simplify::simplified;
 
@@ -48,6 +48,17 @@ pub struct BoxView {
     pub corner: [f64; 3],
     pub size: [f64; 3],
     pub yaw_deg: f64,
+}
+
+impl BoxView {
+    /// The box as a solid, turned about its corner as `BoxObstacle` is.
+    pub fn cuboid(&self) -> Cuboid {
+        Cuboid::from_corner(
+            Point3::from(self.corner),
+            Vector3::from(self.size),
+            self.yaw_deg.to_radians(),
+        )
+    }
 }
 
 #[derive(Serialize)]
@@ -389,8 +400,11 @@ fn cells(m: &MapReport) -> CellsView {
     }
 }
 
+/// Decimals the view keeps: 0.1 mm and 0.1 degree.
+const DECIMALS: i32 = 1;
+
 fn mm(x: f64) -> f64 {
-    (x * 10.0).round() / 10.0
+    fixed(x, DECIMALS)
 }
 
 fn deg(rad: f64) -> f64 {
