@@ -5,7 +5,7 @@
 //! in the base frame and are carried into the room by the base pose.
 
 use crate::geometry::Capsule;
-use crate::kinematics::{Chain, Owner, Volumes};
+use crate::kinematics::{Chain, Motion, Owner, Volumes};
 use crate::scene::{BasePose, Blocker, Collision, OwnBody};
 
 use super::Obstacles;
@@ -51,7 +51,9 @@ impl PlacedObstacles<'_> {
     }
 
     /// The first collision of `chain`'s solids `v` in some posture, as
-    /// [`PlacedObstacles::posture_hit`] finds it.
+    /// [`PlacedObstacles::posture_hit`] finds it; solids that did not move
+    /// since a posture known to be clear ([`Motion::Still`]), and pairs
+    /// that did not move apart, are not looked at again.
     pub fn volumes_hit(
         &self,
         chain: &Chain,
@@ -59,7 +61,13 @@ impl PlacedObstacles<'_> {
         end_allowance_mm: f64,
     ) -> Option<Collision> {
         let end = Owner::Link(chain.joints.len());
-        for (capsule, &part) in v.capsules.iter().zip(&v.owners) {
+        for ((capsule, &part), _) in v
+            .capsules
+            .iter()
+            .zip(&v.owners)
+            .zip(&v.motion)
+            .filter(|(_, &motion)| motion != Motion::Still)
+        {
             let tested = if part == end {
                 match shortened(capsule, end_allowance_mm) {
                     Some(c) => c,

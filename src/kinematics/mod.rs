@@ -8,6 +8,7 @@ mod chain;
 mod dh;
 mod incremental;
 mod legs;
+mod posed;
 mod urdf;
 mod volumes;
 
@@ -16,5 +17,6 @@ pub use chain::{Chain, Joint, JointKind, Link, Rider};
 pub use dh::Dh;
 pub use incremental::{IncrementalFk, Step};
 pub use legs::{Legs, Posture};
+pub use posed::Posed;
 pub use urdf::{chain_from_urdf, UrdfError};
-pub use volumes::{Contact, Owner, Posed, Volumes};
+pub use volumes::{Contact, Motion, Owner, Volumes};

@@ -28,7 +28,7 @@ pub enum Owner {
 }
 
 /// The chain's solids in one posture, in the base frame.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Default)]
 pub struct Volumes {
     pub capsules: Vec<Capsule>,
     pub owners: Vec<Owner>,
@@ -36,6 +36,21 @@ pub struct Volumes {
     /// base; a sphere takes the place of the link that ends at its anchor
     /// (-1 on the base itself).
     order: Vec<i64>,
+    /// How each volume moved since a posture known to be clear (all
+    /// [`Motion::Moved`] when there is none): what a check may skip.
+    pub motion: Vec<Motion>,
+}
+
+/// How a volume moved when one joint of a posture moved.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Motion {
+    /// Not at all (a link before the joint).
+    Still,
+    /// With everything past the joint, as one rigid piece: two such
+    /// volumes keep their distance.
+    Rigid,
+    /// Any other way, or unknown.
+    Moved,
 }
 
 /// How two of a chain's volumes may meet.
@@ -68,11 +83,22 @@ impl Volumes {
         }
     }
 
-    /// The first pair of volumes that meet as they may not.
+    /// The first pair of volumes that meet as they may not (of the pairs
+    /// whose distance may have changed since a clear posture).
     pub fn self_hit(&self) -> Option<(usize, usize)> {
         self.self_pairs()
+            .filter(|&(i, j, _)| self.moved_apart(i, j))
             .find(|&(i, j, contact)| self.meet(i, j, contact))
             .map(|(i, j, _)| (i, j))
+    }
+
+    /// Whether volumes `i` and `j` may have moved relative to each other:
+    /// not if neither moved, nor if both moved as one piece.
+    fn moved_apart(&self, i: usize, j: usize) -> bool {
+        !matches!(
+            (self.motion[i], self.motion[j]),
+            (Motion::Still, Motion::Still) | (Motion::Rigid, Motion::Rigid)
+        )
     }
 
     fn meet(&self, i: usize, j: usize, contact: Contact) -> bool {
@@ -119,102 +145,166 @@ impl Chain {
     /// The solids of the posture whose joints' own transforms (each in its
     /// parent's frame, in chain order) are `locals`.
     pub fn volumes_of(&self, locals: impl Iterator<Item = IsometryMatrix3<f64>>) -> Volumes {
-        let mut v = Volumes {
-            capsules: Vec::with_capacity(self.joints.len() + 1 + self.riders.len()),
-            owners: Vec::new(),
-            order: Vec::new(),
+        let locals: Vec<IsometryMatrix3<f64>> = locals.collect();
+        let mut walk = Walk::new(self.joints.len());
+        let mut v = Volumes::default();
+        self.walk(&locals, &mut walk, 0, &mut v, None);
+        v
+    }
+
+    /// Make the solids of joints `from..` (their frames and marks into
+    /// `walk`, which holds those of the joints before `from`), then the
+    /// effector's link and the riders, onto `v` (which holds the volumes
+    /// of the joints before `from`). With `moved` (the joint moved since a
+    /// clear posture, `from` itself) each volume says how it moved.
+    pub(super) fn walk(
+        &self,
+        locals: &[IsometryMatrix3<f64>],
+        walk: &mut Walk,
+        from: usize,
+        v: &mut Volumes,
+        moved: Option<usize>,
+    ) {
+        let mut mark = if from == 0 {
+            Mark::START
+        } else {
+            walk.marks[from]
         };
-        let mut frame = IsometryMatrix3::identity();
-        let mut frames = Vec::with_capacity(self.joints.len());
-        let mut last = Point3::origin();
-        let mut links: i64 = 0;
-        // The place along the chain of the link ending at each joint.
-        let mut order_at = Vec::with_capacity(self.joints.len());
-        for (j, (joint, local)) in self.joints.iter().zip(locals).enumerate() {
-            frame *= local;
-            frames.push(frame);
+        let mut frame = if from == 0 {
+            IsometryMatrix3::identity()
+        } else {
+            walk.frames[from - 1]
+        };
+        // A volume starting at the origin of frame `start` (-1: the
+        // base's) moves rigidly with the joints past `moved`.
+        let motion = |start: i64| match moved {
+            Some(i) if start >= i as i64 => Motion::Rigid,
+            _ => Motion::Moved,
+        };
+        for (j, joint) in self.joints.iter().enumerate().skip(from) {
+            mark.pushed = v.capsules.len();
+            walk.marks[j] = mark;
+            frame *= locals[j];
+            walk.frames[j] = frame;
             let origin = Point3::from(frame.translation.vector);
-            if (origin - last).norm() > 1e-6 {
+            if (origin - mark.last).norm() > 1e-6 {
                 v.push(
-                    Capsule::new(last, origin, joint.link.radius_mm),
+                    Capsule::new(mark.last, origin, joint.link.radius_mm),
                     Owner::Link(j),
-                    links,
+                    mark.links,
+                    motion(mark.start),
                 );
-                links += 1;
-                last = origin;
+                mark.links += 1;
+                mark.last = origin;
+                mark.start = j as i64;
             }
-            order_at.push(links - 1);
+            walk.order_at[j] = mark.links - 1;
         }
         let effector = frame * Point3::from(self.effector_mm);
-        if (effector - last).norm() > 1e-6 {
+        if (effector - mark.last).norm() > 1e-6 {
             let owner = Owner::Link(self.joints.len());
-            v.push(
-                Capsule::new(last, effector, self.effector_link.radius_mm),
-                owner,
-                links,
-            );
+            let capsule = Capsule::new(mark.last, effector, self.effector_link.radius_mm);
+            v.push(capsule, owner, mark.links, motion(mark.start));
         }
         for (k, rider) in self.riders.iter().enumerate() {
-            let (at, place) = match rider.anchor {
-                Some(a) => (frames[a], order_at[a]),
-                None => (IsometryMatrix3::identity(), -1),
+            let (at, place, motion) = match rider.anchor {
+                Some(a) => {
+                    let motion = match moved {
+                        Some(i) if a < i => Motion::Still,
+                        _ => motion(a as i64),
+                    };
+                    (walk.frames[a], walk.order_at[a], motion)
+                }
+                None if moved.is_some() => (IsometryMatrix3::identity(), -1, Motion::Still),
+                None => (IsometryMatrix3::identity(), -1, Motion::Moved),
             };
             let centre = at * Point3::from(rider.centre_mm);
             v.push(
                 Capsule::sphere(centre, rider.radius_mm),
                 Owner::Rider(k),
                 place,
+                motion,
             );
         }
-        v
     }
 }
 
-/// A chain in one posture, each joint's own transform kept, so that the
-/// solids of the posture with one joint moved cost one joint's sine and
-/// cosine rather than every joint's (a descent that checks each move).
-pub struct Posed<'c> {
-    chain: &'c Chain,
-    locals: Vec<IsometryMatrix3<f64>>,
+/// Where a walk along the chain stands before a joint: the volumes it has
+/// made, the point the next link starts from and the frame whose origin it
+/// is (-1: the base's), and the links made.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Mark {
+    pub pushed: usize,
+    last: Point3<f64>,
+    start: i64,
+    links: i64,
 }
 
-impl<'c> Posed<'c> {
-    pub fn new(chain: &'c Chain, q: &[f64]) -> Self {
-        Posed {
-            chain,
-            locals: chain
-                .joints
-                .iter()
-                .zip(q)
-                .map(|(j, &qj)| j.transform(qj))
-                .collect(),
+impl Mark {
+    const START: Mark = Mark {
+        pushed: 0,
+        last: Point3::new(0.0, 0.0, 0.0),
+        start: -1,
+        links: 0,
+    };
+}
+
+/// What a walk keeps per joint: its frame in the base frame, the place
+/// along the chain of the link ending at it, and the mark before it.
+#[derive(Clone, Debug)]
+pub(super) struct Walk {
+    pub frames: Vec<IsometryMatrix3<f64>>,
+    pub order_at: Vec<i64>,
+    pub marks: Vec<Mark>,
+}
+
+impl Walk {
+    pub fn new(joints: usize) -> Self {
+        Walk {
+            frames: vec![IsometryMatrix3::identity(); joints],
+            order_at: vec![0; joints],
+            marks: vec![Mark::START; joints],
         }
     }
 
-    /// Joint `i` moved to `value`.
-    pub fn set(&mut self, i: usize, value: f64) {
-        self.locals[i] = self.chain.joints[i].transform(value);
-    }
-
-    /// The solids with joint `i` at `value`, the others as they are.
-    pub fn volumes_with(&self, i: usize, value: f64) -> Volumes {
-        let moved = self.chain.joints[i].transform(value);
-        let locals = self.locals.iter().enumerate();
-        self.chain
-            .volumes_of(locals.map(|(k, local)| if k == i { moved } else { *local }))
-    }
-
-    /// The solids as they are.
-    pub fn volumes(&self) -> Volumes {
-        self.chain.volumes_of(self.locals.iter().copied())
+    /// Take `other`'s frames and places of the joints before `end`, and
+    /// its marks up to the one before `end`: what a walk from `end` reads.
+    pub fn copy_prefix(&mut self, other: &Walk, end: usize) {
+        self.frames[..end].copy_from_slice(&other.frames[..end]);
+        self.order_at[..end].copy_from_slice(&other.order_at[..end]);
+        let marks = (end + 1).min(self.marks.len());
+        self.marks[..marks].copy_from_slice(&other.marks[..marks]);
     }
 }
 
 impl Volumes {
-    fn push(&mut self, capsule: Capsule, owner: Owner, order: i64) {
+    fn push(&mut self, capsule: Capsule, owner: Owner, order: i64, motion: Motion) {
         self.capsules.push(capsule);
         self.owners.push(owner);
         self.order.push(order);
+        self.motion.push(motion);
+    }
+
+    /// Keep the first `n` volumes.
+    pub(super) fn truncate(&mut self, n: usize) {
+        self.capsules.truncate(n);
+        self.owners.truncate(n);
+        self.order.truncate(n);
+        self.motion.truncate(n);
+    }
+
+    /// The first `n` of `other`'s volumes, each marked still.
+    pub(super) fn copy_still(&mut self, other: &Volumes, n: usize) {
+        self.truncate(0);
+        self.capsules.extend_from_slice(&other.capsules[..n]);
+        self.owners.extend_from_slice(&other.owners[..n]);
+        self.order.extend_from_slice(&other.order[..n]);
+        self.motion.resize(n, Motion::Still);
+    }
+
+    /// Mark every volume moved (a posture checked in full).
+    pub(super) fn all_moved(&mut self) {
+        self.motion.fill(Motion::Moved);
     }
 }
 

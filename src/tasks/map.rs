@@ -16,7 +16,7 @@ use crate::plugin::{
     Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
 };
 use crate::report::{MapCell, MapReport, TaskReport};
-use crate::scene::Surface;
+use crate::scene::{GridCell, Surface};
 
 /// The plugin `map`.
 pub struct Map;
@@ -201,6 +201,10 @@ impl Task for MapTask {
     }
 }
 
+/// The most points of a row solved one after another, each from the
+/// last: the rest of the row is another run, solved in parallel.
+const RUN: usize = 32;
+
 /// Where the hand's centre is when it touches a point of the surface: a
 /// hand's radius out of it, on the side it is touched from (the hand lies
 /// on a shelf; its centre, the grip, is above the board).
@@ -256,12 +260,18 @@ fn map_report(
     let grid = surface.grid(asked.grid.step_mm);
     input.progress.add_work(grid.cells.len() as u64);
     let solver = reaching.solver.as_ref();
-    // Rows in parallel; along a row, each point first tries on from where
-    // the last point reached stood and how it stood (one solve, few
-    // sweeps), then searches as a reach would.
-    let cells: Vec<(MapCell, bool)> = grid
+    // Runs of a row in parallel; along a run, each point first tries on
+    // from where the last point reached stood and how it stood (one solve,
+    // few sweeps), then searches as a reach would. Runs, not whole rows,
+    // so that a few hard rows (the lowest, where the legs are in the way)
+    // do not keep one thread busy while the others wait.
+    let runs: Vec<&[GridCell]> = grid
         .cells
-        .par_chunks(grid.columns.max(1))
+        .chunks(grid.columns.max(1))
+        .flat_map(|row| row.chunks(RUN))
+        .collect();
+    let cells: Vec<(MapCell, bool)> = runs
+        .par_iter()
         .flat_map_iter(|row| {
             let mut last: Option<Placement> = None;
             row.iter()

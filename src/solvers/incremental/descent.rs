@@ -130,11 +130,11 @@ impl<'p, 'a> Guard<'p, 'a> {
 
     /// Whether joint `i` may move to `value`: always while the posture is
     /// not yet clear, and then only if it stays clear.
-    fn allows(&self, i: usize, value: f64) -> bool {
+    fn allows(&mut self, i: usize, value: f64) -> bool {
         !self.clear
             || self
                 .problem
-                .collision_of(&self.posed.volumes_with(i, value))
+                .collision_of(self.posed.volumes_with(i, value))
                 .is_none()
     }
 
@@ -143,7 +143,7 @@ impl<'p, 'a> Guard<'p, 'a> {
     fn moved(&mut self, i: usize, value: f64) {
         self.posed.set(i, value);
         if !self.clear {
-            self.clear = self.problem.collision_of(&self.posed.volumes()).is_none();
+            self.clear = self.problem.collision_of(self.posed.volumes()).is_none();
         }
     }
 }
@@ -265,21 +265,21 @@ fn try_joint<K: Kinematics>(
     step: &Step,
     sign: &mut f64,
     d_sq: &mut f64,
-    guard: Option<&mut Guard<'_, '_>>,
+    mut guard: Option<&mut Guard<'_, '_>>,
 ) -> bool {
     let lever = fk.lever(i);
     let first = if s.sign_memory { *sign } else { 1.0 };
     let old = fk.q()[i];
     let limits = |v: f64| v >= joint.min && v <= joint.max;
-    let within = |guard: &Option<&mut Guard<'_, '_>>, v: f64| {
-        limits(v) && guard.as_deref().is_none_or(|g| g.allows(i, v))
+    let within = |guard: &mut Option<&mut Guard<'_, '_>>, v: f64| {
+        limits(v) && guard.as_deref_mut().is_none_or(|g| g.allows(i, v))
     };
     let (plus, minus) = (old + first * step.delta, old - first * step.delta);
     let (d_first, cs_first) = fk.distance_sq_moved(i, step, first, &lever);
     let second = s
         .eager_pair
         .then(|| fk.distance_sq_moved(i, step, -first, &lever));
-    if d_first < *d_sq && within(&guard, plus) {
+    if d_first < *d_sq && within(&mut guard, plus) {
         *d_sq = d_first;
         fk.set_moved(i, plus, cs_first);
         if let Some(g) = guard {
@@ -289,7 +289,7 @@ fn try_joint<K: Kinematics>(
     }
     let (d_second, cs_second) =
         second.unwrap_or_else(|| fk.distance_sq_moved(i, step, -first, &lever));
-    if d_second < *d_sq && within(&guard, minus) {
+    if d_second < *d_sq && within(&mut guard, minus) {
         *d_sq = d_second;
         fk.set_moved(i, minus, cs_second);
         *sign = -first;
