@@ -1,5 +1,7 @@
 //! Command-line interface. Exit codes: 0 when the scenario evaluated (even
-//! if targets are unreachable), 1 on diagnostics, 2 on usage errors.
+//! if targets are unreachable, or a person's base fits nowhere), 1 on
+//! diagnostics, 2 on usage errors, 3 with `--strict` when the scenario ran
+//! but a person's base fits nowhere in a task's room.
 
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
@@ -51,6 +53,10 @@ struct Evaluate {
     /// Also write DIR/report.json, and a CSV and an SVG heat map per map.
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
+    /// Exit 3 (after the report) if a person's base fits nowhere in a
+    /// task's room; without it that is an answer like any other (exit 0)
+    #[arg(long)]
+    strict: bool,
     #[command(flatten)]
     limits: LimitArgs,
 }
@@ -158,8 +164,20 @@ fn run(registry: &Registry, e: &Evaluate) -> i32 {
             .render(&report, &scenario.format_scene())
             .as_bytes(),
     );
+    let not_placed = report
+        .tasks
+        .iter()
+        .any(|t| matches!(t, reach::report::TaskReport::NotPlaced(_)));
+    if e.strict && not_placed {
+        eprintln!("error: a person's base fits nowhere in a task's room (--strict)");
+        return STRICT_FAILURE;
+    }
     0
 }
+
+/// The exit code of `--strict` when the scenario ran but a person's base
+/// fits nowhere: not 1, which says the input is wrong.
+const STRICT_FAILURE: i32 = 3;
 
 fn unknown_format(registry: &Registry, format: &str) -> i32 {
     eprintln!(

@@ -105,8 +105,10 @@ pub enum ErrorKind {
     },
     #[error("mixing bare numbers from files with different default units")]
     MixedDefaults,
-    #[error("the {base} base of `{person}` fits nowhere in room `{room}`")]
-    FitsNowhere {
+    /// A base the scenario puts outside the room (a fixed base's `at`); a
+    /// mobile base that fits nowhere is an answer of the run, not an error.
+    #[error("the {base} base of `{person}` stands outside room `{room}`")]
+    BaseOutsideRoom {
         person: String,
         base: String,
         room: String,
@@ -197,7 +199,7 @@ impl ErrorKind {
             Illegible { .. } => "reach::range",
             NoEffector { .. } => "reach::name",
             TooLarge { .. } | TooManyStarts { .. } => "reach::limit",
-            FitsNowhere { .. } => "reach::scene",
+            BaseOutsideRoom { .. } => "reach::scene",
             UnknownPlugin { .. }
             | UnknownOption { .. }
             | MissingOption { .. }
@@ -243,7 +245,7 @@ impl ErrorKind {
             TooManyStarts { decl_starts, .. } => {
                 format!("these tasks: up to {} starts", thousands(*decl_starts))
             }
-            FitsNowhere { .. } => "cannot be placed for this task".into(),
+            BaseOutsideRoom { .. } => "cannot be placed for this task".into(),
             Misplaced { .. } => "in a used file".into(),
             Illegible { .. } => "for this size".into(),
             NoLookLink { .. } => "for this person".into(),
@@ -290,10 +292,7 @@ impl ErrorKind {
             TooManyStarts { .. } => Some(
                 "ask less (a coarser `step`, fewer `starts`, `headings` or `blocked_retries`), or raise --max-solver-starts".into(),
             ),
-            FitsNowhere { base, .. } if base == "fixed" => Some("a fixed base must stand inside the room".into()),
-            FitsNowhere { .. } => Some(
-                "no free floor is large enough for its footprint: check the room size, the obstacles, the zone and the clearance".into(),
-            ),
+            BaseOutsideRoom { .. } => Some("a fixed base must stand inside the room: check its `at`".into()),
             Misplaced { .. } => Some("move it to the file you run, which can `use` this one".into()),
             Illegible { .. } => Some(
                 "D_max = size / (5 tan mar_far); the nearest is `near_point`, or size / (5 tan mar_near) when `mar_near` is given: raise the size or lower `near_point`".into(),

@@ -108,7 +108,7 @@ pub fn run_with_progress(scenario: &Scenario, progress: &dyn progress::Progress)
     let tasks = scenario
         .tasks
         .par_iter()
-        .map(|task| task.task.run(&scenario.input(task, progress)))
+        .map(|task| scenario.run_task(task, progress))
         .collect();
     Report {
         schema: report::SCHEMA_VERSION,

@@ -8,8 +8,9 @@ use std::fmt;
 use std::sync::Arc;
 
 use crate::options::Options;
-use crate::plugin::{Base, FormatScene, Subject, Task, TaskInput, TaskPlace};
+use crate::plugin::{Base, Fit, FormatScene, Subject, Task, TaskInput, TaskPlace};
 use crate::progress::Progress;
+use crate::report::{NotPlacedReport, TaskReport};
 use crate::scene::{Person, Room, Surface};
 use crate::span::Span;
 
@@ -108,6 +109,33 @@ impl Scenario {
             effectors: &task.effectors,
             progress,
         }
+    }
+}
+
+impl Scenario {
+    /// Run `task`: its plugin's answer, or, where the person's base fits
+    /// nowhere in the task's room, that answer (and nothing tried).
+    pub fn run_task(&self, task: &TaskSpec, progress: &dyn Progress) -> TaskReport {
+        let input = self.input(task, progress);
+        let Fit::Nowhere(misfit) = input.base.fit(input.room) else {
+            return task.task.run(&input);
+        };
+        let label = match task.kind.as_str() {
+            "reach_and_gaze" => "reach+gaze",
+            "reach" => "reach",
+            "gaze" => "gaze",
+            "map" => "map",
+            "gaze_map" => "gaze_map",
+            _ => "task",
+        };
+        TaskReport::NotPlaced(NotPlacedReport::new(
+            label,
+            input.subject.name(),
+            &input.person.name,
+            &input.person.base.name,
+            &input.room.name,
+            &misfit,
+        ))
     }
 }
 

@@ -35,6 +35,49 @@ fn run_prints_a_table_and_exits_0_even_when_a_target_is_unreachable() {
     );
 }
 
+/// A person whose chair fits nowhere in the room is an answer: the other
+/// person's answers are given, the run exits 0, and `--strict` makes it
+/// exit 3 (not 1, which says the input is wrong) after the same report.
+#[test]
+fn a_chair_that_fits_nowhere_is_an_answer_and_strict_exits_3() {
+    let o = reach(&["run", "examples/galley.reach"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let out = stdout(&o);
+    let row = |target: &str, person: &str| {
+        out.lines()
+            .find(|l| {
+                let words: Vec<&str> = l.split_whitespace().collect();
+                words.get(1) == Some(&target) && words.get(2) == Some(&person)
+            })
+            .unwrap_or_else(|| panic!("no row for {target} by {person}:\n{out}"))
+            .to_string()
+    };
+    assert!(row("kettle", "ann").contains(" reachable"), "{out}");
+    assert!(row("kettle", "bob").contains("does NOT fit"), "{out}");
+    assert!(
+        out.contains("would fit only at 98.5 % of its size (about 699 mm wide)"),
+        "{out}"
+    );
+    let strict = reach(&["run", "--strict", "examples/galley.reach"]);
+    assert_eq!(strict.status.code(), Some(3), "{}", stderr(&strict));
+    assert_eq!(stdout(&strict), out, "the same report, then the exit code");
+    assert!(stderr(&strict).contains("--strict"), "{}", stderr(&strict));
+    let json = stdout(&reach(&[
+        "run",
+        "--format",
+        "json",
+        "examples/galley.reach",
+    ]));
+    let report: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let bob = &report["tasks"][1];
+    assert_eq!(bob["kind"], "not_placed", "{bob}");
+    assert_eq!(bob["footprint_mm"][1], 710.0, "{bob}");
+    assert_eq!(bob["ok"], false);
+    // Without a person who does not fit, --strict changes nothing.
+    let fine = reach(&["run", "--strict", "examples/kitchen.reach"]);
+    assert_eq!(fine.status.code(), Some(0), "{}", stderr(&fine));
+}
+
 #[test]
 fn json_report_has_the_documented_fields() {
     let o = reach(&["run", "examples/kitchen.reach", "--format", "json"]);

@@ -5,8 +5,8 @@ use nalgebra::{Point3, Vector3};
 use super::search::{search, Candidate};
 use crate::kinematics::{Chain, Posture};
 use crate::plugin::{
-    Base, BaseError, BasePlugin, BasePose, Hips, Options, ParamSpec, Params, Placement, Plugin,
-    PreparedBase, ReachQuery, Settings, Solver,
+    Base, BaseError, BasePlugin, BasePose, Fit, Hips, Options, ParamSpec, Params, Placement,
+    Plugin, PreparedBase, ReachQuery, Settings, Solver,
 };
 use crate::scene::{IkSolution, OwnBody, Physique, Room};
 
@@ -86,8 +86,12 @@ impl Base for FixedBase {
     }
 
     /// The hip point must be inside the room.
-    fn fits(&self, room: &Room) -> bool {
-        room.contains(&self.pose.position_mm)
+    fn fit(&self, room: &Room) -> Fit {
+        if room.contains(&self.pose.position_mm) {
+            Fit::Fits
+        } else {
+            Fit::Outside
+        }
     }
 
     fn prepare<'a>(&'a self, _: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a> {

@@ -25,11 +25,11 @@ use rand_chacha::ChaCha8Rng;
 use super::capability::Capability;
 use super::placing::{Approach, Placing};
 use super::search::{search, Candidate};
-use crate::floor::{FloorObstacles, Footprint, Region};
+use crate::floor::{FloorObstacles, Footprint, Misfit, Region};
 use crate::geometry::Solid;
 use crate::kinematics::Chain;
 use crate::plugin::{
-    Base, BasePose, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Solver, Tries,
+    Base, BasePose, Fit, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Solver, Tries,
 };
 use crate::scene::{column_solid, OwnBody, Physique, Room};
 use crate::solvers::random_posture;
@@ -47,6 +47,8 @@ pub struct Mobile {
     pub own: OwnBody,
     /// The regions of each room, by name, worked out once.
     regions: Mutex<HashMap<String, Arc<OnceLock<Regions>>>>,
+    /// Where it fits nowhere, by how much, by room name.
+    misfits: Mutex<HashMap<String, Arc<OnceLock<Misfit>>>>,
 }
 
 /// The most candidates a reach takes from the capability map, and the most
@@ -62,6 +64,7 @@ impl Mobile {
             placing,
             own,
             regions: Mutex::default(),
+            misfits: Mutex::default(),
         }
     }
 
@@ -113,12 +116,29 @@ impl Mobile {
         headings.map(|h| (h, region(h))).collect()
     }
 
-    /// Whether the base fits anywhere in the room.
-    pub fn fits(&self, room: &Room) -> bool {
+    /// Whether the base fits anywhere in the room, and if not, by how
+    /// much it misses (worked out once per room).
+    pub fn fit(&self, room: &Room) -> Fit {
         let regions = self.regions(room);
-        regions
+        let fits = regions
             .get()
-            .is_some_and(|r| r.iter().any(|(_, r)| !r.is_empty()))
+            .is_some_and(|r| r.iter().any(|(_, r)| !r.is_empty()));
+        if fits {
+            return Fit::Fits;
+        }
+        let cell = {
+            let mut by_room = self.misfits.lock().unwrap_or_else(|e| e.into_inner());
+            Arc::clone(by_room.entry(room.name.clone()).or_default())
+        };
+        let misfit = cell.get_or_init(|| {
+            Misfit::of(
+                room,
+                &self.footprint,
+                &self.placing.headings,
+                self.placing.zone,
+            )
+        });
+        Fit::Nowhere(*misfit)
     }
 
     /// Ready for reaches in `room`: the regions, the capability map and the
@@ -144,8 +164,8 @@ impl Base for Mobile {
         Some(self.hip_height_mm)
     }
 
-    fn fits(&self, room: &Room) -> bool {
-        Mobile::fits(self, room)
+    fn fit(&self, room: &Room) -> Fit {
+        Mobile::fit(self, room)
     }
 
     fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a> {
@@ -349,8 +369,9 @@ fn workspace_centre(chain: &Chain) -> Vector2<f64> {
     sum / f64::from(n)
 }
 
-/// What is reported when the base fits nowhere (the checker refuses such
-/// scenarios, so this is a last resort): no distance, the neutral posture.
+/// What is reported when no candidate placement is left (a task whose
+/// base fits nowhere is answered before it runs, so this is a last
+/// resort): no distance, the neutral posture.
 fn nowhere(room: &Room, chain: &Chain) -> Placement {
     Placement {
         pose: BasePose {

@@ -47,7 +47,7 @@ impl TaskCache {
                 if self.results.contains_key(k) {
                     return None;
                 }
-                Some(task.task.run(&scenario.input(task, progress)))
+                Some(scenario.run_task(task, progress))
             })
             .collect();
         let ran = fresh.iter().filter(|r| r.is_some()).count();

@@ -7,7 +7,7 @@ use std::sync::Arc;
 use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::names::suggest;
-use crate::plugin::{Base, PluginKind, SubjectKind, Task};
+use crate::plugin::{Base, Fit, PluginKind, SubjectKind, Task};
 use crate::scenario::{SubjectRef, TaskSpec};
 use crate::scene::{Person, Room, FACES};
 use crate::span::{Span, Spanned};
@@ -169,7 +169,9 @@ impl Checker<'_> {
         ));
     }
 
-    /// Each person's base must fit somewhere in the room of each subject.
+    /// Each person's base must be placed inside the room of each subject
+    /// (a mobile base that fits nowhere is an answer of the run, not a
+    /// mistake in the input).
     fn check_bases_fit(
         &mut self,
         decl: &TaskDecl,
@@ -186,9 +188,9 @@ impl Checker<'_> {
                     continue;
                 }
                 checked.push(*room);
-                if !bases[person].fits(&rooms[*room]) {
+                if bases[person].fit(&rooms[*room]) == Fit::Outside {
                     self.error(Error::new(
-                        ErrorKind::FitsNowhere {
+                        ErrorKind::BaseOutsideRoom {
                             person: persons[person].name.clone(),
                             base: persons[person].base.name.clone(),
                             room: rooms[*room].name.clone(),

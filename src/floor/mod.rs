@@ -2,11 +2,13 @@
 //! a rectangle for a wheelchair, or the solids of a chair and legs) placed
 //! in a room, the room's boxes and meshes as the footprint's parts meet
 //! them, and the admissible region of hip points where it fits, computed
-//! with the `geo` polygon library a tile at a time.
+//! with the `geo` polygon library a tile at a time; where it fits nowhere,
+//! by how much (`misfit.rs`).
 
 mod footprint;
 mod inside;
 mod mesh_cells;
+mod misfit;
 mod obstacles;
 mod region;
 mod tiles;
@@ -14,6 +16,7 @@ mod tiles;
 pub use footprint::{FloorPart, Footprint};
 pub use inside::Inside;
 pub use mesh_cells::{CELL_MM, FLOOR_TOLERANCE_MM};
+pub use misfit::Misfit;
 pub use obstacles::FloorObstacles;
 pub use region::{admissible, Zone};
 pub use tiles::Region;

@@ -8,7 +8,7 @@ use nalgebra::Point3;
 
 use super::{IkProblem, Options, Plugin, SettingsError, Solver};
 use crate::collision::{Obstacles, PlacedObstacles};
-use crate::floor::Footprint;
+use crate::floor::{Footprint, Misfit};
 use crate::kinematics::{Chain, Posture};
 use crate::scene::{BasePose, OwnBody, Physique, Placement, Room};
 
@@ -125,9 +125,10 @@ pub trait Base: Send + Sync {
     fn hip_height_mm(&self) -> Option<f64> {
         None
     }
-    /// Whether the base can be anywhere in the room at all; the checker
-    /// refuses a task whose base fits nowhere.
-    fn fits(&self, room: &Room) -> bool;
+    /// Whether the base can be anywhere in the room at all: the checker
+    /// refuses a base the scenario puts outside the room; a task whose
+    /// base fits nowhere is answered "does not fit".
+    fn fit(&self, room: &Room) -> Fit;
     /// Get ready for reaches in `room` with `chain` (caching what does not
     /// depend on the target, such as where the base fits).
     fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a>;
@@ -144,6 +145,17 @@ pub trait Base: Send + Sync {
     fn footprint(&self) -> Option<&Footprint> {
         None
     }
+}
+
+/// Whether a base can be anywhere in a room.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Fit {
+    Fits,
+    /// The scenario puts it outside the room (a fixed base's position): a
+    /// mistake in the input.
+    Outside,
+    /// It fits nowhere, by this much: the person's answer.
+    Nowhere(Misfit),
 }
 
 /// A base ready for one room and one chain.

@@ -11,7 +11,9 @@ mod registry;
 mod solver;
 mod task;
 
-pub use base::{Base, BaseError, BasePlugin, Hips, PreparedBase, ReachQuery, Retry, Search, Tries};
+pub use base::{
+    Base, BaseError, BasePlugin, Fit, Hips, PreparedBase, ReachQuery, Retry, Search, Tries,
+};
 pub use format::{FormatPlugin, FormatScene, TaskPlace};
 pub use registry::Registry;
 pub use solver::{work_ratio, IkProblem, Solver, SolverPlugin};

@@ -13,6 +13,7 @@
 mod answer;
 mod gaze;
 mod map;
+mod not_placed;
 mod parts;
 mod reach;
 mod reach_and_gaze;
@@ -20,6 +21,7 @@ mod reach_and_gaze;
 pub use answer::{Answer, Figure};
 pub use gaze::{GazeReport, Sight};
 pub use map::{MapCell, MapReport};
+pub use not_placed::NotPlacedReport;
 pub use parts::{deg, fixed, mm, Asked, BaseReport, Names, Posture};
 pub use reach::ReachReport;
 pub use reach_and_gaze::ReachAndGazeReport;
@@ -52,6 +54,9 @@ pub enum TaskReport {
     #[serde(rename = "reach_and_gaze")]
     ReachAndGaze(Box<ReachAndGazeReport>),
     Map(MapReport),
+    /// The person's base fits nowhere in the task's room.
+    #[serde(rename = "not_placed")]
+    NotPlaced(NotPlacedReport),
 }
 
 /// What every kind of task report says of itself.
@@ -69,6 +74,7 @@ impl TaskReport {
             TaskReport::Gaze(g) => g,
             TaskReport::ReachAndGaze(b) => b.as_ref(),
             TaskReport::Map(m) => m,
+            TaskReport::NotPlaced(n) => n,
         }
     }
 

@@ -278,6 +278,8 @@ fn task_view(task: &TaskReport, place: &TaskPlace, scene: &FormatScene<'_>) -> T
             postures.push((&rg.gaze.base, &rg.gaze.posture));
         }
         TaskReport::Map(m) => view.cells = Some(cells(m)),
+        // No person is placed: the room and the words say it.
+        TaskReport::NotPlaced(_) => {}
     }
     if let Some(&(base, _)) = postures.first() {
         let person = place.person;
