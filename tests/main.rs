@@ -23,3 +23,4 @@ mod retry;
 mod stdlib;
 mod urdf;
 mod watch;
+mod why;

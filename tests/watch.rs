@@ -98,7 +98,7 @@ fn watch_follows_every_way_of_saving() {
     let tmp = dir.path().join(".watched.reach.tmp");
     std::fs::write(&tmp, scenario(0)).unwrap();
     std::fs::rename(&tmp, &file).unwrap();
-    w.expect("mug by ben: NOT reachable -> reachable", 1);
+    w.expect("mug by ben: NOT reachable: out of reach -> reachable", 1);
 
     // Deleted and created again.
     std::fs::remove_file(&file).unwrap();
@@ -110,7 +110,7 @@ fn watch_follows_every_way_of_saving() {
     std::fs::write(&file, scenario(0) + "room {\n").unwrap();
     w.expect("errors found", 1);
     std::fs::write(&file, scenario(0)).unwrap();
-    w.expect("mug by ben: NOT reachable -> reachable", 2);
+    w.expect("mug by ben: NOT reachable: out of reach -> reachable", 2);
 
     // The used file changes.
     std::fs::write(dir.path().join("parts.reach"), PARTS.replace("960", "2500")).unwrap();
@@ -186,7 +186,10 @@ fn watch_follows_a_mesh_file_and_a_moved_mesh() {
 
     // The OBJ file is edited: the crate moves away from the mug.
     std::fs::write(&obj, cube_obj([2500.0, 1000.0, 920.0], 300.0)).unwrap();
-    w.expect("mug by ben: NOT reachable -> reachable", 1);
+    w.expect(
+        "mug by ben: NOT reachable: blocked by `crate` -> reachable",
+        1,
+    );
 
     // The scenario moves the mesh back over the mug.
     std::fs::write(&file, scenario(-2250)).unwrap();
@@ -216,7 +219,7 @@ fn watch_follows_links_remade_directories_and_is_not_held_by_a_fifo() {
     std::fs::write(&target, text(1500)).unwrap();
     w.expect("mug by ben: reachable -> NOT reachable", 1);
     std::fs::write(&target, text(0)).unwrap();
-    w.expect("mug by ben: NOT reachable -> reachable", 1);
+    w.expect("mug by ben: NOT reachable: out of reach -> reachable", 1);
 
     // The used file's directory goes, then comes back with another file.
     std::fs::remove_dir_all(&sub).unwrap();
@@ -237,5 +240,5 @@ fn watch_follows_links_remade_directories_and_is_not_held_by_a_fifo() {
     w.expect("errors found", 3);
     std::fs::remove_file(sub.join("parts.reach")).unwrap();
     std::fs::write(sub.join("parts.reach"), PARTS).unwrap();
-    w.expect("mug by ben: NOT reachable -> reachable", 2);
+    w.expect("mug by ben: NOT reachable: out of reach -> reachable", 2);
 }

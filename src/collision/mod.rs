@@ -38,6 +38,9 @@ pub struct Obstacles {
     size_mm: Vector3<f64>,
     /// How close a solid may come to an obstacle.
     clearance_mm: f64,
+    /// The room's sides that count (all six, but where a search asks what
+    /// it would reach without one).
+    walls: Vec<Wall>,
 }
 
 const WALLS: [Wall; 6] = [
@@ -85,6 +88,35 @@ impl Obstacles {
             meshes,
             size_mm: room.size_mm,
             clearance_mm,
+            walls: WALLS.to_vec(),
+        }
+    }
+
+    /// These obstacles but for `removed` (the room's obstacles and sides
+    /// among them): what a search asks to learn whether one of them is
+    /// what stopped it. A removed box keeps its index, with no extent.
+    pub fn without(&self, removed: &[Blocker]) -> Obstacles {
+        let mut rest = self.clone();
+        for (i, (_, _, bounds)) in rest.boxes.iter_mut().enumerate() {
+            if removed.contains(&Blocker::Obstacle(i)) {
+                *bounds = [
+                    Point3::from([f64::INFINITY; 3]),
+                    Point3::from([f64::NEG_INFINITY; 3]),
+                ];
+            }
+        }
+        rest.meshes
+            .retain(|m| !removed.contains(&Blocker::Obstacle(m.index)));
+        rest.walls.retain(|w| !removed.contains(&Blocker::Wall(*w)));
+        rest
+    }
+
+    /// None of the room's obstacles or sides, in a room of this size.
+    pub fn none_of(&self) -> Obstacles {
+        Obstacles {
+            size_mm: self.size_mm,
+            clearance_mm: self.clearance_mm,
+            ..Obstacles::default()
         }
     }
 
@@ -103,33 +135,45 @@ impl Obstacles {
     /// The first obstacle (boxes, then meshes, then the room's sides) that
     /// `capsule` (in the room frame) overlaps.
     pub fn capsule_hit(&self, capsule: &Capsule) -> Option<Blocker> {
+        self.capsule_hits(capsule).next()
+    }
+
+    /// Every obstacle `capsule` overlaps, in that order (lazily: the first
+    /// costs what it costs to find).
+    pub fn capsule_hits<'a>(&'a self, capsule: &'a Capsule) -> impl Iterator<Item = Blocker> + 'a {
         let r = capsule.radius_mm + self.clearance_mm;
-        let reach = |[lo, hi]: &[Point3<f64>; 2]| {
-            let [clo, chi] = capsule.bounds();
+        let [clo, chi] = capsule.bounds();
+        let reach = move |[lo, hi]: &[Point3<f64>; 2]| {
             (0..3)
                 .all(|i| chi[i] + self.clearance_mm >= lo[i] && clo[i] - self.clearance_mm <= hi[i])
         };
-        let touches = |d: f64| d < r.max(1e-9);
-        if let Some(i) = self.boxes.iter().position(|(_, cuboid, bounds)| {
-            reach(bounds) && touches(cuboid.distance_to_segment(&capsule.a, &capsule.b))
-        }) {
-            return Some(Blocker::Obstacle(i));
-        }
-        if let Some(m) = self
-            .meshes
+        let touches = move |d: f64| d < r.max(1e-9);
+        let boxes = self
+            .boxes
             .iter()
-            .find(|m| reach(&m.bounds) && mesh_touches(m, capsule, r.max(1e-9)))
-        {
-            return Some(Blocker::Obstacle(m.index));
-        }
-        self.wall_hit(capsule, r)
+            .enumerate()
+            .filter_map(move |(i, (_, cuboid, bounds))| {
+                (reach(bounds) && touches(cuboid.distance_to_segment(&capsule.a, &capsule.b)))
+                    .then_some(Blocker::Obstacle(i))
+            });
+        let meshes = self.meshes.iter().filter_map(move |m| {
+            (reach(&m.bounds) && mesh_touches(m, capsule, r.max(1e-9)))
+                .then_some(Blocker::Obstacle(m.index))
+        });
+        boxes.chain(meshes).chain(self.walls_hit(capsule, r))
     }
 
     /// The first of the room's sides the capsule's points come within `r`
     /// of, or pass beyond.
     fn wall_hit(&self, c: &Capsule, r: f64) -> Option<Blocker> {
+        self.walls_hit(c, r).next()
+    }
+
+    /// Each of the room's sides the capsule's points come within `r` of,
+    /// or pass beyond.
+    fn walls_hit<'a>(&'a self, c: &'a Capsule, r: f64) -> impl Iterator<Item = Blocker> + 'a {
         let size = self.size_mm;
-        WALLS.into_iter().find_map(|wall| {
+        self.walls.iter().filter_map(move |&wall| {
             let gap = |p: &Point3<f64>| match wall {
                 Wall::Floor => p.z,
                 Wall::Ceiling => size.z - p.z,
@@ -162,6 +206,8 @@ impl Obstacles {
             .boxes
             .iter()
             .enumerate()
+            // A removed box has no extent (`without`).
+            .filter(|(_, (_, _, [lo, hi]))| lo.x <= hi.x)
             .filter_map(|(i, (_, cuboid, _))| {
                 entry_along(cuboid, eye, &end).map(|t| (Blocker::Obstacle(i), t * max))
             });

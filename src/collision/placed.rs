@@ -87,6 +87,43 @@ impl PlacedObstacles<'_> {
     }
 }
 
+impl PlacedObstacles<'_> {
+    /// Everything the solids of `chain` in posture `q` overlap, each once,
+    /// from the base out: the person's own parts, the room's obstacles
+    /// and sides, and the chain's own solids that another passes through
+    /// (what a failed search met, to be tried without).
+    pub fn posture_hits(&self, chain: &Chain, q: &[f64], end_allowance_mm: f64) -> Vec<Blocker> {
+        let v = chain.volumes(q);
+        let end = Owner::Link(chain.joints.len());
+        let mut met: Vec<Blocker> = Vec::new();
+        let mut add = |b: Blocker| {
+            if !met.contains(&b) {
+                met.push(b);
+            }
+        };
+        for (capsule, &part) in v.capsules.iter().zip(&v.owners) {
+            let tested = match part {
+                p if p == end => match shortened(capsule, end_allowance_mm) {
+                    Some(c) => c,
+                    None => continue,
+                },
+                _ => *capsule,
+            };
+            self.own.hits(&tested).for_each(|i| add(Blocker::Own(i)));
+            let room = Capsule::new(
+                self.base_pose.to_room(&tested.a),
+                self.base_pose.to_room(&tested.b),
+                tested.radius_mm,
+            );
+            self.obstacles.capsule_hits(&room).for_each(&mut add);
+        }
+        if let Some((i, _)) = v.self_hit() {
+            add(Blocker::Body(v.owners[i]));
+        }
+        met
+    }
+}
+
 /// The effector's link as it is checked: ending its radius short of the
 /// effector, and `allowance_mm` (the tolerance) thinner. The hand may so
 /// touch what it reaches with its end (fingers on a switch on a wall), or

@@ -17,6 +17,7 @@ mod not_placed;
 mod parts;
 mod reach;
 mod reach_and_gaze;
+mod why;
 
 pub use answer::{Answer, Figure};
 pub use gaze::{GazeReport, Sight};
@@ -25,6 +26,7 @@ pub use not_placed::NotPlacedReport;
 pub use parts::{deg, fixed, mm, Asked, BaseReport, Names, Posture};
 pub use reach::ReachReport;
 pub use reach_and_gaze::ReachAndGazeReport;
+pub use why::{Why, WIDENED_DEG};
 
 use serde::Serialize;
 

@@ -7,7 +7,7 @@ use nalgebra::Point3;
 use serde::Serialize;
 
 use super::parts::{point, COMFORT_TOLERANCE, DISTANCE_TOLERANCE_MM};
-use super::{fixed, mm, Answer, Asked, BaseReport, Figure, Posture, ReportKind};
+use super::{fixed, mm, Answer, Asked, BaseReport, Figure, Posture, ReportKind, Why};
 use crate::scene::Placement;
 
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -37,6 +37,11 @@ pub struct ReachReport {
     pub posture: Posture,
     pub effector_mm: [f64; 3],
     pub target_mm: [f64; 3],
+    /// Why the target was not reached, found by searching again without
+    /// what may have stopped it (the room's obstacles; or the person's own
+    /// body and the joints' limits, each alone enough; or out of reach);
+    /// empty when it was reached.
+    pub why: Vec<Why>,
 }
 
 impl ReachReport {
@@ -61,15 +66,19 @@ impl ReachReport {
             posture: Posture::new(chain, q),
             effector_mm: point(effector_room),
             target_mm: point(target),
+            why: Vec::new(),
         }
     }
 
     /// `reachable` or `NOT reachable`.
-    pub fn verdict(&self) -> &'static str {
-        if self.ok {
-            "reachable"
-        } else {
-            "NOT reachable"
+    pub fn verdict(&self) -> String {
+        match (self.why.as_slice(), self.ok) {
+            (_, true) => "reachable".into(),
+            ([], false) => "NOT reachable".into(),
+            (why, false) => {
+                let short: Vec<String> = why.iter().map(Why::short).collect();
+                format!("NOT reachable: {}", short.join("; "))
+            }
         }
     }
 
@@ -92,7 +101,7 @@ impl ReportKind for ReachReport {
             subject: self.name.clone(),
             person: self.person.clone(),
             ok: self.ok,
-            verdict: self.verdict().to_string(),
+            verdict: self.verdict(),
             figures: self.figures(),
         }
     }
@@ -108,6 +117,9 @@ impl ReportKind for ReachReport {
         self.posture.write_line(out, "deg");
         if let (Some(part), Some(what)) = (&self.collision_part, &self.collision) {
             let _ = writeln!(out, "  {part} passes through {}", quoted(what));
+        }
+        for why in &self.why {
+            let _ = writeln!(out, "  why: {}", why.sentence());
         }
     }
 }

@@ -80,19 +80,31 @@ impl OwnBody {
     /// The first solid (by index) that `capsule` (in the base frame)
     /// overlaps, but for its part within the pelvis.
     pub fn hit(&self, capsule: &Capsule) -> Option<usize> {
-        let apart = |[lo, hi]: &[Point3<f64>; 2], b: &[Point3<f64>; 2]| {
+        self.hits(capsule).next()
+    }
+
+    /// Every part `capsule` overlaps, by index, as [`OwnBody::hit`] finds
+    /// the first.
+    pub fn hits<'a>(&'a self, capsule: &Capsule) -> impl Iterator<Item = usize> + 'a {
+        fn apart([lo, hi]: &[Point3<f64>; 2], b: &[Point3<f64>; 2]) -> bool {
             (0..3).any(|i| hi[i] < b[0][i] || lo[i] > b[1][i])
-        };
+        }
         // Most links are nowhere near the legs or the chair: the bounds
         // say so before the pelvis is cut away.
         let whole = capsule.bounds();
-        if self.bounds.iter().all(|b| apart(&whole, b)) {
-            return None;
-        }
-        let c = self.outside_pelvis(capsule)?;
-        let cut = c.bounds();
-        self.solids.iter().zip(&self.bounds).position(|(s, b)| {
-            !apart(&cut, b) && s.shape.distance_to_segment(&c.a, &c.b) < c.radius_mm.max(1e-9)
+        let near = !self.bounds.iter().all(|b| apart(&whole, b));
+        let cut = near.then(|| self.outside_pelvis(capsule)).flatten();
+        cut.into_iter().flat_map(move |c| {
+            let cut = c.bounds();
+            self.solids
+                .iter()
+                .zip(&self.bounds)
+                .enumerate()
+                .filter(move |(_, (s, b))| {
+                    !apart(&cut, b)
+                        && s.shape.distance_to_segment(&c.a, &c.b) < c.radius_mm.max(1e-9)
+                })
+                .map(|(i, _)| i)
         })
     }
 

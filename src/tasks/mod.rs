@@ -8,6 +8,7 @@ mod gaze_map;
 mod map;
 mod reach;
 mod reach_and_gaze;
+mod why;
 
 pub use common::{mix_seed, Common};
 pub use gaze::Gaze;

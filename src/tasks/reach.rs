@@ -3,6 +3,7 @@
 use super::common::{
     chain_of, mix_seed, Common, CommonDecl, Reaching, INCREMENTAL, THOROUGH_RETRY,
 };
+use super::why::{Failed, Found};
 use crate::plugin::{
     Dependence, EffectorNeed, Options, ParamSpec, Params, Plugin, Registry, Search, Settings,
     SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
@@ -87,18 +88,37 @@ impl Task for ReachTask {
         };
         let chain = chain_of(input, 0);
         let obstacles = reaching.obstacles(input.room);
+        let seed = mix_seed(reaching.common.seed, &[&target.name, &input.person.name]);
         let query = reaching.query(
             target.position_mm,
-            mix_seed(reaching.common.seed, &[&target.name, &input.person.name]),
+            seed,
             Search::MostComfortable,
             obstacles.as_ref(),
             input.base.own_body(),
         );
-        let placement = input
+        let mut placement = input
             .base
             .prepare(input.room, &chain)
             .reach(&query, reaching.solver.as_ref());
+        let mut why = Vec::new();
+        if !placement.solution.reaches(reaching.common.tolerance_mm) {
+            let failed = Failed {
+                reaching,
+                input,
+                chain: &chain,
+                target_mm: target.position_mm,
+                seed,
+                obstacles: obstacles.as_ref(),
+                placement: &placement,
+            };
+            match failed.why() {
+                Found::Why(w) => why = w,
+                Found::Reached(p) => placement = p,
+            }
+        }
         let asked = reaching.asked(&target.name, input, &chain, &placement);
-        TaskReport::Reach(ReachReport::new(&asked, &placement, target.position_mm))
+        let mut report = ReachReport::new(&asked, &placement, target.position_mm);
+        report.why = why;
+        TaskReport::Reach(report)
     }
 }

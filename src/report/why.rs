@@ -1,0 +1,78 @@
+//! Why a target was not reached, found rather than guessed: the search is
+//! run again without each thing that may have stopped it (the room's
+//! obstacles it met, the person's own body and chair, the joints' limits
+//! widened by 10 degrees), and the answer names what, once removed, lets
+//! the hand reach; "out of reach" only when nothing removed helps.
+
+use serde::Serialize;
+
+use super::mm;
+use super::reach::quoted;
+
+/// How far each joint's limits are widened to learn whether they are what
+/// stopped a reach.
+pub const WIDENED_DEG: f64 = 10.0;
+
+/// What stopped a reach.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(tag = "cause", rename_all = "snake_case")]
+pub enum Why {
+    /// The room's obstacles (or sides) named: without any one of them the
+    /// hand reaches (`together`: only without all of them).
+    Obstacles { names: Vec<String>, together: bool },
+    /// The person's own body or chair (the parts named): with the room's
+    /// obstacles gone the hand still does not reach, without these too it
+    /// does.
+    Body { names: Vec<String> },
+    /// The joints' limits: each widened by 10 degrees, the hand reaches,
+    /// these joints going beyond their limits.
+    JointLimits { joints: Vec<String> },
+    /// Out of the arm's reach with nothing in the way: with the room's
+    /// obstacles and the person's own body gone, the hand comes this close
+    /// at best.
+    OutOfReach { closest_mm: f64 },
+}
+
+impl Why {
+    pub fn out_of_reach(closest_mm: f64) -> Self {
+        Why::OutOfReach {
+            closest_mm: mm(closest_mm),
+        }
+    }
+
+    /// In a few words, for the text report's verdict.
+    pub fn short(&self) -> String {
+        match self {
+            Why::Obstacles { names, together } => {
+                let names: Vec<String> = names.iter().map(|n| quoted(n)).collect();
+                let and = if *together { " together" } else { "" };
+                format!(
+                    "blocked by {}{and}",
+                    names.join(if *together { " and " } else { " or " })
+                )
+            }
+            Why::Body { names } => format!("blocked by {}", names.join(" and ")),
+            Why::JointLimits { .. } => "at the joints' limits".into(),
+            Why::OutOfReach { .. } => "out of reach".into(),
+        }
+    }
+
+    /// In a sentence, for the text report's details.
+    pub fn sentence(&self) -> String {
+        match self {
+            Why::Obstacles { together: false, .. } | Why::Body { .. } => {
+                format!("{}: without it, the hand reaches", self.short())
+            }
+            Why::Obstacles { together: true, .. } => {
+                format!("{}: without all of them (not without one), the hand reaches", self.short())
+            }
+            Why::JointLimits { joints } => format!(
+                "at the joints' limits: with each widened {WIDENED_DEG} deg, the hand reaches, {} beyond",
+                joints.join(", ")
+            ),
+            Why::OutOfReach { closest_mm } => format!(
+                "out of reach with nothing in the way: without the room's obstacles and the person's own body, the hand comes no closer than {closest_mm:.1} mm"
+            ),
+        }
+    }
+}

@@ -1,0 +1,222 @@
+//! Why a reach failed, found by searching again (the corrections of issue
+//! 14): first without the room's obstacles and sides (if the hand then
+//! reaches, each of those its posture met is removed alone, the first
+//! three at most, and the one whose removal lets the hand reach is named);
+//! then without the person's own body and chair too (the parts the free
+//! posture passes through are named); then with every joint's limits
+//! widened by [`WIDENED_DEG`] (the joints that go beyond are named); else
+//! the target is out of reach with nothing in the way, and the closest the
+//! bare arm comes is given.
+//!
+//! A search without a constraint may find a posture that keeps it after
+//! all (a seed that the first search did not try): then the target is
+//! reachable, and that placement is the answer.
+
+use nalgebra::Point3;
+
+use super::common::Reaching;
+use crate::collision::{Obstacles, PlacedObstacles};
+use crate::kinematics::{Chain, JointKind};
+use crate::plugin::{Placement, Search, TaskInput};
+use crate::report::{Names, Why, WIDENED_DEG};
+use crate::scene::{Blocker, OwnBody};
+
+/// How many of the room's obstacles a failed reach met are each tried
+/// without.
+const TRIED_WITHOUT: usize = 3;
+
+/// A reach that failed, and what it was asked.
+pub(super) struct Failed<'a> {
+    pub reaching: &'a Reaching,
+    pub input: &'a TaskInput<'a>,
+    pub chain: &'a Chain,
+    pub target_mm: Point3<f64>,
+    pub seed: u64,
+    pub obstacles: Option<&'a Obstacles>,
+    /// The failed search's kept placement.
+    pub placement: &'a Placement,
+}
+
+/// What searching again found.
+pub(super) enum Found {
+    /// What stopped it: the room's obstacles alone; or the person's own
+    /// body, the joints' limits, or both (each alone would let the hand
+    /// reach); or neither (out of reach).
+    Why(Vec<Why>),
+    /// A posture that keeps every constraint after all: the target is
+    /// reachable from this placement.
+    Reached(Placement),
+}
+
+impl Failed<'_> {
+    pub fn why(&self) -> Found {
+        let own = self.input.base.own_body();
+        let mut closest_mm = self.placement.solution.distance_mm;
+        let mut found = Vec::new();
+        if let Some(obstacles) = self.obstacles {
+            let no_room = obstacles.none_of();
+            let free = self.solve(self.chain, Some(&no_room), own);
+            if self.reaches(&free) {
+                return self.blocked_by_room(obstacles, &free);
+            }
+            let bare = self.solve(self.chain, None, &OwnBody::default());
+            if self.reaches(&bare) {
+                found.push(self.blocked_by_body(&no_room, &bare));
+            } else {
+                closest_mm = bare.solution.distance_mm;
+            }
+        }
+        let widened = widen(self.chain);
+        let loose = self.solve(&widened, self.obstacles, own);
+        if self.reaches(&loose) {
+            let beyond = beyond_limits(self.chain, &loose.solution.q);
+            if beyond.is_empty() && self.valid(&loose) {
+                return Found::Reached(loose);
+            }
+            if !beyond.is_empty() {
+                found.push(Why::JointLimits { joints: beyond });
+            }
+        }
+        if found.is_empty() {
+            found.push(Why::out_of_reach(closest_mm));
+        }
+        Found::Why(found)
+    }
+
+    /// The person's own body is in the way (`bare` reached without it and
+    /// the room): which of its parts, each tried without alone (a part of
+    /// the moving arm itself cannot be, and is named as met).
+    fn blocked_by_body(&self, no_room: &Obstacles, bare: &Placement) -> Why {
+        let own = self.input.base.own_body();
+        let placed = PlacedObstacles {
+            obstacles: no_room,
+            own,
+            base_pose: bare.pose,
+        };
+        let met = placed.posture_hits(self.chain, &bare.solution.q, self.tolerance());
+        for &blocker in met.iter().take(TRIED_WITHOUT) {
+            let Blocker::Own(i) = blocker else { continue };
+            let mut without = own.clone();
+            without.solids.remove(i);
+            let tried = self.solve(self.chain, Some(no_room), &without);
+            if self.reaches(&tried) {
+                return Why::Body {
+                    names: vec![self.name(blocker)],
+                };
+            }
+        }
+        Why::Body {
+            names: met.into_iter().map(|b| self.name(b)).collect(),
+        }
+    }
+
+    /// The room is in the way (`free` reached without it): which of the
+    /// obstacles and sides it met.
+    fn blocked_by_room(&self, obstacles: &Obstacles, free: &Placement) -> Found {
+        if self.valid(free) {
+            return Found::Reached(free.clone());
+        }
+        let own = self.input.base.own_body();
+        let placed = PlacedObstacles {
+            obstacles,
+            own,
+            base_pose: free.pose,
+        };
+        let met: Vec<Blocker> = placed
+            .posture_hits(self.chain, &free.solution.q, self.tolerance())
+            .into_iter()
+            .filter(|b| matches!(b, Blocker::Obstacle(_) | Blocker::Wall(_)))
+            .collect();
+        for &blocker in met.iter().take(TRIED_WITHOUT) {
+            let without = obstacles.without(&[blocker]);
+            let tried = self.solve(self.chain, Some(&without), own);
+            if self.reaches(&tried) {
+                if self.valid(&tried) {
+                    return Found::Reached(tried);
+                }
+                let names = vec![self.name(blocker)];
+                return Found::Why(vec![Why::Obstacles {
+                    names,
+                    together: false,
+                }]);
+            }
+        }
+        let together = met.len() > 1;
+        let names = met.into_iter().map(|b| self.name(b)).collect();
+        Found::Why(vec![Why::Obstacles { names, together }])
+    }
+
+    /// The search the task made, with `chain`, `obstacles` and `own`.
+    fn solve(&self, chain: &Chain, obstacles: Option<&Obstacles>, own: &OwnBody) -> Placement {
+        let query = self.reaching.query(
+            self.target_mm,
+            self.seed,
+            Search::MostComfortable,
+            obstacles,
+            own,
+        );
+        self.input
+            .base
+            .prepare(self.input.room, chain)
+            .reach(&query, self.reaching.solver.as_ref())
+    }
+
+    fn tolerance(&self) -> f64 {
+        self.reaching.common.tolerance_mm
+    }
+
+    fn reaches(&self, p: &Placement) -> bool {
+        p.solution.reaches(self.tolerance())
+    }
+
+    /// Whether `p` keeps every constraint of the task: the chain's own
+    /// limits, and clear of the room and the person's body.
+    fn valid(&self, p: &Placement) -> bool {
+        let within = beyond_limits(self.chain, &p.solution.q).is_empty();
+        let clear = self.obstacles.is_none_or(|obstacles| {
+            let placed = PlacedObstacles {
+                obstacles,
+                own: self.input.base.own_body(),
+                base_pose: p.pose,
+            };
+            placed
+                .posture_hit(self.chain, &p.solution.q, self.tolerance())
+                .is_none()
+        });
+        within && clear && p.solution.distance_mm <= self.tolerance()
+    }
+
+    fn name(&self, b: Blocker) -> String {
+        Names {
+            room: self.input.room,
+            own: self.input.base.own_body(),
+            chain: self.chain,
+        }
+        .blocker(b)
+    }
+}
+
+/// `chain` with each revolute joint's limits [`WIDENED_DEG`] wider on
+/// either side.
+fn widen(chain: &Chain) -> Chain {
+    let mut wide = chain.clone();
+    let by = WIDENED_DEG.to_radians();
+    for joint in &mut wide.joints {
+        if joint.kind == JointKind::Revolute {
+            joint.min -= by;
+            joint.max += by;
+        }
+    }
+    wide
+}
+
+/// The joints of `chain` whose value in `q` lies beyond their limits.
+fn beyond_limits(chain: &Chain, q: &[f64]) -> Vec<String> {
+    chain
+        .joints
+        .iter()
+        .zip(q)
+        .filter(|(j, &v)| v < j.min || v > j.max)
+        .map(|(j, _)| j.name.clone())
+        .collect()
+}

@@ -1,0 +1,109 @@
+//! Why a target was not reached, found by searching again without each
+//! thing that may have stopped it: a board between the arm and the target
+//! is named (and without it the target is reached); a target just past a
+//! joint's limit names the joint; a target far away is out of reach, with
+//! the closest the bare arm comes. A planar arm of two 300 mm links on a
+//! fixed base, so that every answer can be worked out by hand.
+
+use reach::plugin::Registry;
+use reach::report::{ReachReport, Report, TaskReport, Why};
+use reach::Input;
+
+/// The arm at (1000, 1000, 1000) facing +x, turning in the horizontal
+/// plane: the shoulder within +-90 deg, the elbow 0-150 deg, so the hand
+/// reaches 600 mm out, and only ahead of the shoulder's sideways line.
+fn scenario(board: bool) -> String {
+    let board = if board {
+        // Across the line to `ahead`: the elbow of every posture that
+        // reaches it lies at x = 1250 mm, within 166 mm of y = 1000.
+        "  box board at (1240, 700, 0) size (20, 600, 3000)\n"
+    } else {
+        ""
+    };
+    format!(
+        "units mm deg
+room r {{
+  size 3000 x 3000 x 3000
+{board}  target ahead at (1500, 1000, 1000)
+  // 500 mm out at 130 deg: the shoulder must turn 96.5 deg (elbow 67 deg).
+  target past_limit at (678.6, 1383.0, 1000)
+  target far at (2400, 1000, 1000)
+}}
+mannequin arm {{
+  joint shoulder dh(theta 0, d 0, alpha 0, a 300) limits(-90deg, 90deg)
+  joint elbow dh(theta 0, d 0, alpha 0, a 0) limits(0deg, 150deg)
+  effector hand at (300, 0, 0)
+}}
+person pat {{
+  mannequin arm
+  base fixed {{ at (1000, 1000, 1000) }}
+}}
+reach ahead, past_limit, far by pat
+"
+    )
+}
+
+fn run(text: &str) -> Report {
+    let registry = Registry::builtin();
+    let (_, checked) = reach::check(
+        Input::Text {
+            name: "why.reach",
+            text,
+        },
+        &registry,
+    );
+    let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(true)));
+    reach::run(&scenario)
+}
+
+fn reach_of<'r>(report: &'r Report, target: &str) -> &'r ReachReport {
+    report
+        .tasks
+        .iter()
+        .find_map(|t| match t {
+            TaskReport::Reach(r) if r.name == target => Some(r),
+            _ => None,
+        })
+        .unwrap_or_else(|| panic!("no reach of {target}"))
+}
+
+#[test]
+fn the_board_in_the_way_is_named_and_without_it_the_target_is_reached() {
+    let with = run(&scenario(true));
+    let ahead = reach_of(&with, "ahead");
+    assert!(!ahead.ok, "{ahead:?}");
+    assert_eq!(
+        ahead.why,
+        [Why::Obstacles {
+            names: vec!["board".into()],
+            together: false
+        }]
+    );
+    let without = run(&scenario(false));
+    let ahead = reach_of(&without, "ahead");
+    assert!(ahead.ok && ahead.why.is_empty(), "{ahead:?}");
+}
+
+#[test]
+fn a_target_just_past_a_limit_names_the_joint() {
+    let report = run(&scenario(false));
+    let past = reach_of(&report, "past_limit");
+    assert!(!past.ok, "{past:?}");
+    assert_eq!(
+        past.why,
+        [Why::JointLimits {
+            joints: vec!["shoulder".into()]
+        }]
+    );
+}
+
+#[test]
+fn a_far_target_is_out_of_reach_by_its_distance_less_the_arm() {
+    let report = run(&scenario(true));
+    let far = reach_of(&report, "far");
+    let [Why::OutOfReach { closest_mm }] = far.why.as_slice() else {
+        panic!("{far:?}")
+    };
+    // 1400 mm from the shoulder, 600 mm of arm.
+    assert!((closest_mm - 800.0).abs() < 1.0, "{closest_mm}");
+}
