@@ -4,10 +4,12 @@
 //! then written as a temporary beside its place (with the user's umask),
 //! and only once all are written are they renamed into place; a failure
 //! before that (a name taken by a directory, a full disk) removes the
-//! temporaries and leaves the previous set as it was. Temporaries a killed
-//! run left behind are swept at the next run. (The command line holds
-//! SIGINT and SIGTERM back while a set is written, so that they too leave
-//! a whole set.)
+//! temporaries and leaves the previous set as it was. The renames are
+//! written in a journal first (`journal.rs`): a run killed outright during
+//! them leaves it, and the next run finishes them before anything else.
+//! Temporaries a killed run left behind are swept at the next run. (The
+//! command line holds SIGINT and SIGTERM back while a set is written, so
+//! that they too leave a whole set.)
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -15,6 +17,7 @@ use std::time::{Duration, SystemTime};
 
 use super::glb;
 use super::html;
+use super::journal;
 use super::map_files;
 use super::view::view_data;
 use super::Json;
@@ -82,6 +85,7 @@ fn write_error(path: &Path, e: &std::io::Error) -> Error {
 /// before the renames) none.
 pub fn write_set(dir: &Path, files: &[(String, Vec<u8>)]) -> Result<(), Error> {
     std::fs::create_dir_all(dir).map_err(|e| write_error(dir, &e))?;
+    journal::recover(dir);
     sweep_stale(dir);
     for (name, _) in files {
         let path = dir.join(name);
@@ -100,12 +104,21 @@ pub fn write_set(dir: &Path, files: &[(String, Vec<u8>)]) -> Result<(), Error> {
         }
         written.push((temporary, dir.join(name)));
     }
+    let log = match journal::begin(dir, &written) {
+        Ok(log) => log,
+        Err(e) => {
+            remove_all(&written);
+            return Err(write_error(dir, &e));
+        }
+    };
     for (k, (temporary, path)) in written.iter().enumerate() {
         if let Err(e) = std::fs::rename(temporary, path) {
             remove_all(&written[k..]);
+            let _ = std::fs::remove_file(&log);
             return Err(write_error(path, &e));
         }
     }
+    let _ = std::fs::remove_file(&log);
     Ok(())
 }
 

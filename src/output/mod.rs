@@ -3,6 +3,7 @@
 mod files;
 pub mod glb;
 pub mod html;
+mod journal;
 mod json;
 pub mod json_layout;
 pub mod map_files;
