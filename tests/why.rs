@@ -107,3 +107,45 @@ fn a_far_target_is_out_of_reach_by_its_distance_less_the_arm() {
     // 1400 mm from the shoulder, 600 mm of arm.
     assert!((closest_mm - 800.0).abs() < 1.0, "{closest_mm}");
 }
+
+/// A socket on the wall 1300 mm up behind a counter 800 mm deep: a seated
+/// small woman's chair is kept away by the counter (with the counter gone
+/// from the floor she reaches it), which "out of reach" would hide; the
+/// same chair told to face the socket (`approach forward`) in a galley
+/// where it can only stand along the counter has no place to approach it
+/// from, and nothing is tried.
+#[test]
+fn a_counter_that_keeps_the_chair_away_is_named_and_no_approach_is_said() {
+    let text = "units mm deg
+use std::people
+room kitchen {
+  size 3000 x 3000 x 2500
+  box counter at (0, 0, 0) size (3000, 800, 900)
+  target socket at (1500, 5, 1300)
+}
+room galley {
+  size 4000 x 1300 x 2500
+  box counter at (0, 0, 0) size (4000, 600, 900)
+  target kettle at (2000, 450, 950)
+}
+person ann { mannequin woman_5th_seated base manual_wheelchair }
+person ann_facing { mannequin woman_5th_seated base manual_wheelchair { approach forward } }
+reach socket by ann
+reach kettle by ann_facing
+";
+    let report = run(text);
+    let socket = reach_of(&report, "socket");
+    assert_eq!(
+        socket.why,
+        [Why::KeptAway {
+            names: vec!["counter".into()],
+            together: false
+        }],
+        "{socket:?}"
+    );
+    let without = run(&text.replace("  box counter at (0, 0, 0) size (3000, 800, 900)\n", ""));
+    assert!(reach_of(&without, "socket").ok);
+    let kettle = reach_of(&report, "kettle");
+    assert_eq!(kettle.why, [Why::NoApproach], "{kettle:?}");
+    assert!(!kettle.ok && kettle.iterations == 0);
+}

@@ -155,11 +155,26 @@ impl PlacingSettings {
 
 /// The zone two corners give: both or neither must be given.
 fn zone(corners: [Option<Vector3<f64>>; 2]) -> Result<Option<Zone>, SettingsError> {
+    // A zone thinner than this along x or y (a point or a line, to pin
+    // the hip point there) is widened to it about its middle.
+    const THINNEST_MM: f64 = 1.0;
+    let span = |lo: f64, hi: f64| {
+        let (lo, hi) = (lo.min(hi), lo.max(hi));
+        if hi - lo >= THINNEST_MM {
+            (lo, hi)
+        } else {
+            let mid = (lo + hi) / 2.0;
+            (mid - THINNEST_MM / 2.0, mid + THINNEST_MM / 2.0)
+        }
+    };
     match corners {
-        [Some(a), Some(b)] => Ok(Some(Zone {
-            min: (a.x.min(b.x), a.y.min(b.y)),
-            max: (a.x.max(b.x), a.y.max(b.y)),
-        })),
+        [Some(a), Some(b)] => {
+            let (x, y) = (span(a.x, b.x), span(a.y, b.y));
+            Ok(Some(Zone {
+                min: (x.0, y.0),
+                max: (x.1, y.1),
+            }))
+        }
         [None, None] => Ok(None),
         [Some(_), None] => Err(SettingsError::invalid(
             "zone_from",
@@ -175,6 +190,16 @@ fn zone(corners: [Option<Vector3<f64>>; 2]) -> Result<Option<Zone>, SettingsErro
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A point or a line pins the hip point there: widened to 1 mm.
+    #[test]
+    fn a_zone_thinner_than_a_millimetre_is_widened_to_one() {
+        let at = Vector3::new(1500.0, 1500.0, 0.0);
+        let z = zone([Some(at), Some(at + Vector3::new(0.0, 300.0, 0.0))])
+            .unwrap()
+            .unwrap();
+        assert_eq!((z.min, z.max), ((1499.5, 1500.0), (1500.5, 1800.0)));
+    }
 
     fn settings(heading: Option<f64>, within: Option<f64>, n: u32) -> PlacingSettings {
         PlacingSettings {

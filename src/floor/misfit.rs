@@ -19,6 +19,8 @@ pub struct Misfit {
     /// The largest fraction of its size at which it would fit, to within
     /// `PRECISION` (0 when not even `SMALLEST` of it would).
     pub fits_at: f64,
+    /// Whether the base was kept to a zone of the floor.
+    pub in_zone: bool,
 }
 
 /// The smallest fraction of the size tried, and how closely the fraction
@@ -54,6 +56,7 @@ impl Misfit {
         Misfit {
             size_mm: footprint.size_mm(),
             fits_at,
+            in_zone: zone.is_some(),
         }
     }
 }

@@ -31,6 +31,9 @@ pub struct NotPlacedReport {
     /// the hip point) that would fit somewhere in the room at one of the
     /// headings allowed, to within 0.005; 0 when not even 5 % would.
     pub fits_at: f64,
+    /// Whether the base was kept to a zone (`zone_from`, `zone_to`): it
+    /// fits nowhere within it.
+    pub in_zone: bool,
 }
 
 impl NotPlacedReport {
@@ -51,6 +54,7 @@ impl NotPlacedReport {
             ok: false,
             footprint_mm: misfit.size_mm.map(mm),
             fits_at: fixed(misfit.fits_at, 3),
+            in_zone: misfit.in_zone,
         }
     }
 
@@ -76,8 +80,12 @@ impl ReportKind for NotPlacedReport {
         let [length, width] = self.footprint_mm;
         let _ = write!(
             out,
-            "{} by {}: the {} base fits nowhere in room `{}`: its footprint, {length:.0} x {width:.0} mm with the person's legs, ",
-            self.name, self.person, self.base, self.room
+            "{} by {}: the {} base fits nowhere in room `{}`{}: its footprint, {length:.0} x {width:.0} mm with the person's legs, ",
+            self.name,
+            self.person,
+            self.base,
+            self.room,
+            if self.in_zone { " within its zone" } else { "" }
         );
         let _ = if self.fits_at > 0.0 {
             writeln!(

@@ -27,6 +27,13 @@ pub enum Why {
     /// The joints' limits: each widened by 10 degrees, the hand reaches,
     /// these joints going beyond their limits.
     JointLimits { joints: Vec<String> },
+    /// The room's furniture keeps the base too far away: with the named
+    /// obstacles gone from the floor (and the arm's way), the hand reaches
+    /// (`together`: only with all of them gone).
+    KeptAway { names: Vec<String>, together: bool },
+    /// No place where the base fits lets it approach the target as its
+    /// options ask (`approach`, `heading`): nothing was tried.
+    NoApproach,
     /// Out of the arm's reach with nothing in the way: with the room's
     /// obstacles and the person's own body gone, the hand comes this close
     /// at best.
@@ -54,12 +61,24 @@ impl Why {
             Why::Body { names } => format!("blocked by {}", names.join(" and ")),
             Why::JointLimits { .. } => "at the joints' limits".into(),
             Why::OutOfReach { .. } => "out of reach".into(),
+            Why::NoApproach => "no place to approach it from".into(),
+            Why::KeptAway { names, together } => {
+                let names: Vec<String> = names.iter().map(|n| quoted(n)).collect();
+                let join = if *together { " and " } else { " or " };
+                format!("the base is kept away by {}", names.join(join))
+            }
         }
     }
 
     /// In a sentence, for the text report's details.
     pub fn sentence(&self) -> String {
         match self {
+            Why::Obstacles {
+                together: false,
+                names,
+            } if names.len() > 1 => {
+                format!("{}: without any one of them, the hand reaches", self.short())
+            }
             Why::Obstacles { together: false, .. } | Why::Body { .. } => {
                 format!("{}: without it, the hand reaches", self.short())
             }
@@ -67,11 +86,27 @@ impl Why {
                 format!("{}: without all of them (not without one), the hand reaches", self.short())
             }
             Why::JointLimits { joints } => format!(
-                "at the joints' limits: with each widened {WIDENED_DEG} deg, the hand reaches, {} beyond",
+                "at the joints' limits: with each widened {WIDENED_DEG} deg the hand reaches, with {} beyond their limits",
                 joints.join(", ")
             ),
+            Why::KeptAway {
+                together: false,
+                names,
+            } if names.len() > 1 => format!(
+                "{}: without any one of them on the floor (and in the arm's way), the base comes close enough and the hand reaches",
+                self.short()
+            ),
+            Why::KeptAway { together: false, .. } => format!(
+                "{}: without it on the floor (and in the arm's way), the base comes close enough and the hand reaches",
+                self.short()
+            ),
+            Why::KeptAway { together: true, .. } => format!(
+                "{}: only without all of them on the floor (and in the arm's way) does the base come close enough for the hand to reach",
+                self.short()
+            ),
+            Why::NoApproach => "no place to approach it from: wherever the base fits, its `approach` or `heading` options do not let it face the target so; no posture was looked for".into(),
             Why::OutOfReach { closest_mm } => format!(
-                "out of reach with nothing in the way: without the room's obstacles and the person's own body, the hand comes no closer than {closest_mm:.1} mm"
+                "out of reach: even with the room empty (no furniture on the floor or in the arm's way) and without the person's own body in the way, the hand comes no closer than {closest_mm:.1} mm"
             ),
         }
     }

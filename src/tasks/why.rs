@@ -16,14 +16,18 @@ use nalgebra::Point3;
 
 use super::common::Reaching;
 use crate::collision::{Obstacles, PlacedObstacles};
+use crate::geometry::Cuboid;
 use crate::kinematics::{Chain, JointKind};
 use crate::plugin::{Placement, Search, TaskInput};
 use crate::report::{Names, Why, WIDENED_DEG};
-use crate::scene::{Blocker, OwnBody};
+use crate::scene::{Blocker, OwnBody, Room};
 
 /// How many of the room's obstacles a failed reach met are each tried
 /// without.
 const TRIED_WITHOUT: usize = 3;
+/// How many of the obstacles nearest the target are tried without as
+/// well, where the room is in the way.
+const NEAREST: usize = 2;
 
 /// A reach that failed, and what it was asked.
 pub(super) struct Failed<'a> {
@@ -50,6 +54,10 @@ pub(super) enum Found {
 
 impl Failed<'_> {
     pub fn why(&self) -> Found {
+        if self.placement.solution.distance_mm.is_infinite() {
+            // The base found no candidate placement at all.
+            return Found::Why(vec![Why::NoApproach]);
+        }
         let own = self.input.base.own_body();
         let mut closest_mm = self.placement.solution.distance_mm;
         let mut found = Vec::new();
@@ -63,7 +71,12 @@ impl Failed<'_> {
             if self.reaches(&bare) {
                 found.push(self.blocked_by_body(&no_room, &bare));
             } else {
-                closest_mm = bare.solution.distance_mm;
+                let empty = self.without_furniture(&[]);
+                let roomy = self.solve_in(&empty, self.chain, None, &OwnBody::default());
+                if self.reaches(&roomy) {
+                    return Found::Why(vec![self.kept_away()]);
+                }
+                closest_mm = roomy.solution.distance_mm;
             }
         }
         let widened = widen(self.chain);
@@ -122,32 +135,127 @@ impl Failed<'_> {
             own,
             base_pose: free.pose,
         };
-        let met: Vec<Blocker> = placed
+        let mut met: Vec<Blocker> = placed
             .posture_hits(self.chain, &free.solution.q, self.tolerance())
             .into_iter()
             .filter(|b| matches!(b, Blocker::Obstacle(_) | Blocker::Wall(_)))
+            .take(TRIED_WITHOUT)
             .collect();
-        for &blocker in met.iter().take(TRIED_WITHOUT) {
+        // The obstacles nearest the target too (a cabinet's door over the
+        // board a cup stands on), which the free posture need not meet.
+        for (_, i) in self.nearest_obstacles(NEAREST) {
+            if !met.contains(&Blocker::Obstacle(i)) {
+                met.push(Blocker::Obstacle(i));
+            }
+        }
+        // Every one whose removal alone lets the hand reach: each is a
+        // change that would do.
+        let mut enough = Vec::new();
+        for &blocker in &met {
             let without = obstacles.without(&[blocker]);
             let tried = self.solve(self.chain, Some(&without), own);
             if self.reaches(&tried) {
                 if self.valid(&tried) {
                     return Found::Reached(tried);
                 }
-                let names = vec![self.name(blocker)];
-                return Found::Why(vec![Why::Obstacles {
-                    names,
-                    together: false,
-                }]);
+                enough.push(self.name(blocker));
             }
+        }
+        if !enough.is_empty() {
+            return Found::Why(vec![Why::Obstacles {
+                names: enough,
+                together: false,
+            }]);
         }
         let together = met.len() > 1;
         let names = met.into_iter().map(|b| self.name(b)).collect();
         Found::Why(vec![Why::Obstacles { names, together }])
     }
 
+    /// The furniture keeps the base away (it reached with the room
+    /// emptied): which of the obstacles nearest the target, each removed
+    /// alone from the floor and the arm's way, lets the hand reach.
+    fn kept_away(&self) -> Why {
+        let room = self.input.room;
+        let near = self.nearest_obstacles(TRIED_WITHOUT);
+        let own = self.input.base.own_body();
+        let clearance_mm = self.reaching.common.clearance_mm;
+        let enough: Vec<String> = near
+            .iter()
+            .filter(|&&(_, i)| {
+                let without = self.without_furniture(&[i]);
+                let obstacles = Obstacles::new(&without, clearance_mm);
+                self.reaches(&self.solve_in(&without, self.chain, Some(&obstacles), own))
+            })
+            .map(|&(_, i)| room.obstacle_name(i).to_string())
+            .collect();
+        if enough.is_empty() {
+            let names = near
+                .iter()
+                .map(|&(_, i)| room.obstacle_name(i).to_string())
+                .collect();
+            return Why::KeptAway {
+                names,
+                together: true,
+            };
+        }
+        Why::KeptAway {
+            names: enough,
+            together: false,
+        }
+    }
+
+    /// The `n` obstacles of the room nearest the target, nearest first,
+    /// with their distances.
+    fn nearest_obstacles(&self, n: usize) -> Vec<(f64, usize)> {
+        let room = self.input.room;
+        let mut near: Vec<(f64, usize)> = (0..room.boxes.len() + room.meshes.len())
+            .map(|i| (distance_to_obstacle(room, i, &self.target_mm), i))
+            .collect();
+        near.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        near.truncate(n);
+        near
+    }
+
+    /// The task's room without the obstacles `removed` (all of them when
+    /// empty), under a name of its own (a base keeps where it fits by
+    /// room name).
+    fn without_furniture(&self, removed: &[usize]) -> Room {
+        let room = self.input.room;
+        let all = removed.is_empty();
+        let boxes = room.boxes.len();
+        let keep = |i: usize| !all && !removed.contains(&i);
+        let mut name = format!("{}\u{0}without", room.name);
+        for &i in removed {
+            name.push_str(&format!(" {i}"));
+        }
+        Room {
+            name,
+            boxes: (room.boxes.iter().enumerate())
+                .filter(|(i, _)| keep(*i))
+                .map(|(_, b)| b.clone())
+                .collect(),
+            meshes: (room.meshes.iter().enumerate())
+                .filter(|(k, _)| keep(boxes + k))
+                .map(|(_, m)| m.clone())
+                .collect(),
+            ..room.clone()
+        }
+    }
+
     /// The search the task made, with `chain`, `obstacles` and `own`.
     fn solve(&self, chain: &Chain, obstacles: Option<&Obstacles>, own: &OwnBody) -> Placement {
+        self.solve_in(self.input.room, chain, obstacles, own)
+    }
+
+    /// The search the task made, in `room` (where the base fits).
+    fn solve_in(
+        &self,
+        room: &Room,
+        chain: &Chain,
+        obstacles: Option<&Obstacles>,
+        own: &OwnBody,
+    ) -> Placement {
         let query = self.reaching.query(
             self.target_mm,
             self.seed,
@@ -157,7 +265,7 @@ impl Failed<'_> {
         );
         self.input
             .base
-            .prepare(self.input.room, chain)
+            .prepare(room, chain)
             .reach(&query, self.reaching.solver.as_ref())
     }
 
@@ -193,6 +301,25 @@ impl Failed<'_> {
             chain: self.chain,
         }
         .blocker(b)
+    }
+}
+
+/// How far `p` is from the room's obstacle `i` (a mesh: from its bounds).
+fn distance_to_obstacle(room: &Room, i: usize, p: &Point3<f64>) -> f64 {
+    match room.boxes.get(i) {
+        Some(b) => Cuboid::from_corner(b.corner_mm, b.size_mm, b.yaw_rad).distance_to_segment(p, p),
+        None => {
+            let mesh = &room.meshes[i - room.boxes.len()];
+            let (lo, hi) = mesh.vertices_mm.iter().fold(
+                (
+                    Point3::from([f64::INFINITY; 3]),
+                    Point3::from([f64::NEG_INFINITY; 3]),
+                ),
+                |(lo, hi), v| (lo.inf(v), hi.sup(v)),
+            );
+            let outside = (lo - p).sup(&(p - hi)).sup(&nalgebra::Vector3::zeros());
+            outside.norm()
+        }
     }
 }
 
