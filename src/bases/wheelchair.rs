@@ -24,7 +24,9 @@ use super::placement::Mobile;
 use super::PlacingSettings;
 use crate::geometry::{Cuboid, Shape, Solid};
 use crate::kinematics::{Legs, Posture};
-use crate::plugin::{Base, BaseError, BasePlugin, Options, ParamSpec, Params, Plugin, Settings};
+use crate::plugin::{
+    Base, BaseError, BasePlugin, Options, ParamSpec, Params, Plugin, Settings, SettingsError,
+};
 use crate::scene::Physique;
 
 /// The plugin `wheelchair`.
@@ -129,6 +131,15 @@ impl Plugin for Wheelchair {
 impl BasePlugin for Wheelchair {
     fn build(&self, options: &Options, person: &Physique) -> Result<Box<dyn Base>, BaseError> {
         let s = WheelchairSettings::from_options(options)?;
+        if s.width_mm < s.seat_width_mm {
+            return Err(BaseError::Settings(SettingsError::invalid(
+                "width",
+                format!(
+                    "the chair's overall width ({:.0} mm) is less than its seat's ({:.0} mm): lower `seat_width` too",
+                    s.width_mm, s.seat_width_mm
+                ),
+            )));
+        }
         if let Some(declared @ Posture::Standing) = person.posture {
             return Err(BaseError::posture("wheelchair", declared, Posture::Seated));
         }
