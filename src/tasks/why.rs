@@ -1,12 +1,19 @@
 //! Why a reach failed, found by searching again (the corrections of issue
-//! 14): first without the room's obstacles and sides (if the hand then
-//! reaches, each of those its posture met is removed alone, the first
-//! three at most, and the one whose removal lets the hand reach is named);
-//! then without the person's own body and chair too (the parts the free
-//! posture passes through are named); then with every joint's limits
-//! widened by [`WIDENED_DEG`] (the joints that go beyond are named); else
-//! the target is out of reach with nothing in the way, and the closest the
-//! bare arm comes is given.
+//! 14), with the task's seed and placements, each time without one thing
+//! that may have stopped it:
+//!
+//! - no candidate placement at all: the approach or heading allows none;
+//! - without the room's obstacles in the arm's way: if the hand then
+//!   reaches, each obstacle that posture met (the first three) and the two
+//!   nearest the target are removed alone, and every one whose removal
+//!   lets the hand reach is named (else all, together);
+//! - without the person's own body too: the part whose removal alone lets
+//!   it reach is named;
+//! - in the room emptied of furniture, floor and all: the obstacles
+//!   nearest the target whose removal lets the base come close enough;
+//! - with every joint's limits widened by [`WIDENED_DEG`]: the joints that
+//!   go beyond are named;
+//! - else out of reach, with the closest the hand comes in the empty room.
 //!
 //! A search without a constraint may find a posture that keeps it after
 //! all (a seed that the first search did not try): then the target is
@@ -109,8 +116,9 @@ impl Failed<'_> {
         let met = placed.posture_hits(self.chain, &bare.solution.q, self.tolerance());
         for &blocker in met.iter().take(TRIED_WITHOUT) {
             let Blocker::Own(i) = blocker else { continue };
-            let mut without = own.clone();
-            without.solids.remove(i);
+            let mut solids = own.solids.clone();
+            solids.remove(i);
+            let without = OwnBody::new(solids, own.pelvis_mm);
             let tried = self.solve(self.chain, Some(no_room), &without);
             if self.reaches(&tried) {
                 return Why::Body {
