@@ -1,7 +1,7 @@
 //! The `json` format: the report as pretty-printed JSON (docs/report.md).
 
 use crate::plugin::{FormatPlugin, FormatScene, ParamSpec, Plugin};
-use crate::report::Report;
+use crate::report::{cells_apart, MapCell, Report};
 
 pub struct Json;
 
@@ -21,8 +21,13 @@ impl Plugin for Json {
 
 impl FormatPlugin for Json {
     fn render(&self, report: &Report, _: &FormatScene<'_>) -> String {
-        let value = serde_json::to_value(report).expect("reports serialize");
-        super::json_layout::to_string(&value)
+        let head = cells_apart(|| serde_json::to_value(report).expect("reports serialize"));
+        let cells: Vec<Option<&[MapCell]>> = report
+            .tasks
+            .iter()
+            .map(|t| t.map().map(|m| m.cells.as_slice()))
+            .collect();
+        super::json_layout::report_to_string(&head, &cells)
     }
 
     fn extension(&self) -> &'static str {

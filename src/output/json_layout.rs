@@ -5,12 +5,100 @@
 
 use serde_json::Value;
 
+use crate::report::MapCell;
+
 /// `value` as text, indented by two spaces a level.
 pub fn to_string(value: &Value) -> String {
     let mut out = String::new();
     write(&mut out, value, 0);
     out.push('\n');
     out
+}
+
+/// A report's value `head`, made with its maps' cells left out, laid out
+/// as [`to_string`] lays out the whole report: each map's cells (`cells`
+/// of task k, the last key of its object) serialized and written one at a
+/// time.
+pub fn report_to_string(head: &Value, cells: &[Option<&[MapCell]>]) -> String {
+    let Value::Object(map) = head else {
+        return to_string(head);
+    };
+    let mut out = String::from("{");
+    for (i, (key, item)) in map.iter().enumerate() {
+        out.push_str(if i == 0 { "\n" } else { ",\n" });
+        indent(&mut out, 1);
+        out.push_str(&Value::String(key.clone()).to_string());
+        out.push_str(": ");
+        match item {
+            Value::Array(tasks) if key == "tasks" && !tasks.is_empty() => {
+                write_tasks(&mut out, tasks, cells);
+            }
+            _ => write(&mut out, item, 1),
+        }
+    }
+    out.push_str("\n}\n");
+    out
+}
+
+/// The report's tasks at level 1, each map with its cells.
+fn write_tasks(out: &mut String, tasks: &[Value], cells: &[Option<&[MapCell]>]) {
+    out.push('[');
+    for (k, task) in tasks.iter().enumerate() {
+        out.push_str(if k == 0 { "\n" } else { ",\n" });
+        indent(out, 2);
+        match (cells.get(k).copied().flatten(), task) {
+            (Some(points), Value::Object(fields)) if !points.is_empty() => {
+                write_map(out, fields, points);
+            }
+            (Some(_), Value::Object(fields)) => {
+                let mut whole = fields.clone();
+                whole.insert("cells".into(), Value::Array(Vec::new()));
+                let whole = Value::Object(whole);
+                write_item(out, &whole, 2);
+            }
+            _ => write_item(out, task, 2),
+        }
+    }
+    out.push('\n');
+    indent(out, 1);
+    out.push(']');
+}
+
+/// An array's item at `level`, as [`write`] lays it out.
+fn write_item(out: &mut String, item: &Value, level: usize) {
+    if is_flat(item) {
+        write_inline(out, item);
+    } else {
+        write(out, item, level);
+    }
+}
+
+/// A map's object at level 2 (not flat: its cells are objects), then its
+/// cells, each a flat object on a line of its own.
+fn write_map(out: &mut String, fields: &serde_json::Map<String, Value>, points: &[MapCell]) {
+    out.push('{');
+    for (key, item) in fields {
+        out.push('\n');
+        indent(out, 3);
+        out.push_str(&Value::String(key.clone()).to_string());
+        out.push_str(": ");
+        write(out, item, 3);
+        out.push(',');
+    }
+    out.push('\n');
+    indent(out, 3);
+    out.push_str("\"cells\": [");
+    for (j, cell) in points.iter().enumerate() {
+        out.push_str(if j == 0 { "\n" } else { ",\n" });
+        indent(out, 4);
+        let value = serde_json::to_value(cell).expect("cells serialize");
+        write_item(out, &value, 4);
+    }
+    out.push('\n');
+    indent(out, 3);
+    out.push_str("]\n");
+    indent(out, 2);
+    out.push('}');
 }
 
 fn write(out: &mut String, value: &Value, level: usize) {

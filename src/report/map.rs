@@ -50,8 +50,29 @@ pub struct MapReport {
     pub rows: usize,
     /// One string per row, the last row first: `#` reachable, `.` not.
     pub grid: Vec<String>,
-    /// Every point, row by row.
+    /// Every point, row by row. (Left out while [`cells_apart`] holds,
+    /// for a writer that serializes them one at a time.)
+    #[serde(skip_serializing_if = "cells_left_out")]
     pub cells: Vec<MapCell>,
+}
+
+thread_local! {
+    static CELLS_APART: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+fn cells_left_out(_: &[MapCell]) -> bool {
+    CELLS_APART.with(std::cell::Cell::get)
+}
+
+/// Run `f` with every map's `cells` left out of what serde writes on
+/// this thread: the JSON writer serializes the rest of the report in one
+/// go and the cells one at a time, so that a map of 100,000 points is
+/// never held as one tree of values.
+pub fn cells_apart<T>(f: impl FnOnce() -> T) -> T {
+    CELLS_APART.with(|c| c.set(true));
+    let result = f();
+    CELLS_APART.with(|c| c.set(false));
+    result
 }
 
 /// One point of a map.

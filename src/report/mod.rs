@@ -21,7 +21,7 @@ mod why;
 
 pub use answer::{Answer, Figure};
 pub use gaze::{GazeReport, Sight};
-pub use map::{MapCell, MapReport};
+pub use map::{cells_apart, MapCell, MapReport};
 pub use not_placed::NotPlacedReport;
 pub use parts::{deg, fixed, mm, Asked, BaseReport, Names, Posture};
 pub use reach::ReachReport;
