@@ -27,12 +27,16 @@ impl PlacedObstacles<'_> {
         if let Some(i) = self.own.hit(capsule) {
             return Some(Blocker::Own(i));
         }
-        let room = Capsule::new(
+        self.obstacles.capsule_hit(&self.in_room(capsule))
+    }
+
+    /// A solid of the person, in the base frame, carried into the room.
+    fn in_room(&self, capsule: &Capsule) -> Capsule {
+        Capsule::new(
             self.base_pose.to_room(&capsule.a),
             self.base_pose.to_room(&capsule.b),
             capsule.radius_mm,
-        );
-        self.obstacles.capsule_hit(&room)
+        )
     }
 
     /// The first collision of `chain` in posture `q`: each solid of the
@@ -60,22 +64,10 @@ impl PlacedObstacles<'_> {
         v: &Volumes,
         end_allowance_mm: f64,
     ) -> Option<Collision> {
-        let end = Owner::Link(chain.joints.len());
-        for ((capsule, &part), _) in v
-            .capsules
-            .iter()
-            .zip(&v.owners)
-            .zip(&v.motion)
-            .filter(|(_, &motion)| motion != Motion::Still)
-        {
-            let tested = if part == end {
-                match shortened(capsule, end_allowance_mm) {
-                    Some(c) => c,
-                    None => continue,
-                }
-            } else {
-                *capsule
-            };
+        for (tested, part, motion) in checked(chain, v, end_allowance_mm) {
+            if motion == Motion::Still {
+                continue;
+            }
             if let Some(blocker) = self.capsule_hit(&tested) {
                 return Some(Collision { part, blocker });
             }
@@ -94,27 +86,15 @@ impl PlacedObstacles<'_> {
     /// (what a failed search met, to be tried without).
     pub fn posture_hits(&self, chain: &Chain, q: &[f64], end_allowance_mm: f64) -> Vec<Blocker> {
         let v = chain.volumes(q);
-        let end = Owner::Link(chain.joints.len());
         let mut met: Vec<Blocker> = Vec::new();
         let mut add = |b: Blocker| {
             if !met.contains(&b) {
                 met.push(b);
             }
         };
-        for (capsule, &part) in v.capsules.iter().zip(&v.owners) {
-            let tested = match part {
-                p if p == end => match shortened(capsule, end_allowance_mm) {
-                    Some(c) => c,
-                    None => continue,
-                },
-                _ => *capsule,
-            };
+        for (tested, _, _) in checked(chain, &v, end_allowance_mm) {
             self.own.hits(&tested).for_each(|i| add(Blocker::Own(i)));
-            let room = Capsule::new(
-                self.base_pose.to_room(&tested.a),
-                self.base_pose.to_room(&tested.b),
-                tested.radius_mm,
-            );
+            let room = self.in_room(&tested);
             self.obstacles.capsule_hits(&room).for_each(&mut add);
         }
         if let Some((i, _)) = v.self_hit() {
@@ -122,6 +102,26 @@ impl PlacedObstacles<'_> {
         }
         met
     }
+}
+
+/// Each of `v`'s solids as it is checked, with its part and how it moved:
+/// the effector's link [`shortened`] (and left out if nothing is left),
+/// the others as they are.
+fn checked<'v>(
+    chain: &Chain,
+    v: &'v Volumes,
+    end_allowance_mm: f64,
+) -> impl Iterator<Item = (Capsule, Owner, Motion)> + 'v {
+    let end = Owner::Link(chain.joints.len());
+    let parts = v.capsules.iter().zip(&v.owners).zip(&v.motion);
+    parts.filter_map(move |((capsule, &part), &motion)| {
+        let tested = if part == end {
+            shortened(capsule, end_allowance_mm)?
+        } else {
+            *capsule
+        };
+        Some((tested, part, motion))
+    })
 }
 
 /// The effector's link as it is checked: ending its radius short of the
