@@ -45,10 +45,28 @@ pub struct Mobile {
     pub hip_height_mm: f64,
     pub placing: Placing,
     pub own: OwnBody,
-    /// The regions of each room, by name, worked out once.
-    regions: Mutex<HashMap<String, Arc<OnceLock<Regions>>>>,
-    /// Where it fits nowhere, by how much, by room name.
-    misfits: Mutex<HashMap<String, Arc<OnceLock<Misfit>>>>,
+    /// The regions of each room, worked out once.
+    regions: ByRoom<Regions>,
+    /// Where it fits nowhere, by how much.
+    misfits: ByRoom<Misfit>,
+}
+
+/// Something worked out once per room (by its name) and shared by every
+/// task there, whichever thread asks first.
+struct ByRoom<T>(Mutex<HashMap<String, Arc<OnceLock<T>>>>);
+
+impl<T> Default for ByRoom<T> {
+    fn default() -> Self {
+        ByRoom(Mutex::default())
+    }
+}
+
+impl<T> ByRoom<T> {
+    /// `room`'s cell, to be filled by whoever asks first.
+    fn cell(&self, room: &Room) -> Arc<OnceLock<T>> {
+        let mut by_room = self.0.lock().unwrap_or_else(|e| e.into_inner());
+        Arc::clone(by_room.entry(room.name.clone()).or_default())
+    }
 }
 
 /// The most candidates a reach takes from the capability map, and the most
@@ -63,8 +81,8 @@ impl Mobile {
             hip_height_mm,
             placing,
             own,
-            regions: Mutex::default(),
-            misfits: Mutex::default(),
+            regions: ByRoom::default(),
+            misfits: ByRoom::default(),
         }
     }
 
@@ -93,10 +111,7 @@ impl Mobile {
     /// The admissible regions, one per heading searched, worked out once
     /// per room.
     fn regions(&self, room: &Room) -> Arc<OnceLock<Regions>> {
-        let cell = {
-            let mut by_room = self.regions.lock().unwrap_or_else(|e| e.into_inner());
-            Arc::clone(by_room.entry(room.name.clone()).or_default())
-        };
+        let cell = self.regions.cell(room);
         cell.get_or_init(|| self.compute_regions(room));
         cell
     }
@@ -126,11 +141,7 @@ impl Mobile {
         if fits {
             return Fit::Fits;
         }
-        let cell = {
-            let mut by_room = self.misfits.lock().unwrap_or_else(|e| e.into_inner());
-            Arc::clone(by_room.entry(room.name.clone()).or_default())
-        };
-        let misfit = cell.get_or_init(|| {
+        let misfit = *self.misfits.cell(room).get_or_init(|| {
             Misfit::of(
                 room,
                 &self.footprint,
@@ -138,7 +149,7 @@ impl Mobile {
                 self.placing.zone,
             )
         });
-        Fit::Nowhere(*misfit)
+        Fit::Nowhere(misfit)
     }
 
     /// Ready for reaches in `room`: the regions, the capability map and the
