@@ -25,10 +25,8 @@ pub fn report_to_string(head: &Value, cells: &[Option<&[MapCell]>]) -> String {
     };
     let mut out = String::from("{");
     for (i, (key, item)) in map.iter().enumerate() {
-        out.push_str(if i == 0 { "\n" } else { ",\n" });
-        indent(&mut out, 1);
-        out.push_str(&Value::String(key.clone()).to_string());
-        out.push_str(": ");
+        entry(&mut out, i, 1);
+        write_key(&mut out, key);
         match item {
             Value::Array(tasks) if key == "tasks" && !tasks.is_empty() => {
                 write_tasks(&mut out, tasks, cells);
@@ -36,7 +34,8 @@ pub fn report_to_string(head: &Value, cells: &[Option<&[MapCell]>]) -> String {
             _ => write(&mut out, item, 1),
         }
     }
-    out.push_str("\n}\n");
+    close(&mut out, 0, '}');
+    out.push('\n');
     out
 }
 
@@ -44,8 +43,7 @@ pub fn report_to_string(head: &Value, cells: &[Option<&[MapCell]>]) -> String {
 fn write_tasks(out: &mut String, tasks: &[Value], cells: &[Option<&[MapCell]>]) {
     out.push('[');
     for (k, task) in tasks.iter().enumerate() {
-        out.push_str(if k == 0 { "\n" } else { ",\n" });
-        indent(out, 2);
+        entry(out, k, 2);
         match (cells.get(k).copied().flatten(), task) {
             (Some(points), Value::Object(fields)) if !points.is_empty() => {
                 write_map(out, fields, points);
@@ -53,15 +51,12 @@ fn write_tasks(out: &mut String, tasks: &[Value], cells: &[Option<&[MapCell]>]) 
             (Some(_), Value::Object(fields)) => {
                 let mut whole = fields.clone();
                 whole.insert("cells".into(), Value::Array(Vec::new()));
-                let whole = Value::Object(whole);
-                write_item(out, &whole, 2);
+                write_item(out, &Value::Object(whole), 2);
             }
             _ => write_item(out, task, 2),
         }
     }
-    out.push('\n');
-    indent(out, 1);
-    out.push(']');
+    close(out, 1, ']');
 }
 
 /// An array's item at `level`, as [`write`] lays it out.
@@ -77,28 +72,21 @@ fn write_item(out: &mut String, item: &Value, level: usize) {
 /// cells, each a flat object on a line of its own.
 fn write_map(out: &mut String, fields: &serde_json::Map<String, Value>, points: &[MapCell]) {
     out.push('{');
-    for (key, item) in fields {
-        out.push('\n');
-        indent(out, 3);
-        out.push_str(&Value::String(key.clone()).to_string());
-        out.push_str(": ");
+    for (i, (key, item)) in fields.iter().enumerate() {
+        entry(out, i, 3);
+        write_key(out, key);
         write(out, item, 3);
-        out.push(',');
     }
-    out.push('\n');
-    indent(out, 3);
-    out.push_str("\"cells\": [");
+    entry(out, fields.len(), 3);
+    write_key(out, "cells");
+    out.push('[');
     for (j, cell) in points.iter().enumerate() {
-        out.push_str(if j == 0 { "\n" } else { ",\n" });
-        indent(out, 4);
+        entry(out, j, 4);
         let value = serde_json::to_value(cell).expect("cells serialize");
         write_item(out, &value, 4);
     }
-    out.push('\n');
-    indent(out, 3);
-    out.push_str("]\n");
-    indent(out, 2);
-    out.push('}');
+    close(out, 3, ']');
+    close(out, 2, '}');
 }
 
 fn write(out: &mut String, value: &Value, level: usize) {
@@ -109,33 +97,41 @@ fn write(out: &mut String, value: &Value, level: usize) {
         Value::Array(items) => {
             out.push('[');
             for (i, item) in items.iter().enumerate() {
-                out.push_str(if i == 0 { "\n" } else { ",\n" });
-                indent(out, level + 1);
-                if is_flat(item) {
-                    write_inline(out, item);
-                } else {
-                    write(out, item, level + 1);
-                }
+                entry(out, i, level + 1);
+                write_item(out, item, level + 1);
             }
-            out.push('\n');
-            indent(out, level);
-            out.push(']');
+            close(out, level, ']');
         }
         Value::Object(map) if !map.is_empty() => {
             out.push('{');
             for (i, (key, item)) in map.iter().enumerate() {
-                out.push_str(if i == 0 { "\n" } else { ",\n" });
-                indent(out, level + 1);
-                out.push_str(&Value::String(key.clone()).to_string());
-                out.push_str(": ");
+                entry(out, i, level + 1);
+                write_key(out, key);
                 write(out, item, level + 1);
             }
-            out.push('\n');
-            indent(out, level);
-            out.push('}');
+            close(out, level, '}');
         }
         scalar => out.push_str(&scalar.to_string()),
     }
+}
+
+/// Before the `i`th entry of an array or object: a comma after the one
+/// before it, a new line, the indent of `level`.
+fn entry(out: &mut String, i: usize, level: usize) {
+    out.push_str(if i == 0 { "\n" } else { ",\n" });
+    indent(out, level);
+}
+
+fn write_key(out: &mut String, key: &str) {
+    out.push_str(&Value::String(key.to_string()).to_string());
+    out.push_str(": ");
+}
+
+/// The end of an array or object opened at `level`.
+fn close(out: &mut String, level: usize, bracket: char) {
+    out.push('\n');
+    indent(out, level);
+    out.push(bracket);
 }
 
 fn indent(out: &mut String, level: usize) {
