@@ -13,7 +13,7 @@ use reach::report::{ReachReport, Report, TaskReport};
 use reach::scene::{Blocker, OwnBody, Room};
 use reach::Input;
 
-fn run(text: &str) -> (reach::scenario::Scenario, Report) {
+pub fn run(text: &str) -> (reach::scenario::Scenario, Report) {
     let registry = Registry::builtin();
     let (_, checked) = reach::check(
         Input::Text {

@@ -5,9 +5,8 @@
 //! the closest the bare arm comes. A planar arm of two 300 mm links on a
 //! fixed base, so that every answer can be worked out by hand.
 
-use reach::plugin::Registry;
-use reach::report::{ReachReport, Report, TaskReport, Why};
-use reach::Input;
+use super::body::reach_of;
+use reach::report::{Report, Why};
 
 /// The arm at (1000, 1000, 1000) facing +x, turning in the horizontal
 /// plane: the shoulder within +-90 deg, the elbow 0-150 deg, so the hand
@@ -44,33 +43,13 @@ reach ahead, past_limit, far by pat
 }
 
 fn run(text: &str) -> Report {
-    let registry = Registry::builtin();
-    let (_, checked) = reach::check(
-        Input::Text {
-            name: "why.reach",
-            text,
-        },
-        &registry,
-    );
-    let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(true)));
-    reach::run(&scenario)
-}
-
-fn reach_of<'r>(report: &'r Report, target: &str) -> &'r ReachReport {
-    report
-        .tasks
-        .iter()
-        .find_map(|t| match t {
-            TaskReport::Reach(r) if r.name == target => Some(r),
-            _ => None,
-        })
-        .unwrap_or_else(|| panic!("no reach of {target}"))
+    super::body::run(text).1
 }
 
 #[test]
 fn the_board_in_the_way_is_named_and_without_it_the_target_is_reached() {
     let with = run(&scenario(true));
-    let ahead = reach_of(&with, "ahead");
+    let ahead = reach_of(&with, "ahead", "pat");
     assert!(!ahead.ok, "{ahead:?}");
     assert_eq!(
         ahead.why,
@@ -80,14 +59,14 @@ fn the_board_in_the_way_is_named_and_without_it_the_target_is_reached() {
         }]
     );
     let without = run(&scenario(false));
-    let ahead = reach_of(&without, "ahead");
+    let ahead = reach_of(&without, "ahead", "pat");
     assert!(ahead.ok && ahead.why.is_empty(), "{ahead:?}");
 }
 
 #[test]
 fn a_target_just_past_a_limit_names_the_joint() {
     let report = run(&scenario(false));
-    let past = reach_of(&report, "past_limit");
+    let past = reach_of(&report, "past_limit", "pat");
     assert!(!past.ok, "{past:?}");
     assert_eq!(
         past.why,
@@ -100,7 +79,7 @@ fn a_target_just_past_a_limit_names_the_joint() {
 #[test]
 fn a_far_target_is_out_of_reach_by_its_distance_less_the_arm() {
     let report = run(&scenario(true));
-    let far = reach_of(&report, "far");
+    let far = reach_of(&report, "far", "pat");
     let [Why::OutOfReach { closest_mm }] = far.why.as_slice() else {
         panic!("{far:?}")
     };
@@ -134,7 +113,7 @@ reach socket by ann
 reach kettle by ann_facing
 ";
     let report = run(text);
-    let socket = reach_of(&report, "socket");
+    let socket = reach_of(&report, "socket", "ann");
     assert_eq!(
         socket.why,
         [Why::KeptAway {
@@ -144,8 +123,8 @@ reach kettle by ann_facing
         "{socket:?}"
     );
     let without = run(&text.replace("  box counter at (0, 0, 0) size (3000, 800, 900)\n", ""));
-    assert!(reach_of(&without, "socket").ok);
-    let kettle = reach_of(&report, "kettle");
+    assert!(reach_of(&without, "socket", "ann").ok);
+    let kettle = reach_of(&report, "kettle", "ann_facing");
     assert_eq!(kettle.why, [Why::NoApproach], "{kettle:?}");
     assert!(!kettle.ok && kettle.iterations == 0);
 }
