@@ -58,14 +58,20 @@ impl Legs {
         self.knee_height_mm - self.ankle_height_mm
     }
 
-    /// Standing straight, feet flat and forward, in the base frame.
+    /// Standing straight, feet flat and forward, in the base frame. Each
+    /// thigh's solid starts a thigh radius below its hip joint, so that its
+    /// rounded top ends at the joint's height: above it is the pelvis (the
+    /// iliac crest and the waist), which the trunk bends over, not the
+    /// thigh. (Started at the joint, a sideways bend within the trunk's
+    /// range met the top of the thigh.)
     pub fn standing(&self) -> Vec<Solid> {
         let knee_z = -self.thigh_mm();
         let ankle_z = knee_z - self.shank_mm();
+        let thigh_top_z = (-self.thigh_radius_mm).max(knee_z);
         self.solids(|side| {
             let y = side * self.hip_width_mm / 2.0;
             [
-                Point3::new(0.0, y, 0.0),
+                Point3::new(0.0, y, thigh_top_z),
                 Point3::new(0.0, y, knee_z),
                 Point3::new(0.0, y, ankle_z),
             ]
@@ -154,6 +160,11 @@ mod tests {
         );
         assert_eq!(shank.b.y, -95.0);
         assert_eq!(s.len(), 6);
+        let thigh = capsule(&s, "the left thigh");
+        assert!(
+            (thigh.a.z + thigh.radius_mm).abs() < 1e-9,
+            "the thigh's rounded top at the hip joint's height"
+        );
     }
 
     #[test]
