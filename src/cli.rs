@@ -87,6 +87,9 @@ struct LimitArgs {
     /// Most solver starts the tasks may need, counted at their worst
     #[arg(long, value_name = "N", default_value_t = DEFAULTS.solver_starts as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.solver_starts as u64))]
     max_solver_starts: u64,
+    /// Most people one population may draw
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.people as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.people as u64))]
+    max_people: u64,
     /// Also read used files, meshes and URDFs from DIR (by default only
     /// from the scenario's own directory and below); may be repeated
     #[arg(long, value_name = "DIR")]
@@ -103,6 +106,7 @@ impl LimitArgs {
             use_chain: self.max_use_chain as usize,
             alias_chain: self.max_alias_chain as usize,
             solver_starts: self.max_solver_starts,
+            people: self.max_people as usize,
         }
     }
 }

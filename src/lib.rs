@@ -16,6 +16,7 @@
 //! }
 //! ```
 
+pub mod ansur;
 pub mod bases;
 mod builtin;
 pub mod cache;

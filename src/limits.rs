@@ -26,6 +26,8 @@ pub struct Limits {
     /// their worst (every placement tried, every retry run), each weighted
     /// by its solver's iteration options over their defaults.
     pub solver_starts: u64,
+    /// Most people one population may draw.
+    pub people: usize,
 }
 
 /// The limits unless told otherwise: far beyond any real scenario.
@@ -37,6 +39,7 @@ pub const DEFAULTS: Limits = Limits {
     use_chain: 64,
     alias_chain: 16,
     solver_starts: 20_000_000,
+    people: 10_000,
 };
 
 impl Default for Limits {
@@ -57,4 +60,5 @@ pub const CEILINGS: Limits = Limits {
     use_chain: 1024,
     alias_chain: 256,
     solver_starts: 1_000_000_000_000,
+    people: 1_000_000,
 };

@@ -10,8 +10,8 @@ use std::sync::Arc;
 use crate::options::Options;
 use crate::plugin::{Base, Fit, FormatScene, Subject, Task, TaskInput, TaskPlace};
 use crate::progress::Progress;
-use crate::report::{NotPlacedReport, TaskReport};
-use crate::scene::{Person, Room, Surface};
+use crate::report::{NotPlacedReport, PopulationReport, TaskReport};
+use crate::scene::{Person, Population, Room, Surface};
 use crate::span::Span;
 
 #[derive(Clone)]
@@ -22,6 +22,8 @@ pub struct Scenario {
     pub persons: Vec<Person>,
     /// Each person's base, built, in the order of `persons`.
     pub bases: Vec<Arc<dyn Base>>,
+    /// The populations the tasks name; their people are among `persons`.
+    pub populations: Vec<Population>,
     pub tasks: Vec<TaskSpec>,
 }
 
@@ -43,7 +45,12 @@ pub struct TaskSpec {
     /// Its room, subject and person, by index.
     pub room: usize,
     pub subject: SubjectRef,
+    /// The person; for a population's task, its first person (whose body
+    /// every other shares in shape).
     pub person: usize,
+    /// The population the task is by, if it is by one: it runs for each
+    /// of its people.
+    pub population: Option<usize>,
     /// The effectors the task names, resolved for the person: indices
     /// into the person's body, in the order of [`Task::effectors`].
     pub effectors: Vec<usize>,
@@ -70,6 +77,7 @@ impl fmt::Debug for TaskSpec {
             .field("room", &self.room)
             .field("subject", &self.subject)
             .field("person", &self.person)
+            .field("population", &self.population)
             .field("effectors", &self.effectors)
             .field("options", &self.options)
             .finish_non_exhaustive()
@@ -116,6 +124,9 @@ impl Scenario {
     /// Run `task`: its plugin's answer, or, where the person's base fits
     /// nowhere in the task's room, that answer (and nothing tried).
     pub fn run_task(&self, task: &TaskSpec, progress: &dyn Progress) -> TaskReport {
+        if let Some(population) = task.population {
+            return self.run_population(task, population, progress);
+        }
         let input = self.input(task, progress);
         let Fit::Nowhere(misfit) = input.base.fit(input.room) else {
             return task.task.run(&input);
@@ -136,6 +147,39 @@ impl Scenario {
             &input.room.name,
             &misfit,
         ))
+    }
+}
+
+impl Scenario {
+    /// Run `task` for each person of population `index`, in parallel, and
+    /// report the share it accommodates. The answers are collected in
+    /// draw order, so the report is the same on any number of threads.
+    fn run_population(&self, task: &TaskSpec, index: usize, progress: &dyn Progress) -> TaskReport {
+        use rayon::prelude::*;
+        let population = &self.populations[index];
+        let one_point = task.task.points(&task.subject_in(&self.rooms[task.room])) <= 1;
+        if one_point {
+            progress.add_work(population.len() as u64);
+        }
+        let answers: Vec<TaskReport> = population
+            .members
+            .clone()
+            .into_par_iter()
+            .map(|person| {
+                let spec = TaskSpec {
+                    person,
+                    population: None,
+                    ..task.clone()
+                };
+                let answer = self.run_task(&spec, progress);
+                if one_point {
+                    progress.advance(1);
+                }
+                answer
+            })
+            .collect();
+        let name = task.subject_name(self);
+        TaskReport::Population(Box::new(PopulationReport::new(name, population, &answers)))
     }
 }
 

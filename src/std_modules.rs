@@ -9,6 +9,7 @@ pub const MODULES: &[(&str, &str)] = &[
     ("body", include_str!("../stdlib/body.reach")),
     ("paper", include_str!("../stdlib/paper.reach")),
     ("people", include_str!("../stdlib/people.reach")),
+    ("populations", include_str!("../stdlib/populations.reach")),
 ];
 
 /// The text of module `name`, if there is one.
@@ -30,16 +31,18 @@ pub fn listing() -> String {
         let Ok(file) = crate::syntax::parse_file(crate::span::FileId::default(), text) else {
             continue;
         };
-        let mut kinds: Vec<(&str, Vec<String>)> = ["mannequins", "profiles", "bases", "visions"]
-            .into_iter()
-            .map(|k| (k, Vec::new()))
-            .collect();
+        let mut kinds: Vec<(&str, Vec<String>)> =
+            ["mannequins", "profiles", "bases", "visions", "populations"]
+                .into_iter()
+                .map(|k| (k, Vec::new()))
+                .collect();
         for item in &file.items {
             let (k, entry) = match item {
                 Item::Mannequin(m) => (0, mannequin_entry(m)),
                 Item::Profile(p) => (1, p.name.value.clone()),
                 Item::BasePreset(b) => (2, format!("{} ({})", b.name.value, b.plugin.name.value)),
                 Item::VisionPreset(v) => (3, v.name.value.clone()),
+                Item::Population(p) => (4, p.name.value.clone()),
                 _ => continue,
             };
             kinds[k].1.push(entry);

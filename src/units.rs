@@ -15,6 +15,9 @@ pub enum Unit {
     Deg,
     Rad,
     Arcmin,
+    /// `%`: a share; a number without unit, divided by 100. Written only
+    /// after a number, never in `units`.
+    Percent,
 }
 
 impl Unit {
@@ -41,6 +44,7 @@ impl Unit {
             Unit::Deg => "deg",
             Unit::Rad => "rad",
             Unit::Arcmin => "arcmin",
+            Unit::Percent => "%",
         }
     }
 
@@ -58,11 +62,14 @@ impl Unit {
             Unit::Deg => std::f64::consts::PI / 180.0,
             Unit::Rad => 1.0,
             Unit::Arcmin => std::f64::consts::PI / (180.0 * 60.0),
+            Unit::Percent => 0.01,
         }
     }
 
     pub fn dim(self) -> Dim {
-        if self.is_length() {
+        if self == Unit::Percent {
+            Dim::NONE
+        } else if self.is_length() {
             Dim::LENGTH
         } else {
             Dim::ANGLE

@@ -18,6 +18,7 @@ mod meshes;
 mod parser;
 mod placement;
 mod plugins;
+mod population;
 mod properties;
 mod retry;
 mod stdlib;

@@ -37,6 +37,14 @@ fn sexpr(e: &Expr) -> String {
             };
             format!("({op} {} {})", sexpr(l), sexpr(r))
         }
+        ExprKind::Call(f, args) => {
+            let f = match f {
+                Function::Min => "min",
+                Function::Max => "max",
+            };
+            let args: Vec<String> = args.iter().map(sexpr).collect();
+            format!("({f} {})", args.join(" "))
+        }
     }
 }
 
@@ -65,6 +73,12 @@ fn expressions() {
         ("-(a + 1m)", "(neg (+ a 1m))"),
         ("counter_h + 60", "(+ counter_h 60)"),
         ("0.818 - 0.530", "(- 0.818 0.53)"),
+        ("30%", "30%"),
+        ("30 %", "30%"),
+        ("min(a, 2mm)", "(min a 2mm)"),
+        ("max(a, b, c) / 2", "(/ (max a b c) 2)"),
+        ("-min(a, b)", "(neg (min a b))"),
+        ("mini + min", "(+ mini min)"),
     ];
     for (text, expected) in cases {
         assert_eq!(let_value(text), expected, "parsing {text:?}");
@@ -126,6 +140,7 @@ fn declarations() {
             Item::BasePreset(_) => "base preset",
             Item::VisionPreset(_) => "vision",
             Item::Person(_) => "person",
+            Item::Population(_) => "population",
             Item::Task(_) => "task",
         })
         .collect();

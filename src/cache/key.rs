@@ -106,7 +106,16 @@ fn key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence, tried: &[T
                 hash_bits(centre.iter().chain([radius_mm]), h);
             }
         }
-        if let Some(reach_mm) = dependence.reach_mm {
+        // A population's people differ from its first in their bodies,
+        // bases and placements: each is in the key, and every obstacle.
+        if let Some(population) = task.population {
+            let members = scenario.populations[population].members.clone();
+            for person in &scenario.persons[members] {
+                hash_person(person, h);
+                person.base.hash(h);
+            }
+            (0..room.boxes.len() + room.meshes.len()).for_each(|i| hash_obstacle(room, i, h));
+        } else if let Some(reach_mm) = dependence.reach_mm {
             for i in obstacles_within(room, tried, reach_mm, dependence.sight_lines) {
                 hash_obstacle(room, i, h);
             }

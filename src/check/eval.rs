@@ -8,7 +8,7 @@ use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::names::suggest;
 use crate::span::Span;
-use crate::syntax::ast::{BinOp, Expr, ExprKind, Vec3Expr};
+use crate::syntax::ast::{BinOp, Expr, ExprKind, Function, Vec3Expr};
 use crate::units::{Dim, Quantity, QuantityError};
 
 impl Checker<'_> {
@@ -80,6 +80,7 @@ impl Checker<'_> {
             },
             ExprKind::Name(name) => return self.name_value(name, e.span),
             ExprKind::Neg(inner) => self.eval(inner)?.negated(),
+            ExprKind::Call(function, args) => return self.extreme(*function, args, e.span),
             ExprKind::Binary(op, l_expr, r_expr) => {
                 let (l, r) = (self.eval(l_expr), self.eval(r_expr));
                 let (l, r) = (l?, r?);
@@ -109,6 +110,38 @@ impl Checker<'_> {
             return None;
         }
         Some(q)
+    }
+
+    /// `min(...)` or `max(...)` of values of one kind (a bare number
+    /// takes the unit of the others' kind, as in a sum).
+    fn extreme(&mut self, function: Function, args: &[Expr], span: Span) -> Option<Quantity> {
+        let values: Vec<Option<Quantity>> = args.iter().map(|a| self.eval(a)).collect();
+        let mut values = values.into_iter().collect::<Option<Vec<_>>>()?.into_iter();
+        let mut best = values.next()?;
+        for next in values {
+            // The difference checks the kinds and gives the order; adding
+            // nothing of the other's kind gives the result that kind.
+            let ordered = best.sum(next, -1.0).and_then(|difference| {
+                let take_next = match function {
+                    Function::Min => difference.raw() > 0.0,
+                    Function::Max => difference.raw() < 0.0,
+                };
+                let (kept, other) = if take_next {
+                    (next, best)
+                } else {
+                    (best, next)
+                };
+                kept.sum(other.product(Quantity::dimensioned(0.0, Dim::NONE))?, 1.0)
+            });
+            match ordered {
+                Ok(q) => best = q,
+                Err(err) => {
+                    self.error(Error::new(quantity_error(err), span));
+                    return None;
+                }
+            }
+        }
+        Some(best)
     }
 
     fn name_value(&mut self, name: &str, span: Span) -> Option<Quantity> {

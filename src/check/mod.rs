@@ -11,6 +11,7 @@ mod mannequin;
 mod mesh;
 mod options;
 mod person;
+mod population;
 mod room;
 mod table;
 mod task;
@@ -50,10 +51,12 @@ pub fn check(
     c.evaluate_lets();
     let rooms = c.rooms();
     c.build_mannequins();
-    let (persons, bases): (Vec<_>, Vec<_>) = c.persons().into_iter().unzip();
-    let tasks = c.tasks(&rooms, &persons, &bases);
+    let (mut persons, mut bases): (Vec<_>, Vec<_>) = c.persons().into_iter().unzip();
+    let named = c.populations_named(&persons);
+    let populations = c.populations(&named, &mut persons, &mut bases);
+    let tasks = c.tasks(&rooms, &persons, &bases, &populations);
     if c.errors.is_empty() {
-        c.check_budget(&tasks, &rooms, &bases);
+        c.check_budget(&tasks, &rooms, &bases, &populations);
     }
     let result = if c.errors.is_empty() {
         Ok(Scenario {
@@ -61,6 +64,7 @@ pub fn check(
             rooms,
             persons,
             bases,
+            populations,
             tasks,
         })
     } else {
@@ -96,6 +100,7 @@ struct Checker<'a> {
     /// last; they hide constants of the same name.
     params: Vec<(String, Option<Quantity>)>,
     persons: Table<'a, crate::syntax::ast::PersonDecl>,
+    populations: Table<'a, crate::syntax::ast::PopulationDecl>,
     tasks: Vec<(&'a crate::syntax::ast::TaskDecl, FileId)>,
     /// Each target's room and place in it, by name, for the tasks.
     target_index: HashMap<String, (usize, usize)>,
@@ -123,6 +128,7 @@ impl<'a> Checker<'a> {
             vision_presets: Table::new("vision"),
             params: Vec::new(),
             persons: Table::new("person"),
+            populations: Table::new("population"),
             tasks: Vec::new(),
             target_index: HashMap::new(),
         }
@@ -183,6 +189,7 @@ impl<'a> Checker<'a> {
                 Item::BasePreset(d) => self.base_presets.insert(&d.name, d, f.id),
                 Item::VisionPreset(d) => self.vision_presets.insert(&d.name, d, f.id),
                 Item::Person(d) => self.persons.insert(&d.name, d, f.id),
+                Item::Population(d) => self.populations.insert(&d.name, d, f.id),
                 Item::Task(d) if is_root => {
                     self.tasks.push((d, f.id));
                     None

@@ -54,7 +54,7 @@ impl Checker<'_> {
 
     /// A base plugin, or a base preset (`base power_chair = wheelchair
     /// {...}`) with the person's own options over the preset's.
-    fn base_config(&mut self, b: &ast::PluginUse) -> Option<PluginConfig> {
+    pub(super) fn base_config(&mut self, b: &ast::PluginUse) -> Option<PluginConfig> {
         let preset = self.base_presets.get(&b.name.value);
         let (Some((preset, file)), None) = (preset, self.registry.base(&b.name.value)) else {
             return self.plugin_config(PluginKind::Base, b);
@@ -81,7 +81,7 @@ impl Checker<'_> {
     /// The base `config` gives, built for `person` of `physique`; an
     /// error at the option it names (in the person's block, else the
     /// preset's), or at the base if the person does not suit it.
-    fn build_base(
+    pub(super) fn build_base(
         &mut self,
         person: &str,
         b: &ast::PluginUse,
@@ -121,7 +121,7 @@ impl Checker<'_> {
     /// The person's vision settings: a preset's, then their own over them;
     /// only those given (a gaze task's own come first, then these, then the
     /// defaults).
-    fn person_vision(&mut self, visions: &[ast::PersonVision]) -> Option<Vision> {
+    pub(super) fn person_vision(&mut self, visions: &[ast::PersonVision]) -> Option<Vision> {
         self.repeated(visions.iter().skip(1).map(|v| v.span), "`vision`");
         let Some(vision) = visions.first() else {
             return Some(Vision::default());
@@ -207,7 +207,7 @@ impl Checker<'_> {
         ok.then_some(body)
     }
 
-    fn apply_override(&mut self, joints: &mut [Joint], o: &JointOverride) -> Option<()> {
+    pub(super) fn apply_override(&mut self, joints: &mut [Joint], o: &JointOverride) -> Option<()> {
         let joint = match o {
             JointOverride::Limits { joint, .. }
             | JointOverride::Neutral { joint, .. }
@@ -241,7 +241,7 @@ impl Checker<'_> {
     }
 
     /// Every override of profile `name`, in its own file's units.
-    fn apply_profile(&mut self, joints: &mut [Joint], name: &Name) -> Option<()> {
+    pub(super) fn apply_profile(&mut self, joints: &mut [Joint], name: &Name) -> Option<()> {
         let (profile, file) = match self.profiles.resolve(name) {
             Ok(found) => found,
             Err(e) => {

@@ -9,12 +9,26 @@ use crate::error::{Error, ErrorKind};
 use crate::names::suggest;
 use crate::plugin::{Base, Fit, PluginKind, SubjectKind, Task};
 use crate::scenario::{SubjectRef, TaskSpec};
-use crate::scene::{Person, Room, FACES};
+use crate::scene::{Person, Population, Room, FACES};
 use crate::span::{Span, Spanned};
 use crate::syntax::ast::TaskDecl;
 
 /// A task's subject resolved: its room and the subject there.
 type Resolved = (usize, SubjectRef);
+
+/// Who a task may be by: the persons with their bases, and the
+/// populations (whose people are among the persons).
+struct People<'s> {
+    persons: &'s [Person],
+    bases: &'s [Arc<dyn Base>],
+    populations: &'s [Population],
+}
+
+/// Whom a task is by: a person, or a population (and its first person).
+struct Who {
+    person: usize,
+    population: Option<usize>,
+}
 
 impl Checker<'_> {
     pub(super) fn tasks(
@@ -22,6 +36,7 @@ impl Checker<'_> {
         rooms: &[Room],
         persons: &[Person],
         bases: &[Arc<dyn Base>],
+        populations: &[Population],
     ) -> Vec<TaskSpec> {
         let decls = std::mem::take(&mut self.tasks);
         self.target_index = rooms
@@ -36,20 +51,20 @@ impl Checker<'_> {
             .collect();
         let mut out = Vec::new();
         for (decl, file) in decls {
-            if let Some(tasks) = self.in_file(file, |c| c.task(decl, rooms, persons, bases)) {
+            let by = People {
+                persons,
+                bases,
+                populations,
+            };
+            if let Some(tasks) = self.in_file(file, |c| c.task(decl, rooms, &by)) {
                 out.extend(tasks);
             }
         }
         out
     }
 
-    fn task(
-        &mut self,
-        decl: &TaskDecl,
-        rooms: &[Room],
-        persons: &[Person],
-        bases: &[Arc<dyn Base>],
-    ) -> Option<Vec<TaskSpec>> {
+    fn task(&mut self, decl: &TaskDecl, rooms: &[Room], by: &People) -> Option<Vec<TaskSpec>> {
+        let (persons, bases) = (by.persons, by.bases);
         let kind = &decl.kind;
         let Some(plugin) = self.registry.task(&kind.value).cloned() else {
             let names = self.registry.names(PluginKind::Task);
@@ -71,14 +86,17 @@ impl Checker<'_> {
             .iter()
             .map(|s| self.subject(plugin.subject(), s, rooms))
             .collect();
-        let people: Vec<Option<usize>> = decl
+        let who: Vec<Option<Who>> = decl
             .persons
             .iter()
-            .map(|p| self.person_ref(p, persons))
+            .map(|p| self.person_ref(p, persons, by.populations))
             .collect();
         let options = options?;
         let subjects: Vec<Resolved> = subjects.into_iter().collect::<Option<_>>()?;
-        let people: Vec<usize> = people.into_iter().collect::<Option<_>>()?;
+        let who: Vec<Who> = who.into_iter().collect::<Option<_>>()?;
+        // A population's first person stands for all of them here: they
+        // share a body's shape and a base.
+        let people: Vec<usize> = who.iter().map(|w| w.person).collect();
         let task: Arc<dyn Task> = match plugin.configure(&options, self.registry) {
             Ok(task) => Arc::from(task),
             Err(e) => {
@@ -96,14 +114,15 @@ impl Checker<'_> {
         }
         let mut tasks = Vec::new();
         for (room, subject) in &subjects {
-            for (person, effectors) in people.iter().zip(&effectors) {
+            for (who, effectors) in who.iter().zip(&effectors) {
                 let Some(effectors) = effectors else { continue };
                 tasks.push(TaskSpec {
                     kind: kind.value.clone(),
                     task: Arc::clone(&task),
                     room: *room,
                     subject: subject.clone(),
-                    person: *person,
+                    person: who.person,
+                    population: who.population,
                     effectors: effectors.clone(),
                     options: options.clone(),
                     span: decl.span,
@@ -313,15 +332,45 @@ impl Checker<'_> {
         None
     }
 
-    fn person_ref(&mut self, name: &crate::span::Name, persons: &[Person]) -> Option<usize> {
+    fn person_ref(
+        &mut self,
+        name: &crate::span::Name,
+        persons: &[Person],
+        populations: &[Population],
+    ) -> Option<Who> {
         if let Some(i) = persons.iter().position(|p| p.name == name.value) {
-            return Some(i);
+            return Some(Who {
+                person: i,
+                population: None,
+            });
         }
-        if self.persons.get(&name.value).is_none() {
+        if let Some(i) = populations.iter().position(|p| p.name == name.value) {
+            return Some(Who {
+                person: populations[i].members.start,
+                population: Some(i),
+            });
+        }
+        // A population that failed to build has reported its own errors.
+        let declared =
+            self.persons.get(&name.value).is_some() || self.populations.get(&name.value).is_some();
+        if declared {
+            return None;
+        }
+        if self.populations.names().next().is_none() {
             if let Err(e) = self.persons.resolve(name) {
                 self.error(e);
             }
+            return None;
         }
+        let known = self.persons.names().chain(self.populations.names());
+        self.error(Error::new(
+            ErrorKind::UnknownName {
+                what: "person or population",
+                name: name.value.clone(),
+                suggestion: suggest(&name.value, known),
+            },
+            name.span,
+        ));
         None
     }
 }

@@ -15,6 +15,7 @@ mod gaze;
 mod map;
 mod not_placed;
 mod parts;
+mod population;
 mod reach;
 mod reach_and_gaze;
 mod why;
@@ -24,6 +25,7 @@ pub use gaze::{GazeReport, Sight};
 pub use map::{cells_apart, MapCell, MapReport};
 pub use not_placed::NotPlacedReport;
 pub use parts::{deg, fixed, mm, Asked, BaseReport, Names, Posture};
+pub use population::{wilson95, Excluded, PopulationReport, ShareCell};
 pub use reach::ReachReport;
 pub use reach_and_gaze::ReachAndGazeReport;
 pub use why::{Why, WIDENED_DEG};
@@ -59,6 +61,8 @@ pub enum TaskReport {
     /// The person's base fits nowhere in the task's room.
     #[serde(rename = "not_placed")]
     NotPlaced(NotPlacedReport),
+    /// A task by a population: the share it accommodates.
+    Population(Box<PopulationReport>),
 }
 
 /// What every kind of task report says of itself.
@@ -77,6 +81,7 @@ impl TaskReport {
             TaskReport::ReachAndGaze(b) => b.as_ref(),
             TaskReport::Map(m) => m,
             TaskReport::NotPlaced(n) => n,
+            TaskReport::Population(p) => p.as_ref(),
         }
     }
 

@@ -7,6 +7,7 @@
 mod mesh;
 mod person_parts;
 mod placement;
+mod population;
 mod surface;
 mod vision;
 
@@ -15,6 +16,7 @@ pub use person_parts::{column_solid, OwnBody, Physique};
 pub use placement::{
     BasePose, Blocker, Collision, HasSolution, IkSolution, Placement, Preferred, Wall,
 };
+pub use population::{Drawn, Population};
 pub use surface::{Grid, GridCell, Surface, FACES};
 pub use vision::Vision;
 

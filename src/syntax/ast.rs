@@ -21,6 +21,7 @@ pub enum Item {
     BasePreset(BasePreset),
     VisionPreset(VisionPreset),
     Person(PersonDecl),
+    Population(Box<PopulationDecl>),
     Task(TaskDecl),
 }
 
@@ -47,10 +48,21 @@ pub struct Expr {
 
 #[derive(Clone, Debug, PartialEq)]
 pub enum ExprKind {
-    Number { value: f64, unit: Option<Unit> },
+    Number {
+        value: f64,
+        unit: Option<Unit>,
+    },
     Name(String),
     Neg(Box<Expr>),
     Binary(BinOp, Box<Expr>, Box<Expr>),
+    /// `min(...)` or `max(...)`.
+    Call(Function, Vec<Expr>),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Function {
+    Min,
+    Max,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -215,6 +227,39 @@ pub struct PersonDecl {
     pub bases: Vec<PluginUse>,
     pub visions: Vec<PersonVision>,
     pub span: Span,
+}
+
+/// `population NAME [= FROM] { ... }`: people drawn from measured adults.
+/// `person` holds its `mannequin`, `base` and `vision` items (named
+/// `NAME`), the rest the population's own.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PopulationDecl {
+    pub name: Name,
+    /// The population it starts from, whose items it replaces.
+    pub from: Option<Name>,
+    pub person: PersonDecl,
+    pub size: Option<Expr>,
+    pub seed: Option<Expr>,
+    pub women: Option<Expr>,
+    pub draws: Vec<DrawDecl>,
+    pub profiles: Vec<(Name, Expr)>,
+    pub span: Span,
+}
+
+/// `draw NAME normal(MEAN, SD) within (LOW, HIGH)`, or `uniform(LOW, HIGH)`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DrawDecl {
+    pub name: Name,
+    pub kind: Spanned<Distribution>,
+    pub first: Expr,
+    pub second: Expr,
+    pub within: Option<(Expr, Expr)>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Distribution {
+    Normal,
+    Uniform,
 }
 
 /// A chain read from a URDF file, from link `root` to link `tip`.

@@ -15,13 +15,16 @@ fn describe(rule: Rule) -> Option<&'static str> {
         EOI => "end of file",
         file | inline_space | WHITESPACE | COMMENT | line_comment | block_comment | item
         | ident_char | prefix | infix | primary | room_item | mannequin_item | joint_prop
-        | person_item | joint_override | and_task | mesh_prop | link_prop => return None,
+        | person_item | joint_override | and_task | mesh_prop | link_prop | population_item => {
+            return None
+        }
         ident | keyword => "a name",
         number | quantity => "a number",
-        unit | bad_unit => "a unit",
+        unit | bad_unit | percent => "a unit",
         string | string_inner => "a string in double quotes",
         boolean => "`true` or `false`",
         expr | neg | paren => "an expression",
+        call | function => "`min(...)` or `max(...)`",
         add | sub | mul | div => "an operator",
         vec3 => "a point `(x, y, z)`",
         units_decl => "`units`",
@@ -66,6 +69,14 @@ fn describe(rule: Rule) -> Option<&'static str> {
         vision_preset | person_vision => "`vision`",
         person => "`person`",
         person_mannequin => "`mannequin`",
+        population => "`population`",
+        population_from => "`= POPULATION`",
+        population_size => "`size`",
+        population_seed => "`seed`",
+        population_women => "`women`",
+        population_draw => "`draw`",
+        distribution | distribution_kind => "`normal(mean, sd)` or `uniform(low, high)`",
+        population_profile => "`profile NAME SHARE`",
         limit_override => "`limits`",
         neutral_override => "`neutral`",
         weight_override => "`weight`",
@@ -149,7 +160,7 @@ fn is_visible_token(token: &str) -> bool {
 /// Where any top-level item may start, name one alternative for all of
 /// them rather than listing every keyword.
 fn collapse_item_starts(expected: &mut Vec<String>) {
-    const STARTS: [&str; 10] = [
+    const STARTS: [&str; 11] = [
         "`let`",
         "`room`",
         "`mannequin`",
@@ -157,6 +168,7 @@ fn collapse_item_starts(expected: &mut Vec<String>) {
         "`base`",
         "`vision`",
         "`person`",
+        "`population`",
         "`units`",
         "`use`",
         "a name",
@@ -176,11 +188,13 @@ fn collapse_item_starts(expected: &mut Vec<String>) {
 /// After a number, a unit or an operator may follow; name the operators
 /// once, and mention units only when nothing else would do.
 fn collapse_number_continuations(expected: &mut Vec<String>) {
-    const UNITS: [&str; 7] = ["`mm`", "`cm`", "`m`", "`in`", "`deg`", "`rad`", "`arcmin`"];
+    const UNITS: [&str; 8] = [
+        "`mm`", "`cm`", "`m`", "`in`", "`deg`", "`rad`", "`arcmin`", "`%`",
+    ];
     const OPERATORS: [&str; 4] = ["`+`", "`-`", "`*`", "`/`"];
     if expected.iter().any(|e| e == "an expression") {
         // What may start an expression is the expression itself.
-        expected.retain(|e| e != "`(`" && e != "`-`");
+        expected.retain(|e| !["`(`", "`-`", "`min`", "`max`"].contains(&e.as_str()));
     }
     let had_operator = expected
         .iter()

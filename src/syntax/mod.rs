@@ -5,5 +5,6 @@ pub mod ast;
 mod expected;
 mod grammar;
 mod parser;
+mod population;
 
 pub use parser::{parse_file, parse_file_within};

@@ -69,7 +69,7 @@ static PRATT: LazyLock<PrattParser<Rule>> = LazyLock::new(|| {
         .op(Op::prefix(Rule::neg))
 });
 
-struct Builder {
+pub(super) struct Builder {
     file: FileId,
     errors: Vec<Error>,
     /// Most operands and operators in one expression, those inside its
@@ -84,7 +84,7 @@ struct Builder {
 impl Builder {
     /// The pair's span without the white space and comments a rule may
     /// end with (an optional last part that is absent leaves them in).
-    fn span(&self, pair: &Pair<Rule>) -> Span {
+    pub(super) fn span(&self, pair: &Pair<Rule>) -> Span {
         let s = pair.as_span();
         let end = match last_token(pair) {
             // A token: only white space may trail it.
@@ -99,7 +99,7 @@ impl Builder {
         Span::new(self.file, s.start(), end)
     }
 
-    fn name(&self, pair: Pair<Rule>) -> Name {
+    pub(super) fn name(&self, pair: Pair<Rule>) -> Name {
         Spanned::new(pair.as_str().to_string(), self.span(&pair))
     }
 
@@ -139,6 +139,7 @@ impl Builder {
                 })
             }
             Rule::person => Item::Person(self.person(pair)),
+            Rule::population => Item::Population(Box::new(self.population(pair))),
             Rule::task => Item::Task(self.task(pair)),
             r => unreachable!("item rule {r:?}"),
         }
@@ -175,7 +176,7 @@ impl Builder {
 
     /// An expression, refused (as the number 0, with a diagnostic) if it
     /// has more terms than the limit, its parentheses' terms included.
-    fn expr(&mut self, pair: Pair<Rule>) -> Expr {
+    pub(super) fn expr(&mut self, pair: Pair<Rule>) -> Expr {
         let outermost = self.terms_so_far.is_none();
         let before = self.terms_so_far.unwrap_or(0);
         let expr = self.expr_within(pair, before);
@@ -254,6 +255,14 @@ impl Builder {
         let kind = match pair.as_rule() {
             Rule::quantity => self.quantity(pair),
             Rule::ident => ExprKind::Name(pair.as_str().to_string()),
+            Rule::call => {
+                let mut it = pair.into_inner();
+                let function = match it.next().map(|f| f.as_str()) {
+                    Some("min") => Function::Min,
+                    _ => Function::Max,
+                };
+                ExprKind::Call(function, it.map(|arg| self.expr(arg)).collect())
+            }
             Rule::paren => {
                 // The parentheses belong to the expression's span.
                 let inner = self.expr(pair.into_inner().next().unwrap());
@@ -287,6 +296,7 @@ impl Builder {
         let unit = match it.next() {
             None => None,
             Some(u) if u.as_rule() == Rule::unit => Unit::parse(u.as_str()),
+            Some(u) if u.as_rule() == Rule::percent => Some(Unit::Percent),
             Some(bad) => {
                 self.errors.push(Error::new(
                     ErrorKind::UnknownUnit {
@@ -570,6 +580,14 @@ impl Builder {
             span,
         };
         for p in it {
+            self.person_item(&mut person, p);
+        }
+        person
+    }
+
+    /// One `mannequin`, `base` or `vision` item of a person or population.
+    pub(super) fn person_item(&mut self, person: &mut PersonDecl, p: Pair<Rule>) {
+        {
             match p.as_rule() {
                 Rule::person_mannequin => {
                     let mut m = p.into_inner();
@@ -602,7 +620,6 @@ impl Builder {
                 }
             }
         }
-        person
     }
 
     /// `name` or `name(arg value, ...)`.

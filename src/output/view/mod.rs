@@ -280,6 +280,9 @@ fn task_view(task: &TaskReport, place: &TaskPlace, scene: &FormatScene<'_>) -> T
         TaskReport::Map(m) => view.cells = Some(cells(m)),
         // No person is placed: the room and the words say it.
         TaskReport::NotPlaced(_) => {}
+        // Many people: the words say the share (a map's shares are not
+        // drawn in the 3D view yet).
+        TaskReport::Population(_) => {}
     }
     if let Some(&(base, _)) = postures.first() {
         let person = place.person;

@@ -1,0 +1,303 @@
+//! A task by a population: the share of its people it accommodates (who
+//! reach or see the target, or, for a map, each point's share), with a 95 %
+//! confidence interval for the sample's size, and who is not accommodated
+//! and why (their sex, age, stature, profiles and drawn values, and their
+//! own answer's verdict).
+
+use std::fmt::Write as _;
+
+use serde::Serialize;
+
+use super::{fixed, mm, Answer, Figure, MapReport, ReportKind, TaskReport};
+use crate::scene::{Drawn, Population};
+
+/// One task by a population.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PopulationReport {
+    /// The task as the text report names it (`reach`, `gaze`, `map`, ...).
+    pub task: &'static str,
+    /// The target or surface.
+    pub name: String,
+    pub population: String,
+    pub seed: u64,
+    pub people: usize,
+    /// Those the answer holds for (reach or see the target; for a map,
+    /// reach at least one point); those whose base fits nowhere are not.
+    pub accommodated: usize,
+    /// `accommodated / people`.
+    pub share: f64,
+    /// The Wilson score interval of the share at 95 %.
+    pub ci95: [f64; 2],
+    /// Of those not accommodated, how many fit nowhere in the room.
+    pub not_placed: usize,
+    /// Whether everyone is accommodated.
+    pub ok: bool,
+    /// Everyone not accommodated, in draw order.
+    pub excluded: Vec<Excluded>,
+    /// For a map: each point's share of the people who reach it, in the
+    /// map's order (row by row).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cells: Option<Vec<ShareCell>>,
+}
+
+/// A person the task does not accommodate.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Excluded {
+    /// `manual_users#17`.
+    pub person: String,
+    /// Their row of ANSUR II (`stdlib/data/ansur2.csv`, 1 for the first
+    /// after the header).
+    pub survey_row: usize,
+    pub sex: &'static str,
+    pub age_years: f64,
+    pub stature_mm: f64,
+    pub profiles: Vec<String>,
+    /// The `draw`s' values, by name (lengths in mm, angles in radians).
+    #[serde(serialize_with = "by_name")]
+    pub drawn: Vec<(String, f64)>,
+    /// Their own answer: `NOT reachable: blocked by shelf`, `does NOT fit
+    /// in the room`.
+    pub verdict: String,
+}
+
+/// One point of a population's map.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ShareCell {
+    pub column: usize,
+    pub row: usize,
+    pub point_mm: [f64; 3],
+    /// The share of the people who reach it.
+    pub share: f64,
+}
+
+/// Pairs as a JSON object, in their order.
+fn by_name<S: serde::Serializer>(pairs: &[(String, f64)], s: S) -> Result<S::Ok, S::Error> {
+    use serde::ser::SerializeMap;
+    let mut map = s.serialize_map(Some(pairs.len()))?;
+    for (name, value) in pairs {
+        map.serialize_entry(name, value)?;
+    }
+    map.end()
+}
+
+/// z for a two-sided 95 % interval.
+const Z95: f64 = 1.959_963_984_540_054;
+
+/// The Wilson score interval at 95 % of `successes` in `n` trials.
+pub fn wilson95(successes: usize, n: usize) -> [f64; 2] {
+    if n == 0 {
+        return [0.0, 1.0];
+    }
+    let (k, n) = (successes as f64, n as f64);
+    let p = k / n;
+    let z2 = Z95 * Z95;
+    let centre = (p + z2 / (2.0 * n)) / (1.0 + z2 / n);
+    let half = Z95 / (1.0 + z2 / n) * (p * (1.0 - p) / n + z2 / (4.0 * n * n)).sqrt();
+    [(centre - half).max(0.0), (centre + half).min(1.0)]
+}
+
+impl PopulationReport {
+    /// The report of a task whose answers, one per person of `population`
+    /// in draw order, are `answers`; `name` is the subject's.
+    pub fn new(name: &str, population: &Population, answers: &[TaskReport]) -> Self {
+        let people = answers.len();
+        let task = answers.first().map_or("task", |a| a.answer().task);
+        let mut excluded = Vec::new();
+        let mut not_placed = 0;
+        for ((report, drawn), i) in answers.iter().zip(&population.drawn).zip(1..) {
+            let answer = report.answer();
+            if answer.ok {
+                continue;
+            }
+            not_placed += usize::from(matches!(report, TaskReport::NotPlaced(_)));
+            excluded.push(Excluded::new(&population.name, i, drawn, answer.verdict));
+        }
+        let accommodated = people - excluded.len();
+        let share_of = |k: usize| fixed(k as f64 / people.max(1) as f64, 4);
+        PopulationReport {
+            task,
+            name: name.to_string(),
+            population: population.name.clone(),
+            seed: population.seed,
+            people,
+            accommodated,
+            share: share_of(accommodated),
+            ci95: wilson95(accommodated, people).map(|v| fixed(v, 4)),
+            not_placed,
+            ok: accommodated == people,
+            excluded,
+            cells: map_shares(answers),
+        }
+    }
+}
+
+/// For maps: each point's share of the people who reach it (a person
+/// whose base fits nowhere reaches none).
+fn map_shares(answers: &[TaskReport]) -> Option<Vec<ShareCell>> {
+    let maps: Vec<Option<&MapReport>> = answers.iter().map(TaskReport::map).collect();
+    let first = maps.iter().flatten().next()?;
+    let people = answers.len().max(1) as f64;
+    let cells = first
+        .cells
+        .iter()
+        .enumerate()
+        .map(|(k, cell)| {
+            let reached = maps
+                .iter()
+                .flatten()
+                .filter(|m| m.cells.get(k).is_some_and(|c| c.reachable))
+                .count();
+            ShareCell {
+                column: cell.column,
+                row: cell.row,
+                point_mm: cell.point_mm,
+                share: fixed(reached as f64 / people, 4),
+            }
+        })
+        .collect();
+    Some(cells)
+}
+
+impl Excluded {
+    fn new(population: &str, number: usize, drawn: &Drawn, verdict: String) -> Self {
+        Excluded {
+            person: format!("{population}#{number}"),
+            survey_row: drawn.row + 1,
+            sex: if drawn.female { "female" } else { "male" },
+            age_years: drawn.age_years,
+            stature_mm: mm(drawn.stature_mm),
+            profiles: drawn.profiles.clone(),
+            drawn: drawn
+                .values
+                .iter()
+                .map(|(n, v)| (n.clone(), fixed(*v, 2)))
+                .collect(),
+            verdict,
+        }
+    }
+
+    /// `#17 (woman, 34 y, 1523 mm, older_adult): NOT reachable`.
+    fn line(&self) -> String {
+        let sex = if self.sex == "female" { "woman" } else { "man" };
+        let mut who = format!("{sex}, {:.0} y, {:.0} mm", self.age_years, self.stature_mm);
+        for p in &self.profiles {
+            let _ = write!(who, ", {p}");
+        }
+        format!("{} ({who}): {}", self.person, self.verdict)
+    }
+}
+
+/// `92 %` with one decimal where it matters.
+fn percent(share: f64) -> String {
+    let p = share * 100.0;
+    if (p - p.round()).abs() < 0.05 {
+        format!("{p:.0} %")
+    } else {
+        format!("{p:.1} %")
+    }
+}
+
+impl ReportKind for PopulationReport {
+    fn answer(&self) -> Answer {
+        let [lo, hi] = self.ci95;
+        Answer {
+            task: self.task,
+            subject: self.name.clone(),
+            person: self.population.clone(),
+            ok: self.ok,
+            verdict: format!(
+                "{} of {} (95 % CI {}-{})",
+                percent(self.share),
+                self.people,
+                percent(lo).trim_end_matches(" %"),
+                percent(hi)
+            ),
+            figures: vec![Figure::new("share", self.share * 100.0, "%", 0.05)],
+        }
+    }
+
+    fn details(&self, out: &mut String) {
+        let [lo, hi] = self.ci95;
+        let _ = writeln!(
+            out,
+            "{}: {} of {} (95 % CI {}-{}; {} people, seed {})",
+            self.name,
+            percent(self.share),
+            self.population,
+            percent(lo).trim_end_matches(" %"),
+            percent(hi),
+            self.people,
+            self.seed
+        );
+        if let Some(cells) = &self.cells {
+            let everyone = cells.iter().filter(|c| c.share >= 1.0).count();
+            let mean = cells.iter().map(|c| c.share).sum::<f64>() / cells.len().max(1) as f64;
+            let _ = writeln!(
+                out,
+                "  points reached by everyone: {everyone} of {}; on average a point is reached by {}",
+                cells.len(),
+                percent(mean)
+            );
+        }
+        const SHOWN: usize = 8;
+        if !self.excluded.is_empty() {
+            let _ = writeln!(
+                out,
+                "  not accommodated: {} ({} fit nowhere in the room)",
+                self.excluded.len(),
+                self.not_placed
+            );
+        }
+        for e in self.excluded.iter().take(SHOWN) {
+            let _ = writeln!(out, "    {}", e.line());
+        }
+        if self.excluded.len() > SHOWN {
+            let _ = writeln!(
+                out,
+                "    and {} more (the JSON report lists everyone)",
+                self.excluded.len() - SHOWN
+            );
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use rand_chacha::rand_core::SeedableRng;
+    use rand_chacha::ChaCha8Rng;
+    use rand_distr::{Binomial, Distribution};
+
+    #[test]
+    fn wilson_intervals_cover_the_true_share_95_times_in_100() {
+        // Samples of 200 people from populations whose true shares are
+        // known: the interval must hold the true share in about 95 % of
+        // them (Wilson's coverage is close to nominal, a little under it
+        // at some shares).
+        let mut rng = ChaCha8Rng::seed_from_u64(17);
+        for &p in &[0.5, 0.8, 0.92, 0.97] {
+            let trials = 4000;
+            let covered = (0..trials)
+                .filter(|_| {
+                    let k = Binomial::new(200, p).unwrap().sample(&mut rng) as usize;
+                    let [lo, hi] = wilson95(k, 200);
+                    lo <= p && p <= hi
+                })
+                .count();
+            let coverage = covered as f64 / trials as f64;
+            assert!(
+                (0.925..=0.975).contains(&coverage),
+                "share {p}: coverage {coverage}"
+            );
+        }
+    }
+
+    #[test]
+    fn wilson_of_all_or_none_stays_inside_zero_and_one() {
+        let [lo, hi] = wilson95(50, 50);
+        assert!(lo > 0.9 && lo < 1.0 && hi == 1.0);
+        let [lo, hi] = wilson95(0, 50);
+        assert!(lo == 0.0 && hi > 0.0 && hi < 0.1);
+        assert_eq!(wilson95(0, 0), [0.0, 1.0]);
+    }
+}

@@ -1,0 +1,232 @@
+//! Populations: a population of one is the person it draws, written out by
+//! hand; shares are monotone where they must be (a target raised above
+//! every sampled shoulder is reached by no more people; tighter ranges
+//! reach no more), person by person; the report is the same on one thread
+//! and on two; bad population declarations are diagnostics.
+
+use proptest::prelude::*;
+use reach::report::{PopulationReport, Report, TaskReport};
+use reach::scenario::Scenario;
+
+use crate::body::run;
+
+fn population_reports(report: &Report) -> Vec<&PopulationReport> {
+    report
+        .tasks
+        .iter()
+        .filter_map(|t| match t {
+            TaskReport::Population(p) => Some(p.as_ref()),
+            _ => None,
+        })
+        .collect()
+}
+
+/// The manual wheelchair users' mannequin arguments of std::populations
+/// (as its text gives them), each value with the drawn person's
+/// measurements and drawn values written in as numbers.
+fn arguments_of(scenario: &Scenario, person: usize) -> String {
+    let text = reach::std_modules::module("populations").unwrap();
+    let start = text.find("population manual_wheelchair_users").unwrap();
+    let block = &text[start..];
+    let args_start = block.find("mannequin upper_body(").unwrap() + "mannequin upper_body(".len();
+    let args_end = block.find("\n  base ").unwrap();
+    let args = block[args_start..args_end].trim().trim_end_matches(')');
+    let drawn = &scenario.populations[0].drawn[person];
+    let survey = reach::ansur::survey();
+    let row = &survey.rows[drawn.row];
+    let mut names: Vec<(String, String)> = survey
+        .columns
+        .iter()
+        .zip(&row.lengths_mm)
+        .map(|(c, v)| (c.clone(), format!("{v:?}mm")))
+        .collect();
+    names.extend(
+        drawn
+            .values
+            .iter()
+            .map(|(n, v)| (n.clone(), format!("{v:?}mm"))),
+    );
+    // Longest names first, so that none is replaced inside another.
+    names.sort_by_key(|(n, _)| std::cmp::Reverse(n.len()));
+    args.split(",\n")
+        .map(|arg| {
+            let arg = arg.trim();
+            let (name, value) = arg.split_once(' ').unwrap();
+            let mut value = format!(" {value} ");
+            for (n, v) in &names {
+                value = replace_word(&value, n, v);
+            }
+            format!("{name} {}", value.trim())
+        })
+        .collect::<Vec<_>>()
+        .join(",\n    ")
+}
+
+/// `text` with every whole-word `word` replaced by `by`.
+fn replace_word(text: &str, word: &str, by: &str) -> String {
+    let mut out = String::new();
+    let mut rest = text;
+    let is_ident = |c: char| c.is_ascii_alphanumeric() || c == '_';
+    while let Some(i) = rest.find(word) {
+        let before = rest[..i].chars().next_back();
+        let after = rest[i + word.len()..].chars().next();
+        out.push_str(&rest[..i]);
+        if before.is_some_and(is_ident) || after.is_some_and(is_ident) {
+            out.push_str(word);
+        } else {
+            out.push_str(by);
+        }
+        rest = &rest[i + word.len()..];
+    }
+    out.push_str(rest);
+    out
+}
+
+const ROOM: &str = "units mm deg
+use std::populations
+room kitchen {
+  size 3500 x 3000 x 2500
+  box counter at (0, 0, 0) size (600, 3000, 900)
+  target kettle at (300, 1500, 960)
+  target shelf at (200, 1200, 1350)
+}
+";
+
+#[test]
+fn a_population_of_one_is_the_person_it_draws() {
+    let text = format!(
+        "{ROOM}population one = manual_wheelchair_users {{ size 1 seed 11 profile older_adult 100% profile limited_trunk 0% }}\n\
+         reach kettle, shelf by one\n"
+    );
+    let (scenario, report) = run(&text);
+    let drawn = &scenario.populations[0].drawn[0];
+    assert_eq!(drawn.profiles, ["older_adult"]);
+    let seat = drawn.values.iter().find(|(n, _)| n == "seat").unwrap().1;
+    let person = format!(
+        "{ROOM}person p {{\n  mannequin upper_body(\n    {}) {{ profile older_adult }}\n  base manual_wheelchair {{ seat_height {seat:?}mm }}\n}}\n\
+         reach kettle, shelf by p\n",
+        arguments_of(&scenario, 0)
+    );
+    let (by_hand, by_hand_report) = run(&person);
+    let member = &scenario.persons[scenario.populations[0].members.start];
+    assert_eq!(member.body, by_hand.persons[0].body, "the same body");
+    assert_eq!(member.base, by_hand.persons[0].base, "the same base");
+    let shares = population_reports(&report);
+    for (share, alone) in shares.iter().zip(&by_hand_report.tasks) {
+        let alone = alone.answer();
+        assert_eq!(share.people, 1);
+        assert_eq!(share.ok, alone.ok, "{}: {}", share.name, alone.verdict);
+        if !alone.ok {
+            assert_eq!(share.excluded[0].verdict, alone.verdict);
+        }
+    }
+}
+
+/// Per person: whether each task reached, in task order.
+fn reached(report: &Report) -> Vec<Vec<bool>> {
+    population_reports(report)
+        .iter()
+        .map(|p| {
+            let out: Vec<String> = p.excluded.iter().map(|e| e.person.clone()).collect();
+            (1..=p.people)
+                .map(|i| !out.contains(&format!("{}#{i}", p.population)))
+                .collect()
+        })
+        .collect()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 6, rng_seed: proptest::test_runner::RngSeed::Fixed(7), .. ProptestConfig::default() })]
+
+    /// Above every sampled person's seated shoulder, in a room with
+    /// nothing near the target: whoever reaches the higher of two targets
+    /// reaches the lower; whoever reaches a target with a shoulder that
+    /// lifts only to 90 degrees reaches it with a free one.
+    #[test]
+    fn higher_targets_and_tighter_ranges_never_reach_more_people(
+        x in 800.0..2500.0f64,
+        y in 800.0..2200.0f64,
+        rise in 0.0..300.0f64,
+        up in 20.0..200.0f64,
+        seed in 1u64..1000,
+    ) {
+        let population = |extra: &str| format!(
+            "population free = manual_wheelchair_users {{ size 8 seed {seed} {extra} }}\n"
+        );
+        // The tallest seated shoulder of these people: seat, hip point,
+        // trunk (std::populations' formula).
+        let probe = format!(
+            "units mm deg\nuse std::populations\nroom r {{ size 4000 x 4000 x 2600 target t at (2000, 2000, 1000) }}\n{}reach t by free\n",
+            population("")
+        );
+        let (scenario, _) = run(&probe);
+        let survey = reach::ansur::survey();
+        let col = |name: &str| survey.columns.iter().position(|c| c == name).unwrap();
+        let shoulder = scenario.populations[0].drawn.iter().map(|d| {
+            let m = &survey.rows[d.row].lengths_mm;
+            let value = |n: &str| d.values.iter().find(|(k, _)| k == n).unwrap().1;
+            let eye_above_shoulder = m[col("stature")] - m[col("sittingheight")]
+                + m[col("eyeheightsitting")] - m[col("acromialheight")];
+            value("seat") + m[col("eyeheightsitting")] - eye_above_shoulder - value("slump")
+        }).fold(0.0, f64::max);
+        let low = shoulder + rise;
+        let high = low + up;
+        let text = |extra: &str| format!(
+            "units mm deg\nuse std::populations\nroom r {{ size 4000 x 4000 x 2600\n  target low at ({x}, {y}, {low})\n  target high at ({x}, {y}, {high}) }}\n{}reach low, high by free\n",
+            population(extra)
+        );
+        let (_, free) = run(&text(""));
+        let (_, tight) = run(&text("profile shoulder_to_90 100%"));
+        let (free, tight) = (reached(&free), reached(&tight));
+        for person in 0..8 {
+            prop_assert!(!free[1][person] || free[0][person], "person {} reaches {high:.0} but not {low:.0}", person + 1);
+            for task in 0..2 {
+                prop_assert!(!tight[task][person] || free[task][person], "person {} reaches with a stiff shoulder only", person + 1);
+            }
+        }
+    }
+}
+
+#[test]
+fn the_report_is_the_same_on_one_thread_and_on_two() {
+    let text = format!("{ROOM}population few = manual_wheelchair_users {{ size 12 seed 3 }}\nreach kettle, shelf by few\n");
+    let (scenario, _) = run(&text);
+    let json = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| serde_json::to_string(&reach::run(&scenario)).unwrap())
+    };
+    assert_eq!(json(1), json(2));
+}
+
+#[test]
+fn bad_populations_are_diagnostics_at_the_text() {
+    let registry = reach::plugin::Registry::builtin();
+    let cases = [
+        ("population p = manual_wheelchair_users { size 0 }\nreach kettle by p\n", "a population's size"),
+        ("population p = manual_wheelchair_users { women 150% }\nreach kettle by p\n", "`women` must be from 0 % to 100 %"),
+        ("population p = manual_wheelchair_users { size 20000 }\nreach kettle by p\n", "--max-people"),
+        ("population p = manual_wheelchair_users { draw seat normal(495mm, 41deg) }\nreach kettle by p\n", "expected a length"),
+        ("population p = manual_wheelchair_users { draw seat uniform(600mm, 500mm) }\nreach kettle by p\n", "above the lower end"),
+        ("reach kettle by manual_wheelchair_user\n", "manual_wheelchair_users"),
+        ("population p = manual_wheelchair_users { mannequin upper_body(stature statur) }\nreach kettle by p\n", "stature"),
+    ];
+    for (tail, expected) in cases {
+        let text = format!("{ROOM}{tail}");
+        let (_, checked) = reach::check(
+            reach::Input::Text {
+                name: "pop.reach",
+                text: &text,
+            },
+            &registry,
+        );
+        let rendered = match checked {
+            Ok(_) => panic!("accepted: {tail}"),
+            Err(d) => d.render(false),
+        };
+        assert!(rendered.contains(expected), "{tail}: {rendered}");
+        assert!(rendered.contains("pop.reach:"), "{rendered}");
+    }
+}
