@@ -85,7 +85,7 @@ pub fn parts(chain: &Chain, posture: &Posture, base: &BaseReport, allowance_mm: 
             JointKind::Revolute => (joint.dh.theta_rad + value.to_radians(), joint.dh.d_mm),
             JointKind::Prismatic => (joint.dh.theta_rad, joint.dh.d_mm + value),
         };
-        m *= dh(theta, d, joint.dh.alpha_rad, joint.dh.a_mm);
+        m *= dh(theta, d, joint.dh.alpha_rad(), joint.dh.a_mm);
         frames.push(m);
     }
     let point = |m: &Matrix4<f64>, v: &Vector3<f64>| {

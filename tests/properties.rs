@@ -40,12 +40,7 @@ fn joint() -> impl Strategy<Value = Joint> {
                 Joint {
                     name: "j".into(),
                     kind,
-                    dh: Dh {
-                        theta_rad,
-                        d_mm,
-                        alpha_rad,
-                        a_mm,
-                    },
+                    dh: Dh::new(theta_rad, d_mm, alpha_rad, a_mm),
                     fixed: None,
                     min,
                     max,

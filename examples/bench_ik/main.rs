@@ -305,7 +305,7 @@ fn k_chain(chain: &Chain) -> k::SerialChain<f64> {
     let fixed_part = |dh: &reach::kinematics::Dh| {
         kna::Isometry3::from_parts(
             kna::Translation3::new(dh.a_mm, 0.0, dh.d_mm),
-            kna::UnitQuaternion::from_axis_angle(&kna::Vector3::x_axis(), dh.alpha_rad),
+            kna::UnitQuaternion::from_axis_angle(&kna::Vector3::x_axis(), dh.alpha_rad()),
         )
     };
     let mut previous = kna::Isometry3::identity();

@@ -181,7 +181,7 @@ fn hash_chain(chain: &Chain, h: &mut DefaultHasher) {
 fn hash_joint(j: &Joint, h: &mut DefaultHasher) {
     (&j.name, j.kind as u8).hash(h);
     let d = &j.dh;
-    hash_bits(&[d.theta_rad, d.d_mm, d.alpha_rad, d.a_mm], h);
+    hash_bits(&[d.theta_rad, d.d_mm, d.alpha_rad(), d.a_mm], h);
     if let Some(fixed) = &j.fixed {
         hash_bits(fixed.rotation.matrix().iter(), h);
         hash_bits(fixed.translation.vector.iter(), h);

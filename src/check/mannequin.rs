@@ -402,12 +402,7 @@ impl Checker<'_> {
             };
         }
         let [theta_rad, d_mm, alpha_rad, a_mm] = values;
-        let dh = Dh {
-            theta_rad: theta_rad?,
-            d_mm: d_mm?,
-            alpha_rad: alpha_rad?,
-            a_mm: a_mm?,
-        };
+        let dh = Dh::new(theta_rad?, d_mm?, alpha_rad?, a_mm?);
         ok.then_some(dh)
     }
 

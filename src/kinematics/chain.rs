@@ -233,12 +233,7 @@ pub(crate) fn revolute(name: &str, theta_rad: f64, d_mm: f64, alpha_rad: f64, a_
     Joint {
         name: name.into(),
         kind: JointKind::Revolute,
-        dh: Dh {
-            theta_rad,
-            d_mm,
-            alpha_rad,
-            a_mm,
-        },
+        dh: Dh::new(theta_rad, d_mm, alpha_rad, a_mm),
         fixed: None,
         min: -3.0,
         max: 3.0,

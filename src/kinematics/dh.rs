@@ -4,20 +4,49 @@
 use nalgebra::{IsometryMatrix3, Matrix3, Rotation3, Translation3};
 
 /// The constant part of a link. The joint variable is added to `theta_rad`
-/// (revolute) or `d_mm` (prismatic).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+/// (revolute) or `d_mm` (prismatic). The twist `alpha` is kept with its
+/// sine and cosine, worked out once (every pose of the link needs them).
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Dh {
     pub theta_rad: f64,
     pub d_mm: f64,
-    pub alpha_rad: f64,
+    alpha_rad: f64,
     pub a_mm: f64,
+    /// `alpha_rad.sin_cos()`.
+    alpha_sin_cos: (f64, f64),
+}
+
+impl Default for Dh {
+    fn default() -> Self {
+        Dh::new(0.0, 0.0, 0.0, 0.0)
+    }
 }
 
 impl Dh {
+    pub fn new(theta_rad: f64, d_mm: f64, alpha_rad: f64, a_mm: f64) -> Self {
+        Dh {
+            theta_rad,
+            d_mm,
+            alpha_rad,
+            a_mm,
+            alpha_sin_cos: alpha_rad.sin_cos(),
+        }
+    }
+
+    /// The twist about the new x axis.
+    pub fn alpha_rad(&self) -> f64 {
+        self.alpha_rad
+    }
+
+    /// The sine and cosine of the twist.
+    pub fn alpha_sin_cos(&self) -> (f64, f64) {
+        self.alpha_sin_cos
+    }
+
     /// The pose of frame i in frame i-1 for the given theta and d.
     pub fn transform(&self, theta_rad: f64, d_mm: f64) -> IsometryMatrix3<f64> {
         let (st, ct) = theta_rad.sin_cos();
-        let (sa, ca) = self.alpha_rad.sin_cos();
+        let (sa, ca) = self.alpha_sin_cos;
         let rotation = Matrix3::new(
             ct,
             -ca * st,
@@ -43,12 +72,7 @@ mod tests {
     use std::f64::consts::FRAC_PI_2;
 
     fn dh(theta_rad: f64, d_mm: f64, alpha_rad: f64, a_mm: f64) -> Dh {
-        Dh {
-            theta_rad,
-            d_mm,
-            alpha_rad,
-            a_mm,
-        }
+        Dh::new(theta_rad, d_mm, alpha_rad, a_mm)
     }
 
     #[test]

@@ -151,7 +151,7 @@ impl IncrementalFk {
             .iter()
             .zip(&q)
             .map(|(j, &qi)| {
-                let (sin_alpha, cos_alpha) = j.dh.alpha_rad.sin_cos();
+                let (sin_alpha, cos_alpha) = j.dh.alpha_sin_cos();
                 let (theta_rad, d_mm, rest) = match &j.fixed {
                     Some(pose) => (0.0, 0.0, Rest::Fixed(*pose)),
                     None => (
@@ -379,12 +379,7 @@ mod tests {
         let joint = |name: &str, kind, theta, d, alpha, a| Joint {
             name: name.into(),
             kind,
-            dh: Dh {
-                theta_rad: theta,
-                d_mm: d,
-                alpha_rad: alpha,
-                a_mm: a,
-            },
+            dh: Dh::new(theta, d, alpha, a),
             fixed: None,
             min: -2.0,
             max: 2.0,
