@@ -9,6 +9,11 @@
 //! body (the paper's target minus the admissible region, section 5.3.5,
 //! made of samples).
 //!
+//! Whether a sample keeps the arm out of the body is worked out the first
+//! time a search asks for a sample near its height, not when the map is
+//! built: a reach looks at a few hundred of the 8,192, and a population of
+//! a thousand people builds a thousand maps.
+//!
 //! Maps are kept for the process's life, keyed by everything they depend
 //! on (the chain and the person's own body), so watch mode and the people
 //! of a scenario who share a body share one map.
@@ -25,12 +30,16 @@ use crate::scene::OwnBody;
 use crate::solvers::random_posture;
 
 /// One posture of the map: where it puts the effector in the base frame,
-/// its discomfort and the joint values.
-#[derive(Clone, Debug)]
+/// its discomfort and where its joint values are kept
+/// ([`Capability::q`]).
+#[derive(Debug)]
 pub struct Sample {
     pub effector_mm: Vector3<f64>,
     pub discomfort: f64,
-    pub q: Vec<f64>,
+    /// The first of its joint values in the map's `qs`.
+    at: usize,
+    /// Whether it keeps the arm out of the body, once asked.
+    clear: OnceLock<bool>,
 }
 
 /// The samples by the effector's height above the hip point.
@@ -39,6 +48,12 @@ pub struct Capability {
     /// The height of the bottom of slice 0.
     bottom_mm: f64,
     slices: Vec<Vec<Sample>>,
+    /// Every sample's joint values, one after another.
+    qs: Vec<f64>,
+    /// What a sample is checked against: the chain and the person's own
+    /// body and base.
+    chain: Chain,
+    own: OwnBody,
 }
 
 /// How many postures are drawn for one map.
@@ -51,14 +66,18 @@ impl Capability {
     /// `samples` postures drawn from a fixed seed.
     pub fn build(chain: &Chain, own: &OwnBody, samples: usize) -> Self {
         let mut rng = ChaCha8Rng::seed_from_u64(0xcafa_b1e5);
+        let mut qs = Vec::with_capacity(samples * chain.dof());
         let kept: Vec<Sample> = (0..samples)
-            .filter_map(|_| {
+            .map(|_| {
                 let q = random_posture(chain, &mut rng);
-                clear_of_body(chain, own, &q).then(|| Sample {
+                let sample = Sample {
                     effector_mm: chain.effector(&q).coords,
                     discomfort: chain.discomfort(&q),
-                    q,
-                })
+                    at: qs.len(),
+                    clear: OnceLock::new(),
+                };
+                qs.extend(q);
+                sample
             })
             .collect();
         let bottom_mm = kept
@@ -76,7 +95,13 @@ impl Capability {
         for slice in &mut slices {
             slice.sort_by(|a, b| a.discomfort.total_cmp(&b.discomfort));
         }
-        Capability { bottom_mm, slices }
+        Capability {
+            bottom_mm,
+            slices,
+            qs,
+            chain: chain.clone(),
+            own: own.clone(),
+        }
     }
 
     /// The map of `chain` and `own`, built once per process.
@@ -97,7 +122,8 @@ impl Capability {
     }
 
     /// The samples whose effector is between `below_mm` under height
-    /// `z_mm` and `above_mm` over it, the most comfortable first.
+    /// `z_mm` and `above_mm` over it, the most comfortable first, whether
+    /// or not they are clear of the body ([`Capability::clear`]).
     pub fn near_height(&self, z_mm: f64, below_mm: f64, above_mm: f64) -> Vec<&Sample> {
         let slice = |z: f64| ((z - self.bottom_mm) / SLICE_MM).floor();
         let first = slice(z_mm - below_mm).max(0.0) as usize;
@@ -117,13 +143,35 @@ impl Capability {
         near.sort_by(|a, b| a.discomfort.total_cmp(&b.discomfort));
         near
     }
+
+    /// The joint values of `sample`.
+    pub fn q(&self, sample: &Sample) -> &[f64] {
+        &self.qs[sample.at..sample.at + self.chain.dof()]
+    }
+
+    /// Whether `sample` keeps the arm out of the person's own body and
+    /// base and out of itself (worked out once).
+    pub fn clear(&self, sample: &Sample) -> bool {
+        *sample
+            .clear
+            .get_or_init(|| clear_of_body(&self.chain, &self.own, self.q(sample)))
+    }
+
+    /// Whether at least `count` of `samples` are clear, looking no further
+    /// than it must.
+    pub fn clear_at_least(&self, samples: &[&Sample], count: usize) -> bool {
+        samples.iter().filter(|s| self.clear(s)).take(count).count() == count
+    }
 }
 
 /// The maps built, by what they depend on, each built once.
 type Maps = HashMap<String, Arc<OnceLock<Arc<Capability>>>>;
 
-/// How many maps the process keeps before it starts again.
-const MAPS_KEPT: usize = 256;
+/// How many maps the process keeps before it starts again (about 1 MB
+/// each): enough for the people of a scenario and their effectors; the
+/// members of a population each have their own, used by one thread while
+/// it runs that person's tasks.
+const MAPS_KEPT: usize = 64;
 
 /// Whether posture `q` keeps the chain out of the person's own body and
 /// base and out of itself (the hand, which may rest on what it reaches, is

@@ -224,17 +224,17 @@ impl PreparedMobile<'_> {
 
     /// Candidate placements for `query`, the most promising first: from
     /// the capability map, then the nearest to where the arm works best at
-    /// each heading.
-    pub fn candidates(&self, query: &ReachQuery<'_>) -> Vec<Candidate> {
+    /// each heading (worked out only if the search gets that far).
+    pub fn candidates<'q>(
+        &'q self,
+        query: &'q ReachQuery<'_>,
+    ) -> impl Iterator<Item = Candidate> + 'q {
         // A nearest placement is kept even beside a sampled one: that is
         // descended from one seed, this from the solver's own starts.
-        let mut found = self.sampled(query);
-        found.extend(
-            self.nearest(&query.target_room_mm)
-                .into_iter()
-                .map(Candidate::at),
-        );
-        found
+        let nearest = std::iter::once_with(|| self.nearest(&query.target_room_mm));
+        self.sampled(query)
+            .into_iter()
+            .chain(nearest.flatten().map(Candidate::at))
     }
 
     /// Up to `SEEDED` placements from the capability map whose posture is
@@ -243,10 +243,11 @@ impl PreparedMobile<'_> {
     fn sampled(&self, query: &ReachQuery<'_>) -> Vec<Candidate> {
         let target = &query.target_room_mm;
         let z_mm = target.z - self.mobile.hip_height_mm;
+        let capability = &self.capability;
         let mut near = Vec::new();
         for [below, above] in NEAR_HEIGHT_MM {
-            near = self.capability.near_height(z_mm, below, above);
-            if near.len() >= FEW {
+            near = capability.near_height(z_mm, below, above);
+            if capability.clear_at_least(&near, FEW) {
                 break;
             }
         }
@@ -254,7 +255,7 @@ impl PreparedMobile<'_> {
         let mut scanned: Vec<BasePose> = Vec::new();
         let mut found: Vec<Candidate> = Vec::new();
         for sample in near {
-            if !approach.admits(&sample.effector_mm) {
+            if !approach.admits(&sample.effector_mm) || !capability.clear(sample) {
                 continue;
             }
             let hand = sample.effector_mm.xy();
@@ -274,15 +275,13 @@ impl PreparedMobile<'_> {
                     continue;
                 }
                 scanned.push(pose);
+                let q = capability.q(sample);
                 let clear = query.obstacles.is_none()
-                    || query
-                        .problem(self.chain, pose)
-                        .collision(&sample.q)
-                        .is_none();
+                    || query.problem(self.chain, pose).collision(q).is_none();
                 if clear {
                     found.push(Candidate {
                         pose,
-                        start: Some(sample.q.clone()),
+                        start: Some(q.to_vec()),
                     });
                 }
                 if found.len() == SEEDED || scanned.len() == SCANNED {
@@ -339,8 +338,7 @@ fn toward(hint: Vector2<f64>, approach: Approach) -> Vector2<f64> {
 
 impl PreparedBase for PreparedMobile<'_> {
     fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement {
-        let candidates = self.candidates(query);
-        search(query, self.chain, &candidates, solver)
+        search(query, self.chain, self.candidates(query), solver)
             .unwrap_or_else(|| nowhere(self.room, self.chain))
     }
 

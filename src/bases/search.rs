@@ -43,31 +43,39 @@ struct Blocked {
 
 /// The placement kept over `candidates` (none when there are none): from
 /// a candidate with a start, one descent of the solver from it; from one
-/// without, the solver's own starts.
+/// without, the solver's own starts. Candidates from which the target is
+/// beyond the chain's reach (longer than its links end to end) are passed
+/// over, but if all are, the first is solved, so that the answer still
+/// shows the closest the person came. The candidates are drawn as they
+/// are needed: a search that stops at the first placement that reaches
+/// works out no more of them.
 pub fn search(
     query: &ReachQuery<'_>,
     chain: &Chain,
-    candidates: &[Candidate],
+    candidates: impl IntoIterator<Item = Candidate>,
     solver: &dyn Solver,
 ) -> Option<Placement> {
     let mut best = Preferred::new(query.tolerance_mm);
     let mut blocked = Vec::new();
-    for candidate in within_reach(query, chain, candidates) {
-        let pose = candidate.pose;
-        let placement = match &candidate.start {
-            Some(start) => query.solve_from_at(chain, pose, solver, start.clone()),
-            None => query.solve_at(chain, pose, solver),
-        };
-        let solution = &placement.solution;
-        if solution.collision.is_some() && solution.distance_mm <= query.tolerance_mm {
-            blocked.push(Blocked {
-                pose,
-                q: solution.q.clone(),
-            });
+    let bound_mm = chain.reach_bound_mm() + query.tolerance_mm;
+    let mut first_beyond = None;
+    let mut any_within = false;
+    for candidate in candidates {
+        let within =
+            candidate.pose.to_base(&query.target_room_mm).coords.norm() <= bound_mm;
+        if !within {
+            if first_beyond.is_none() && !any_within {
+                first_beyond = Some(candidate);
+            }
+            continue;
         }
-        let comfort = chain.discomfort(&placement.solution.q);
-        best.offer(placement, comfort);
-        if best.reaches() && query.search == Search::FirstReaching {
+        any_within = true;
+        if try_candidate(query, chain, &candidate, solver, &mut best, &mut blocked) {
+            return best.into_kept();
+        }
+    }
+    if let (false, Some(candidate)) = (any_within, first_beyond) {
+        if try_candidate(query, chain, &candidate, solver, &mut best, &mut blocked) {
             return best.into_kept();
         }
     }
@@ -75,6 +83,34 @@ pub fn search(
         retry_blocked(query, chain, &blocked, retry, &mut best);
     }
     best.into_kept()
+}
+
+/// Solve from `candidate`, offer the placement to `best` and note it in
+/// `blocked` if it reached through something; whether the search may stop
+/// there (it reaches, and the first that reaches will do).
+fn try_candidate(
+    query: &ReachQuery<'_>,
+    chain: &Chain,
+    candidate: &Candidate,
+    solver: &dyn Solver,
+    best: &mut Preferred<Placement>,
+    blocked: &mut Vec<Blocked>,
+) -> bool {
+    let pose = candidate.pose;
+    let placement = match &candidate.start {
+        Some(start) => query.solve_from_at(chain, pose, solver, start.clone()),
+        None => query.solve_at(chain, pose, solver),
+    };
+    let solution = &placement.solution;
+    if solution.collision.is_some() && solution.distance_mm <= query.tolerance_mm {
+        blocked.push(Blocked {
+            pose,
+            q: solution.q.clone(),
+        });
+    }
+    let comfort = chain.discomfort(&placement.solution.q);
+    best.offer(placement, comfort);
+    best.reaches() && query.search == Search::FirstReaching
 }
 
 /// The first of up to `draws` starts that is clear of obstacles and of
@@ -94,27 +130,6 @@ fn clear_start(problem: &IkProblem<'_>, kicks: &mut Kicks<'_>, draws: usize) -> 
 /// How many starts are drawn at most for one that is clear, for a solver
 /// that steers clear (a check costs a microsecond or two, a descent tens).
 const CLEAR_DRAWS: usize = 16;
-
-/// The candidates from which the target is within the chain's reach (no
-/// longer than its links end to end); if there are none, the most
-/// promising alone, so that the answer still shows the closest the person
-/// came.
-fn within_reach<'p>(
-    query: &ReachQuery<'_>,
-    chain: &Chain,
-    candidates: &'p [Candidate],
-) -> Vec<&'p Candidate> {
-    let bound_mm = chain.reach_bound_mm() + query.tolerance_mm;
-    let near: Vec<&Candidate> = candidates
-        .iter()
-        .filter(|c| c.pose.to_base(&query.target_room_mm).coords.norm() <= bound_mm)
-        .collect();
-    if near.is_empty() {
-        candidates.iter().take(1).collect()
-    } else {
-        near
-    }
-}
 
 /// Try again from the first `retry.placements` of the `blocked`
 /// placements, until one reaches: from each, one descent of the retry
