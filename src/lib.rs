@@ -52,8 +52,6 @@ pub mod tasks;
 pub mod units;
 pub mod vision;
 
-use rayon::prelude::*;
-
 pub use error::{Diagnostics, Error, ErrorKind};
 pub use limits::Limits;
 pub use loader::Input;
@@ -106,11 +104,8 @@ pub fn run(scenario: &Scenario) -> Report {
 
 /// [`run`], telling `progress` how long tasks (maps) advance.
 pub fn run_with_progress(scenario: &Scenario, progress: &dyn progress::Progress) -> Report {
-    let tasks = scenario
-        .tasks
-        .par_iter()
-        .map(|task| scenario.run_task(task, progress))
-        .collect();
+    let all: Vec<&scenario::TaskSpec> = scenario.tasks.iter().collect();
+    let tasks = scenario.run_tasks(&all, progress);
     Report {
         schema: report::SCHEMA_VERSION,
         file: scenario.file.clone(),

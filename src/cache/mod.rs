@@ -12,11 +12,9 @@ mod reach;
 
 use std::collections::HashMap;
 
-use rayon::prelude::*;
-
 use crate::progress::Progress;
 use crate::report::{Report, TaskReport, SCHEMA_VERSION};
-use crate::scenario::Scenario;
+use crate::scenario::{Scenario, TaskSpec};
 
 /// Results of earlier runs, by key.
 #[derive(Default)]
@@ -39,15 +37,22 @@ impl TaskCache {
     /// changed; afterwards the cache holds exactly this run's results.
     pub fn run(&mut self, scenario: &Scenario, progress: &dyn Progress) -> (Report, CacheStats) {
         let keys = key::keys(scenario, &mut self.placements);
-        let fresh: Vec<Option<TaskReport>> = scenario
+        let stale: Vec<&TaskSpec> = scenario
             .tasks
-            .par_iter()
+            .iter()
             .zip(&keys)
-            .map(|(task, k)| {
+            .filter(|(_, k)| !self.results.contains_key(k))
+            .map(|(task, _)| task)
+            .collect();
+        let mut ran_now = scenario.run_tasks(&stale, progress).into_iter();
+        let fresh: Vec<Option<TaskReport>> = keys
+            .iter()
+            .map(|k| {
                 if self.results.contains_key(k) {
-                    return None;
+                    None
+                } else {
+                    ran_now.next()
                 }
-                Some(scenario.run_task(task, progress))
             })
             .collect();
         let ran = fresh.iter().filter(|r| r.is_some()).count();

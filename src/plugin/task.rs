@@ -59,6 +59,11 @@ pub struct TaskInput<'a> {
     pub effectors: &'a [usize],
     /// Where a long task reports its progress.
     pub progress: &'a dyn Progress,
+    /// Whether only the verdict matters (the task runs for one member of a
+    /// population, whose report keeps only whether the answer holds and,
+    /// where it does not, why): a search may stop at the first placement
+    /// that holds instead of looking on for the most comfortable one.
+    pub verdict_only: bool,
 }
 
 /// What a task's answer depends on in its room beyond its own settings,

@@ -4,13 +4,14 @@
 //! run looks no name up. Spans remain only where a run may still need to
 //! point back at the text.
 
+mod run;
+
 use std::fmt;
 use std::sync::Arc;
 
 use crate::options::Options;
-use crate::plugin::{Base, Fit, FormatScene, Subject, Task, TaskInput, TaskPlace};
+use crate::plugin::{Base, FormatScene, Subject, Task, TaskInput, TaskPlace};
 use crate::progress::Progress;
-use crate::report::{NotPlacedReport, PopulationReport, TaskReport};
 use crate::scene::{Person, Population, Room, Surface};
 use crate::span::Span;
 
@@ -116,70 +117,8 @@ impl Scenario {
             base: self.bases[task.person].as_ref(),
             effectors: &task.effectors,
             progress,
+            verdict_only: false,
         }
-    }
-}
-
-impl Scenario {
-    /// Run `task`: its plugin's answer, or, where the person's base fits
-    /// nowhere in the task's room, that answer (and nothing tried).
-    pub fn run_task(&self, task: &TaskSpec, progress: &dyn Progress) -> TaskReport {
-        if let Some(population) = task.population {
-            return self.run_population(task, population, progress);
-        }
-        let input = self.input(task, progress);
-        let Fit::Nowhere(misfit) = input.base.fit(input.room) else {
-            return task.task.run(&input);
-        };
-        let label = match task.kind.as_str() {
-            "reach_and_gaze" => "reach+gaze",
-            "reach" => "reach",
-            "gaze" => "gaze",
-            "map" => "map",
-            "gaze_map" => "gaze_map",
-            _ => "task",
-        };
-        TaskReport::NotPlaced(NotPlacedReport::new(
-            label,
-            input.subject.name(),
-            &input.person.name,
-            &input.person.base.name,
-            &input.room.name,
-            &misfit,
-        ))
-    }
-}
-
-impl Scenario {
-    /// Run `task` for each person of population `index`, in parallel, and
-    /// report the share it accommodates. The answers are collected in
-    /// draw order, so the report is the same on any number of threads.
-    fn run_population(&self, task: &TaskSpec, index: usize, progress: &dyn Progress) -> TaskReport {
-        use rayon::prelude::*;
-        let population = &self.populations[index];
-        let one_point = task.task.points(&task.subject_in(&self.rooms[task.room])) <= 1;
-        if one_point {
-            progress.add_work(population.len() as u64);
-        }
-        let answers: Vec<TaskReport> = population
-            .members
-            .clone()
-            .into_par_iter()
-            .map(|person| {
-                let spec = TaskSpec {
-                    person,
-                    population: None,
-                    ..task.clone()
-                };
-                let answer = self.run_task(&spec, progress);
-                if one_point {
-                    progress.advance(1);
-                }
-                answer
-            })
-            .collect();
-        let name = task.subject_name(self);
-        TaskReport::Population(Box::new(PopulationReport::new(name, population, &answers)))
     }
 }
 

@@ -89,10 +89,17 @@ impl Task for ReachTask {
         let chain = chain_of(input, 0);
         let obstacles = reaching.obstacles(input.room);
         let seed = mix_seed(reaching.common.seed, &[&target.name, &input.person.name]);
+        // Whether any placement reaches does not depend on which is kept:
+        // for a verdict alone, the first that reaches will do.
+        let search = if input.verdict_only {
+            Search::FirstReaching
+        } else {
+            Search::MostComfortable
+        };
         let query = reaching.query(
             target.position_mm,
             seed,
-            Search::MostComfortable,
+            search,
             obstacles.as_ref(),
             input.base.own_body(),
         );

@@ -1,0 +1,153 @@
+//! Running a scenario's tasks: each task for its person, or, for a task by
+//! a population, for each of its people, whose answers are summed up as
+//! the share accommodated. Everything runs in one parallel loop over jobs,
+//! and the answers come back in the order the tasks were given, whatever
+//! the number of threads.
+
+use std::collections::BTreeMap;
+
+use rayon::prelude::*;
+
+use super::{Scenario, TaskSpec};
+use crate::plugin::{Fit, TaskInput};
+use crate::progress::Progress;
+use crate::report::{NotPlacedReport, PopulationReport, TaskReport};
+
+/// One piece of parallel work.
+enum Job {
+    /// The task at this position, for its person.
+    Alone(usize),
+    /// One person of a population, with every task by that population,
+    /// one after another: what the person's base works out once (the
+    /// capability map, the floor) is built by the thread that uses it, not
+    /// waited for by another.
+    Member { population: usize, person: usize },
+}
+
+impl Scenario {
+    /// Run `task`: its plugin's answer, or, where the person's base fits
+    /// nowhere in the task's room, that answer (and nothing tried); for a
+    /// task by a population, the share of its people it accommodates.
+    pub fn run_task(&self, task: &TaskSpec, progress: &dyn Progress) -> TaskReport {
+        let mut reports = self.run_tasks(&[task], progress);
+        reports.pop().expect("one answer per task")
+    }
+
+    /// Run `tasks` in parallel; their answers in the order given.
+    pub fn run_tasks(&self, tasks: &[&TaskSpec], progress: &dyn Progress) -> Vec<TaskReport> {
+        // The positions of the tasks by each population.
+        let mut by_population: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
+        let mut jobs = Vec::new();
+        for (k, task) in tasks.iter().enumerate() {
+            match task.population {
+                Some(p) => by_population.entry(p).or_default().push(k),
+                None => jobs.push(Job::Alone(k)),
+            }
+        }
+        for (&population, positions) in &by_population {
+            for &k in positions {
+                if self.one_point(tasks[k]) {
+                    progress.add_work(self.populations[population].len() as u64);
+                }
+            }
+            let members = self.populations[population].members.clone();
+            jobs.extend(members.map(|person| Job::Member { population, person }));
+        }
+        // Each job's answers: a task's alone, or a member's in the order
+        // of their population's tasks.
+        let found: Vec<Vec<TaskReport>> = jobs
+            .par_iter()
+            .map(|job| match *job {
+                Job::Alone(k) => vec![self.run_one(tasks[k], progress, false)],
+                Job::Member { population, person } => by_population[&population]
+                    .iter()
+                    .map(|&k| self.run_member(tasks[k], person, progress))
+                    .collect(),
+            })
+            .collect();
+        self.gather(tasks, &by_population, &jobs, found)
+    }
+
+    /// The answers of `found` (one per job of `jobs`) as one report per
+    /// task, in the order of `tasks`.
+    fn gather(
+        &self,
+        tasks: &[&TaskSpec],
+        by_population: &BTreeMap<usize, Vec<usize>>,
+        jobs: &[Job],
+        found: Vec<Vec<TaskReport>>,
+    ) -> Vec<TaskReport> {
+        let mut reports: Vec<Option<TaskReport>> = vec![None; tasks.len()];
+        // Each population task's answers, person by person in draw order.
+        let mut answers: BTreeMap<usize, Vec<TaskReport>> = BTreeMap::new();
+        for (job, each) in jobs.iter().zip(found) {
+            match job {
+                Job::Alone(k) => reports[*k] = each.into_iter().next(),
+                Job::Member { population, .. } => {
+                    for (&k, report) in by_population[population].iter().zip(each) {
+                        answers.entry(k).or_default().push(report);
+                    }
+                }
+            }
+        }
+        for (k, answers) in answers {
+            let task = tasks[k];
+            let population = &self.populations[task.population.expect("a population task")];
+            let name = task.subject_name(self);
+            let report = PopulationReport::new(name, population, &answers);
+            reports[k] = Some(TaskReport::Population(Box::new(report)));
+        }
+        reports
+            .into_iter()
+            .map(|r| r.expect("every task answered"))
+            .collect()
+    }
+
+    /// Whether `task` asks about one point (its progress then counts
+    /// people, where a map's counts its points).
+    fn one_point(&self, task: &TaskSpec) -> bool {
+        task.task.points(&task.subject_in(&self.rooms[task.room])) <= 1
+    }
+
+    /// `task` (by a population) for its member `person`.
+    fn run_member(&self, task: &TaskSpec, person: usize, progress: &dyn Progress) -> TaskReport {
+        let spec = TaskSpec {
+            person,
+            population: None,
+            ..task.clone()
+        };
+        let answer = self.run_one(&spec, progress, true);
+        if self.one_point(task) {
+            progress.advance(1);
+        }
+        answer
+    }
+
+    /// Run `task` for its one person (`verdict_only`: as a member of a
+    /// population, of whom only the verdict is kept).
+    fn run_one(&self, task: &TaskSpec, progress: &dyn Progress, verdict_only: bool) -> TaskReport {
+        let input = TaskInput {
+            verdict_only,
+            ..self.input(task, progress)
+        };
+        let Fit::Nowhere(misfit) = input.base.fit(input.room) else {
+            return task.task.run(&input);
+        };
+        let label = match task.kind.as_str() {
+            "reach_and_gaze" => "reach+gaze",
+            "reach" => "reach",
+            "gaze" => "gaze",
+            "map" => "map",
+            "gaze_map" => "gaze_map",
+            _ => "task",
+        };
+        TaskReport::NotPlaced(NotPlacedReport::new(
+            label,
+            input.subject.name(),
+            &input.person.name,
+            &input.person.base.name,
+            &input.room.name,
+            &misfit,
+        ))
+    }
+}
