@@ -163,12 +163,11 @@ impl Chain {
 
     /// The pose of the last frame in the base frame: `DH_0,n`.
     pub fn end_frame(&self, q: &[f64]) -> IsometryMatrix3<f64> {
-        self.joints
-            .iter()
-            .zip(q)
-            .fold(IsometryMatrix3::identity(), |acc, (j, &qi)| {
-                acc * j.transform(qi)
-            })
+        // From the first link's own pose rather than the identity times it
+        // (the same numbers, one product fewer).
+        let mut links = self.joints.iter().zip(q).map(|(j, &qi)| j.transform(qi));
+        let first = links.next().unwrap_or_else(IsometryMatrix3::identity);
+        links.fold(first, |acc, link| acc * link)
     }
 
     /// No posture puts a link point (a joint's frame origin or the
