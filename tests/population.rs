@@ -230,3 +230,76 @@ fn bad_populations_are_diagnostics_at_the_text() {
         assert!(rendered.contains("pop.reach:"), "{rendered}");
     }
 }
+
+#[test]
+fn a_population_map_counts_at_each_point_the_people_whose_own_map_reaches_it() {
+    let room = "units mm deg
+use std::populations
+room kitchen {
+  size 3500 x 3000 x 2500
+  box counter at (0, 0, 0) size (600, 3000, 900)
+  surface front at (600, 1200, 60) size (0, 300, 1500)
+}
+";
+    let text = format!(
+        "{room}population few = manual_wheelchair_users {{ size 3 seed 5 }}\nmap front by few {{ step 150mm }}\n"
+    );
+    let (scenario, report) = run(&text);
+    let shares = population_reports(&report)[0];
+    let (grid, cells) = (
+        shares.grid.as_ref().unwrap(),
+        shares.cells.as_ref().unwrap(),
+    );
+    assert_eq!((grid.columns, grid.rows, grid.view), (2, 10, "elevation"));
+    let mut counted = vec![0; cells.len()];
+    for person in 0..3 {
+        let drawn = &scenario.populations[0].drawn[person];
+        let seat = drawn.values.iter().find(|(n, _)| n == "seat").unwrap().1;
+        let profiles: String = drawn
+            .profiles
+            .iter()
+            .map(|p| format!(" profile {p}"))
+            .collect();
+        let alone = format!(
+            "{room}person p {{\n  mannequin upper_body(\n    {}) {{{profiles} }}\n  base manual_wheelchair {{ seat_height {seat:?}mm }}\n}}\n\
+             map front by p {{ step 150mm }}\n",
+            arguments_of(&scenario, person)
+        );
+        let (_, alone) = run(&alone);
+        let map = alone.tasks[0].map().expect("a map");
+        for (k, c) in map.cells.iter().enumerate() {
+            counted[k] += usize::from(c.reachable);
+        }
+    }
+    let reached: Vec<usize> = cells.iter().map(|c| c.reached).collect();
+    assert_eq!(
+        reached, counted,
+        "each point's count is its members' own maps'"
+    );
+    assert!(
+        counted.contains(&3) && counted.iter().any(|&n| n < 3),
+        "a map where some points are not reached by everyone: {counted:?}"
+    );
+    // The files: a CSV of the shares and an SVG coloured by them.
+    let dir = tempfile::tempdir().unwrap();
+    reach::output::write_outputs(&report, &scenario, dir.path()).unwrap();
+    let csv = std::fs::read_to_string(dir.path().join("map-front-few.csv")).unwrap();
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next(),
+        Some("column,row,x_mm,y_mm,z_mm,share,reached,people")
+    );
+    for (line, c) in lines.zip(cells) {
+        let fields: Vec<&str> = line.split(',').collect();
+        assert_eq!(fields[6], c.reached.to_string());
+        assert_eq!(fields[7], "3");
+    }
+    let svg = std::fs::read_to_string(dir.path().join("map-front-few.svg")).unwrap();
+    assert!(svg.contains("reached by everyone"), "a legend of shares");
+    let everyone = cells.iter().filter(|c| c.reached == 3).count();
+    assert_eq!(
+        svg.matches(r##"fill="#1a7a36""##).count(),
+        everyone + 1,
+        "the cells reached by everyone, and the legend"
+    );
+}

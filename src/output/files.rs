@@ -23,7 +23,7 @@ use super::view::view_data;
 use super::Json;
 use crate::error::{Error, ErrorKind};
 use crate::plugin::FormatPlugin;
-use crate::report::Report;
+use crate::report::{Report, TaskReport};
 use crate::scenario::Scenario;
 
 /// Temporaries start with this, then the process id and the file's name.
@@ -50,9 +50,10 @@ pub fn output_set(report: &Report, scenario: &Scenario) -> Vec<(String, Vec<u8>)
         ),
     ];
     let mut stems: Vec<String> = Vec::new();
-    let maps = (report.tasks.iter().enumerate()).filter_map(|(k, t)| Some((k, t.map()?)));
-    for (index, m) in maps {
-        let base = map_files::file_stem(m);
+    for (index, task) in report.tasks.iter().enumerate() {
+        let Some((base, csv, picture)) = map_file_parts(task) else {
+            continue;
+        };
         // Two maps of one surface by one person (a reach and a gaze map,
         // or two option sets) get distinct names, in the order of tasks.
         let taken = stems.iter().filter(|s| s.as_str() == base).count();
@@ -61,11 +62,33 @@ pub fn output_set(report: &Report, scenario: &Scenario) -> Vec<(String, Vec<u8>)
             0 => base,
             n => format!("{base}-{}", n + 1),
         };
-        files.push((format!("{stem}.csv"), map_files::csv(m).into_bytes()));
+        files.push((format!("{stem}.csv"), csv.into_bytes()));
         let room = scene.tasks.get(index).and_then(|t| view.rooms.get(t.room));
-        files.push((format!("{stem}.svg"), map_files::svg(m, room).into_bytes()));
+        let svg = map_files::picture_svg(&picture, room);
+        files.push((format!("{stem}.svg"), svg.into_bytes()));
     }
     files
+}
+
+/// A map's file stem, CSV and picture: a person's map, or a population's
+/// (by the share of its people who reach each point).
+fn map_file_parts(task: &TaskReport) -> Option<(String, String, map_files::Picture)> {
+    if let Some(m) = task.map() {
+        return Some((
+            map_files::file_stem(m),
+            map_files::csv(m),
+            map_files::Picture::of_map(m),
+        ));
+    }
+    let TaskReport::Population(p) = task else {
+        return None;
+    };
+    let (grid, cells) = (p.grid.as_ref()?, p.cells.as_ref()?);
+    Some((
+        map_files::population_stem(p, grid),
+        map_files::population_csv(p, cells),
+        map_files::Picture::of_population(p, grid, cells),
+    ))
 }
 
 /// `DIR/report.json`, `DIR/report.html`, and a CSV and an SVG for each

@@ -1,26 +1,39 @@
 //! Files for each map, written with `--out DIR`: the points as CSV and a
-//! heat map as SVG, named after the surface and the person. The SVG shows
-//! a horizontal surface in plan (x to the right, y up) and a vertical one
-//! in elevation as seen from the room (from the side a hand touches it
-//! from, height up), each point's cell graded by how far short it fell,
-//! with the room's furniture near it for context (outlines in plan,
-//! faces in elevation) and, in plan, where the base stood for the points.
-//! Ticks fall on round millimetres, spaced so their labels never meet.
+//! heat map as SVG, named after the surface and the person (or the
+//! population). The SVG shows a horizontal surface in plan (x to the
+//! right, y up) and a vertical one in elevation as seen from the room
+//! (from the side a hand touches it from, height up), each point's cell
+//! graded by how far short it fell (a population's: by the share of its
+//! people who reach it), with the room's furniture near it for context
+//! (outlines in plan, faces in elevation) and, in plan, where the base
+//! stood for the points. Ticks fall on round millimetres, spaced so their
+//! labels never meet. Both kinds of map are drawn through one
+//! [`Picture`].
 
 use std::fmt::Write;
 
 use nalgebra::{Vector2, Vector3};
 
+use super::colours::{cell_colour, share_colour, MISSED, REACHED, SEEN, SHARES, SHORT};
 use super::view::RoomView;
 use crate::escape::markup;
-use crate::report::MapReport;
+use crate::report::{MapReport, PopulationReport, ShareCell, ShareGrid};
 
 /// File names for a map: `map-SURFACE-PERSON.csv` and `.svg`
 /// (`gaze_map-...` for a gaze map).
 pub fn file_stem(m: &MapReport) -> String {
+    stem(m.of, &m.name, &m.person)
+}
+
+/// File names for a population's map: `map-SURFACE-POPULATION`.
+pub fn population_stem(p: &PopulationReport, grid: &ShareGrid) -> String {
+    stem(grid.of, &p.name, &p.population)
+}
+
+fn stem(of: &str, surface: &str, who: &str) -> String {
     let clean = |s: &str| s.replace(|c: char| !c.is_ascii_alphanumeric() && c != '_', "-");
-    let kind = if m.of == "gaze" { "gaze_map" } else { "map" };
-    format!("{kind}-{}-{}", clean(&m.name), clean(&m.person))
+    let kind = if of == "gaze" { "gaze_map" } else { "map" };
+    format!("{kind}-{}-{}", clean(surface), clean(who))
 }
 
 /// One line per point: where it is, whether it is reachable, the distance
@@ -39,6 +52,21 @@ pub fn csv(m: &MapReport) -> String {
     out
 }
 
+/// One line per point of a population's map: where it is, the share of
+/// the people who reach (or see) it, how many do, and of how many.
+pub fn population_csv(p: &PopulationReport, cells: &[ShareCell]) -> String {
+    let mut out = String::from("column,row,x_mm,y_mm,z_mm,share,reached,people\n");
+    for c in cells {
+        let [x, y, z] = c.point_mm;
+        let _ = writeln!(
+            out,
+            "{},{},{x},{y},{z},{},{},{}",
+            c.column, c.row, c.share, c.reached, p.people
+        );
+    }
+    out
+}
+
 /// How much room around the map the picture shows, for context.
 const CONTEXT_MM: f64 = 400.0;
 /// The drawing's largest side, and the margins for axes and the legend.
@@ -52,18 +80,110 @@ const FURNITURE_EDGE: &str = "#9c8b6c";
 const BASE: &str = "#4b5563";
 const NOTE: &str = "#555d6b";
 
-/// The cell colours, which the glTF scene shares: reached, seen (and a
-/// line of sight), missed (not seen, or a target not reached), and short
-/// by up to 75, 150, 225 and 225 mm or more.
-pub(super) const REACHED: &str = "#2e9e4f";
-pub(super) const SEEN: &str = "#2b6cd6";
-pub(super) const MISSED: &str = "#d64545";
-const SHORT: [(&str, &str); 4] = [
-    ("#e8d44d", "short by up to 75 mm"),
-    ("#e6a84a", "75-150 mm"),
-    ("#df7d48", "150-225 mm"),
-    (MISSED, "225 mm or more"),
-];
+/// A map as its SVG shows it, whoever's it is.
+pub struct Picture {
+    title: String,
+    view: &'static str,
+    step_mm: f64,
+    /// The surface's unit normal on the side it is used from.
+    seen_from: Vector3<f64>,
+    cells: Vec<PictureCell>,
+    /// Where the base stood for the points, in plan (a person's map).
+    bases: Option<Vec<[f64; 3]>>,
+    /// The colours of the cells and what they mean.
+    legend: Vec<(&'static str, String)>,
+}
+
+struct PictureCell {
+    point_mm: [f64; 3],
+    fill: &'static str,
+    /// What the cell's tooltip says of it.
+    words: String,
+}
+
+impl Picture {
+    /// One person's map: each point reached, or how far short it fell.
+    pub fn of_map(m: &MapReport) -> Self {
+        let cells = m
+            .cells
+            .iter()
+            .map(|c| PictureCell {
+                point_mm: c.point_mm,
+                fill: cell_colour(m.of, c.reachable, c.distance_mm),
+                words: match (c.reachable, m.of) {
+                    (true, _) => m.words()[1].to_string(),
+                    (false, "gaze") => "not seen".to_string(),
+                    (false, _) => format!("{} mm short", c.distance_mm),
+                },
+            })
+            .collect();
+        let legend = if m.of == "gaze" {
+            vec![
+                (SEEN, m.words()[1].to_string()),
+                (MISSED, format!("not {}", m.words()[1])),
+            ]
+        } else {
+            let short = SHORT.iter().map(|(c, t)| (*c, (*t).to_string()));
+            std::iter::once((REACHED, m.words()[1].to_string()))
+                .chain(short)
+                .collect()
+        };
+        Picture {
+            title: format!(
+                "{} {} by {} ({} base): {:.1} % of {} points",
+                m.name,
+                m.words()[0],
+                m.person,
+                m.base,
+                m.fraction * 100.0,
+                m.points
+            ),
+            view: m.view,
+            step_mm: m.step_mm,
+            seen_from: Vector3::from(m.seen_from()),
+            cells,
+            bases: (m.view == "plan").then(|| m.cells.iter().map(|c| c.base_mm_deg).collect()),
+            legend,
+        }
+    }
+
+    /// A population's map: each point by the share of its people who
+    /// reach (or see) it.
+    pub fn of_population(p: &PopulationReport, grid: &ShareGrid, cells: &[ShareCell]) -> Self {
+        let (verb, participle) = if grid.of == "gaze" {
+            ("see", "seen")
+        } else {
+            ("reach", "reached")
+        };
+        let everyone = cells.iter().filter(|c| c.reached == p.people).count();
+        Picture {
+            title: format!(
+                "{} {participle} by {} ({} people, {} base): {everyone} of {} points by everyone",
+                p.name,
+                p.population,
+                p.people,
+                grid.base,
+                cells.len()
+            ),
+            view: grid.view,
+            step_mm: grid.step_mm,
+            seen_from: Vector3::from(grid.seen_from),
+            cells: cells
+                .iter()
+                .map(|c| PictureCell {
+                    point_mm: c.point_mm,
+                    fill: share_colour(c.share),
+                    words: format!("{} of {} {verb} it", c.reached, p.people),
+                })
+                .collect(),
+            bases: None,
+            legend: SHARES
+                .iter()
+                .map(|(_, colour, label)| (*colour, format!("{participle} by {label}")))
+                .collect(),
+        }
+    }
+}
 
 /// How the map is seen: two unit directions in the room for the
 /// picture's right and up.
@@ -73,7 +193,7 @@ struct Frame {
 }
 
 impl Frame {
-    fn of(m: &MapReport) -> Frame {
+    fn of(m: &Picture) -> Frame {
         if m.view == "plan" {
             return Frame {
                 right: Vector3::x(),
@@ -82,15 +202,7 @@ impl Frame {
         }
         // An elevation, seen from the room: looking along -normal, the
         // right hand points along (-normal) x z.
-        let (u, v) = (Vector3::from(m.u_mm), Vector3::from(m.v_mm));
-        let mut normal = u.cross(&v).normalize();
-        if let Some(c) = m.cells.first() {
-            let base = Vector3::new(c.base_mm_deg[0], c.base_mm_deg[1], c.point_mm[2]);
-            if normal.dot(&(base - Vector3::from(c.point_mm))) < 0.0 {
-                normal = -normal;
-            }
-        }
-        let right = (-normal).cross(&Vector3::z());
+        let right = (-m.seen_from).cross(&Vector3::z());
         Frame {
             right: right.try_normalize(1e-9).unwrap_or_else(Vector3::x),
             up: Vector3::z(),
@@ -123,17 +235,14 @@ impl Scale {
 
 /// The heat map of `m`, with `room`'s furniture around it.
 pub fn svg(m: &MapReport, room: Option<&RoomView>) -> String {
+    picture_svg(&Picture::of_map(m), room)
+}
+
+/// The heat map of `m`, with `room`'s furniture around it.
+pub fn picture_svg(m: &Picture, room: Option<&RoomView>) -> String {
     let frame = Frame::of(m);
     let scale = scale(m, &frame, room);
-    let title = format!(
-        "{} {} by {} ({} base): {:.1} % of {} points",
-        m.name,
-        m.words()[0],
-        m.person,
-        m.base,
-        m.fraction * 100.0,
-        m.points
-    );
+    let title = &m.title;
     let size = scale.size();
     // Wide enough for the drawing and legend, and for the title (about
     // 9 px a character at 15 px bold).
@@ -148,7 +257,7 @@ pub fn svg(m: &MapReport, room: Option<&RoomView>) -> String {
     let _ = writeln!(
         s,
         r#"<text x="{MARGIN}" y="24" font-size="15" font-weight="bold">{}</text>"#,
-        markup(&title)
+        markup(title)
     );
     let _ = writeln!(
         s,
@@ -168,8 +277,8 @@ pub fn svg(m: &MapReport, room: Option<&RoomView>) -> String {
         furniture(&mut s, m, room, &frame, &scale);
     }
     cells(&mut s, m, &frame, &scale);
-    if m.view == "plan" {
-        bases(&mut s, m, &scale);
+    if let Some(bases_mm_deg) = &m.bases {
+        bases(&mut s, bases_mm_deg, &scale);
     }
     s.push_str("</svg>\n");
     axes(&mut s, m, &scale);
@@ -180,7 +289,7 @@ pub fn svg(m: &MapReport, room: Option<&RoomView>) -> String {
 
 /// The picture's extent: the cells, and in plan the bases, with room
 /// around them; and the scale that fits it in the drawing.
-fn scale(m: &MapReport, frame: &Frame, room: Option<&RoomView>) -> Scale {
+fn scale(m: &Picture, frame: &Frame, room: Option<&RoomView>) -> Scale {
     let half = m.step_mm / 2.0;
     let mut lo = Vector2::repeat(f64::INFINITY);
     let mut hi = Vector2::repeat(f64::NEG_INFINITY);
@@ -188,10 +297,9 @@ fn scale(m: &MapReport, frame: &Frame, room: Option<&RoomView>) -> Scale {
         lo = lo.inf(&(p - Vector2::repeat(by)));
         hi = hi.sup(&(p + Vector2::repeat(by)));
     };
-    for c in &m.cells {
+    for (k, c) in m.cells.iter().enumerate() {
         grow(frame.at(Vector3::from(c.point_mm)), half + CONTEXT_MM);
-        if m.view == "plan" {
-            let [x, y, _] = c.base_mm_deg;
+        if let Some([x, y, _]) = m.bases.as_ref().map(|b| b[k]) {
             if x.is_finite() && y.is_finite() {
                 grow(Vector2::new(x, y), 150.0);
             }
@@ -215,39 +323,22 @@ fn scale(m: &MapReport, frame: &Frame, room: Option<&RoomView>) -> Scale {
     Scale { lo, hi, px_per_mm }
 }
 
-fn cells(s: &mut String, m: &MapReport, frame: &Frame, scale: &Scale) {
+fn cells(s: &mut String, m: &Picture, frame: &Frame, scale: &Scale) {
     let side = m.step_mm * scale.px_per_mm;
     for c in &m.cells {
         let p = frame.at(Vector3::from(c.point_mm));
         let (x, y) = (scale.x(p.x) - side / 2.0, scale.y(p.y) - side / 2.0);
-        let fill = cell_colour(m.of, c.reachable, c.distance_mm);
-        let words = match (c.reachable, m.of) {
-            (true, _) => m.words()[1].to_string(),
-            (false, "gaze") => "not seen".to_string(),
-            (false, _) => format!("{} mm short", c.distance_mm),
-        };
         let _ = writeln!(
             s,
-            r#"<rect x="{x:.1}" y="{y:.1}" width="{side:.1}" height="{side:.1}" fill="{fill}" stroke="white" stroke-width="0.5"><title>({}, {}, {}) mm: {words}</title></rect>"#,
-            c.point_mm[0], c.point_mm[1], c.point_mm[2],
+            r#"<rect x="{x:.1}" y="{y:.1}" width="{side:.1}" height="{side:.1}" fill="{}" stroke="white" stroke-width="0.5"><title>({}, {}, {}) mm: {}</title></rect>"#,
+            c.fill, c.point_mm[0], c.point_mm[1], c.point_mm[2], c.words,
         );
-    }
-}
-
-/// A map point's colour: reached or seen, not seen, or its band of
-/// shortfall (`short_mm`, the distance left).
-pub(super) fn cell_colour(of: &str, reachable: bool, short_mm: f64) -> &'static str {
-    match (reachable, of) {
-        (true, "gaze") => SEEN,
-        (true, _) => REACHED,
-        (false, "gaze") => MISSED,
-        (false, _) => SHORT[(short_mm / 75.0).floor().clamp(0.0, 3.0) as usize].0,
     }
 }
 
 /// The room's boxes near the map: footprints in plan; in elevation, the
 /// faces of boxes between the surface and the room, as seen from it.
-fn furniture(s: &mut String, m: &MapReport, room: &RoomView, frame: &Frame, scale: &Scale) {
+fn furniture(s: &mut String, m: &Picture, room: &RoomView, frame: &Frame, scale: &Scale) {
     let viewer = frame.right.cross(&frame.up);
     let plane = m.cells.first().map(|c| Vector3::from(c.point_mm));
     for b in &room.boxes {
@@ -297,10 +388,9 @@ fn furniture(s: &mut String, m: &MapReport, room: &RoomView, frame: &Frame, scal
 
 /// Where the base stood for the points, each place once: a dot and a
 /// tick along its heading.
-fn bases(s: &mut String, m: &MapReport, scale: &Scale) {
+fn bases(s: &mut String, bases_mm_deg: &[[f64; 3]], scale: &Scale) {
     let mut drawn: Vec<[i64; 3]> = Vec::new();
-    for c in &m.cells {
-        let [x, y, heading] = c.base_mm_deg;
+    for &[x, y, heading] in bases_mm_deg {
         if !(x.is_finite() && y.is_finite() && heading.is_finite()) {
             continue;
         }
@@ -336,7 +426,7 @@ fn nice_step(min_mm: f64) -> f64 {
 }
 
 /// The drawing's frame and round ticks along both sides.
-fn axes(s: &mut String, m: &MapReport, scale: &Scale) {
+fn axes(s: &mut String, m: &Picture, scale: &Scale) {
     let size = scale.size();
     let _ = writeln!(
         s,
@@ -390,7 +480,7 @@ fn axes(s: &mut String, m: &MapReport, scale: &Scale) {
 
 /// An elevation's horizontal axis: along the room's x or y, whichever the
 /// picture's right runs along, with its sign.
-fn along_name(m: &MapReport) -> &'static str {
+fn along_name(m: &Picture) -> &'static str {
     let frame = Frame::of(m);
     match (
         frame.right.x.abs() >= frame.right.y.abs(),
@@ -403,19 +493,12 @@ fn along_name(m: &MapReport) -> &'static str {
     }
 }
 
-fn legend(s: &mut String, m: &MapReport, x: f64, furniture: bool) {
-    let mut rows: Vec<(&str, String)> = Vec::new();
-    if m.of == "gaze" {
-        rows.push((SEEN, m.words()[1].to_string()));
-        rows.push((MISSED, format!("not {}", m.words()[1])));
-    } else {
-        rows.push((REACHED, m.words()[1].to_string()));
-        rows.extend(SHORT.iter().map(|(c, t)| (*c, (*t).to_string())));
-    }
+fn legend(s: &mut String, m: &Picture, x: f64, furniture: bool) {
+    let mut rows = m.legend.clone();
     if furniture {
         rows.push((FURNITURE, "furniture".to_string()));
     }
-    if m.view == "plan" {
+    if m.bases.is_some() {
         rows.push((BASE, "where the base stood".to_string()));
     }
     for (k, (fill, label)) in rows.iter().enumerate() {

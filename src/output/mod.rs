@@ -1,5 +1,6 @@
 //! Output formats, each a plugin, and the files `--out DIR` writes.
 
+pub mod colours;
 mod files;
 pub mod glb;
 pub mod html;

@@ -3,6 +3,7 @@
 
 use std::fmt::Write;
 
+use nalgebra::Vector3;
 use serde::Serialize;
 
 use super::parts::point;
@@ -111,6 +112,21 @@ impl MapCell {
 }
 
 impl MapReport {
+    /// The surface's unit normal on the side it is used from: towards
+    /// where the base stood for its first point (a hand touches a
+    /// cabinet's front from the room, not from inside the cabinet).
+    pub fn seen_from(&self) -> [f64; 3] {
+        let (u, v) = (Vector3::from(self.u_mm), Vector3::from(self.v_mm));
+        let mut normal = u.cross(&v).try_normalize(1e-12).unwrap_or_else(Vector3::z);
+        if let Some(c) = self.cells.first() {
+            let base = Vector3::new(c.base_mm_deg[0], c.base_mm_deg[1], c.point_mm[2]);
+            if normal.dot(&(base - Vector3::from(c.point_mm))) < 0.0 {
+                normal = -normal;
+            }
+        }
+        normal.into()
+    }
+
     /// How a point that counts is described: `reached`/`reachable`, or
     /// `seen`/`visible` for a gaze map.
     pub fn words(&self) -> [&'static str; 2] {

@@ -25,7 +25,7 @@ pub use gaze::{GazeReport, Sight};
 pub use map::{cells_apart, MapCell, MapReport};
 pub use not_placed::NotPlacedReport;
 pub use parts::{deg, fixed, mm, Asked, BaseReport, Names, Posture};
-pub use population::{wilson95, Excluded, PopulationReport, ShareCell};
+pub use population::{wilson95, Excluded, PopulationReport, ShareCell, ShareGrid};
 pub use reach::ReachReport;
 pub use reach_and_gaze::ReachAndGazeReport;
 pub use why::{Why, WIDENED_DEG};

@@ -34,10 +34,36 @@ pub struct PopulationReport {
     pub ok: bool,
     /// Everyone not accommodated, in draw order.
     pub excluded: Vec<Excluded>,
+    /// For a map: the grid the shares are on, as the members' maps have
+    /// it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub grid: Option<ShareGrid>,
     /// For a map: each point's share of the people who reach it, in the
     /// map's order (row by row).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub cells: Option<Vec<ShareCell>>,
+}
+
+/// The grid of a population's map: the surface and its cells as each
+/// member's map gives them.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ShareGrid {
+    /// What a point asks: `reach` (reached) or `gaze` (seen).
+    pub of: &'static str,
+    /// The base plugin.
+    pub base: String,
+    /// `plan` for a horizontal surface, `elevation` for a vertical one.
+    pub view: &'static str,
+    pub step_mm: f64,
+    /// The surface's corner and its two edges: columns run along the
+    /// first, rows along the second.
+    pub corner_mm: [f64; 3],
+    pub u_mm: [f64; 3],
+    pub v_mm: [f64; 3],
+    pub columns: usize,
+    pub rows: usize,
+    /// The surface's unit normal on the side it is used from.
+    pub seen_from: [f64; 3],
 }
 
 /// A person the task does not accommodate.
@@ -68,6 +94,8 @@ pub struct ShareCell {
     pub point_mm: [f64; 3],
     /// The share of the people who reach it.
     pub share: f64,
+    /// How many of them reach it.
+    pub reached: usize,
 }
 
 /// Pairs as a JSON object, in their order.
@@ -126,9 +154,27 @@ impl PopulationReport {
             not_placed,
             ok: accommodated == people,
             excluded,
+            grid: share_grid(answers),
             cells: map_shares(answers),
         }
     }
+}
+
+/// For maps: the grid, from the first member whose map there is.
+fn share_grid(answers: &[TaskReport]) -> Option<ShareGrid> {
+    let m = answers.iter().find_map(TaskReport::map)?;
+    Some(ShareGrid {
+        of: m.of,
+        base: m.base.clone(),
+        view: m.view,
+        step_mm: m.step_mm,
+        corner_mm: m.corner_mm,
+        u_mm: m.u_mm,
+        v_mm: m.v_mm,
+        columns: m.columns,
+        rows: m.rows,
+        seen_from: m.seen_from().map(|x| fixed(x, 4)),
+    })
 }
 
 /// For maps: each point's share of the people who reach it (a person
@@ -152,6 +198,7 @@ fn map_shares(answers: &[TaskReport]) -> Option<Vec<ShareCell>> {
                 row: cell.row,
                 point_mm: cell.point_mm,
                 share: fixed(reached as f64 / people, 4),
+                reached,
             }
         })
         .collect();
@@ -197,47 +244,78 @@ fn percent(share: f64) -> String {
     }
 }
 
+impl PopulationReport {
+    /// A map's points reached by everyone, and the mean of its points'
+    /// shares.
+    fn map_summary(&self) -> Option<(usize, usize, f64)> {
+        let cells = self.cells.as_ref()?;
+        let everyone = cells.iter().filter(|c| c.reached == self.people).count();
+        let mean = cells.iter().map(|c| c.share).sum::<f64>() / cells.len().max(1) as f64;
+        Some((everyone, cells.len(), mean))
+    }
+}
+
 impl ReportKind for PopulationReport {
     fn answer(&self) -> Answer {
         let [lo, hi] = self.ci95;
-        Answer {
-            task: self.task,
-            subject: self.name.clone(),
-            person: self.population.clone(),
-            ok: self.ok,
-            verdict: format!(
+        let verdict = match self.map_summary() {
+            // A map: which points everyone reaches says more than who
+            // reaches some point.
+            Some((everyone, points, mean)) => format!(
+                "{everyone} of {points} points by all {} (a point by {} on average)",
+                self.people,
+                percent(mean)
+            ),
+            None => format!(
                 "{} of {} (95 % CI {}-{})",
                 percent(self.share),
                 self.people,
                 percent(lo).trim_end_matches(" %"),
                 percent(hi)
             ),
+        };
+        Answer {
+            task: self.task,
+            subject: self.name.clone(),
+            person: self.population.clone(),
+            ok: self.ok,
+            verdict,
             figures: vec![Figure::new("share", self.share * 100.0, "%", 0.05)],
         }
     }
 
     fn details(&self, out: &mut String) {
         let [lo, hi] = self.ci95;
-        let _ = writeln!(
-            out,
-            "{}: {} of {} (95 % CI {}-{}; {} people, seed {})",
-            self.name,
-            percent(self.share),
-            self.population,
+        let interval = format!(
+            "95 % CI {}-{}",
             percent(lo).trim_end_matches(" %"),
-            percent(hi),
-            self.people,
-            self.seed
+            percent(hi)
         );
-        if let Some(cells) = &self.cells {
-            let everyone = cells.iter().filter(|c| c.share >= 1.0).count();
-            let mean = cells.iter().map(|c| c.share).sum::<f64>() / cells.len().max(1) as f64;
-            let _ = writeln!(
-                out,
-                "  points reached by everyone: {everyone} of {}; on average a point is reached by {}",
-                cells.len(),
-                percent(mean)
-            );
+        let (people, seed) = (self.people, self.seed);
+        match self.map_summary() {
+            Some((everyone, points, mean)) => {
+                let _ = writeln!(
+                    out,
+                    "{} by {} ({people} people, seed {seed}): points reached by everyone: {everyone} of {points}; on average a point is reached by {}",
+                    self.name,
+                    self.population,
+                    percent(mean)
+                );
+                let _ = writeln!(
+                    out,
+                    "  {} reach at least one point ({interval})",
+                    percent(self.share)
+                );
+            }
+            None => {
+                let _ = writeln!(
+                    out,
+                    "{}: {} of {} ({interval}; {people} people, seed {seed})",
+                    self.name,
+                    percent(self.share),
+                    self.population,
+                );
+            }
         }
         const SHOWN: usize = 8;
         if !self.excluded.is_empty() {

@@ -17,7 +17,7 @@ mod tessellate;
 use nalgebra::{Point3, Vector3};
 use serde_json::{json, Value};
 
-use super::map_files::{cell_colour, MISSED, REACHED, SEEN};
+use super::colours::{view_cell_colour, MISSED, REACHED, SEEN};
 use super::view::{RoomView, SolidView, TaskView, ViewData};
 use crate::geometry::Cuboid;
 use tessellate::Triangles;
@@ -144,8 +144,9 @@ impl Builder {
             let mut by_colour: Vec<(String, Triangles)> = Vec::new();
             for p in &c.points {
                 let centre = Point3::new(p[0], p[1], p[2]) + 3.0 * normal;
-                // The view's fourth number: how far short (0 where reached).
-                let colour = cell_colour(c.of, p[3] <= 0.0, p[3]).to_string();
+                // The view's fourth number: how far short (0 where reached),
+                // or a population's share.
+                let colour = view_cell_colour(c.of, p[3]).to_string();
                 let square = Triangles::square(centre, u, v, 0.9 * c.step);
                 match by_colour.iter_mut().find(|(k, _)| *k == colour) {
                     Some((_, t)) => t.append(&square),

@@ -27,6 +27,13 @@ function shortColour(shortMm) {
   return c.setHex(0xe8d44d).lerp(new THREE.Color(COLOURS.not), t);
 }
 
+// A population's share of a point, as a colour: the first band (of the
+// report's, which the SVG maps use too) whose least share it reaches.
+function shareColour(share, bands) {
+  const band = bands.find(([least]) => share >= least) || bands[bands.length - 1];
+  return new THREE.Color(band[1]);
+}
+
 function v3(a) {
   return new THREE.Vector3(a[0], a[1], a[2]);
 }
@@ -147,7 +154,7 @@ function buildRoom(room) {
 
 // One task's objects: the person, the line of sight, the map's cells and
 // the joints at a limit.
-function buildTask(task) {
+function buildTask(task, data) {
   const group = new THREE.Group();
   for (const s of task.solids) {
     const material = lambert(new THREE.Color(s.color), s.opacity);
@@ -192,7 +199,9 @@ function buildTask(task) {
       instances.setMatrixAt(k, m);
       const colour = c.of === "gaze"
         ? new THREE.Color(p[3] > 0 ? COLOURS.not : COLOURS.sight)
-        : shortColour(p[3]);
+        : c.of === "share"
+          ? shareColour(p[3], data.share_bands)
+          : shortColour(p[3]);
       instances.setColorAt(k, colour);
     });
     group.add(instances);
@@ -213,10 +222,16 @@ function legend(data) {
   let html = rows
     .map(([c, t]) => `<div class="row"><span class="swatch" style="background:${c}"></span>${t}</div>`)
     .join("");
-  if (data.tasks.some((t) => t.cells)) {
+  if (data.tasks.some((t) => t.cells && t.cells.of !== "share")) {
     html += `<div class="row"><span class="swatch" style="background:#2b6cd6"></span>gaze map: seen</div>`;
     html += `<div class="row">reach map: reached &rarr; short by</div><div class="row"><span class="ramp"></span></div>` +
       `<div class="row" style="justify-content:space-between;width:140px"><span>0</span><span>${RAMP_MM / 2}</span><span>&ge;${RAMP_MM} mm short</span></div>`;
+  }
+  if (data.tasks.some((t) => t.cells && t.cells.of === "share")) {
+    html += `<div class="row">population map: share who reach</div>` +
+      data.share_bands
+        .map(([, c, t]) => `<div class="row"><span class="swatch" style="background:${c}"></span>${t}</div>`)
+        .join("");
   }
   document.getElementById("legend").innerHTML = html;
 }
@@ -253,7 +268,7 @@ export function start(settings, data) {
   const groups = data.tasks.map(() => null);
   function group(k) {
     if (!groups[k]) {
-      groups[k] = buildTask(data.tasks[k]);
+      groups[k] = buildTask(data.tasks[k], data);
       scene.add(groups[k]);
     }
     return groups[k];

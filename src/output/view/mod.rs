@@ -12,11 +12,12 @@ use serde::Serialize;
 
 mod simplify;
 
+use super::colours::SHARES;
 use crate::figure;
 use crate::geometry::{Cuboid, Shape};
 use crate::kinematics::{Body, JointKind};
 use crate::plugin::{FormatScene, TaskPlace};
-use crate::report::{fixed, BaseReport, MapReport, Report, TaskReport};
+use crate::report::{fixed, BaseReport, MapReport, PopulationReport, Report, TaskReport};
 use crate::scene::{BasePose, Room};
 use simplify::simplified;
 
@@ -30,6 +31,10 @@ pub struct ViewData {
     pub title: String,
     pub rooms: Vec<RoomView>,
     pub tasks: Vec<TaskView>,
+    /// How a population's map colours a point by its share: the least
+    /// share of each band, its colour and its name, as the SVG maps have
+    /// them.
+    pub share_bands: Vec<(f64, &'static str, &'static str)>,
 }
 
 #[derive(Serialize)]
@@ -140,12 +145,14 @@ pub struct SightView {
 
 #[derive(Serialize)]
 pub struct CellsView {
-    /// `reach` (graded by how far short) or `gaze` (seen or not).
+    /// `reach` (graded by how far short), `gaze` (seen or not) or `share`
+    /// (a population's: by the share of its people who reach it).
     pub of: &'static str,
     pub step: f64,
     pub u: [f64; 3],
     pub v: [f64; 3],
-    /// Each point: x, y, z, and how far short it fell (mm, 0 if reached).
+    /// Each point: x, y, z, and how far short it fell (mm, 0 if reached),
+    /// or the share of the population who reach it.
     pub points: Vec<[f64; 4]>,
 }
 
@@ -160,6 +167,11 @@ pub fn view_data(report: &Report, scene: &FormatScene<'_>) -> ViewData {
             .iter()
             .zip(&scene.tasks)
             .map(|(task, place)| task_view(task, place, scene))
+            .collect(),
+        share_bands: SHARES
+            .iter()
+            // JSON has no infinity: the last band starts at zero.
+            .map(|&(least, colour, name)| (least.max(0.0), colour, name))
             .collect(),
     }
 }
@@ -280,9 +292,9 @@ fn task_view(task: &TaskReport, place: &TaskPlace, scene: &FormatScene<'_>) -> T
         TaskReport::Map(m) => view.cells = Some(cells(m)),
         // No person is placed: the room and the words say it.
         TaskReport::NotPlaced(_) => {}
-        // Many people: the words say the share (a map's shares are not
-        // drawn in the 3D view yet).
-        TaskReport::Population(_) => {}
+        // Many people: the words say the share, and a map's cells show
+        // each point's.
+        TaskReport::Population(p) => view.cells = share_cells(p),
     }
     if let Some(&(base, _)) = postures.first() {
         let person = place.person;
@@ -403,6 +415,21 @@ fn cells(m: &MapReport) -> CellsView {
             })
             .collect(),
     }
+}
+
+/// A population map's cells, each by its share.
+fn share_cells(p: &PopulationReport) -> Option<CellsView> {
+    let (grid, cells) = (p.grid.as_ref()?, p.cells.as_ref()?);
+    Some(CellsView {
+        of: "share",
+        step: grid.step_mm,
+        u: grid.u_mm,
+        v: grid.v_mm,
+        points: cells
+            .iter()
+            .map(|c| [c.point_mm[0], c.point_mm[1], c.point_mm[2], c.share])
+            .collect(),
+    })
 }
 
 /// Decimals the view keeps: 0.1 mm and 0.1 degree.
