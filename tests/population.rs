@@ -212,6 +212,10 @@ fn bad_populations_are_diagnostics_at_the_text() {
         ("population p = manual_wheelchair_users { draw seat uniform(600mm, 500mm) }\nreach kettle by p\n", "above the lower end"),
         ("reach kettle by manual_wheelchair_user\n", "manual_wheelchair_users"),
         ("population p = manual_wheelchair_users { mannequin upper_body(stature statur) }\nreach kettle by p\n", "stature"),
+        ("population p = manual_wheelchair_users { profile olderadult 30% }\nreach kettle by p\n", "did you mean `older_adult`"),
+        ("population p = manual_wheelchair_users { profile one of (older_adult 60%, ama_minimum 50%) }\nreach kettle by p\n", "at most 100 %"),
+        ("population p = manual_wheelchair_users { profile one of (older_adult 60%) profile one of (ama_minimum 10%) }\nreach kettle by p\n", "`profile one of`"),
+        ("population p = manual_wheelchair_users { profile one of (older_adult 60% ama_minimum 10%) }\nreach kettle by p\n", "expected"),
     ];
     for (tail, expected) in cases {
         let text = format!("{ROOM}{tail}");
@@ -301,5 +305,53 @@ room kitchen {
         svg.matches(r##"fill="#1a7a36""##).count(),
         everyone + 1,
         "the cells reached by everyone, and the legend"
+    );
+}
+
+#[test]
+fn weighted_categories_give_each_person_at_most_one_profile_in_exact_counts() {
+    let text = format!(
+        "{ROOM}population p = manual_wheelchair_users {{ size 10 seed 4 profile older_adult 0% \
+         profile one of (older_adult 30%, ama_minimum 20%) profile shoulder_to_90 50% }}\n\
+         population q = p {{ profile one of (ama_minimum 100%) }}\n\
+         reach kettle by p\nreach kettle by q\n"
+    );
+    let (scenario, _) = run(&text);
+    let drawn = |k: usize| &scenario.populations[k].drawn;
+    let count = |k: usize, name: &str| {
+        drawn(k)
+            .iter()
+            .filter(|d| d.profiles.iter().any(|p| p == name))
+            .count()
+    };
+    assert_eq!(count(0, "older_adult"), 3, "30 % of 10");
+    assert_eq!(count(0, "ama_minimum"), 2, "20 % of 10");
+    assert_eq!(count(0, "shoulder_to_90"), 5, "stacked on the categories");
+    for d in drawn(0) {
+        let categories = d
+            .profiles
+            .iter()
+            .filter(|p| *p == "older_adult" || *p == "ama_minimum")
+            .count();
+        assert!(categories <= 1, "one category each: {:?}", d.profiles);
+        // A category comes first, so that another profile narrows it.
+        if categories == 1 {
+            assert!(["older_adult", "ama_minimum"].contains(&d.profiles[0].as_str()));
+        }
+    }
+    // A population drawn from `p` replaces its categories.
+    assert_eq!(count(1, "ama_minimum"), 10);
+    assert_eq!(count(1, "older_adult"), 0);
+    // The ranges applied are the profile's.
+    let member = &scenario.persons[scenario.populations[1].members.start];
+    let elbow = member
+        .body
+        .joints
+        .iter()
+        .find(|j| j.name == "elbow_flexion")
+        .unwrap();
+    assert!(
+        (elbow.max.to_degrees() - 140.0).abs() < 1e-9,
+        "AMA's elbow flexion"
     );
 }

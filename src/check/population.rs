@@ -20,6 +20,7 @@ use crate::scene::{Drawn, Person, Physique, Population};
 use crate::span::{FileId, Name, Span};
 use crate::syntax::ast::{
     Distribution, DrawDecl, Expr, PersonMannequin, PersonVision, PluginUse, PopulationDecl,
+    ProfileChoice,
 };
 use crate::units::{Dim, Quantity};
 
@@ -32,6 +33,7 @@ struct Items<'a> {
     women: Option<(&'a Expr, FileId)>,
     draws: Vec<(&'a DrawDecl, FileId)>,
     profiles: Vec<(&'a Name, &'a Expr, FileId)>,
+    choice: Option<(&'a ProfileChoice, FileId)>,
     mannequin: Option<(&'a PersonMannequin, FileId)>,
     base: Option<(&'a PluginUse, FileId)>,
     vision: Option<(&'a [PersonVision], FileId)>,
@@ -179,6 +181,13 @@ impl<'a> Checker<'a> {
             items.profiles.retain(|(p, ..)| p.value != profile.value);
             items.profiles.push((profile, share, file));
         }
+        self.repeated(
+            decl.choices.iter().skip(1).map(|c| c.span),
+            "`profile one of`",
+        );
+        if let Some(choice) = decl.choices.first() {
+            items.choice = Some((choice, file));
+        }
         let person = &decl.person;
         self.repeated(
             person
@@ -219,11 +228,28 @@ impl<'a> Checker<'a> {
             .iter()
             .map(|&(d, file)| self.in_file(file, |c| c.draw_decl(d)))
             .collect::<Option<_>>()?;
+        // Every profile named, known, each mistake said where it is written.
+        let names = items.profiles.iter().map(|&(p, _, file)| (p, file));
+        let chosen = items
+            .choice
+            .into_iter()
+            .flat_map(|(c, file)| c.options.iter().map(move |(p, _)| (p, file)));
+        let known: Vec<bool> = names
+            .chain(chosen)
+            .map(|(p, file)| self.in_file(file, |c| c.known_profile(p)).is_some())
+            .collect();
+        if known.contains(&false) {
+            return None;
+        }
         let mut profile_shares = Vec::new();
         for &(profile, share, file) in &items.profiles {
             let share = self.in_file(file, |c| c.share(share, "a profile's share"))?;
             profile_shares.push((profile.value.clone(), share));
         }
+        let categories = match items.choice {
+            Some((choice, file)) => self.in_file(file, |c| c.categories(choice))?,
+            None => Vec::new(),
+        };
         let rows = survey();
         let stature = rows.columns.iter().position(|c| c == "stature");
         let by_sex = |female: bool| -> Vec<usize> {
@@ -257,6 +283,11 @@ impl<'a> Checker<'a> {
             });
             quantities.push(drawn_quantities);
         }
+        // The categories first: they give a person's ranges, which the
+        // other profiles may narrow.
+        for (i, profile) in categorised(&categories, size, seed) {
+            drawn[i].profiles.push(profile);
+        }
         for (k, (profile, share)) in profile_shares.iter().enumerate() {
             // Each profile its own stream: adding one leaves the others'
             // people as they were.
@@ -275,6 +306,40 @@ impl<'a> Checker<'a> {
             drawn,
             quantities,
         })
+    }
+
+    /// Whether a profile of this name is declared (else a diagnostic at
+    /// the name, with the nearest names).
+    fn known_profile(&mut self, name: &Name) -> Option<()> {
+        match self.profiles.resolve(name) {
+            Ok(_) => Some(()),
+            Err(e) => {
+                self.error(e);
+                None
+            }
+        }
+    }
+
+    /// The categories of `profile one of`: each profile's share, the
+    /// shares from 0 % to 100 % and at most 100 % in all.
+    fn categories(&mut self, choice: &ProfileChoice) -> Option<Vec<(String, f64)>> {
+        let mut categories = Vec::new();
+        for (profile, share) in &choice.options {
+            let share = self.share(share, "a profile's share")?;
+            categories.push((profile.value.clone(), share));
+        }
+        let total: f64 = categories.iter().map(|(_, s)| s).sum();
+        if total > 1.0 + 1e-9 {
+            let value = format!("{} %", super::eval::fmt_num(total * 100.0));
+            self.out_of_range(
+                choice.span,
+                "the shares of `profile one of`, added up,",
+                "at most 100 %",
+                &value,
+            );
+            return None;
+        }
+        Some(categories)
     }
 
     fn population_size(&mut self, items: &Items<'a>) -> Option<usize> {
@@ -564,4 +629,28 @@ fn shuffle(order: &mut [usize], rng: &mut ChaCha8Rng) {
         let j = Uniform::new_inclusive(0, i).map_or(0, |u| u.sample(rng));
         order.swap(i, j);
     }
+}
+
+/// Who of `size` people gets which of the `categories` (profiles and their
+/// shares), at most one each: the people in an order shuffled from the
+/// seed, the first share's worth to the first profile, the next to the
+/// next, each count rounded so that the counts add up to the rounded
+/// total.
+fn categorised(categories: &[(String, f64)], size: usize, seed: u64) -> Vec<(usize, String)> {
+    let mut order: Vec<usize> = (0..size).collect();
+    let mut rng = ChaCha8Rng::seed_from_u64(seed ^ 0x6a09_e667_f3bc_c908);
+    shuffle(&mut order, &mut rng);
+    let mut given = Vec::new();
+    let (mut cumulative, mut start) = (0.0, 0);
+    for (profile, share) in categories {
+        cumulative += share;
+        let end = ((cumulative * size as f64).round() as usize).min(size);
+        given.extend(
+            order[start..end.max(start)]
+                .iter()
+                .map(|&i| (i, profile.clone())),
+        );
+        start = end.max(start);
+    }
+    given
 }

@@ -243,6 +243,17 @@ pub struct PopulationDecl {
     pub women: Option<Expr>,
     pub draws: Vec<DrawDecl>,
     pub profiles: Vec<(Name, Expr)>,
+    /// `profile one of (NAME SHARE, ...)`: each person gets at most one.
+    pub choices: Vec<ProfileChoice>,
+    pub span: Span,
+}
+
+/// `profile one of (older_adult 30%, ama_minimum 10%)`: weighted
+/// categories of profiles, at most one to each person (the rest keep the
+/// mannequin's own).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ProfileChoice {
+    pub options: Vec<(Name, Expr)>,
     pub span: Span,
 }
 

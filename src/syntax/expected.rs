@@ -77,6 +77,8 @@ fn describe(rule: Rule) -> Option<&'static str> {
         population_draw => "`draw`",
         distribution | distribution_kind => "`normal(mean, sd)` or `uniform(low, high)`",
         population_profile => "`profile NAME SHARE`",
+        population_choice | one_of => "`profile one of (NAME SHARE, ...)`",
+        choice_share => "a profile and its share `NAME SHARE`",
         limit_override => "`limits`",
         neutral_override => "`neutral`",
         weight_override => "`weight`",

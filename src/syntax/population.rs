@@ -2,7 +2,7 @@
 
 use pest::iterators::Pair;
 
-use super::ast::{Distribution, DrawDecl, PersonDecl, PopulationDecl};
+use super::ast::{Distribution, DrawDecl, PersonDecl, PopulationDecl, ProfileChoice};
 use super::grammar::Rule;
 use super::parser::Builder;
 use crate::span::Spanned;
@@ -27,6 +27,7 @@ impl Builder {
             women: None,
             draws: Vec::new(),
             profiles: Vec::new(),
+            choices: Vec::new(),
             span,
         };
         for p in it {
@@ -47,6 +48,19 @@ impl Builder {
                     let name = self.name(parts.next().unwrap());
                     let share = self.expr(parts.next().unwrap());
                     population.profiles.push((name, share));
+                }
+                Rule::population_choice => {
+                    let span = self.span(&p);
+                    let options = p
+                        .into_inner()
+                        .filter(|part| part.as_rule() == Rule::choice_share)
+                        .map(|part| {
+                            let mut parts = part.into_inner();
+                            let name = self.name(parts.next().unwrap());
+                            (name, self.expr(parts.next().unwrap()))
+                        })
+                        .collect();
+                    population.choices.push(ProfileChoice { options, span });
                 }
                 _ => self.person_item(&mut population.person, p),
             }
