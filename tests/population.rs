@@ -189,7 +189,14 @@ proptest! {
 
 #[test]
 fn the_report_is_the_same_on_one_thread_and_on_two() {
-    let text = format!("{ROOM}population few = manual_wheelchair_users {{ size 12 seed 3 }}\nreach kettle, shelf by few\n");
+    let room = ROOM.replace(
+        "target shelf",
+        "surface front at (600, 1000, 200) size (0, 400, 600)\n  target shelf",
+    );
+    let text = format!(
+        "{room}population few = manual_wheelchair_users {{ size 12 seed 3 }}\n\
+         reach kettle, shelf by few\ngaze kettle by few\nmap front by few {{ step 200mm }}\n"
+    );
     let (scenario, _) = run(&text);
     let json = |threads: usize| {
         let pool = rayon::ThreadPoolBuilder::new()

@@ -109,12 +109,10 @@ struct Prepared<'a> {
 
 impl PreparedBase for Prepared<'_> {
     fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement {
-        search(query, self.chain, [Candidate::at(self.pose)], solver).unwrap_or_else(|| {
-            Placement {
-                pose: self.pose,
-                solution: IkSolution::unsolved(self.chain),
-                retried: false,
-            }
+        search(query, self.chain, [Candidate::at(self.pose)], solver).unwrap_or_else(|| Placement {
+            pose: self.pose,
+            solution: IkSolution::unsolved(self.chain),
+            retried: false,
         })
     }
 

@@ -61,8 +61,7 @@ pub fn search(
     let mut first_beyond = None;
     let mut any_within = false;
     for candidate in candidates {
-        let within =
-            candidate.pose.to_base(&query.target_room_mm).coords.norm() <= bound_mm;
+        let within = candidate.pose.to_base(&query.target_room_mm).coords.norm() <= bound_mm;
         if !within {
             if first_beyond.is_none() && !any_within {
                 first_beyond = Some(candidate);
