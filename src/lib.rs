@@ -109,6 +109,7 @@ pub fn run_with_progress(scenario: &Scenario, progress: &dyn progress::Progress)
     Report {
         schema: report::SCHEMA_VERSION,
         file: scenario.file.clone(),
+        notes: scenario.notes(),
         tasks,
     }
 }

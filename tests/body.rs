@@ -185,6 +185,7 @@ fn an_arm_through_the_chest_is_refused() {
         meshes: vec![],
         targets: vec![],
         surfaces: vec![],
+        doors: Vec::new(),
     };
     let obstacles = Obstacles::new(&room, 0.0);
     let own = OwnBody::default();

@@ -1,7 +1,8 @@
 //! Watch mode's cache: a cached answer is the answer a fresh run gives,
-//! byte for byte, after random obstacle moves and target edits in random
-//! rooms (fixed, trolley and wheelchair bases; reaches, a gaze and a map);
-//! and it does reuse what an edit cannot touch.
+//! byte for byte, after random obstacle moves, target edits and door
+//! moves in random rooms, with and without a door (fixed, trolley and
+//! wheelchair bases; reaches, a gaze and a map); and it does reuse what an
+//! edit cannot touch.
 
 use proptest::prelude::*;
 use reach::cache::TaskCache;
@@ -21,6 +22,8 @@ struct Block {
 struct Room {
     blocks: Vec<Block>,
     targets: Vec<[i32; 3]>,
+    /// A door's middle along the wall y = 0, if the room has one.
+    door: Option<i32>,
 }
 
 fn block() -> impl Strategy<Value = Block> {
@@ -42,22 +45,29 @@ fn room() -> impl Strategy<Value = Room> {
     (
         prop::collection::vec(block(), 1..6),
         prop::collection::vec(target(), 1..4),
+        prop::option::of(500..3100i32),
     )
-        .prop_map(|(blocks, targets)| Room { blocks, targets })
+        .prop_map(|(blocks, targets, door)| Room {
+            blocks,
+            targets,
+            door,
+        })
 }
 
 /// One edit: move a box (by index, modulo the count) or a target.
 #[derive(Clone, Debug)]
 enum Edit {
-    MoveBlock(usize, [i32; 3]),
-    MoveTarget(usize, [i32; 3]),
+    Block(usize, [i32; 3]),
+    Target(usize, [i32; 3]),
+    Door(i32),
 }
 
 fn edit() -> impl Strategy<Value = Edit> {
     let delta = (-600..600i32, -600..600i32, -400..400i32).prop_map(|(x, y, z)| [x, y, z]);
     prop_oneof![
-        (0..6usize, delta.clone()).prop_map(|(i, d)| Edit::MoveBlock(i, d)),
-        (0..4usize, delta).prop_map(|(i, d)| Edit::MoveTarget(i, d)),
+        (0..6usize, delta.clone()).prop_map(|(i, d)| Edit::Block(i, d)),
+        (0..4usize, delta).prop_map(|(i, d)| Edit::Target(i, d)),
+        (-800..800i32).prop_map(Edit::Door),
     ]
 }
 
@@ -69,13 +79,18 @@ impl Room {
             }
         };
         match edit {
-            Edit::MoveBlock(i, d) => {
+            Edit::Block(i, d) => {
                 let n = self.blocks.len();
                 shift(&mut self.blocks[i % n].at, d);
             }
-            Edit::MoveTarget(i, d) => {
+            Edit::Target(i, d) => {
                 let n = self.targets.len();
                 shift(&mut self.targets[i % n], d);
+            }
+            Edit::Door(d) => {
+                if let Some(x) = &mut self.door {
+                    *x = (*x + d).clamp(500, 3100);
+                }
             }
         }
     }
@@ -94,6 +109,9 @@ impl Room {
         }
         for (i, p) in self.targets.iter().enumerate() {
             t += &format!("  target t{i} at ({}, {}, {})\n", p[0], p[1], p[2]);
+        }
+        if let Some(x) = self.door {
+            t += &format!("  door d at ({x}, 0) width 900mm\n");
         }
         t += "}\n";
         t += "person fix { mannequin right_arm base fixed { at (1800, 1400, 930) heading 90deg } }\n";

@@ -426,6 +426,7 @@ fn room(boxes: &[[f64; 6]], mesh: Option<MeshObstacle>) -> Room {
         meshes: mesh.into_iter().collect(),
         targets: Vec::new(),
         surfaces: Vec::new(),
+        doors: Vec::new(),
     }
 }
 

@@ -83,6 +83,7 @@ fn every_plugin_builds_from_its_declared_defaults() {
         let empty = Report {
             schema: 1,
             file: "x".into(),
+            notes: Vec::new(),
             tasks: Vec::new(),
         };
         p.render(&empty, &reach::plugin::FormatScene::empty());

@@ -237,6 +237,7 @@ proptest! {
             meshes: Vec::new(),
             targets: vec![],
             surfaces: vec![],
+            doors: Vec::new(),
         };
         let obstacles = Obstacles::new(&room, 0.0);
         let own = OwnBody::default();

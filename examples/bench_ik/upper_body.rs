@@ -51,6 +51,7 @@ fn room(board: bool) -> Room {
         meshes: Vec::new(),
         targets: vec![],
         surfaces: vec![],
+        doors: Vec::new(),
     }
 }
 

@@ -25,11 +25,11 @@ use rand_chacha::ChaCha8Rng;
 use super::capability::Capability;
 use super::placing::{Approach, Placing};
 use super::search::{search, Candidate};
-use crate::floor::{FloorObstacles, Footprint, Misfit, Region};
+use crate::floor::{Doorway, FloorObstacles, Footprint, Misfit, Region, Routes};
 use crate::geometry::Solid;
 use crate::kinematics::Chain;
 use crate::plugin::{
-    Base, BasePose, Fit, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Solver, Tries,
+    Base, BasePose, Fit, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Shut, Solver, Tries,
 };
 use crate::scene::{column_solid, OwnBody, Physique, Room};
 use crate::solvers::random_posture;
@@ -38,6 +38,18 @@ use crate::solvers::random_posture;
 /// heading when turning changes nothing).
 type Regions = Vec<(f64, Arc<Region>)>;
 
+/// Where the base may be placed in one room, worked out once.
+struct Floor {
+    /// The admissible region at each heading searched; where the room has
+    /// doors, only the parts the base can get to from one.
+    regions: Regions,
+    /// How the base comes in by each door (none: the room has no door,
+    /// and the base may be placed wherever it fits).
+    doors: Option<Vec<Doorway>>,
+    /// Whether it fits somewhere, doors aside.
+    fits: bool,
+}
+
 /// A base that moves on the floor: its footprint, the person's own body
 /// and the base's parts, and how it may be placed.
 pub struct Mobile {
@@ -45,8 +57,8 @@ pub struct Mobile {
     pub hip_height_mm: f64,
     pub placing: Placing,
     pub own: OwnBody,
-    /// The regions of each room, worked out once.
-    regions: ByRoom<Regions>,
+    /// Where it may be placed in each room, worked out once.
+    floors: ByRoom<Floor>,
     /// Where it fits nowhere, by how much.
     misfits: ByRoom<Misfit>,
 }
@@ -81,7 +93,7 @@ impl Mobile {
             hip_height_mm,
             placing,
             own,
-            regions: ByRoom::default(),
+            floors: ByRoom::default(),
             misfits: ByRoom::default(),
         }
     }
@@ -108,38 +120,77 @@ impl Mobile {
         )
     }
 
-    /// The admissible regions, one per heading searched, worked out once
-    /// per room.
-    fn regions(&self, room: &Room) -> Arc<OnceLock<Regions>> {
-        let cell = self.regions.cell(room);
-        cell.get_or_init(|| self.compute_regions(room));
+    /// Where the base may be placed, worked out once per room.
+    fn floor(&self, room: &Room) -> Arc<OnceLock<Floor>> {
+        let cell = self.floors.cell(room);
+        cell.get_or_init(|| self.compute_floor(room));
         cell
     }
 
-    fn compute_regions(&self, room: &Room) -> Regions {
+    /// The admissible regions, one per heading searched; where the room
+    /// has doors, cut to what the base can get to from one
+    /// (`floor/routes.rs`).
+    fn compute_floor(&self, room: &Room) -> Floor {
         let zone = self.placing.zone;
-        let headings = self.placing.headings.iter().copied();
+        let headings = &self.placing.headings;
         let obstacles = Arc::new(FloorObstacles::new(room, &self.footprint));
         let region = |h: f64| {
             let obstacles = Arc::clone(&obstacles);
             Arc::new(Region::new(room, &self.footprint, h, zone, obstacles))
         };
-        if !self.footprint.turns() {
+        let regions: Regions = if self.footprint.turns() {
+            headings.iter().map(|&h| (h, region(h))).collect()
+        } else {
             let one = region(0.0);
-            return headings.map(|h| (h, Arc::clone(&one))).collect();
+            headings.iter().map(|&h| (h, Arc::clone(&one))).collect()
+        };
+        let fits = regions.iter().any(|(_, r)| !r.is_empty());
+        let routes = fits
+            .then(|| Routes::new(room, &self.footprint, headings))
+            .flatten();
+        let Some(routes) = routes else {
+            return Floor {
+                regions,
+                doors: None,
+                fits,
+            };
+        };
+        let reached = |h: f64| {
+            let obstacles = Arc::clone(&obstacles);
+            let pieces = routes.reached(h);
+            Arc::new(Region::of_pieces(
+                room,
+                &self.footprint,
+                h,
+                zone,
+                obstacles,
+                &pieces,
+            ))
+        };
+        Floor {
+            regions: headings.iter().map(|&h| (h, reached(h))).collect(),
+            doors: Some(routes.doors.clone()),
+            fits,
         }
-        headings.map(|h| (h, region(h))).collect()
     }
 
-    /// Whether the base fits anywhere in the room, and if not, by how
-    /// much it misses (worked out once per room).
+    /// Whether the base fits anywhere in the room (and can get there from
+    /// a door, where the room has doors), and if not, by how much it
+    /// misses or which doors shut it out (worked out once per room).
     pub fn fit(&self, room: &Room) -> Fit {
-        let regions = self.regions(room);
-        let fits = regions
-            .get()
-            .is_some_and(|r| r.iter().any(|(_, r)| !r.is_empty()));
-        if fits {
+        let cell = self.floor(room);
+        let Some(floor) = cell.get() else {
             return Fit::Fits;
+        };
+        if floor.regions.iter().any(|(_, r)| !r.is_empty()) {
+            return Fit::Fits;
+        }
+        if let (true, Some(doors)) = (floor.fits, &floor.doors) {
+            return Fit::Shut(Shut {
+                doors: doors.clone(),
+                in_zone: self.placing.zone.is_some(),
+                footprint_mm: self.footprint.size_mm(),
+            });
         }
         let misfit = *self.misfits.cell(room).get_or_init(|| {
             Misfit::of(
@@ -159,7 +210,7 @@ impl Mobile {
             mobile: self,
             room,
             chain,
-            regions: self.regions(room),
+            floor: self.floor(room),
             capability: Capability::of(chain, &self.own),
             hint: workspace_centre(chain),
         }
@@ -200,7 +251,7 @@ pub struct PreparedMobile<'a> {
     mobile: &'a Mobile,
     room: &'a Room,
     chain: &'a Chain,
-    regions: Arc<OnceLock<Regions>>,
+    floor: Arc<OnceLock<Floor>>,
     capability: Arc<Capability>,
     hint: Vector2<f64>,
 }
@@ -215,10 +266,10 @@ const FEW: usize = 24;
 
 impl PreparedMobile<'_> {
     fn regions(&self) -> impl Iterator<Item = &(f64, Arc<Region>)> {
-        self.regions
+        self.floor
             .get()
             .into_iter()
-            .flatten()
+            .flat_map(|f| &f.regions)
             .filter(|(_, r)| !r.is_empty())
     }
 

@@ -18,7 +18,7 @@ use crate::kinematics::{Body, Chain, Joint};
 use crate::plugin::Dependence;
 use crate::progress::NoProgress;
 use crate::scenario::{Scenario, SubjectRef, TaskSpec};
-use crate::scene::{BasePose, Person, Room};
+use crate::scene::{BasePose, Door, Person, Room};
 
 /// The placements tried for each point of a task, by what they depend on.
 pub(super) type Placements = HashMap<u64, Arc<Vec<Tried>>>;
@@ -89,7 +89,13 @@ fn placements_key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence)
             .for_each(|p| hash_bits(p.iter(), h));
         hash_bits(room.size_mm.iter(), h);
         (0..room.boxes.len() + room.meshes.len()).for_each(|i| hash_obstacle(room, i, h));
+        room.doors.iter().for_each(|d| hash_door(d, h));
     })
+}
+
+fn hash_door(d: &Door, h: &mut DefaultHasher) {
+    (&d.name, d.wall as u8).hash(h);
+    hash_bits(&[d.along_mm, d.width_mm], h);
 }
 
 fn key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence, tried: &[Tried]) -> u64 {
@@ -106,6 +112,12 @@ fn key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence, tried: &[T
                 hash_bits(centre.iter().chain([radius_mm]), h);
             }
         }
+        // Where the room has doors, whether a base that moves can get to a
+        // place depends on the doors and on every obstacle of the room.
+        let routed = !room.doors.is_empty() && tried.iter().any(|t| t.hips.around.is_some());
+        if routed {
+            room.doors.iter().for_each(|d| hash_door(d, h));
+        }
         // A population's people differ from its first in their bodies,
         // bases and placements: each is in the key, and every obstacle.
         if let Some(population) = task.population {
@@ -114,6 +126,8 @@ fn key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence, tried: &[T
                 hash_person(person, h);
                 person.base.hash(h);
             }
+            (0..room.boxes.len() + room.meshes.len()).for_each(|i| hash_obstacle(room, i, h));
+        } else if routed {
             (0..room.boxes.len() + room.meshes.len()).for_each(|i| hash_obstacle(room, i, h));
         } else if let Some(reach_mm) = dependence.reach_mm {
             for i in obstacles_within(room, tried, reach_mm, dependence.sight_lines) {

@@ -65,6 +65,7 @@ impl TaskCache {
         let report = Report {
             schema: SCHEMA_VERSION,
             file: scenario.file.clone(),
+            notes: scenario.notes(),
             tasks,
         };
         (

@@ -7,9 +7,9 @@ use nalgebra::{Point3, Vector3};
 use super::eval::fmt_num;
 use super::Checker;
 use crate::error::{Error, ErrorKind};
-use crate::scene::{BoxObstacle, Room, Surface, Target};
+use crate::scene::{BoxObstacle, Door, Room, Surface, Target, Wall};
 use crate::span::Span;
-use crate::syntax::ast::{BoxDecl, RoomDecl, RoomItem, SurfaceDecl};
+use crate::syntax::ast::{BoxDecl, DoorDecl, RoomDecl, RoomItem, SurfaceDecl};
 
 impl Checker<'_> {
     pub(super) fn rooms(&mut self) -> Vec<Room> {
@@ -43,10 +43,13 @@ impl Checker<'_> {
                 RoomItem::Box(b) => &b.name,
                 RoomItem::Mesh(m) => &m.name,
                 RoomItem::Surface(s) => &s.name,
+                RoomItem::Door(d) => &d.name,
                 _ => continue,
             };
             match seen.get(name.value.as_str()) {
-                Some(&first) => self.error(Error::duplicate("box, mesh or surface", name, first)),
+                Some(&first) => {
+                    self.error(Error::duplicate("box, mesh, surface or door", name, first))
+                }
                 None => {
                     seen.insert(&name.value, name.span);
                 }
@@ -92,9 +95,11 @@ impl Checker<'_> {
         let mut surfaces = Vec::new();
         let mut target_spans = Vec::new();
         let mut meshes = Vec::new();
+        let mut doors = Vec::new();
         for item in &decl.items {
             match item {
                 RoomItem::Size(_) => {}
+                RoomItem::Door(d) => doors.extend(self.door(d, size)),
                 RoomItem::Box(b) => boxes.extend(self.box_obstacle(b)),
                 RoomItem::Mesh(m) => meshes.extend(self.mesh(m)),
                 RoomItem::Surface(d) => surfaces.extend(self.surface(d, size)),
@@ -126,7 +131,61 @@ impl Checker<'_> {
             meshes,
             targets,
             surfaces,
+            doors,
         })
+    }
+
+    /// A `door`: its middle on one of the room's walls (within half a
+    /// millimetre), its opening within the wall, its width positive.
+    fn door(&mut self, d: &DoorDecl, room_size: Option<Vector3<f64>>) -> Option<Door> {
+        let [x, y] = &d.at.parts;
+        let (x, y, width) = (self.length(x), self.length(y), self.length(&d.width));
+        let (x, y, width) = (x?, y?, width?);
+        if width <= 0.0 {
+            self.out_of_range(
+                d.width.span,
+                "a door's width",
+                "more than 0",
+                &fmt_num(width),
+            );
+            return None;
+        }
+        let size = room_size?;
+        const ON_WALL_MM: f64 = 0.5;
+        let walls = [
+            (Wall::XMin, x.abs(), y, size.y),
+            (Wall::XMax, (x - size.x).abs(), y, size.y),
+            (Wall::YMin, y.abs(), x, size.x),
+            (Wall::YMax, (y - size.y).abs(), x, size.x),
+        ];
+        let Some(&(wall, _, along_mm, length_mm)) = walls
+            .iter()
+            .filter(|(_, off, along, length)| *off <= ON_WALL_MM && (0.0..=*length).contains(along))
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+        else {
+            let value = format!("({}, {}) mm", fmt_num(x), fmt_num(y));
+            let bound = format!(
+                "on a wall: x = 0 or {}, or y = 0 or {}",
+                fmt_num(size.x),
+                fmt_num(size.y)
+            );
+            self.out_of_range(d.at.span, "a door's middle", &bound, &value);
+            return None;
+        };
+        let door = Door {
+            name: d.name.value.clone(),
+            wall,
+            along_mm,
+            width_mm: width,
+        };
+        let [lo, hi] = door.span_mm();
+        if lo < 0.0 || hi > length_mm {
+            let value = format!("{} to {} mm along it", fmt_num(lo), fmt_num(hi));
+            let bound = format!("within the wall, 0 to {} mm", fmt_num(length_mm));
+            self.out_of_range(d.width.span, "a door's opening", &bound, &value);
+            return None;
+        }
+        Some(door)
     }
 
     /// A `surface` item: a rectangle parallel to the room's axes with exactly

@@ -328,6 +328,7 @@ mod tests {
             meshes: Vec::new(),
             targets: vec![],
             surfaces: vec![],
+            doors: Vec::new(),
         }
     }
 

@@ -11,6 +11,9 @@ use nalgebra::{Rotation2, Vector2};
 
 use crate::geometry::{Shape, Solid};
 
+/// The largest step between the turned outlines of a swept footprint.
+pub const SWEEP_STEP_RAD: f64 = 2.5 * std::f64::consts::PI / 180.0;
+
 /// Sides of the polygon that stands for a circle. It is circumscribed, so
 /// a clearance check with it never lets the circle overlap an obstacle.
 const CIRCLE_SIDES: usize = 24;
@@ -103,6 +106,33 @@ impl Footprint {
         Polygon::new(LineString::from(ring), Vec::new())
     }
 
+    /// What the footprint covers while it turns in place about the hip
+    /// point from its heading to `angle_rad` more (counter-clockwise):
+    /// each part the convex hull of its outline at steps of at most
+    /// [`SWEEP_STEP_RAD`], grown about the hip point by 1 / cos(step / 2)
+    /// so that the arcs its corners trace between steps lie inside. A base
+    /// that fits this at a point can turn there through that angle.
+    pub fn swept(&self, angle_rad: f64) -> Footprint {
+        let steps = (angle_rad.abs() / SWEEP_STEP_RAD).ceil().max(1.0) as usize;
+        let step = angle_rad / steps as f64;
+        let grow = 1.0 / (step / 2.0).cos();
+        let parts = self
+            .parts
+            .iter()
+            .map(|part| {
+                let turned = (0..=steps).flat_map(|k| {
+                    let turn = Rotation2::new(step * k as f64);
+                    part.outline_mm.iter().map(move |c| turn * c * grow)
+                });
+                FloorPart {
+                    outline_mm: convex_hull(turned),
+                    z_mm: part.z_mm,
+                }
+            })
+            .collect();
+        Footprint { parts }
+    }
+
     /// Whether turning the base changes where it fits (parts other than
     /// circles about the hip point do).
     pub fn turns(&self) -> bool {
@@ -190,6 +220,29 @@ mod tests {
         let min_y = corners.iter().map(|c| c.y).fold(f64::MAX, f64::min);
         assert!((max_y - 600.0).abs() < 1e-9 && (min_y + 400.0).abs() < 1e-9);
         assert!(f.turns());
+    }
+
+    #[test]
+    fn a_swept_footprint_holds_the_footprint_at_every_angle_of_the_turn() {
+        use geo::{Contains, Distance, Point};
+        let f = Footprint::rectangle(700.0, 350.0, 660.0, 1400.0);
+        let angle = 0.4;
+        let swept = f.swept(angle);
+        let hull = Polygon::new(LineString::from(swept.corners(0, 0.0)), Vec::new());
+        // Every corner of the rectangle, and the points between, at many
+        // angles of the turn (not only the steps).
+        for k in 0..=200 {
+            let a = angle * k as f64 / 200.0;
+            for c in f.corners(0, a) {
+                let inside = hull.contains(&Point::new(c.x, c.y))
+                    || geo::Euclidean.distance(&hull, &Point::new(c.x, c.y)) < 1e-9;
+                assert!(inside, "corner {c:?} at {a} rad");
+            }
+        }
+        // And it is not much larger than it must be.
+        use geo::Area;
+        let one = Polygon::new(LineString::from(f.corners(0, 0.0)), Vec::new());
+        assert!(hull.unsigned_area() < 1.5 * one.unsigned_area());
     }
 
     #[test]

@@ -115,6 +115,7 @@ mod tests {
             meshes: Vec::new(),
             targets: Vec::new(),
             surfaces: Vec::new(),
+            doors: Vec::new(),
         }
     }
 

@@ -11,6 +11,7 @@ mod mesh_cells;
 mod misfit;
 mod obstacles;
 mod region;
+mod routes;
 mod tiles;
 
 pub use footprint::{FloorPart, Footprint};
@@ -19,4 +20,5 @@ pub use mesh_cells::{CELL_MM, FLOOR_TOLERANCE_MM};
 pub use misfit::Misfit;
 pub use obstacles::FloorObstacles;
 pub use region::{admissible, Zone};
+pub use routes::{Doorway, Entry, Routes};
 pub use tiles::Region;

@@ -114,7 +114,7 @@ pub fn bounds(points: &[Coord<f64>]) -> (Coord<f64>, Coord<f64>) {
 }
 
 /// A box obstacle's outline on the floor, turned about its corner.
-fn box_outline(b: &BoxObstacle) -> Vec<Coord<f64>> {
+pub(super) fn box_outline(b: &BoxObstacle) -> Vec<Coord<f64>> {
     let (w, d) = (b.size_mm.x, b.size_mm.y);
     [(0.0, 0.0), (w, 0.0), (w, d), (0.0, d)]
         .into_iter()

@@ -205,6 +205,7 @@ mod tests {
             meshes: Vec::new(),
             targets: Vec::new(),
             surfaces: Vec::new(),
+            doors: Vec::new(),
         }
     }
 

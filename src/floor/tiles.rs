@@ -60,6 +60,37 @@ impl Region {
         }
     }
 
+    /// The region made of `pieces` (the parts of the admissible region at
+    /// this heading a base can get to: `Routes::reached`), cut to the
+    /// shrunk room and the zone: one tile, worked out already.
+    pub fn of_pieces(
+        room: &Room,
+        footprint: &Footprint,
+        heading_rad: f64,
+        zone: Option<Zone>,
+        obstacles: Arc<FloorObstacles>,
+        pieces: &MultiPolygon<f64>,
+    ) -> Self {
+        use geo::BooleanOps;
+        let turned = Turned::new(footprint, heading_rad);
+        let free = shrunk_room(room, &turned, zone);
+        let within = match free {
+            Some(r) => pieces.intersection(&MultiPolygon::new(vec![r.to_polygon()])),
+            None => MultiPolygon::new(Vec::new()),
+        };
+        let (w, h) = free.map_or((0.0, 0.0), |r| (r.width(), r.height()));
+        Region {
+            turned,
+            obstacles,
+            free,
+            tile_mm: w.max(h).max(1.0),
+            nx: 1,
+            ny: 1,
+            tiles: vec![OnceLock::from(Inside::new(within))],
+            empty: OnceLock::new(),
+        }
+    }
+
     /// Tile `(i, j)`'s piece of the region.
     fn tile(&self, i: usize, j: usize) -> &Inside {
         self.tiles[j * self.nx + i].get_or_init(|| {
@@ -227,6 +258,7 @@ mod tests {
             meshes: Vec::new(),
             targets: Vec::new(),
             surfaces: Vec::new(),
+            doors: Vec::new(),
         }
     }
 

@@ -35,6 +35,12 @@ impl FormatPlugin for Text {
         for task in &report.tasks {
             task.details(&mut out);
         }
+        if !report.notes.is_empty() {
+            out.push('\n');
+            for note in &report.notes {
+                let _ = writeln!(out, "note: {note}");
+            }
+        }
         // Names are escaped where they come from (files, URDFs); this
         // keeps the terminal safe whatever a report carries.
         escaped_keeping(&out, |c| c == '\n').into_owned()

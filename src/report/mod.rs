@@ -39,6 +39,10 @@ pub const SCHEMA_VERSION: u32 = 1;
 pub struct Report {
     pub schema: u32,
     pub file: String,
+    /// What a reader should know about every answer: a room without doors
+    /// (where a base is placed, the way there is not checked).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub notes: Vec<String>,
     pub tasks: Vec<TaskReport>,
 }
 

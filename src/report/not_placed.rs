@@ -1,15 +1,18 @@
-//! The answer for a person whose base fits nowhere in the task's room: no
-//! posture was looked for, and the report says so and by how much the base
-//! misses, so that "Bob's chair does not fit in this galley" is a finding
-//! of the run, beside the other people's answers, not an error that stops
-//! it.
+//! The answer for a person whose base fits nowhere in the task's room, or
+//! cannot get anywhere it fits from the room's doors: no posture was
+//! looked for, and the report says so and by how much the base misses (or
+//! which doors shut it out), so that "Bob's chair does not fit in this
+//! galley" is a finding of the run, beside the other people's answers, not
+//! an error that stops it.
 
 use std::fmt::Write as _;
 
 use serde::Serialize;
 
+use super::reach::quoted;
 use super::{fixed, mm, Answer, Figure, ReportKind};
-use crate::floor::Misfit;
+use crate::floor::{Entry, Misfit};
+use crate::plugin::Shut;
 
 /// A task not tried because the person's base fits nowhere.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -32,8 +35,24 @@ pub struct NotPlacedReport {
     /// headings allowed, to within 0.005; 0 when not even 5 % would.
     pub fits_at: f64,
     /// Whether the base was kept to a zone (`zone_from`, `zone_to`): it
-    /// fits nowhere within it.
+    /// fits nowhere within it (or cannot get there).
     pub in_zone: bool,
+    /// Where the room has doors and the base fits somewhere but cannot get
+    /// there: each door and how the base fares at it.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub doors: Vec<DoorReport>,
+}
+
+/// One door of a room that shuts a base out.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct DoorReport {
+    pub name: String,
+    pub width_mm: f64,
+    /// How wide the base is across the opening.
+    pub needs_mm: f64,
+    /// `too narrow`, `blocked` (something stands just inside) or
+    /// `through` (it comes in, but cannot get to where it would fit).
+    pub comes_in: &'static str,
 }
 
 impl NotPlacedReport {
@@ -55,7 +74,51 @@ impl NotPlacedReport {
             footprint_mm: misfit.size_mm.map(mm),
             fits_at: fixed(misfit.fits_at, 3),
             in_zone: misfit.in_zone,
+            doors: Vec::new(),
         }
+    }
+
+    /// The report of a base that fits somewhere in the room but cannot
+    /// get there from any of its doors.
+    pub fn shut(
+        task: &'static str,
+        name: &str,
+        person: &str,
+        base: &str,
+        room: &str,
+        shut: &Shut,
+    ) -> Self {
+        NotPlacedReport {
+            task,
+            name: name.to_string(),
+            person: person.to_string(),
+            base: base.to_string(),
+            room: room.to_string(),
+            ok: false,
+            footprint_mm: shut.footprint_mm.map(mm),
+            fits_at: 1.0,
+            in_zone: shut.in_zone,
+            doors: shut
+                .doors
+                .iter()
+                .map(|d| DoorReport {
+                    name: d.name.clone(),
+                    width_mm: mm(d.width_mm),
+                    needs_mm: mm(d.needs_mm),
+                    comes_in: match d.comes_in {
+                        Entry::TooNarrow => "too narrow",
+                        Entry::Blocked => "blocked",
+                        Entry::Through => "through",
+                    },
+                })
+                .collect(),
+        }
+    }
+
+    /// Whether it comes in by a door (and only cannot get to where it
+    /// would fit).
+    fn comes_in(&self) -> bool {
+        self.doors.iter().any(|d| d.comes_in == "through")
     }
 
     /// The widest the base could be and fit (its width times `fits_at`).
@@ -66,17 +129,26 @@ impl NotPlacedReport {
 
 impl ReportKind for NotPlacedReport {
     fn answer(&self) -> Answer {
+        let verdict = match (self.doors.is_empty(), self.comes_in()) {
+            (true, _) => "does NOT fit in the room",
+            (false, false) => "cannot get in: no door lets the base in",
+            (false, true) => "cannot get there from a door",
+        };
         Answer {
             task: self.task,
             subject: self.name.clone(),
             person: self.person.clone(),
             ok: false,
-            verdict: "does NOT fit in the room".into(),
+            verdict: verdict.into(),
             figures: vec![Figure::new("fits at", self.fits_at * 100.0, "%", 0.5)],
         }
     }
 
     fn details(&self, out: &mut String) {
+        if !self.doors.is_empty() {
+            self.door_details(out);
+            return;
+        }
         let [length, width] = self.footprint_mm;
         let _ = write!(
             out,
@@ -100,5 +172,37 @@ impl ReportKind for NotPlacedReport {
                 "would not fit at 5 % of its size; no posture was looked for"
             )
         };
+    }
+}
+
+impl NotPlacedReport {
+    /// Which doors shut the base out, and how.
+    fn door_details(&self, out: &mut String) {
+        let where_to = if self.in_zone {
+            "its zone"
+        } else {
+            "anywhere it fits"
+        };
+        let _ = writeln!(
+            out,
+            "{} by {}: the {} base cannot get to {where_to} in room `{}` from a door; no posture was looked for",
+            self.name, self.person, self.base, self.room
+        );
+        for d in &self.doors {
+            let how = match d.comes_in {
+                "too narrow" => format!(
+                    "too narrow: the base needs {:.0} mm, the door is {:.0} mm",
+                    d.needs_mm, d.width_mm
+                ),
+                "blocked" => "something stands just inside it".to_string(),
+                _ => format!(
+                    "the base comes in ({:.0} of {:.0} mm), but every place it fits{} is cut off from it",
+                    d.needs_mm,
+                    d.width_mm,
+                    if self.in_zone { " in its zone" } else { "" }
+                ),
+            };
+            let _ = writeln!(out, "  door {}: {how}", quoted(&d.name));
+        }
     }
 }

@@ -34,6 +34,9 @@ pub enum Why {
     /// No place where the base fits lets it approach the target as its
     /// options ask (`approach`, `heading`): nothing was tried.
     NoApproach,
+    /// The base fits where the hand would reach, but that floor is cut
+    /// off from every door of the room: closed in by the obstacles named.
+    CannotGetThere { names: Vec<String> },
     /// Out of the arm's reach with nothing in the way: with the room's
     /// obstacles and the person's own body gone, the hand comes this close
     /// at best.
@@ -62,6 +65,10 @@ impl Why {
             Why::JointLimits { .. } => "at the joints' limits".into(),
             Why::OutOfReach { .. } => "out of reach".into(),
             Why::NoApproach => "no place to approach it from".into(),
+            Why::CannotGetThere { names } => {
+                let names: Vec<String> = names.iter().map(|n| quoted(n)).collect();
+                format!("cannot get there: closed in by {}", names.join(", "))
+            }
             Why::KeptAway { names, together } => {
                 let names: Vec<String> = names.iter().map(|n| quoted(n)).collect();
                 let join = if *together { " and " } else { " or " };
@@ -102,6 +109,10 @@ impl Why {
             ),
             Why::KeptAway { together: true, .. } => format!(
                 "{}: only without all of them on the floor (and in the arm's way) does the base come close enough for the hand to reach",
+                self.short()
+            ),
+            Why::CannotGetThere { .. } => format!(
+                "{}: the base fits where the hand would reach it, but that floor is cut off from every door of the room (without the doors' routes, the hand reaches)",
                 self.short()
             ),
             Why::NoApproach => "no place to approach it from: wherever the base fits, its `approach` or `heading` options do not let it face the target so; no posture was looked for".into(),

@@ -103,6 +103,29 @@ impl Scenario {
         }
     }
 
+    /// What a reader of the report should know about every answer: each
+    /// room without doors where a task places a base that moves.
+    pub fn notes(&self) -> Vec<String> {
+        let mut rooms: Vec<usize> = self
+            .tasks
+            .iter()
+            .filter(|t| self.bases[t.person].footprint().is_some())
+            .map(|t| t.room)
+            .filter(|&r| self.rooms[r].doors.is_empty())
+            .collect();
+        rooms.sort_unstable();
+        rooms.dedup();
+        rooms
+            .into_iter()
+            .map(|r| {
+                format!(
+                    "room `{}` has no `door`: a base is placed wherever it fits, and the way there from an entrance is not checked",
+                    self.rooms[r].name
+                )
+            })
+            .collect()
+    }
+
     pub fn person(&self, name: &str) -> Option<&Person> {
         self.persons.iter().find(|p| p.name == name)
     }

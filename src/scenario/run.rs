@@ -130,9 +130,6 @@ impl Scenario {
             verdict_only,
             ..self.input(task, progress)
         };
-        let Fit::Nowhere(misfit) = input.base.fit(input.room) else {
-            return task.task.run(&input);
-        };
         let label = match task.kind.as_str() {
             "reach_and_gaze" => "reach+gaze",
             "reach" => "reach",
@@ -141,13 +138,15 @@ impl Scenario {
             "gaze_map" => "gaze_map",
             _ => "task",
         };
-        TaskReport::NotPlaced(NotPlacedReport::new(
-            label,
-            input.subject.name(),
-            &input.person.name,
-            &input.person.base.name,
-            &input.room.name,
-            &misfit,
-        ))
+        let (subject, person) = (input.subject.name(), &input.person.name);
+        let (base, room) = (&input.person.base.name, &input.room.name);
+        let report = match input.base.fit(input.room) {
+            Fit::Nowhere(misfit) => {
+                NotPlacedReport::new(label, subject, person, base, room, &misfit)
+            }
+            Fit::Shut(shut) => NotPlacedReport::shut(label, subject, person, base, room, &shut),
+            Fit::Fits | Fit::Outside => return task.task.run(&input),
+        };
+        TaskReport::NotPlaced(report)
     }
 }

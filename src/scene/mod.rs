@@ -4,6 +4,7 @@
 //! internal units (mm, rad). The scenario (`crate::scenario`) adds the
 //! configured plugins and the tasks.
 
+mod door;
 mod mesh;
 mod person_parts;
 mod placement;
@@ -11,6 +12,7 @@ mod population;
 mod surface;
 mod vision;
 
+pub use door::Door;
 pub use mesh::{MeshObstacle, MeshShape};
 pub use person_parts::{column_solid, OwnBody, Physique};
 pub use placement::{
@@ -36,6 +38,8 @@ pub struct Room {
     pub targets: Vec<Target>,
     /// Rectangles declared with `surface`, for maps.
     pub surfaces: Vec<Surface>,
+    /// Its entrances; none: a base may be placed anywhere it fits.
+    pub doors: Vec<Door>,
 }
 
 impl Room {

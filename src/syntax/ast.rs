@@ -80,6 +80,13 @@ pub struct Vec3Expr {
     pub span: Span,
 }
 
+/// `(x, y)`: a point on the floor.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Vec2Expr {
+    pub parts: [Expr; 2],
+    pub span: Span,
+}
+
 #[derive(Clone, Debug, PartialEq)]
 pub struct RoomDecl {
     pub name: Name,
@@ -94,6 +101,15 @@ pub enum RoomItem {
     Mesh(Box<MeshDecl>),
     Target(TargetDecl),
     Surface(SurfaceDecl),
+    Door(DoorDecl),
+}
+
+/// `door NAME at (x, y) width W`: an entrance on one of the room's walls.
+#[derive(Clone, Debug, PartialEq)]
+pub struct DoorDecl {
+    pub name: Name,
+    pub at: Vec2Expr,
+    pub width: Expr,
 }
 
 /// `mesh NAME from "file.obj" at (x, y, z) scale k rotate a unit m up y`.

@@ -70,6 +70,8 @@ fn describe(rule: Rule) -> Option<&'static str> {
         person => "`person`",
         person_mannequin => "`mannequin`",
         population => "`population`",
+        door_decl => "`door`",
+        vec2 => "a point `(x, y)`",
         population_from => "`= POPULATION`",
         population_size => "`size`",
         population_seed => "`seed`",

@@ -321,6 +321,17 @@ impl Builder {
         }
     }
 
+    fn vec2(&mut self, pair: Pair<Rule>) -> Vec2Expr {
+        let span = self.span(&pair);
+        let mut it = pair.into_inner();
+        let mut next = || it.next().unwrap();
+        let (a, b) = (next(), next());
+        Vec2Expr {
+            parts: [self.expr(a), self.expr(b)],
+            span,
+        }
+    }
+
     fn room(&mut self, pair: Pair<Rule>) -> RoomDecl {
         let span = self.span(&pair);
         let mut it = pair.into_inner();
@@ -389,6 +400,13 @@ impl Builder {
                 let at = self.vec3(it.next().unwrap());
                 let size = self.vec3(it.next().unwrap());
                 RoomItem::Surface(SurfaceDecl { name, at, size })
+            }
+            Rule::door_decl => {
+                let mut it = pair.into_inner();
+                let name = self.name(it.next().unwrap());
+                let at = self.vec2(it.next().unwrap());
+                let width = self.expr(it.next().unwrap());
+                RoomItem::Door(DoorDecl { name, at, width })
             }
             r => unreachable!("room item {r:?}"),
         }

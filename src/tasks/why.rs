@@ -23,6 +23,7 @@ use nalgebra::Point3;
 
 use super::common::Reaching;
 use crate::collision::{Obstacles, PlacedObstacles};
+use crate::floor::Routes;
 use crate::geometry::Cuboid;
 use crate::kinematics::{Chain, JointKind};
 use crate::plugin::{Placement, Search, TaskInput};
@@ -66,6 +67,9 @@ impl Failed<'_> {
             return Found::Why(vec![Why::NoApproach]);
         }
         let own = self.input.base.own_body();
+        if let Some(why) = self.cut_off(own) {
+            return Found::Why(vec![why]);
+        }
         let mut closest_mm = self.placement.solution.distance_mm;
         let mut found = Vec::new();
         if let Some(obstacles) = self.obstacles {
@@ -101,6 +105,32 @@ impl Failed<'_> {
             found.push(Why::out_of_reach(closest_mm));
         }
         Found::Why(found)
+    }
+
+    /// Where the room has doors and the base moves: whether the target is
+    /// reached from floor the base cannot get to (the search again,
+    /// every placement allowed), and what closes that floor in.
+    fn cut_off(&self, own: &OwnBody) -> Option<Why> {
+        let room = self.input.room;
+        let footprint = self.input.base.footprint()?;
+        if room.doors.is_empty() {
+            return None;
+        }
+        let open = Room {
+            name: format!("{}\u{0}without doors", room.name),
+            doors: Vec::new(),
+            ..room.clone()
+        };
+        let placed = self.solve_in(&open, self.chain, self.obstacles, own);
+        if !self.valid(&placed) {
+            return None;
+        }
+        let hip = (placed.pose.position_mm.x, placed.pose.position_mm.y);
+        let names = Routes::enclosing(room, footprint, placed.pose.heading_rad, hip)
+            .into_iter()
+            .map(|i| room.obstacle_name(i).to_string())
+            .collect();
+        Some(Why::CannotGetThere { names })
     }
 
     /// The person's own body is in the way (`bare` reached without it and
