@@ -249,7 +249,7 @@ fn syntax_errors_say_what_was_expected() {
     let cases = [
         (
             "room kitchen {",
-            "expected `size`, `box`, `target`, `mesh`, `surface` or `}`, found end of file",
+            "expected `size`, `box`, `target`, `mesh`, `surface`, `door` or `}`, found end of file",
         ),
         ("let = 5", "expected a name, found `=`"),
         ("let x 5", "expected `=`, found `5`"),

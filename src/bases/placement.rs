@@ -25,11 +25,11 @@ use rand_chacha::ChaCha8Rng;
 use super::capability::Capability;
 use super::placing::{Approach, Placing};
 use super::search::{search, Candidate};
-use crate::floor::{Doorway, FloorObstacles, Footprint, Misfit, Region, Routes};
+use crate::floor::{Doorway, FloorObstacles, Footprint, Misfit, Region, Routes, Shut};
 use crate::geometry::Solid;
 use crate::kinematics::Chain;
 use crate::plugin::{
-    Base, BasePose, Fit, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Shut, Solver, Tries,
+    Base, BasePose, Fit, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Solver, Tries,
 };
 use crate::scene::{column_solid, OwnBody, Physique, Room};
 use crate::solvers::random_posture;

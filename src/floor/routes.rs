@@ -57,6 +57,16 @@ pub struct Doorway {
     pub comes_in: Entry,
 }
 
+/// A base the room's doors shut out: each door and whether the base comes
+/// in by it; whether it was kept to a zone (which it then cannot get to);
+/// its footprint's length and width.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Shut {
+    pub doors: Vec<Doorway>,
+    pub in_zone: bool,
+    pub footprint_mm: [f64; 2],
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Entry {
     /// It fits through and has room just inside.

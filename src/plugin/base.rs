@@ -8,7 +8,7 @@ use nalgebra::Point3;
 
 use super::{IkProblem, Options, Plugin, SettingsError, Solver};
 use crate::collision::{Obstacles, PlacedObstacles};
-use crate::floor::{Doorway, Footprint, Misfit};
+use crate::floor::{Footprint, Misfit, Shut};
 use crate::kinematics::{Chain, Posture};
 use crate::scene::{BasePose, OwnBody, Physique, Placement, Room};
 
@@ -159,16 +159,6 @@ pub enum Fit {
     /// It fits somewhere, but cannot get there from any of the room's
     /// doors: the person's answer.
     Shut(Shut),
-}
-
-/// A base the room's doors shut out: each door and whether the base comes
-/// in by it; whether it was kept to a zone (which it then cannot get to);
-/// its footprint's length and width.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Shut {
-    pub doors: Vec<Doorway>,
-    pub in_zone: bool,
-    pub footprint_mm: [f64; 2],
 }
 
 /// A base ready for one room and one chain.

@@ -12,7 +12,7 @@ mod solver;
 mod task;
 
 pub use base::{
-    Base, BaseError, BasePlugin, Fit, Hips, PreparedBase, ReachQuery, Retry, Search, Shut, Tries,
+    Base, BaseError, BasePlugin, Fit, Hips, PreparedBase, ReachQuery, Retry, Search, Tries,
 };
 pub use format::{FormatPlugin, FormatScene, TaskPlace};
 pub use registry::Registry;

@@ -11,8 +11,7 @@ use serde::Serialize;
 
 use super::reach::quoted;
 use super::{fixed, mm, Answer, Figure, ReportKind};
-use crate::floor::{Entry, Misfit};
-use crate::plugin::Shut;
+use crate::floor::{Entry, Misfit, Shut};
 
 /// A task not tried because the person's base fits nowhere.
 #[derive(Clone, Debug, PartialEq, Serialize)]
