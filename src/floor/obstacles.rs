@@ -32,6 +32,12 @@ pub struct FloorObstacles {
 
 impl FloorObstacles {
     pub fn new(room: &Room, footprint: &Footprint) -> Self {
+        Self::with(room, footprint, &[])
+    }
+
+    /// The room's obstacles and `extra` boxes (the walls round a room's
+    /// doorways, where a route search lets a base come in from outside).
+    pub fn with(room: &Room, footprint: &Footprint, extra: &[BoxObstacle]) -> Self {
         let cells = MeshCells::new(&room.meshes, [room.size_mm.x, room.size_mm.y], footprint);
         let parts = footprint
             .parts
@@ -41,6 +47,7 @@ impl FloorObstacles {
                 let mut outlines: Vec<Vec<Coord<f64>>> = room
                     .boxes
                     .iter()
+                    .chain(extra)
                     .filter(|b| b.corner_mm.z < z1 && z0 < b.corner_mm.z + b.size_mm.z)
                     .map(box_outline)
                     .collect();

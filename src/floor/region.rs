@@ -135,13 +135,25 @@ fn clipped(p: &Polygon<f64>, rect: &Rect<f64>) -> Option<Polygon<f64>> {
 
 /// Hip points keeping the whole footprint inside the room (and the zone).
 pub fn shrunk_room(room: &Room, turned: &Turned, zone: Option<Zone>) -> Option<Rect<f64>> {
-    let (mut x0, mut y0) = (0.0_f64, 0.0_f64);
-    let (mut x1, mut y1) = (room.size_mm.x, room.size_mm.y);
+    let floor = Rect::new(
+        Coord { x: 0.0, y: 0.0 },
+        Coord {
+            x: room.size_mm.x,
+            y: room.size_mm.y,
+        },
+    );
+    shrunk(floor, turned, zone)
+}
+
+/// Hip points keeping the whole footprint inside `floor` (and the zone).
+pub fn shrunk(floor: Rect<f64>, turned: &Turned, zone: Option<Zone>) -> Option<Rect<f64>> {
+    let (mut x0, mut y0) = (floor.min().x, floor.min().y);
+    let (mut x1, mut y1) = (floor.max().x, floor.max().y);
     for c in turned.parts.iter().flatten() {
-        x0 = x0.max(-c.x);
-        y0 = y0.max(-c.y);
-        x1 = x1.min(room.size_mm.x - c.x);
-        y1 = y1.min(room.size_mm.y - c.y);
+        x0 = x0.max(floor.min().x - c.x);
+        y0 = y0.max(floor.min().y - c.y);
+        x1 = x1.min(floor.max().x - c.x);
+        y1 = y1.min(floor.max().y - c.y);
     }
     if let Some(z) = zone {
         (x0, y0) = (x0.max(z.min.0), y0.max(z.min.1));

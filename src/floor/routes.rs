@@ -2,14 +2,19 @@
 //! its configuration space. A base that turns with its footprint (a
 //! wheelchair) moves in x, y and heading: at each of a set of headings
 //! (every 22.5 degrees, the base's own and each door's inward one) the
-//! admissible region falls into pieces it can drive about in; it can turn
-//! from one heading to the next only where the floor holds what its
+//! floor where it fits falls into pieces it can drive about in; it can
+//! turn from one heading to the next only where the floor holds what its
 //! footprint sweeps while turning in place (`Footprint::swept`), which
 //! joins a piece at one heading to a piece at the next. A base that does
 //! not turn (a circle) moves in x and y: the pieces of its one region.
-//! It comes in through a door facing into the room, its whole width
-//! within the opening, its back at the wall. The pieces joined to one it
-//! comes in by are where it can get to; a placement elsewhere is cut off.
+//!
+//! It comes from outside: beyond each door a passage as wide as the door
+//! runs straight out from the wall, long enough to hold the base (the rest
+//! of the outside is solid), so a chair can be in the doorway while it
+//! turns into the room, between the door's jambs, and can come in
+//! forwards or backwards. The pieces joined to one that reaches the far
+//! end of a passage are where it can get to; a place elsewhere in the room
+//! is cut off.
 
 use std::f64::consts::TAU;
 
@@ -17,30 +22,32 @@ use geo::{
     Contains, ConvexHull, Coord, Distance, Euclidean, InteriorPoint, Intersects, LineString,
     MultiPoint, MultiPolygon, Point, Polygon, Rect,
 };
+use nalgebra::{Point3, Vector3};
 
 use super::obstacles::{box_outline, FloorObstacles};
-use super::region::{admissible_in, shrunk_room, Turned};
+use super::region::{admissible_in, shrunk, shrunk_room, Turned};
 use super::Footprint;
-use crate::scene::{Door, MeshObstacle, Room, Wall};
+use crate::scene::{BoxObstacle, Door, MeshObstacle, Room, Wall};
 
 /// The headings a turning base is followed at, besides its own and the
 /// doors': every 22.5 degrees.
 const HEADINGS: usize = 16;
-/// How far in from the wall a base that has just come in may stand.
-const DOORWAY_MM: f64 = 20.0;
 /// Headings closer than this are one.
 const SAME_HEADING_RAD: f64 = 1e-9;
+/// Room to spare at the far end of a door's passage, beyond what holds
+/// the base.
+const SPARE_MM: f64 = 100.0;
 
 /// Where a base can get to in one room.
 pub struct Routes {
-    /// The headings followed, ascending in [0, 2 pi), each with its
-    /// admissible region's pieces and whether each can be got to.
+    /// The headings followed, ascending in [0, 2 pi), each with the room's
+    /// admissible region in pieces and whether each can be got to.
     headings: Vec<Pieces>,
     /// How the base comes in, door by door.
     pub doors: Vec<Doorway>,
 }
 
-/// The admissible region at one heading, piece by piece.
+/// The room's admissible region at one heading, piece by piece.
 struct Pieces {
     heading_rad: f64,
     region: MultiPolygon<f64>,
@@ -52,7 +59,7 @@ struct Pieces {
 pub struct Doorway {
     pub name: String,
     pub width_mm: f64,
-    /// How wide the base is across the opening.
+    /// How wide the base is across the opening, facing in.
     pub needs_mm: f64,
     pub comes_in: Entry,
 }
@@ -69,11 +76,12 @@ pub struct Shut {
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Entry {
-    /// It fits through and has room just inside.
+    /// It comes in and has room inside.
     Through,
-    /// The opening is narrower than the base.
+    /// It cannot stand in the doorway's passage: the opening is narrower
+    /// than the base at every heading.
     TooNarrow,
-    /// It fits through, but something stands just inside.
+    /// It gets into the doorway, but something just inside stops it.
     Blocked,
 }
 
@@ -85,29 +93,51 @@ impl Routes {
         if room.doors.is_empty() {
             return None;
         }
-        let obstacles = FloorObstacles::new(room, footprint);
+        let space = Space::new(room, footprint);
+        let inside = FloorObstacles::new(room, footprint);
         let followed = followed_headings(footprint, headings, &room.doors);
-        let mut pieces: Vec<Pieces> = followed
+        // The extended floor's pieces at each heading, which the joins and
+        // the doors act on.
+        let extended: Vec<MultiPolygon<f64>> = followed
             .iter()
-            .map(|&h| Pieces::at(room, footprint, h, &obstacles))
+            .map(|&h| space.region(footprint, h))
             .collect();
-        let mut joined = Joined::new(&pieces);
+        let mut joined = Joined::new(&extended);
         if footprint.turns() {
-            join_turns(room, footprint, &obstacles, &pieces, &mut joined);
+            join_turns(&space, footprint, &followed, &extended, &mut joined);
         }
         let mut doors = Vec::new();
-        for door in &room.doors {
-            let (doorway, starts) = come_in(room, footprint, door, &pieces);
-            for (h, k) in starts {
+        for (d, door) in room.doors.iter().enumerate() {
+            let ends: Vec<(usize, usize)> = (extended.iter().enumerate())
+                .flat_map(|(h, region)| {
+                    let end = &space.outside[d];
+                    (region.0.iter().enumerate())
+                        .filter(move |(_, p)| p.intersects(end))
+                        .map(move |(k, _)| (h, k))
+                })
+                .collect();
+            for &(h, k) in &ends {
                 joined.start(h, k);
             }
-            doors.push(doorway);
+            doors.push((door, ends));
         }
+        let mut pieces: Vec<Pieces> = followed
+            .iter()
+            .map(|&h| Pieces::at(room, footprint, h, &inside))
+            .collect();
         for (h, p) in pieces.iter_mut().enumerate() {
-            p.reached = (0..p.region.0.len())
-                .map(|k| joined.reached(h, k))
+            p.reached = (p.region.0.iter())
+                .map(|poly| {
+                    poly.interior_point()
+                        .and_then(|c| piece_at(&extended[h], c))
+                        .is_some_and(|k| joined.reached(h, k))
+                })
                 .collect();
         }
+        let doors = doors
+            .into_iter()
+            .map(|(door, ends)| doorway(door, footprint, &ends, &pieces, &extended, &mut joined))
+            .collect();
         Some(Routes {
             headings: pieces,
             doors,
@@ -122,23 +152,21 @@ impl Routes {
     /// The pieces of the admissible region at `heading_rad` (one of the
     /// headings given to `new`) the base can get to.
     pub fn reached(&self, heading_rad: f64) -> MultiPolygon<f64> {
-        let Some(p) = self.pieces(heading_rad) else {
-            return MultiPolygon::new(Vec::new());
-        };
-        let kept = (p.region.0.iter().zip(&p.reached))
-            .filter(|(_, &r)| r)
-            .map(|(poly, _)| poly.clone());
-        MultiPolygon::new(kept.collect())
+        self.kept(heading_rad, true)
     }
 
     /// The pieces of the admissible region at `heading_rad` the base
     /// cannot get to.
     pub fn cut_off(&self, heading_rad: f64) -> MultiPolygon<f64> {
+        self.kept(heading_rad, false)
+    }
+
+    fn kept(&self, heading_rad: f64, reached: bool) -> MultiPolygon<f64> {
         let Some(p) = self.pieces(heading_rad) else {
             return MultiPolygon::new(Vec::new());
         };
         let kept = (p.region.0.iter().zip(&p.reached))
-            .filter(|(_, &r)| !r)
+            .filter(|(_, &r)| r == reached)
             .map(|(poly, _)| poly.clone());
         MultiPolygon::new(kept.collect())
     }
@@ -166,7 +194,7 @@ impl Routes {
         let Some(piece) = piece else {
             return Vec::new();
         };
-        let reach_mm = footprint.extent_mm() + DOORWAY_MM;
+        let reach_mm = footprint.extent_mm() + SPARE_MM;
         let mut near: Vec<(f64, usize)> = room
             .boxes
             .iter()
@@ -203,43 +231,180 @@ impl Pieces {
         heading_rad: f64,
         obstacles: &FloorObstacles,
     ) -> Self {
-        let region = region_at(room, footprint, heading_rad, obstacles);
+        let turned = Turned::new(footprint, heading_rad);
+        let region = match shrunk_room(room, &turned, None) {
+            Some(within) => admissible_in(within, &turned, obstacles),
+            None => MultiPolygon::new(Vec::new()),
+        };
         Pieces {
             heading_rad,
             reached: vec![false; region.0.len()],
             region,
         }
     }
+}
 
-    /// The piece holding `p`, or the nearest within a millimetre (a point
-    /// a boolean operation left on an edge).
-    fn piece_at(&self, p: Point<f64>) -> Option<usize> {
-        let polygons = &self.region.0;
-        if let Some(k) = polygons.iter().position(|poly| poly.contains(&p)) {
-            return Some(k);
-        }
-        polygons
-            .iter()
-            .map(|poly| Euclidean.distance(poly, &p))
-            .enumerate()
-            .filter(|(_, d)| *d <= 1.0)
-            .min_by(|a, b| a.1.total_cmp(&b.1))
-            .map(|(k, _)| k)
+/// How a base fares at `door`: through if a piece its passage's far end
+/// reaches is joined to floor in the room; blocked if it only gets into
+/// the doorway; too narrow if it cannot stand in the passage at all.
+fn doorway(
+    door: &Door,
+    footprint: &Footprint,
+    ends: &[(usize, usize)],
+    pieces: &[Pieces],
+    extended: &[MultiPolygon<f64>],
+    joined: &mut Joined,
+) -> Doorway {
+    let turned = Turned::new(footprint, door.inward_heading_rad());
+    let along = |c: &Coord<f64>| match door.wall {
+        Wall::XMin | Wall::XMax => c.y,
+        _ => c.x,
+    };
+    let (lo, hi) = (turned.parts.iter().flatten())
+        .map(along)
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
+    // Whether a piece of the room joined to this door's ends is reached
+    // from them.
+    let roots: Vec<usize> = ends.iter().map(|&(h, k)| joined.root_of(h, k)).collect();
+    let inside = pieces.iter().enumerate().any(|(h, p)| {
+        p.region.0.iter().any(|poly| {
+            poly.interior_point()
+                .and_then(|c| piece_at(&extended[h], c))
+                .is_some_and(|k| roots.contains(&joined.root_of(h, k)))
+        })
+    });
+    Doorway {
+        name: door.name.clone(),
+        width_mm: door.width_mm,
+        needs_mm: hi - lo,
+        comes_in: if ends.is_empty() {
+            Entry::TooNarrow
+        } else if inside {
+            Entry::Through
+        } else {
+            Entry::Blocked
+        },
     }
 }
 
-/// Where `footprint` fits in the whole room at `heading_rad`.
-fn region_at(
-    room: &Room,
-    footprint: &Footprint,
-    heading_rad: f64,
-    obstacles: &FloorObstacles,
-) -> MultiPolygon<f64> {
-    let turned = Turned::new(footprint, heading_rad);
-    match shrunk_room(room, &turned, None) {
-        Some(within) => admissible_in(within, &turned, obstacles),
-        None => MultiPolygon::new(Vec::new()),
+/// The piece of `region` holding `p`, or the nearest within a millimetre
+/// (a point a boolean operation left on an edge).
+fn piece_at(region: &MultiPolygon<f64>, p: Point<f64>) -> Option<usize> {
+    let polygons = &region.0;
+    if let Some(k) = polygons.iter().position(|poly| poly.contains(&p)) {
+        return Some(k);
     }
+    polygons
+        .iter()
+        .map(|poly| Euclidean.distance(poly, &p))
+        .enumerate()
+        .filter(|(_, d)| *d <= 1.0)
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .map(|(k, _)| k)
+}
+
+/// The floor a route search follows: the room grown on every side by a
+/// band that is solid (the walls) but for a passage straight out from
+/// each door, as wide as its opening and long enough to hold the base.
+struct Space {
+    floor: Rect<f64>,
+    obstacles: FloorObstacles,
+    /// For each door, the far end of its passage: where a base's hip point
+    /// is when all of it is outside the room.
+    outside: Vec<Rect<f64>>,
+}
+
+impl Space {
+    fn new(room: &Room, footprint: &Footprint) -> Self {
+        let reach = footprint.extent_mm();
+        let depth = 2.0 * reach + SPARE_MM;
+        let (sx, sy) = (room.size_mm.x, room.size_mm.y);
+        let floor = Rect::new(
+            Coord {
+                x: -depth,
+                y: -depth,
+            },
+            Coord {
+                x: sx + depth,
+                y: sy + depth,
+            },
+        );
+        let walls = walls_round(room, depth);
+        let outside = room
+            .doors
+            .iter()
+            .map(|d| {
+                let [lo, hi] = d.span_mm();
+                let (near, far) = (reach + SPARE_MM / 2.0, depth);
+                let (x0, x1, y0, y1) = match d.wall {
+                    Wall::XMin => (-far, -near, lo, hi),
+                    Wall::XMax => (sx + near, sx + far, lo, hi),
+                    Wall::YMin => (lo, hi, -far, -near),
+                    _ => (lo, hi, sy + near, sy + far),
+                };
+                Rect::new(Coord { x: x0, y: y0 }, Coord { x: x1, y: y1 })
+            })
+            .collect();
+        Space {
+            floor,
+            obstacles: FloorObstacles::with(room, footprint, &walls),
+            outside,
+        }
+    }
+
+    /// Where `footprint` fits on this floor at `heading_rad`.
+    fn region(&self, footprint: &Footprint, heading_rad: f64) -> MultiPolygon<f64> {
+        let turned = Turned::new(footprint, heading_rad);
+        match shrunk(self.floor, &turned, None) {
+            Some(within) => admissible_in(within, &turned, &self.obstacles),
+            None => MultiPolygon::new(Vec::new()),
+        }
+    }
+}
+
+/// The walls round `room`: a band `depth` wide outside each of its sides,
+/// but for a passage out of each door, as boxes as high as the room.
+fn walls_round(room: &Room, depth: f64) -> Vec<BoxObstacle> {
+    let (sx, sy, sz) = (room.size_mm.x, room.size_mm.y, room.size_mm.z);
+    // Each side: its wall, the band's extent along it, and the rectangle
+    // of a stretch [a, b] along it.
+    type Stretch = fn(f64, f64, f64, f64, f64) -> ([f64; 2], [f64; 2]);
+    let sides: [(Wall, f64, f64, Stretch); 4] = [
+        (Wall::YMin, -depth, sx + depth, |a, b, d, _, _| {
+            ([a, -d], [b - a, d])
+        }),
+        (Wall::YMax, -depth, sx + depth, |a, b, d, _, sy| {
+            ([a, sy], [b - a, d])
+        }),
+        (Wall::XMin, 0.0, sy, |a, b, d, _, _| ([-d, a], [d, b - a])),
+        (Wall::XMax, 0.0, sy, |a, b, d, sx, _| ([sx, a], [d, b - a])),
+    ];
+    let mut walls = Vec::new();
+    for (wall, from, to, stretch) in sides {
+        let mut openings: Vec<[f64; 2]> = room
+            .doors
+            .iter()
+            .filter(|d| d.wall == wall)
+            .map(Door::span_mm)
+            .collect();
+        openings.sort_by(|a, b| a[0].total_cmp(&b[0]));
+        let mut at = from;
+        for [lo, hi] in openings.into_iter().chain([[to, to]]) {
+            if lo > at {
+                let (corner, size) = stretch(at, lo, depth, sx, sy);
+                walls.push(BoxObstacle {
+                    name: "the wall".into(),
+                    corner_mm: Point3::new(corner[0], corner[1], 0.0),
+                    size_mm: Vector3::new(size[0], size[1], sz),
+                    yaw_rad: 0.0,
+                });
+            }
+            at = at.max(hi);
+        }
+    }
+    walls
 }
 
 /// The headings followed: one for a base that does not turn; else every
@@ -271,108 +436,30 @@ fn normalized(heading_rad: f64) -> f64 {
 }
 
 /// Join each heading's pieces to the next heading's where the base can
-/// turn between them: the pieces of the region where it fits what it
+/// turn between them: the pieces of the floor where it fits what it
 /// sweeps turning from the one to the other.
 fn join_turns(
-    room: &Room,
+    space: &Space,
     footprint: &Footprint,
-    obstacles: &FloorObstacles,
-    pieces: &[Pieces],
+    followed: &[f64],
+    extended: &[MultiPolygon<f64>],
     joined: &mut Joined,
 ) {
-    let n = pieces.len();
+    let n = followed.len();
     for h in 0..n {
         let next = (h + 1) % n;
-        let from = pieces[h].heading_rad;
-        let angle = (pieces[next].heading_rad - from).rem_euclid(TAU);
+        let angle = (followed[next] - followed[h]).rem_euclid(TAU);
         let angle = if n == 1 { TAU } else { angle };
-        let swept = footprint.swept(angle);
-        let turning = region_at(room, &swept, from, obstacles);
+        let turning = space.region(&footprint.swept(angle), followed[h]);
         for poly in &turning.0 {
             let Some(p) = poly.interior_point() else {
                 continue;
             };
-            if let (Some(a), Some(b)) = (pieces[h].piece_at(p), pieces[next].piece_at(p)) {
+            if let (Some(a), Some(b)) = (piece_at(&extended[h], p), piece_at(&extended[next], p)) {
                 joined.union((h, a), (next, b));
             }
         }
     }
-}
-
-/// How a base comes in through `door`, and the pieces it comes in to
-/// (heading, piece).
-fn come_in(
-    room: &Room,
-    footprint: &Footprint,
-    door: &Door,
-    pieces: &[Pieces],
-) -> (Doorway, Vec<(usize, usize)>) {
-    let inward = door.inward_heading_rad();
-    let turned = Turned::new(footprint, inward);
-    let corners: Vec<Coord<f64>> = turned.parts.iter().flatten().copied().collect();
-    // Along the wall (y for an x wall) and into the room.
-    let along = |c: &Coord<f64>| match door.wall {
-        Wall::XMin | Wall::XMax => c.y,
-        _ => c.x,
-    };
-    let (lo, hi) = corners
-        .iter()
-        .map(along)
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-            (a.min(v), b.max(v))
-        });
-    let needs_mm = hi - lo;
-    let mut doorway = Doorway {
-        name: door.name.clone(),
-        width_mm: door.width_mm,
-        needs_mm,
-        comes_in: Entry::TooNarrow,
-    };
-    let [open_lo, open_hi] = door.span_mm();
-    let (from, to) = (open_lo - lo, open_hi - hi);
-    if from > to {
-        return (doorway, Vec::new());
-    }
-    let Some(band) = doorway_band(room, door, &turned, from, to) else {
-        doorway.comes_in = Entry::Blocked;
-        return (doorway, Vec::new());
-    };
-    let h = pieces
-        .iter()
-        .position(|p| (p.heading_rad - normalized(inward)).abs() <= SAME_HEADING_RAD)
-        .unwrap_or(0);
-    let starts: Vec<(usize, usize)> = (pieces[h].region.0.iter().enumerate())
-        .filter(|(_, poly)| poly.intersects(&band))
-        .map(|(k, _)| (h, k))
-        .collect();
-    doorway.comes_in = if starts.is_empty() {
-        Entry::Blocked
-    } else {
-        Entry::Through
-    };
-    (doorway, starts)
-}
-
-/// The hip points of a base just come in through `door` (its back at the
-/// wall, within [`DOORWAY_MM`]), its hip between `from` and `to` along the
-/// wall; none if the room has no such floor.
-fn doorway_band(
-    room: &Room,
-    door: &Door,
-    turned: &Turned,
-    from: f64,
-    to: f64,
-) -> Option<Rect<f64>> {
-    let within = shrunk_room(room, turned, None)?;
-    let (lo, hi) = (within.min(), within.max());
-    let rect = match door.wall {
-        Wall::XMin => (lo.x, lo.x + DOORWAY_MM, from, to),
-        Wall::XMax => (hi.x - DOORWAY_MM, hi.x, from, to),
-        Wall::YMin => (from, to, lo.y, lo.y + DOORWAY_MM),
-        _ => (from, to, hi.y - DOORWAY_MM, hi.y),
-    };
-    let (x0, x1, y0, y1) = rect;
-    (x0 <= x1 && y0 <= y1).then(|| Rect::new(Coord { x: x0, y: y0 }, Coord { x: x1, y: y1 }))
 }
 
 /// A mesh's outline on the floor, for naming it: the convex hull of its
@@ -396,12 +483,12 @@ struct Joined {
 }
 
 impl Joined {
-    fn new(pieces: &[Pieces]) -> Self {
-        let mut first = Vec::with_capacity(pieces.len());
+    fn new(regions: &[MultiPolygon<f64>]) -> Self {
+        let mut first = Vec::with_capacity(regions.len());
         let mut total = 0;
-        for p in pieces {
+        for r in regions {
             first.push(total);
-            total += p.region.0.len();
+            total += r.0.len();
         }
         Joined {
             first,
@@ -433,6 +520,10 @@ impl Joined {
     fn reached(&mut self, h: usize, k: usize) -> bool {
         let r = self.root(self.first[h] + k);
         self.started[r]
+    }
+
+    fn root_of(&mut self, h: usize, k: usize) -> usize {
+        self.root(self.first[h] + k)
     }
 }
 
@@ -540,44 +631,65 @@ mod tests {
     }
 
     #[test]
-    fn a_chair_that_cannot_turn_in_a_galley_keeps_facing_in() {
-        // A 900 mm galley, 5 m long, its door at one end: the chair comes
-        // in facing down it and has nowhere to turn.
-        let runs = |x0: f64| {
-            vec![
-                block("run_a", [x0, 0.0], [5000.0 - x0, 600.0]),
-                block("run_b", [x0, 1500.0], [5000.0 - x0, 600.0]),
-            ]
+    fn a_chair_turns_only_where_it_has_room() {
+        // A 900 mm corridor from a door in the wall x = 0 along x to a
+        // corner, then along y: at the corner the chair must turn a
+        // quarter. With `corner` of floor there, it can only if `corner`
+        // holds its sweep.
+        let l_corridor = |corner: f64| {
+            let boxes = vec![
+                // Below the first leg, and the block inside the bend.
+                block("below", [0.0, 0.0], [5000.0, 1000.0]),
+                block("inside", [0.0, 1900.0], [5000.0 - corner, 4100.0]),
+                // Beyond the far leg's outer side.
+                block(
+                    "outside",
+                    [5000.0 - corner + 900.0, 1000.0 + corner],
+                    [corner - 900.0, 5000.0 - corner],
+                ),
+            ];
+            room(
+                [5000.0, 6000.0],
+                boxes,
+                vec![door(Wall::XMin, 1450.0, 900.0)],
+            )
         };
+        let far = (5000.0 - 450.0, 5200.0);
+        let tight = Routes::new(&l_corridor(900.0), &chair(), &[0.0, FRAC_PI_2]).unwrap();
+        assert!(tight.enters());
+        assert!(reaches(&tight, 0.0, 2000.0, 1450.0), "along the first leg");
+        assert!(
+            !reaches(&tight, FRAC_PI_2, far.0, far.1),
+            "round a 900 mm corner"
+        );
+        let roomy = Routes::new(&l_corridor(1700.0), &chair(), &[0.0, FRAC_PI_2]).unwrap();
+        assert!(
+            reaches(&roomy, FRAC_PI_2, 5000.0 - 1700.0 + 450.0, 5200.0),
+            "round a 1700 mm corner"
+        );
+    }
+
+    #[test]
+    fn a_chair_comes_into_a_galley_forwards_or_backwards_but_never_sideways() {
+        // A 900 mm galley, 5 m long, its door at one end: the chair cannot
+        // turn in it, so it faces down it or back up it (reversed in).
         let galley = room(
             [5000.0, 2100.0],
-            runs(0.0),
+            vec![
+                block("run_a", [0.0, 0.0], [5000.0, 600.0]),
+                block("run_b", [0.0, 1500.0], [5000.0, 600.0]),
+            ],
             vec![door(Wall::XMin, 1050.0, 900.0)],
         );
-        let routes = Routes::new(&galley, &chair(), &[0.0, PI]).unwrap();
+        let routes = Routes::new(&galley, &chair(), &[0.0, PI, FRAC_PI_2]).unwrap();
         assert!(
             reaches(&routes, 0.0, 4000.0, 1050.0),
-            "facing in, down the galley"
+            "forwards, down the galley"
         );
+        assert!(reaches(&routes, PI, 4000.0, 1050.0), "backed in");
         assert!(
-            !reaches(&routes, PI, 4000.0, 1050.0),
-            "turned round in the galley"
-        );
-        assert!(routes.cut_off(PI).contains(&Point::new(4000.0, 1050.0)));
-        // With a hall to turn in before it, it can back in.
-        let with_hall = room(
-            [5000.0, 2100.0],
-            runs(2000.0),
-            vec![door(Wall::XMin, 1050.0, 900.0)],
-        );
-        let routes = Routes::new(&with_hall, &chair(), &[0.0, PI]).unwrap();
-        assert!(
-            reaches(&routes, PI, 1000.0, 1050.0),
-            "turned round in the hall"
-        );
-        assert!(
-            reaches(&routes, PI, 4000.0, 1050.0),
-            "backed into the galley"
+            routes.reached(FRAC_PI_2).0.is_empty(),
+            "sideways: it does not fit"
         );
     }
 
@@ -595,7 +707,7 @@ mod tests {
         assert!(routes.reached(0.0).0.is_empty());
         let blocked = room(
             [4000.0, 4000.0],
-            vec![block("crate", [1500.0, 200.0], [1000.0, 500.0])],
+            vec![block("crate", [1000.0, 0.0], [2000.0, 400.0])],
             vec![door(Wall::YMin, 2000.0, 900.0)],
         );
         let routes = Routes::new(&blocked, &chair(), &[0.0]).unwrap();
