@@ -168,19 +168,22 @@ fn run(registry: &Registry, e: &Evaluate) -> i32 {
             .render(&report, &scenario.format_scene())
             .as_bytes(),
     );
-    let not_placed = report
-        .tasks
-        .iter()
-        .any(|t| matches!(t, reach::report::TaskReport::NotPlaced(_)));
+    let not_placed = report.tasks.iter().any(|t| match t {
+        reach::report::TaskReport::NotPlaced(_) => true,
+        reach::report::TaskReport::Population(p) => p.not_placed > 0,
+        _ => false,
+    });
     if e.strict && not_placed {
-        eprintln!("error: a person's base fits nowhere in a task's room (--strict)");
+        eprintln!(
+            "error: a person's base fits nowhere in a task's room, or cannot get there from its doors (--strict)"
+        );
         return STRICT_FAILURE;
     }
     0
 }
 
 /// The exit code of `--strict` when the scenario ran but a person's base
-/// fits nowhere: not 1, which says the input is wrong.
+/// fits nowhere (or cannot get in): not 1, which says the input is wrong.
 const STRICT_FAILURE: i32 = 3;
 
 fn unknown_format(registry: &Registry, format: &str) -> i32 {

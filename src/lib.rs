@@ -45,6 +45,7 @@ pub mod scene;
 pub mod solvers;
 pub mod source;
 pub mod span;
+pub mod standards;
 pub mod std_modules;
 pub mod stdlib;
 pub mod syntax;
@@ -105,7 +106,9 @@ pub fn run(scenario: &Scenario) -> Report {
 /// [`run`], telling `progress` how long tasks (maps) advance.
 pub fn run_with_progress(scenario: &Scenario, progress: &dyn progress::Progress) -> Report {
     let all: Vec<&scenario::TaskSpec> = scenario.tasks.iter().collect();
-    let tasks = scenario.run_tasks(&all, progress);
+    let mut tasks = scenario.run_tasks(&all, progress);
+    let standards = scenario.run_standards(&all, &tasks);
+    tasks.extend(standards);
     Report {
         schema: report::SCHEMA_VERSION,
         file: scenario.file.clone(),

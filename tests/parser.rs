@@ -141,6 +141,7 @@ fn declarations() {
             Item::VisionPreset(_) => "vision",
             Item::Person(_) => "person",
             Item::Population(_) => "population",
+            Item::Standard(_) => "standard",
             Item::Task(_) => "task",
         })
         .collect();

@@ -17,7 +17,7 @@
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
 
-use geo::Point;
+use geo::{MultiPolygon, Point};
 use nalgebra::{Point3, Rotation2, Vector2};
 use rand_chacha::rand_core::SeedableRng;
 use rand_chacha::ChaCha8Rng;
@@ -243,6 +243,18 @@ impl Base for Mobile {
 
     fn footprint(&self) -> Option<&Footprint> {
         Some(&self.footprint)
+    }
+
+    fn reached_floor(&self, room: &Room, heading_rad: f64) -> Option<MultiPolygon<f64>> {
+        let cell = self.floor(room);
+        let floor = cell.get()?;
+        floor.doors.as_ref()?;
+        let (_, region) = floor.regions.iter().min_by(|a, b| {
+            let off = |h: f64| (h - heading_rad).rem_euclid(std::f64::consts::TAU);
+            let near = |h: f64| off(h).min(std::f64::consts::TAU - off(h));
+            near(a.0).total_cmp(&near(b.0))
+        })?;
+        Some(region.whole())
     }
 }
 

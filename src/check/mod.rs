@@ -13,6 +13,7 @@ mod options;
 mod person;
 mod population;
 mod room;
+mod standard;
 mod table;
 mod task;
 mod urdf;
@@ -55,6 +56,7 @@ pub fn check(
     let named = c.populations_named(&persons);
     let populations = c.populations(&named, &mut persons, &mut bases);
     let tasks = c.tasks(&rooms, &persons, &bases, &populations);
+    let standards = c.standards(&rooms);
     if c.errors.is_empty() {
         c.check_budget(&tasks, &rooms, &bases, &populations);
     }
@@ -66,6 +68,7 @@ pub fn check(
             bases,
             populations,
             tasks,
+            standards,
         })
     } else {
         Err(Diagnostics { errors: c.errors })
@@ -102,6 +105,7 @@ struct Checker<'a> {
     persons: Table<'a, crate::syntax::ast::PersonDecl>,
     populations: Table<'a, crate::syntax::ast::PopulationDecl>,
     tasks: Vec<(&'a crate::syntax::ast::TaskDecl, FileId)>,
+    standards: Vec<(&'a crate::syntax::ast::StandardDecl, FileId)>,
     /// Each target's room and place in it, by name, for the tasks.
     target_index: HashMap<String, (usize, usize)>,
 }
@@ -130,6 +134,7 @@ impl<'a> Checker<'a> {
             persons: Table::new("person"),
             populations: Table::new("population"),
             tasks: Vec::new(),
+            standards: Vec::new(),
             target_index: HashMap::new(),
         }
     }
@@ -195,6 +200,14 @@ impl<'a> Checker<'a> {
                     None
                 }
                 Item::Task(d) => Some(Error::new(ErrorKind::Misplaced { what: "tasks" }, d.span)),
+                Item::Standard(d) if is_root => {
+                    self.standards.push((d, f.id));
+                    None
+                }
+                Item::Standard(d) => Some(Error::new(
+                    ErrorKind::Misplaced { what: "standards" },
+                    d.span,
+                )),
                 Item::Units(_) | Item::Use(_) => None,
             };
             if let Some(e) = dup {

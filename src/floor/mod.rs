@@ -5,6 +5,7 @@
 //! with the `geo` polygon library a tile at a time; where it fits nowhere,
 //! by how much (`misfit.rs`).
 
+mod clear;
 mod footprint;
 mod inside;
 mod mesh_cells;
@@ -14,6 +15,7 @@ mod region;
 mod routes;
 mod tiles;
 
+pub use clear::{disc_centre, route_width, t_space, FreeFloor};
 pub use footprint::{FloorPart, Footprint};
 pub use inside::Inside;
 pub use mesh_cells::{CELL_MM, FLOOR_TOLERANCE_MM};

@@ -1,20 +1,23 @@
 //! The kinds of plugin, and the kinds of value an option takes.
 
-/// The four kinds of plugin.
+/// The five kinds of plugin.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum PluginKind {
     Solver,
     Base,
     Task,
     Format,
+    /// A building standard's rules (`standard ada2010`).
+    Standard,
 }
 
 impl PluginKind {
-    pub const ALL: [PluginKind; 4] = [
+    pub const ALL: [PluginKind; 5] = [
         PluginKind::Solver,
         PluginKind::Base,
         PluginKind::Task,
         PluginKind::Format,
+        PluginKind::Standard,
     ];
 
     pub fn noun(self) -> &'static str {
@@ -23,6 +26,7 @@ impl PluginKind {
             PluginKind::Base => "base",
             PluginKind::Task => "task",
             PluginKind::Format => "format",
+            PluginKind::Standard => "standard",
         }
     }
 }
@@ -76,6 +80,7 @@ impl ParamKind {
             ParamKind::Plugin(PluginKind::Base) => "base",
             ParamKind::Plugin(PluginKind::Task) => "task",
             ParamKind::Plugin(PluginKind::Format) => "format",
+            ParamKind::Plugin(PluginKind::Standard) => "standard",
         }
     }
 }

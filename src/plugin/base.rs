@@ -8,6 +8,8 @@ use nalgebra::Point3;
 
 use super::{IkProblem, Options, Plugin, SettingsError, Solver};
 use crate::collision::{Obstacles, PlacedObstacles};
+use geo::MultiPolygon;
+
 use crate::floor::{Footprint, Misfit, Shut};
 use crate::kinematics::{Chain, Posture};
 use crate::scene::{BasePose, OwnBody, Physique, Placement, Room};
@@ -143,6 +145,13 @@ pub trait Base: Send + Sync {
     /// What a base that moves keeps off the floor's obstacles (none for a
     /// fixed base).
     fn footprint(&self) -> Option<&Footprint> {
+        None
+    }
+    /// Where the room has doors, the floor where the hip point can be at
+    /// `heading_rad` (one of the base's headings) having come from a door
+    /// (for pictures); none where the room has no door or the base does
+    /// not move.
+    fn reached_floor(&self, _room: &Room, _heading_rad: f64) -> Option<MultiPolygon<f64>> {
         None
     }
 }

@@ -1,4 +1,4 @@
-//! Plugins: solvers, bases, tasks and output formats. Each implements
+//! Plugins: solvers, bases, tasks, output formats and building standards. Each implements
 //! [`Plugin`] (a name, a one-line doc and declared parameters) and the trait
 //! of its kind; all are registered by name in one [`Registry`]. A plugin
 //! declares its options as a settings struct ([`Settings`]) and is built
@@ -9,6 +9,7 @@ mod base;
 mod format;
 mod registry;
 mod solver;
+mod standard;
 mod task;
 
 pub use base::{
@@ -17,6 +18,7 @@ pub use base::{
 pub use format::{FormatPlugin, FormatScene, TaskPlace};
 pub use registry::Registry;
 pub use solver::{work_ratio, IkProblem, Solver, SolverPlugin};
+pub use standard::{Standard, StandardPlugin};
 pub use task::{Dependence, EffectorNeed, Subject, SubjectKind, Task, TaskInput, TaskPlugin};
 // The data the traits speak of, so that a plugin needs one `use`.
 pub use crate::options::{

@@ -4,7 +4,7 @@ use std::sync::Arc;
 
 use super::{
     BasePlugin, FormatPlugin, ParamSpec, Plugin, PluginConfig, PluginKind, SettingsError, Solver,
-    SolverPlugin, TaskPlugin,
+    SolverPlugin, StandardPlugin, TaskPlugin,
 };
 
 /// Every plugin a run can use. [`Registry::builtin`] (`builtin.rs`, above
@@ -16,6 +16,7 @@ pub struct Registry {
     bases: Vec<Arc<dyn BasePlugin>>,
     tasks: Vec<Arc<dyn TaskPlugin>>,
     formats: Vec<Arc<dyn FormatPlugin>>,
+    standards: Vec<Arc<dyn StandardPlugin>>,
 }
 
 /// Put `plugin` into `list`, replacing one of the same name.
@@ -45,6 +46,14 @@ impl Registry {
 
     pub fn register_format(&mut self, p: impl FormatPlugin + 'static) {
         insert(&mut self.formats, Arc::new(p) as Arc<dyn FormatPlugin>);
+    }
+
+    pub fn register_standard(&mut self, p: impl StandardPlugin + 'static) {
+        insert(&mut self.standards, Arc::new(p) as Arc<dyn StandardPlugin>);
+    }
+
+    pub fn standard(&self, name: &str) -> Option<&Arc<dyn StandardPlugin>> {
+        find(&self.standards, name)
     }
 
     pub fn solver(&self, name: &str) -> Option<&Arc<dyn SolverPlugin>> {
@@ -99,6 +108,11 @@ impl Registry {
                 .collect(),
             PluginKind::Format => self
                 .formats
+                .iter()
+                .map(|p| p.as_ref() as &dyn Plugin)
+                .collect(),
+            PluginKind::Standard => self
+                .standards
                 .iter()
                 .map(|p| p.as_ref() as &dyn Plugin)
                 .collect(),

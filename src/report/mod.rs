@@ -18,6 +18,7 @@ mod parts;
 mod population;
 mod reach;
 mod reach_and_gaze;
+mod standard;
 mod why;
 
 pub use answer::{Answer, Figure};
@@ -28,6 +29,7 @@ pub use parts::{deg, fixed, mm, Asked, BaseReport, Names, Posture};
 pub use population::{wilson95, Excluded, PopulationReport, ShareCell, ShareGrid};
 pub use reach::ReachReport;
 pub use reach_and_gaze::ReachAndGazeReport;
+pub use standard::{ElementCheck, FloorShape, PersonAnswer, RuleCheck, StandardReport};
 pub use why::{Why, WIDENED_DEG};
 
 use serde::Serialize;
@@ -67,6 +69,8 @@ pub enum TaskReport {
     NotPlaced(NotPlacedReport),
     /// A task by a population: the share it accommodates.
     Population(Box<PopulationReport>),
+    /// A room checked against a building standard's rules.
+    Standard(Box<StandardReport>),
 }
 
 /// What every kind of task report says of itself.
@@ -86,6 +90,7 @@ impl TaskReport {
             TaskReport::Map(m) => m,
             TaskReport::NotPlaced(n) => n,
             TaskReport::Population(p) => p.as_ref(),
+            TaskReport::Standard(s) => s.as_ref(),
         }
     }
 

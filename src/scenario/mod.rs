@@ -10,7 +10,7 @@ use std::fmt;
 use std::sync::Arc;
 
 use crate::options::Options;
-use crate::plugin::{Base, FormatScene, Subject, Task, TaskInput, TaskPlace};
+use crate::plugin::{Base, FormatScene, Standard, Subject, Task, TaskInput, TaskPlace};
 use crate::progress::Progress;
 use crate::scene::{Person, Population, Room, Surface};
 use crate::span::Span;
@@ -26,6 +26,20 @@ pub struct Scenario {
     /// The populations the tasks name; their people are among `persons`.
     pub populations: Vec<Population>,
     pub tasks: Vec<TaskSpec>,
+    /// Building standards checked on rooms, reported after the tasks.
+    pub standards: Vec<StandardSpec>,
+}
+
+/// A building standard to check on one room.
+#[derive(Clone)]
+pub struct StandardSpec {
+    /// The standard plugin's name (`ada2010`).
+    pub name: String,
+    pub standard: Arc<dyn Standard>,
+    pub room: usize,
+    /// The validated options it was configured from.
+    pub options: Options,
+    pub span: Span,
 }
 
 /// A task's subject, resolved in its room.
@@ -92,6 +106,8 @@ impl Scenario {
             rooms: &self.rooms,
             persons: &self.persons,
             bases: &self.bases,
+            // The report's entries: the tasks, then the standards (which
+            // place no person).
             tasks: self
                 .tasks
                 .iter()
@@ -99,6 +115,10 @@ impl Scenario {
                     room: t.room,
                     person: t.person,
                 })
+                .chain(self.standards.iter().map(|s| TaskPlace {
+                    room: s.room,
+                    person: 0,
+                }))
                 .collect(),
         }
     }

@@ -11,7 +11,7 @@ use rayon::prelude::*;
 use super::{Scenario, TaskSpec};
 use crate::plugin::{Fit, TaskInput};
 use crate::progress::Progress;
-use crate::report::{NotPlacedReport, PopulationReport, TaskReport};
+use crate::report::{NotPlacedReport, PersonAnswer, PopulationReport, TaskReport};
 
 /// One piece of parallel work.
 enum Job {
@@ -66,6 +66,35 @@ impl Scenario {
             })
             .collect();
         self.gather(tasks, &by_population, &jobs, found)
+    }
+
+    /// Each standard checked on its room, in parallel, in the order given;
+    /// beside each element, what the tasks (`tasks`, whose answers are
+    /// `answers`) in that room about it answered.
+    pub fn run_standards(&self, tasks: &[&TaskSpec], answers: &[TaskReport]) -> Vec<TaskReport> {
+        self.standards
+            .par_iter()
+            .map(|spec| {
+                let mut report = spec.standard.check(&self.rooms[spec.room]);
+                for element in &mut report.elements {
+                    let about = tasks.iter().zip(answers).filter(|(t, _)| {
+                        t.room == spec.room && t.subject_name(self) == element.name
+                    });
+                    element.people = about
+                        .map(|(_, r)| {
+                            let a = r.answer();
+                            PersonAnswer {
+                                task: a.task.to_string(),
+                                person: a.person,
+                                ok: a.ok,
+                                verdict: a.verdict,
+                            }
+                        })
+                        .collect();
+                }
+                TaskReport::Standard(Box::new(report))
+            })
+            .collect()
     }
 
     /// The answers of `found` (one per job of `jobs`) as one report per

@@ -22,7 +22,18 @@ pub enum Item {
     VisionPreset(VisionPreset),
     Person(PersonDecl),
     Population(Box<PopulationDecl>),
+    Standard(StandardDecl),
     Task(TaskDecl),
+}
+
+/// `standard ada2010 in kitchen { options }`: a building standard's rules
+/// checked on one room (every room without `in`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct StandardDecl {
+    pub name: Name,
+    pub room: Option<Name>,
+    pub options: Vec<OptionDecl>,
+    pub span: Span,
 }
 
 #[derive(Clone, Debug, PartialEq)]

@@ -70,6 +70,8 @@ fn describe(rule: Rule) -> Option<&'static str> {
         person => "`person`",
         person_mannequin => "`mannequin`",
         population => "`population`",
+        standard => "`standard`",
+        in_room => "`in`",
         door_decl => "`door`",
         vec2 => "a point `(x, y)`",
         population_from => "`= POPULATION`",
@@ -164,7 +166,7 @@ fn is_visible_token(token: &str) -> bool {
 /// Where any top-level item may start, name one alternative for all of
 /// them rather than listing every keyword.
 fn collapse_item_starts(expected: &mut Vec<String>) {
-    const STARTS: [&str; 11] = [
+    const STARTS: [&str; 12] = [
         "`let`",
         "`room`",
         "`mannequin`",
@@ -173,6 +175,7 @@ fn collapse_item_starts(expected: &mut Vec<String>) {
         "`vision`",
         "`person`",
         "`population`",
+        "`standard`",
         "`units`",
         "`use`",
         "a name",

@@ -141,6 +141,7 @@ impl Builder {
             Rule::person => Item::Person(self.person(pair)),
             Rule::population => Item::Population(Box::new(self.population(pair))),
             Rule::task => Item::Task(self.task(pair)),
+            Rule::standard => Item::Standard(self.standard(pair)),
             r => unreachable!("item rule {r:?}"),
         }
     }
@@ -718,6 +719,23 @@ impl Builder {
                 }
             })
             .collect()
+    }
+
+    fn standard(&mut self, pair: Pair<Rule>) -> StandardDecl {
+        let span = self.span(&pair);
+        let mut it = pair.into_inner().peekable();
+        let name = self.name(it.next().unwrap());
+        let room = it
+            .next_if(|p| p.as_rule() == Rule::in_room)
+            .and_then(|_| it.next())
+            .map(|p| self.name(p));
+        let options = it.next().map(|o| self.options(o)).unwrap_or_default();
+        StandardDecl {
+            name,
+            room,
+            options,
+            span,
+        }
     }
 
     fn task(&mut self, pair: Pair<Rule>) -> TaskDecl {

@@ -15,6 +15,7 @@ const COLOURS = {
   blocked: 0xff5a36,
   floor: 0xeceff3,
   surface: 0x4a7bd0,
+  door: 0x6b4fbb,
 };
 
 // How far short a map cell fell, as a colour: green where reached, then
@@ -142,6 +143,17 @@ function buildRoom(room) {
     const corners = [c, c.clone().add(u), c.clone().add(u).add(v), c.clone().add(v), c];
     group.add(line(corners.map((p) => [p.x, p.y, p.z]), COLOURS.surface, true));
   }
+  // Doors: their openings on the floor, a thick band in the wall's line.
+  for (const d of room.doors || []) {
+    const from = new THREE.Vector3(d.from[0], d.from[1], 0);
+    const to = new THREE.Vector3(d.to[0], d.to[1], 0);
+    const length = from.distanceTo(to);
+    const band = new THREE.Mesh(new THREE.BoxGeometry(length, 60, 20), lambert(COLOURS.door));
+    band.position.copy(from).add(to).multiplyScalar(0.5);
+    band.rotation.z = Math.atan2(to.y - from.y, to.x - from.x);
+    band.userData.name = d.name;
+    group.add(band);
+  }
   const targets = new Map();
   for (const t of room.targets) {
     const mesh = marker(t.at, 28, COLOURS.idle);
@@ -181,6 +193,37 @@ function buildTask(task, data) {
   for (const j of task.strained) {
     group.add(marker(j.at, 30, COLOURS.strained));
   }
+  // Where the room has doors: the edge of the floor the base can get to
+  // from one, at the heading it was placed at.
+  for (const ring of task.routes || []) {
+    group.add(line(ring.map(([x, y]) => [x, y, 2]), COLOURS.door, true));
+  }
+  // A standard's marks: clear floor spaces and turning spaces on the
+  // floor, elements as markers, green where their rule holds, red not.
+  for (const m of task.marks || []) {
+    const colour = m.ok ? COLOURS.ok : COLOURS.not;
+    if (m.kind === "point") {
+      group.add(marker(m.at, 34, colour));
+      continue;
+    }
+    const shape = new THREE.Shape();
+    if (m.kind === "circle") {
+      shape.absarc(m.centre[0], m.centre[1], m.radius, 0, 2 * Math.PI, false);
+    } else {
+      m.points.forEach(([x, y], k) => (k === 0 ? shape.moveTo(x, y) : shape.lineTo(x, y)));
+    }
+    const area = new THREE.Mesh(
+      new THREE.ShapeGeometry(shape, 48),
+      new THREE.MeshBasicMaterial({ color: colour, transparent: true, opacity: 0.35, side: THREE.DoubleSide, depthWrite: false })
+    );
+    area.position.z = 3;
+    group.add(area);
+    const edge = new THREE.Line(
+      new THREE.BufferGeometry().setFromPoints(shape.getPoints(48).map((p) => new THREE.Vector3(p.x, p.y, 4))),
+      new THREE.LineBasicMaterial({ color: colour })
+    );
+    group.add(edge);
+  }
   if (task.cells) {
     const c = task.cells;
     const u = v3(c.u).normalize(), v = v3(c.v).normalize();
@@ -219,6 +262,13 @@ function legend(data) {
     ["#ff5a36", "what blocked it"],
     ["#2b6cd6", "line of sight"],
   ];
+  if (data.rooms.some((r) => (r.doors || []).length)) {
+    rows.push(["#6b4fbb", "a door; dashed: where the base can get to from one"]);
+  }
+  if (data.tasks.some((t) => (t.marks || []).length)) {
+    rows.push(["#2e9e4f", "a standard's rule holds (floor space, element)"]);
+    rows.push(["#d64545", "a standard's rule fails"]);
+  }
   let html = rows
     .map(([c, t]) => `<div class="row"><span class="swatch" style="background:${c}"></span>${t}</div>`)
     .join("");

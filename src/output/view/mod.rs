@@ -17,8 +17,10 @@ use crate::figure;
 use crate::geometry::{Cuboid, Shape};
 use crate::kinematics::{Body, JointKind};
 use crate::plugin::{FormatScene, TaskPlace};
-use crate::report::{fixed, BaseReport, MapReport, PopulationReport, Report, TaskReport};
-use crate::scene::{BasePose, Room};
+use crate::report::{
+    fixed, BaseReport, FloorShape, MapReport, PopulationReport, Report, StandardReport, TaskReport,
+};
+use crate::scene::{BasePose, Door, Room, Wall};
 use simplify::simplified;
 
 /// Most triangles of all meshes drawn; larger meshes are simplified.
@@ -45,6 +47,15 @@ pub struct RoomView {
     pub meshes: Vec<MeshView>,
     pub surfaces: Vec<SurfaceView>,
     pub targets: Vec<Labelled>,
+    /// Each door's opening on the floor: its two ends.
+    pub doors: Vec<DoorView>,
+}
+
+#[derive(Serialize)]
+pub struct DoorView {
+    pub name: String,
+    pub from: [f64; 2],
+    pub to: [f64; 2],
 }
 
 #[derive(Serialize)]
@@ -113,6 +124,37 @@ pub struct TaskView {
     /// The obstacle a posture or a line of sight met.
     pub blocked_by: Option<String>,
     pub cells: Option<CellsView>,
+    /// What a standard's rules measured: areas and circles on the floor,
+    /// elements, each green where its rule holds and red where not.
+    pub marks: Vec<MarkView>,
+    /// Where the room has doors: the floor the base's hip point can get to
+    /// from one, at the heading it was placed at (polygons' outlines; the
+    /// holes as outlines too).
+    pub routes: Vec<Vec<[f64; 2]>>,
+}
+
+#[derive(Serialize)]
+#[serde(tag = "kind", rename_all = "lowercase")]
+pub enum MarkView {
+    /// A polygon on the floor (a clear floor space, a T turning space).
+    Area {
+        label: String,
+        ok: bool,
+        points: Vec<[f64; 2]>,
+    },
+    /// A circle on the floor (a round turning space).
+    Circle {
+        label: String,
+        ok: bool,
+        centre: [f64; 2],
+        radius: f64,
+    },
+    /// A point in the room (an element the rules are about).
+    Point {
+        label: String,
+        ok: bool,
+        at: [f64; 3],
+    },
 }
 
 #[derive(Serialize)]
@@ -235,6 +277,24 @@ fn room_view(room: &Room, budget: Option<usize>) -> RoomView {
                 at: p3(&t.position_mm),
             })
             .collect(),
+        doors: room.doors.iter().map(|d| door_view(d, room)).collect(),
+    }
+}
+
+/// A door's opening: its ends on the floor.
+fn door_view(d: &Door, room: &Room) -> DoorView {
+    let [lo, hi] = d.span_mm().map(mm);
+    let (sx, sy) = (mm(room.size_mm.x), mm(room.size_mm.y));
+    let (from, to) = match d.wall {
+        Wall::XMin => ([0.0, lo], [0.0, hi]),
+        Wall::XMax => ([sx, lo], [sx, hi]),
+        Wall::YMin => ([lo, 0.0], [hi, 0.0]),
+        _ => ([lo, sy], [hi, sy]),
+    };
+    DoorView {
+        name: d.name.clone(),
+        from,
+        to,
     }
 }
 
@@ -242,8 +302,13 @@ fn task_view(task: &TaskReport, place: &TaskPlace, scene: &FormatScene<'_>) -> T
     let answer = task.answer();
     let mut details = String::new();
     task.details(&mut details);
+    let label = match task {
+        // `standard ada2010 in kitchen`
+        TaskReport::Standard(_) => format!("{} {} {}", answer.task, answer.subject, answer.person),
+        _ => format!("{} {} by {}", answer.task, answer.subject, answer.person),
+    };
     let mut view = TaskView {
-        label: format!("{} {} by {}", answer.task, answer.subject, answer.person),
+        label,
         room: place.room,
         ok: answer.ok,
         verdict: answer.verdict.clone(),
@@ -256,6 +321,8 @@ fn task_view(task: &TaskReport, place: &TaskPlace, scene: &FormatScene<'_>) -> T
         sight: None,
         blocked_by: None,
         cells: None,
+        marks: Vec::new(),
+        routes: Vec::new(),
     };
     let mut postures = Vec::new();
     match task {
@@ -295,6 +362,7 @@ fn task_view(task: &TaskReport, place: &TaskPlace, scene: &FormatScene<'_>) -> T
         // Many people: the words say the share, and a map's cells show
         // each point's.
         TaskReport::Population(p) => view.cells = share_cells(p),
+        TaskReport::Standard(s) => view.marks = standard_marks(s),
     }
     if let Some(&(base, _)) = postures.first() {
         let person = place.person;
@@ -305,6 +373,10 @@ fn task_view(task: &TaskReport, place: &TaskPlace, scene: &FormatScene<'_>) -> T
         }
         let pose = base_pose(base);
         view.base = Some([base.x_mm, base.y_mm, base.z_mm, base.heading_deg]);
+        let room = &scene.rooms[place.room];
+        if let Some(floor) = scene.bases[person].reached_floor(room, pose.heading_rad) {
+            view.routes = outlines(&floor);
+        }
         let own = scene.bases[person].own_body();
         view.solids = figure::person(body, &q, pose, own)
             .into_iter()
@@ -415,6 +487,52 @@ fn cells(m: &MapReport) -> CellsView {
             })
             .collect(),
     }
+}
+
+/// What a standard's rules measured, as marks: each rule's shape on the
+/// floor and each element, coloured by whether it holds.
+fn standard_marks(s: &StandardReport) -> Vec<MarkView> {
+    let rules = s
+        .room_rules
+        .iter()
+        .chain(s.elements.iter().flat_map(|e| &e.rules));
+    let mut marks: Vec<MarkView> = rules
+        .filter_map(|r| {
+            let label = format!("{} {}: {}", r.section, r.rule, r.measured);
+            match r.shape.as_ref()? {
+                FloorShape::Polygon { points_mm } => Some(MarkView::Area {
+                    label,
+                    ok: r.ok,
+                    points: points_mm.iter().map(|p| p.map(mm)).collect(),
+                }),
+                FloorShape::Circle {
+                    centre_mm,
+                    radius_mm,
+                } => Some(MarkView::Circle {
+                    label,
+                    ok: r.ok,
+                    centre: centre_mm.map(mm),
+                    radius: mm(*radius_mm),
+                }),
+            }
+        })
+        .collect();
+    marks.extend(s.elements.iter().map(|e| MarkView::Point {
+        label: e.name.clone(),
+        ok: e.ok,
+        at: e.at_mm.map(mm),
+    }));
+    marks
+}
+
+/// Every ring (outlines and holes) of `region`, rounded.
+fn outlines(region: &geo::MultiPolygon<f64>) -> Vec<Vec<[f64; 2]>> {
+    region
+        .0
+        .iter()
+        .flat_map(|p| std::iter::once(p.exterior()).chain(p.interiors()))
+        .map(|ring| ring.coords().map(|c| [mm(c.x), mm(c.y)]).collect())
+        .collect()
 }
 
 /// A population map's cells, each by its share.

@@ -1,0 +1,84 @@
+//! `standard NAME [in ROOM] { options }`: a building standard's rules
+//! checked on one room, or on every room without `in`: the plugin by name
+//! (with the nearest names when it is unknown), its options validated
+//! against its declared parameters, the room resolved.
+
+use std::sync::Arc;
+
+use super::Checker;
+use crate::error::{Error, ErrorKind};
+use crate::names::suggest;
+use crate::plugin::{PluginKind, Standard};
+use crate::scenario::StandardSpec;
+use crate::scene::Room;
+use crate::syntax::ast::StandardDecl;
+
+impl Checker<'_> {
+    pub(super) fn standards(&mut self, rooms: &[Room]) -> Vec<StandardSpec> {
+        let decls = std::mem::take(&mut self.standards);
+        let mut out = Vec::new();
+        for (decl, file) in decls {
+            if let Some(specs) = self.in_file(file, |c| c.standard(decl, rooms)) {
+                out.extend(specs);
+            }
+        }
+        out
+    }
+
+    fn standard(&mut self, decl: &StandardDecl, rooms: &[Room]) -> Option<Vec<StandardSpec>> {
+        let name = &decl.name;
+        let Some(plugin) = self.registry.standard(&name.value).cloned() else {
+            let names = self.registry.names(PluginKind::Standard);
+            self.error(Error::new(
+                ErrorKind::UnknownPlugin {
+                    kind: "standard",
+                    name: name.value.clone(),
+                    suggestion: suggest(&name.value, names.iter().copied()),
+                    available: names.join(", "),
+                },
+                name.span,
+            ));
+            return None;
+        };
+        let label = format!("standard `{}`", name.value);
+        let options = self.options(&label, &plugin.params(), &decl.options, decl.span);
+        let checked: Vec<usize> = match &decl.room {
+            Some(room) => match rooms.iter().position(|r| r.name == room.value) {
+                Some(i) => vec![i],
+                None => {
+                    let names = rooms.iter().map(|r| r.name.as_str());
+                    self.error(Error::new(
+                        ErrorKind::UnknownName {
+                            what: "room",
+                            name: room.value.clone(),
+                            suggestion: suggest(&room.value, names),
+                        },
+                        room.span,
+                    ));
+                    return None;
+                }
+            },
+            None => (0..rooms.len()).collect(),
+        };
+        let options = options?;
+        let standard: Arc<dyn Standard> = match plugin.configure(&options) {
+            Ok(s) => Arc::from(s),
+            Err(e) => {
+                self.settings_error(&label, &e, &decl.options, decl.span);
+                return None;
+            }
+        };
+        Some(
+            checked
+                .into_iter()
+                .map(|room| StandardSpec {
+                    name: name.value.clone(),
+                    standard: Arc::clone(&standard),
+                    room,
+                    options: options.clone(),
+                    span: decl.span,
+                })
+                .collect(),
+        )
+    }
+}

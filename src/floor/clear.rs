@@ -1,0 +1,341 @@
+//! Free floor as building standards measure it, for their rule checks: the
+//! floor not under an obstacle that comes down below a height (an
+//! obstacle higher than a knee leaves knee clearance under it), whether a
+//! rectangle of floor is free (a clear floor space), where a circle or a
+//! T of floor fits (a turning space), and how wide a way is from a door to
+//! a place (the widest disc that travels from one to the other).
+
+use geo::{
+    BoundingRect, Contains, Coord, Distance, Euclidean, InteriorPoint, Intersects, MultiPolygon,
+    Point, Polygon, Rect,
+};
+use nalgebra::Vector2;
+
+use super::obstacles::FloorObstacles;
+use super::region::{admissible_in, shrunk_room, Turned};
+use super::{FloorPart, Footprint};
+use crate::scene::{Door, Room, Wall};
+
+/// Sides of the polygon inscribed in a circle: its flats are within a
+/// quarter of a millimetre of a 1.5 m circle, and a centre it finds is
+/// then checked against the true circle.
+const DISC_SIDES: usize = 128;
+/// How far in from the wall a way from a door starts.
+const DOORWAY_MM: f64 = 20.0;
+
+/// The floor free of obstacles that come down below `below_mm`.
+pub struct FreeFloor {
+    region: MultiPolygon<f64>,
+}
+
+impl FreeFloor {
+    pub fn new(room: &Room, below_mm: f64) -> Self {
+        // A point (a square a micrometre across) as the footprint.
+        let h = 0.0005;
+        let point = Footprint {
+            parts: vec![part(
+                [(h, h), (-h, h), (-h, -h), (h, -h)]
+                    .map(|(x, y)| Vector2::new(x, y))
+                    .to_vec(),
+                below_mm,
+            )],
+        };
+        FreeFloor {
+            region: whole(room, &point, 0.0),
+        }
+    }
+
+    /// Whether all of `polygon` is free floor.
+    pub fn holds(&self, polygon: &Polygon<f64>) -> bool {
+        self.region.contains(polygon)
+    }
+}
+
+/// A footprint part of `outline` from the floor to `below_mm`.
+fn part(outline_mm: Vec<Vector2<f64>>, below_mm: f64) -> FloorPart {
+    FloorPart {
+        outline_mm,
+        z_mm: [0.0, below_mm],
+    }
+}
+
+/// Where `footprint` fits in the whole room at `heading_rad`.
+fn whole(room: &Room, footprint: &Footprint, heading_rad: f64) -> MultiPolygon<f64> {
+    let turned = Turned::new(footprint, heading_rad);
+    match shrunk_room(room, &turned, None) {
+        Some(within) => admissible_in(within, &turned, &FloorObstacles::new(room, footprint)),
+        None => MultiPolygon::new(Vec::new()),
+    }
+}
+
+/// A disc of `radius_mm` from the floor to `below_mm`, as the polygon
+/// inscribed in it (so that where it fits holds every centre where the
+/// disc does, and a little more).
+fn disc(radius_mm: f64, below_mm: f64) -> Footprint {
+    let outline = (0..DISC_SIDES)
+        .map(|k| {
+            let a = std::f64::consts::TAU * k as f64 / DISC_SIDES as f64;
+            Vector2::new(radius_mm * a.cos(), radius_mm * a.sin())
+        })
+        .collect();
+    Footprint {
+        parts: vec![part(outline, below_mm)],
+    }
+}
+
+/// A centre where a disc of `radius_mm` fits on the floor free of
+/// obstacles below `below_mm`, checked against the true circle (the room's
+/// walls and each obstacle's outline at least the radius away); none if
+/// there is none.
+pub fn disc_centre(room: &Room, radius_mm: f64, below_mm: f64) -> Option<Point<f64>> {
+    let footprint = disc(radius_mm, below_mm);
+    let region = whole(room, &footprint, 0.0);
+    let obstacles = FloorObstacles::new(room, &footprint);
+    let clear = |c: Point<f64>| {
+        let (x, y) = (c.x(), c.y());
+        let walls = [x, y, room.size_mm.x - x, room.size_mm.y - y];
+        let r = Coord {
+            x: radius_mm,
+            y: radius_mm,
+        };
+        let centre = Coord { x, y };
+        walls.iter().all(|&d| d >= radius_mm)
+            && obstacles.near(0, centre - r, centre + r).iter().all(|o| {
+                let outline = Polygon::new(o.to_vec().into(), Vec::new());
+                Euclidean.distance(&outline, &c) >= radius_mm && !outline.contains(&c)
+            })
+    };
+    region
+        .0
+        .iter()
+        .flat_map(|piece| {
+            let middle = piece.bounding_rect().map(|r| Point::from(r.center()));
+            piece.interior_point().into_iter().chain(middle)
+        })
+        .find(|&c| clear(c))
+}
+
+/// Where a T-shaped turning space fits: within a square `square_mm` on a
+/// side, its bar (`arm_mm` deep) across one side of the square and its
+/// stem (`arm_mm` wide) from the bar's middle to the opposite side, on the
+/// floor free of obstacles below `below_mm`: the square's centre and the
+/// direction the stem points (0, 90, 180 or 270 degrees); none if it fits
+/// nowhere.
+pub fn t_space(
+    room: &Room,
+    square_mm: f64,
+    arm_mm: f64,
+    below_mm: f64,
+) -> Option<(Point<f64>, f64)> {
+    let h = square_mm / 2.0;
+    let a = arm_mm / 2.0;
+    let rect = |x0: f64, x1: f64, y0: f64, y1: f64| {
+        [(x1, y1), (x0, y1), (x0, y0), (x1, y0)]
+            .map(|(x, y)| Vector2::new(x, y))
+            .to_vec()
+    };
+    // About the square's centre, the stem pointing along +x.
+    let t = Footprint {
+        parts: vec![
+            part(rect(-h, -h + arm_mm, -h, h), below_mm),
+            part(rect(-h + arm_mm, h, -a, a), below_mm),
+        ],
+    };
+    (0..4).find_map(|k| {
+        let heading = f64::from(k) * std::f64::consts::FRAC_PI_2;
+        let region = whole(room, &t, heading);
+        let centre = region.0.iter().find_map(|p| p.interior_point())?;
+        Some((centre, heading))
+    })
+}
+
+/// How wide a way there is from `door` to `to` (a clear floor space) on
+/// the floor free of obstacles below `below_mm`: the widest disc, rounded
+/// to the millimetre, that can travel from just inside the door (its centre
+/// within the opening's span) to overlap `to`, at most `most_mm`; 0 if not
+/// even a 10 mm one can. The door's own width is not the way's: a
+/// standard rules on doors apart.
+pub fn route_width(
+    room: &Room,
+    door: &Door,
+    to: &Polygon<f64>,
+    below_mm: f64,
+    most_mm: f64,
+) -> f64 {
+    let Some(target) = to.bounding_rect() else {
+        return 0.0;
+    };
+    let travels = |width_mm: f64| {
+        let r = width_mm / 2.0;
+        let Some(start) = doorway(room, door, r) else {
+            return false;
+        };
+        let reach = Rect::new(
+            target.min() - Coord { x: r, y: r },
+            target.max() + Coord { x: r, y: r },
+        );
+        let region = whole(room, &disc(r, below_mm), 0.0);
+        region
+            .0
+            .iter()
+            .any(|piece| piece.intersects(&start) && piece.intersects(&reach))
+    };
+    let (mut lo, mut hi) = (10.0, most_mm);
+    if !travels(lo) {
+        return 0.0;
+    }
+    if travels(hi) {
+        return hi;
+    }
+    while hi - lo > 0.05 {
+        let mid = (lo + hi) / 2.0;
+        if travels(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    // The inscribed polygon lets a disc through a quarter of a millimetre
+    // narrower than itself: to the millimetre, the way's width.
+    lo.round()
+}
+
+/// Where the centre of a disc of radius `r` can be just inside `door`:
+/// within the opening's span along the wall, the disc wholly in the room.
+fn doorway(room: &Room, door: &Door, r: f64) -> Option<Rect<f64>> {
+    let [from, to] = door.span_mm();
+    let (depth0, depth1) = (r, r + DOORWAY_MM);
+    let (x0, x1, y0, y1) = match door.wall {
+        Wall::XMin => (depth0, depth1, from, to),
+        Wall::XMax => (room.size_mm.x - depth1, room.size_mm.x - depth0, from, to),
+        Wall::YMin => (from, to, depth0, depth1),
+        _ => (from, to, room.size_mm.y - depth1, room.size_mm.y - depth0),
+    };
+    Some(Rect::new(Coord { x: x0, y: y0 }, Coord { x: x1, y: y1 }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::BoxObstacle;
+    use geo::LineString;
+    use nalgebra::{Point3, Vector3};
+
+    fn block(name: &str, corner: [f64; 3], size: [f64; 3]) -> BoxObstacle {
+        BoxObstacle {
+            name: name.into(),
+            corner_mm: Point3::from(corner),
+            size_mm: Vector3::from(size),
+            yaw_rad: 0.0,
+        }
+    }
+
+    fn room(size: [f64; 2], boxes: Vec<BoxObstacle>, doors: Vec<Door>) -> Room {
+        Room {
+            name: "r".into(),
+            size_mm: Vector3::new(size[0], size[1], 2500.0),
+            boxes,
+            meshes: Vec::new(),
+            targets: Vec::new(),
+            surfaces: Vec::new(),
+            doors,
+        }
+    }
+
+    #[test]
+    fn a_1525_mm_circle_needs_1525_mm_of_floor() {
+        // A corridor between two counters, `gap` wide.
+        let corridor = |gap: f64| {
+            room(
+                [5000.0, 4000.0],
+                vec![
+                    block("a", [0.0, 0.0, 0.0], [5000.0, 1000.0, 900.0]),
+                    block("b", [0.0, 1000.0 + gap, 0.0], [5000.0, 3000.0 - gap, 900.0]),
+                ],
+                Vec::new(),
+            )
+        };
+        assert!(disc_centre(&corridor(1526.0), 762.5, 685.0).is_some());
+        assert!(disc_centre(&corridor(1524.0), 762.5, 685.0).is_none());
+        // A counter with knee space under it (from 700 mm) leaves the floor.
+        let mut raised = corridor(1000.0);
+        raised.boxes[1].corner_mm.z = 700.0;
+        assert!(disc_centre(&raised, 762.5, 685.0).is_some());
+    }
+
+    #[test]
+    fn a_t_fits_where_its_arms_do() {
+        // A T in a 1525 mm square with 915 mm arms fits where a square
+        // does; a 915 mm corridor crossing a 1525 mm one makes a T too.
+        let open = room([1525.5, 1525.5], Vec::new(), Vec::new());
+        assert!(t_space(&open, 1525.0, 915.0, 685.0).is_some());
+        // Fill the square's corners beside the stem: still a T.
+        let corners = room(
+            [1525.5, 1525.5],
+            vec![
+                block("c1", [915.5, 0.0, 0.0], [610.0, 305.0, 900.0]),
+                block("c2", [915.5, 1220.5, 0.0], [610.0, 305.0, 900.0]),
+            ],
+            Vec::new(),
+        );
+        assert!(t_space(&corners, 1525.0, 915.0, 685.0).is_some());
+        // Narrow the stem below 915 mm: no T.
+        let narrow = room(
+            [1525.5, 1525.5],
+            vec![
+                block("c1", [915.5, 0.0, 0.0], [610.0, 306.0, 900.0]),
+                block("c2", [915.5, 1219.5, 0.0], [610.0, 306.0, 900.0]),
+            ],
+            Vec::new(),
+        );
+        let found = t_space(&narrow, 1525.0, 915.0, 685.0);
+        assert!(found.is_none(), "{found:?}");
+    }
+
+    #[test]
+    fn a_route_is_as_wide_as_its_narrowest_passage() {
+        // From a door in the wall y = 0 to the far end of the room, past
+        // two counters that leave `gap` between them.
+        let r = room(
+            [4000.0, 6000.0],
+            vec![
+                block("left", [0.0, 2900.0, 0.0], [1600.0, 200.0, 900.0]),
+                block("right", [2400.0, 2900.0, 0.0], [1600.0, 200.0, 900.0]),
+            ],
+            vec![Door {
+                name: "d".into(),
+                wall: Wall::YMin,
+                along_mm: 2000.0,
+                width_mm: 1000.0,
+            }],
+        );
+        let far = Polygon::new(
+            LineString::from(vec![
+                (1500.0, 5000.0),
+                (2500.0, 5000.0),
+                (2500.0, 5500.0),
+                (1500.0, 5500.0),
+            ]),
+            Vec::new(),
+        );
+        let width = route_width(&r, &r.doors[0], &far, 2030.0, 3000.0);
+        assert!((width - 800.0).abs() <= 2.0, "{width}");
+        // Wider than the door: the door is ruled on apart.
+        let mut wide = r.clone();
+        wide.boxes[1].corner_mm.x = 3400.0;
+        let width = route_width(&wide, &wide.doors[0], &far, 2030.0, 3000.0);
+        assert!((width - 1800.0).abs() <= 2.0, "{width}");
+        let free = FreeFloor::new(&r, 685.0);
+        assert!(free.holds(&far));
+        let on_counter = Polygon::new(
+            LineString::from(vec![
+                (100.0, 2950.0),
+                (500.0, 2950.0),
+                (500.0, 3500.0),
+                (100.0, 3500.0),
+            ]),
+            Vec::new(),
+        );
+        assert!(!free.holds(&on_counter));
+    }
+}

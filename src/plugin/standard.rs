@@ -1,0 +1,21 @@
+//! Building standards: rules about a room (reach ranges of its elements,
+//! clear floor space, turning space, knee clearance, route widths),
+//! checked beside the simulated people's own answers. A standard is a
+//! plugin (`standard ada2010`), so that another code (ISO 21542, a
+//! national one) is added the same way.
+
+use super::{Options, Plugin, SettingsError};
+use crate::report::StandardReport;
+use crate::scene::Room;
+
+pub trait StandardPlugin: Plugin {
+    /// The standard that validated `options` configure.
+    fn configure(&self, options: &Options) -> Result<Box<dyn Standard>, SettingsError>;
+}
+
+/// A configured standard.
+pub trait Standard: Send + Sync {
+    /// `room` checked against the standard's rules: each with what was
+    /// measured, what the rule allows and whether it holds.
+    fn check(&self, room: &Room) -> StandardReport;
+}

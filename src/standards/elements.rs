@@ -1,0 +1,209 @@
+//! What stands between the floor and an element (a target), approached
+//! from one side: building standards measure a reach over an obstruction
+//! by its depth (from the element to the obstruction's edge nearest the
+//! person) and height (its top), and refuse a reach through something at
+//! the element's own height. Boxes only: meshes are not measured.
+
+use nalgebra::{Point3, Vector2};
+
+use crate::scene::{BoxObstacle, Room};
+
+/// An element approached from one side.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Approached {
+    /// From the element towards the person, a unit vector on the floor.
+    pub toward: Vector2<f64>,
+    /// How far the obstruction reaches from the element towards the person
+    /// (0: nothing to reach over).
+    pub depth_mm: f64,
+    /// The obstruction's top (0: none).
+    pub height_mm: f64,
+    /// The boxes reached over, by index.
+    pub under: Vec<usize>,
+    /// A box at the element's own height stands between it and the
+    /// person: the hand would have to pass through it.
+    pub blocked_by: Option<usize>,
+}
+
+/// Within this of each other, two distances along the way are one (an
+/// element resting on a board, a board butting another).
+const TOUCHING_MM: f64 = 1.0;
+
+/// `at` approached from `toward` (a unit vector on the floor, from the
+/// element towards the person): the boxes below the element that the
+/// way crosses one after another from the element (its obstruction), and
+/// the first box the way crosses at the element's height, if any.
+pub fn approached(room: &Room, at: &Point3<f64>, toward: Vector2<f64>) -> Approached {
+    let origin = at.xy().coords;
+    let mut crossed: Vec<(f64, f64, usize)> = room
+        .boxes
+        .iter()
+        .enumerate()
+        .filter_map(|(i, b)| crossing(b, origin, toward).map(|(t0, t1)| (t0, t1, i)))
+        .filter(|&(_, t1, _)| t1 > TOUCHING_MM)
+        .collect();
+    crossed.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.2.cmp(&b.2)));
+    let mut approached = Approached {
+        toward,
+        depth_mm: 0.0,
+        height_mm: 0.0,
+        under: Vec::new(),
+        blocked_by: None,
+    };
+    for &(t0, t1, i) in &crossed {
+        let b = &room.boxes[i];
+        let (bottom, top) = (b.corner_mm.z, b.corner_mm.z + b.size_mm.z);
+        if top <= at.z + TOUCHING_MM {
+            // Below the element: reached over, if it joins the boxes
+            // before it.
+            if t0 <= approached.depth_mm + TOUCHING_MM {
+                approached.depth_mm = approached.depth_mm.max(t1);
+                approached.height_mm = approached.height_mm.max(top);
+                approached.under.push(i);
+            }
+        } else if bottom < at.z - TOUCHING_MM && approached.blocked_by.is_none() {
+            approached.blocked_by = Some(i);
+        }
+    }
+    approached
+}
+
+/// Where the ray from `origin` along `dir` (on the floor) enters and
+/// leaves the box's outline from above, if it meets it (distances along
+/// the ray, the entry possibly behind the origin).
+fn crossing(b: &BoxObstacle, origin: Vector2<f64>, dir: Vector2<f64>) -> Option<(f64, f64)> {
+    // In the box's own axes, from its corner.
+    let turn = b.rotation().inverse();
+    let o = turn * (origin - b.corner_mm.xy().coords);
+    let d = turn * dir;
+    let (mut t0, mut t1) = (f64::NEG_INFINITY, f64::INFINITY);
+    for (oi, di, size) in [(o.x, d.x, b.size_mm.x), (o.y, d.y, b.size_mm.y)] {
+        if di.abs() < 1e-12 {
+            if oi < 0.0 || oi > size {
+                return None;
+            }
+            continue;
+        }
+        let (a, c) = ((0.0 - oi) / di, (size - oi) / di);
+        t0 = t0.max(a.min(c));
+        t1 = t1.min(a.max(c));
+    }
+    (t0 <= t1).then_some((t0, t1))
+}
+
+/// How deep the space under the boxes `under` is, from `front_mm` along
+/// the way (their edge nearest the person) back towards and past the
+/// element, before a box that comes down below `knee_mm` or the room's
+/// wall: the knee space a forward approach uses.
+pub fn knee_depth(
+    room: &Room,
+    at: &Point3<f64>,
+    toward: Vector2<f64>,
+    front_mm: f64,
+    knee_mm: f64,
+) -> f64 {
+    let origin = at.xy().coords + toward * front_mm;
+    let back = -toward;
+    let wall = wall_distance(room, origin, back);
+    let first_low = room
+        .boxes
+        .iter()
+        .filter(|b| b.corner_mm.z < knee_mm)
+        .filter_map(|b| crossing(b, origin, back))
+        .filter(|&(_, t1)| t1 > TOUCHING_MM)
+        .map(|(t0, _)| t0.max(0.0))
+        .fold(f64::INFINITY, f64::min);
+    wall.min(first_low)
+}
+
+/// How far from `origin` along `dir` the room's wall is.
+fn wall_distance(room: &Room, origin: Vector2<f64>, dir: Vector2<f64>) -> f64 {
+    let mut t = f64::INFINITY;
+    for (o, d, size) in [
+        (origin.x, dir.x, room.size_mm.x),
+        (origin.y, dir.y, room.size_mm.y),
+    ] {
+        if d > 1e-12 {
+            t = t.min((size - o) / d);
+        } else if d < -1e-12 {
+            t = t.min(-o / d);
+        }
+    }
+    t
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Vector3;
+
+    fn block(name: &str, corner: [f64; 3], size: [f64; 3]) -> BoxObstacle {
+        BoxObstacle {
+            name: name.into(),
+            corner_mm: Point3::from(corner),
+            size_mm: Vector3::from(size),
+            yaw_rad: 0.0,
+        }
+    }
+
+    fn kitchen() -> Room {
+        Room {
+            name: "k".into(),
+            size_mm: Vector3::new(4000.0, 3000.0, 2500.0),
+            boxes: vec![
+                block("counter", [0.0, 0.0, 0.0], [600.0, 3000.0, 900.0]),
+                block("wall_cabinet", [0.0, 0.0, 1450.0], [350.0, 3000.0, 700.0]),
+                block("sink", [0.0, 0.0, 700.0], [600.0, 800.0, 200.0]),
+            ],
+            meshes: Vec::new(),
+            targets: Vec::new(),
+            surfaces: Vec::new(),
+            doors: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn a_cup_on_a_counter_is_reached_over_the_counter() {
+        let room = kitchen();
+        let cup = Point3::new(300.0, 1500.0, 960.0);
+        let from_room = approached(&room, &cup, Vector2::x());
+        assert!((from_room.depth_mm - 300.0).abs() < 1e-9);
+        assert_eq!(from_room.height_mm, 900.0);
+        assert_eq!(from_room.under, [0]);
+        assert_eq!(from_room.blocked_by, None);
+        // From the wall's side the wall is in the way: nothing is crossed.
+        let from_wall = approached(&room, &cup, -Vector2::x());
+        assert!((from_wall.depth_mm - 300.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_shelf_inside_a_cabinet_is_behind_its_front() {
+        let room = kitchen();
+        // Inside the wall cabinet, at its height: the cabinet is in the way.
+        let inside = Point3::new(200.0, 1500.0, 1600.0);
+        let a = approached(&room, &inside, Vector2::x());
+        assert_eq!(a.blocked_by, Some(1));
+        // A handle on the counter's front: nothing to reach over.
+        let handle = Point3::new(600.0, 1500.0, 700.0);
+        let a = approached(&room, &handle, Vector2::x());
+        assert_eq!((a.depth_mm, a.blocked_by), (0.0, None));
+    }
+
+    #[test]
+    fn the_knee_space_under_a_sink_runs_to_the_wall() {
+        let room = kitchen();
+        let tap = Point3::new(300.0, 400.0, 960.0);
+        let a = approached(&room, &tap, Vector2::x());
+        // The counter and the sink are both reached over.
+        assert!((a.depth_mm - 300.0).abs() < 1e-9);
+        // Under the sink (from 700 mm) there is knee space, but the counter
+        // box under it comes to the floor: none.
+        assert!(knee_depth(&room, &tap, Vector2::x(), a.depth_mm, 685.0) < 1e-9);
+        let mut open = kitchen();
+        open.boxes[0].corner_mm.y = 800.0;
+        open.boxes[0].size_mm.y = 2200.0;
+        let a = approached(&open, &tap, Vector2::x());
+        let depth = knee_depth(&open, &tap, Vector2::x(), a.depth_mm, 685.0);
+        assert!((depth - 600.0).abs() < 1e-9, "{depth}");
+    }
+}

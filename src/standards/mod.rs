@@ -1,0 +1,9 @@
+//! Building standards, each a plugin whose rules are checked on a room
+//! beside the simulated people's answers: `ada2010` (the 2010 ADA
+//! Standards). `elements.rs` measures what stands between the floor and an
+//! element, for any standard's reach rules.
+
+mod ada2010;
+mod elements;
+
+pub use ada2010::Ada2010;
