@@ -21,6 +21,8 @@ mod plugins;
 mod population;
 mod properties;
 mod retry;
+mod routes;
+mod standards;
 mod stdlib;
 mod urdf;
 mod watch;

@@ -1,0 +1,209 @@
+//! `standard ada2010`: each rule at its boundary, through the language: a
+//! figure the rule allows holds, one millimetre beyond it fails. Rooms are
+//! small and built for one rule at a time; `approach forward` or `side`
+//! picks the rules an element is held to.
+
+use reach::report::{RuleCheck, StandardReport, TaskReport};
+
+use crate::body::run;
+
+/// The standard's report of a 6 x 6 m room holding `items`.
+fn checked(items: &str, options: &str) -> StandardReport {
+    let text = format!(
+        "units mm deg\nroom r {{\n  size 6000 x 6000 x 2500\n{items}\n}}\nstandard ada2010 {options}\n"
+    );
+    let (_, report) = run(&text);
+    report
+        .tasks
+        .into_iter()
+        .find_map(|t| match t {
+            TaskReport::Standard(s) => Some(*s),
+            _ => None,
+        })
+        .expect("a standard's report")
+}
+
+/// The rule of `section` about the first element.
+fn rule(report: &StandardReport, section: &str) -> RuleCheck {
+    let e = &report.elements[0];
+    e.rules
+        .iter()
+        .find(|r| r.section == section)
+        .cloned()
+        .unwrap_or_else(|| panic!("no {section} among {:?}", e.rules))
+}
+
+fn holds(items: &str, options: &str, section: &str) -> bool {
+    rule(&checked(items, options), section).ok
+}
+
+#[test]
+fn forward_reach_unobstructed_is_380_to_1220_mm() {
+    // A switch on the wall x = 0, nothing in front.
+    let at = |z: f64| format!("target switch at (0, 3000, {z})");
+    let forward = "{ approach forward }";
+    assert!(holds(&at(380.0), forward, "308.2.1"));
+    assert!(!holds(&at(379.0), forward, "308.2.1"));
+    assert!(holds(&at(1220.0), forward, "308.2.1"));
+    assert!(!holds(&at(1221.0), forward, "308.2.1"));
+}
+
+#[test]
+fn forward_reach_over_an_obstruction_is_1220_up_to_510_deep_and_1120_up_to_635() {
+    // A table with knee space under it (700 to 850 mm), 900 mm deep along
+    // the whole wall x = 0; the element `depth` in from its front edge.
+    let table = "box table at (0, 0, 700) size (900, 6000, 150)";
+    let at = |depth: f64, z: f64| format!("{table}\ntarget cup at ({}, 3000, {z})", 900.0 - depth);
+    let forward = "{ approach forward }";
+    assert!(holds(&at(510.0, 1220.0), forward, "308.2.2"));
+    assert!(!holds(&at(511.0, 1220.0), forward, "308.2.2"));
+    assert!(holds(&at(511.0, 1120.0), forward, "308.2.2"));
+    assert!(holds(&at(635.0, 1120.0), forward, "308.2.2"));
+    assert!(!holds(&at(636.0, 1120.0), forward, "308.2.2"));
+    // The knee space under it holds too.
+    assert!(holds(&at(510.0, 1220.0), forward, "306.3"));
+}
+
+#[test]
+fn knee_clearance_is_685_mm_high_and_280_mm_deep() {
+    // A worktop along the whole wall, its underside `bottom` high, `deep`
+    // deep; the element 200 mm in from its front edge.
+    let at = |bottom: f64, deep: f64| {
+        format!(
+            "box top at (0, 0, {bottom}) size ({deep}, 6000, 40)\ntarget cup at ({}, 3000, 1000)",
+            deep - 200.0
+        )
+    };
+    let forward = "{ approach forward }";
+    assert!(holds(&at(685.0, 280.0), forward, "306.3"));
+    assert!(!holds(&at(684.0, 280.0), forward, "306.3"));
+    assert!(!holds(&at(685.0, 279.0), forward, "306.3"));
+}
+
+#[test]
+fn side_reach_is_1220_up_to_255_deep_and_1170_up_to_610_over_at_most_865() {
+    // A counter `top` high, 1000 mm deep against the wall x = 0; the
+    // element `depth` in from its front edge.
+    let at = |top: f64, depth: f64, z: f64| {
+        format!(
+            "box counter at (0, 2000, 0) size (1000, 2000, {top})\ntarget jar at ({}, 3000, {z})",
+            1000.0 - depth
+        )
+    };
+    let side = "{ approach side }";
+    assert!(holds(&at(865.0, 255.0, 1220.0), side, "308.3.1"));
+    assert!(!holds(&at(866.0, 255.0, 1220.0), side, "308.3.1"));
+    assert!(holds(&at(865.0, 256.0, 1170.0), side, "308.3.2"));
+    assert!(!holds(&at(865.0, 256.0, 1171.0), side, "308.3.2"));
+    assert!(holds(&at(865.0, 610.0, 1170.0), side, "308.3.2"));
+    assert!(!holds(&at(865.0, 611.0, 1170.0), side, "308.3.2"));
+    assert!(!holds(&at(866.0, 300.0, 1000.0), side, "308.3.2"));
+}
+
+#[test]
+fn a_clear_floor_space_is_760_by_1220_mm() {
+    // A switch in an alcove `width` wide and 1500 mm deep.
+    let at = |width: f64| {
+        format!(
+            "box left at (0, 0, 0) size (1500, {}, 900)\nbox right at (0, {}, 0) size (1500, {}, 900)\ntarget switch at (0, 3000, 1000)",
+            3000.0 - width / 2.0,
+            3000.0 + width / 2.0,
+            3000.0 - width / 2.0
+        )
+    };
+    let forward = "{ approach forward }";
+    assert!(holds(&at(760.0), forward, "305"));
+    assert!(!holds(&at(759.0), forward, "305"));
+}
+
+#[test]
+fn a_turning_space_is_a_1525_mm_circle_or_a_t() {
+    // A corridor `width` wide, 4 m long, along the room.
+    let corridor = |width: f64| {
+        format!(
+            "box a at (0, 0, 0) size (6000, 1000, 900)\nbox b at (0, {}, 0) size (6000, {}, 900)\ntarget switch at (3000, 1000, 1000)",
+            1000.0 + width,
+            5000.0 - width
+        )
+    };
+    let turning = |width: f64| checked(&corridor(width), "").room_rules[0].clone();
+    assert!(turning(1526.0).ok);
+    let narrow = turning(1524.0);
+    assert!(!narrow.ok, "{narrow:?}");
+    // A knee-high obstacle leaves the floor under it (304.2).
+    let raised = "box a at (0, 0, 0) size (6000, 1000, 900)\nbox b at (0, 2000, 700) size (6000, 4000, 200)\ntarget switch at (3000, 1000, 1000)";
+    assert!(checked(raised, "").room_rules[0].ok);
+}
+
+#[test]
+fn a_route_is_at_least_915_mm_and_a_door_815() {
+    // From a door in the wall y = 0 through a passage `width` wide between
+    // two counters to a switch on the far wall.
+    let at = |width: f64, door: f64| {
+        format!(
+            "box a at (0, 2500, 0) size ({}, 200, 900)\nbox b at ({}, 2500, 0) size ({}, 200, 900)\n\
+             target switch at (3000, 6000, 1000)\ndoor hall at (3000, 0) width {door}",
+            3000.0 - width / 2.0,
+            3000.0 + width / 2.0,
+            3000.0 - width / 2.0
+        )
+    };
+    assert!(holds(&at(915.0, 900.0), "", "403.5.1"));
+    assert!(!holds(&at(914.0, 900.0), "", "403.5.1"));
+    let door = |width: f64| checked(&at(1200.0, width), "").room_rules[1].clone();
+    assert!(door(815.0).ok && !door(814.0).ok);
+    // Without a door, routes are not checked, and the report says so.
+    let open = checked("target switch at (0, 3000, 1000)", "");
+    assert!(open.elements[0]
+        .rules
+        .iter()
+        .all(|r| r.section != "403.5.1"));
+    assert!(open.notes.iter().any(|n| n.contains("no `door`")));
+}
+
+#[test]
+fn the_people_s_answers_stand_beside_the_rules() {
+    let text = "units mm deg\nuse std::people\nroom r {\n  size 4000 x 4000 x 2500\n  \
+                box counter at (0, 0, 0) size (600, 4000, 900)\n  target cup at (300, 2000, 950)\n}\n\
+                person ann { mannequin woman_5th_seated base manual_wheelchair }\n\
+                reach cup by ann\nstandard ada2010 in r\n";
+    let (_, report) = run(text);
+    let TaskReport::Standard(s) = &report.tasks[1] else {
+        panic!("the standard after the tasks")
+    };
+    let people = &s.elements[0].people;
+    assert_eq!(people.len(), 1);
+    assert_eq!(
+        (people[0].person.as_str(), people[0].task.as_str()),
+        ("ann", "reach")
+    );
+    assert_eq!(people[0].ok, report.tasks[0].answer().ok);
+}
+
+#[test]
+fn an_unknown_standard_or_room_or_approach_is_a_diagnostic() {
+    let registry = reach::plugin::Registry::builtin();
+    for (tail, expected) in [
+        ("standard ada2011\n", "did you mean `ada2010`"),
+        ("standard ada2010 in kitchn\n", "did you mean `kitchen`"),
+        (
+            "standard ada2010 { approach diagonal }\n",
+            "not an approach",
+        ),
+        ("standard ada2010 { aproach side }\n", "approach"),
+    ] {
+        let text = format!("room kitchen {{\n  size 4000 x 4000 x 2500\n}}\n{tail}");
+        let (_, checked) = reach::check(
+            reach::Input::Text {
+                name: "std.reach",
+                text: &text,
+            },
+            &registry,
+        );
+        let rendered = match checked {
+            Ok(_) => panic!("accepted: {tail}"),
+            Err(d) => d.render(false),
+        };
+        assert!(rendered.contains(expected), "{tail}: {rendered}");
+    }
+}
