@@ -1,7 +1,9 @@
 //! Command-line interface. Exit codes: 0 when the scenario evaluated (even
 //! if targets are unreachable, or a person's base fits nowhere), 1 on
-//! diagnostics, 2 on usage errors, 3 with `--strict` when the scenario ran
-//! but a person's base fits nowhere in a task's room.
+//! diagnostics, 2 on usage errors, 3 when the scenario ran but one of its
+//! `expect`s is not met (unless `--no-expect`), or with `--strict` a
+//! person's base fits nowhere in a task's room. `reach test` exits 1 when
+//! any scenario fails, as test runners do.
 
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
@@ -36,6 +38,32 @@ enum Command {
         #[command(flatten)]
         limits: LimitArgs,
     },
+    /// Run every scenario under the paths as a test: its `expect`s, and
+    /// its answers against its golden report (NAME.golden.json beside it).
+    Test {
+        /// Scenario files, or directories searched for .reach files
+        /// (default: the current directory).
+        paths: Vec<PathBuf>,
+        /// Write the golden reports that are missing or whose answers
+        /// changed (and only those).
+        #[arg(long)]
+        update: bool,
+        /// Where the golden reports are, by each scenario's path under the
+        /// directory it was found in (default: beside each scenario).
+        #[arg(long, value_name = "DIR")]
+        golden_dir: Option<PathBuf>,
+        /// Also write the results as JUnit XML.
+        #[arg(long, value_name = "FILE")]
+        junit: Option<PathBuf>,
+        /// Positions within this many millimetres count as unchanged.
+        #[arg(long, value_name = "MM", default_value_t = 1.0)]
+        tolerance_mm: f64,
+        /// Headings within this many degrees count as unchanged.
+        #[arg(long, value_name = "DEG", default_value_t = 0.1)]
+        tolerance_deg: f64,
+        #[command(flatten)]
+        limits: LimitArgs,
+    },
     /// List every plugin with its parameters.
     Plugins,
     /// List the standard library: mannequins, profiles, bases, visions.
@@ -57,6 +85,9 @@ struct Evaluate {
     /// task's room; without it that is an answer like any other (exit 0)
     #[arg(long)]
     strict: bool,
+    /// Report the scenario's `expect`s but do not exit 3 when one is not met
+    #[arg(long)]
+    no_expect: bool,
     #[command(flatten)]
     limits: LimitArgs,
 }
@@ -130,6 +161,29 @@ pub fn main() -> i32 {
             )
         }
         Command::Check { file, limits } => check(&registry, &limits, &file),
+        Command::Test {
+            paths,
+            update,
+            golden_dir,
+            junit,
+            tolerance_mm,
+            tolerance_deg,
+            limits,
+        } => crate::test_command::test(
+            &registry,
+            crate::test_command::TestArgs {
+                paths,
+                update,
+                golden_dir,
+                junit,
+                tolerance: reach::suite::Tolerance {
+                    mm: tolerance_mm,
+                    deg: tolerance_deg,
+                },
+                limits: limits.limits(),
+                allowed: limits.allow_path,
+            },
+        ),
         Command::Plugins => {
             print!("{}", plugins_listing(&registry));
             0
@@ -177,14 +231,20 @@ fn run(registry: &Registry, e: &Evaluate) -> i32 {
         eprintln!(
             "error: a person's base fits nowhere in a task's room, or cannot get there from its doors (--strict)"
         );
-        return STRICT_FAILURE;
+        return NOT_AS_EXPECTED;
+    }
+    if !e.no_expect && !report.expectations_met() {
+        let missed = report.expectations.iter().filter(|x| !x.met).count();
+        eprintln!("error: {missed} of the scenario's expectations not met");
+        return NOT_AS_EXPECTED;
     }
     0
 }
 
-/// The exit code of `--strict` when the scenario ran but a person's base
-/// fits nowhere (or cannot get in): not 1, which says the input is wrong.
-const STRICT_FAILURE: i32 = 3;
+/// The exit code when the scenario ran but an expectation is not met, or
+/// (`--strict`) a person's base fits nowhere or cannot get in: not 1,
+/// which says the input is wrong.
+const NOT_AS_EXPECTED: i32 = 3;
 
 fn unknown_format(registry: &Registry, format: &str) -> i32 {
     eprintln!(

@@ -171,6 +171,14 @@ pub enum ErrorKind {
         base: String,
         reason: String,
     },
+
+    // ------------------------------------------------------------ expectations
+    /// An expectation no task (or standard) of the scenario answers.
+    #[error("nothing answers whether {claim}")]
+    NothingToExpect { claim: String, hint: String },
+    /// An expectation that cannot be asked so.
+    #[error("{what}")]
+    BadExpectation { what: String, help: String },
 }
 
 impl ErrorKind {
@@ -204,6 +212,7 @@ impl ErrorKind {
             | UnknownOption { .. }
             | MissingOption { .. }
             | BadOption { .. } => "reach::plugin",
+            NothingToExpect { .. } | BadExpectation { .. } => "reach::expect",
             Unfit { .. } => "reach::scene",
         }
     }
@@ -255,6 +264,8 @@ impl ErrorKind {
             MissingOption { .. } => "needs this option".into(),
             BadOption { .. } => "here".into(),
             Unfit { .. } => "for this person".into(),
+            NothingToExpect { .. } => "no task asks this".into(),
+            BadExpectation { .. } => "here".into(),
         }
     }
 
@@ -314,6 +325,7 @@ impl ErrorKind {
                 ..
             } => Some(did_you_mean(suggestion, &format!("available: {available}"))),
             LetCycle { .. } => Some("a `let` cannot depend on itself, directly or through others".into()),
+            NothingToExpect { hint, .. } | BadExpectation { help: hint, .. } => Some(hint.clone()),
             _ => None,
         }
     }

@@ -48,6 +48,7 @@ pub mod span;
 pub mod standards;
 pub mod std_modules;
 pub mod stdlib;
+pub mod suite;
 pub mod syntax;
 pub mod tasks;
 pub mod units;
@@ -113,6 +114,7 @@ pub fn run_with_progress(scenario: &Scenario, progress: &dyn progress::Progress)
         schema: report::SCHEMA_VERSION,
         file: scenario.file.clone(),
         notes: scenario.notes(),
+        expectations: scenario.judge(&tasks),
         tasks,
     }
 }

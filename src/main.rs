@@ -3,6 +3,7 @@
 mod bar;
 mod cli;
 mod signals;
+mod test_command;
 mod watch;
 
 /// The stack of the thread that parses and checks: the parser and the

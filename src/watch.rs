@@ -111,10 +111,11 @@ impl State {
                     }
                 }
                 let changes = changes(self.last_good.as_ref(), &report);
+                let expected = expectations(&report);
                 self.last_good = Some(report);
                 let plural = |n: usize| if n == 1 { "" } else { "s" };
                 format!(
-                    "evaluated in {} ms ({} task{} run, {} unchanged); {}",
+                    "evaluated in {} ms ({} task{} run, {} unchanged); {}{expected}",
                     started.elapsed().as_millis(),
                     stats.ran,
                     plural(stats.ran),
@@ -234,6 +235,31 @@ fn wait_until_present(file: &Path) {
 
 fn absolute(path: &Path) -> PathBuf {
     std::path::absolute(path).unwrap_or_else(|_| path.to_path_buf())
+}
+
+/// The expectations in a few words, where the scenario has any: which
+/// are not met, so that a designer who moves a shelf sees at once which
+/// signed-off answer broke.
+fn expectations(report: &Report) -> String {
+    let all = &report.expectations;
+    if all.is_empty() {
+        return String::new();
+    }
+    let missed: Vec<&str> = all
+        .iter()
+        .filter(|e| !e.met)
+        .map(|e| e.expect.as_str())
+        .collect();
+    if missed.is_empty() {
+        format!("; every expectation met ({})", all.len())
+    } else {
+        format!(
+            "; expectations NOT met ({} of {}): {}",
+            missed.len(),
+            all.len(),
+            missed.join("; ")
+        )
+    }
 }
 
 /// Which answers changed since `before`: "mug by ann: reachable -> NOT

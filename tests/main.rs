@@ -24,6 +24,7 @@ mod retry;
 mod routes;
 mod standards;
 mod stdlib;
+mod suite;
 mod urdf;
 mod watch;
 mod why;

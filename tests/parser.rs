@@ -142,6 +142,7 @@ fn declarations() {
             Item::Person(_) => "person",
             Item::Population(_) => "population",
             Item::Standard(_) => "standard",
+            Item::Expect(_) => "expect",
             Item::Task(_) => "task",
         })
         .collect();

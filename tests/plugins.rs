@@ -85,6 +85,7 @@ fn every_plugin_builds_from_its_declared_defaults() {
             file: "x".into(),
             notes: Vec::new(),
             tasks: Vec::new(),
+            expectations: Vec::new(),
         };
         p.render(&empty, &reach::plugin::FormatScene::empty());
     }

@@ -117,6 +117,22 @@ fn watch_follows_every_way_of_saving() {
     w.expect("mug by ben: reachable -> NOT reachable", 3);
 }
 
+/// Each evaluation says which of the scenario's expectations are not met.
+#[test]
+fn watch_shows_the_expectations_on_each_evaluation() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("watched.reach");
+    std::fs::write(dir.path().join("parts.reach"), PARTS).unwrap();
+    let expecting = |extra_mm| scenario(extra_mm) + "expect ben reaches mug\n";
+    std::fs::write(&file, expecting(0)).unwrap();
+    let mut w = Watch::start(&file);
+    w.expect("every expectation met (1)", 1);
+    std::fs::write(&file, expecting(1500)).unwrap();
+    w.expect("expectations NOT met (1 of 1): ben reaches mug", 1);
+    std::fs::write(&file, expecting(0)).unwrap();
+    w.expect("every expectation met (1)", 2);
+}
+
 /// `reach watch --out DIR` keeps the page current: each evaluation writes
 /// a new `report.html` and a new stamp beside it, which the open page polls.
 #[test]

@@ -71,6 +71,7 @@ impl TaskCache {
             schema: SCHEMA_VERSION,
             file: scenario.file.clone(),
             notes: scenario.notes(),
+            expectations: scenario.judge(&tasks),
             tasks,
         };
         (

@@ -6,6 +6,7 @@
 
 mod budget;
 mod eval;
+mod expect;
 mod legs;
 mod mannequin;
 mod mesh;
@@ -57,6 +58,13 @@ pub fn check(
     let populations = c.populations(&named, &mut persons, &mut bases);
     let tasks = c.tasks(&rooms, &persons, &bases, &populations);
     let standards = c.standards(&rooms);
+    let expectations = c.expectations(&expect::Answered {
+        rooms: &rooms,
+        persons: &persons,
+        populations: &populations,
+        tasks: &tasks,
+        standards: &standards,
+    });
     if c.errors.is_empty() {
         c.check_budget(&tasks, &rooms, &bases, &populations);
     }
@@ -69,6 +77,7 @@ pub fn check(
             populations,
             tasks,
             standards,
+            expectations,
         })
     } else {
         Err(Diagnostics { errors: c.errors })
@@ -106,6 +115,7 @@ struct Checker<'a> {
     populations: Table<'a, crate::syntax::ast::PopulationDecl>,
     tasks: Vec<(&'a crate::syntax::ast::TaskDecl, FileId)>,
     standards: Vec<(&'a crate::syntax::ast::StandardDecl, FileId)>,
+    expects: Vec<(&'a crate::syntax::ast::ExpectDecl, FileId)>,
     /// Each target's room and place in it, by name, for the tasks.
     target_index: HashMap<String, (usize, usize)>,
 }
@@ -135,6 +145,7 @@ impl<'a> Checker<'a> {
             populations: Table::new("population"),
             tasks: Vec::new(),
             standards: Vec::new(),
+            expects: Vec::new(),
             target_index: HashMap::new(),
         }
     }
@@ -206,6 +217,16 @@ impl<'a> Checker<'a> {
                 }
                 Item::Standard(d) => Some(Error::new(
                     ErrorKind::Misplaced { what: "standards" },
+                    d.span,
+                )),
+                Item::Expect(d) if is_root => {
+                    self.expects.push((d, f.id));
+                    None
+                }
+                Item::Expect(d) => Some(Error::new(
+                    ErrorKind::Misplaced {
+                        what: "expectations",
+                    },
                     d.span,
                 )),
                 Item::Units(_) | Item::Use(_) => None,

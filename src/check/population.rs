@@ -373,7 +373,7 @@ impl<'a> Checker<'a> {
     }
 
     /// A share from 0 to 1 (`30%` or `0.3`).
-    fn share(&mut self, e: &Expr, what: &str) -> Option<f64> {
+    pub(super) fn share(&mut self, e: &Expr, what: &str) -> Option<f64> {
         let v = self.number(e)?;
         if !(0.0..=1.0).contains(&v) {
             self.out_of_range(e.span, what, "from 0 % to 100 %", &super::eval::fmt_num(v));

@@ -105,8 +105,12 @@ fn write_error(path: &Path, e: &std::io::Error) -> Error {
 }
 
 /// Write `files` into `dir` as one set: all of them, or (on an error
-/// before the renames) none.
+/// before the renames) none. One set at a time in a process: the
+/// temporaries and the journal are named by the process (`reach test`
+/// writes golden reports from several threads).
 pub fn write_set(dir: &Path, files: &[(String, Vec<u8>)]) -> Result<(), Error> {
+    static WRITING: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    let _one_at_a_time = WRITING.lock().unwrap_or_else(|e| e.into_inner());
     std::fs::create_dir_all(dir).map_err(|e| write_error(dir, &e))?;
     journal::recover(dir);
     sweep_stale(dir);

@@ -11,7 +11,7 @@ pub mod map_files;
 mod text;
 pub mod view;
 
-pub use files::write_outputs;
+pub use files::{write_outputs, write_set};
 pub use html::Html;
 pub use json::Json;
 pub use text::Text;

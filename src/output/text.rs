@@ -41,6 +41,7 @@ impl FormatPlugin for Text {
                 let _ = writeln!(out, "note: {note}");
             }
         }
+        expectations(report, &mut out);
         // Names are escaped where they come from (files, URDFs); this
         // keeps the terminal safe whatever a report carries.
         escaped_keeping(&out, |c| c == '\n').into_owned()
@@ -48,6 +49,24 @@ impl FormatPlugin for Text {
 
     fn extension(&self) -> &'static str {
         "txt"
+    }
+}
+
+/// The scenario's expectations, met or not and why.
+fn expectations(report: &Report, out: &mut String) {
+    let all = &report.expectations;
+    if all.is_empty() {
+        return;
+    }
+    let missed = all.iter().filter(|e| !e.met).count();
+    let _ = writeln!(
+        out,
+        "\nexpectations: {} met, {missed} NOT met",
+        all.len() - missed
+    );
+    for e in all {
+        let mark = if e.met { "met    " } else { "NOT met" };
+        let _ = writeln!(out, "  {mark}  {}: {} ({})", e.expect, e.because, e.at);
     }
 }
 

@@ -11,6 +11,7 @@
 //! writes, tagged by kind.
 
 mod answer;
+mod expectation;
 mod gaze;
 mod map;
 mod not_placed;
@@ -22,6 +23,7 @@ mod standard;
 mod why;
 
 pub use answer::{Answer, Figure};
+pub use expectation::ExpectationReport;
 pub use gaze::{GazeReport, Sight};
 pub use map::{cells_apart, MapCell, MapReport};
 pub use not_placed::NotPlacedReport;
@@ -46,6 +48,17 @@ pub struct Report {
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub notes: Vec<String>,
     pub tasks: Vec<TaskReport>,
+    /// The scenario's `expect`s, each met or not and why (left out when it
+    /// has none).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub expectations: Vec<ExpectationReport>,
+}
+
+impl Report {
+    /// Whether every expectation is met.
+    pub fn expectations_met(&self) -> bool {
+        self.expectations.iter().all(|e| e.met)
+    }
 }
 
 impl Report {

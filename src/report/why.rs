@@ -4,7 +4,7 @@
 //! widened by 10 degrees), and the answer names what, once removed, lets
 //! the hand reach; "out of reach" only when nothing removed helps.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 use super::mm;
 use super::reach::quoted;
@@ -14,7 +14,7 @@ use super::reach::quoted;
 pub const WIDENED_DEG: f64 = 10.0;
 
 /// What stopped a reach.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "cause", rename_all = "snake_case")]
 pub enum Why {
     /// The room's obstacles (or sides) named: without any one of them the

@@ -4,7 +4,10 @@
 //! run looks no name up. Spans remain only where a run may still need to
 //! point back at the text.
 
+mod expect;
 mod run;
+
+pub use expect::{ExpectCheck, ExpectSpec};
 
 use std::fmt;
 use std::sync::Arc;
@@ -28,6 +31,8 @@ pub struct Scenario {
     pub tasks: Vec<TaskSpec>,
     /// Building standards checked on rooms, reported after the tasks.
     pub standards: Vec<StandardSpec>,
+    /// What the file expects of the answers.
+    pub expectations: Vec<ExpectSpec>,
 }
 
 /// A building standard to check on one room.

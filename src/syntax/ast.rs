@@ -23,7 +23,93 @@ pub enum Item {
     Person(PersonDecl),
     Population(Box<PopulationDecl>),
     Standard(StandardDecl),
+    Expect(ExpectDecl),
     Task(TaskDecl),
+}
+
+/// `expect ...`: what must hold of the answers.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExpectDecl {
+    pub claim: Claim,
+    /// The expectation as written, for reports (`ann reaches kettle`).
+    pub text: String,
+    pub span: Span,
+}
+
+/// What an expectation claims.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Claim {
+    /// `ann reaches kettle`, `bob not sees dial`, `ann covers counter.top
+    /// >= 80 %`.
+    Person {
+        who: Name,
+        negated: bool,
+        verb: Spanned<Verb>,
+        subject: Spanned<Vec<String>>,
+        bound: Option<Bound>,
+    },
+    /// `share(users, kettle) >= 90 %` (`share(users, kettle, gaze)` names
+    /// the task where a population has several about the subject).
+    Share {
+        population: Name,
+        subject: Spanned<Vec<String>>,
+        task: Option<Name>,
+        bound: Bound,
+    },
+    /// `kitchen meets ada2010`.
+    Meets { room: Name, standard: Name },
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Verb {
+    Reaches,
+    Sees,
+    Covers,
+}
+
+/// `>= 80 %`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Bound {
+    pub comparison: Spanned<Comparison>,
+    pub value: Expr,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Comparison {
+    AtLeast,
+    AtMost,
+    Above,
+    Below,
+}
+
+impl Comparison {
+    pub fn holds(self, value: f64, bound: f64) -> bool {
+        match self {
+            Comparison::AtLeast => value >= bound,
+            Comparison::AtMost => value <= bound,
+            Comparison::Above => value > bound,
+            Comparison::Below => value < bound,
+        }
+    }
+
+    /// The comparison that holds exactly when this one does not.
+    pub fn opposite(self) -> Self {
+        match self {
+            Comparison::AtLeast => Comparison::Below,
+            Comparison::AtMost => Comparison::Above,
+            Comparison::Above => Comparison::AtMost,
+            Comparison::Below => Comparison::AtLeast,
+        }
+    }
+
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Comparison::AtLeast => ">=",
+            Comparison::AtMost => "<=",
+            Comparison::Above => ">",
+            Comparison::Below => "<",
+        }
+    }
 }
 
 /// `standard ada2010 in kitchen { options }`: a building standard's rules

@@ -71,6 +71,13 @@ fn describe(rule: Rule) -> Option<&'static str> {
         person_mannequin => "`mannequin`",
         population => "`population`",
         standard => "`standard`",
+        expect => "`expect`",
+        expect_person | expect_share | expect_meets => "an expectation: `PERSON reaches TARGET`, `share(POPULATION, TARGET) >= N %` or `ROOM meets STANDARD`",
+        negation => "`not`",
+        verb => "`reaches`, `sees` or `covers`",
+        share_kw => "`share`",
+        meets => "`meets`",
+        bound | comparison => "a bound `>= 80 %`",
         in_room => "`in`",
         door_decl => "`door`",
         vec2 => "a point `(x, y)`",
@@ -166,7 +173,7 @@ fn is_visible_token(token: &str) -> bool {
 /// Where any top-level item may start, name one alternative for all of
 /// them rather than listing every keyword.
 fn collapse_item_starts(expected: &mut Vec<String>) {
-    const STARTS: [&str; 12] = [
+    const STARTS: [&str; 13] = [
         "`let`",
         "`room`",
         "`mannequin`",
@@ -176,6 +183,7 @@ fn collapse_item_starts(expected: &mut Vec<String>) {
         "`person`",
         "`population`",
         "`standard`",
+        "`expect`",
         "`units`",
         "`use`",
         "a name",

@@ -142,6 +142,7 @@ impl Builder {
             Rule::population => Item::Population(Box::new(self.population(pair))),
             Rule::task => Item::Task(self.task(pair)),
             Rule::standard => Item::Standard(self.standard(pair)),
+            Rule::expect => Item::Expect(self.expect(pair)),
             r => unreachable!("item rule {r:?}"),
         }
     }
@@ -719,6 +720,85 @@ impl Builder {
                 }
             })
             .collect()
+    }
+
+    fn expect(&mut self, pair: Pair<Rule>) -> ExpectDecl {
+        let span = self.span(&pair);
+        // As written, without a comment the rule's span may take in after
+        // it (an expectation holds no strings, so `//` or `/*` starts one).
+        let written = pair.as_str().trim_start_matches("expect");
+        let written = written.split("//").next().unwrap_or_default();
+        let written = written.split("/*").next().unwrap_or_default();
+        let text = written.split_whitespace().collect::<Vec<_>>().join(" ");
+        let inner = pair.into_inner().next().unwrap();
+        let claim = match inner.as_rule() {
+            Rule::expect_share => {
+                let mut it = inner.into_inner().skip(1).peekable();
+                let population = self.name(it.next().unwrap());
+                let subject = self.subject_path(it.next().unwrap());
+                let task = it
+                    .next_if(|p| p.as_rule() == Rule::ident)
+                    .map(|p| self.name(p));
+                let bound = self.bound(it.next().unwrap());
+                Claim::Share {
+                    population,
+                    subject,
+                    task,
+                    bound,
+                }
+            }
+            Rule::expect_meets => {
+                let mut it = inner.into_inner();
+                let room = self.name(it.next().unwrap());
+                let standard = self.name(it.nth(1).unwrap());
+                Claim::Meets { room, standard }
+            }
+            _ => {
+                let mut it = inner.into_inner().peekable();
+                let who = self.name(it.next().unwrap());
+                let negated = it.next_if(|p| p.as_rule() == Rule::negation).is_some();
+                let verb_pair = it.next().unwrap();
+                let verb = match verb_pair.as_str() {
+                    "reaches" => Verb::Reaches,
+                    "sees" => Verb::Sees,
+                    _ => Verb::Covers,
+                };
+                let verb = Spanned::new(verb, self.span(&verb_pair));
+                let subject = self.subject_path(it.next().unwrap());
+                let bound = it.next().map(|p| self.bound(p));
+                Claim::Person {
+                    who,
+                    negated,
+                    verb,
+                    subject,
+                    bound,
+                }
+            }
+        };
+        ExpectDecl { claim, text, span }
+    }
+
+    /// `counter.top`: a subject's dotted path.
+    fn subject_path(&mut self, pair: Pair<Rule>) -> Spanned<Vec<String>> {
+        let span = self.span(&pair);
+        let path = pair.into_inner().map(|p| p.as_str().to_string()).collect();
+        Spanned::new(path, span)
+    }
+
+    fn bound(&mut self, pair: Pair<Rule>) -> Bound {
+        let mut it = pair.into_inner();
+        let op = it.next().unwrap();
+        let comparison = match op.as_str() {
+            ">=" => Comparison::AtLeast,
+            "<=" => Comparison::AtMost,
+            ">" => Comparison::Above,
+            _ => Comparison::Below,
+        };
+        let comparison = Spanned::new(comparison, self.span(&op));
+        Bound {
+            comparison,
+            value: self.expr(it.next().unwrap()),
+        }
     }
 
     fn standard(&mut self, pair: Pair<Rule>) -> StandardDecl {

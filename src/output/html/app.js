@@ -286,6 +286,30 @@ function legend(data) {
   document.getElementById("legend").innerHTML = html;
 }
 
+// "; expectations: 6 met, 1 NOT met", or nothing.
+function expectationsSummary(data) {
+  const all = data.expectations;
+  if (all.length === 0) return "";
+  const met = all.filter((e) => e.met).length;
+  return `; expectations: ${met} met, ${all.length - met} NOT met`;
+}
+
+// Each expectation, met or not, and why.
+function listExpectations(expectations) {
+  const list = document.getElementById("expectations");
+  for (const e of expectations) {
+    const item = document.createElement("li");
+    const dot = document.createElement("span");
+    dot.className = "dot";
+    dot.style.background = e.met ? "#2e9e4f" : "#d64545";
+    const because = document.createElement("span");
+    because.className = "because";
+    because.textContent = `${e.met ? "met" : "NOT met"}: ${e.because} (${e.at})`;
+    item.append(dot, document.createTextNode(`expect ${e.expect}`), because);
+    list.append(item);
+  }
+}
+
 export function start(settings, data) {
   const view = document.getElementById("view");
   const status = document.getElementById("status");
@@ -296,7 +320,8 @@ export function start(settings, data) {
     .filter((m) => m.simplified_from)
     .map((m) => `; ${m.name} drawn with ${m.indices.length / 3} of its ${m.simplified_from} triangles (answers use them all)`);
   document.getElementById("summary").textContent =
-    `${data.tasks.length} tasks, ${ok} ok` + simplified.join("");
+    `${data.tasks.length} tasks, ${ok} ok` + simplified.join("") + expectationsSummary(data);
+  listExpectations(data.expectations);
 
   const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: selftest });
   renderer.setPixelRatio(window.devicePixelRatio || 1);

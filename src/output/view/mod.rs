@@ -37,6 +37,8 @@ pub struct ViewData {
     /// share of each band, its colour and its name, as the SVG maps have
     /// them.
     pub share_bands: Vec<(f64, &'static str, &'static str)>,
+    /// The scenario's expectations, met or not and why.
+    pub expectations: Vec<crate::report::ExpectationReport>,
 }
 
 #[derive(Serialize)]
@@ -215,6 +217,7 @@ pub fn view_data(report: &Report, scene: &FormatScene<'_>) -> ViewData {
             // JSON has no infinity: the last band starts at zero.
             .map(|&(least, colour, name)| (least.max(0.0), colour, name))
             .collect(),
+        expectations: report.expectations.clone(),
     }
 }
 

@@ -1,0 +1,245 @@
+//! `reach test`: a designer's scenarios as a test suite. Every `.reach`
+//! file under the paths given (but those another of them `use`s) is
+//! checked and run, in parallel; each passes when it checks, its `expect`s
+//! are met and its answers are those of its golden report
+//! (`NAME.golden.json` beside it, or under a directory of goldens), compared
+//! as answers, not bytes (`golden.rs`). `--update` writes the golden
+//! reports that are missing or changed, and only those; `--junit` writes
+//! JUnit XML (`junit.rs`).
+
+mod golden;
+mod junit;
+
+use std::collections::HashSet;
+use std::path::{Path, PathBuf};
+
+use rayon::prelude::*;
+
+pub use golden::{compare, Compared, Tolerance};
+pub use junit::junit;
+
+use crate::limits::Limits;
+use crate::plugin::Registry;
+use crate::report::ExpectationReport;
+use crate::Input;
+
+/// How a suite is run.
+#[derive(Clone, Debug, Default)]
+pub struct SuiteOptions {
+    /// Where golden reports are, by the scenario's path under the paths
+    /// given (none: beside each scenario).
+    pub golden_dir: Option<PathBuf>,
+    /// Write the golden reports that are missing or changed.
+    pub update: bool,
+    pub tolerance: Tolerance,
+    pub limits: Limits,
+    /// Directories scenarios may read from besides their own.
+    pub allowed: Vec<PathBuf>,
+}
+
+/// One scenario's result.
+#[derive(Clone, Debug)]
+pub struct Outcome {
+    pub path: PathBuf,
+    /// Its diagnostics (rendered) if it does not check.
+    pub diagnostics: Option<String>,
+    /// How many tasks and standards it answered.
+    pub answers: usize,
+    pub expectations: Vec<ExpectationReport>,
+    pub golden: Golden,
+}
+
+/// The golden comparison of a scenario.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Golden {
+    /// No golden report, and none written.
+    Absent,
+    Compared(Compared),
+    /// `--update` wrote it: `fresh` if there was none, else what changed.
+    Written {
+        path: PathBuf,
+        changes: Vec<String>,
+        fresh: bool,
+    },
+    /// It could not be written.
+    NotWritten {
+        path: PathBuf,
+        reason: String,
+    },
+}
+
+impl Outcome {
+    pub fn passed(&self) -> bool {
+        self.diagnostics.is_none()
+            && self.expectations.iter().all(|e| e.met)
+            && matches!(
+                self.golden,
+                Golden::Absent | Golden::Compared(Compared::Same) | Golden::Written { .. }
+            )
+    }
+}
+
+/// The scenarios under `paths`: `.reach` files, directories searched
+/// recursively, in path order; or what is wrong with a path.
+pub fn discover(paths: &[PathBuf]) -> Result<Vec<PathBuf>, String> {
+    let mut found = Vec::new();
+    for path in paths {
+        let meta = std::fs::metadata(path).map_err(|e| format!("{}: {e}", path.display()))?;
+        if meta.is_dir() {
+            walk(path, &mut found).map_err(|e| format!("{}: {e}", path.display()))?;
+        } else {
+            found.push(path.clone());
+        }
+    }
+    found.sort();
+    found.dedup();
+    Ok(found)
+}
+
+fn walk(dir: &Path, found: &mut Vec<PathBuf>) -> std::io::Result<()> {
+    for entry in std::fs::read_dir(dir)? {
+        let entry = entry?;
+        let path = entry.path();
+        let kind = entry.file_type()?;
+        if kind.is_dir() {
+            walk(&path, found)?;
+        } else if kind.is_file() && path.extension().is_some_and(|e| e == "reach") {
+            found.push(path);
+        }
+    }
+    Ok(())
+}
+
+/// Run every scenario of `scenarios` (found under `roots`) that no other
+/// of them uses, in parallel; the outcomes in path order.
+pub fn run_suite(
+    scenarios: &[PathBuf],
+    roots: &[PathBuf],
+    options: &SuiteOptions,
+    registry: &Registry,
+) -> Vec<Outcome> {
+    let ran: Vec<(Outcome, Vec<PathBuf>)> = scenarios
+        .par_iter()
+        .map(|path| run_one(path, roots, options, registry))
+        .collect();
+    // A file another scenario uses is a part of it, not a scenario.
+    let used: HashSet<PathBuf> = ran
+        .iter()
+        .flat_map(|(o, used)| {
+            let root = canonical(&o.path);
+            used.iter()
+                .map(|p| canonical(p))
+                .filter(move |p| *p != root)
+        })
+        .collect();
+    ran.into_iter()
+        .map(|(o, _)| o)
+        .filter(|o| !used.contains(&canonical(&o.path)))
+        .collect()
+}
+
+fn canonical(path: &Path) -> PathBuf {
+    std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf())
+}
+
+/// One scenario: checked, run, its expectations judged and its answers
+/// compared with (or, updating, written to) its golden report; and the
+/// files it read.
+fn run_one(
+    path: &Path,
+    roots: &[PathBuf],
+    options: &SuiteOptions,
+    registry: &Registry,
+) -> (Outcome, Vec<PathBuf>) {
+    let mut outcome = Outcome {
+        path: path.to_path_buf(),
+        diagnostics: None,
+        answers: 0,
+        expectations: Vec::new(),
+        golden: Golden::Absent,
+    };
+    let (sources, checked) = crate::check_allowing(
+        Input::Path(path),
+        registry,
+        &options.limits,
+        &options.allowed,
+    );
+    let used = sources.disk_paths();
+    let scenario = match checked {
+        Ok(s) => s,
+        Err(d) => {
+            outcome.diagnostics = Some(d.render(true));
+            return (outcome, used);
+        }
+    };
+    let report = crate::run(&scenario);
+    outcome.answers = report.tasks.len();
+    outcome.expectations = report.expectations.clone();
+    let golden_path = golden_path(path, roots, options.golden_dir.as_deref());
+    let golden = std::fs::read_to_string(&golden_path).ok();
+    let compared = golden
+        .as_deref()
+        .map(|g| compare(g, &report.tasks, options.tolerance));
+    outcome.golden = match (compared, options.update) {
+        (None, false) => Golden::Absent,
+        (Some(c), false) | (Some(c @ Compared::Same), true) => Golden::Compared(c),
+        (c, true) => {
+            let changes = match &c {
+                Some(Compared::Changed(changes)) => changes.clone(),
+                Some(Compared::OtherSchema { golden }) => {
+                    vec![format!("written by schema {golden}")]
+                }
+                Some(Compared::Unreadable(why)) => vec![why.clone()],
+                _ => Vec::new(),
+            };
+            let json = match registry.format("json") {
+                Some(f) => f.render(&report, &scenario.format_scene()),
+                None => String::new(),
+            };
+            match write_whole(&golden_path, json.as_bytes()) {
+                Ok(()) => Golden::Written {
+                    path: golden_path,
+                    changes,
+                    fresh: c.is_none(),
+                },
+                Err(reason) => Golden::NotWritten {
+                    path: golden_path,
+                    reason,
+                },
+            }
+        }
+    };
+    (outcome, used)
+}
+
+/// Where `scenario`'s golden report is: `NAME.golden.json` beside it, or
+/// under `dir` at its path relative to the root it was found under.
+pub fn golden_path(scenario: &Path, roots: &[PathBuf], dir: Option<&Path>) -> PathBuf {
+    let name = scenario.with_extension("golden.json");
+    let Some(dir) = dir else {
+        return name;
+    };
+    let relative = roots
+        .iter()
+        .filter(|r| r.is_dir())
+        .find_map(|r| name.strip_prefix(r).ok())
+        .map(Path::to_path_buf)
+        .or_else(|| name.file_name().map(PathBuf::from))
+        .unwrap_or(name.clone());
+    dir.join(relative)
+}
+
+/// `bytes` written to `path` whole or not at all, as `--out` writes its
+/// files: a temporary beside it (with the user's umask), renamed into
+/// place.
+fn write_whole(path: &Path, bytes: &[u8]) -> Result<(), String> {
+    let dir = path
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    crate::output::write_set(dir, &[(name, bytes.to_vec())]).map_err(|e| e.to_string())
+}

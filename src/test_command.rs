@@ -1,0 +1,208 @@
+//! `reach test [PATH...]`: the scenarios under the paths run as a test
+//! suite (`reach::suite`): one line per scenario, then each failure in
+//! words, a summary line, and exit 1 on any failure.
+
+use std::path::PathBuf;
+
+use reach::plugin::Registry;
+use reach::suite::{self, Compared, Golden, Outcome, SuiteOptions, Tolerance};
+
+/// What `reach test` was asked.
+pub struct TestArgs {
+    pub paths: Vec<PathBuf>,
+    pub update: bool,
+    pub golden_dir: Option<PathBuf>,
+    pub junit: Option<PathBuf>,
+    pub tolerance: Tolerance,
+    pub limits: reach::Limits,
+    pub allowed: Vec<PathBuf>,
+}
+
+pub fn test(registry: &Registry, args: TestArgs) -> i32 {
+    let roots = if args.paths.is_empty() {
+        vec![PathBuf::from(".")]
+    } else {
+        args.paths.clone()
+    };
+    let scenarios = match suite::discover(&roots) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("error: {}", reach::escape::escaped(&e));
+            return 2;
+        }
+    };
+    let options = SuiteOptions {
+        golden_dir: args.golden_dir,
+        update: args.update,
+        tolerance: args.tolerance,
+        limits: args.limits,
+        allowed: args.allowed,
+    };
+    let outcomes = suite::run_suite(&scenarios, &roots, &options, registry);
+    if outcomes.is_empty() {
+        eprintln!("error: no .reach scenario under the paths given");
+        return 1;
+    }
+    print!("{}", summary(&outcomes));
+    if let Some(path) = &args.junit {
+        if let Err(e) = write_junit(path, &suite::junit(&outcomes)) {
+            eprintln!("error: cannot write {}: {e}", path.display());
+            return 1;
+        }
+    }
+    i32::from(outcomes.iter().any(|o| !o.passed()))
+}
+
+fn write_junit(path: &std::path::Path, xml: &str) -> Result<(), String> {
+    let dir = path
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(std::path::Path::new("."));
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .ok_or("not a file name")?;
+    reach::output::write_set(dir, &[(name, xml.as_bytes().to_vec())]).map_err(|e| e.to_string())
+}
+
+/// One line per scenario, the failures in words, the golden reports
+/// written, and the counts.
+fn summary(outcomes: &[Outcome]) -> String {
+    use std::fmt::Write;
+    let mut out = String::new();
+    for o in outcomes {
+        let mark = if o.passed() { "ok    " } else { "FAILED" };
+        let _ = writeln!(out, "{mark}  {}  ({})", shown(&o.path), counts(o));
+    }
+    let failed: Vec<&Outcome> = outcomes.iter().filter(|o| !o.passed()).collect();
+    if !failed.is_empty() {
+        let _ = writeln!(out, "\nfailures:");
+        for o in &failed {
+            let _ = writeln!(out, "\n{}", shown(&o.path));
+            failure(o, &mut out);
+        }
+    }
+    let written: Vec<String> = outcomes.iter().filter_map(written).collect();
+    if !written.is_empty() {
+        let _ = writeln!(out, "\ngolden reports:");
+        for w in written {
+            let _ = writeln!(out, "  {w}");
+        }
+    }
+    let _ = writeln!(
+        out,
+        "\n{} passed, {} failed",
+        outcomes.len() - failed.len(),
+        failed.len()
+    );
+    out
+}
+
+/// What a scenario's line says in brackets: how many answers, the
+/// expectations met, and what became of its golden report.
+fn counts(o: &Outcome) -> String {
+    if o.diagnostics.is_some() {
+        return "does not check".into();
+    }
+    let mut parts = vec![plural(o.answers, "answer", "answers")];
+    if !o.expectations.is_empty() {
+        let met = o.expectations.iter().filter(|e| e.met).count();
+        parts.push(format!(
+            "{met} of {} met",
+            plural(o.expectations.len(), "expectation", "expectations")
+        ));
+    }
+    parts.push(
+        match &o.golden {
+            Golden::Absent => "no golden report",
+            Golden::Compared(Compared::Same) => "as in the golden report",
+            Golden::Compared(_) => "NOT as in the golden report",
+            Golden::Written { fresh: true, .. } => "golden report written",
+            Golden::Written { .. } => "golden report rewritten",
+            Golden::NotWritten { .. } => "golden report NOT written",
+        }
+        .into(),
+    );
+    parts.join(", ")
+}
+
+fn plural(n: usize, one: &str, many: &str) -> String {
+    format!("{n} {}", if n == 1 { one } else { many })
+}
+
+/// What failed in one scenario.
+fn failure(o: &Outcome, out: &mut String) {
+    use std::fmt::Write;
+    if let Some(d) = &o.diagnostics {
+        for line in d.lines() {
+            let _ = writeln!(out, "  {}", shown_text(line));
+        }
+    }
+    for e in o.expectations.iter().filter(|e| !e.met) {
+        let _ = writeln!(
+            out,
+            "  expectation NOT met: {}: {} ({})",
+            shown_text(&e.expect),
+            shown_text(&e.because),
+            shown_text(&e.at)
+        );
+    }
+    match &o.golden {
+        Golden::Compared(Compared::Changed(changes)) => {
+            let _ = writeln!(out, "  answers changed from the golden report:");
+            for c in changes {
+                let _ = writeln!(out, "    {}", shown_text(c));
+            }
+        }
+        Golden::Compared(Compared::OtherSchema { golden }) => {
+            let _ = writeln!(
+                out,
+                "  the golden report was written by schema {golden}, not this reach's; \
+                 check the answers and run `reach test --update` to write it again"
+            );
+        }
+        Golden::Compared(Compared::Unreadable(why)) => {
+            let _ = writeln!(
+                out,
+                "  the golden report cannot be read: {}",
+                shown_text(why)
+            );
+        }
+        Golden::NotWritten { path, reason } => {
+            let _ = writeln!(
+                out,
+                "  cannot write {}: {}",
+                shown(path),
+                shown_text(reason)
+            );
+        }
+        _ => {}
+    }
+}
+
+/// The golden report `--update` wrote, if it did, in words.
+fn written(o: &Outcome) -> Option<String> {
+    let Golden::Written {
+        path,
+        changes,
+        fresh,
+    } = &o.golden
+    else {
+        return None;
+    };
+    Some(if *fresh {
+        format!("wrote {} (new)", shown(path))
+    } else {
+        let n = changes.len();
+        let what = if n == 1 { "answer" } else { "answers" };
+        format!("rewrote {} ({n} {what} changed)", shown(path))
+    })
+}
+
+fn shown(path: &std::path::Path) -> String {
+    reach::escape::escaped(&path.display().to_string()).into_owned()
+}
+
+fn shown_text(text: &str) -> String {
+    reach::escape::escaped(text).into_owned()
+}
