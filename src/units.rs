@@ -286,6 +286,17 @@ impl Quantity {
         })
     }
 
+    /// Nothing of this kind: a bare 0, or 0 of this dimension.
+    pub fn zero(self) -> Quantity {
+        match self {
+            Quantity::Bare { defaults, .. } => Quantity::Bare {
+                value: 0.0,
+                defaults,
+            },
+            Quantity::Dimensioned { dim, .. } => Quantity::Dimensioned { value: 0.0, dim },
+        }
+    }
+
     /// The number as stored, without regard to its unit.
     pub fn raw(&self) -> f64 {
         match self {

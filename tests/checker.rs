@@ -175,6 +175,29 @@ fn units_follow_the_file_default_and_explicit_units_win() {
     assert_eq!(s.rooms[0].size_mm.x, 3600.0);
 }
 
+/// `min` and `max` take the kind of their arguments: a bare number beside
+/// a length is a length in the file's unit, and bare numbers stay bare to
+/// take the unit of the place they are used.
+#[test]
+fn min_and_max_of_bare_numbers_and_lengths() {
+    let cases = [
+        ("units cm\nlet x = min(20, 300mm)", 200.0),
+        ("units cm\nlet x = min(300mm, 20)", 200.0),
+        ("units cm\nlet x = max(20, 300mm)", 300.0),
+        ("units cm\nlet x = max(10, 20)", 200.0),
+        ("units cm\nlet x = min(10, 20) + 1mm", 101.0),
+        ("units mm\nlet x = min(915, 900mm, 1m)", 900.0),
+    ];
+    for (lets, x_mm) in cases {
+        let s = ok(&format!(
+            "{lets}\nroom k {{ size 3m x 3m x 3m\n target t at (x, 0, 0) }}"
+        ));
+        assert_eq!(s.rooms[0].targets[0].position_mm.x, x_mm, "{lets}");
+    }
+    let e = check("let x = min(1m, 2deg)").unwrap_err();
+    assert!(e[0].0.contains("a length and an angle"), "{e:?}");
+}
+
 #[test]
 fn constants_may_be_used_before_they_are_defined() {
     let s = ok(

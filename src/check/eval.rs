@@ -120,7 +120,9 @@ impl Checker<'_> {
         let mut best = values.next()?;
         for next in values {
             // The difference checks the kinds and gives the order; adding
-            // nothing of the other's kind gives the result that kind.
+            // nothing of the other's kind gives the result that kind (a
+            // bare number beside a length is a length; two bare numbers
+            // stay bare, to take the unit of the place they are used).
             let ordered = best.sum(next, -1.0).and_then(|difference| {
                 let take_next = match function {
                     Function::Min => difference.raw() > 0.0,
@@ -131,7 +133,7 @@ impl Checker<'_> {
                 } else {
                     (best, next)
                 };
-                kept.sum(other.product(Quantity::dimensioned(0.0, Dim::NONE))?, 1.0)
+                kept.sum(other.zero(), 1.0)
             });
             match ordered {
                 Ok(q) => best = q,
