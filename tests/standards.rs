@@ -127,12 +127,76 @@ fn a_turning_space_is_a_1525_mm_circle_or_a_t() {
         )
     };
     let turning = |width: f64| checked(&corridor(width), "").room_rules[0].clone();
-    assert!(turning(1526.0).ok);
+    assert!(turning(1525.0).ok);
     let narrow = turning(1524.0);
     assert!(!narrow.ok, "{narrow:?}");
     // A knee-high obstacle leaves the floor under it (304.2).
     let raised = "box a at (0, 0, 0) size (6000, 1000, 900)\nbox b at (0, 2000, 700) size (6000, 4000, 200)\ntarget switch at (3000, 1000, 1000)";
     assert!(checked(raised, "").room_rules[0].ok);
+}
+
+/// Floor under a raised obstacle counts as knee and toe clearance only
+/// 635 mm deep (306): a room roofed by a table at knee height has no
+/// turning space in its middle.
+#[test]
+fn knee_clearance_counts_only_635_mm_deep() {
+    // A counter along the wall y = 0, `open` mm of open floor, then a
+    // table at knee height `deep` mm deep to the wall y = 6000.
+    let under = |deep: f64, open: f64| {
+        format!(
+            "box counter at (0, 0, 0) size (6000, {}, 900)
+box table at (0, {}, 700) size (6000, {deep}, 40)
+target switch at (3000, 100, 1000)",
+            6000.0 - deep - open,
+            6000.0 - deep
+        )
+    };
+    // 1270 mm deep: all of it within 635 mm of an edge, and with 300 mm
+    // of open floor a circle fits.
+    assert!(checked(&under(1270.0, 300.0), "").room_rules[0].ok);
+    // 1600 mm deep: its middle is more than 635 mm from every edge.
+    let deep = checked(&under(1600.0, 0.0), "").room_rules[0].clone();
+    assert!(!deep.ok, "{deep:?}");
+}
+
+/// A turning space behind a passage narrower than a route from the door
+/// is not on the route: it does not count.
+#[test]
+fn a_turning_space_must_be_on_the_route_from_a_door() {
+    // A wall across the room at y = 3000 with an 800 mm gap; the door in
+    // the wall y = 0 opens into a 1000 mm deep vestibule.
+    let room = |gap: f64| {
+        format!(
+            "box wall_a at (0, 1000, 0) size ({}, 100, 2500)
+box wall_b at ({}, 1000, 0) size ({}, 100, 2500)
+             target switch at (3000, 6000, 1000)
+door hall at (3000, 0) width 900",
+            3000.0 - gap / 2.0,
+            3000.0 + gap / 2.0,
+            3000.0 - gap / 2.0
+        )
+    };
+    let cut_off = checked(&room(800.0), "").room_rules[0].clone();
+    assert!(!cut_off.ok, "{cut_off:?}");
+    assert!(cut_off.measured.contains("no 915 mm route"), "{cut_off:?}");
+    assert!(checked(&room(920.0), "").room_rules[0].ok);
+}
+
+/// Boxes at the element's height count only where the hand must pass; an
+/// element resting on a shelf over a counter is reached over the counter.
+#[test]
+fn only_what_the_hand_passes_through_blocks_a_reach() {
+    let across = "box cupboard at (3000, 0, 0) size (600, 6000, 2000)
+target switch at (0, 3000, 1000)";
+    assert!(holds(across, "{ approach forward }", "308.2.1"));
+    // A jar on a board 1100 mm up over an 865 mm counter 500 mm deep: a
+    // side reach over 350 mm of counter, 1160 mm high.
+    let shelf = "box counter at (0, 0, 0) size (500, 6000, 865)
+box board at (0, 0, 1100) size (300, 6000, 20)
+target jar at (150, 3000, 1160)";
+    let r = rule(&checked(shelf, "{ approach side }"), "308.3.2");
+    assert!(r.ok, "{r:?}");
+    assert!(r.measured.contains("over 350 mm, 865 mm high"), "{r:?}");
 }
 
 #[test]
@@ -152,6 +216,14 @@ fn a_route_is_at_least_915_mm_and_a_door_815() {
     assert!(!holds(&at(914.0, 900.0), "", "403.5.1"));
     let door = |width: f64| checked(&at(1200.0, width), "").room_rules[1].clone();
     assert!(door(815.0).ok && !door(814.0).ok);
+    // A cabinet standing 100 mm into a 900 mm opening, just inside.
+    let narrowed = format!(
+        "{}\nbox cabinet at (2450, 0, 0) size (200, 400, 900)",
+        at(1200.0, 900.0)
+    );
+    let d = checked(&narrowed, "").room_rules[1].clone();
+    assert!(!d.ok, "{d:?}");
+    assert_eq!(d.measured, "800 mm of its 900 mm opening clear");
     // Without a door, routes are not checked, and the report says so.
     let open = checked("target switch at (0, 3000, 1000)", "");
     assert!(open.elements[0]

@@ -6,15 +6,15 @@
 //! a place (the widest disc that travels from one to the other).
 
 use geo::{
-    BoundingRect, Contains, Coord, Distance, Euclidean, InteriorPoint, Intersects, MultiPolygon,
-    Point, Polygon, Rect,
+    BooleanOps, BoundingRect, Contains, Coord, Distance, Euclidean, InteriorPoint, Intersects,
+    LineString, MultiPolygon, Point, Polygon, Rect,
 };
 use nalgebra::Vector2;
 
 use super::obstacles::FloorObstacles;
 use super::region::{admissible_in, shrunk_room, Turned};
 use super::{FloorPart, Footprint};
-use crate::scene::{Door, Room, Wall};
+use crate::scene::{BoxObstacle, Door, Room, Wall};
 
 /// Sides of the polygon inscribed in a circle: its flats are within a
 /// quarter of a millimetre of a 1.5 m circle, and a centre it finds is
@@ -84,12 +84,18 @@ fn disc(radius_mm: f64, below_mm: f64) -> Footprint {
 }
 
 /// A centre where a disc of `radius_mm` fits on the floor free of
-/// obstacles below `below_mm`, checked against the true circle (the room's
-/// walls and each obstacle's outline at least the radius away); none if
-/// there is none.
-pub fn disc_centre(room: &Room, radius_mm: f64, below_mm: f64) -> Option<Point<f64>> {
+/// obstacles below `below_mm` (and, given a route's floor, where that
+/// floor meets it: a centre a route from a door can also be at), checked
+/// against the true circle (the room's walls and each obstacle's outline
+/// at least the radius away); none if there is none.
+pub fn disc_centre(
+    room: &Room,
+    radius_mm: f64,
+    below_mm: f64,
+    on: Option<&RouteFloor>,
+) -> Option<Point<f64>> {
     let footprint = disc(radius_mm, below_mm);
-    let region = whole(room, &footprint, 0.0);
+    let region = on_route(whole(room, &footprint, 0.0), on);
     let obstacles = FloorObstacles::new(room, &footprint);
     let clear = |c: Point<f64>| {
         let (x, y) = (c.x(), c.y());
@@ -115,6 +121,14 @@ pub fn disc_centre(room: &Room, radius_mm: f64, below_mm: f64) -> Option<Point<f
         .find(|&c| clear(c))
 }
 
+/// `region`'s parts a route's floor meets (all of it without one).
+fn on_route(region: MultiPolygon<f64>, on: Option<&RouteFloor>) -> MultiPolygon<f64> {
+    match on {
+        Some(route) => region.intersection(&route.pieces),
+        None => region,
+    }
+}
+
 /// Where a T-shaped turning space fits: within a square `square_mm` on a
 /// side, its bar (`arm_mm` deep) across one side of the square and its
 /// stem (`arm_mm` wide) from the bar's middle to the opposite side, on the
@@ -126,6 +140,7 @@ pub fn t_space(
     square_mm: f64,
     arm_mm: f64,
     below_mm: f64,
+    on: Option<&RouteFloor>,
 ) -> Option<(Point<f64>, f64)> {
     let h = square_mm / 2.0;
     let a = arm_mm / 2.0;
@@ -143,7 +158,7 @@ pub fn t_space(
     };
     (0..4).find_map(|k| {
         let heading = f64::from(k) * std::f64::consts::FRAC_PI_2;
-        let region = whole(room, &t, heading);
+        let region = on_route(whole(room, &t, heading), on);
         let centre = region.0.iter().find_map(|p| p.interior_point())?;
         Some((centre, heading))
     })
@@ -198,6 +213,124 @@ pub fn route_width(
     // The inscribed polygon lets a disc through a quarter of a millimetre
     // narrower than itself: to the millimetre, the way's width.
     lo.round()
+}
+
+/// Where a route `width_mm` wide from the room's doors gets to: the
+/// pieces of the floor (free below `below_mm`) where a disc that wide can
+/// be, joined to just inside a door.
+pub struct RouteFloor {
+    radius_mm: f64,
+    pieces: MultiPolygon<f64>,
+}
+
+impl RouteFloor {
+    /// None for a room without doors.
+    pub fn new(room: &Room, width_mm: f64, below_mm: f64) -> Option<Self> {
+        if room.doors.is_empty() {
+            return None;
+        }
+        let r = width_mm / 2.0;
+        let starts: Vec<Rect<f64>> = (room.doors.iter())
+            .filter_map(|d| doorway(room, d, r))
+            .collect();
+        let region = whole(room, &disc(r, below_mm), 0.0);
+        let pieces = (region.0.into_iter())
+            .filter(|piece| starts.iter().any(|s| piece.intersects(s)))
+            .collect();
+        Some(RouteFloor {
+            radius_mm: r,
+            pieces: MultiPolygon::new(pieces),
+        })
+    }
+
+    /// Whether the route's disc gets to overlap `to` (a clear floor
+    /// space), as `route_width` asks.
+    pub fn reaches(&self, to: &Polygon<f64>) -> bool {
+        let Some(target) = to.bounding_rect() else {
+            return false;
+        };
+        let r = Coord {
+            x: self.radius_mm,
+            y: self.radius_mm,
+        };
+        let reach = Rect::new(target.min() - r, target.max() + r);
+        self.pieces.0.iter().any(|piece| piece.intersects(&reach))
+    }
+}
+
+/// The room with the floor deeper than `deepest_mm` under each raised
+/// obstacle (one from `below_mm` up) taken: knee and toe clearance counts
+/// as floor only so deep under an element (ADA 306.2.2, 306.3.2), from
+/// each of its edges. Each such core is a box from the floor, named as
+/// the obstacle it is under.
+pub fn knee_limited(room: &Room, below_mm: f64, deepest_mm: f64) -> Room {
+    let mut limited = room.clone();
+    let cores = (room.boxes.iter())
+        .filter(|b| b.corner_mm.z >= below_mm)
+        .filter(|b| b.size_mm.x > 2.0 * deepest_mm && b.size_mm.y > 2.0 * deepest_mm)
+        .map(|b| {
+            let inset = b.rotation() * Vector2::new(deepest_mm, deepest_mm);
+            let mut core = b.clone();
+            core.corner_mm.x += inset.x;
+            core.corner_mm.y += inset.y;
+            core.corner_mm.z = 0.0;
+            core.size_mm.x -= 2.0 * deepest_mm;
+            core.size_mm.y -= 2.0 * deepest_mm;
+            core.size_mm.z = b.corner_mm.z + b.size_mm.z;
+            core
+        })
+        .collect::<Vec<BoxObstacle>>();
+    limited.boxes.extend(cores);
+    limited
+}
+
+/// A door's clear width: the widest stretch of its opening that nothing
+/// below `below_mm` stands in, within `depth_mm` inside the room.
+pub fn door_clear_width(room: &Room, door: &Door, depth_mm: f64, below_mm: f64) -> f64 {
+    let [lo, hi] = door.span_mm();
+    let (sx, sy) = (room.size_mm.x, room.size_mm.y);
+    let strip = match door.wall {
+        Wall::XMin => Rect::new(Coord { x: 0.0, y: lo }, Coord { x: depth_mm, y: hi }),
+        Wall::XMax => Rect::new(
+            Coord {
+                x: sx - depth_mm,
+                y: lo,
+            },
+            Coord { x: sx, y: hi },
+        ),
+        Wall::YMin => Rect::new(Coord { x: lo, y: 0.0 }, Coord { x: hi, y: depth_mm }),
+        _ => Rect::new(
+            Coord {
+                x: lo,
+                y: sy - depth_mm,
+            },
+            Coord { x: hi, y: sy },
+        ),
+    };
+    let along = |c: Coord<f64>| match door.wall {
+        Wall::XMin | Wall::XMax => c.y,
+        _ => c.x,
+    };
+    let strip = MultiPolygon::new(vec![strip.to_polygon()]);
+    let mut taken: Vec<(f64, f64)> = (room.boxes.iter())
+        .filter(|b| b.corner_mm.z < below_mm)
+        .filter_map(|b| {
+            let outline = Polygon::new(
+                LineString::from(super::obstacles::box_outline(b)),
+                Vec::new(),
+            );
+            let inside = strip.intersection(&MultiPolygon::new(vec![outline]));
+            let rect = inside.bounding_rect()?;
+            Some((along(rect.min()), along(rect.max())))
+        })
+        .collect();
+    taken.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let (mut widest, mut at) = (0.0_f64, lo);
+    for (from, to) in taken {
+        widest = widest.max(from - at);
+        at = at.max(to);
+    }
+    widest.max(hi - at)
 }
 
 /// Where the centre of a disc of radius `r` can be just inside `door`:
@@ -255,12 +388,12 @@ mod tests {
                 Vec::new(),
             )
         };
-        assert!(disc_centre(&corridor(1526.0), 762.5, 685.0).is_some());
-        assert!(disc_centre(&corridor(1524.0), 762.5, 685.0).is_none());
+        assert!(disc_centre(&corridor(1526.0), 762.5, 685.0, None).is_some());
+        assert!(disc_centre(&corridor(1524.0), 762.5, 685.0, None).is_none());
         // A counter with knee space under it (from 700 mm) leaves the floor.
         let mut raised = corridor(1000.0);
         raised.boxes[1].corner_mm.z = 700.0;
-        assert!(disc_centre(&raised, 762.5, 685.0).is_some());
+        assert!(disc_centre(&raised, 762.5, 685.0, None).is_some());
     }
 
     #[test]
@@ -268,7 +401,7 @@ mod tests {
         // A T in a 1525 mm square with 915 mm arms fits where a square
         // does; a 915 mm corridor crossing a 1525 mm one makes a T too.
         let open = room([1525.5, 1525.5], Vec::new(), Vec::new());
-        assert!(t_space(&open, 1525.0, 915.0, 685.0).is_some());
+        assert!(t_space(&open, 1525.0, 915.0, 685.0, None).is_some());
         // Fill the square's corners beside the stem: still a T.
         let corners = room(
             [1525.5, 1525.5],
@@ -278,7 +411,7 @@ mod tests {
             ],
             Vec::new(),
         );
-        assert!(t_space(&corners, 1525.0, 915.0, 685.0).is_some());
+        assert!(t_space(&corners, 1525.0, 915.0, 685.0, None).is_some());
         // Narrow the stem below 915 mm: no T.
         let narrow = room(
             [1525.5, 1525.5],
@@ -288,7 +421,7 @@ mod tests {
             ],
             Vec::new(),
         );
-        let found = t_space(&narrow, 1525.0, 915.0, 685.0);
+        let found = t_space(&narrow, 1525.0, 915.0, 685.0, None);
         assert!(found.is_none(), "{found:?}");
     }
 

@@ -15,7 +15,9 @@ mod region;
 mod routes;
 mod tiles;
 
-pub use clear::{disc_centre, route_width, t_space, FreeFloor};
+pub use clear::{
+    disc_centre, door_clear_width, knee_limited, route_width, t_space, FreeFloor, RouteFloor,
+};
 pub use footprint::{FloorPart, Footprint};
 pub use inside::Inside;
 pub use mesh_cells::{CELL_MM, FLOOR_TOLERANCE_MM};

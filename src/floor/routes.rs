@@ -32,6 +32,12 @@ use crate::scene::{BoxObstacle, Door, MeshObstacle, Room, Wall};
 /// The headings a turning base is followed at, besides its own and the
 /// doors': every 22.5 degrees.
 const HEADINGS: usize = 16;
+/// Turned boxes whose sides are this close in direction are followed at
+/// one heading (about a degree).
+const TURNED_MAX_APART_RAD: f64 = 0.02;
+/// At most this many directions of turned boxes are followed (each adds
+/// four headings).
+const TURNED_MOST: usize = 4;
 /// Headings closer than this are one.
 const SAME_HEADING_RAD: f64 = 1e-9;
 /// Room to spare at the far end of a door's passage, beyond what holds
@@ -95,7 +101,7 @@ impl Routes {
         }
         let space = Space::new(room, footprint);
         let inside = FloorObstacles::new(room, footprint);
-        let followed = followed_headings(footprint, headings, &room.doors);
+        let followed = followed_headings(footprint, headings, room);
         // The extended floor's pieces at each heading, which the joins and
         // the doors act on.
         let extended: Vec<MultiPolygon<f64>> = followed
@@ -408,16 +414,29 @@ fn walls_round(room: &Room, depth: f64) -> Vec<BoxObstacle> {
 }
 
 /// The headings followed: one for a base that does not turn; else every
-/// [`HEADINGS`]th of a turn, the base's own and each door's inward one,
-/// ascending in [0, 2 pi).
-fn followed_headings(footprint: &Footprint, headings: &[f64], doors: &[Door]) -> Vec<f64> {
+/// [`HEADINGS`]th of a turn, the base's own, each door's inward one, and
+/// the sides of the room's turned boxes (a counter set at 30 degrees makes
+/// a way at 30 degrees), ascending in [0, 2 pi).
+fn followed_headings(footprint: &Footprint, headings: &[f64], room: &Room) -> Vec<f64> {
     if !footprint.turns() {
         return vec![0.0];
     }
+    let quarter = TAU / 4.0;
+    let mut yaws: Vec<f64> = (room.boxes.iter())
+        .map(|b| b.yaw_rad.rem_euclid(quarter))
+        .filter(|y| *y > SAME_HEADING_RAD && quarter - *y > SAME_HEADING_RAD)
+        .collect();
+    yaws.sort_by(f64::total_cmp);
+    yaws.dedup_by(|a, b| (*a - *b).abs() <= TURNED_MAX_APART_RAD);
+    yaws.truncate(TURNED_MOST);
+    let turned = yaws
+        .into_iter()
+        .flat_map(|y| (0..4).map(move |k| y + f64::from(k) * quarter));
     let mut all: Vec<f64> = (0..HEADINGS)
         .map(|k| k as f64 * TAU / HEADINGS as f64)
         .chain(headings.iter().copied())
-        .chain(doors.iter().map(Door::inward_heading_rad))
+        .chain(room.doors.iter().map(Door::inward_heading_rad))
+        .chain(turned)
         .map(normalized)
         .collect();
     all.sort_by(f64::total_cmp);
@@ -532,7 +551,7 @@ mod tests {
     use super::*;
     use crate::scene::BoxObstacle;
     use geo::Contains;
-    use nalgebra::{Point3, Vector3};
+    use nalgebra::{Point3, Vector2, Vector3};
     use std::f64::consts::{FRAC_PI_2, PI};
 
     fn block(name: &str, corner: [f64; 2], size: [f64; 2]) -> BoxObstacle {
@@ -602,6 +621,42 @@ mod tests {
         );
         let wide = Routes::new(&divided(661.0), &chair(), &headings).unwrap();
         assert!(reaches(&wide, FRAC_PI_2, far.0, far.1), "through at 661 mm");
+    }
+
+    /// A room cut across by a wall set at 30 degrees, with a channel
+    /// `width` wide through it along 120 degrees (between the 112.5 and
+    /// 135 degrees every chair is followed at).
+    fn slanted(width: f64) -> Room {
+        let yaw = PI / 6.0;
+        let n = Vector2::new(yaw.cos(), yaw.sin());
+        let u = Vector2::new(-yaw.sin(), yaw.cos());
+        let centre = Vector2::new(2000.0, 3000.0);
+        let (big, long) = (5000.0, 1500.0);
+        let turned = |name: &str, corner: Vector2<f64>| BoxObstacle {
+            name: name.into(),
+            corner_mm: Point3::new(corner.x, corner.y, 0.0),
+            size_mm: Vector3::new(big, long, 900.0),
+            yaw_rad: yaw,
+        };
+        room(
+            [4000.0, 6000.0],
+            vec![
+                turned("right", centre + n * (width / 2.0) - u * (long / 2.0)),
+                turned("left", centre - n * (width / 2.0 + big) - u * (long / 2.0)),
+            ],
+            vec![door(Wall::YMin, 2000.0, 900.0)],
+        )
+    }
+
+    #[test]
+    fn a_way_between_turned_boxes_is_followed_at_their_heading() {
+        // 700 mm: the 660 mm chair fits along the channel, and 7.5 degrees
+        // off it needs 793 mm.
+        let routes = Routes::new(&slanted(700.0), &chair(), &[FRAC_PI_2]).unwrap();
+        assert!(reaches(&routes, FRAC_PI_2, 2000.0, 1000.0), "the near side");
+        assert!(reaches(&routes, FRAC_PI_2, 2000.0, 5200.0), "through");
+        let closed = Routes::new(&slanted(650.0), &chair(), &[FRAC_PI_2]).unwrap();
+        assert!(!reaches(&closed, FRAC_PI_2, 2000.0, 5200.0), "too narrow");
     }
 
     #[test]

@@ -1,38 +1,42 @@
 //! The 2010 ADA Standards for Accessible Design, checked on a room:
 //!
 //! - 304 turning space: a 1525 mm circle (304.3.1) or a T within a 1525 mm
-//!   square with 915 mm arms (304.3.2), knee and toe clearance allowed
-//!   (304.2: floor under obstacles from 685 mm up counts);
-//! - 404.2.3 each door's clear width, at least 815 mm (its declared width
-//!   taken as its clear width);
+//!   square with 915 mm arms (304.3.2), on floor a route from a door gets
+//!   to, knee and toe clearance allowed (304.2: floor under obstacles from
+//!   685 mm up counts, 635 mm deep from their edges, 306);
+//! - 404.2.3 each door's clear width, at least 815 mm (its opening less
+//!   what stands in it just inside);
 //! - for each element (target), a forward or a side approach that meets:
 //!   308 reach range (308.2.1 forward unobstructed 380-1220 mm; 308.2.2
 //!   forward over an obstruction 1220 mm up to 510 mm deep, 1120 mm up to
 //!   635 mm deep; 308.3.1 side 380-1220 mm, over an obstruction at most
 //!   255 mm deep and 865 mm high; 308.3.2 side over an obstruction 255-610
-//!   mm deep and at most 865 mm high, 1170 mm), 305 a 760 x 1220 mm clear
-//!   floor space (forward: its short side at the element; side: its long
-//!   side), 306 knee clearance under the obstruction where a forward reach
-//!   goes over one (at least 685 mm high, 280 mm deep and as deep as the
-//!   reach), and 403.5.1 a route at least 915 mm wide from a door to the
-//!   clear floor space (where the room has doors).
+//!   mm deep and at most 865 mm high, 1170 mm; never below 380 mm), 305 a
+//!   760 x 1220 mm clear floor space (forward: its short side at the
+//!   element; side: its long side), 306 knee clearance under the
+//!   obstruction where a forward reach goes over one (at least 685 mm
+//!   high, 280 mm deep and as deep as the reach), and 403.5.1 a route at
+//!   least 915 mm wide from a door to the clear floor space (where the room
+//!   has doors).
 //!
 //! Approaches are tried along the room's axes (a person facing an element
-//! from +x, -x, +y or -y, or beside it), the first that meets every rule
-//! is reported, else the one that fails fewest. Boxes only: a mesh is
-//! neither an obstruction nor measured (the report says so), though it
-//! does take floor.
+//! from +x, -x, +y or -y, or beside it), each held to every rule; the
+//! first that meets them all is reported, else the first that fails
+//! fewest. Boxes only: a mesh is not measured, and a reach it may stand in
+//! the way of fails saying so (the report notes it); it does take floor.
 
 use geo::{Coord, LineString, Polygon};
 use nalgebra::{Point3, Vector2};
 
-use super::elements::{approached, knee_depth, Approached};
-use crate::floor::{disc_centre, route_width, t_space, FreeFloor};
+use super::elements::{approached, crossing_within, knee_depth, Approached};
+use crate::floor::{
+    disc_centre, door_clear_width, knee_limited, route_width, t_space, FreeFloor, RouteFloor,
+};
 use crate::plugin::{
     Options, ParamSpec, Params, Plugin, Settings, SettingsError, Standard, StandardPlugin,
 };
-use crate::report::{ElementCheck, FloorShape, RuleCheck, StandardReport};
-use crate::scene::{Door, Room, Target};
+use crate::report::{mm, ElementCheck, FloorShape, RuleCheck, StandardReport};
+use crate::scene::{BoxObstacle, Door, Room, Target};
 
 /// The plugin `ada2010`.
 pub struct Ada2010;
@@ -51,6 +55,9 @@ const FLOOR_WIDTH: f64 = 760.0;
 const FLOOR_LENGTH: f64 = 1220.0;
 const KNEE_HIGH: f64 = 685.0;
 const KNEE_DEEP: f64 = 280.0;
+/// Knee and toe clearance deeper than this under an element is not
+/// floor space (306.2.2, 306.3.2).
+const KNEE_DEEPEST: f64 = 635.0;
 const TURNING: f64 = 1525.0;
 const TURNING_ARM: f64 = 915.0;
 const ROUTE: f64 = 915.0;
@@ -64,6 +71,11 @@ const SLIDE_STEP: f64 = 10.0;
 const NONE_MM: f64 = 1.0;
 /// Figures within this of a rule's meet it (rounding in the geometry).
 const EXACT_MM: f64 = 0.01;
+/// The longest route measured: wider counts as this wide.
+const ROUTE_MOST: f64 = 3000.0;
+/// How far inside the room a door's opening is looked at for what
+/// narrows it.
+const DOOR_REVEAL: f64 = 20.0;
 
 /// Which approaches the rules may use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -133,14 +145,18 @@ struct Checked(Approach);
 
 impl Standard for Checked {
     fn check(&self, room: &Room) -> StandardReport {
-        let floor = FreeFloor::new(room, KNEE_HIGH);
+        // Floor under an element counts only so deep (306).
+        let knees = knee_limited(room, KNEE_HIGH, KNEE_DEEPEST);
+        let floor = FreeFloor::new(&knees, KNEE_HIGH);
+        // A route's floor, to a rounded 915 mm (as `route` measures).
+        let routes = RouteFloor::new(room, ROUTE - 0.5, HEADROOM);
         let mut notes = Vec::new();
         if room.doors.is_empty() {
             notes.push("the room has no `door`: routes (403.5.1) are not checked".to_string());
         }
         if !room.meshes.is_empty() {
             notes.push(
-                "meshes are not measured as obstructions or knee space (boxes are)".to_string(),
+                "meshes are not measured as obstructions or knee space (boxes are): a reach a mesh may stand in the way of fails as not measured".to_string(),
             );
         }
         let report = StandardReport {
@@ -150,23 +166,34 @@ impl Standard for Checked {
             checks: 0,
             failed: 0,
             notes,
-            room_rules: std::iter::once(turning_space(room))
-                .chain(room.doors.iter().map(door_width))
+            room_rules: std::iter::once(turning_space(&knees, routes.as_ref()))
+                .chain(room.doors.iter().map(|d| door_width(room, d)))
                 .collect(),
-            elements: room
-                .targets
-                .iter()
-                .map(|t| element(room, &floor, t, self.0))
-                .collect(),
+            elements: {
+                let measure = Measure {
+                    room,
+                    floor: &floor,
+                    routes: routes.as_ref(),
+                    meshes: mesh_bounds(room),
+                };
+                room.targets
+                    .iter()
+                    .map(|t| element(&measure, t, self.0))
+                    .collect()
+            },
         };
         report.counted()
     }
 }
 
-/// 304: a 1525 mm circle, or else a T.
-fn turning_space(room: &Room) -> RuleCheck {
+/// 304: a 1525 mm circle, or else a T, on floor a route from a door gets
+/// to (where the room has doors).
+fn turning_space(room: &Room, routes: Option<&RouteFloor>) -> RuleCheck {
     let limit = format!("a {TURNING:.0} mm circle, or a T in a {TURNING:.0} mm square with {TURNING_ARM:.0} mm arms");
-    if let Some(c) = disc_centre(room, TURNING / 2.0, KNEE_HIGH) {
+    // Exactly the rule's figures hold.
+    let radius = TURNING / 2.0 - EXACT_MM;
+    let (square, arm) = (TURNING - 2.0 * EXACT_MM, TURNING_ARM - 2.0 * EXACT_MM);
+    if let Some(c) = disc_centre(room, radius, KNEE_HIGH, routes) {
         return RuleCheck {
             section: "304.3.1".into(),
             rule: "turning space".into(),
@@ -178,12 +205,12 @@ fn turning_space(room: &Room) -> RuleCheck {
             ),
             limit,
             shape: Some(FloorShape::Circle {
-                centre_mm: [c.x(), c.y()],
+                centre_mm: [mm(c.x()), mm(c.y())],
                 radius_mm: TURNING / 2.0,
             }),
         };
     }
-    if let Some((c, heading)) = t_space(room, TURNING, TURNING_ARM, KNEE_HIGH) {
+    if let Some((c, heading)) = t_space(room, square, arm, KNEE_HIGH, routes) {
         return RuleCheck {
             section: "304.3.2".into(),
             rule: "turning space".into(),
@@ -200,23 +227,37 @@ fn turning_space(room: &Room) -> RuleCheck {
             }),
         };
     }
+    let cut_off = routes.is_some()
+        && (disc_centre(room, radius, KNEE_HIGH, None).is_some()
+            || t_space(room, square, arm, KNEE_HIGH, None).is_some());
     RuleCheck {
         section: "304.3".into(),
         rule: "turning space".into(),
         ok: false,
-        measured: "neither a circle nor a T fits anywhere".into(),
+        measured: if cut_off {
+            format!("one fits only where no {ROUTE:.0} mm route from a door gets")
+        } else {
+            "neither a circle nor a T fits anywhere".into()
+        },
         limit,
         shape: None,
     }
 }
 
-/// 404.2.3: a door's clear width.
-fn door_width(door: &Door) -> RuleCheck {
+/// 404.2.3: a door's clear width: its opening, less what stands in it
+/// just inside.
+fn door_width(room: &Room, door: &Door) -> RuleCheck {
+    let clear = door_clear_width(room, door, DOOR_REVEAL, HEADROOM);
+    let narrowed = clear < door.width_mm - EXACT_MM;
     RuleCheck {
         section: "404.2.3".into(),
         rule: format!("door clear width, `{}`", door.name),
-        ok: door.width_mm >= DOOR,
-        measured: format!("{:.0} mm", door.width_mm),
+        ok: clear >= DOOR - EXACT_MM,
+        measured: if narrowed {
+            format!("{clear:.0} mm of its {:.0} mm opening clear", door.width_mm)
+        } else {
+            format!("{clear:.0} mm")
+        },
         limit: format!("at least {DOOR:.0} mm"),
         shape: None,
     }
@@ -240,7 +281,7 @@ fn t_outline(centre: [f64; 2], heading: f64) -> Vec<[f64; 2]> {
     let (s, c) = heading.sin_cos();
     corners
         .iter()
-        .map(|&(x, y)| [centre[0] + c * x - s * y, centre[1] + s * x + c * y])
+        .map(|&(x, y)| [mm(centre[0] + c * x - s * y), mm(centre[1] + s * x + c * y)])
         .collect()
 }
 
@@ -260,39 +301,63 @@ impl Usage {
     }
 }
 
+/// What an element's rules are measured on: the room, its free floor
+/// (knee clearance only so deep), the floor a route from a door gets to,
+/// and each mesh's bounds (not measured: a reach one may stand in the way
+/// of fails).
+struct Measure<'r> {
+    room: &'r Room,
+    floor: &'r FreeFloor,
+    routes: Option<&'r RouteFloor>,
+    meshes: Vec<BoxObstacle>,
+}
+
+/// Each mesh's bounding box, named as the mesh.
+fn mesh_bounds(room: &Room) -> Vec<BoxObstacle> {
+    (room.meshes.iter())
+        .filter_map(|m| {
+            let first = m.vertices_mm.first()?;
+            let (lo, hi) =
+                (m.vertices_mm.iter()).fold((*first, *first), |(lo, hi), v| (lo.inf(v), hi.sup(v)));
+            Some(BoxObstacle {
+                name: m.name.clone(),
+                corner_mm: lo,
+                size_mm: hi - lo,
+                yaw_rad: 0.0,
+            })
+        })
+        .collect()
+}
+
 /// The element `t`'s rules, by the approach that meets them (or fails
-/// fewest).
-fn element(room: &Room, floor: &FreeFloor, t: &Target, approach: Approach) -> ElementCheck {
+/// fewest, the first tried of those).
+fn element(m: &Measure<'_>, t: &Target, approach: Approach) -> ElementCheck {
     let at = t.position_mm;
     let sides = [Vector2::x(), -Vector2::x(), Vector2::y(), -Vector2::y()];
     let mut usages: Vec<Usage> = Vec::new();
     for toward in sides {
-        let a = approached(room, &at, toward);
+        let a = approached(m.room, &at, toward);
         if approach != Approach::Side {
-            usages.push(forward(room, floor, &at, &a));
+            usages.push(forward(m, &at, &a));
         }
         if approach != Approach::Forward {
-            usages.push(side(floor, &at, &a));
+            usages.push(side(m, &at, &a));
         }
     }
-    // The fewest failures first, in the order tried; a route only for the
-    // first few, where the room has doors.
-    usages.sort_by_key(Usage::failed);
-    let mut chosen = 0;
-    if !room.doors.is_empty() {
-        for (k, usage) in usages.iter_mut().enumerate().take(3) {
-            usage.rules.push(route(room, &usage.space));
-            if usage.failed() == 0 {
-                chosen = k;
-                break;
-            }
-        }
-        if usages[chosen].failed() > 0 {
-            let fewest = (0..usages.len().min(3)).min_by_key(|&k| usages[k].failed());
-            chosen = fewest.unwrap_or(0);
+    if let Some(routes) = m.routes {
+        for usage in &mut usages {
+            usage.rules.push(route_reaches(routes, &usage.space));
         }
     }
-    let usage = usages.swap_remove(chosen);
+    let chosen = (0..usages.len())
+        .min_by_key(|&k| usages[k].failed())
+        .unwrap_or(0);
+    let mut usage = usages.swap_remove(chosen);
+    // The chosen approach's route, measured.
+    if m.routes.is_some() {
+        usage.rules.pop();
+        usage.rules.push(route(m.room, &usage.space));
+    }
     ElementCheck {
         name: t.name.clone(),
         at_mm: [at.x, at.y, at.z],
@@ -302,6 +367,57 @@ fn element(room: &Room, floor: &FreeFloor, t: &Target, approach: Approach) -> El
         rules: usage.rules,
         people: Vec::new(),
     }
+}
+
+/// 403.5.1 for an approach not (yet) chosen: whether a 915 mm route gets
+/// to its clear floor space.
+fn route_reaches(routes: &RouteFloor, space: &Polygon<f64>) -> RuleCheck {
+    let ok = routes.reaches(space);
+    RuleCheck {
+        section: "403.5.1".into(),
+        rule: "route width".into(),
+        ok,
+        measured: if ok {
+            format!("a {ROUTE:.0} mm route gets there")
+        } else {
+            format!("no {ROUTE:.0} mm route from a door")
+        },
+        limit: format!("at least {ROUTE:.0} mm"),
+        shape: None,
+    }
+}
+
+/// The reach rule when something stands where the hand must pass: a box
+/// at the element's height, or a mesh (not measured) anywhere between the
+/// element and the person.
+fn in_the_way(
+    m: &Measure<'_>,
+    at: &Point3<f64>,
+    a: &Approached,
+    person_mm: f64,
+    section: &str,
+    rule: &str,
+) -> Option<RuleCheck> {
+    let measured = if let Some(i) = a.blocked_by(m.room, person_mm, KNEE_HIGH) {
+        format!("through `{}` at the element's height", m.room.boxes[i].name)
+    } else {
+        let mesh = m.meshes.iter().find(|b| {
+            b.corner_mm.z < at.z + NONE_MM
+                && crossing_within(b, at, a.toward, a.depth_mm + person_mm)
+        })?;
+        format!(
+            "not measured: mesh `{}` may stand in the way (meshes are not measured)",
+            mesh.name
+        )
+    };
+    Some(RuleCheck {
+        section: section.into(),
+        rule: rule.into(),
+        ok: false,
+        measured,
+        limit: "nothing in the way at its height".into(),
+        shape: None,
+    })
 }
 
 /// `z` in words.
@@ -320,19 +436,13 @@ fn facing(direction: Vector2<f64>) -> f64 {
 }
 
 /// A forward approach from `a.toward`: facing the element.
-fn forward(room: &Room, floor: &FreeFloor, at: &Point3<f64>, a: &Approached) -> Usage {
+fn forward(m: &Measure<'_>, at: &Point3<f64>, a: &Approached) -> Usage {
     let z = at.z;
     let mut rules = Vec::new();
     let mut knee_ok = false;
-    let reach = if let Some(i) = a.blocked_by {
-        RuleCheck {
-            section: "308.2".into(),
-            rule: "forward reach".into(),
-            ok: false,
-            measured: format!("through `{}` at the element's height", room.boxes[i].name),
-            limit: "nothing in the way at its height".into(),
-            shape: None,
-        }
+    let blocked = in_the_way(m, at, a, FLOOR_LENGTH, "308.2", "forward reach");
+    let reach = if let Some(blocked) = blocked {
+        blocked
     } else if a.depth_mm < NONE_MM {
         RuleCheck {
             section: "308.2.1".into(),
@@ -348,16 +458,16 @@ fn forward(room: &Room, floor: &FreeFloor, at: &Point3<f64>, a: &Approached) -> 
         } else {
             FORWARD_DEEP_HIGH
         };
-        let knee = knee(room, at, a);
+        let knee = knee(m.room, at, a);
         knee_ok = knee.ok;
         rules.push(knee);
         RuleCheck {
             section: "308.2.2".into(),
             rule: "forward reach over an obstruction".into(),
-            ok: a.depth_mm <= FORWARD_DEEPEST && z <= top,
+            ok: a.depth_mm <= FORWARD_DEEPEST && (LOW..=top).contains(&z),
             measured: format!("{} over {:.0} mm", high(z), a.depth_mm),
             limit: format!(
-                "at most {HIGH:.0} mm high up to {FORWARD_DEEP:.0} mm deep, {FORWARD_DEEP_HIGH:.0} mm up to {FORWARD_DEEPEST:.0} mm"
+                "at most {HIGH:.0} mm high up to {FORWARD_DEEP:.0} mm deep, {FORWARD_DEEP_HIGH:.0} mm up to {FORWARD_DEEPEST:.0} mm; at least {LOW:.0} mm"
             ),
             shape: None,
         }
@@ -371,7 +481,7 @@ fn forward(room: &Room, floor: &FreeFloor, at: &Point3<f64>, a: &Approached) -> 
         a.depth_mm + NONE_MM
     };
     let space = clear_floor(
-        floor,
+        m.floor,
         at,
         a.toward,
         near,
@@ -417,18 +527,12 @@ fn knee(room: &Room, at: &Point3<f64>, a: &Approached) -> RuleCheck {
 }
 
 /// A side (parallel) approach beside the element, from `a.toward`.
-fn side(floor: &FreeFloor, at: &Point3<f64>, a: &Approached) -> Usage {
+fn side(m: &Measure<'_>, at: &Point3<f64>, a: &Approached) -> Usage {
     let z = at.z;
     let (depth, top) = (a.depth_mm, a.height_mm);
-    let reach = if a.blocked_by.is_some() {
-        RuleCheck {
-            section: "308.3".into(),
-            rule: "side reach".into(),
-            ok: false,
-            measured: "through something at the element's height".into(),
-            limit: "nothing in the way at its height".into(),
-            shape: None,
-        }
+    let blocked = in_the_way(m, at, a, FLOOR_WIDTH, "308.3", "side reach");
+    let reach = if let Some(blocked) = blocked {
+        blocked
     } else if depth <= SIDE_SHALLOW {
         let obstructed = depth >= NONE_MM;
         RuleCheck {
@@ -449,16 +553,18 @@ fn side(floor: &FreeFloor, at: &Point3<f64>, a: &Approached) -> Usage {
         RuleCheck {
             section: "308.3.2".into(),
             rule: "side reach over an obstruction".into(),
-            ok: depth <= SIDE_DEEPEST && top <= SIDE_OBSTRUCTION_HIGH && z <= SIDE_DEEP_HIGH,
+            ok: depth <= SIDE_DEEPEST
+                && top <= SIDE_OBSTRUCTION_HIGH
+                && (LOW..=SIDE_DEEP_HIGH).contains(&z),
             measured: format!("{} over {depth:.0} mm, {top:.0} mm high", high(z)),
             limit: format!(
-                "at most {SIDE_DEEP_HIGH:.0} mm high, over at most {SIDE_DEEPEST:.0} mm and {SIDE_OBSTRUCTION_HIGH:.0} mm high"
+                "at most {SIDE_DEEP_HIGH:.0} mm high, over at most {SIDE_DEEPEST:.0} mm and {SIDE_OBSTRUCTION_HIGH:.0} mm high; at least {LOW:.0} mm"
             ),
             shape: None,
         }
     };
     let space = clear_floor(
-        floor,
+        m.floor,
         at,
         a.toward,
         depth + NONE_MM,
@@ -525,7 +631,9 @@ fn clear_floor(
     let found = slides.map(rect).find(|r| floor.holds(r));
     let ok = found.is_some();
     let space = found.unwrap_or_else(|| rect(0.0));
-    let points_mm = space.exterior().points().map(|p| [p.x(), p.y()]).collect();
+    let points_mm = (space.exterior().points())
+        .map(|p| [mm(p.x()), mm(p.y())])
+        .collect();
     let rule = RuleCheck {
         section: "305".into(),
         rule: format!("clear floor space, {approach}"),
@@ -548,7 +656,7 @@ fn route(room: &Room, space: &Polygon<f64>) -> RuleCheck {
         .iter()
         .map(|d| {
             (
-                route_width(room, d, space, HEADROOM, 3000.0),
+                route_width(room, d, space, HEADROOM, ROUTE_MOST),
                 d.name.as_str(),
             )
         })
@@ -557,12 +665,83 @@ fn route(room: &Room, space: &Polygon<f64>) -> RuleCheck {
         section: "403.5.1".into(),
         rule: "route width".into(),
         ok: width >= ROUTE,
-        measured: if width > 0.0 {
+        measured: if width >= ROUTE_MOST {
+            format!("at least {width:.0} mm, from door `{door}`")
+        } else if width > 0.0 {
             format!("{width:.0} mm at its narrowest, from door `{door}`")
         } else {
             "no way from a door".into()
         },
         limit: format!("at least {ROUTE:.0} mm"),
         shape: None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::MeshObstacle;
+    use nalgebra::Vector3;
+
+    /// A cube of `size` mm from `corner`, as a mesh.
+    fn cube(corner: [f64; 3], size: f64) -> MeshObstacle {
+        let vertices = (0..8)
+            .map(|k| {
+                Point3::new(
+                    corner[0] + size * f64::from(k & 1),
+                    corner[1] + size * f64::from((k >> 1) & 1),
+                    corner[2] + size * f64::from((k >> 2) & 1),
+                )
+            })
+            .collect();
+        let triangles = [
+            [0, 2, 1],
+            [1, 2, 3],
+            [4, 5, 6],
+            [5, 7, 6],
+            [0, 1, 4],
+            [1, 5, 4],
+            [2, 6, 3],
+            [3, 6, 7],
+            [0, 4, 2],
+            [2, 4, 6],
+            [1, 3, 5],
+            [3, 7, 5],
+        ];
+        MeshObstacle::new("crate".into(), vertices, &triangles)
+    }
+
+    #[test]
+    fn a_mesh_where_the_hand_passes_is_not_measured_and_fails() {
+        let mut room = Room {
+            name: "r".into(),
+            size_mm: Vector3::new(4000.0, 4000.0, 2500.0),
+            boxes: Vec::new(),
+            meshes: Vec::new(),
+            targets: Vec::new(),
+            surfaces: Vec::new(),
+            doors: Vec::new(),
+        };
+        let switch = Point3::new(0.0, 2000.0, 1000.0);
+        let reach_from_the_room = |room: &Room| {
+            let floor = FreeFloor::new(room, KNEE_HIGH);
+            let m = Measure {
+                room,
+                floor: &floor,
+                routes: None,
+                meshes: mesh_bounds(room),
+            };
+            forward(&m, &switch, &approached(room, &switch, Vector2::x())).rules[0].clone()
+        };
+        assert!(reach_from_the_room(&room).ok);
+        // A crate on the floor in front of the switch: the rule fails,
+        // saying the mesh is not measured.
+        room.meshes.push(cube([400.0, 1700.0, 0.0], 600.0));
+        let reach = reach_from_the_room(&room);
+        assert!(!reach.ok, "{reach:?}");
+        assert!(reach.measured.contains("mesh `crate`"), "{reach:?}");
+        // One across the room is not in the way.
+        room.meshes[0] = cube([3000.0, 1700.0, 0.0], 600.0);
+        assert!(reach_from_the_room(&room).ok);
     }
 }

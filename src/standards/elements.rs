@@ -20,19 +20,46 @@ pub struct Approached {
     pub height_mm: f64,
     /// The boxes reached over, by index.
     pub under: Vec<usize>,
-    /// A box at the element's own height stands between it and the
-    /// person: the hand would have to pass through it.
-    pub blocked_by: Option<usize>,
+    /// The board the element rests on, left out of the obstruction: it
+    /// stands over a lower one (a shelf over a counter), and the hand
+    /// reaches onto it, not over it.
+    pub support: Option<usize>,
+    /// The boxes the way crosses at the element's own height: how far
+    /// along the way each begins, and its index, nearest first.
+    pub at_height: Vec<(f64, usize)>,
+}
+
+impl Approached {
+    /// The first box at the element's height that stands where the hand
+    /// must pass: between the element and the obstruction's edge, or, if it
+    /// leaves the floor free (its underside at `free_above_mm` or higher),
+    /// over the person's place, up to `person_mm` beyond that edge (a box
+    /// on the floor there takes the person's floor space instead).
+    pub fn blocked_by(&self, room: &Room, person_mm: f64, free_above_mm: f64) -> Option<usize> {
+        self.at_height
+            .iter()
+            .find(|&&(t0, i)| {
+                t0 <= self.depth_mm + TOUCHING_MM
+                    || (room.boxes[i].corner_mm.z >= free_above_mm
+                        && t0 < self.depth_mm + person_mm)
+            })
+            .map(|&(_, i)| i)
+    }
 }
 
 /// Within this of each other, two distances along the way are one (an
 /// element resting on a board, a board butting another).
 const TOUCHING_MM: f64 = 1.0;
+/// A board whose top is at most this far below an element above it is
+/// what the element rests on (a mug's handle is some 60 mm above its
+/// shelf).
+const RESTING_MM: f64 = 150.0;
 
 /// `at` approached from `toward` (a unit vector on the floor, from the
 /// element towards the person): the boxes below the element that the
-/// way crosses one after another from the element (its obstruction), and
-/// the first box the way crosses at the element's height, if any.
+/// way crosses one after another from the element (its obstruction; the
+/// board the element rests on left out where it stands over a lower
+/// one), and the boxes the way crosses at the element's height.
 pub fn approached(room: &Room, at: &Point3<f64>, toward: Vector2<f64>) -> Approached {
     let origin = at.xy().coords;
     let mut crossed: Vec<(f64, f64, usize)> = room
@@ -43,14 +70,31 @@ pub fn approached(room: &Room, at: &Point3<f64>, toward: Vector2<f64>) -> Approa
         .filter(|&(_, t1, _)| t1 > TOUCHING_MM)
         .collect();
     crossed.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.2.cmp(&b.2)));
+    let first = obstruction(room, at, toward, &crossed, None);
+    match support(room, at, &first) {
+        Some(board) => obstruction(room, at, toward, &crossed, Some(board)),
+        None => first,
+    }
+}
+
+/// The obstruction the way crosses (leaving out `skip`), and what it
+/// crosses at the element's height.
+fn obstruction(
+    room: &Room,
+    at: &Point3<f64>,
+    toward: Vector2<f64>,
+    crossed: &[(f64, f64, usize)],
+    skip: Option<usize>,
+) -> Approached {
     let mut approached = Approached {
         toward,
         depth_mm: 0.0,
         height_mm: 0.0,
         under: Vec::new(),
-        blocked_by: None,
+        support: skip,
+        at_height: Vec::new(),
     };
-    for &(t0, t1, i) in &crossed {
+    for &(t0, t1, i) in crossed.iter().filter(|c| Some(c.2) != skip) {
         let b = &room.boxes[i];
         let (bottom, top) = (b.corner_mm.z, b.corner_mm.z + b.size_mm.z);
         if top <= at.z + TOUCHING_MM {
@@ -61,11 +105,48 @@ pub fn approached(room: &Room, at: &Point3<f64>, toward: Vector2<f64>) -> Approa
                 approached.height_mm = approached.height_mm.max(top);
                 approached.under.push(i);
             }
-        } else if bottom < at.z - TOUCHING_MM && approached.blocked_by.is_none() {
-            approached.blocked_by = Some(i);
+        } else if bottom < at.z - TOUCHING_MM {
+            approached.at_height.push((t0.max(0.0), i));
         }
     }
     approached
+}
+
+/// The board under the element that it rests on, where the obstruction
+/// also holds a lower box with room between the two (a shelf over a
+/// counter).
+fn support(room: &Room, at: &Point3<f64>, a: &Approached) -> Option<usize> {
+    let top = |i: usize| room.boxes[i].corner_mm.z + room.boxes[i].size_mm.z;
+    let board = a
+        .under
+        .iter()
+        .copied()
+        .filter(|&i| box_holds(&room.boxes[i], at.xy().coords))
+        .filter(|&i| top(i) >= at.z - RESTING_MM)
+        .max_by(|&i, &j| top(i).total_cmp(&top(j)))?;
+    let bottom = room.boxes[board].corner_mm.z;
+    a.under
+        .iter()
+        .any(|&i| i != board && top(i) < bottom - TOUCHING_MM)
+        .then_some(board)
+}
+
+/// Whether the box's outline from above holds the point.
+fn box_holds(b: &BoxObstacle, p: Vector2<f64>) -> bool {
+    let local = b.rotation().inverse() * (p - b.corner_mm.xy().coords);
+    (-TOUCHING_MM..=b.size_mm.x + TOUCHING_MM).contains(&local.x)
+        && (-TOUCHING_MM..=b.size_mm.y + TOUCHING_MM).contains(&local.y)
+}
+
+/// Whether the way from `at` along `toward` crosses the box's outline
+/// from above within `within_mm` of the element.
+pub fn crossing_within(
+    b: &BoxObstacle,
+    at: &Point3<f64>,
+    toward: Vector2<f64>,
+    within_mm: f64,
+) -> bool {
+    crossing(b, at.xy().coords, toward).is_some_and(|(t0, t1)| t1 > 0.0 && t0 < within_mm)
 }
 
 /// Where the ray from `origin` along `dir` (on the floor) enters and
@@ -170,7 +251,7 @@ mod tests {
         assert!((from_room.depth_mm - 300.0).abs() < 1e-9);
         assert_eq!(from_room.height_mm, 900.0);
         assert_eq!(from_room.under, [0]);
-        assert_eq!(from_room.blocked_by, None);
+        assert_eq!(from_room.blocked_by(&room, 1220.0, 685.0), None);
         // From the wall's side the wall is in the way: nothing is crossed.
         let from_wall = approached(&room, &cup, -Vector2::x());
         assert!((from_wall.depth_mm - 300.0).abs() < 1e-9);
@@ -182,11 +263,14 @@ mod tests {
         // Inside the wall cabinet, at its height: the cabinet is in the way.
         let inside = Point3::new(200.0, 1500.0, 1600.0);
         let a = approached(&room, &inside, Vector2::x());
-        assert_eq!(a.blocked_by, Some(1));
+        assert_eq!(a.blocked_by(&room, 1220.0, 685.0), Some(1));
         // A handle on the counter's front: nothing to reach over.
         let handle = Point3::new(600.0, 1500.0, 700.0);
         let a = approached(&room, &handle, Vector2::x());
-        assert_eq!((a.depth_mm, a.blocked_by), (0.0, None));
+        assert_eq!(
+            (a.depth_mm, a.blocked_by(&room, 1220.0, 685.0)),
+            (0.0, None)
+        );
     }
 
     #[test]
@@ -205,5 +289,44 @@ mod tests {
         let a = approached(&open, &tap, Vector2::x());
         let depth = knee_depth(&open, &tap, Vector2::x(), a.depth_mm, 685.0);
         assert!((depth - 600.0).abs() < 1e-9, "{depth}");
+    }
+
+    #[test]
+    fn only_what_stands_where_the_hand_passes_blocks() {
+        let mut room = kitchen();
+        // A tall cupboard across the room, 2 m from the counter, at the
+        // cup's height: not in the way.
+        room.boxes.push(block(
+            "cupboard",
+            [2600.0, 0.0, 0.0],
+            [600.0, 3000.0, 2000.0],
+        ));
+        let cup = Point3::new(300.0, 1500.0, 960.0);
+        let a = approached(&room, &cup, Vector2::x());
+        assert_eq!(a.at_height.len(), 1);
+        assert_eq!(a.blocked_by(&room, 1220.0, 685.0), None);
+        // A shelf hung at the cup's height over where the person sits
+        // (the floor under it free): in the way.
+        room.boxes
+            .push(block("hung", [900.0, 0.0, 900.0], [200.0, 3000.0, 200.0]));
+        let a = approached(&room, &cup, Vector2::x());
+        assert_eq!(a.blocked_by(&room, 1220.0, 685.0), Some(4));
+    }
+
+    #[test]
+    fn a_shelf_over_a_counter_is_reached_onto_not_over() {
+        let mut room = kitchen();
+        room.boxes
+            .push(block("board", [0.0, 0.0, 1100.0], [350.0, 3000.0, 20.0]));
+        // A jar on the board, 60 mm up: the obstruction is the counter.
+        let jar = Point3::new(175.0, 1500.0, 1180.0);
+        let a = approached(&room, &jar, Vector2::x());
+        assert_eq!(a.support, Some(3));
+        assert_eq!(a.under, [0]);
+        assert_eq!(a.height_mm, 900.0);
+        assert!((a.depth_mm - 425.0).abs() < 1e-9);
+        // A cup on the counter itself: the counter is the obstruction.
+        let cup = Point3::new(300.0, 1500.0, 960.0);
+        assert_eq!(approached(&room, &cup, Vector2::x()).support, None);
     }
 }
