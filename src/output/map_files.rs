@@ -435,6 +435,13 @@ fn axes(s: &mut String, m: &Picture, scale: &Scale) {
     );
     let step = nice_step(TICK_GAP_PX / scale.px_per_mm);
     let (bottom, left) = (MARGIN + size.y, MARGIN);
+    // The picture runs along -x or -y where the room's coordinate
+    // decreases to the right: label the room's coordinate.
+    let sign = if m.view == "plan" || increasing(&Frame::of(m)) {
+        1.0
+    } else {
+        -1.0
+    };
     let mut x_mm = (scale.lo.x / step).ceil() * step;
     while x_mm <= scale.hi.x {
         let x = scale.x(x_mm);
@@ -443,7 +450,7 @@ fn axes(s: &mut String, m: &Picture, scale: &Scale) {
             r#"<line x1="{x:.1}" y1="{bottom:.1}" x2="{x:.1}" y2="{:.1}" stroke="black"/><text x="{x:.1}" y="{:.1}" text-anchor="middle">{x_mm:.0}</text>"#,
             bottom + 5.0,
             bottom + 18.0,
-            x_mm = x_mm + 0.0, // no "-0"
+            x_mm = sign * x_mm + 0.0, // no "-0"
         );
         x_mm += step;
     }
@@ -461,13 +468,13 @@ fn axes(s: &mut String, m: &Picture, scale: &Scale) {
         y_mm += step;
     }
     let (right_name, up_name) = if m.view == "plan" {
-        ("x", "y")
+        ("x (mm)", "y")
     } else {
         (along_name(m), "height z")
     };
     let _ = writeln!(
         s,
-        r#"<text x="{:.1}" y="{:.1}" text-anchor="middle">{right_name} (mm)</text>"#,
+        r#"<text x="{:.1}" y="{:.1}" text-anchor="middle">{right_name}</text>"#,
         MARGIN + size.x / 2.0,
         bottom + 40.0
     );
@@ -484,12 +491,23 @@ fn along_name(m: &Picture) -> &'static str {
     let frame = Frame::of(m);
     match (
         frame.right.x.abs() >= frame.right.y.abs(),
-        frame.right.x + frame.right.y >= 0.0,
+        increasing(&frame),
     ) {
-        (true, true) => "x",
-        (true, false) => "x, decreasing to the right,",
-        (false, true) => "y",
-        (false, false) => "y, decreasing to the right,",
+        (true, true) => "x (mm)",
+        (true, false) => "x (mm, decreasing to the right)",
+        (false, true) => "y (mm)",
+        (false, false) => "y (mm, decreasing to the right)",
+    }
+}
+
+/// Whether the room's coordinate the picture's right mostly runs along
+/// grows to the right.
+fn increasing(frame: &Frame) -> bool {
+    let r = frame.right;
+    if r.x.abs() >= r.y.abs() {
+        r.x >= 0.0
+    } else {
+        r.y >= 0.0
     }
 }
 

@@ -112,19 +112,25 @@ impl MapCell {
 }
 
 impl MapReport {
-    /// The surface's unit normal on the side it is used from: towards
-    /// where the base stood for its first point (a hand touches a
-    /// cabinet's front from the room, not from inside the cabinet).
+    /// The surface's unit normal on the side it is used from: the side
+    /// where the base stood for most of its points (a hand touches a
+    /// cabinet's front from the room, not from inside the cabinet; the
+    /// base for a point at its corner may stand beside it).
     pub fn seen_from(&self) -> [f64; 3] {
         let (u, v) = (Vector3::from(self.u_mm), Vector3::from(self.v_mm));
-        let mut normal = u.cross(&v).try_normalize(1e-12).unwrap_or_else(Vector3::z);
-        if let Some(c) = self.cells.first() {
-            let base = Vector3::new(c.base_mm_deg[0], c.base_mm_deg[1], c.point_mm[2]);
-            if normal.dot(&(base - Vector3::from(c.point_mm))) < 0.0 {
-                normal = -normal;
-            }
+        let normal = u.cross(&v).try_normalize(1e-12).unwrap_or_else(Vector3::z);
+        let votes: i64 = (self.cells.iter())
+            .map(|c| {
+                let base = Vector3::new(c.base_mm_deg[0], c.base_mm_deg[1], c.point_mm[2]);
+                let side = normal.dot(&(base - Vector3::from(c.point_mm)));
+                i64::from(side > 0.0) - i64::from(side < 0.0)
+            })
+            .sum();
+        if votes < 0 {
+            (-normal).into()
+        } else {
+            normal.into()
         }
-        normal.into()
     }
 
     /// How a point that counts is described: `reached`/`reachable`, or

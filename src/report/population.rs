@@ -321,7 +321,7 @@ impl ReportKind for PopulationReport {
         if !self.excluded.is_empty() {
             let _ = writeln!(
                 out,
-                "  not accommodated: {} ({} fit nowhere in the room)",
+                "  not accommodated: {} ({} fit nowhere in the room or cannot get in)",
                 self.excluded.len(),
                 self.not_placed
             );

@@ -433,6 +433,8 @@ fn facing(direction: Vector2<f64>) -> f64 {
         .to_degrees()
         .rem_euclid(360.0)
         .round()
+        // Not -0.
+        + 0.0
 }
 
 /// A forward approach from `a.toward`: facing the element.
