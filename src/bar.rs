@@ -19,7 +19,8 @@ pub struct Bar {
 }
 
 impl Bar {
-    pub fn new() -> Self {
+    /// A bar that may be shown (`shown`: not with `--quiet`).
+    pub fn new(shown: bool) -> Self {
         let bar = ProgressBar::with_draw_target(Some(0), ProgressDrawTarget::hidden());
         if let Ok(style) = ProgressStyle::with_template(
             "{bar:40} {pos}/{len} points  {elapsed_precise} (about {eta} left)",
@@ -29,7 +30,7 @@ impl Bar {
         Bar {
             bar,
             started: Instant::now(),
-            terminal: std::io::stderr().is_terminal(),
+            terminal: shown && std::io::stderr().is_terminal(),
             shown: AtomicBool::new(false),
         }
     }

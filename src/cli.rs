@@ -8,27 +8,65 @@
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 
-use clap::{Args, Parser, Subcommand};
+use clap::{ArgMatches, Args, ColorChoice, CommandFactory, FromArgMatches, Parser, Subcommand};
 use reach::escape::escaped;
 use reach::limits::{CEILINGS, DEFAULTS};
 use reach::plugin::{PluginKind, Registry};
-use reach::{Diagnostics, Input, Limits};
+use reach::{DiagnosticStyle, Diagnostics, Input, Limits};
+
+/// What `reach --help` and the man page say of exit codes.
+const EXIT_STATUS: &str = "Exit status: 0 when the scenario evaluated and its expects are met \
+(an unreachable target, or a chair that fits nowhere, is an answer); 1 when the input has \
+errors, or `reach test` has a failing scenario; 2 on usage errors; 3 when the scenario ran but \
+an expect is not met (unless --no-expect), or with --strict a base fits nowhere.";
 
 #[derive(Parser)]
 #[command(
     name = "reach",
     version,
-    about = "Can this person reach and see the things in this room?"
+    about = "Can this person reach and see the things in this room?",
+    after_long_help = EXIT_STATUS
 )]
 struct Cli {
+    /// When to colour diagnostics and help: auto colours a terminal unless
+    /// NO_COLOR is set
+    #[arg(long, value_name = "WHEN", global = true, default_value = "auto")]
+    color: ColorChoice,
     #[command(subcommand)]
     command: Command,
+}
+
+/// How failures are written, for `run`, `check` and `test`.
+#[derive(Args)]
+#[command(next_help_heading = "Output")]
+struct Reporting {
+    /// How diagnostics are written: human (on standard error), json (one
+    /// object per line) or github (workflow commands), both on standard
+    /// output
+    #[arg(long, value_name = "FORMAT", default_value = "human")]
+    diagnostics: DiagnosticsFormat,
+    /// Print only failures (diagnostics, expectations not met); the exit
+    /// code says the rest
+    #[arg(short, long)]
+    quiet: bool,
+}
+
+#[derive(Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+enum DiagnosticsFormat {
+    Human,
+    Json,
+    Github,
 }
 
 #[derive(Subcommand)]
 enum Command {
     /// Evaluate a scenario and print its report.
-    Run(Evaluate),
+    Run {
+        #[command(flatten)]
+        evaluate: Evaluate,
+        #[command(flatten)]
+        reporting: Reporting,
+    },
     /// Evaluate a scenario, then again whenever it or a file it uses changes.
     Watch(Evaluate),
     /// Parse and check a scenario without running it.
@@ -37,6 +75,8 @@ enum Command {
         file: PathBuf,
         #[command(flatten)]
         limits: LimitArgs,
+        #[command(flatten)]
+        reporting: Reporting,
     },
     /// Run every scenario under the paths as a test: its `expect`s, and
     /// its answers against its golden report (NAME.golden.json beside it).
@@ -63,11 +103,27 @@ enum Command {
         tolerance_deg: f64,
         #[command(flatten)]
         limits: LimitArgs,
+        #[command(flatten)]
+        reporting: Reporting,
     },
     /// List every plugin with its parameters.
     Plugins,
     /// List the standard library: mannequins, profiles, bases, visions.
     Stdlib,
+    /// Print the JSON Schema of the report (`--format json`, `--out`).
+    Schema,
+    /// Print a shell completion script (see the README for where it goes).
+    Completions {
+        /// The shell.
+        shell: clap_complete::Shell,
+    },
+    /// Print the man page (roff; `reach man | man -l -`), or write every
+    /// command's page into a directory.
+    Man {
+        /// Write reach.1, reach-run.1, ... into DIR (made if missing).
+        #[arg(long, value_name = "DIR")]
+        out: Option<PathBuf>,
+    },
 }
 
 /// What `run` and `watch` take.
@@ -143,10 +199,14 @@ impl LimitArgs {
 }
 
 pub fn main() -> i32 {
-    let cli = Cli::parse();
+    let cli = parse();
     let registry = Registry::builtin();
+    let colour = cli.color;
     match cli.command {
-        Command::Run(e) => run(&registry, &e),
+        Command::Run {
+            evaluate,
+            reporting,
+        } => run(&registry, &evaluate, &Shown::new(&reporting, colour)),
         Command::Watch(e) => {
             let Some(formatter) = registry.format(&e.format).cloned() else {
                 return unknown_format(&registry, &e.format);
@@ -157,10 +217,17 @@ pub fn main() -> i32 {
                 (&limits, &e.limits.allow_path),
                 &e.file,
                 formatter.as_ref(),
-                e.out.as_deref(),
+                (
+                    e.out.as_deref(),
+                    colours(colour, std::io::stdout().is_terminal()),
+                ),
             )
         }
-        Command::Check { file, limits } => check(&registry, &limits, &file),
+        Command::Check {
+            file,
+            limits,
+            reporting,
+        } => check(&registry, &limits, &file, &Shown::new(&reporting, colour)),
         Command::Test {
             paths,
             update,
@@ -169,6 +236,7 @@ pub fn main() -> i32 {
             tolerance_mm,
             tolerance_deg,
             limits,
+            reporting,
         } => crate::test_command::test(
             &registry,
             crate::test_command::TestArgs {
@@ -182,6 +250,8 @@ pub fn main() -> i32 {
                 },
                 limits: limits.limits(),
                 allowed: limits.allow_path,
+                quiet: reporting.quiet,
+                style: Shown::new(&reporting, colour).style,
             },
         ),
         Command::Plugins => {
@@ -192,10 +262,96 @@ pub fn main() -> i32 {
             print!("{}", reach::std_modules::listing());
             0
         }
+        Command::Schema => {
+            print!("{}", reach::report::schema_json());
+            0
+        }
+        Command::Completions { shell } => {
+            clap_complete::generate(shell, &mut Cli::command(), "reach", &mut std::io::stdout());
+            0
+        }
+        Command::Man { out } => man(out.as_deref()),
     }
 }
 
-fn run(registry: &Registry, e: &Evaluate) -> i32 {
+/// `reach man`: the top page on standard output, or every page into `out`.
+fn man(out: Option<&Path>) -> i32 {
+    let written = crate::man_pages::pages(Cli::command()).and_then(|pages| match out {
+        None => std::io::stdout().write_all(&pages[0].1),
+        Some(dir) => reach::output::write_set(dir, &pages).map_err(std::io::Error::other),
+    });
+    match written {
+        Ok(()) => 0,
+        Err(e) => {
+            eprintln!("error: cannot write the man pages: {e}");
+            1
+        }
+    }
+}
+
+/// The command line, with clap's own help and errors coloured as
+/// `--color` says (clap reads NO_COLOR itself for `auto`).
+fn parse() -> Cli {
+    let choice = std::env::args_os()
+        .skip(1)
+        .take_while(|a| a != "--")
+        .collect::<Vec<_>>()
+        .windows(2)
+        .find_map(|w| (w[0] == "--color").then(|| w[1].to_string_lossy().into_owned()))
+        .or_else(|| std::env::args().find_map(|a| a.strip_prefix("--color=").map(str::to_string)));
+    let colour = match choice.as_deref() {
+        Some("always") => ColorChoice::Always,
+        Some("never") => ColorChoice::Never,
+        _ => ColorChoice::Auto,
+    };
+    let matches: ArgMatches = Cli::command().color(colour).get_matches();
+    Cli::from_arg_matches(&matches).unwrap_or_else(|e| e.exit())
+}
+
+/// Whether to colour a stream: `--color always` or `never` as said; `auto`
+/// colours a terminal unless NO_COLOR is set to anything but nothing.
+fn colours(choice: ColorChoice, terminal: bool) -> bool {
+    match choice {
+        ColorChoice::Always => true,
+        ColorChoice::Never => false,
+        ColorChoice::Auto => terminal && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty()),
+    }
+}
+
+/// How `run` and `check` show what they found.
+struct Shown {
+    style: DiagnosticStyle,
+    quiet: bool,
+}
+
+impl Shown {
+    fn new(r: &Reporting, colour: ColorChoice) -> Self {
+        let style = match r.diagnostics {
+            DiagnosticsFormat::Human => DiagnosticStyle::Human {
+                colour: colours(colour, std::io::stderr().is_terminal()),
+            },
+            DiagnosticsFormat::Json => DiagnosticStyle::Json,
+            DiagnosticsFormat::Github => DiagnosticStyle::Github,
+        };
+        Shown {
+            style,
+            quiet: r.quiet,
+        }
+    }
+
+    /// Write the diagnostics: human ones on standard error, those for
+    /// programs on standard output. Exit code 1.
+    fn diagnostics(&self, d: &Diagnostics) -> i32 {
+        let text = d.render_in(self.style);
+        match self.style {
+            DiagnosticStyle::Human { .. } => eprint!("{text}"),
+            _ => print!("{text}"),
+        }
+        1
+    }
+}
+
+fn run(registry: &Registry, e: &Evaluate, shown: &Shown) -> i32 {
     let Some(formatter) = registry.format(&e.format) else {
         return unknown_format(registry, &e.format);
     };
@@ -204,24 +360,26 @@ fn run(registry: &Registry, e: &Evaluate) -> i32 {
     let (_, checked) = reach::check_allowing(Input::Path(&e.file), registry, &limits, allowed);
     let scenario = match checked {
         Ok(s) => s,
-        Err(d) => return report_diagnostics(&d),
+        Err(d) => return shown.diagnostics(&d),
     };
-    let bar = crate::bar::Bar::new();
+    let bar = crate::bar::Bar::new(!shown.quiet);
     let report = reach::run_with_progress(&scenario, &bar);
     bar.clear();
     if let Some(dir) = &e.out {
         if let Err(error) =
             crate::signals::whole(|| reach::output::write_outputs(&report, &scenario, dir))
         {
-            return report_diagnostics(&Diagnostics::single(error));
+            return shown.diagnostics(&Diagnostics::single(error));
         }
     }
     let mut stdout = std::io::stdout().lock();
-    let _ = stdout.write_all(
-        formatter
-            .render(&report, &scenario.format_scene())
-            .as_bytes(),
-    );
+    if !shown.quiet {
+        let _ = stdout.write_all(
+            formatter
+                .render(&report, &scenario.format_scene())
+                .as_bytes(),
+        );
+    }
     let not_placed = report.tasks.iter().any(|t| match t {
         reach::report::TaskReport::NotPlaced(_) => true,
         reach::report::TaskReport::Population(p) => p.not_placed > 0,
@@ -234,8 +392,19 @@ fn run(registry: &Registry, e: &Evaluate) -> i32 {
         return NOT_AS_EXPECTED;
     }
     if !e.no_expect && !report.expectations_met() {
-        let missed = report.expectations.iter().filter(|x| !x.met).count();
-        eprintln!("error: {missed} of the scenario's expectations not met");
+        let missed: Vec<_> = report.expectations.iter().filter(|x| !x.met).collect();
+        for x in &missed {
+            let line = match shown.style {
+                DiagnosticStyle::Github => x.annotation(),
+                _ if shown.quiet => format!("{}\n", x.not_met_line()),
+                _ => continue,
+            };
+            let _ = stdout.write_all(line.as_bytes());
+        }
+        eprintln!(
+            "error: {} of the scenario's expectations not met",
+            missed.len()
+        );
         return NOT_AS_EXPECTED;
     }
     0
@@ -255,24 +424,19 @@ fn unknown_format(registry: &Registry, format: &str) -> i32 {
     2
 }
 
-fn check(registry: &Registry, args: &LimitArgs, file: &Path) -> i32 {
+fn check(registry: &Registry, args: &LimitArgs, file: &Path, shown: &Shown) -> i32 {
     let limits = args.limits();
     let (_, checked) =
         reach::check_allowing(Input::Path(file), registry, &limits, &args.allow_path);
     match checked {
+        Ok(_) if shown.quiet => 0,
         Ok(s) => {
-            let shown = file.display().to_string();
-            println!("{}: ok ({} tasks)", escaped(&shown), s.tasks.len());
+            let name = file.display().to_string();
+            println!("{}: ok ({} tasks)", escaped(&name), s.tasks.len());
             0
         }
-        Err(d) => report_diagnostics(&d),
+        Err(d) => shown.diagnostics(&d),
     }
-}
-
-fn report_diagnostics(d: &Diagnostics) -> i32 {
-    let plain = !std::io::stderr().is_terminal() || std::env::var_os("NO_COLOR").is_some();
-    eprint!("{}", d.render(plain));
-    1
 }
 
 fn plugins_listing(registry: &Registry) -> String {

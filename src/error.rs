@@ -10,7 +10,7 @@ use thiserror::Error as ThisError;
 
 use crate::escape::escaped;
 use crate::excerpt::{Excerpt, CONTEXT_LINES};
-use crate::source::Sources;
+use crate::source::{Place, Sources};
 use crate::span::{Name, Span};
 
 /// What went wrong. Each variant carries what the message needs.
@@ -366,6 +366,9 @@ struct ErrorData {
     /// What the diagnostic shows of its file, and its labels (the span's,
     /// then the notes') moved onto that; set by [`Diagnostics::attach`].
     shown: Option<(Excerpt, Vec<SourceSpan>)>,
+    /// Where the span, then each note, is in its file; set by
+    /// [`Diagnostics::attach`].
+    places: Vec<Place>,
 }
 
 impl Error {
@@ -375,6 +378,7 @@ impl Error {
             span: Some(span),
             notes: Vec::new(),
             shown: None,
+            places: Vec::new(),
         }))
     }
 
@@ -385,6 +389,7 @@ impl Error {
             span: None,
             notes: Vec::new(),
             shown: None,
+            places: Vec::new(),
         }))
     }
 
@@ -412,6 +417,15 @@ impl Error {
         self.0.span
     }
 
+    /// Its labels with where each is: the error's own (its label), then
+    /// each note's; empty for an error in no file, or before
+    /// [`Diagnostics::attach`].
+    pub fn placed_labels(&self) -> Vec<(&Place, String)> {
+        let texts = std::iter::once(self.0.kind.label())
+            .chain(self.0.notes.iter().map(|(_, text)| text.clone()));
+        self.0.places.iter().zip(texts).collect()
+    }
+
     fn attach(&mut self, sources: &Sources) {
         let data = &mut *self.0;
         if let Some(span) = data.span {
@@ -423,6 +437,7 @@ impl Error {
                     .map(|s| (s.start as usize, s.end as usize))
                     .collect();
                 data.shown = Some(Excerpt::new(file, &escaped(&file.name), &labels));
+                data.places = labels.iter().map(|&(a, b)| file.place(a, b)).collect();
             }
         }
     }

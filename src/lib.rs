@@ -31,6 +31,7 @@ pub mod geometry;
 pub mod kinematics;
 pub mod limits;
 mod loader;
+pub mod machine_diagnostics;
 pub mod meshfile;
 mod names;
 pub mod options;
@@ -57,6 +58,7 @@ pub mod vision;
 pub use error::{Diagnostics, Error, ErrorKind};
 pub use limits::Limits;
 pub use loader::Input;
+pub use machine_diagnostics::DiagnosticStyle;
 
 use plugin::Registry;
 use report::Report;

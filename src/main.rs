@@ -2,6 +2,7 @@
 
 mod bar;
 mod cli;
+mod man_pages;
 mod signals;
 mod test_command;
 mod watch;

@@ -38,6 +38,50 @@ impl SourceFile {
             std::iter::once(0).chain(after_feeds).collect()
         })
     }
+
+    /// The 1-based line and column (in characters) of the byte `offset`,
+    /// as editors and CI annotations count them.
+    pub fn line_column(&self, offset: usize) -> (usize, usize) {
+        let offset = offset.min(self.text.len());
+        let starts = self.line_starts();
+        let line = starts.partition_point(|&s| s <= offset).max(1);
+        let start = starts[line - 1];
+        let before = (self.text.get(start..offset))
+            .map(|t| t.chars().count())
+            .unwrap_or(offset - start);
+        (line, before + 1)
+    }
+}
+
+/// Where a span of a file is, as editors count: 1-based lines and
+/// columns (in characters), the end one past the span's last character.
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
+pub struct Place {
+    pub file: String,
+    pub line: usize,
+    pub column: usize,
+    pub end_line: usize,
+    pub end_column: usize,
+    /// The span in bytes from the start of the file.
+    pub offset: usize,
+    pub length: usize,
+}
+
+impl SourceFile {
+    /// Where the bytes `start..end` are.
+    pub fn place(&self, start: usize, end: usize) -> Place {
+        let (line, column) = self.line_column(start);
+        let (end_line, end_column) = self.line_column(end.max(start));
+        Place {
+            file: self.name.clone(),
+            line,
+            column,
+            end_line,
+            end_column,
+            offset: start,
+            length: end.saturating_sub(start),
+        }
+    }
 }
 
 /// All files loaded for one evaluation, indexed by [`FileId`].

@@ -6,6 +6,7 @@ use std::path::PathBuf;
 
 use reach::plugin::Registry;
 use reach::suite::{self, Compared, Golden, Outcome, SuiteOptions, Tolerance};
+use reach::DiagnosticStyle;
 
 /// What `reach test` was asked.
 pub struct TestArgs {
@@ -16,9 +17,21 @@ pub struct TestArgs {
     pub tolerance: Tolerance,
     pub limits: reach::Limits,
     pub allowed: Vec<PathBuf>,
+    /// Print only the scenarios that fail.
+    pub quiet: bool,
+    /// How diagnostics are written; `Github` adds a workflow command per
+    /// diagnostic and per expectation not met after the summary.
+    pub style: DiagnosticStyle,
 }
 
 pub fn test(registry: &Registry, args: TestArgs) -> i32 {
+    if args.style == DiagnosticStyle::Json {
+        eprintln!(
+            "error: `reach test` writes its results for programs as JUnit XML (--junit FILE); \
+             --diagnostics json is for `run` and `check`"
+        );
+        return 2;
+    }
     let roots = if args.paths.is_empty() {
         vec![PathBuf::from(".")]
     } else {
@@ -32,18 +45,21 @@ pub fn test(registry: &Registry, args: TestArgs) -> i32 {
         }
     };
     let options = SuiteOptions {
-        golden_dir: args.golden_dir,
+        golden_dir: args.golden_dir.clone(),
         update: args.update,
         tolerance: args.tolerance,
         limits: args.limits,
-        allowed: args.allowed,
+        allowed: args.allowed.clone(),
     };
     let outcomes = suite::run_suite(&scenarios, &roots, &options, registry);
     if outcomes.is_empty() {
         eprintln!("error: no .reach scenario under the paths given");
         return 1;
     }
-    print!("{}", summary(&outcomes));
+    print!("{}", summary(&outcomes, &args));
+    if args.style == DiagnosticStyle::Github {
+        print!("{}", annotations(&outcomes));
+    }
     if let Some(path) = &args.junit {
         if let Err(e) = write_junit(path, &suite::junit(&outcomes)) {
             eprintln!("error: cannot write {}: {e}", path.display());
@@ -66,20 +82,28 @@ fn write_junit(path: &std::path::Path, xml: &str) -> Result<(), String> {
 }
 
 /// One line per scenario, the failures in words, the golden reports
-/// written, and the counts.
-fn summary(outcomes: &[Outcome]) -> String {
+/// written, and the counts; quiet, only the failures.
+fn summary(outcomes: &[Outcome], args: &TestArgs) -> String {
     use std::fmt::Write;
     let mut out = String::new();
+    let colour = matches!(args.style, DiagnosticStyle::Human { colour: true });
+    let failed: Vec<&Outcome> = outcomes.iter().filter(|o| !o.passed()).collect();
+    if args.quiet {
+        for o in &failed {
+            let _ = writeln!(out, "FAILED  {}  ({})", shown(&o.path), counts(o));
+            failure(o, colour, &mut out);
+        }
+        return out;
+    }
     for o in outcomes {
         let mark = if o.passed() { "ok    " } else { "FAILED" };
         let _ = writeln!(out, "{mark}  {}  ({})", shown(&o.path), counts(o));
     }
-    let failed: Vec<&Outcome> = outcomes.iter().filter(|o| !o.passed()).collect();
     if !failed.is_empty() {
         let _ = writeln!(out, "\nfailures:");
         for o in &failed {
             let _ = writeln!(out, "\n{}", shown(&o.path));
-            failure(o, &mut out);
+            failure(o, colour, &mut out);
         }
     }
     let written: Vec<String> = outcomes.iter().filter_map(written).collect();
@@ -131,22 +155,23 @@ fn plural(n: usize, one: &str, many: &str) -> String {
 }
 
 /// What failed in one scenario.
-fn failure(o: &Outcome, out: &mut String) {
+fn failure(o: &Outcome, colour: bool, out: &mut String) {
     use std::fmt::Write;
     if let Some(d) = &o.diagnostics {
-        for line in d.lines() {
-            let _ = writeln!(out, "  {}", shown_text(line));
+        // Rendered text escapes what it quotes of the file already.
+        for line in d.render(!colour).lines() {
+            let _ = writeln!(out, "  {line}");
         }
     }
     for e in o.expectations.iter().filter(|e| !e.met) {
-        let _ = writeln!(
-            out,
-            "  expectation NOT met: {}: {} ({})",
-            shown_text(&e.expect),
-            shown_text(&e.because),
-            shown_text(&e.at)
-        );
+        let _ = writeln!(out, "  {}", e.not_met_line());
     }
+    failure_of_golden(o, out);
+}
+
+/// How a scenario's golden report failed, if it did.
+fn failure_of_golden(o: &Outcome, out: &mut String) {
+    use std::fmt::Write;
     match &o.golden {
         Golden::Compared(Compared::Changed(changes)) => {
             let _ = writeln!(out, "  answers changed from the golden report:");
@@ -178,6 +203,32 @@ fn failure(o: &Outcome, out: &mut String) {
         }
         _ => {}
     }
+}
+
+/// GitHub workflow commands for what failed: each diagnostic and each
+/// expectation not met on its line, each other failure on its scenario.
+fn annotations(outcomes: &[Outcome]) -> String {
+    use reach::machine_diagnostics::{data, property};
+    let mut out = String::new();
+    for o in outcomes.iter().filter(|o| !o.passed()) {
+        if let Some(d) = &o.diagnostics {
+            out.push_str(&d.render_in(DiagnosticStyle::Github));
+        }
+        for e in o.expectations.iter().filter(|e| !e.met) {
+            out.push_str(&e.annotation());
+        }
+        let mut rest = String::new();
+        failure_of_golden(o, &mut rest);
+        if !rest.is_empty() {
+            out.push_str(&format!(
+                "::error file={},title={}::{}\n",
+                property(&o.path.display().to_string()),
+                property("reach::golden"),
+                data(rest.trim_end())
+            ));
+        }
+    }
+    out
 }
 
 /// The golden report `--update` wrote, if it did, in words.

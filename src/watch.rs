@@ -33,7 +33,7 @@ pub fn watch(
     (limits, also_allowed): (&Limits, &[PathBuf]),
     file: &Path,
     formatter: &dyn FormatPlugin,
-    out: Option<&Path>,
+    (out, colour): (Option<&Path>, bool),
 ) -> i32 {
     let (tx, rx) = channel();
     let mut watcher = match notify::recommended_watcher(tx) {
@@ -46,6 +46,7 @@ pub fn watch(
     let root = absolute(file);
     let mut state = State {
         terminal: std::io::stdout().is_terminal(),
+        colour,
         limits: *limits,
         also_allowed: also_allowed.to_vec(),
         cache: TaskCache::default(),
@@ -71,6 +72,8 @@ pub fn watch(
 
 struct State {
     terminal: bool,
+    /// Whether diagnostics are coloured (`--color`, NO_COLOR).
+    colour: bool,
     limits: Limits,
     also_allowed: Vec<PathBuf>,
     cache: TaskCache,
@@ -107,7 +110,7 @@ impl State {
                         reach::output::write_outputs(&report, &scenario, dir)
                     });
                     if let Err(e) = written {
-                        screen.push_str(&reach::Diagnostics::single(e).render(!self.terminal));
+                        screen.push_str(&reach::Diagnostics::single(e).render(!self.colour));
                     }
                 }
                 let changes = changes(self.last_good.as_ref(), &report);
@@ -124,7 +127,7 @@ impl State {
                 )
             }
             Err(d) => {
-                screen.push_str(&d.render(!self.terminal));
+                screen.push_str(&d.render(!self.colour));
                 format!(
                     "errors found in {} ms; watching for the next save",
                     started.elapsed().as_millis()

@@ -1,5 +1,6 @@
-//! Golden files: every `examples/*.reach` is run and its JSON report
-//! compared with `tests/snapshots/golden__report@NAME.snap`; every
+//! Golden files: every `examples/*.reach` is run, its JSON report
+//! validated against the report's JSON Schema and compared with
+//! `tests/snapshots/golden__report@NAME.snap`; every
 //! `tests/errors/*.reach` is checked and its rendered diagnostics (no
 //! colour, fixed width) compared with `golden__diagnostics@NAME.snap`.
 //!
@@ -53,11 +54,25 @@ fn golden_names() -> insta::Settings {
     settings
 }
 
+/// Each example's report is also validated against the JSON Schema the
+/// binary prints (`reach schema`), so the schema cannot drift from the
+/// output.
 #[test]
 fn example_reports() {
+    let printed = super::cli::reach(&["schema"]);
+    let schema: serde_json::Value = serde_json::from_slice(&printed.stdout).expect("a schema");
     golden_names().bind(|| {
         insta::glob!("../examples", "*.reach", |path| {
-            insta::assert_snapshot!("golden__report", json_report(path));
+            let json = json_report(path);
+            let report: serde_json::Value = serde_json::from_str(&json).expect("JSON");
+            let errors = super::ecosystem::schema_errors(&schema, &report);
+            assert!(
+                errors.is_empty(),
+                "{}'s report does not follow `reach schema`:\n{}",
+                path.display(),
+                errors.join("\n")
+            );
+            insta::assert_snapshot!("golden__report", json);
         });
     });
 }

@@ -9,6 +9,7 @@ mod cache;
 mod checker;
 mod cli;
 mod docs_picture;
+mod ecosystem;
 mod gaze;
 mod golden;
 mod hostile;

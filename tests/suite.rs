@@ -13,7 +13,7 @@ use super::cli::{stderr, stdout};
 /// A standing arm in front of a shelf: `cup` on the counter is reached,
 /// `jar` on the shelf is reached when the shelf is low and not when it
 /// is high; `expects` are appended.
-fn scenario(shelf_z_mm: u32, expects: &str) -> String {
+pub(crate) fn scenario(shelf_z_mm: u32, expects: &str) -> String {
     format!(
         "units mm deg
 use std::arm
@@ -39,9 +39,9 @@ reach cup, jar by ann
 }
 
 const LOW_MM: u32 = 1200;
-const HIGH_MM: u32 = 2100;
+pub(crate) const HIGH_MM: u32 = 2100;
 
-fn reach_in(dir: &Path, args: &[&str]) -> Output {
+pub(crate) fn reach_in(dir: &Path, args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_reach"))
         .args(args)
         .current_dir(dir)
@@ -50,7 +50,7 @@ fn reach_in(dir: &Path, args: &[&str]) -> Output {
         .expect("the binary runs")
 }
 
-fn write(dir: &Path, name: &str, text: &str) {
+pub(crate) fn write(dir: &Path, name: &str, text: &str) {
     std::fs::write(dir.join(name), text).expect("written");
 }
 

@@ -5,7 +5,7 @@
 
 use serde::Serialize;
 
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct ExpectationReport {
     /// The expectation as written (`ann reaches kettle`).
     pub expect: String,
@@ -15,4 +15,39 @@ pub struct ExpectationReport {
     /// What the answers say (`NOT reachable: blocked by `shelf` (12.3 mm
     /// away)`, `covers 72.5 % (58 of 80 points)`).
     pub because: String,
+}
+
+impl ExpectationReport {
+    /// `expectation NOT met: ann reaches kettle: NOT reachable ... (k.reach:12)`.
+    pub fn not_met_line(&self) -> String {
+        let shown = |t: &str| crate::escape::escaped(t).into_owned();
+        format!(
+            "expectation NOT met: {}: {} ({})",
+            shown(&self.expect),
+            shown(&self.because),
+            shown(&self.at)
+        )
+    }
+
+    /// A GitHub Actions `::error` on the line the expectation is written
+    /// on, saying that it is not met and why.
+    pub fn annotation(&self) -> String {
+        use crate::machine_diagnostics::{data, property};
+        let place = match self.at.rsplit_once(':') {
+            Some((file, line)) if line.parse::<usize>().is_ok() => {
+                format!("file={},line={line},", property(file))
+            }
+            _ => String::new(),
+        };
+        let message = format!(
+            "expectation NOT met: {}\n{}",
+            crate::escape::escaped(&self.expect),
+            crate::escape::escaped(&self.because)
+        );
+        format!(
+            "::error {place}title={}::{}\n",
+            property("reach::expect"),
+            data(&message)
+        )
+    }
 }

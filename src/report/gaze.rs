@@ -12,7 +12,7 @@ use crate::scene::Placement;
 
 /// Whether the person sees a target well enough to use it, and if not,
 /// why.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct GazeReport {
     /// The target.
     pub name: String,

@@ -16,7 +16,7 @@ use crate::scene::{Grid, GridCell, Person, Placement, Surface};
 const SHARE_TOLERANCE_PERCENT: f64 = 0.5;
 
 /// One map: which points of a surface the person reaches.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct MapReport {
     /// The surface (`counter.top`).
     pub name: String,
@@ -77,7 +77,7 @@ pub fn cells_apart<T>(f: impl FnOnce() -> T) -> T {
 }
 
 /// One point of a map.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct MapCell {
     pub column: usize,
     pub row: usize,

@@ -19,6 +19,7 @@ mod parts;
 mod population;
 mod reach;
 mod reach_and_gaze;
+mod schema;
 mod standard;
 mod why;
 
@@ -31,6 +32,7 @@ pub use parts::{deg, fixed, mm, Asked, BaseReport, Names, Posture};
 pub use population::{wilson95, Excluded, PopulationReport, ShareCell, ShareGrid};
 pub use reach::ReachReport;
 pub use reach_and_gaze::ReachAndGazeReport;
+pub use schema::schema_json;
 pub use standard::{ElementCheck, FloorShape, PersonAnswer, RuleCheck, StandardReport};
 pub use why::{Why, WIDENED_DEG};
 
@@ -39,9 +41,12 @@ use serde::Serialize;
 /// Version of the JSON schema; raised when a field changes meaning.
 pub const SCHEMA_VERSION: u32 = 1;
 
-#[derive(Clone, Debug, PartialEq, Serialize)]
+/// The whole report of one run of a scenario.
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct Report {
+    /// The version of this schema the report follows.
     pub schema: u32,
+    /// The scenario file, as it was named to the tool.
     pub file: String,
     /// What a reader should know about every answer: a room without doors
     /// (where a base is placed, the way there is not checked).
@@ -69,7 +74,7 @@ impl Report {
 }
 
 /// One task's result, tagged by task kind.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 #[serde(tag = "kind", rename_all = "lowercase")]
 pub enum TaskReport {
     Reach(ReachReport),

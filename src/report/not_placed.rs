@@ -14,7 +14,7 @@ use super::{fixed, mm, Answer, Figure, ReportKind};
 use crate::floor::{Entry, Misfit, Shut};
 
 /// A task not tried because the person's base fits nowhere.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct NotPlacedReport {
     /// The task as the text report names it (`reach`, `map`, ...).
     pub task: &'static str,
@@ -43,7 +43,7 @@ pub struct NotPlacedReport {
 }
 
 /// One door of a room that shuts a base out.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct DoorReport {
     pub name: String,
     pub width_mm: f64,

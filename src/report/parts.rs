@@ -12,7 +12,7 @@ use crate::kinematics::{Chain, JointKind};
 use crate::scene::{BasePose, Blocker, Collision, OwnBody, Person, Room, Wall};
 
 /// Where the base stood.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct BaseReport {
     /// The base plugin's name.
     pub kind: String,
@@ -66,6 +66,22 @@ pub(super) const COMFORT_TOLERANCE: f64 = 0.05;
 /// millimetres for prismatic ones.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Posture(pub Vec<(String, f64)>);
+
+/// A map from joint name to number (JSON objects keep no order in a
+/// schema; the report writes them in chain order).
+impl schemars::JsonSchema for Posture {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "Posture".into()
+    }
+
+    fn json_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        schemars::json_schema!({
+            "type": "object",
+            "description": "Joint values by joint name, in chain order: degrees for revolute joints, millimetres for prismatic ones.",
+            "additionalProperties": { "type": "number" }
+        })
+    }
+}
 
 impl Serialize for Posture {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {

@@ -12,7 +12,7 @@ use super::{fixed, mm, Answer, Figure, MapReport, ReportKind, TaskReport};
 use crate::scene::{Drawn, Population};
 
 /// One task by a population.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct PopulationReport {
     /// The task as the text report names it (`reach`, `gaze`, `map`, ...).
     pub task: &'static str,
@@ -46,7 +46,7 @@ pub struct PopulationReport {
 
 /// The grid of a population's map: the surface and its cells as each
 /// member's map gives them.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct ShareGrid {
     /// What a point asks: `reach` (reached) or `gaze` (seen).
     pub of: &'static str,
@@ -67,7 +67,7 @@ pub struct ShareGrid {
 }
 
 /// A person the task does not accommodate.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct Excluded {
     /// `manual_users#17`.
     pub person: String,
@@ -80,6 +80,7 @@ pub struct Excluded {
     pub profiles: Vec<String>,
     /// The `draw`s' values, by name (lengths in mm, angles in radians).
     #[serde(serialize_with = "by_name")]
+    #[schemars(with = "std::collections::BTreeMap<String, f64>")]
     pub drawn: Vec<(String, f64)>,
     /// Their own answer: `NOT reachable: blocked by shelf`, `does NOT fit
     /// in the room`.
@@ -87,7 +88,7 @@ pub struct Excluded {
 }
 
 /// One point of a population's map.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct ShareCell {
     pub column: usize,
     pub row: usize,

@@ -10,7 +10,7 @@ use super::parts::{point, COMFORT_TOLERANCE, DISTANCE_TOLERANCE_MM};
 use super::{fixed, mm, Answer, Asked, BaseReport, Figure, Posture, ReportKind, Why};
 use crate::scene::Placement;
 
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct ReachReport {
     /// The target.
     pub name: String,

@@ -5,7 +5,7 @@ use serde::Serialize;
 use super::{Answer, GazeReport, ReachReport, ReportKind};
 
 /// `reach T and gaze`: the hand's reach and the eyes' gaze in one posture.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct ReachAndGazeReport {
     /// The target.
     pub name: String,

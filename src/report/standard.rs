@@ -12,7 +12,7 @@ use super::reach::quoted;
 use super::{Answer, Figure, ReportKind};
 
 /// A room checked against a standard.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct StandardReport {
     /// The standard plugin (`ada2010`).
     pub standard: String,
@@ -30,7 +30,7 @@ pub struct StandardReport {
 }
 
 /// One rule, checked once.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct RuleCheck {
     /// The standard's section (`308.3.2`).
     pub section: String,
@@ -47,7 +47,7 @@ pub struct RuleCheck {
 }
 
 /// A shape on the floor, in millimetres.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum FloorShape {
     /// A polygon (a clear floor space, a T-shaped turning space).
@@ -58,7 +58,7 @@ pub enum FloorShape {
 }
 
 /// One element (a target) and the rules about it.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct ElementCheck {
     pub name: String,
     pub at_mm: [f64; 3],
@@ -75,7 +75,7 @@ pub struct ElementCheck {
 }
 
 /// A simulated person's answer about an element, from their own task.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct PersonAnswer {
     pub task: String,
     pub person: String,

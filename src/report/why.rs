@@ -14,7 +14,7 @@ use super::reach::quoted;
 pub const WIDENED_DEG: f64 = 10.0;
 
 /// What stopped a reach.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(tag = "cause", rename_all = "snake_case")]
 pub enum Why {
     /// The room's obstacles (or sides) named: without any one of them the

@@ -13,7 +13,8 @@ pub fn junit(outcomes: &[Outcome]) -> String {
     for o in outcomes {
         let mut suite = TestSuite::new(safe(&o.path.display().to_string()));
         if let Some(d) = &o.diagnostics {
-            suite.add_test_case(failed("check", "the scenario does not check", d));
+            let rendered = d.render(true);
+            suite.add_test_case(failed("check", "the scenario does not check", &rendered));
         }
         for e in &o.expectations {
             let name = format!("expect {}", e.expect);

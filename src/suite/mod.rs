@@ -18,6 +18,7 @@ use rayon::prelude::*;
 pub use golden::{compare, Compared, Tolerance};
 pub use junit::junit;
 
+use crate::error::Diagnostics;
 use crate::limits::Limits;
 use crate::plugin::Registry;
 use crate::report::ExpectationReport;
@@ -41,8 +42,8 @@ pub struct SuiteOptions {
 #[derive(Clone, Debug)]
 pub struct Outcome {
     pub path: PathBuf,
-    /// Its diagnostics (rendered) if it does not check.
-    pub diagnostics: Option<String>,
+    /// Its diagnostics if it does not check.
+    pub diagnostics: Option<Diagnostics>,
     /// How many tasks and standards it answered.
     pub answers: usize,
     pub expectations: Vec<ExpectationReport>,
@@ -168,7 +169,7 @@ fn run_one(
     let scenario = match checked {
         Ok(s) => s,
         Err(d) => {
-            outcome.diagnostics = Some(d.render(true));
+            outcome.diagnostics = Some(d);
             return (outcome, used);
         }
     };
