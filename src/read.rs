@@ -179,8 +179,12 @@ fn read_regular(path: &Path, limit_bytes: u64) -> Result<Vec<u8>, ReadError> {
     // the name was swapped in between.
     regular(&std::fs::metadata(path).map_err(io)?)?;
     let file = open_without_waiting(path).map_err(io)?;
-    regular(&file.metadata().map_err(io)?)?;
-    let mut bytes = Vec::new();
+    let metadata = file.metadata().map_err(io)?;
+    regular(&metadata)?;
+    // Room for the whole file at once, as its size says (within the
+    // limit): a growing buffer would hold up to twice a large mesh.
+    let expected = metadata.len().min(limit_bytes).saturating_add(1);
+    let mut bytes = Vec::with_capacity(usize::try_from(expected).unwrap_or(0));
     file.take(limit_bytes.saturating_add(1))
         .read_to_end(&mut bytes)
         .map_err(io)?;

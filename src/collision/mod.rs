@@ -6,15 +6,17 @@
 //! `placed.rs` asks it of a whole posture, with the person's own body.
 
 mod placed;
+#[cfg(test)]
+mod split_mesh_tests;
 
 pub use placed::PlacedObstacles;
 
 use nalgebra::{Isometry3, Point3, Vector3};
 use parry3d_f64::query::{self, Ray};
-use parry3d_f64::shape::{Capsule as ParryCapsule, SharedShape};
+use parry3d_f64::shape::Capsule as ParryCapsule;
 
 use crate::geometry::{Capsule, Cuboid};
-use crate::scene::{Blocker, MeshShape, Room, Wall};
+use crate::scene::{Blocker, MeshPart, MeshShape, Room, Wall};
 
 /// A mesh obstacle as parry holds it, and its name for reports.
 #[derive(Clone)]
@@ -22,7 +24,8 @@ struct Mesh {
     /// Its index among the room's obstacles (the boxes, then the meshes).
     index: usize,
     name: String,
-    shape: SharedShape,
+    /// Its triangles in parts near each other (one part when closed).
+    parts: Vec<MeshPart>,
     /// A mesh whose inside is known (closed, faces outwards): a point in
     /// it is in the obstacle. (A ray cast only finds the surface.)
     closed: bool,
@@ -71,15 +74,20 @@ impl Obstacles {
             .iter()
             .enumerate()
             .filter_map(|(k, m)| {
-                let MeshShape { shape, solid } = m.shape()?.clone();
-                let closed = solid;
-                let aabb = shape.compute_local_aabb();
+                let MeshShape { parts, solid } = m.shape()?.clone();
+                let bounds = parts.iter().fold(
+                    [
+                        Point3::from([f64::INFINITY; 3]),
+                        Point3::from([f64::NEG_INFINITY; 3]),
+                    ],
+                    |[lo, hi], p| [lo.inf(&p.bounds[0]), hi.sup(&p.bounds[1])],
+                );
                 Some(Mesh {
                     index: first_mesh + k,
                     name: m.name.clone(),
-                    shape,
-                    closed,
-                    bounds: [aabb.mins, aabb.maxs],
+                    parts,
+                    closed: solid,
+                    bounds,
                 })
             })
             .collect();
@@ -157,7 +165,7 @@ impl Obstacles {
                     .then_some(Blocker::Obstacle(i))
             });
         let meshes = self.meshes.iter().filter_map(move |m| {
-            (reach(&m.bounds) && mesh_touches(m, capsule, r.max(1e-9)))
+            (reach(&m.bounds) && mesh_touches(m, capsule, r.max(1e-9), reach))
                 .then_some(Blocker::Obstacle(m.index))
         });
         boxes.chain(meshes).chain(self.walls_hit(capsule, r))
@@ -214,10 +222,12 @@ impl Obstacles {
         let ray = Ray::new(*eye, target - eye);
         let at = Isometry3::identity();
         let meshes = self.meshes.iter().filter_map(|m| {
-            let toi = if m.closed && m.shape.contains_point(&at, eye) {
+            let toi = if m.closed && m.parts[0].shape.contains_point(&at, eye) {
                 Some(0.0)
             } else {
-                m.shape.cast_ray(&at, &ray, max, true)
+                (m.parts.iter())
+                    .filter_map(|p| p.shape.cast_ray(&at, &ray, max, true))
+                    .min_by(f64::total_cmp)
             };
             toi.map(|t| (Blocker::Obstacle(m.index), t))
         });
@@ -233,14 +243,20 @@ impl Obstacles {
 
 /// Whether the capsule's segment comes within `r` of mesh `m` (or lies in
 /// it, when it is closed): parry's intersection test of the capsule of
-/// radius `r`, which stops at the first triangle it meets.
-fn mesh_touches(m: &Mesh, c: &Capsule, r: f64) -> bool {
+/// radius `r` with each part whose bounds it `reach`es, which stops at
+/// the first triangle it meets.
+fn mesh_touches(m: &Mesh, c: &Capsule, r: f64, reach: impl Fn(&[Point3<f64>; 2]) -> bool) -> bool {
     let at = Isometry3::identity();
-    if m.closed && (m.shape.contains_point(&at, &c.a) || m.shape.contains_point(&at, &c.b)) {
-        return true;
+    if m.closed {
+        let whole = &m.parts[0].shape;
+        if whole.contains_point(&at, &c.a) || whole.contains_point(&at, &c.b) {
+            return true;
+        }
     }
     let swept = ParryCapsule::new(c.a, c.b, r);
-    query::intersection_test(&at, &swept, &at, m.shape.as_ref()).unwrap_or(true)
+    (m.parts.iter())
+        .filter(|p| reach(&p.bounds))
+        .any(|p| query::intersection_test(&at, &swept, &at, p.shape.as_ref()).unwrap_or(true))
 }
 
 /// Obstacles before walls, and by index, where two are met at once.

