@@ -11,6 +11,7 @@ use std::path::{Path, PathBuf};
 use clap::{ArgMatches, Args, ColorChoice, CommandFactory, FromArgMatches, Parser, Subcommand};
 use reach::escape::escaped;
 use reach::limits::{CEILINGS, DEFAULTS};
+use reach::machine_diagnostics::Finding;
 use reach::plugin::{PluginKind, Registry};
 use reach::{DiagnosticStyle, Diagnostics, Input, Limits};
 
@@ -40,9 +41,9 @@ struct Cli {
 #[derive(Args)]
 #[command(next_help_heading = "Output")]
 struct Reporting {
-    /// How diagnostics are written: human (on standard error), json (one
-    /// object per line) or github (workflow commands), both on standard
-    /// output
+    /// How diagnostics and failures are written on standard error: human,
+    /// json (one object per line; not for `test`, which has --junit) or
+    /// github (workflow commands)
     #[arg(long, value_name = "FORMAT", default_value = "human")]
     diagnostics: DiagnosticsFormat,
     /// Print only failures (diagnostics, expectations not met); the exit
@@ -131,10 +132,12 @@ enum Command {
 struct Evaluate {
     /// The .reach scenario file.
     file: PathBuf,
-    /// Output format (see `reach plugins`).
+    /// Output format: text, json or html (the format plugins of `reach
+    /// plugins`).
     #[arg(long, default_value = "text")]
     format: String,
-    /// Also write DIR/report.json, and a CSV and an SVG heat map per map.
+    /// Also write DIR/report.json, report.html and scene.glb, and a CSV and
+    /// an SVG heat map per map, as one set.
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
     /// Exit 3 (after the report) if a person's base fits nowhere in a
@@ -339,15 +342,27 @@ impl Shown {
         }
     }
 
-    /// Write the diagnostics: human ones on standard error, those for
-    /// programs on standard output. Exit code 1.
+    /// Write the diagnostics on standard error (standard output keeps the
+    /// report). Exit code 1.
     fn diagnostics(&self, d: &Diagnostics) -> i32 {
-        let text = d.render_in(self.style);
-        match self.style {
-            DiagnosticStyle::Human { .. } => eprint!("{text}"),
-            _ => print!("{text}"),
-        }
+        eprint!("{}", d.render_in(self.style));
         1
+    }
+
+    /// A failure of the run, on standard error: for people only with
+    /// `--quiet` (the report above says it), always for programs.
+    fn finding(&self, f: &Finding) {
+        if self.quiet || !matches!(self.style, DiagnosticStyle::Human { .. }) {
+            eprint!("{}", f.render_in(self.style));
+        }
+    }
+
+    /// The last line of a failed run, for people (programs have had each
+    /// finding, and the exit code says the rest).
+    fn summary(&self, text: &str) {
+        if matches!(self.style, DiagnosticStyle::Human { .. }) {
+            eprintln!("error: {text}");
+        }
     }
 }
 
@@ -386,25 +401,31 @@ fn run(registry: &Registry, e: &Evaluate, shown: &Shown) -> i32 {
         _ => false,
     });
     if e.strict && not_placed {
-        eprintln!(
-            "error: a person's base fits nowhere in a task's room, or cannot get there from its doors (--strict)"
+        let file = e.file.display().to_string();
+        for answer in report.answers() {
+            if answer.verdict.contains("does NOT fit") || answer.verdict.contains("cannot get in") {
+                shown.finding(&Finding {
+                    code: "reach::strict",
+                    message: format!("{}: {}", answer.label(), answer.verdict),
+                    file: Some(file.clone()),
+                    line: None,
+                });
+            }
+        }
+        shown.summary(
+            "a person's base fits nowhere in a task's room, or cannot get there from its doors (--strict)",
         );
         return NOT_AS_EXPECTED;
     }
     if !e.no_expect && !report.expectations_met() {
         let missed: Vec<_> = report.expectations.iter().filter(|x| !x.met).collect();
         for x in &missed {
-            let line = match shown.style {
-                DiagnosticStyle::Github => x.annotation(),
-                _ if shown.quiet => format!("{}\n", x.not_met_line()),
-                _ => continue,
-            };
-            let _ = stdout.write_all(line.as_bytes());
+            shown.finding(&x.finding());
         }
-        eprintln!(
-            "error: {} of the scenario's expectations not met",
+        shown.summary(&format!(
+            "{} of the scenario's expectations not met",
             missed.len()
-        );
+        ));
         return NOT_AS_EXPECTED;
     }
     0

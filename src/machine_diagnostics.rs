@@ -93,11 +93,69 @@ fn github_line(e: &Error) -> String {
         ]);
         message.push_str(&format!("\n{}", escaped(label)));
     }
+    for (place, label) in labels.iter().skip(1) {
+        message.push_str(&format!("\nline {}: {}", place.line, escaped(label)));
+    }
     properties.push(format!("title={}", property(e.kind().code())));
     if let Some(help) = e.help() {
         message.push_str(&format!("\nhelp: {help}"));
     }
     format!("::error {}::{}\n", properties.join(","), data(&message))
+}
+
+/// A failure that is not about the text of the input: an `expect` not
+/// met, a base that fits nowhere under `--strict`; in a file, and on a
+/// line of it, where it is written.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Finding {
+    pub code: &'static str,
+    pub message: String,
+    pub file: Option<String>,
+    pub line: Option<usize>,
+}
+
+impl Finding {
+    /// The finding in `style`, one line: `error: MESSAGE (FILE:LINE)` for
+    /// people, a JSON object, or an `::error` workflow command.
+    pub fn render_in(&self, style: DiagnosticStyle) -> String {
+        let message = escaped(&self.message).into_owned();
+        match style {
+            DiagnosticStyle::Human { .. } => match (&self.file, self.line) {
+                (Some(file), Some(line)) => {
+                    format!("error: {message} ({}:{line})\n", escaped(file))
+                }
+                _ => format!("error: {message}\n"),
+            },
+            DiagnosticStyle::Json => {
+                let mut object = serde_json::json!({
+                    "severity": "error",
+                    "code": self.code,
+                    "message": message,
+                });
+                if let Some(file) = &self.file {
+                    object["file"] = file.as_str().into();
+                }
+                if let Some(line) = self.line {
+                    object["line"] = line.into();
+                }
+                format!("{object}\n")
+            }
+            DiagnosticStyle::Github => {
+                let mut place = String::new();
+                if let Some(file) = &self.file {
+                    place.push_str(&format!("file={},", property(file)));
+                }
+                if let Some(line) = self.line {
+                    place.push_str(&format!("line={line},"));
+                }
+                format!(
+                    "::error {place}title={}::{}\n",
+                    property(self.code),
+                    data(&message)
+                )
+            }
+        }
+    }
 }
 
 /// A workflow command's message, escaped as the Actions runner reads it.

@@ -58,7 +58,7 @@ pub fn test(registry: &Registry, args: TestArgs) -> i32 {
     }
     print!("{}", summary(&outcomes, &args));
     if args.style == DiagnosticStyle::Github {
-        print!("{}", annotations(&outcomes));
+        eprint!("{}", annotations(&outcomes));
     }
     if let Some(path) = &args.junit {
         if let Err(e) = write_junit(path, &suite::junit(&outcomes)) {
@@ -215,7 +215,7 @@ fn annotations(outcomes: &[Outcome]) -> String {
             out.push_str(&d.render_in(DiagnosticStyle::Github));
         }
         for e in o.expectations.iter().filter(|e| !e.met) {
-            out.push_str(&e.annotation());
+            out.push_str(&e.finding().render_in(DiagnosticStyle::Github));
         }
         let mut rest = String::new();
         failure_of_golden(o, &mut rest);
@@ -224,11 +224,16 @@ fn annotations(outcomes: &[Outcome]) -> String {
                 "::error file={},title={}::{}\n",
                 property(&o.path.display().to_string()),
                 property("reach::golden"),
-                data(rest.trim_end())
+                data(&trimmed_lines(&rest))
             ));
         }
     }
     out
+}
+
+/// `text`'s lines without their indentation.
+fn trimmed_lines(text: &str) -> String {
+    text.lines().map(str::trim).collect::<Vec<_>>().join("\n")
 }
 
 /// The golden report `--update` wrote, if it did, in words.

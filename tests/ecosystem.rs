@@ -109,8 +109,8 @@ fn json_diagnostics_parse_and_carry_line_and_column() {
         &["check", "three.reach", "--diagnostics", "json"],
     );
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
-    assert_eq!(stderr(&o), "", "JSON diagnostics go to standard output");
-    let objects: Vec<Value> = stdout(&o)
+    assert_eq!(stdout(&o), "", "diagnostics go to standard error");
+    let objects: Vec<Value> = stderr(&o)
         .lines()
         .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{e}: {l}")))
         .collect();
@@ -135,7 +135,7 @@ fn json_diagnostics_parse_and_carry_line_and_column() {
         .iter()
         .map(|&(l, c, t)| (l, c, t.to_string()))
         .collect();
-    assert_eq!(places, expected, "{}", stdout(&o));
+    assert_eq!(places, expected, "{}", stderr(&o));
 }
 
 #[test]
@@ -147,7 +147,7 @@ fn github_diagnostics_are_workflow_commands_on_their_lines() {
         &["check", "three.reach", "--diagnostics", "github"],
     );
     assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
-    let lines: Vec<String> = stdout(&o).lines().map(str::to_string).collect();
+    let lines: Vec<String> = stderr(&o).lines().map(str::to_string).collect();
     assert_eq!(lines.len(), 3, "{lines:?}");
     for (line, (l, c, _)) in lines.iter().zip(EXPECTED_PLACES) {
         let (properties, message) = workflow_command(line, "error");
@@ -183,7 +183,9 @@ fn workflow_command(
 }
 
 /// An expectation not met is annotated on its own line, under `run` and
-/// under `test`; `reach test` leaves JSON to `--junit`.
+/// under `test`, and is a JSON object under `run`, on standard error:
+/// standard output keeps the report whole (`reach test` leaves JSON to
+/// `--junit`).
 #[test]
 fn expectations_not_met_are_annotated_on_their_line() {
     let dir = tempfile::tempdir().unwrap();
@@ -191,23 +193,43 @@ fn expectations_not_met_are_annotated_on_their_line() {
     let line = text.lines().position(|l| l.starts_with("expect")).unwrap() + 1;
     write(dir.path(), "high.reach", &text);
     for args in [
-        &["run", "high.reach", "--diagnostics", "github"][..],
+        &[
+            "run",
+            "high.reach",
+            "--diagnostics",
+            "github",
+            "--format",
+            "json",
+        ][..],
         &["test", "high.reach", "--diagnostics", "github"],
     ] {
         let o = reach_in(dir.path(), args);
         assert_ne!(o.status.code(), Some(0), "{args:?}");
-        let annotations: Vec<&str> = (stdout(&o).leak().lines())
+        if args[0] == "run" {
+            let report: Result<Value, _> = serde_json::from_str(&stdout(&o));
+            assert!(report.is_ok(), "the report stays JSON: {}", stdout(&o));
+        }
+        let annotations: Vec<String> = (stderr(&o).lines())
             .filter(|l| l.starts_with("::"))
+            .map(str::to_string)
             .collect();
-        assert_eq!(annotations.len(), 1, "{args:?}: {}", stdout(&o));
-        let (properties, message) = workflow_command(annotations[0], "error");
+        assert_eq!(annotations.len(), 1, "{args:?}: {}", stderr(&o));
+        let (properties, message) = workflow_command(&annotations[0], "error");
         assert_eq!(properties["file"], "high.reach");
         assert_eq!(properties["line"], line.to_string());
         assert!(
-            message.starts_with("expectation NOT met: ann reaches jar%0A"),
+            message.starts_with("expectation NOT met: ann reaches jar: NOT reachable"),
             "{message}"
         );
     }
+    let o = reach_in(dir.path(), &["run", "high.reach", "--diagnostics", "json"]);
+    assert_eq!(o.status.code(), Some(3));
+    let objects: Vec<Value> = (stderr(&o).lines())
+        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{e}: {l}")))
+        .collect();
+    assert_eq!(objects.len(), 1, "{}", stderr(&o));
+    assert_eq!(objects[0]["code"], "reach::expect");
+    assert_eq!(objects[0]["line"], line);
     let o = reach_in(dir.path(), &["test", "high.reach", "--diagnostics", "json"]);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     assert!(stderr(&o).contains("--junit"), "{}", stderr(&o));
@@ -358,12 +380,14 @@ fn quiet_prints_only_failures() {
     }
     let o = quiet(dir.path(), &["run", "high.reach"]);
     assert_eq!(o.status.code(), Some(3));
-    let out = stdout(&o);
-    assert_eq!(out.lines().count(), 1, "{out}");
+    assert_eq!(stdout(&o), "");
+    let err = stderr(&o);
+    assert_eq!(err.lines().count(), 2, "{err}");
     assert!(
-        out.starts_with("expectation NOT met: ann reaches jar: NOT reachable"),
-        "{out}"
+        err.starts_with("error: expectation NOT met: ann reaches jar: NOT reachable"),
+        "{err}"
     );
+    assert!(err.contains("(high.reach:"), "{err}");
     let o = quiet(dir.path(), &["test", "."]);
     assert_eq!(o.status.code(), Some(1));
     let out = stdout(&o);

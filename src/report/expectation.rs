@@ -29,25 +29,20 @@ impl ExpectationReport {
         )
     }
 
-    /// A GitHub Actions `::error` on the line the expectation is written
-    /// on, saying that it is not met and why.
-    pub fn annotation(&self) -> String {
-        use crate::machine_diagnostics::{data, property};
-        let place = match self.at.rsplit_once(':') {
+    /// The expectation not met as a finding, on the line it is written
+    /// on.
+    pub fn finding(&self) -> crate::machine_diagnostics::Finding {
+        let (file, line) = match self.at.rsplit_once(':') {
             Some((file, line)) if line.parse::<usize>().is_ok() => {
-                format!("file={},line={line},", property(file))
+                (Some(file.to_string()), line.parse().ok())
             }
-            _ => String::new(),
+            _ => (Some(self.at.clone()), None),
         };
-        let message = format!(
-            "expectation NOT met: {}\n{}",
-            crate::escape::escaped(&self.expect),
-            crate::escape::escaped(&self.because)
-        );
-        format!(
-            "::error {place}title={}::{}\n",
-            property("reach::expect"),
-            data(&message)
-        )
+        crate::machine_diagnostics::Finding {
+            code: "reach::expect",
+            message: format!("expectation NOT met: {}: {}", self.expect, self.because),
+            file,
+            line,
+        }
     }
 }

@@ -6,10 +6,6 @@ use schemars::generate::SchemaSettings;
 
 use super::{Report, SCHEMA_VERSION};
 
-/// Where the schema says it lives: the path in this repository that
-/// `reach schema > docs/report.schema.json` writes.
-const SCHEMA_ID: &str = "docs/report.schema.json";
-
 /// The report's schema (JSON Schema 2020-12), pretty-printed, ending with a
 /// newline.
 pub fn schema_json() -> String {
@@ -17,7 +13,6 @@ pub fn schema_json() -> String {
         .for_serialize()
         .into_generator();
     let mut schema = generator.into_root_schema_for::<Report>();
-    schema.insert("$id".into(), SCHEMA_ID.into());
     schema.insert(
         "title".into(),
         format!("reach report, schema version {SCHEMA_VERSION}").into(),
