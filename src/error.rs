@@ -403,6 +403,22 @@ impl Error {
         Error::new(kind, name.span).with_note(first, "first defined here")
     }
 
+    /// An unknown name: `name`, a `what` ("target", "room"), at `span`,
+    /// with the nearest of the `known` names as a suggestion.
+    pub fn unknown<'a>(
+        what: &'static str,
+        name: &str,
+        span: Span,
+        known: impl IntoIterator<Item = &'a str>,
+    ) -> Self {
+        let kind = ErrorKind::UnknownName {
+            what,
+            name: name.to_string(),
+            suggestion: crate::names::suggest(name, known),
+        };
+        Error::new(kind, span)
+    }
+
     pub fn with_note(mut self, span: Span, text: impl Into<String>) -> Self {
         self.0.notes.push((span, text.into()));
         self

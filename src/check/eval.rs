@@ -6,7 +6,6 @@ use nalgebra::Vector3;
 
 use super::Checker;
 use crate::error::{Error, ErrorKind};
-use crate::names::suggest;
 use crate::span::Span;
 use crate::syntax::ast::{BinOp, Expr, ExprKind, Function, Vec3Expr};
 use crate::units::{Dim, Quantity, QuantityError};
@@ -155,15 +154,8 @@ impl Checker<'_> {
             return self.let_value(name, Some(span));
         }
         let params = self.params.iter().map(|(n, _)| n.as_str());
-        let suggestion = suggest(name, self.lets.names().chain(params));
-        self.error(Error::new(
-            ErrorKind::UnknownName {
-                what: "constant",
-                name: name.to_string(),
-                suggestion,
-            },
-            span,
-        ));
+        let known = self.lets.names().chain(params);
+        self.error(Error::unknown("constant", name, span, known));
         None
     }
 

@@ -6,7 +6,6 @@
 
 use super::Checker;
 use crate::error::{Error, ErrorKind};
-use crate::names::suggest;
 use crate::scenario::{ExpectCheck, ExpectSpec, StandardSpec, TaskSpec};
 use crate::scene::{Person, Population, Room};
 use crate::span::{Name, Spanned};
@@ -90,13 +89,11 @@ impl Checker<'_> {
                 .iter()
                 .map(|p| p.name.as_str())
                 .chain(a.populations.iter().map(|p| p.name.as_str()));
-            self.error(Error::new(
-                ErrorKind::UnknownName {
-                    what: "person or population",
-                    name: who.value.clone(),
-                    suggestion: suggest(&who.value, names),
-                },
+            self.error(Error::unknown(
+                "person or population",
+                &who.value,
                 who.span,
+                names,
             ));
             return None;
         }
@@ -211,13 +208,11 @@ impl Checker<'_> {
                 return None;
             }
             let names = a.populations.iter().map(|x| x.name.as_str());
-            self.error(Error::new(
-                ErrorKind::UnknownName {
-                    what: "population",
-                    name: population.value.clone(),
-                    suggestion: suggest(&population.value, names),
-                },
+            self.error(Error::unknown(
+                "population",
+                &population.value,
                 population.span,
+                names,
             ));
             return None;
         };
@@ -287,14 +282,7 @@ impl Checker<'_> {
                 return None;
             }
             let names = a.rooms.iter().map(|x| x.name.as_str());
-            self.error(Error::new(
-                ErrorKind::UnknownName {
-                    what: "room",
-                    name: room.value.clone(),
-                    suggestion: suggest(&room.value, names),
-                },
-                room.span,
-            ));
+            self.error(Error::unknown("room", &room.value, room.span, names));
             return None;
         };
         let entries: Vec<usize> = (a.standards.iter().enumerate())
@@ -340,13 +328,11 @@ impl Checker<'_> {
         if failed_room_declares {
             return None;
         }
-        self.error(Error::new(
-            ErrorKind::UnknownName {
-                what: "target or surface",
-                name: name.clone(),
-                suggestion: suggest(&name, names.iter().map(String::as_str)),
-            },
+        self.error(Error::unknown(
+            "target or surface",
+            &name,
             subject.span,
+            names.iter().map(String::as_str),
         ));
         None
     }

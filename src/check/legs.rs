@@ -5,7 +5,6 @@ use super::eval::fmt_num;
 use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::kinematics::Legs;
-use crate::names::suggest;
 use crate::syntax::ast::MannequinDecl;
 
 /// The dimensions `legs(...)` takes, in the order of [`Legs`]'s fields.
@@ -33,13 +32,11 @@ impl Checker<'_> {
         let mut ok = true;
         for (name, expr) in &legs.args {
             let Some(i) = LEG_PARAMS.iter().position(|p| *p == name.value) else {
-                self.error(Error::new(
-                    ErrorKind::UnknownName {
-                        what: "leg dimension",
-                        name: name.value.clone(),
-                        suggestion: suggest(&name.value, LEG_PARAMS),
-                    },
+                self.error(Error::unknown(
+                    "leg dimension",
+                    &name.value,
                     name.span,
+                    LEG_PARAMS,
                 ));
                 ok = false;
                 continue;

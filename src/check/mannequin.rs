@@ -8,7 +8,6 @@ use super::eval::fmt_num;
 use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::kinematics::{Body, Dh, Effector, Joint, JointKind, Link, Posture, Sphere};
-use crate::names::suggest;
 use crate::span::Span;
 use crate::span::{FileId, Name};
 use crate::syntax::ast::{self, Expr, JointDecl, LimitsExpr, MannequinDecl, MannequinRef};
@@ -122,13 +121,11 @@ impl Checker<'_> {
         for (name, expr) in args {
             if !decl.params.iter().any(|(p, _)| p.value == name.value) {
                 let names = decl.params.iter().map(|(p, _)| p.value.as_str());
-                self.error(Error::new(
-                    ErrorKind::UnknownName {
-                        what: "parameter of this mannequin",
-                        name: name.value.clone(),
-                        suggestion: suggest(&name.value, names),
-                    },
+                self.error(Error::unknown(
+                    "parameter of this mannequin",
+                    &name.value,
                     name.span,
+                    names,
                 ));
                 continue;
             }
@@ -270,13 +267,11 @@ impl Checker<'_> {
     ) -> Option<usize> {
         let found = earlier.iter().position(|n| n.value == name.value);
         if found.is_none() {
-            self.error(Error::new(
-                ErrorKind::UnknownName {
-                    what: "joint declared before this one",
-                    name: name.value.clone(),
-                    suggestion: suggest(&name.value, earlier.iter().map(|n| n.value.as_str())),
-                },
+            self.error(Error::unknown(
+                "joint declared before this one",
+                &name.value,
                 name.span,
+                earlier.iter().map(|n| n.value.as_str()),
             ));
         }
         found
@@ -380,13 +375,11 @@ impl Checker<'_> {
         let mut ok = true;
         for (key, expr) in &j.dh {
             let Some(i) = DH_PARAMS.iter().position(|p| *p == key.value) else {
-                self.error(Error::new(
-                    ErrorKind::UnknownName {
-                        what: "DH parameter",
-                        name: key.value.clone(),
-                        suggestion: suggest(&key.value, DH_PARAMS),
-                    },
+                self.error(Error::unknown(
+                    "DH parameter",
+                    &key.value,
                     key.span,
+                    DH_PARAMS,
                 ));
                 ok = false;
                 continue;

@@ -261,13 +261,11 @@ impl Checker<'_> {
     fn joint_index(&mut self, joints: &[Joint], joint: &Name) -> Option<usize> {
         let found = joints.iter().position(|j| j.name == joint.value);
         if found.is_none() {
-            self.error(Error::new(
-                ErrorKind::UnknownName {
-                    what: "joint",
-                    name: joint.value.clone(),
-                    suggestion: suggest(&joint.value, joints.iter().map(|j| j.name.as_str())),
-                },
+            self.error(Error::unknown(
+                "joint",
+                &joint.value,
                 joint.span,
+                joints.iter().map(|j| j.name.as_str()),
             ));
         }
         found

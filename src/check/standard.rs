@@ -47,14 +47,7 @@ impl Checker<'_> {
                 Some(i) => vec![i],
                 None => {
                     let names = rooms.iter().map(|r| r.name.as_str());
-                    self.error(Error::new(
-                        ErrorKind::UnknownName {
-                            what: "room",
-                            name: room.value.clone(),
-                            suggestion: suggest(&room.value, names),
-                        },
-                        room.span,
-                    ));
+                    self.error(Error::unknown("room", &room.value, room.span, names));
                     return None;
                 }
             },

@@ -3,8 +3,7 @@
 
 use std::collections::HashMap;
 
-use crate::error::{Error, ErrorKind};
-use crate::names::suggest;
+use crate::error::Error;
 use crate::span::{FileId, Name, Span};
 
 pub struct Table<'a, T> {
@@ -43,16 +42,8 @@ impl<'a, T> Table<'a, T> {
 
     /// Look up `name`, or the error for an unknown name with a suggestion.
     pub fn resolve(&self, name: &Name) -> Result<(&'a T, FileId), Error> {
-        self.get(&name.value).ok_or_else(|| {
-            Error::new(
-                ErrorKind::UnknownName {
-                    what: self.what,
-                    name: name.value.clone(),
-                    suggestion: suggest(&name.value, self.names()),
-                },
-                name.span,
-            )
-        })
+        self.get(&name.value)
+            .ok_or_else(|| Error::unknown(self.what, &name.value, name.span, self.names()))
     }
 
     pub fn names(&self) -> impl Iterator<Item = &str> {

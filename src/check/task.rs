@@ -247,14 +247,7 @@ impl Checker<'_> {
                 |i| matches!(i, crate::syntax::ast::RoomItem::Target(t) if t.name.value == name),
             );
         if !declared {
-            self.error(Error::new(
-                ErrorKind::UnknownName {
-                    what: "target",
-                    name: name.clone(),
-                    suggestion: suggest(&name, targets),
-                },
-                s.span,
-            ));
+            self.error(Error::unknown("target", &name, s.span, targets));
         }
         None
     }
@@ -321,13 +314,11 @@ impl Checker<'_> {
             }
             [] => return None,
         };
-        self.error(Error::new(
-            ErrorKind::UnknownName {
-                what,
-                name: wrong.to_string(),
-                suggestion: suggest(wrong, candidates.iter().map(String::as_str)),
-            },
+        self.error(Error::unknown(
+            what,
+            wrong,
             s.span,
+            candidates.iter().map(String::as_str),
         ));
         None
     }
@@ -363,13 +354,11 @@ impl Checker<'_> {
             return None;
         }
         let known = self.persons.names().chain(self.populations.names());
-        self.error(Error::new(
-            ErrorKind::UnknownName {
-                what: "person or population",
-                name: name.value.clone(),
-                suggestion: suggest(&name.value, known),
-            },
+        self.error(Error::unknown(
+            "person or population",
+            &name.value,
             name.span,
+            known,
         ));
         None
     }
