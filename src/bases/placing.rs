@@ -23,7 +23,8 @@ pub enum Approach {
 }
 
 impl Approach {
-    fn parse(word: &str) -> Result<Self, SettingsError> {
+    /// `any`, `forward` or `side`, as an option's value says it.
+    pub fn parse(word: &str) -> Result<Self, SettingsError> {
         match word {
             "any" => Ok(Approach::Any),
             "forward" => Ok(Approach::Forward),

@@ -29,6 +29,7 @@ use geo::{Coord, LineString, Polygon};
 use nalgebra::{Point3, Vector2};
 
 use super::elements::{approached, crossing_within, knee_depth, Approached};
+use crate::bases::Approach;
 use crate::floor::{
     disc_centre, door_clear_width, knee_limited, route_width, t_space, FreeFloor, RouteFloor,
 };
@@ -77,14 +78,6 @@ const ROUTE_MOST: f64 = 3000.0;
 /// narrows it.
 const DOOR_REVEAL: f64 = 20.0;
 
-/// Which approaches the rules may use.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Approach {
-    Any,
-    Forward,
-    Side,
-}
-
 /// Its settings.
 #[derive(Clone, Debug, PartialEq)]
 struct Ada2010Settings {
@@ -101,20 +94,6 @@ impl Settings for Ada2010Settings {
                     "`forward` or `side`: every element must be usable so, with that approach's rules (`any`: either)",
                 )
                 .get(),
-        }
-    }
-}
-
-impl Approach {
-    fn parse(word: &str) -> Result<Self, SettingsError> {
-        match word {
-            "any" => Ok(Approach::Any),
-            "forward" => Ok(Approach::Forward),
-            "side" => Ok(Approach::Side),
-            other => Err(SettingsError::invalid(
-                "approach",
-                format!("`{other}` is not an approach: use `forward`, `side` or `any`"),
-            )),
         }
     }
 }
