@@ -13,6 +13,7 @@ use reach::escape::escaped;
 use reach::limits::{CEILINGS, DEFAULTS};
 use reach::machine_diagnostics::Finding;
 use reach::plugin::{PluginKind, Registry};
+use reach::report::TaskReport;
 use reach::{DiagnosticStyle, Diagnostics, Input, Limits};
 
 /// What `reach --help` and the man page say of exit codes.
@@ -295,13 +296,18 @@ fn man(out: Option<&Path>) -> i32 {
 /// The command line, with clap's own help and errors coloured as
 /// `--color` says (clap reads NO_COLOR itself for `auto`).
 fn parse() -> Cli {
-    let choice = std::env::args_os()
-        .skip(1)
+    // Read leniently (a file name need not be UTF-8): clap checks them.
+    let args: Vec<String> = (std::env::args_os().skip(1))
+        .map(|a| a.to_string_lossy().into_owned())
         .take_while(|a| a != "--")
-        .collect::<Vec<_>>()
-        .windows(2)
-        .find_map(|w| (w[0] == "--color").then(|| w[1].to_string_lossy().into_owned()))
-        .or_else(|| std::env::args().find_map(|a| a.strip_prefix("--color=").map(str::to_string)));
+        .collect();
+    let choice = args
+        .iter()
+        .enumerate()
+        .find_map(|(i, a)| match a.strip_prefix("--color")? {
+            "" => args.get(i + 1).cloned(),
+            value => value.strip_prefix('=').map(str::to_string),
+        });
     let colour = match choice.as_deref() {
         Some("always") => ColorChoice::Always,
         Some("never") => ColorChoice::Never,
@@ -395,22 +401,31 @@ fn run(registry: &Registry, e: &Evaluate, shown: &Shown) -> i32 {
                 .as_bytes(),
         );
     }
-    let not_placed = report.tasks.iter().any(|t| match t {
-        reach::report::TaskReport::NotPlaced(_) => true,
-        reach::report::TaskReport::Population(p) => p.not_placed > 0,
-        _ => false,
-    });
-    if e.strict && not_placed {
-        let file = e.file.display().to_string();
-        for answer in report.answers() {
-            if answer.verdict.contains("does NOT fit") || answer.verdict.contains("cannot get in") {
-                shown.finding(&Finding {
-                    code: "reach::strict",
-                    message: format!("{}: {}", answer.label(), answer.verdict),
-                    file: Some(file.clone()),
-                    line: None,
-                });
+    // The tasks whose person, or some of whose population, fits nowhere
+    // or cannot get in, each in words.
+    let not_placed: Vec<String> = (report.tasks.iter())
+        .filter_map(|t| {
+            let answer = t.answer();
+            match t {
+                TaskReport::NotPlaced(_) => Some(answer.verdict.clone()),
+                TaskReport::Population(p) if p.not_placed > 0 => Some(format!(
+                    "{} of {} fit nowhere or cannot get in",
+                    p.not_placed, p.people
+                )),
+                _ => None,
             }
+            .map(|why| format!("{}: {why}", answer.label()))
+        })
+        .collect();
+    if e.strict && !not_placed.is_empty() {
+        let file = e.file.display().to_string();
+        for message in not_placed {
+            shown.finding(&Finding {
+                code: "reach::strict",
+                message,
+                file: Some(file.clone()),
+                line: None,
+            });
         }
         shown.summary(
             "a person's base fits nowhere in a task's room, or cannot get there from its doors (--strict)",

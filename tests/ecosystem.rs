@@ -400,3 +400,20 @@ fn quiet_prints_only_failures() {
         "{out}"
     );
 }
+
+/// A file name that is not UTF-8 is a diagnostic, not a panic (the
+/// command line is read for `--color` before clap sees it).
+#[cfg(unix)]
+#[test]
+fn a_file_name_that_is_not_utf8_is_a_diagnostic() {
+    use std::os::unix::ffi::OsStrExt;
+    let name = std::ffi::OsStr::from_bytes(b"bad\xff.reach");
+    let o = std::process::Command::new(env!("CARGO_BIN_EXE_reach"))
+        .arg("check")
+        .arg(name)
+        .env("NO_COLOR", "1")
+        .output()
+        .expect("the binary runs");
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("cannot read"), "{}", stderr(&o));
+}
