@@ -272,3 +272,42 @@ fn one_task_per_subject_and_person_in_order() {
         ]
     );
 }
+
+/// Which box a target is inside, asked of the boxes' bounds in an R-tree:
+/// a turned box holds what its own axes hold (not what its bounding
+/// rectangle does), a point on a face is outside, and of two boxes that
+/// hold a target the first declared is named.
+#[test]
+fn a_target_inside_a_box_names_the_first_box_that_holds_it() {
+    let rooms = [
+        // A box turned 45 degrees about its corner (100, 0): its bounds
+        // hold (160, 10, 50), the box does not; it holds (100, 70, 50).
+        ("box b at (100, 0, 0) size (100, 100, 100) rotate 45deg", "(160, 10, 50)", None),
+        ("box b at (100, 0, 0) size (100, 100, 100) rotate 45deg", "(100, 70, 50)", Some("b")),
+        // On the top face: a mug on a counter.
+        ("box b at (0, 0, 0) size (100, 100, 100)", "(50, 50, 100)", None),
+        (
+            "box late at (40, 40, 0) size (20, 20, 20)\n box early at (0, 0, 0) size (100, 100, 100)",
+            "(50, 50, 10)",
+            Some("late"),
+        ),
+        (
+            "box a at (0, 0, 0) size (100, 100, 100)\n box b at (40, 40, 0) size (20, 20, 20)",
+            "(50, 50, 10)",
+            Some("a"),
+        ),
+    ];
+    for (boxes, at, holder) in rooms {
+        let text = format!("room k {{ size 1000 x 1000 x 1000\n {boxes}\n target t at {at} }}");
+        let found = match check(&text) {
+            Ok(_) => None,
+            Err(errors) => {
+                assert_eq!(errors.len(), 1, "{text}: {errors:?}");
+                assert_eq!(errors[0].1, at, "{text}");
+                Some(errors[0].0.clone())
+            }
+        };
+        let expected = holder.map(|b| format!("target `t` is inside box `{b}`"));
+        assert_eq!(found, expected, "{text}");
+    }
+}

@@ -3,6 +3,8 @@
 use std::collections::HashMap;
 
 use nalgebra::{Point3, Vector3};
+use rstar::primitives::{GeomWithData, Rectangle};
+use rstar::RTree;
 
 use super::eval::fmt_num;
 use super::Checker;
@@ -267,8 +269,22 @@ impl Checker<'_> {
         spans: &[crate::span::Span],
         boxes: &[BoxObstacle],
     ) {
+        // Each target asks an R-tree of the boxes' bounds for the boxes
+        // that may hold it: targets times boxes compared pairwise took
+        // 23 s for 50,000 of each.
+        let entries = boxes.iter().enumerate().map(|(i, b)| {
+            let [lo, hi] = b.bounds_mm();
+            GeomWithData::new(Rectangle::from_corners(lo.into(), hi.into()), i)
+        });
+        let tree = RTree::bulk_load(entries.collect());
         for (t, span) in targets.iter().zip(spans) {
-            if let Some(b) = boxes.iter().find(|b| b.holds_strictly(&t.position_mm)) {
+            let p: [f64; 3] = t.position_mm.into();
+            let holder = tree
+                .locate_all_at_point(&p)
+                .map(|entry| entry.data)
+                .filter(|&i| boxes[i].holds_strictly(&t.position_mm))
+                .min();
+            if let Some(b) = holder.map(|i| &boxes[i]) {
                 self.error(Error::new(
                     ErrorKind::TargetInsideBox {
                         name: t.name.clone(),

@@ -79,6 +79,26 @@ impl BoxObstacle {
         self.corner_mm.xy().coords + self.rotation() * local_mm
     }
 
+    /// The box's axis-aligned bounds in the room: its lowest and highest
+    /// corners, its yaw taken into account.
+    pub fn bounds_mm(&self) -> [Point3<f64>; 2] {
+        let (x, y) = (self.size_mm.x, self.size_mm.y);
+        let floor = [(0.0, 0.0), (x, 0.0), (0.0, y), (x, y)]
+            .map(|(u, v)| self.floor_point(Vector2::new(u, v)));
+        let (lo, hi) = floor.iter().fold(
+            (
+                Vector2::repeat(f64::INFINITY),
+                Vector2::repeat(f64::NEG_INFINITY),
+            ),
+            |(lo, hi), p| (lo.inf(p), hi.sup(p)),
+        );
+        let z = self.corner_mm.z;
+        [
+            Point3::new(lo.x, lo.y, z),
+            Point3::new(hi.x, hi.y, z + self.size_mm.z),
+        ]
+    }
+
     /// Whether `p` is inside the box and not on its surface (within a
     /// micrometre).
     pub fn holds_strictly(&self, p: &Point3<f64>) -> bool {

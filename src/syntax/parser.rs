@@ -1,9 +1,9 @@
 //! Turns the pairs of the pest grammar into the AST of [`super::ast`].
 
-use pest::iterators::Pair;
+use pest::iterators::{Pair, Pairs};
 use pest::pratt_parser::{Assoc, Op, PrattParser};
 use pest::Parser as _;
-use std::sync::LazyLock;
+use std::sync::{LazyLock, RwLock};
 
 use super::ast::*;
 use super::expected::syntax_error;
@@ -36,9 +36,8 @@ pub fn parse_file_within(file: FileId, text: &str, limits: &Limits) -> Result<Fi
             Span::new(file, at, at + 1),
         )));
     }
-    pest::set_error_detail(true);
-    let mut pairs = ReachParser::parse(Rule::file, text)
-        .map_err(|e| Diagnostics::single(syntax_error(file, text, e)))?;
+    let mut pairs =
+        parse_pairs(text).map_err(|e| Diagnostics::single(syntax_error(file, text, e)))?;
     let root = pairs.next().expect("the file rule always yields one pair");
     let mut builder = Builder {
         file,
@@ -58,6 +57,27 @@ pub fn parse_file_within(file: FileId, text: &str, limits: &Limits) -> Result<Fi
             errors: builder.errors,
         })
     }
+}
+
+/// pest's switch for the detail of its errors is one for the process:
+/// parses without it share the lock, a parse with it holds it alone.
+static ERROR_DETAIL: RwLock<()> = RwLock::new(());
+
+/// The file's pairs. The detail of every attempt, which the words of a
+/// syntax error need, costs half the time of a large file: a file is
+/// parsed without it, and only one that fails is parsed again with it.
+fn parse_pairs(text: &str) -> Result<Pairs<'_, Rule>, pest::error::Error<Rule>> {
+    {
+        let _shared = ERROR_DETAIL.read().unwrap_or_else(|e| e.into_inner());
+        if let Ok(pairs) = ReachParser::parse(Rule::file, text) {
+            return Ok(pairs);
+        }
+    }
+    let _alone = ERROR_DETAIL.write().unwrap_or_else(|e| e.into_inner());
+    pest::set_error_detail(true);
+    let parsed = ReachParser::parse(Rule::file, text);
+    pest::set_error_detail(false);
+    parsed
 }
 
 /// Operator precedence: unary minus binds tightest, then * and /, then
