@@ -86,10 +86,15 @@ impl Volumes {
     /// The first pair of volumes that meet as they may not (of the pairs
     /// whose distance may have changed since a clear posture).
     pub fn self_hit(&self) -> Option<(usize, usize)> {
-        self.self_pairs()
-            .filter(|&(i, j, _)| self.moved_apart(i, j))
-            .find(|&(i, j, contact)| self.meet(i, j, contact))
-            .map(|(i, j, _)| (i, j))
+        // The pairs in `self_pairs`'s order, whether they moved apart asked
+        // before how they may meet (most pairs of a one-joint move did not).
+        let n = self.capsules.len();
+        (0..n).find_map(|i| {
+            (i + 1..n).find_map(|j| {
+                let contact = self.moved_apart(i, j).then(|| self.contact(i, j))??;
+                self.meet(i, j, contact).then_some((i, j))
+            })
+        })
     }
 
     /// Whether volumes `i` and `j` may have moved relative to each other:
