@@ -11,6 +11,8 @@ mod triangles;
 pub use capsule::{segment_distance, Capsule};
 pub use cuboid::Cuboid;
 pub use triangles::cleaned as cleaned_triangles;
+#[cfg(test)]
+pub(crate) use triangles::unit_cube;
 
 use nalgebra::Point3;
 

@@ -125,35 +125,37 @@ fn signed_volume(vertices: &[Point3<f64>], triangles: &[[u32; 3]], piece: &[usiz
         .sum()
 }
 
+/// A unit cube's corners and its twelve triangles, wound outwards (for
+/// tests here and of the standards).
+#[cfg(test)]
+pub(crate) fn unit_cube() -> (Vec<Point3<f64>>, Vec<[u32; 3]>) {
+    let v = (0..8)
+        .map(|i| Point3::new(f64::from(i & 1), f64::from((i >> 1) & 1), f64::from(i >> 2)))
+        .collect();
+    let t = vec![
+        [0, 2, 1],
+        [1, 2, 3],
+        [4, 5, 6],
+        [5, 7, 6],
+        [0, 1, 4],
+        [1, 5, 4],
+        [2, 6, 3],
+        [3, 6, 7],
+        [0, 4, 2],
+        [2, 4, 6],
+        [1, 3, 5],
+        [3, 7, 5],
+    ];
+    (v, t)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// A unit cube's corners and its twelve triangles, wound outwards.
-    fn cube() -> (Vec<Point3<f64>>, Vec<[u32; 3]>) {
-        let v = (0..8)
-            .map(|i| Point3::new(f64::from(i & 1), f64::from((i >> 1) & 1), f64::from(i >> 2)))
-            .collect();
-        let t = vec![
-            [0, 2, 1],
-            [1, 2, 3],
-            [4, 5, 6],
-            [5, 7, 6],
-            [0, 1, 4],
-            [1, 5, 4],
-            [2, 6, 3],
-            [3, 6, 7],
-            [0, 4, 2],
-            [2, 4, 6],
-            [1, 3, 5],
-            [3, 7, 5],
-        ];
-        (v, t)
-    }
-
     #[test]
     fn an_outward_cube_stays_and_an_inward_one_turns() {
-        let (v, t) = cube();
+        let (v, t) = unit_cube();
         assert!(signed_volume(&v, &t, &(0..12).collect::<Vec<_>>()) > 0.0);
         assert_eq!(cleaned(&v, &t), (t.clone(), true));
         let inward: Vec<[u32; 3]> = t.iter().map(|&[a, b, c]| [a, c, b]).collect();
@@ -162,7 +164,7 @@ mod tests {
 
     #[test]
     fn degenerate_triangles_go_and_open_pieces_keep_their_winding() {
-        let (mut v, mut t) = cube();
+        let (mut v, mut t) = unit_cube();
         assert!(!cleaned(&v, &t[..11]).1 && !cleaned(&v, &t[..1]).1);
         v.push(Point3::new(0.5, 0.5, 0.0));
         t.extend([[0, 0, 1], [0, 1, 3], [0, 3, 8]]);

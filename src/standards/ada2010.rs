@@ -666,29 +666,11 @@ mod tests {
 
     /// A cube of `size` mm from `corner`, as a mesh.
     fn cube(corner: [f64; 3], size: f64) -> MeshObstacle {
-        let vertices = (0..8)
-            .map(|k| {
-                Point3::new(
-                    corner[0] + size * f64::from(k & 1),
-                    corner[1] + size * f64::from((k >> 1) & 1),
-                    corner[2] + size * f64::from((k >> 2) & 1),
-                )
-            })
+        let (unit, triangles) = crate::geometry::unit_cube();
+        let vertices = unit
+            .iter()
+            .map(|p| Point3::from(corner) + p.coords * size)
             .collect();
-        let triangles = [
-            [0, 2, 1],
-            [1, 2, 3],
-            [4, 5, 6],
-            [5, 7, 6],
-            [0, 1, 4],
-            [1, 5, 4],
-            [2, 6, 3],
-            [3, 6, 7],
-            [0, 4, 2],
-            [2, 4, 6],
-            [1, 3, 5],
-            [3, 7, 5],
-        ];
         MeshObstacle::new("crate".into(), vertices, &triangles)
     }
 
