@@ -294,14 +294,20 @@ function expectationsSummary(data) {
   return `; expectations: ${met} met, ${all.length - met} NOT met`;
 }
 
+// A dot in the colour of a verdict: met or reached, or not.
+function verdictDot(ok) {
+  const dot = document.createElement("span");
+  dot.className = "dot";
+  dot.style.background = ok ? "#2e9e4f" : "#d64545";
+  return dot;
+}
+
 // Each expectation, met or not, and why.
 function listExpectations(expectations) {
   const list = document.getElementById("expectations");
   for (const e of expectations) {
     const item = document.createElement("li");
-    const dot = document.createElement("span");
-    dot.className = "dot";
-    dot.style.background = e.met ? "#2e9e4f" : "#d64545";
+    const dot = verdictDot(e.met);
     const because = document.createElement("span");
     because.className = "because";
     because.textContent = `${e.met ? "met" : "NOT met"}: ${e.because} (${e.at})`;
@@ -354,9 +360,7 @@ export function start(settings, data) {
   const buttons = data.tasks.map((t, k) => {
     const item = document.createElement("li");
     const button = document.createElement("button");
-    const dot = document.createElement("span");
-    dot.className = "dot";
-    dot.style.background = t.ok ? "#2e9e4f" : "#d64545";
+    const dot = verdictDot(t.ok);
     const verdict = document.createElement("span");
     verdict.className = "verdict";
     verdict.textContent = t.verdict;
