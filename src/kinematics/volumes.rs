@@ -66,9 +66,21 @@ impl Volumes {
     /// The pairs of volumes that are checked against each other, by index
     /// (the earlier first), and how.
     pub fn self_pairs(&self) -> impl Iterator<Item = (usize, usize, Contact)> + '_ {
+        self.pairs_where(|_, _| true)
+    }
+
+    /// The pairs of [`Volumes::self_pairs`] that `keep` keeps, asked before
+    /// how they may meet.
+    fn pairs_where<'a>(
+        &'a self,
+        keep: impl Fn(usize, usize) -> bool + Copy + 'a,
+    ) -> impl Iterator<Item = (usize, usize, Contact)> + 'a {
         let n = self.capsules.len();
         (0..n).flat_map(move |i| {
-            (i + 1..n).filter_map(move |j| self.contact(i, j).map(|c| (i, j, c)))
+            (i + 1..n).filter_map(move |j| {
+                let contact = keep(i, j).then(|| self.contact(i, j))??;
+                Some((i, j, contact))
+            })
         })
     }
 
@@ -86,15 +98,11 @@ impl Volumes {
     /// The first pair of volumes that meet as they may not (of the pairs
     /// whose distance may have changed since a clear posture).
     pub fn self_hit(&self) -> Option<(usize, usize)> {
-        // The pairs in `self_pairs`'s order, whether they moved apart asked
-        // before how they may meet (most pairs of a one-joint move did not).
-        let n = self.capsules.len();
-        (0..n).find_map(|i| {
-            (i + 1..n).find_map(|j| {
-                let contact = self.moved_apart(i, j).then(|| self.contact(i, j))??;
-                self.meet(i, j, contact).then_some((i, j))
-            })
-        })
+        // Whether a pair moved apart is asked first: most pairs of a
+        // one-joint move did not.
+        self.pairs_where(|i, j| self.moved_apart(i, j))
+            .find(|&(i, j, contact)| self.meet(i, j, contact))
+            .map(|(i, j, _)| (i, j))
     }
 
     /// Whether volumes `i` and `j` may have moved relative to each other:
