@@ -64,7 +64,7 @@ impl Obstacles {
             .boxes
             .iter()
             .map(|b| {
-                let cuboid = Cuboid::from_corner(b.corner_mm, b.size_mm, b.yaw_rad);
+                let cuboid = b.cuboid();
                 (b.name.clone(), cuboid, cuboid.bounds())
             })
             .collect();

@@ -24,6 +24,7 @@ pub use vision::Vision;
 
 use nalgebra::{Point3, Rotation2, Vector2, Vector3};
 
+use crate::geometry::Cuboid;
 use crate::kinematics::Body;
 use crate::options::PluginConfig;
 
@@ -79,24 +80,9 @@ impl BoxObstacle {
         self.corner_mm.xy().coords + self.rotation() * local_mm
     }
 
-    /// The box's axis-aligned bounds in the room: its lowest and highest
-    /// corners, its yaw taken into account.
-    pub fn bounds_mm(&self) -> [Point3<f64>; 2] {
-        let (x, y) = (self.size_mm.x, self.size_mm.y);
-        let floor = [(0.0, 0.0), (x, 0.0), (0.0, y), (x, y)]
-            .map(|(u, v)| self.floor_point(Vector2::new(u, v)));
-        let (lo, hi) = floor.iter().fold(
-            (
-                Vector2::repeat(f64::INFINITY),
-                Vector2::repeat(f64::NEG_INFINITY),
-            ),
-            |(lo, hi), p| (lo.inf(p), hi.sup(p)),
-        );
-        let z = self.corner_mm.z;
-        [
-            Point3::new(lo.x, lo.y, z),
-            Point3::new(hi.x, hi.y, z + self.size_mm.z),
-        ]
+    /// The box as a solid in the room.
+    pub fn cuboid(&self) -> Cuboid {
+        Cuboid::from_corner(self.corner_mm, self.size_mm, self.yaw_rad)
     }
 
     /// Whether `p` is inside the box and not on its surface (within a

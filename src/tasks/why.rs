@@ -24,7 +24,6 @@ use nalgebra::Point3;
 use super::common::Reaching;
 use crate::collision::{Obstacles, PlacedObstacles};
 use crate::floor::Routes;
-use crate::geometry::Cuboid;
 use crate::kinematics::{Chain, JointKind};
 use crate::plugin::{Placement, Search, TaskInput};
 use crate::report::{Names, Why, WIDENED_DEG};
@@ -345,7 +344,7 @@ impl Failed<'_> {
 /// How far `p` is from the room's obstacle `i` (a mesh: from its bounds).
 fn distance_to_obstacle(room: &Room, i: usize, p: &Point3<f64>) -> f64 {
     match room.boxes.get(i) {
-        Some(b) => Cuboid::from_corner(b.corner_mm, b.size_mm, b.yaw_rad).distance_to_segment(p, p),
+        Some(b) => b.cuboid().distance_to_segment(p, p),
         None => {
             let mesh = &room.meshes[i - room.boxes.len()];
             let (lo, hi) = mesh.vertices_mm.iter().fold(
