@@ -272,6 +272,10 @@ fn map_report(
         .collect();
     let cells: Vec<(MapCell, bool)> = runs
         .par_iter()
+        // One run a piece of work: rayon splits a range only until it has
+        // a few pieces per thread, and a piece not stolen is solved whole,
+        // so the hard rows at the bottom could end on one thread.
+        .with_max_len(1)
         .flat_map_iter(|row| {
             let mut last: Option<Placement> = None;
             row.iter()
