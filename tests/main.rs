@@ -2,6 +2,7 @@
 //! under tests/ (ARCHITECTURE.md says what each checks).
 
 mod bases;
+mod beyond;
 mod body;
 mod body_check;
 mod browser;

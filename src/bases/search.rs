@@ -14,6 +14,7 @@
 //! the way round is usually a small change of it) and, one start in four,
 //! anywhere.
 
+use super::beyond::OutOfReach;
 use crate::kinematics::Chain;
 
 use crate::plugin::{BasePose, IkProblem, Placement, ReachQuery, Retry, Search, Solver};
@@ -141,7 +142,15 @@ fn retry_blocked(
     best: &mut Preferred<Placement>,
 ) {
     let starts = retry.solver.starts() as usize;
+    let out_of_reach = OutOfReach::of(chain, query.own);
     for (k, placement) in blocked.iter().take(retry.placements).enumerate() {
+        let target_mm = placement.pose.to_base(&query.target_room_mm);
+        if out_of_reach
+            .as_ref()
+            .is_some_and(|o| o.proves(&target_mm, query.tolerance_mm))
+        {
+            continue;
+        }
         let seed = query.seed ^ 0x7e72_1ed5_0000_0001 ^ ((k as u64) << 32);
         let mut kicks = Kicks::new(chain, &placement.q, retry.spread, seed);
         let problem = query.problem(chain, placement.pose);

@@ -108,6 +108,22 @@ impl OwnBody {
         })
     }
 
+    /// Whether the capsule `cut` (in the base frame, its part within the
+    /// pelvis already cut away) overlaps a part by more than `depth_mm`:
+    /// a part is nearer its segment than its radius less the depth.
+    pub fn sunk_deeper_than(&self, cut: &Capsule, depth_mm: f64) -> bool {
+        let clear_mm = cut.radius_mm - depth_mm;
+        if clear_mm <= 0.0 {
+            return false;
+        }
+        let reach = nalgebra::Vector3::repeat(clear_mm);
+        let (lo, hi) = (cut.a.inf(&cut.b) - reach, cut.a.sup(&cut.b) + reach);
+        self.solids.iter().zip(&self.bounds).any(|(s, b)| {
+            (0..3).all(|i| hi[i] >= b[0][i] && lo[i] <= b[1][i])
+                && s.shape.distance_to_segment(&cut.a, &cut.b) < clear_mm
+        })
+    }
+
     /// The first solid the line from `a` to `b` (in the base frame) enters,
     /// and where along it (0 at `a`, 1 at `b`); the last `end_gap_mm` before
     /// `b` is not looked at.

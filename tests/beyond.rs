@@ -1,0 +1,148 @@
+//! The proof that a point is out of a person's reach (`bases::OutOfReach`)
+//! must never rule out a point that a posture clear of the person's own
+//! body reaches. The postures are pushed to the edge of what the body
+//! allows, where a proof that cut a corner would show it: from a random
+//! posture, joints are moved one at a time as far as the effector goes in
+//! a random direction while every solid but the hand stays clear of the
+//! person's legs and base; the point a little further on (within the
+//! tolerance) is asked of the proof. And it must rule out what a seated
+//! person plainly cannot reach.
+
+use nalgebra::{Point3, Vector3};
+use proptest::prelude::*;
+use reach::bases::OutOfReach;
+use reach::kinematics::{Chain, Owner};
+use reach::plugin::Registry;
+use reach::scene::OwnBody;
+use reach::Input;
+
+/// Each person of a scenario: the chain of their right hand and their own
+/// body and base.
+fn people() -> Vec<(String, Chain, OwnBody)> {
+    let text = "units mm deg\nuse std::arm\nuse std::people\n\
+        room r { size 4000 x 4000 x 2500 }\n\
+        person seated { mannequin right_arm { limits trunk_flexion (-10deg, 40deg) } base wheelchair }\n\
+        person seated_full { mannequin right_arm base wheelchair }\n\
+        person walker { mannequin right_arm base rollator }\n\
+        person small { mannequin woman_5th_seated base manual_wheelchair }\n\
+        person tall { mannequin man_95th_seated base power_wheelchair }\n\
+        person standing { mannequin man_50th base rollator }\n";
+    let registry = Registry::builtin();
+    let (_, scenario) = reach::check(
+        Input::Text {
+            name: "people.reach",
+            text,
+        },
+        &registry,
+    );
+    let scenario = scenario.expect("the scenario checks");
+    scenario
+        .persons
+        .iter()
+        .zip(&scenario.bases)
+        .map(|(p, base)| {
+            let chain = p.body.chain_named(None).expect("a chain");
+            (p.name.clone(), chain, base.own_body().clone())
+        })
+        .collect()
+}
+
+/// Whether posture `q` keeps every solid but the hand out of the
+/// person's own body and base.
+fn clear_of_own_body(chain: &Chain, own: &OwnBody, q: &[f64]) -> bool {
+    let v = chain.volumes(q);
+    let hand = Owner::Link(chain.joints.len());
+    v.capsules
+        .iter()
+        .zip(&v.owners)
+        .all(|(c, &o)| o == hand || own.hit(c).is_none())
+}
+
+#[test]
+fn the_proof_applies_to_the_standard_people() {
+    for (name, chain, own) in people() {
+        assert!(OutOfReach::of(&chain, &own).is_some(), "{name}");
+    }
+}
+
+#[test]
+fn the_floor_before_the_footrests_is_out_of_reach_and_the_lap_is_not() {
+    for (name, chain, own) in people()
+        .into_iter()
+        .filter(|(n, ..)| n.starts_with("seated"))
+    {
+        let proof = OutOfReach::of(&chain, &own).unwrap();
+        let hip_mm = own
+            .solids
+            .iter()
+            .map(|s| s.shape.bounds()[0].z)
+            .fold(f64::INFINITY, f64::min);
+        // Straight ahead, 10 mm above the lowest part of the chair (the
+        // floor), 600 mm ahead of the hip: the trunk would have to lean
+        // into the thighs.
+        let floor = Point3::new(600.0, 0.0, hip_mm + 10.0);
+        assert!(proof.proves(&floor, 10.0), "{name}: the floor");
+        let lap = Point3::new(350.0, -150.0, 250.0);
+        assert!(!proof.proves(&lap, 10.0), "{name}: above the knees");
+    }
+}
+
+/// Posture `q` moved, a joint at a time, as far as the effector goes
+/// along `towards` while it stays within the limits and clear of the
+/// person's own body.
+fn pushed_to_the_edge(
+    chain: &Chain,
+    own: &OwnBody,
+    mut q: Vec<f64>,
+    towards: &Vector3<f64>,
+) -> Vec<f64> {
+    let gain = |q: &[f64]| chain.effector(q).coords.dot(towards);
+    for step_rad in [0.2, 0.05, 0.01, 0.002] {
+        for _ in 0..40 {
+            let mut moved = false;
+            for i in 0..q.len() {
+                for sign in [1.0, -1.0] {
+                    let mut tried = q.clone();
+                    tried[i] = chain.joints[i].clamp(q[i] + sign * step_rad);
+                    if gain(&tried) > gain(&q) + 1e-9 && clear_of_own_body(chain, own, &tried) {
+                        q = tried;
+                        moved = true;
+                    }
+                }
+            }
+            if !moved {
+                break;
+            }
+        }
+    }
+    q
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    #[test]
+    fn a_point_a_clear_posture_reaches_is_never_ruled_out(
+        unit in prop::collection::vec(0.0..1.0f64, 16),
+        direction in prop::array::uniform3(-1.0..1.0f64),
+    ) {
+        let towards = Vector3::from(direction)
+            .try_normalize(1e-6)
+            .unwrap_or_else(|| -Vector3::z());
+        for (name, chain, own) in people() {
+            let proof = OutOfReach::of(&chain, &own).unwrap();
+            let q: Vec<f64> = chain
+                .joints
+                .iter()
+                .zip(unit.iter().cycle())
+                .map(|(j, u)| j.min + u * j.range())
+                .collect();
+            if !clear_of_own_body(&chain, &own, &q) {
+                continue;
+            }
+            let q = pushed_to_the_edge(&chain, &own, q, &towards);
+            let target = chain.effector(&q) + towards * 9.9;
+            prop_assert!(!proof.proves(&target, 10.0), "{}: {:?} reaches {:?}", name, q, target);
+        }
+    }
+}
