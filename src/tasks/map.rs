@@ -12,8 +12,8 @@ use crate::collision::Obstacles;
 use crate::error::ErrorKind;
 use crate::kinematics::Chain;
 use crate::plugin::{
-    Dependence, EffectorNeed, Options, ParamSpec, Params, Placement, Plugin, Registry, Search,
-    Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
+    Dependence, EffectorNeed, Options, ParamSpec, Params, Placement, Plugin, ReachQuery, Registry,
+    Search, Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
 };
 use crate::report::{MapCell, MapReport, TaskReport};
 use crate::scene::{GridCell, Surface};
@@ -248,6 +248,29 @@ pub(super) fn run_map(
     TaskReport::Map(map_report(input, surface, asked, judge))
 }
 
+/// The placement that reaches the point of `query` from where its
+/// neighbour `last` stood and how it stood, if one does: one descent of
+/// the task's solver; where the neighbour was reached only by the retry's
+/// steering descents (round the body, not through it) and that descent
+/// fails, one of those too.
+fn from_neighbour(
+    query: &ReachQuery<'_>,
+    asked: &MapAsked<'_>,
+    last: &Placement,
+    counts: &dyn Fn(&Placement) -> bool,
+) -> Option<Placement> {
+    let solver = asked.reaching.solver.as_ref();
+    let next = query.solve_from_at(asked.chain, last.pose, solver, last.solution.q.clone());
+    if counts(&next) {
+        return Some(next);
+    }
+    let retry = query.retry.filter(|_| last.retried)?;
+    let start = last.solution.q.clone();
+    let mut steered = query.solve_from_at(asked.chain, last.pose, retry.solver, start);
+    steered.retried = true;
+    counts(&steered).then_some(steered)
+}
+
 fn map_report(
     input: &TaskInput<'_>,
     surface: &Surface,
@@ -297,13 +320,7 @@ fn map_report(
                         .filter(|_| asked.grid.neighbour_starts)
                         .filter(|p| prepared.admits(&p.pose, &query.target_room_mm))
                         .and_then(|p| {
-                            let next = query.solve_from_at(
-                                asked.chain,
-                                p.pose,
-                                solver,
-                                p.solution.q.clone(),
-                            );
-                            judge(&next, cell.point_mm).then_some(next)
+                            from_neighbour(&query, asked, p, &|next| judge(next, cell.point_mm))
                         });
                     let placement = on.unwrap_or_else(|| prepared.reach(&query, solver));
                     input.progress.advance(1);
