@@ -190,3 +190,41 @@ fn an_obstacle_moved_far_away_leaves_a_task_cached() {
     assert_eq!(stats.ran, 1, "moved between ben and the mug");
     assert_ne!(json(&before), json(&after));
 }
+
+/// The answers of `text` from the binary, a process with nothing kept.
+fn fresh_process_tasks(text: &str) -> serde_json::Value {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("edited.reach");
+    std::fs::write(&file, text).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_reach"))
+        .args(["run", "--format", "json"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    let report: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    report["tasks"].clone()
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(6))]
+
+    /// A base's floor is kept by the process across checks (watch mode
+    /// checks the file again at every save): after each edit, the
+    /// answers in this process, where floors of earlier rooms are kept,
+    /// are those of a process that starts afresh.
+    #[test]
+    fn a_kept_floor_is_the_floor_worked_out_afresh(mut room in room(), edits in prop::collection::vec(edit(), 1..4)) {
+        let mut seen = vec![room.text()];
+        for e in &edits {
+            room.apply(e);
+            seen.push(room.text());
+        }
+        // Back to the first room too: its floor is kept from the start.
+        seen.push(seen[0].clone());
+        for text in &seen {
+            let Some(s) = checked(text) else { continue };
+            let here: serde_json::Value = serde_json::from_str(&json(&reach::run(&s))).unwrap();
+            prop_assert_eq!(&here["tasks"], &fresh_process_tasks(text));
+        }
+    }
+}

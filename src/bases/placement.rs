@@ -14,7 +14,9 @@
 //! target minus admissible base positions) made of samples, with the heading
 //! theta_0 of section 5.3.6 searched over the headings the options allow.
 
+use std::collections::hash_map::DefaultHasher;
 use std::collections::HashMap;
+use std::hash::Hasher;
 use std::sync::{Arc, Mutex, OnceLock};
 
 use geo::{MultiPolygon, Point};
@@ -31,7 +33,7 @@ use crate::kinematics::Chain;
 use crate::plugin::{
     Base, BasePose, Fit, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Solver, Tries,
 };
-use crate::scene::{column_solid, OwnBody, Physique, Room};
+use crate::scene::{column_solid, hash_bits, OwnBody, Physique, Room};
 use crate::solvers::random_posture;
 
 /// The admissible region at each heading searched (one region for every
@@ -39,6 +41,7 @@ use crate::solvers::random_posture;
 type Regions = Vec<(f64, Arc<Region>)>;
 
 /// Where the base may be placed in one room, worked out once.
+#[derive(Clone)]
 struct Floor {
     /// The admissible region at each heading searched; where the room has
     /// doors, only the parts the base can get to from one.
@@ -80,6 +83,29 @@ impl<T> ByRoom<T> {
         Arc::clone(by_room.entry(room.name.clone()).or_default())
     }
 }
+
+/// The floors worked out in this process, by [`Mobile::floor_key`]: watch
+/// mode checks the scenario again at every save, and a target moved or a
+/// task added leaves every base's floor as it was.
+fn kept_floor(key: u64, compute: impl FnOnce() -> Floor) -> Floor {
+    static FLOORS: OnceLock<Mutex<HashMap<u64, Floor>>> = OnceLock::new();
+    let floors = FLOORS.get_or_init(Mutex::default);
+    let lock = || floors.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some(floor) = lock().get(&key) {
+        return floor.clone();
+    }
+    let floor = compute();
+    let mut kept = lock();
+    if kept.len() >= FLOORS_KEPT {
+        kept.clear();
+    }
+    kept.insert(key, floor.clone());
+    floor
+}
+
+/// How many floors the process keeps before it starts again: enough for
+/// the bases of a scenario; a population's members each have their own.
+const FLOORS_KEPT: usize = 64;
 
 /// The most candidates a reach takes from the capability map, and the most
 /// placements it looks at to find them.
@@ -123,8 +149,26 @@ impl Mobile {
     /// Where the base may be placed, worked out once per room.
     fn floor(&self, room: &Room) -> Arc<OnceLock<Floor>> {
         let cell = self.floors.cell(room);
-        cell.get_or_init(|| self.compute_floor(room));
+        cell.get_or_init(|| kept_floor(self.floor_key(room), || self.compute_floor(room)));
         cell
+    }
+
+    /// Everything the floor depends on, hashed: the room's size, obstacles
+    /// and doors, the footprint, the headings and the zone.
+    fn floor_key(&self, room: &Room) -> u64 {
+        let mut h = DefaultHasher::new();
+        room.hash_floor(&mut h);
+        for part in &self.footprint.parts {
+            part.outline_mm
+                .iter()
+                .for_each(|p| hash_bits(p.iter(), &mut h));
+            hash_bits(&part.z_mm, &mut h);
+        }
+        hash_bits(&self.placing.headings, &mut h);
+        if let Some(zone) = self.placing.zone {
+            hash_bits(&[zone.min.0, zone.min.1, zone.max.0, zone.max.1], &mut h);
+        }
+        h.finish()
     }
 
     /// The admissible regions, one per heading searched; where the room

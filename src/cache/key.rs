@@ -18,7 +18,7 @@ use crate::kinematics::{Body, Chain, Joint};
 use crate::plugin::Dependence;
 use crate::progress::NoProgress;
 use crate::scenario::{Scenario, SubjectRef, TaskSpec};
-use crate::scene::{BasePose, Door, Person, Room};
+use crate::scene::{hash_bits, BasePose, Person, Room};
 
 /// The placements tried for each point of a task, by what they depend on.
 pub(super) type Placements = HashMap<u64, Arc<Vec<Tried>>>;
@@ -88,14 +88,9 @@ fn placements_key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence)
             .iter()
             .for_each(|p| hash_bits(p.iter(), h));
         hash_bits(room.size_mm.iter(), h);
-        (0..room.boxes.len() + room.meshes.len()).for_each(|i| hash_obstacle(room, i, h));
-        room.doors.iter().for_each(|d| hash_door(d, h));
+        (0..room.boxes.len() + room.meshes.len()).for_each(|i| room.hash_obstacle(i, h));
+        room.doors.iter().for_each(|d| d.hash_into(h));
     })
-}
-
-fn hash_door(d: &Door, h: &mut DefaultHasher) {
-    (&d.name, d.wall as u8).hash(h);
-    hash_bits(&[d.along_mm, d.width_mm], h);
 }
 
 fn key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence, tried: &[Tried]) -> u64 {
@@ -116,7 +111,7 @@ fn key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence, tried: &[T
         // place depends on the doors and on every obstacle of the room.
         let routed = !room.doors.is_empty() && tried.iter().any(|t| t.hips.around.is_some());
         if routed {
-            room.doors.iter().for_each(|d| hash_door(d, h));
+            room.doors.iter().for_each(|d| d.hash_into(h));
         }
         // A population's people differ from its first in their bodies,
         // bases and placements: each is in the key, and every obstacle.
@@ -126,12 +121,12 @@ fn key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence, tried: &[T
                 hash_person(person, h);
                 person.base.hash(h);
             }
-            (0..room.boxes.len() + room.meshes.len()).for_each(|i| hash_obstacle(room, i, h));
+            (0..room.boxes.len() + room.meshes.len()).for_each(|i| room.hash_obstacle(i, h));
         } else if routed {
-            (0..room.boxes.len() + room.meshes.len()).for_each(|i| hash_obstacle(room, i, h));
+            (0..room.boxes.len() + room.meshes.len()).for_each(|i| room.hash_obstacle(i, h));
         } else if let Some(reach_mm) = dependence.reach_mm {
             for i in obstacles_within(room, tried, reach_mm, dependence.sight_lines) {
-                hash_obstacle(room, i, h);
+                room.hash_obstacle(i, h);
             }
         }
     })
@@ -141,12 +136,6 @@ fn hash_of(f: impl FnOnce(&mut DefaultHasher)) -> u64 {
     let mut h = DefaultHasher::new();
     f(&mut h);
     h.finish()
-}
-
-fn hash_bits<'a>(values: impl IntoIterator<Item = &'a f64>, h: &mut DefaultHasher) {
-    for v in values {
-        v.to_bits().hash(h);
-    }
 }
 
 fn hash_pose(pose: &BasePose, h: &mut DefaultHasher) {
@@ -201,22 +190,4 @@ fn hash_joint(j: &Joint, h: &mut DefaultHasher) {
         hash_bits(fixed.translation.vector.iter(), h);
     }
     hash_bits(&[j.min, j.max, j.neutral, j.weight], h);
-}
-
-/// Obstacle `index` of the room (boxes, then meshes), by value.
-fn hash_obstacle(room: &Room, index: usize, h: &mut DefaultHasher) {
-    index.hash(h);
-    match room.boxes.get(index) {
-        Some(b) => {
-            b.name.hash(h);
-            hash_bits(b.corner_mm.iter().chain(b.size_mm.iter()), h);
-            b.yaw_rad.to_bits().hash(h);
-        }
-        None => {
-            let m = &room.meshes[index - room.boxes.len()];
-            m.name.hash(h);
-            m.vertices_mm.iter().for_each(|v| hash_bits(v.iter(), h));
-            m.triangles.hash(h);
-        }
-    }
 }

@@ -9,6 +9,7 @@ mod mesh;
 mod person_parts;
 mod placement;
 mod population;
+mod room_hash;
 mod surface;
 mod vision;
 
@@ -19,6 +20,7 @@ pub use placement::{
     BasePose, Blocker, Collision, HasSolution, IkSolution, Placement, Preferred, Wall,
 };
 pub use population::{Drawn, Population};
+pub use room_hash::hash_bits;
 pub use surface::{Grid, GridCell, Surface, FACES};
 pub use vision::Vision;
 

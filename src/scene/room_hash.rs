@@ -1,0 +1,52 @@
+//! A room's values fed to a hasher bit for bit: what keys a result kept
+//! across runs (watch mode's task results, a base's floor) on the room it
+//! was worked out in.
+
+use std::hash::{Hash, Hasher};
+
+use super::{Door, Room};
+
+/// Each value's bits, in order.
+pub fn hash_bits<'a>(values: impl IntoIterator<Item = &'a f64>, h: &mut impl Hasher) {
+    for v in values {
+        v.to_bits().hash(h);
+    }
+}
+
+impl Room {
+    /// Obstacle `index` (boxes, then meshes), by value.
+    pub fn hash_obstacle(&self, index: usize, h: &mut impl Hasher) {
+        index.hash(h);
+        match self.boxes.get(index) {
+            Some(b) => {
+                b.name.hash(h);
+                hash_bits(b.corner_mm.iter().chain(b.size_mm.iter()), h);
+                b.yaw_rad.to_bits().hash(h);
+            }
+            None => {
+                let m = &self.meshes[index - self.boxes.len()];
+                m.name.hash(h);
+                m.vertices_mm.iter().for_each(|v| hash_bits(v.iter(), h));
+                m.triangles.hash(h);
+            }
+        }
+    }
+
+    /// Everything a base's floor depends on: the size, every obstacle and
+    /// the doors.
+    pub fn hash_floor(&self, h: &mut impl Hasher) {
+        hash_bits(self.size_mm.iter(), h);
+        (self.boxes.len(), self.meshes.len()).hash(h);
+        (0..self.boxes.len() + self.meshes.len()).for_each(|i| self.hash_obstacle(i, h));
+        self.doors.len().hash(h);
+        self.doors.iter().for_each(|d| d.hash_into(h));
+    }
+}
+
+impl Door {
+    /// The door by value.
+    pub fn hash_into(&self, h: &mut impl Hasher) {
+        (&self.name, self.wall as u8).hash(h);
+        hash_bits(&[self.along_mm, self.width_mm], h);
+    }
+}
