@@ -77,7 +77,7 @@ fn tried(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence) -> Vec<T
 }
 
 /// What a task's placements depend on: the person's base, the chain, the
-/// points, and the room (its size and every obstacle).
+/// points, and the room (its size, every obstacle and the doors).
 fn placements_key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence) -> u64 {
     let room = &scenario.rooms[task.room];
     hash_of(|h| {
@@ -87,9 +87,7 @@ fn placements_key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence)
             .points_mm
             .iter()
             .for_each(|p| hash_bits(p.iter(), h));
-        hash_bits(room.size_mm.iter(), h);
-        (0..room.boxes.len() + room.meshes.len()).for_each(|i| room.hash_obstacle(i, h));
-        room.doors.iter().for_each(|d| d.hash_into(h));
+        room.hash_floor(h);
     })
 }
 
@@ -121,9 +119,9 @@ fn key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence, tried: &[T
                 hash_person(person, h);
                 person.base.hash(h);
             }
-            (0..room.boxes.len() + room.meshes.len()).for_each(|i| room.hash_obstacle(i, h));
+            room.hash_obstacles(h);
         } else if routed {
-            (0..room.boxes.len() + room.meshes.len()).for_each(|i| room.hash_obstacle(i, h));
+            room.hash_obstacles(h);
         } else if let Some(reach_mm) = dependence.reach_mm {
             for i in obstacles_within(room, tried, reach_mm, dependence.sight_lines) {
                 room.hash_obstacle(i, h);

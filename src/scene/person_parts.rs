@@ -86,9 +86,6 @@ impl OwnBody {
     /// Every part `capsule` overlaps, by index, as [`OwnBody::hit`] finds
     /// the first.
     pub fn hits<'a>(&'a self, capsule: &Capsule) -> impl Iterator<Item = usize> + 'a {
-        fn apart([lo, hi]: &[Point3<f64>; 2], b: &[Point3<f64>; 2]) -> bool {
-            (0..3).any(|i| hi[i] < b[0][i] || lo[i] > b[1][i])
-        }
         // Most links are nowhere near the legs or the chair: the bounds
         // say so before the pelvis is cut away.
         let whole = capsule.bounds();
@@ -117,10 +114,9 @@ impl OwnBody {
             return false;
         }
         let reach = nalgebra::Vector3::repeat(clear_mm);
-        let (lo, hi) = (cut.a.inf(&cut.b) - reach, cut.a.sup(&cut.b) + reach);
+        let near = [cut.a.inf(&cut.b) - reach, cut.a.sup(&cut.b) + reach];
         self.solids.iter().zip(&self.bounds).any(|(s, b)| {
-            (0..3).all(|i| hi[i] >= b[0][i] && lo[i] <= b[1][i])
-                && s.shape.distance_to_segment(&cut.a, &cut.b) < clear_mm
+            !apart(&near, b) && s.shape.distance_to_segment(&cut.a, &cut.b) < clear_mm
         })
     }
 
@@ -168,6 +164,12 @@ impl OwnBody {
         }
         capsule.outside_ball(&Point3::origin(), self.pelvis_mm)
     }
+}
+
+/// Whether two axis-aligned bounds (least and greatest corners) have a gap
+/// between them along some axis.
+fn apart([lo, hi]: &[Point3<f64>; 2], b: &[Point3<f64>; 2]) -> bool {
+    (0..3).any(|i| hi[i] < b[0][i] || lo[i] > b[1][i])
 }
 
 /// The column's corners as a box, a solid of that name.

@@ -32,12 +32,17 @@ impl Room {
         }
     }
 
+    /// Every obstacle, in order, by value.
+    pub fn hash_obstacles(&self, h: &mut impl Hasher) {
+        (0..self.boxes.len() + self.meshes.len()).for_each(|i| self.hash_obstacle(i, h));
+    }
+
     /// Everything a base's floor depends on: the size, every obstacle and
     /// the doors.
     pub fn hash_floor(&self, h: &mut impl Hasher) {
         hash_bits(self.size_mm.iter(), h);
         (self.boxes.len(), self.meshes.len()).hash(h);
-        (0..self.boxes.len() + self.meshes.len()).for_each(|i| self.hash_obstacle(i, h));
+        self.hash_obstacles(h);
         self.doors.len().hash(h);
         self.doors.iter().for_each(|d| d.hash_into(h));
     }
