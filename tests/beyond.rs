@@ -1,16 +1,17 @@
-//! The proof that a point is out of a person's reach (`bases::OutOfReach`)
+//! The proof that a point is out of a person's reach (`collision::OutOfReach`)
 //! must never rule out a point that a posture clear of the person's own
 //! body reaches. The postures are pushed to the edge of what the body
 //! allows, where a proof that cut a corner would show it: from a random
 //! posture, joints are moved one at a time as far as the effector goes in
 //! a random direction while every solid but the hand stays clear of the
 //! person's legs and base; the point a little further on (within the
-//! tolerance) is asked of the proof. And it must rule out what a seated
-//! person plainly cannot reach.
+//! tolerance) is asked of the proof, and of the proofs a map keeps
+//! (`collision::KeptProofs`), which look longer at a point asked again.
+//! And it must rule out what a seated person plainly cannot reach.
 
 use nalgebra::{Point3, Vector3};
 use proptest::prelude::*;
-use reach::bases::OutOfReach;
+use reach::collision::{KeptProofs, OutOfReach};
 use reach::kinematics::{Chain, Owner};
 use reach::plugin::Registry;
 use reach::scene::OwnBody;
@@ -84,6 +85,12 @@ fn the_floor_before_the_footrests_is_out_of_reach_and_the_lap_is_not() {
         assert!(proof.proves(&floor, 10.0), "{name}: the floor");
         let lap = Point3::new(350.0, -150.0, 250.0);
         assert!(!proof.proves(&lap, 10.0), "{name}: above the knees");
+        let kept = KeptProofs::new(&chain, &own);
+        assert!(kept.proves(&floor, 10.0), "{name}: the floor, kept");
+        assert!(
+            (0..64).all(|_| !kept.proves(&lap, 10.0)),
+            "{name}: the lap, kept"
+        );
     }
 }
 
@@ -143,6 +150,13 @@ proptest! {
             let q = pushed_to_the_edge(&chain, &own, q, &towards);
             let target = chain.effector(&q) + towards * 9.9;
             prop_assert!(!proof.proves(&target, 10.0), "{}: {:?} reaches {:?}", name, q, target);
+            // Kept for a map and asked again and again, the proof looks
+            // longer (up to 64 times as long) and for a grid cell round
+            // the point: it must not rule the point out either.
+            let kept = KeptProofs::new(&chain, &own);
+            for asked in 1..=64 {
+                prop_assert!(!kept.proves(&target, 10.0), "{}: kept, asked {} times: {:?} reaches {:?}", name, asked, q, target);
+            }
         }
     }
 }

@@ -4,7 +4,6 @@
 //! mobile base's candidates come from the person's capability map
 //! (`capability.rs`) within what its options allow (`placing.rs`).
 
-mod beyond;
 mod capability;
 mod fixed;
 mod placement;
@@ -13,7 +12,6 @@ mod search;
 mod trolley;
 mod wheelchair;
 
-pub use beyond::OutOfReach;
 pub use fixed::{Fixed, FixedSettings};
 pub use placement::Mobile;
 pub use placing::{Approach, Placing, PlacingSettings};

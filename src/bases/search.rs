@@ -12,9 +12,12 @@
 //! can miss postures that go round a board, and an unreachable answer must
 //! mean unreachable. The retry starts near the blocked posture (most of
 //! the way round is usually a small change of it) and, one start in four,
-//! anywhere.
+//! anywhere. A retry that does not reach changes nothing (the answer shows
+//! the first search's closest): a placement proved hopeless
+//! (`collision::KeptProofs`) is skipped, and the answer must be the same
+//! whether or not the proof was made.
 
-use super::beyond::OutOfReach;
+use crate::collision::KeptProofs;
 use crate::kinematics::Chain;
 
 use crate::plugin::{BasePose, IkProblem, Placement, ReachQuery, Retry, Search, Solver};
@@ -142,13 +145,17 @@ fn retry_blocked(
     best: &mut Preferred<Placement>,
 ) {
     let starts = retry.solver.starts() as usize;
-    let out_of_reach = OutOfReach::of(chain, query.own);
+    let made_here;
+    let proofs = match retry.proofs {
+        Some(kept) => kept,
+        None => {
+            made_here = KeptProofs::new(chain, query.own);
+            &made_here
+        }
+    };
     for (k, placement) in blocked.iter().take(retry.placements).enumerate() {
         let target_mm = placement.pose.to_base(&query.target_room_mm);
-        if out_of_reach
-            .as_ref()
-            .is_some_and(|o| o.proves(&target_mm, query.tolerance_mm))
-        {
+        if proofs.proves(&target_mm, query.tolerance_mm) {
             continue;
         }
         let seed = query.seed ^ 0x7e72_1ed5_0000_0001 ^ ((k as u64) << 32);
@@ -162,10 +169,15 @@ fn retry_blocked(
         for _ in 0..starts {
             let start = clear_start(&problem, &mut kicks, draws);
             let mut tried = query.solve_from_at(chain, placement.pose, retry.solver, start);
+            if !tried.solution.reaches(query.tolerance_mm) {
+                // Nearer or not, the answer stays the first search's: a
+                // retry skipped (proved hopeless) must change nothing.
+                continue;
+            }
             tried.retried = true;
             let comfort = chain.discomfort(&tried.solution.q);
             best.offer(tried, comfort);
-            if best.reaches() && query.search == Search::FirstReaching {
+            if query.search == Search::FirstReaching {
                 return;
             }
         }

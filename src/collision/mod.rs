@@ -5,10 +5,14 @@
 //! meshes with parry (`parry3d-f64`); all in the room frame, millimetres.
 //! `placed.rs` asks it of a whole posture, with the person's own body.
 
+mod beyond;
+mod kept_proofs;
 mod placed;
 #[cfg(test)]
 mod split_mesh_tests;
 
+pub use beyond::{OutOfReach, Verdict};
+pub use kept_proofs::KeptProofs;
 pub use placed::PlacedObstacles;
 
 use nalgebra::{Isometry3, Point3, Vector3};

@@ -7,7 +7,7 @@ use std::fmt;
 use nalgebra::Point3;
 
 use super::{IkProblem, Options, Plugin, SettingsError, Solver};
-use crate::collision::{Obstacles, PlacedObstacles};
+use crate::collision::{KeptProofs, Obstacles, PlacedObstacles};
 use geo::MultiPolygon;
 
 use crate::floor::{Footprint, Misfit, Shut};
@@ -51,9 +51,21 @@ pub struct Retry<'a> {
     /// How far a start may stray from the blocked posture, as a fraction
     /// of each joint's range.
     pub spread: f64,
+    /// Proofs that a placement cannot reach, kept across the queries of a
+    /// map (for this chain and own body); none: each query proves afresh.
+    pub proofs: Option<&'a KeptProofs<'a>>,
 }
 
-impl ReachQuery<'_> {
+impl<'a> ReachQuery<'a> {
+    /// The query with its retry (if it has one) keeping its proofs in
+    /// `proofs` (made for the chain it is asked of and its own body).
+    pub fn keeping_proofs(mut self, proofs: &'a KeptProofs<'a>) -> Self {
+        if let Some(retry) = &mut self.retry {
+            retry.proofs = Some(proofs);
+        }
+        self
+    }
+
     /// The problem in the base frame of a base standing at `pose`.
     pub fn problem<'c>(&'c self, chain: &'c Chain, pose: BasePose) -> IkProblem<'c> {
         IkProblem {

@@ -203,6 +203,7 @@ impl Reaching {
             solver: self.blocked_solver.as_ref(),
             placements: self.common.blocked_retries as usize,
             spread: self.common.blocked_spread,
+            proofs: None,
         });
         ReachQuery {
             target_room_mm,

@@ -8,7 +8,7 @@ use nalgebra::{Point3, Vector3};
 use rayon::prelude::*;
 
 use super::common::{chain_of, mix_seed, Common, CommonDecl, Reaching, INCREMENTAL, MAP_RETRY};
-use crate::collision::Obstacles;
+use crate::collision::{KeptProofs, Obstacles};
 use crate::error::ErrorKind;
 use crate::kinematics::Chain;
 use crate::plugin::{
@@ -283,6 +283,7 @@ fn map_report(
     let grid = surface.grid(asked.grid.step_mm);
     input.progress.add_work(grid.cells.len() as u64);
     let solver = reaching.solver.as_ref();
+    let proofs = KeptProofs::new(asked.chain, input.base.own_body());
     // Runs of a row in parallel; along a run, each point first tries on
     // from where the last point reached stood and how it stood (one solve,
     // few sweeps), then searches as a reach would. Runs, not whole rows,
@@ -308,13 +309,15 @@ fn map_report(
                         reaching.common.seed,
                         &[&surface.name, &person.name, &column, &row],
                     );
-                    let query = reaching.query(
-                        cell.point_mm + asked.lift_mm,
-                        seed,
-                        Search::FirstReaching,
-                        asked.obstacles,
-                        input.base.own_body(),
-                    );
+                    let query = reaching
+                        .query(
+                            cell.point_mm + asked.lift_mm,
+                            seed,
+                            Search::FirstReaching,
+                            asked.obstacles,
+                            input.base.own_body(),
+                        )
+                        .keeping_proofs(&proofs);
                     let on = last
                         .as_ref()
                         .filter(|_| asked.grid.neighbour_starts)

@@ -48,15 +48,27 @@ pub struct OutOfReach<'a> {
     riders: Vec<usize>,
 }
 
-/// How many boxes of trunk postures one proof may look at before it gives
-/// up.
-const BOXES: usize = 1024;
+/// How many boxes of trunk postures [`OutOfReach::proves`] looks at
+/// before it gives up (about half a millisecond).
+pub const BOXES: usize = 1024;
 /// The most trunk joints the proof splits.
 const MOST_TRUNK_JOINTS: usize = 4;
 
 /// A box of trunk postures: each joint's least and greatest value (the
 /// first `OutOfReach::trunk_joints` are used).
 type Ranges = [(f64, f64); MOST_TRUNK_JOINTS];
+
+/// What a proof found.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// No posture reaches the point.
+    Proved,
+    /// A clear trunk posture brings the shoulder within the arm's length:
+    /// the cut cannot rule the point out, however long it looks.
+    Cannot,
+    /// Not decided within the boxes it was given: more might.
+    Undecided,
+}
 
 /// A box waiting to be looked at, and the nearest its parent's postures
 /// may bring the shoulder to the point.
@@ -159,9 +171,17 @@ impl<'a> OutOfReach<'a> {
 
     /// Whether no posture within the joint limits that keeps the trunk
     /// out of the person's own body brings the effector within
-    /// `tolerance_mm` of `target_mm` (in the base frame). False where the
-    /// proof cannot tell.
+    /// `tolerance_mm` of `target_mm` (in the base frame), looking at up to
+    /// [`BOXES`] boxes. False where the proof cannot tell.
     pub fn proves(&self, target_mm: &Point3<f64>, tolerance_mm: f64) -> bool {
+        self.decide(target_mm, tolerance_mm, BOXES) == Verdict::Proved
+    }
+
+    /// The proof that no posture within the joint limits that keeps the
+    /// trunk out of the person's own body brings the effector within
+    /// `tolerance_mm` of `target_mm` (in the base frame), looking at up to
+    /// `boxes` boxes of trunk postures.
+    pub fn decide(&self, target_mm: &Point3<f64>, tolerance_mm: f64, boxes: usize) -> Verdict {
         let reach_mm = self.arm_mm + tolerance_mm;
         let n = self.trunk_joints;
         let mut root: Ranges = [(0.0, 0.0); MOST_TRUNK_JOINTS];
@@ -171,15 +191,15 @@ impl<'a> OutOfReach<'a> {
         // Most promising first (the nearest the shoulder may come): a clear
         // posture within reach, which ends the proof, is found soonest;
         // a proof looks at every box whatever the order.
-        let mut boxes = BinaryHeap::from([Boxed {
+        let mut waiting = BinaryHeap::from([Boxed {
             nearest_mm: 0.0,
             ranges: root,
         }]);
         let mut looked = 0;
-        while let Some(Boxed { ranges, .. }) = boxes.pop() {
+        while let Some(Boxed { ranges, .. }) = waiting.pop() {
             looked += 1;
-            if looked > BOXES {
-                return false;
+            if looked > boxes {
+                return Verdict::Undecided;
             }
             let mut q = [0.0; MOST_TRUNK_JOINTS];
             let mut half = [0.0; MOST_TRUNK_JOINTS];
@@ -203,7 +223,7 @@ impl<'a> OutOfReach<'a> {
             if centre_mm <= reach_mm && solids.iter().all(|c| self.own.hit(c).is_none()) {
                 // A clear trunk posture with the shoulder within the arm's
                 // length: the cut cannot rule the point out.
-                return false;
+                return Verdict::Cannot;
             }
             let widest = self.widest(&trunk, &pivot, half);
             let (lo, hi) = ranges[widest];
@@ -212,10 +232,10 @@ impl<'a> OutOfReach<'a> {
             upper[widest].0 = mid;
             lower[widest].1 = mid;
             for ranges in [upper, lower] {
-                boxes.push(Boxed { nearest_mm, ranges });
+                waiting.push(Boxed { nearest_mm, ranges });
             }
         }
-        true
+        Verdict::Proved
     }
 
     /// The trunk at joint values `q`.
