@@ -28,6 +28,7 @@ mod excerpt;
 pub mod figure;
 pub mod floor;
 pub mod geometry;
+pub mod kept;
 pub mod kinematics;
 pub mod limits;
 mod loader;

@@ -124,6 +124,7 @@ impl Room {
         );
         t += "gaze t0 by chair { solver fabrik { starts 1 kicks 2 } blocked_retries 0 }\n";
         t += "map b0.top by fix { step 400mm solver incremental { starts 1 } blocked_retries 1 blocked_solver incremental { starts 2 } }\n";
+        t += "standard ada2010 in r\n";
         t
     }
 }
@@ -208,10 +209,11 @@ fn fresh_process_tasks(text: &str) -> serde_json::Value {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(6))]
 
-    /// A base's floor is kept by the process across checks (watch mode
-    /// checks the file again at every save): after each edit, the
-    /// answers in this process, where floors of earlier rooms are kept,
-    /// are those of a process that starts afresh.
+    /// A base's floor, and the free floor a standard's routes travel, are
+    /// kept by the process across checks (watch mode checks the file again
+    /// at every save): after each edit, the answers in this process, where
+    /// floors of earlier rooms are kept, are those of a process that starts
+    /// afresh.
     #[test]
     fn a_kept_floor_is_the_floor_worked_out_afresh(mut room in room(), edits in prop::collection::vec(edit(), 1..4)) {
         let mut seen = vec![room.text()];

@@ -29,6 +29,7 @@ use super::placing::{Approach, Placing};
 use super::search::{search, Candidate};
 use crate::floor::{Doorway, FloorObstacles, Footprint, Misfit, Region, Routes, Shut};
 use crate::geometry::Solid;
+use crate::kept::Kept;
 use crate::kinematics::Chain;
 use crate::plugin::{
     Base, BasePose, Fit, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Solver, Tries,
@@ -86,26 +87,9 @@ impl<T> ByRoom<T> {
 
 /// The floors worked out in this process, by [`Mobile::floor_key`]: watch
 /// mode checks the scenario again at every save, and a target moved or a
-/// task added leaves every base's floor as it was.
-fn kept_floor(key: u64, compute: impl FnOnce() -> Floor) -> Floor {
-    static FLOORS: OnceLock<Mutex<HashMap<u64, Floor>>> = OnceLock::new();
-    let floors = FLOORS.get_or_init(Mutex::default);
-    let lock = || floors.lock().unwrap_or_else(|e| e.into_inner());
-    if let Some(floor) = lock().get(&key) {
-        return floor.clone();
-    }
-    let floor = compute();
-    let mut kept = lock();
-    if kept.len() >= FLOORS_KEPT {
-        kept.clear();
-    }
-    kept.insert(key, floor.clone());
-    floor
-}
-
-/// How many floors the process keeps before it starts again: enough for
-/// the bases of a scenario; a population's members each have their own.
-const FLOORS_KEPT: usize = 64;
+/// task added leaves every base's floor as it was. 64: enough for the bases
+/// of a scenario; a population's members each have their own.
+static FLOORS: Kept<Floor> = Kept::new(64);
 
 /// The most candidates a reach takes from the capability map, and the most
 /// placements it looks at to find them.
@@ -149,7 +133,7 @@ impl Mobile {
     /// Where the base may be placed, worked out once per room.
     fn floor(&self, room: &Room) -> Arc<OnceLock<Floor>> {
         let cell = self.floors.cell(room);
-        cell.get_or_init(|| kept_floor(self.floor_key(room), || self.compute_floor(room)));
+        cell.get_or_init(|| FLOORS.get_or(self.floor_key(room), || self.compute_floor(room)));
         cell
     }
 
@@ -158,12 +142,7 @@ impl Mobile {
     fn floor_key(&self, room: &Room) -> u64 {
         let mut h = DefaultHasher::new();
         room.hash_floor(&mut h);
-        for part in &self.footprint.parts {
-            part.outline_mm
-                .iter()
-                .for_each(|p| hash_bits(p.iter(), &mut h));
-            hash_bits(&part.z_mm, &mut h);
-        }
+        self.footprint.hash_into(&mut h);
         hash_bits(&self.placing.headings, &mut h);
         if let Some(zone) = self.placing.zone {
             hash_bits(&[zone.min.0, zone.min.1, zone.max.0, zone.max.1], &mut h);

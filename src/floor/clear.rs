@@ -10,10 +10,14 @@ use geo::{
     LineString, MultiPolygon, Point, Polygon, Rect,
 };
 use nalgebra::Vector2;
+use std::collections::hash_map::DefaultHasher;
+use std::hash::{Hash, Hasher};
+use std::sync::Arc;
 
 use super::obstacles::FloorObstacles;
 use super::region::{admissible_in, shrunk_room, Turned};
 use super::{FloorPart, Footprint};
+use crate::kept::Kept;
 use crate::scene::{BoxObstacle, Door, Room, Wall};
 
 /// Sides of the polygon inscribed in a circle: its flats are within a
@@ -25,7 +29,7 @@ const DOORWAY_MM: f64 = 20.0;
 
 /// The floor free of obstacles that come down below `below_mm`.
 pub struct FreeFloor {
-    region: MultiPolygon<f64>,
+    region: Arc<MultiPolygon<f64>>,
 }
 
 impl FreeFloor {
@@ -60,7 +64,24 @@ fn part(outline_mm: Vec<Vector2<f64>>, below_mm: f64) -> FloorPart {
 }
 
 /// Where `footprint` fits in the whole room at `heading_rad`.
-fn whole(room: &Room, footprint: &Footprint, heading_rad: f64) -> MultiPolygon<f64> {
+fn whole(room: &Room, footprint: &Footprint, heading_rad: f64) -> Arc<MultiPolygon<f64>> {
+    let mut h = DefaultHasher::new();
+    room.hash_floor(&mut h);
+    footprint.hash_into(&mut h);
+    heading_rad.to_bits().hash(&mut h);
+    WHOLE.get_or(h.finish(), || {
+        Arc::new(worked_out(room, footprint, heading_rad))
+    })
+}
+
+/// The regions [`whole`] worked out in this process: watch mode checks a
+/// standard's rules again at every save, and a route's width is found by
+/// halving, each step a region (about 15 a clear floor space); 512 holds
+/// those of a kitchen's elements several times.
+static WHOLE: Kept<Arc<MultiPolygon<f64>>> = Kept::new(512);
+
+/// Where `footprint`, turned to `heading_rad`, fits in `room`, worked out.
+fn worked_out(room: &Room, footprint: &Footprint, heading_rad: f64) -> MultiPolygon<f64> {
     let turned = Turned::new(footprint, heading_rad);
     match shrunk_room(room, &turned, None) {
         Some(within) => admissible_in(within, &turned, &FloorObstacles::new(room, footprint)),
@@ -122,9 +143,9 @@ pub fn disc_centre(
 }
 
 /// `region`'s parts a route's floor meets (all of it without one).
-fn on_route(region: MultiPolygon<f64>, on: Option<&RouteFloor>) -> MultiPolygon<f64> {
+fn on_route(region: Arc<MultiPolygon<f64>>, on: Option<&RouteFloor>) -> Arc<MultiPolygon<f64>> {
     match on {
-        Some(route) => region.intersection(&route.pieces),
+        Some(route) => Arc::new(region.intersection(&route.pieces)),
         None => region,
     }
 }
@@ -234,8 +255,9 @@ impl RouteFloor {
             .filter_map(|d| doorway(room, d, r))
             .collect();
         let region = whole(room, &disc(r, below_mm), 0.0);
-        let pieces = (region.0.into_iter())
+        let pieces = (region.0.iter())
             .filter(|piece| starts.iter().any(|s| piece.intersects(s)))
+            .cloned()
             .collect();
         Some(RouteFloor {
             radius_mm: r,

@@ -10,6 +10,7 @@ use geo::{Coord, LineString, Polygon};
 use nalgebra::{Rotation2, Vector2};
 
 use crate::geometry::{Shape, Solid};
+use crate::scene::hash_bits;
 
 /// The largest step between the turned outlines of a swept footprint.
 pub const SWEEP_STEP_RAD: f64 = 2.5 * std::f64::consts::PI / 180.0;
@@ -34,6 +35,15 @@ pub struct Footprint {
 }
 
 impl Footprint {
+    /// Its parts' outlines and heights, hashed bit for bit (for what is
+    /// kept across runs, `crate::kept`).
+    pub fn hash_into(&self, h: &mut impl std::hash::Hasher) {
+        for part in &self.parts {
+            part.outline_mm.iter().for_each(|p| hash_bits(p.iter(), h));
+            hash_bits(&part.z_mm, h);
+        }
+    }
+
     /// One circle about the hip point, from the floor to `height_mm`.
     pub fn circle(radius_mm: f64, height_mm: f64) -> Self {
         Footprint {
