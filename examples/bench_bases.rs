@@ -86,6 +86,7 @@ fn main() {
                 obstacles: None,
                 own: &own,
                 retry: None,
+                proofs: None,
             };
             let start = Instant::now();
             let placement = prepared.reach(&query, &solver);

@@ -11,7 +11,7 @@
 
 use nalgebra::{Point3, Vector3};
 use proptest::prelude::*;
-use reach::collision::{KeptProofs, OutOfReach};
+use reach::collision::{KeptProofs, OutOfReach, Verdict};
 use reach::kinematics::{Chain, Owner};
 use reach::plugin::Registry;
 use reach::scene::OwnBody;
@@ -95,11 +95,10 @@ fn the_floor_before_the_footrests_is_out_of_reach_and_the_lap_is_not() {
 }
 
 /// Posture `q` moved, a joint at a time, as far as the effector goes
-/// along `towards` while it stays within the limits and clear of the
-/// person's own body.
+/// along `towards` while it stays within the limits and `allowed`.
 fn pushed_to_the_edge(
     chain: &Chain,
-    own: &OwnBody,
+    allowed: &dyn Fn(&[f64]) -> bool,
     mut q: Vec<f64>,
     towards: &Vector3<f64>,
 ) -> Vec<f64> {
@@ -111,7 +110,7 @@ fn pushed_to_the_edge(
                 for sign in [1.0, -1.0] {
                     let mut tried = q.clone();
                     tried[i] = chain.joints[i].clamp(q[i] + sign * step_rad);
-                    if gain(&tried) > gain(&q) + 1e-9 && clear_of_own_body(chain, own, &tried) {
+                    if gain(&tried) > gain(&q) + 1e-9 && allowed(&tried) {
                         q = tried;
                         moved = true;
                     }
@@ -147,7 +146,8 @@ proptest! {
             if !clear_of_own_body(&chain, &own, &q) {
                 continue;
             }
-            let q = pushed_to_the_edge(&chain, &own, q, &towards);
+            let clear = |q: &[f64]| clear_of_own_body(&chain, &own, q);
+            let q = pushed_to_the_edge(&chain, &clear, q, &towards);
             let target = chain.effector(&q) + towards * 9.9;
             prop_assert!(!proof.proves(&target, 10.0), "{}: {:?} reaches {:?}", name, q, target);
             // Kept for a map and asked again and again, the proof looks
@@ -158,5 +158,63 @@ proptest! {
                 prop_assert!(!kept.proves(&target, 10.0), "{}: kept, asked {} times: {:?} reaches {:?}", name, asked, q, target);
             }
         }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// The proof by the limits alone (which lets a map pass over a
+    /// placement unsolved) must never rule out a point that some posture
+    /// within the joint limits comes within the tolerance of, through the
+    /// person's own body or not: postures pushed to the edge of the
+    /// limits, the point a little further on.
+    #[test]
+    fn a_point_any_posture_reaches_is_never_beyond_the_limits(
+        unit in prop::collection::vec(0.0..1.0f64, 16),
+        direction in prop::array::uniform3(-1.0..1.0f64),
+    ) {
+        let towards = Vector3::from(direction)
+            .try_normalize(1e-6)
+            .unwrap_or_else(|| -Vector3::z());
+        for (name, chain, own) in people() {
+            let proof = OutOfReach::of(&chain, &own).unwrap();
+            let q: Vec<f64> = chain
+                .joints
+                .iter()
+                .zip(unit.iter().cycle())
+                .map(|(j, u)| j.min + u * j.range())
+                .collect();
+            let q = pushed_to_the_edge(&chain, &|_| true, q, &towards);
+            let target = chain.effector(&q) + towards * 9.9;
+            let verdict = proof.decide_by_limits(&target, 10.0, 1024);
+            prop_assert!(verdict != Verdict::Proved, "{}: {:?} reaches {:?}", name, q, target);
+            let kept = KeptProofs::new(&chain, &own);
+            prop_assert!(!kept.beyond_limits(&target, 10.0), "{}: kept: {:?} reaches {:?}", name, q, target);
+        }
+    }
+}
+
+#[test]
+fn the_ceiling_is_beyond_the_limits_and_the_floor_only_beyond_the_body() {
+    for (name, chain, own) in people()
+        .into_iter()
+        .filter(|(n, ..)| n.starts_with("seated"))
+    {
+        let proof = OutOfReach::of(&chain, &own).unwrap();
+        let ceiling = Point3::new(300.0, 0.0, 2500.0);
+        assert_eq!(
+            proof.decide_by_limits(&ceiling, 10.0, 1024),
+            Verdict::Proved,
+            "{name}: the ceiling"
+        );
+        // Just ahead of the knees, low: the trunk could bend there if the
+        // thighs were not in the way.
+        let low = Point3::new(450.0, -150.0, -150.0);
+        assert_ne!(
+            proof.decide_by_limits(&low, 10.0, 1024),
+            Verdict::Proved,
+            "{name}: low"
+        );
     }
 }

@@ -48,11 +48,14 @@ struct Blocked {
 /// The placement kept over `candidates` (none when there are none): from
 /// a candidate with a start, one descent of the solver from it; from one
 /// without, the solver's own starts. Candidates from which the target is
-/// beyond the chain's reach (longer than its links end to end) are passed
-/// over, but if all are, the first is solved, so that the answer still
-/// shows the closest the person came. The candidates are drawn as they
-/// are needed: a search that stops at the first placement that reaches
-/// works out no more of them.
+/// beyond the chain's reach (longer than its links end to end), or that
+/// the query's kept proofs put beyond the trunk's joint limits and the
+/// arm's length (body or none: no posture comes within the tolerance, so
+/// the placement would not even be blocked), are passed over,
+/// but if all are, the first is solved, so that the answer still shows the
+/// closest the person came. The candidates are drawn as they are needed: a
+/// search that stops at the first placement that reaches works out no
+/// more of them.
 pub fn search(
     query: &ReachQuery<'_>,
     chain: &Chain,
@@ -62,22 +65,26 @@ pub fn search(
     let mut best = Preferred::new(query.tolerance_mm);
     let mut blocked = Vec::new();
     let bound_mm = chain.reach_bound_mm() + query.tolerance_mm;
-    let mut first_beyond = None;
-    let mut any_within = false;
+    let mut first_passed = None;
+    let mut any_solved = false;
     for candidate in candidates {
-        let within = candidate.pose.to_base(&query.target_room_mm).coords.norm() <= bound_mm;
-        if !within {
-            if first_beyond.is_none() && !any_within {
-                first_beyond = Some(candidate);
+        let target_mm = candidate.pose.to_base(&query.target_room_mm);
+        let hopeless = target_mm.coords.norm() > bound_mm
+            || query
+                .proofs
+                .is_some_and(|p| p.beyond_limits(&target_mm, query.tolerance_mm));
+        if hopeless {
+            if first_passed.is_none() && !any_solved {
+                first_passed = Some(candidate);
             }
             continue;
         }
-        any_within = true;
+        any_solved = true;
         if try_candidate(query, chain, &candidate, solver, &mut best, &mut blocked) {
             return best.into_kept();
         }
     }
-    if let (false, Some(candidate)) = (any_within, first_beyond) {
+    if let (false, Some(candidate)) = (any_solved, first_passed) {
         if try_candidate(query, chain, &candidate, solver, &mut best, &mut blocked) {
             return best.into_kept();
         }
@@ -146,7 +153,7 @@ fn retry_blocked(
 ) {
     let starts = retry.solver.starts() as usize;
     let made_here;
-    let proofs = match retry.proofs {
+    let proofs = match query.proofs {
         Some(kept) => kept,
         None => {
             made_here = KeptProofs::new(chain, query.own);

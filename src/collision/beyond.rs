@@ -22,7 +22,10 @@
 //!
 //! The proof leaves out the room, the arm's own solids and its joint
 //! limits, so it is sound but not complete: where it cannot decide within
-//! its budget of boxes, the search tries as before.
+//! its budget of boxes, the search tries as before. Made with the trunk's
+//! limits alone (`decide_by_limits`, the body left out), it proves a point
+//! beyond the trunk's reach and the arm's length: no posture comes within
+//! the tolerance at all.
 
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
@@ -68,6 +71,15 @@ pub enum Verdict {
     Cannot,
     /// Not decided within the boxes it was given: more might.
     Undecided,
+}
+
+/// What a proof keeps the trunk within.
+#[derive(Clone, Copy)]
+enum Cut {
+    /// The joint limits, and out of the person's own body and base.
+    Body,
+    /// The joint limits alone.
+    Limits,
 }
 
 /// A box waiting to be looked at, and the nearest its parent's postures
@@ -182,6 +194,30 @@ impl<'a> OutOfReach<'a> {
     /// `tolerance_mm` of `target_mm` (in the base frame), looking at up to
     /// `boxes` boxes of trunk postures.
     pub fn decide(&self, target_mm: &Point3<f64>, tolerance_mm: f64, boxes: usize) -> Verdict {
+        self.branch_and_bound(target_mm, tolerance_mm, boxes, Cut::Body)
+    }
+
+    /// The proof that no posture within the trunk's joint limits, whether
+    /// or not it keeps out of the person's own body, brings the effector
+    /// within `tolerance_mm` of `target_mm`: the point is beyond the
+    /// trunk's limits and the arm's length. Then no posture comes within
+    /// the tolerance at all (a solver's posture there is not even blocked).
+    pub fn decide_by_limits(
+        &self,
+        target_mm: &Point3<f64>,
+        tolerance_mm: f64,
+        boxes: usize,
+    ) -> Verdict {
+        self.branch_and_bound(target_mm, tolerance_mm, boxes, Cut::Limits)
+    }
+
+    fn branch_and_bound(
+        &self,
+        target_mm: &Point3<f64>,
+        tolerance_mm: f64,
+        boxes: usize,
+        cut: Cut,
+    ) -> Verdict {
         let reach_mm = self.arm_mm + tolerance_mm;
         let n = self.trunk_joints;
         let mut root: Ranges = [(0.0, 0.0); MOST_TRUNK_JOINTS];
@@ -216,7 +252,10 @@ impl<'a> OutOfReach<'a> {
             if nearest_mm > reach_mm {
                 continue;
             }
-            let solids = self.solids(&trunk);
+            let solids = match cut {
+                Cut::Body => self.solids(&trunk),
+                Cut::Limits => Vec::new(),
+            };
             if solids.iter().any(|c| self.always_meets(&trunk, c, half)) {
                 continue;
             }

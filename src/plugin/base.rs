@@ -36,6 +36,11 @@ pub struct ReachQuery<'a> {
     pub own: &'a OwnBody,
     /// Where no placement reaches, a second solver to try again with.
     pub retry: Option<Retry<'a>>,
+    /// Proofs that a placement cannot reach, kept across the queries of a
+    /// map (for this chain and own body): a placement proved at the first
+    /// look is not solved (`bases::search`). None: no placement is skipped,
+    /// and the retry proves afresh.
+    pub proofs: Option<&'a KeptProofs<'a>>,
 }
 
 /// A second try where the task's solver reaches from no placement (used
@@ -51,19 +56,16 @@ pub struct Retry<'a> {
     /// How far a start may stray from the blocked posture, as a fraction
     /// of each joint's range.
     pub spread: f64,
-    /// Proofs that a placement cannot reach, kept across the queries of a
-    /// map (for this chain and own body); none: each query proves afresh.
-    pub proofs: Option<&'a KeptProofs<'a>>,
 }
 
 impl<'a> ReachQuery<'a> {
-    /// The query with its retry (if it has one) keeping its proofs in
-    /// `proofs` (made for the chain it is asked of and its own body).
-    pub fn keeping_proofs(mut self, proofs: &'a KeptProofs<'a>) -> Self {
-        if let Some(retry) = &mut self.retry {
-            retry.proofs = Some(proofs);
+    /// The query keeping its proofs in `proofs` (made for the chain it is
+    /// asked of and its own body).
+    pub fn keeping_proofs(self, proofs: &'a KeptProofs<'a>) -> Self {
+        ReachQuery {
+            proofs: Some(proofs),
+            ..self
         }
-        self
     }
 
     /// The problem in the base frame of a base standing at `pose`.

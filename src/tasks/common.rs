@@ -203,7 +203,6 @@ impl Reaching {
             solver: self.blocked_solver.as_ref(),
             placements: self.common.blocked_retries as usize,
             spread: self.common.blocked_spread,
-            proofs: None,
         });
         ReachQuery {
             target_room_mm,
@@ -213,6 +212,7 @@ impl Reaching {
             obstacles,
             own,
             retry,
+            proofs: None,
         }
     }
 
