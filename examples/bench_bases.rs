@@ -87,6 +87,7 @@ fn main() {
                 own: &own,
                 retry: None,
                 proofs: None,
+                last_resort: None,
             };
             let start = Instant::now();
             let placement = prepared.reach(&query, &solver);

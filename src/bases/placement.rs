@@ -450,6 +450,17 @@ impl PreparedBase for PreparedMobile<'_> {
             .approach
             .admits_pose(pose, target_room_mm)
     }
+
+    fn moved(&self, pose: &BasePose, by_mm: Vector2<f64>) -> Option<BasePose> {
+        let (_, region) = self
+            .regions()
+            .find(|(heading, _)| *heading == pose.heading_rad)?;
+        let to = pose.position_mm + by_mm.push(0.0);
+        region.contains(to.x, to.y).then_some(BasePose {
+            position_mm: to,
+            heading_rad: pose.heading_rad,
+        })
+    }
 }
 
 /// The average horizontal position of the effector over 64 fixed random

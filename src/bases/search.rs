@@ -53,9 +53,10 @@ struct Blocked {
 /// arm's length (body or none: no posture comes within the tolerance, so
 /// the placement would not even be blocked), are passed over,
 /// but if all are, the first is solved, so that the answer still shows the
-/// closest the person came. The candidates are drawn as they are needed: a
-/// search that stops at the first placement that reaches works out no
-/// more of them.
+/// closest the person came. The query's last resort, if it has one, is the
+/// last candidate. The candidates are drawn as they are needed: a search
+/// that stops at the first placement that reaches works out no more of
+/// them.
 pub fn search(
     query: &ReachQuery<'_>,
     chain: &Chain,
@@ -67,7 +68,11 @@ pub fn search(
     let bound_mm = chain.reach_bound_mm() + query.tolerance_mm;
     let mut first_passed = None;
     let mut any_solved = false;
-    for candidate in candidates {
+    let last_resort = query.last_resort.map(|(pose, q)| Candidate {
+        pose,
+        start: Some(q.to_vec()),
+    });
+    for candidate in candidates.into_iter().chain(last_resort) {
         let target_mm = candidate.pose.to_base(&query.target_room_mm);
         let hopeless = target_mm.coords.norm() > bound_mm
             || query

@@ -4,7 +4,7 @@
 
 use std::fmt;
 
-use nalgebra::Point3;
+use nalgebra::{Point3, Vector2};
 
 use super::{IkProblem, Options, Plugin, SettingsError, Solver};
 use crate::collision::{KeptProofs, Obstacles, PlacedObstacles};
@@ -41,6 +41,10 @@ pub struct ReachQuery<'a> {
     /// look is not solved (`bases::search`). None: no placement is skipped,
     /// and the retry proves afresh.
     pub proofs: Option<&'a KeptProofs<'a>>,
+    /// A placement and a posture to descend from after the base's own
+    /// candidates, before the retry: a map's neighbour, where it was
+    /// reached, moved as the point moved (`PreparedBase::moved`).
+    pub last_resort: Option<(BasePose, &'a [f64])>,
 }
 
 /// A second try where the task's solver reaches from no placement (used
@@ -197,6 +201,13 @@ pub trait PreparedBase: Send + Sync {
     /// told to approach from the side may not face it.
     fn admits(&self, _pose: &BasePose, _target_room_mm: &Point3<f64>) -> bool {
         true
+    }
+    /// `pose` moved along the floor by `by_mm`, its heading kept, if the
+    /// base may stand there (a map's next point tried from where the last
+    /// one was reached, moved as the point moved); none for a base that
+    /// does not move.
+    fn moved(&self, _pose: &BasePose, _by_mm: Vector2<f64>) -> Option<BasePose> {
+        None
     }
 }
 

@@ -213,6 +213,7 @@ impl Reaching {
             own,
             retry,
             proofs: None,
+            last_resort: None,
         }
     }
 

@@ -6,7 +6,8 @@
 
 use super::common::{chain_of, Reaching};
 use super::gaze::{needs_look_link, with_look_range, GazeObstacles, GazeSettings, Looked, Looking};
-use super::map::{run_map, GridSettings, MapAsked};
+use super::grid_settings::GridSettings;
+use super::map_grid::{run_map, MapAsked};
 use crate::error::ErrorKind;
 use crate::kinematics::Chain;
 use crate::plugin::{

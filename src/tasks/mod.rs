@@ -5,7 +5,9 @@
 mod common;
 mod gaze;
 mod gaze_map;
+mod grid_settings;
 mod map;
+mod map_grid;
 mod reach;
 mod reach_and_gaze;
 mod why;

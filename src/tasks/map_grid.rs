@@ -1,0 +1,314 @@
+//! Solving a map's grid. The rows are cut into runs solved in parallel;
+//! along a run each point is first tried from where the point before it
+//! was reached (the base where it stood, the same posture), then searched
+//! as a reach would be, with that neighbour's base moved as the point
+//! moved as the search's last resort before its retry. Then the holes: a
+//! point not reached between two that are (in its row or its column) is
+//! tried from each of them in the same way, every hole from the first
+//! pass's answers, so the order the threads take them in does not matter.
+
+use nalgebra::{Point3, Vector3};
+use rayon::prelude::*;
+
+use super::common::{mix_seed, Reaching};
+use super::grid_settings::GridSettings;
+use crate::collision::{KeptProofs, Obstacles};
+use crate::kinematics::Chain;
+use crate::plugin::{BasePose, Placement, PreparedBase, ReachQuery, Search, Subject, TaskInput};
+use crate::report::{MapCell, MapReport, TaskReport};
+use crate::scene::{Grid, GridCell, Surface};
+
+/// Whether a point is reached (or seen), given where the base stood and
+/// the posture found, and the point.
+pub(super) type Judge<'a> = dyn Fn(&Placement, Point3<f64>) -> bool + Sync + 'a;
+
+/// What a map (or a gaze map) asks of each point of its grid.
+pub(super) struct MapAsked<'a> {
+    pub reaching: &'a Reaching,
+    pub grid: &'a GridSettings,
+    /// The chain whose effector goes to each point.
+    pub chain: &'a Chain,
+    /// The obstacles its links keep out of.
+    pub obstacles: Option<&'a Obstacles>,
+    /// `reach` or `gaze`.
+    pub of: &'static str,
+    /// From each point of the surface to where the effector goes (a hand
+    /// touches a point with its side, a hand's radius out of it; the eyes
+    /// look at the point itself).
+    pub lift_mm: Vector3<f64>,
+}
+
+/// A map of the task's surface: each point's placement found as for a
+/// reach of the chain's effector, judged by `judge`.
+pub(super) fn run_map(
+    input: &TaskInput<'_>,
+    asked: &MapAsked<'_>,
+    judge: &Judge<'_>,
+) -> TaskReport {
+    let Subject::Surface(surface) = input.subject else {
+        unreachable!("the checker gives a map a surface")
+    };
+    TaskReport::Map(map_report(input, surface, asked, judge))
+}
+
+/// The most points of a row solved one after another, each from the
+/// last: the rest of the row is another run, solved in parallel.
+const RUN: usize = 32;
+
+/// Where a point was reached, and the point (where the effector went).
+struct Reached {
+    placement: Placement,
+    point_mm: Point3<f64>,
+}
+
+/// One point's answer: its cell of the report, and where it was reached.
+struct Solved {
+    cell: MapCell,
+    reached: Option<Reached>,
+}
+
+/// What every point of one map is solved with.
+struct GridRun<'a> {
+    input: &'a TaskInput<'a>,
+    surface: &'a Surface,
+    asked: &'a MapAsked<'a>,
+    judge: &'a Judge<'a>,
+    prepared: Box<dyn PreparedBase + 'a>,
+    proofs: KeptProofs<'a>,
+}
+
+/// The map of `surface`: each point of its grid solved as `asked`,
+/// judged by `judge`.
+fn map_report(
+    input: &TaskInput<'_>,
+    surface: &Surface,
+    asked: &MapAsked<'_>,
+    judge: &Judge<'_>,
+) -> MapReport {
+    let grid = surface.grid(asked.grid.step_mm);
+    input.progress.add_work(grid.cells.len() as u64);
+    let run = GridRun {
+        input,
+        surface,
+        asked,
+        judge,
+        prepared: input.base.prepare(input.room, asked.chain),
+        proofs: KeptProofs::new(asked.chain, input.base.own_body()),
+    };
+    let mut solved = run.first_pass(&grid);
+    if asked.grid.neighbour_starts {
+        run.fill_holes(&grid, &mut solved);
+    }
+    let retried = solved
+        .iter()
+        .filter(|s| s.reached.as_ref().is_some_and(|r| r.placement.retried))
+        .count();
+    let cells = solved.into_iter().map(|s| s.cell).collect();
+    let reaching = asked.reaching;
+    let mut report = MapReport::new(
+        surface,
+        input.person,
+        &reaching.common.solver.name,
+        asked.grid.step_mm,
+        reaching.common.tolerance_mm,
+        &grid,
+        cells,
+    );
+    report.of = asked.of;
+    report.retried = retried;
+    report
+}
+
+impl<'a> GridRun<'a> {
+    /// Runs of a row in parallel; along a run, each point tried on from
+    /// the last point reached, then searched. Runs, not whole rows, so
+    /// that a few hard rows (the lowest, where the legs are in the way)
+    /// do not keep one thread busy while the others wait.
+    fn first_pass(&self, grid: &Grid) -> Vec<Solved> {
+        let runs: Vec<&[GridCell]> = grid
+            .cells
+            .chunks(grid.columns.max(1))
+            .flat_map(|row| row.chunks(RUN))
+            .collect();
+        runs.par_iter()
+            // One run a piece of work: rayon splits a range only until it
+            // has a few pieces per thread, and a piece not stolen is solved
+            // whole, so the hard rows at the bottom could end on one thread.
+            .with_max_len(1)
+            .flat_map_iter(|run| {
+                let mut last: Option<Reached> = None;
+                run.iter()
+                    .map(|cell| {
+                        let neighbour = last.as_ref().filter(|_| self.asked.grid.neighbour_starts);
+                        let solved = self.solve(cell, neighbour);
+                        self.input.progress.advance(1);
+                        if let Some(reached) = &solved.reached {
+                            last = Some(Reached {
+                                placement: reached.placement.clone(),
+                                point_mm: reached.point_mm,
+                            });
+                        }
+                        solved
+                    })
+                    .collect::<Vec<_>>()
+            })
+            .collect()
+    }
+
+    /// The query of `cell`'s point, with `neighbour`'s base moved as the
+    /// point moved as its search's last resort.
+    fn query<'q>(&'q self, cell: &GridCell, neighbour: Option<&'q Reached>) -> ReachQuery<'q> {
+        let (column, row) = (cell.column.to_string(), cell.row.to_string());
+        let reaching = self.asked.reaching;
+        let seed = mix_seed(
+            reaching.common.seed,
+            &[&self.surface.name, &self.input.person.name, &column, &row],
+        );
+        let target_room_mm = cell.point_mm + self.asked.lift_mm;
+        ReachQuery {
+            last_resort: neighbour.and_then(|n| self.carried(n, &target_room_mm)),
+            ..reaching
+                .query(
+                    target_room_mm,
+                    seed,
+                    Search::FirstReaching,
+                    self.asked.obstacles,
+                    self.input.base.own_body(),
+                )
+                .keeping_proofs(&self.proofs)
+        }
+    }
+
+    /// `cell`'s point: from `neighbour` (the last point reached in its
+    /// run), else searched.
+    fn solve(&self, cell: &GridCell, neighbour: Option<&Reached>) -> Solved {
+        let query = self.query(cell, neighbour);
+        let counts = |p: &Placement| (self.judge)(p, cell.point_mm);
+        let on = neighbour
+            .map(|n| &n.placement)
+            .filter(|p| self.prepared.admits(&p.pose, &query.target_room_mm))
+            .and_then(|p| self.on_from(&query, p, &counts));
+        let solver = self.asked.reaching.solver.as_ref();
+        let placement = on.unwrap_or_else(|| self.prepared.reach(&query, solver));
+        self.solved(cell, placement, query.target_room_mm)
+    }
+
+    fn solved(&self, cell: &GridCell, placement: Placement, point_mm: Point3<f64>) -> Solved {
+        let counts = (self.judge)(&placement, cell.point_mm);
+        Solved {
+            cell: MapCell::new(cell, &placement, self.asked.chain, counts),
+            reached: counts.then_some(Reached {
+                placement,
+                point_mm,
+            }),
+        }
+    }
+
+    /// The placement that reaches the point of `query` from where its
+    /// neighbour `last` stood and how it stood, if one does: one descent
+    /// of the task's solver; where the neighbour was reached only by the
+    /// retry's steering descents (round the body, not through it) and that
+    /// descent fails, one of those too.
+    fn on_from(
+        &self,
+        query: &ReachQuery<'_>,
+        last: &Placement,
+        counts: &dyn Fn(&Placement) -> bool,
+    ) -> Option<Placement> {
+        let chain = self.asked.chain;
+        let solver = self.asked.reaching.solver.as_ref();
+        let next = query.solve_from_at(chain, last.pose, solver, last.solution.q.clone());
+        if counts(&next) {
+            return Some(next);
+        }
+        let retry = query.retry.filter(|_| last.retried)?;
+        let start = last.solution.q.clone();
+        let mut steered = query.solve_from_at(chain, last.pose, retry.solver, start);
+        steered.retried = true;
+        counts(&steered).then_some(steered)
+    }
+
+    /// The neighbour's base moved along the floor as the point moved, and
+    /// its posture: along a counter, the same reach again.
+    fn carried<'l>(
+        &self,
+        last: &'l Reached,
+        target_room_mm: &Point3<f64>,
+    ) -> Option<(BasePose, &'l [f64])> {
+        let by_mm = (target_room_mm - last.point_mm).xy();
+        let pose = self.prepared.moved(&last.placement.pose, by_mm)?;
+        self.prepared
+            .admits(&pose, target_room_mm)
+            .then_some((pose, last.placement.solution.q.as_slice()))
+    }
+
+    /// Each point not reached between two that are, in its row or its
+    /// column, tried again from each of them: where the base stood, then
+    /// moved as the point moved. Along a counter a hole between two
+    /// reached points is usually a search's miss.
+    fn fill_holes(&self, grid: &Grid, solved: &mut [Solved]) {
+        let holes: Vec<usize> = (0..solved.len())
+            .filter(|&i| self.is_hole(grid, solved, i))
+            .collect();
+        let filled: Vec<(usize, Solved)> = holes
+            .par_iter()
+            .filter_map(|&i| {
+                let cell = &grid.cells[i];
+                neighbours(grid, i)
+                    .into_iter()
+                    .flatten()
+                    .filter_map(|n| solved[n].reached.as_ref())
+                    .find_map(|n| self.hole_from(cell, n))
+                    .map(|s| (i, s))
+            })
+            .collect();
+        for (i, s) in filled {
+            solved[i] = s;
+        }
+    }
+
+    /// Whether point `i` is not reached and both its neighbours in its row,
+    /// or both in its column, are.
+    fn is_hole(&self, grid: &Grid, solved: &[Solved], i: usize) -> bool {
+        let reached = |n: Option<usize>| n.is_some_and(|n| solved[n].reached.is_some());
+        let [left, right, below, above] = neighbours(grid, i);
+        solved[i].reached.is_none()
+            && ((reached(left) && reached(right)) || (reached(below) && reached(above)))
+    }
+
+    /// `cell`'s point tried from `neighbour`: where its base stood (and,
+    /// if it needed them, the retry's steering), then moved as the point
+    /// moved; the answer if one reaches.
+    fn hole_from(&self, cell: &GridCell, neighbour: &Reached) -> Option<Solved> {
+        let query = self.query(cell, Some(neighbour));
+        let counts = |p: &Placement| (self.judge)(p, cell.point_mm);
+        let stayed = &neighbour.placement;
+        let on = Some(stayed)
+            .filter(|p| self.prepared.admits(&p.pose, &query.target_room_mm))
+            .and_then(|p| self.on_from(&query, p, &counts))
+            .or_else(|| {
+                let (pose, q) = query.last_resort?;
+                let solver = self.asked.reaching.solver.as_ref();
+                let moved = query.solve_from_at(self.asked.chain, pose, solver, q.to_vec());
+                counts(&moved).then_some(moved)
+            })?;
+        Some(self.solved(cell, on, query.target_room_mm))
+    }
+}
+
+/// The indices of point `i`'s neighbours in `grid`: left and right in its
+/// row, below and above in its column.
+fn neighbours(grid: &Grid, i: usize) -> [Option<usize>; 4] {
+    let columns = grid.columns.max(1);
+    let (row, column) = (i / columns, i % columns);
+    let at = |r: Option<usize>, c: Option<usize>| {
+        let (r, c) = (r?, c?);
+        (r < grid.rows && c < columns).then_some(r * columns + c)
+    };
+    [
+        at(Some(row), column.checked_sub(1)),
+        at(Some(row), Some(column + 1)),
+        at(row.checked_sub(1), Some(column)),
+        at(Some(row + 1), Some(column)),
+    ]
+}
