@@ -6,7 +6,9 @@
 //!
 //! `cargo build --release && cargo run --release --example bench_watch -- EDIT [SAVES]`,
 //! EDIT one of `target` (a target moved 1 mm), `shelf` (shelf_3 up 1 mm),
-//! `tall` (the tall cabinet's top up 1 mm). Prints each save's time and
+//! `tall` (the tall cabinet's top up 1 mm), each undone at the next save;
+//! or `shelf_on` (shelf_3 up 1 mm further at every save, never back: a
+//! room not seen before at every save). Prints each save's time and
 //! summary, then the least, median and greatest.
 
 use std::io::{BufRead, BufReader};
@@ -37,8 +39,10 @@ fn main() {
     let args: Vec<String> = std::env::args().collect();
     let edit = args.get(1).map_or("target", String::as_str);
     let saves: usize = args.get(2).map_or(10, |s| s.parse().expect("a count"));
-    let Some(&(_, from, to)) = EDITS.iter().find(|(name, ..)| *name == edit) else {
-        panic!("EDIT is target, shelf or tall");
+    let onward = edit == "shelf_on";
+    let named = if onward { "shelf" } else { edit };
+    let Some(&(_, from, to)) = EDITS.iter().find(|(name, ..)| *name == named) else {
+        panic!("EDIT is target, shelf, tall or shelf_on");
     };
     let original = std::fs::read_to_string("examples/kitchen_wheelchair.reach")
         .expect("run from the crate's directory");
@@ -66,7 +70,9 @@ fn main() {
     rx.recv_timeout(wait).expect("the first evaluation");
     let mut times = Vec::new();
     for i in 0..saves {
-        let text = if i % 2 == 0 {
+        let text = if onward {
+            original.replace(from, &format!("box shelf_3 at (1500, 2900, {})", 1401 + i))
+        } else if i % 2 == 0 {
             original.replace(from, to)
         } else {
             original.clone()

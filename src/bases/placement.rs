@@ -141,7 +141,7 @@ impl Mobile {
     /// and doors, the footprint, the headings and the zone.
     fn floor_key(&self, room: &Room) -> u64 {
         let mut h = DefaultHasher::new();
-        room.hash_floor(&mut h);
+        room.hash_floor(&self.footprint.bands_mm(), &mut h);
         self.footprint.hash_into(&mut h);
         hash_bits(&self.placing.headings, &mut h);
         if let Some(zone) = self.placing.zone {

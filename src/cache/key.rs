@@ -77,9 +77,12 @@ fn tried(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence) -> Vec<T
 }
 
 /// What a task's placements depend on: the person's base, the chain, the
-/// points, and the room (its size, every obstacle and the doors).
+/// points, and the room's floor as the base meets it (its size, the doors,
+/// every obstacle's outline on the floor and whether it comes within the
+/// heights of the base's footprint).
 fn placements_key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence) -> u64 {
     let room = &scenario.rooms[task.room];
+    let bands = footprint_bands(scenario, task);
     hash_of(|h| {
         (task.person, &scenario.persons[task.person].base).hash(h);
         hash_chain(&dependence.chain, h);
@@ -87,8 +90,17 @@ fn placements_key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence)
             .points_mm
             .iter()
             .for_each(|p| hash_bits(p.iter(), h));
-        room.hash_floor(h);
+        room.hash_floor(&bands, h);
     })
+}
+
+/// The heights the parts of the task's base's footprint stand at (none
+/// for a base that does not move).
+fn footprint_bands(scenario: &Scenario, task: &TaskSpec) -> Vec<[f64; 2]> {
+    scenario.bases[task.person]
+        .footprint()
+        .map(|f| f.bands_mm())
+        .unwrap_or_default()
 }
 
 fn key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence, tried: &[Tried]) -> u64 {
@@ -106,7 +118,7 @@ fn key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence, tried: &[T
             }
         }
         // Where the room has doors, whether a base that moves can get to a
-        // place depends on the doors and on every obstacle of the room.
+        // place depends on the doors and on the floor of the whole room.
         let routed = !room.doors.is_empty() && tried.iter().any(|t| t.hips.around.is_some());
         if routed {
             room.doors.iter().for_each(|d| d.hash_into(h));
@@ -120,11 +132,14 @@ fn key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence, tried: &[T
                 person.base.hash(h);
             }
             room.hash_obstacles(h);
-        } else if routed {
-            room.hash_obstacles(h);
-        } else if let Some(reach_mm) = dependence.reach_mm {
-            for i in obstacles_within(room, tried, reach_mm, dependence.sight_lines) {
-                room.hash_obstacle(i, h);
+        } else {
+            if routed {
+                room.hash_floor(&footprint_bands(scenario, task), h);
+            }
+            if let Some(reach_mm) = dependence.reach_mm {
+                for i in obstacles_within(room, tried, reach_mm, dependence.sight_lines) {
+                    room.hash_obstacle(i, h);
+                }
             }
         }
     })

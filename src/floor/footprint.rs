@@ -35,6 +35,11 @@ pub struct Footprint {
 }
 
 impl Footprint {
+    /// The heights each part stands at, from the floor up.
+    pub fn bands_mm(&self) -> Vec<[f64; 2]> {
+        self.parts.iter().map(|p| p.z_mm).collect()
+    }
+
     /// Its parts' outlines and heights, hashed bit for bit (for what is
     /// kept across runs, `crate::kept`).
     pub fn hash_into(&self, h: &mut impl std::hash::Hasher) {

@@ -43,12 +43,11 @@ impl FloorObstacles {
             .parts
             .iter()
             .map(|part| {
-                let [z0, z1] = part.z_mm;
                 let mut outlines: Vec<Vec<Coord<f64>>> = room
                     .boxes
                     .iter()
                     .chain(extra)
-                    .filter(|b| b.corner_mm.z < z1 && z0 < b.corner_mm.z + b.size_mm.z)
+                    .filter(|b| b.meets_band(part.z_mm))
                     .map(box_outline)
                     .collect();
                 if let Some(cells) = &cells {

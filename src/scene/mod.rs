@@ -71,6 +71,12 @@ pub struct BoxObstacle {
 }
 
 impl BoxObstacle {
+    /// Whether the box comes within the heights `[z0, z1]` (a part of a
+    /// base's footprint meets it on the floor only then).
+    pub fn meets_band(&self, [z0, z1]: [f64; 2]) -> bool {
+        self.corner_mm.z < z1 && z0 < self.corner_mm.z + self.size_mm.z
+    }
+
     /// The box's own axes in the room's, on the floor: turned by its yaw.
     pub fn rotation(&self) -> Rotation2<f64> {
         Rotation2::new(self.yaw_rad)

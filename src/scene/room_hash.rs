@@ -37,12 +37,23 @@ impl Room {
         (0..self.boxes.len() + self.meshes.len()).for_each(|i| self.hash_obstacle(i, h));
     }
 
-    /// Everything a base's floor depends on: the size, every obstacle and
-    /// the doors.
-    pub fn hash_floor(&self, h: &mut impl Hasher) {
+    /// Everything the floor of a base whose footprint's parts stand at the
+    /// heights `bands_mm` depends on: the size, the doors, each box's name,
+    /// outline on the floor and turn and, for each band, whether the box
+    /// comes within it (how high it is otherwise does not matter: a shelf
+    /// raised within a band leaves the floor as it was), every mesh by
+    /// value.
+    pub fn hash_floor(&self, bands_mm: &[[f64; 2]], h: &mut impl Hasher) {
         hash_bits(self.size_mm.iter(), h);
         (self.boxes.len(), self.meshes.len()).hash(h);
-        self.hash_obstacles(h);
+        for b in &self.boxes {
+            b.name.hash(h);
+            let (c, s) = (&b.corner_mm, &b.size_mm);
+            hash_bits(&[c.x, c.y, s.x, s.y, b.yaw_rad], h);
+            bands_mm.iter().for_each(|&band| b.meets_band(band).hash(h));
+        }
+        let meshes = self.boxes.len()..self.boxes.len() + self.meshes.len();
+        meshes.for_each(|i| self.hash_obstacle(i, h));
         self.doors.len().hash(h);
         self.doors.iter().for_each(|d| d.hash_into(h));
     }
