@@ -124,6 +124,23 @@ fn pushed_to_the_edge(
     q
 }
 
+/// The unit vector along `direction` (straight down if it has none).
+fn unit_vector(direction: [f64; 3]) -> Vector3<f64> {
+    Vector3::from(direction)
+        .try_normalize(1e-6)
+        .unwrap_or_else(|| -Vector3::z())
+}
+
+/// The posture at fractions `unit` of each joint's range.
+fn posture_at(chain: &Chain, unit: &[f64]) -> Vec<f64> {
+    chain
+        .joints
+        .iter()
+        .zip(unit.iter().cycle())
+        .map(|(j, u)| j.min + u * j.range())
+        .collect()
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(48))]
 
@@ -132,17 +149,10 @@ proptest! {
         unit in prop::collection::vec(0.0..1.0f64, 16),
         direction in prop::array::uniform3(-1.0..1.0f64),
     ) {
-        let towards = Vector3::from(direction)
-            .try_normalize(1e-6)
-            .unwrap_or_else(|| -Vector3::z());
+        let towards = unit_vector(direction);
         for (name, chain, own) in people() {
             let proof = OutOfReach::of(&chain, &own).unwrap();
-            let q: Vec<f64> = chain
-                .joints
-                .iter()
-                .zip(unit.iter().cycle())
-                .map(|(j, u)| j.min + u * j.range())
-                .collect();
+            let q = posture_at(&chain, &unit);
             if !clear_of_own_body(&chain, &own, &q) {
                 continue;
             }
@@ -159,10 +169,6 @@ proptest! {
             }
         }
     }
-}
-
-proptest! {
-    #![proptest_config(ProptestConfig::with_cases(48))]
 
     /// The proof by the limits alone (which lets a map pass over a
     /// placement unsolved) must never rule out a point that some posture
@@ -174,17 +180,10 @@ proptest! {
         unit in prop::collection::vec(0.0..1.0f64, 16),
         direction in prop::array::uniform3(-1.0..1.0f64),
     ) {
-        let towards = Vector3::from(direction)
-            .try_normalize(1e-6)
-            .unwrap_or_else(|| -Vector3::z());
+        let towards = unit_vector(direction);
         for (name, chain, own) in people() {
             let proof = OutOfReach::of(&chain, &own).unwrap();
-            let q: Vec<f64> = chain
-                .joints
-                .iter()
-                .zip(unit.iter().cycle())
-                .map(|(j, u)| j.min + u * j.range())
-                .collect();
+            let q = posture_at(&chain, &unit);
             let q = pushed_to_the_edge(&chain, &|_| true, q, &towards);
             let target = chain.effector(&q) + towards * 9.9;
             let verdict = proof.decide_by_limits(&target, 10.0, 1024);

@@ -25,17 +25,26 @@ person ben {
 ";
 
 fn run(tasks: &str) -> Report {
-    let text = format!("{DOOR}{tasks}");
+    run_text("door.reach", &format!("{DOOR}{tasks}"))
+}
+
+/// The report of scenario `text`, which must check.
+fn run_text(name: &str, text: &str) -> Report {
     let registry = Registry::builtin();
-    let (_, checked) = reach::check(
-        Input::Text {
-            name: "door.reach",
-            text: &text,
-        },
-        &registry,
-    );
+    let (_, checked) = reach::check(Input::Text { name, text }, &registry);
     let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(true)));
     reach::run(&scenario)
+}
+
+/// The wheelchair kitchen's room and people with `maps`, 100 mm apart,
+/// by ben and ann, with `options`.
+fn kitchen_maps(maps: &str, options: &str) -> Report {
+    let example = std::fs::read_to_string("examples/kitchen_wheelchair.reach").unwrap();
+    let tasks_at = example.find("reach counter_front").unwrap();
+    let room_and_people = &example[..tasks_at];
+    let text =
+        format!("{room_and_people}\nmap {maps} by ben, ann {{\n  step 100mm\n  {options}\n}}\n");
+    run_text("kitchen_maps.reach", &text)
 }
 
 fn reach_report(report: &Report, index: usize) -> &ReachReport {
@@ -92,25 +101,11 @@ fn a_map_counts_what_the_retry_added_and_loses_nothing() {
 /// boards are in the way.
 #[test]
 fn neighbour_starts_reach_every_point_cold_solves_reach() {
-    let example = std::fs::read_to_string("examples/kitchen_wheelchair.reach").unwrap();
-    let tasks_at = example.find("reach counter_front").unwrap();
-    let room_and_people = &example[..tasks_at];
     let maps = |neighbours: bool| {
-        let text = format!(
-            "{room_and_people}\nmap wall_cab_bottom.top, wall_cab_shelf.top, tall_cabinet.front, \
-             shelf_2.top, shelf_3.top by ben, ann {{\n  step 100mm\n  solver incremental {{ starts 1 }}\n  \
-             neighbour_starts {neighbours}\n}}\n"
-        );
-        let registry = Registry::builtin();
-        let (_, checked) = reach::check(
-            Input::Text {
-                name: "kitchen_maps.reach",
-                text: &text,
-            },
-            &registry,
-        );
-        let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(true)));
-        reach::run(&scenario)
+        kitchen_maps(
+            "wall_cab_bottom.top, wall_cab_shelf.top, tall_cabinet.front, shelf_2.top, shelf_3.top",
+            &format!("solver incremental {{ starts 1 }}\n  neighbour_starts {neighbours}"),
+        )
     };
     let (warm, cold) = (maps(true), maps(false));
     let (mut gained, mut total) = (0, 0);
@@ -160,24 +155,12 @@ fn holes(map: &reach::report::MapReport) -> Vec<usize> {
 /// where boards are in the way.
 #[test]
 fn a_map_leaves_no_hole_that_more_search_fills() {
-    let example = std::fs::read_to_string("examples/kitchen_wheelchair.reach").unwrap();
-    let tasks_at = example.find("reach counter_front").unwrap();
-    let room_and_people = &example[..tasks_at];
     let maps = |options: &str| {
-        let text = format!(
-            "{room_and_people}\nmap back_counter.top, wall_cab_bottom.top, wall_cab_shelf.top, \
-             tall_cabinet.front, shelf_2.top, shelf_3.top by ben, ann {{\n  step 100mm\n  {options}\n}}\n"
-        );
-        let registry = Registry::builtin();
-        let (_, checked) = reach::check(
-            Input::Text {
-                name: "kitchen_maps.reach",
-                text: &text,
-            },
-            &registry,
-        );
-        let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(true)));
-        reach::run(&scenario)
+        kitchen_maps(
+            "back_counter.top, wall_cab_bottom.top, wall_cab_shelf.top, tall_cabinet.front, \
+             shelf_2.top, shelf_3.top",
+            options,
+        )
     };
     let usual = maps("solver incremental { starts 1 }");
     let thorough = maps(
