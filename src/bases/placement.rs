@@ -141,8 +141,7 @@ impl Mobile {
     /// and doors, the footprint, the headings and the zone.
     fn floor_key(&self, room: &Room) -> u64 {
         let mut h = DefaultHasher::new();
-        room.hash_floor(&self.footprint.bands_mm(), &mut h);
-        self.footprint.hash_into(&mut h);
+        self.footprint.hash_with_floor(room, &mut h);
         hash_bits(&self.placing.headings, &mut h);
         if let Some(zone) = self.placing.zone {
             hash_bits(&[zone.min.0, zone.min.1, zone.max.0, zone.max.1], &mut h);

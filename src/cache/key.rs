@@ -120,9 +120,6 @@ fn key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence, tried: &[T
         // Where the room has doors, whether a base that moves can get to a
         // place depends on the doors and on the floor of the whole room.
         let routed = !room.doors.is_empty() && tried.iter().any(|t| t.hips.around.is_some());
-        if routed {
-            room.doors.iter().for_each(|d| d.hash_into(h));
-        }
         // A population's people differ from its first in their bodies,
         // bases and placements: each is in the key, and every obstacle.
         if let Some(population) = task.population {
@@ -132,7 +129,11 @@ fn key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence, tried: &[T
                 person.base.hash(h);
             }
             room.hash_obstacles(h);
+            if routed {
+                room.doors.iter().for_each(|d| d.hash_into(h));
+            }
         } else {
+            // The floor's hash holds the doors.
             if routed {
                 room.hash_floor(&footprint_bands(scenario, task), h);
             }

@@ -66,8 +66,7 @@ fn part(outline_mm: Vec<Vector2<f64>>, below_mm: f64) -> FloorPart {
 /// Where `footprint` fits in the whole room at `heading_rad`.
 fn whole(room: &Room, footprint: &Footprint, heading_rad: f64) -> Arc<MultiPolygon<f64>> {
     let mut h = DefaultHasher::new();
-    room.hash_floor(&footprint.bands_mm(), &mut h);
-    footprint.hash_into(&mut h);
+    footprint.hash_with_floor(room, &mut h);
     heading_rad.to_bits().hash(&mut h);
     WHOLE.get_or(h.finish(), || {
         Arc::new(worked_out(room, footprint, heading_rad))

@@ -10,7 +10,7 @@ use geo::{Coord, LineString, Polygon};
 use nalgebra::{Rotation2, Vector2};
 
 use crate::geometry::{Shape, Solid};
-use crate::scene::hash_bits;
+use crate::scene::{hash_bits, Room};
 
 /// The largest step between the turned outlines of a swept footprint.
 pub const SWEEP_STEP_RAD: f64 = 2.5 * std::f64::consts::PI / 180.0;
@@ -40,9 +40,11 @@ impl Footprint {
         self.parts.iter().map(|p| p.z_mm).collect()
     }
 
-    /// Its parts' outlines and heights, hashed bit for bit (for what is
-    /// kept across runs, `crate::kept`).
-    pub fn hash_into(&self, h: &mut impl std::hash::Hasher) {
+    /// Its parts' outlines and heights, hashed bit for bit, and the floor
+    /// of `room` as they meet it (`Room::hash_floor`): what a region where
+    /// it fits depends on (for what is kept across runs, `crate::kept`).
+    pub fn hash_with_floor(&self, room: &Room, h: &mut impl std::hash::Hasher) {
+        room.hash_floor(&self.bands_mm(), h);
         for part in &self.parts {
             part.outline_mm.iter().for_each(|p| hash_bits(p.iter(), h));
             hash_bits(&part.z_mm, h);

@@ -136,21 +136,21 @@ impl<'a> GridRun<'a> {
             // whole, so the hard rows at the bottom could end on one thread.
             .with_max_len(1)
             .flat_map_iter(|run| {
-                let mut last: Option<Reached> = None;
-                run.iter()
-                    .map(|cell| {
-                        let neighbour = last.as_ref().filter(|_| self.asked.grid.neighbour_starts);
-                        let solved = self.solve(cell, neighbour);
-                        self.input.progress.advance(1);
-                        if let Some(reached) = &solved.reached {
-                            last = Some(Reached {
-                                placement: reached.placement.clone(),
-                                point_mm: reached.point_mm,
-                            });
-                        }
-                        solved
-                    })
-                    .collect::<Vec<_>>()
+                // The last point of the run reached, by its index.
+                let mut solved: Vec<Solved> = Vec::with_capacity(run.len());
+                let mut last: Option<usize> = None;
+                for cell in *run {
+                    let neighbour = last
+                        .filter(|_| self.asked.grid.neighbour_starts)
+                        .and_then(|i| solved[i].reached.as_ref());
+                    let point = self.solve(cell, neighbour);
+                    self.input.progress.advance(1);
+                    if point.reached.is_some() {
+                        last = Some(solved.len());
+                    }
+                    solved.push(point);
+                }
+                solved
             })
             .collect()
     }
