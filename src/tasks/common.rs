@@ -283,16 +283,18 @@ pub fn chain_of(input: &TaskInput<'_>, need: usize) -> Chain {
     input.person.body.chain(index)
 }
 
-/// A seed that depends on the task's seed and on names, never on the order
-/// of tasks in the file: adding a task leaves the others' answers alone.
-pub fn mix_seed(seed: u64, names: &[&str]) -> u64 {
+/// A seed that depends on the task's seed, on what is asked (`kind`) and
+/// on where the point asked about is, never on names or the order of
+/// tasks in the file: adding a task, or renaming a target, a surface or a
+/// person, leaves every answer alone (and a member of a population gets
+/// the answers the same body alone gets).
+pub fn mix_seed(seed: u64, kind: &str, point_mm: &Point3<f64>) -> u64 {
     // FNV-1a: small, and stable across Rust versions (unlike std's hasher).
     let mut h: u64 = 0xcbf2_9ce4_8422_2325 ^ seed;
-    for name in names {
-        for b in name.bytes().chain(std::iter::once(0xff)) {
-            h ^= u64::from(b);
-            h = h.wrapping_mul(0x0100_0000_01b3);
-        }
+    let coordinates = point_mm.iter().flat_map(|c| c.to_bits().to_le_bytes());
+    for b in kind.bytes().chain([0xff]).chain(coordinates) {
+        h ^= u64::from(b);
+        h = h.wrapping_mul(0x0100_0000_01b3);
     }
     h
 }

@@ -39,7 +39,7 @@ impl GazeSettings {
             p,
             &CommonDecl {
                 what,
-                seed_doc: "seeds the solver's random starts (mixed with subject and person)",
+                seed_doc: "seeds the solver's random starts (mixed with where the subject is, never with names)",
                 // FABRIK turns the neck and eyes before the trunk, as people
                 // do; the incremental solver moves every joint alike.
                 solver: ("fabrik", "the IK solver and its options"),
@@ -237,10 +237,7 @@ impl Task for GazeTask {
         let obstacles = GazeObstacles::new(input.room, reaching, input.base.own_body());
         let query = reaching.query(
             target.position_mm,
-            mix_seed(
-                reaching.common.seed,
-                &[&target.name, &input.person.name, "gaze"],
-            ),
+            mix_seed(reaching.common.seed, "gaze", &target.position_mm),
             Search::MostComfortable,
             obstacles.body.as_ref(),
             input.base.own_body(),

@@ -30,7 +30,7 @@ impl Settings for MapSettings {
             p,
             &CommonDecl {
                 what: "point",
-                seed_doc: "seeds the solver's random starts (mixed with surface, person and cell)",
+                seed_doc: "seeds the solver's random starts (mixed with where each point is, never with names)",
                 solver: INCREMENTAL,
                 effector: None,
                 retry: MAP_RETRY,

@@ -70,7 +70,6 @@ struct Solved {
 /// What every point of one map is solved with.
 struct GridRun<'a> {
     input: &'a TaskInput<'a>,
-    surface: &'a Surface,
     asked: &'a MapAsked<'a>,
     judge: &'a Judge<'a>,
     prepared: Box<dyn PreparedBase + 'a>,
@@ -89,7 +88,6 @@ fn map_report(
     input.progress.add_work(grid.cells.len() as u64);
     let run = GridRun {
         input,
-        surface,
         asked,
         judge,
         prepared: input.base.prepare(input.room, asked.chain),
@@ -158,13 +156,9 @@ impl<'a> GridRun<'a> {
     /// The query of `cell`'s point, with `neighbour`'s base moved as the
     /// point moved as its search's last resort.
     fn query<'q>(&'q self, cell: &GridCell, neighbour: Option<&'q Reached>) -> ReachQuery<'q> {
-        let (column, row) = (cell.column.to_string(), cell.row.to_string());
         let reaching = self.asked.reaching;
-        let seed = mix_seed(
-            reaching.common.seed,
-            &[&self.surface.name, &self.input.person.name, &column, &row],
-        );
         let target_room_mm = cell.point_mm + self.asked.lift_mm;
+        let seed = mix_seed(reaching.common.seed, "map", &target_room_mm);
         ReachQuery {
             last_resort: neighbour.and_then(|n| self.carried(n, &target_room_mm)),
             ..reaching

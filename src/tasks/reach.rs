@@ -22,7 +22,7 @@ impl Settings for ReachSettings {
             p,
             &CommonDecl {
                 what: "target",
-                seed_doc: "seeds the solver's random starts (mixed with target and person)",
+                seed_doc: "seeds the solver's random starts (mixed with where the target is, never with names)",
                 solver: INCREMENTAL,
                 effector: None,
                 retry: THOROUGH_RETRY,
@@ -88,7 +88,7 @@ impl Task for ReachTask {
         };
         let chain = chain_of(input, 0);
         let obstacles = reaching.obstacles(input.room);
-        let seed = mix_seed(reaching.common.seed, &[&target.name, &input.person.name]);
+        let seed = mix_seed(reaching.common.seed, "reach", &target.position_mm);
         // Whether any placement reaches does not depend on which is kept:
         // for a verdict alone, the first that reaches will do.
         let search = if input.verdict_only {

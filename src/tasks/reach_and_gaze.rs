@@ -40,7 +40,7 @@ impl Settings for ReachAndGazeSettings {
             p,
             &CommonDecl {
                 what: "target",
-                seed_doc: "seeds the solver's random starts (mixed with target and person)",
+                seed_doc: "seeds the solver's random starts (mixed with where the target is, never with names)",
                 solver: (
                     "fabrik",
                     "fabrik, whose tree solve moves hand and eyes together",
@@ -189,10 +189,7 @@ impl Task for ReachAndGazeTask {
         let obstacles = GazeObstacles::new(input.room, reaching, own);
         let query = reaching.query(
             target.position_mm,
-            mix_seed(
-                reaching.common.seed,
-                &[&target.name, &input.person.name, "reach+gaze"],
-            ),
+            mix_seed(reaching.common.seed, "reach+gaze", &target.position_mm),
             Search::MostComfortable,
             obstacles.body.as_ref(),
             own,
