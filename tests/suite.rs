@@ -161,6 +161,59 @@ fn nudged(golden: &str, dx_mm: f64) -> String {
     serde_json::to_string_pretty(&v).unwrap()
 }
 
+/// The high jar's entry of the golden report with `edit` applied.
+fn jar_edited(golden: &str, edit: impl Fn(&mut serde_json::Value)) -> String {
+    let mut v: serde_json::Value = serde_json::from_str(golden).unwrap();
+    let tasks = v["tasks"].as_array_mut().unwrap();
+    edit(tasks.iter_mut().find(|t| t["name"] == "jar").unwrap());
+    serde_json::to_string_pretty(&v).unwrap()
+}
+
+/// An unreached target whose reason (its `why`) is the same is not a
+/// change because its closest posture met something else; a different
+/// reason is, in words that differ.
+#[test]
+fn an_unreached_answer_changes_with_its_reason_not_its_closest_posture() {
+    let dir = tempfile::tempdir().unwrap();
+    write(dir.path(), "kitchen.reach", &scenario(HIGH_MM, ""));
+    reach_in(dir.path(), &["test", "--update"]);
+    let golden_path = dir.path().join("kitchen.golden.json");
+    let golden = std::fs::read_to_string(&golden_path).unwrap();
+    let jar: serde_json::Value = serde_json::from_str::<serde_json::Value>(&golden).unwrap()
+        ["tasks"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|t| t["name"] == "jar")
+        .cloned()
+        .unwrap();
+    assert!(!jar["why"].as_array().unwrap().is_empty(), "{jar}");
+
+    let met_else = jar_edited(&golden, |j| j["collision"] = "`counter`".into());
+    std::fs::write(&golden_path, met_else).unwrap();
+    let o = reach_in(dir.path(), &["test"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
+
+    let other_why = jar_edited(
+        &golden,
+        |j| {
+            j["why"] =
+                serde_json::json!([{"cause": "obstacles", "names": ["counter"], "together": false}])
+        },
+    );
+    std::fs::write(&golden_path, other_why).unwrap();
+    let o = reach_in(dir.path(), &["test"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+    let line = stdout(&o)
+        .lines()
+        .find(|l| l.contains("jar: ann still NOT reachable"))
+        .map(str::to_string)
+        .unwrap_or_else(|| panic!("{}", stdout(&o)));
+    let (now, was) = line.split_once(" (was: ").unwrap();
+    assert!(was.contains("counter"), "{line}");
+    assert!(!now.contains("`counter`"), "{line}");
+}
+
 #[test]
 fn a_float_change_inside_the_tolerance_is_ignored_and_outside_reported() {
     let dir = tempfile::tempdir().unwrap();

@@ -199,14 +199,21 @@ fn old_words(old: &Value) -> String {
 }
 
 /// An unreached answer whose reason changed: "still NOT reachable, now
-/// blocked by `a` (was: blocked by `b`)".
+/// blocked by `a` (was: blocked by `b`)". Where the report says why (the
+/// `why` found by searching again), that is the reason; what the closest
+/// posture happened to meet (`collision`) counts only where it does not.
 fn why_changed(who: &str, old: &Value, new: &Value, answer: &Answer) -> Option<String> {
     let reasons = |v: &Value| {
+        let said = v["why"].as_array().is_some_and(|w| !w.is_empty());
         (
             v["why"].clone(),
             v["occluded_by"].clone(),
             v["reason"].clone(),
-            v["collision"].clone(),
+            if said {
+                Value::Null
+            } else {
+                v["collision"].clone()
+            },
         )
     };
     if answer.ok || reasons(old) == reasons(new) {
