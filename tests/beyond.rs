@@ -109,7 +109,7 @@ fn pushed_to_the_edge(
             for i in 0..q.len() {
                 for sign in [1.0, -1.0] {
                     let mut tried = q.clone();
-                    tried[i] = chain.joints[i].clamp(q[i] + sign * step_rad);
+                    tried[i] = chain.clamp_joint(i, q[i] + sign * step_rad, &q);
                     if gain(&tried) > gain(&q) + 1e-9 && allowed(&tried) {
                         q = tried;
                         moved = true;
@@ -131,14 +131,17 @@ fn unit_vector(direction: [f64; 3]) -> Vector3<f64> {
         .unwrap_or_else(|| -Vector3::z())
 }
 
-/// The posture at fractions `unit` of each joint's range.
+/// The posture at fractions `unit` of each joint's range, drawn within
+/// the couplings of its joints (the stdlib trunk's turn and sideways bend).
 fn posture_at(chain: &Chain, unit: &[f64]) -> Vec<f64> {
-    chain
+    let mut q: Vec<f64> = chain
         .joints
         .iter()
         .zip(unit.iter().cycle())
         .map(|(j, u)| j.min + u * j.range())
-        .collect()
+        .collect();
+    chain.pull_in(&mut q);
+    q
 }
 
 proptest! {

@@ -5,7 +5,7 @@
 use nalgebra::{Point3, Vector3};
 use proptest::prelude::*;
 use reach::collision::{Obstacles, PlacedObstacles};
-use reach::kinematics::{Chain, Dh, IncrementalFk, Joint, JointKind, Link};
+use reach::kinematics::{Chain, Coupling, Dh, IncrementalFk, Joint, JointKind, Link};
 use reach::plugin::{BasePose, IkProblem, IkSolution, Options, Registry, Settings, Solver, Value};
 use reach::scene::{Blocker, BoxObstacle, OwnBody, Room};
 use reach::solvers::fabrik::{solve_tree, TreeGoal, TreeProblem};
@@ -60,10 +60,17 @@ fn chain() -> impl Strategy<Value = Chain> {
         prop::collection::vec(joint(), 1..10),
         -100.0..100.0f64,
         0.0..20.0f64,
+        prop::option::of((0usize..10, 0usize..10)),
     )
-        .prop_map(|(joints, e, radius_mm)| {
+        .prop_map(|(joints, e, radius_mm, couple)| {
+            let n = joints.len();
             let mut chain = Chain::new(joints, "tip", Vector3::new(e, e / 2.0, -e / 3.0));
             chain.effector_link.radius_mm = radius_mm;
+            // Two joints whose ranges are coupled, as the stdlib trunk's.
+            if let Some((a, b)) = couple.filter(|_| n >= 2) {
+                let (a, b) = (a % n, (a + 1 + b % (n - 1)) % n);
+                chain.couplings.push(Coupling { joints: vec![a, b] });
+            }
             chain
         })
 }
@@ -259,7 +266,9 @@ proptest! {
         seed in any::<u64>(),
     ) {
         let body = reach::stdlib::body("body", "upper_body").unwrap();
-        let whole = Chain::new(body.joints.clone(), "", Vector3::zeros());
+        let mut whole = Chain::new(body.joints.clone(), "", Vector3::zeros());
+        whole.couplings = body.couplings.clone();
+        prop_assert!(!whole.couplings.is_empty(), "the stdlib trunk is coupled");
         let q = posture(&whole, &fractions);
         let targets: Vec<Point3<f64>> = (0..2).map(|e| {
             let path = body.path(body.effectors[e].joint);

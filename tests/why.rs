@@ -90,9 +90,11 @@ fn a_far_target_is_out_of_reach_by_its_distance_less_the_arm() {
 /// A socket on the wall 1300 mm up behind a counter 800 mm deep: a seated
 /// small woman's chair is kept away by the counter (with the counter gone
 /// from the floor she reaches it), which "out of reach" would hide; the
-/// same chair told to face the socket (`approach forward`) in a galley
-/// where it can only stand along the counter has no place to approach it
-/// from, and nothing is tried.
+/// same chair told to face the kettle (`approach forward`: within 45 deg
+/// of straight ahead) in a galley where it can only stand along the
+/// counter, and within 200 mm of the kettle along it (its zone), has no
+/// place to approach it from, and nothing is tried. (Without the zone it
+/// may stand back along the galley with the kettle 45 deg to its right.)
 #[test]
 fn a_counter_that_keeps_the_chair_away_is_named_and_no_approach_is_said() {
     let text = "units mm deg
@@ -108,7 +110,10 @@ room galley {
   target kettle at (2000, 450, 950)
 }
 person ann { mannequin woman_5th_seated base manual_wheelchair }
-person ann_facing { mannequin woman_5th_seated base manual_wheelchair { approach forward } }
+person ann_facing {
+  mannequin woman_5th_seated
+  base manual_wheelchair { approach forward zone_from (1800, 0, 0) zone_to (2200, 1300, 0) }
+}
 reach socket by ann
 reach kettle by ann_facing
 ";

@@ -183,6 +183,7 @@ fn hash_person(person: &Person, h: &mut DefaultHasher) {
 fn hash_body(body: &Body, h: &mut DefaultHasher) {
     body.joints.iter().for_each(|j| hash_joint(j, h));
     body.parents.hash(h);
+    body.couplings.hash(h);
     for e in &body.effectors {
         (&e.name, e.joint).hash(h);
         hash_bits(e.offset_mm.iter(), h);
@@ -192,6 +193,7 @@ fn hash_body(body: &Body, h: &mut DefaultHasher) {
 fn hash_chain(chain: &Chain, h: &mut DefaultHasher) {
     chain.joints.iter().for_each(|j| hash_joint(j, h));
     chain.effector_name.hash(h);
+    chain.couplings.hash(h);
     hash_bits(chain.effector_mm.iter(), h);
 }
 

@@ -7,7 +7,7 @@ use nalgebra::Vector3;
 use super::eval::fmt_num;
 use super::Checker;
 use crate::error::{Error, ErrorKind};
-use crate::kinematics::{Body, Dh, Effector, Joint, JointKind, Link, Posture, Sphere};
+use crate::kinematics::{Body, Coupling, Dh, Effector, Joint, JointKind, Link, Posture, Sphere};
 use crate::span::Span;
 use crate::span::{FileId, Name};
 use crate::syntax::ast::{self, Expr, JointDecl, LimitsExpr, MannequinDecl, MannequinRef};
@@ -166,6 +166,7 @@ impl Checker<'_> {
         let effectors = self.effectors(decl, &names);
         let spheres = self.spheres(decl, &names);
         let legs = self.legs(decl);
+        let couplings = self.couplings(decl, &names);
         let joints: Option<Vec<Joint>> = joints.into_iter().collect();
         let parents: Option<Vec<Option<usize>>> = parents.into_iter().collect();
         let (joints, parents, effectors) = (joints?, parents?, effectors?);
@@ -179,6 +180,7 @@ impl Checker<'_> {
             spheres: spheres?,
             legs: legs?,
             posture: None,
+            couplings: couplings?,
         };
         Some(self.with_posture(body, decl))
     }
@@ -257,6 +259,37 @@ impl Checker<'_> {
             }
         }
         ok.then_some(spheres)
+    }
+
+    /// The couplings: each of two or more distinct joints of the mannequin.
+    fn couplings(&mut self, decl: &MannequinDecl, joints: &[&Name]) -> Option<Vec<Coupling>> {
+        let mut ok = true;
+        let mut couplings = Vec::new();
+        for c in &decl.couples {
+            let mut indices = Vec::new();
+            for (k, name) in c.joints.iter().enumerate() {
+                if c.joints[..k].iter().any(|n| n.value == name.value) {
+                    let what = format!("joint `{}` in one `couple`", name.value);
+                    self.repeated(std::iter::once(name.span), &what);
+                    ok = false;
+                    continue;
+                }
+                match joints.iter().position(|n| n.value == name.value) {
+                    Some(i) => indices.push(i),
+                    None => {
+                        self.error(Error::unknown(
+                            "joint of this mannequin",
+                            &name.value,
+                            name.span,
+                            joints.iter().map(|n| n.value.as_str()),
+                        ));
+                        ok = false;
+                    }
+                }
+            }
+            couplings.push(Coupling { joints: indices });
+        }
+        ok.then_some(couplings)
     }
 
     /// The index of joint `name` among those declared before it.

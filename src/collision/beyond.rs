@@ -237,6 +237,10 @@ impl<'a> OutOfReach<'a> {
             if looked > boxes {
                 return Verdict::Undecided;
             }
+            if !self.couplings_admit(&ranges[..n]) {
+                // No posture of this box is within the coupled limits.
+                continue;
+            }
             let mut q = [0.0; MOST_TRUNK_JOINTS];
             let mut half = [0.0; MOST_TRUNK_JOINTS];
             for (i, (lo, hi)) in ranges[..n].iter().enumerate() {
@@ -259,7 +263,14 @@ impl<'a> OutOfReach<'a> {
             if solids.iter().any(|c| self.always_meets(&trunk, c, half)) {
                 continue;
             }
-            if centre_mm <= reach_mm && solids.iter().all(|c| self.own.hit(c).is_none()) {
+            let mut centre: Ranges = [(0.0, 0.0); MOST_TRUNK_JOINTS];
+            for (c, &v) in centre.iter_mut().zip(q) {
+                *c = (v, v);
+            }
+            if centre_mm <= reach_mm
+                && self.couplings_admit(&centre[..n])
+                && solids.iter().all(|c| self.own.hit(c).is_none())
+            {
                 // A clear trunk posture with the shoulder within the arm's
                 // length: the cut cannot rule the point out.
                 return Verdict::Cannot;
@@ -275,6 +286,17 @@ impl<'a> OutOfReach<'a> {
             }
         }
         Verdict::Proved
+    }
+
+    /// Whether some posture in the box of trunk joint `ranges` keeps every
+    /// coupling of the trunk's joints (one that couples a joint beyond the
+    /// trunk is left out: the box may then hold more than the limits let
+    /// the trunk take, which keeps the proof sound).
+    fn couplings_admit(&self, ranges: &[(f64, f64)]) -> bool {
+        self.chain
+            .couplings
+            .iter()
+            .all(|c| c.admits_some(&self.chain.joints, ranges))
     }
 
     /// The trunk at joint values `q`.

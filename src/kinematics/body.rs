@@ -7,6 +7,7 @@
 use nalgebra::{Point3, Vector3};
 
 use super::chain::{Chain, Joint, Link, Rider};
+use super::coupling::Coupling;
 use super::legs::{Legs, Posture};
 
 /// One end of the body: a hand's grip point, or the eyes' look point.
@@ -46,6 +47,8 @@ pub struct Body {
     pub legs: Option<Legs>,
     /// Whether the mannequin sits or stands (`None`: as its base has it).
     pub posture: Option<Posture>,
+    /// Joints whose ranges are coupled, by body index.
+    pub couplings: Vec<Coupling>,
 }
 
 impl Body {
@@ -64,6 +67,7 @@ impl Body {
             spheres: Vec::new(),
             legs: None,
             posture: None,
+            couplings: chain.couplings,
         }
     }
 
@@ -106,7 +110,18 @@ impl Body {
             effector_mm: effector.offset_mm,
             effector_link: effector.link.clone(),
             riders: self.spheres.iter().map(|s| self.rider(s, &path)).collect(),
+            couplings: self.couplings_on(&path),
         }
+    }
+
+    /// The couplings whose joints all lie on `joints` (body indices, in
+    /// chain order), renumbered as the chain of those joints numbers them.
+    pub fn couplings_on(&self, joints: &[usize]) -> Vec<Coupling> {
+        let index = |j: usize| joints.iter().position(|&p| p == j);
+        self.couplings
+            .iter()
+            .filter_map(|c| c.renumbered(index))
+            .collect()
     }
 
     /// Sphere `s` as a chain along `path` carries it: its centre in the
@@ -176,6 +191,7 @@ mod tests {
             spheres: Vec::new(),
             legs: None,
             posture: None,
+            couplings: Vec::new(),
         };
         let names = |c: Chain| c.joints.into_iter().map(|j| j.name).collect::<Vec<_>>();
         assert_eq!(names(body.chain(0)), ["spine", "arm", "hand"]);

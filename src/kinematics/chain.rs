@@ -4,6 +4,7 @@
 
 use nalgebra::{IsometryMatrix3, Point3, Vector3};
 
+use super::coupling::{Coupling, Limited};
 use super::dh::Dh;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -119,6 +120,12 @@ impl Joint {
     }
 }
 
+impl Limited for Joint {
+    fn limits(&self) -> (f64, f64) {
+        (self.min, self.max)
+    }
+}
+
 /// A chain of joints ending in an effector.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Chain {
@@ -130,6 +137,8 @@ pub struct Chain {
     pub effector_link: Link,
     /// Spheres of the body the chain carries (a head on the spine).
     pub riders: Vec<Rider>,
+    /// Joints of the chain whose ranges are not independent.
+    pub couplings: Vec<Coupling>,
 }
 
 /// A sphere of the body carried by a chain: its centre in the frame of the
@@ -154,6 +163,7 @@ impl Chain {
             effector_mm,
             effector_link: Link::named(name),
             riders: Vec::new(),
+            couplings: Vec::new(),
         }
     }
 
@@ -213,15 +223,69 @@ impl Chain {
         self.joints.iter().all(|j| j.fixed.is_none())
     }
 
+    /// Whether `q` keeps every joint within its limits and every coupling.
     pub fn within_limits(&self, q: &[f64]) -> bool {
-        self.joints
+        let each = self
+            .joints
             .iter()
             .zip(q)
-            .all(|(j, &qi)| qi >= j.min && qi <= j.max)
+            .all(|(j, &qi)| qi >= j.min && qi <= j.max);
+        each && self.couplings.iter().all(|c| c.admits(&self.joints, q))
     }
 
+    /// The range joint `i` may take with the other joints where `q` has
+    /// them: its limits, narrowed by the couplings it is in.
+    pub fn interval(&self, i: usize, q: &[f64]) -> (f64, f64) {
+        let joint = &self.joints[i];
+        self.couplings
+            .iter()
+            .fold((joint.min, joint.max), |(lo, hi), c| {
+                let (l, h) = c.interval(&self.joints, q, i);
+                (lo.max(l), hi.min(h))
+            })
+    }
+
+    /// Value `v` of joint `i` moved into its interval given the rest of `q`.
+    pub fn clamp_joint(&self, i: usize, v: f64, q: &[f64]) -> f64 {
+        if self.couplings.is_empty() {
+            return self.joints[i].clamp(v);
+        }
+        let (lo, hi) = self.interval(i, q);
+        v.clamp(lo, hi.max(lo))
+    }
+
+    /// `q` moved within every joint's limits, then every coupling's
+    /// ellipse (each coupled group drawn in towards its centre).
+    pub fn pull_in(&self, q: &mut [f64]) {
+        for (qi, j) in q.iter_mut().zip(&self.joints) {
+            *qi = j.clamp(*qi);
+        }
+        for c in &self.couplings {
+            c.pull_in(&self.joints, q);
+        }
+    }
+
+    /// The joints of `q` outside their limits, or in a coupling `q` breaks.
+    pub fn beyond_limits(&self, q: &[f64]) -> Vec<usize> {
+        let mut beyond: Vec<usize> = (0..self.joints.len())
+            .filter(|&i| q[i] < self.joints[i].min || q[i] > self.joints[i].max)
+            .collect();
+        for c in self.couplings.iter().filter(|c| !c.admits(&self.joints, q)) {
+            beyond.extend(&c.joints);
+        }
+        beyond.sort_unstable();
+        beyond.dedup();
+        beyond
+    }
+
+    /// The neutral posture, drawn within the couplings if it breaks one
+    /// (each joint's neutral lies within its own limits).
     pub fn neutral(&self) -> Vec<f64> {
-        self.joints.iter().map(|j| j.neutral).collect()
+        let mut q: Vec<f64> = self.joints.iter().map(|j| j.neutral).collect();
+        for c in &self.couplings {
+            c.pull_in(&self.joints, &mut q);
+        }
+        q
     }
 }
 

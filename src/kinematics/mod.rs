@@ -1,10 +1,12 @@
 //! Kinematic chains: Denavit-Hartenberg parameters, joints with limits, and
 //! forward kinematics, full (`chain.rs`) and incremental (`incremental.rs`);
+//! joints whose ranges are coupled (`coupling.rs`);
 //! bodies (`body.rs`): joints as a tree with several effectors; the legs
 //! no joint moves (`legs.rs`).
 
 mod body;
 mod chain;
+mod coupling;
 mod dh;
 mod incremental;
 mod legs;
@@ -14,6 +16,7 @@ mod volumes;
 
 pub use body::{Body, Effector, Sphere};
 pub use chain::{Chain, Joint, JointKind, Link, Rider};
+pub use coupling::Coupling;
 pub use dh::Dh;
 pub use incremental::{IncrementalFk, Step};
 pub use legs::{Legs, Posture};

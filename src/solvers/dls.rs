@@ -98,7 +98,8 @@ impl Solver for DlsSolver {
         best.unwrap_or_else(|| IkSolution::unsolved(problem.chain))
     }
 
-    fn solve_from(&self, problem: &IkProblem<'_>, start: Vec<f64>) -> IkSolution {
+    fn solve_from(&self, problem: &IkProblem<'_>, mut start: Vec<f64>) -> IkSolution {
+        problem.chain.pull_in(&mut start);
         self.descend(problem, start)
     }
 
@@ -135,8 +136,8 @@ impl DlsSolver {
                 .cholesky()
                 .expect("damped J J^T is positive definite")
                 .solve(&e);
-            for ((qi, c), joint) in q.iter_mut().zip(&columns).zip(&chain.joints) {
-                *qi = joint.clamp(*qi + c.dot(&y));
+            for (i, c) in columns.iter().enumerate() {
+                q[i] = chain.clamp_joint(i, q[i] + c.dot(&y), &q);
             }
             p = effector_and_jacobian(chain, &q, &mut columns);
         }

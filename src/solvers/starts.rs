@@ -18,13 +18,20 @@ pub fn neutral_start(p: &mut Params<'_>) -> bool {
     .get()
 }
 
-/// A posture drawn uniformly within the joint limits.
+/// A posture drawn at random within the joint limits: each joint uniformly
+/// within its limits, and a coupled joint within what the joints coupled
+/// to it, drawn before it, leave it (those after it at their centres).
 pub fn random_posture(chain: &Chain, rng: &mut ChaCha8Rng) -> Vec<f64> {
-    chain
+    let mut q: Vec<f64> = chain
         .joints
         .iter()
-        .map(|j| j.min + unit_interval(rng) * j.range())
-        .collect()
+        .map(|j| 0.0_f64.clamp(j.min, j.max))
+        .collect();
+    for i in 0..q.len() {
+        let (lo, hi) = chain.interval(i, &q);
+        q[i] = lo + unit_interval(rng) * (hi - lo);
+    }
+    q
 }
 
 /// The starting postures of one solve, in order: the neutral posture first
@@ -93,11 +100,12 @@ impl Iterator for Kicks<'_> {
         if self.given.is_multiple_of(4) {
             return Some(random_posture(self.chain, &mut self.rng));
         }
-        let kicked = self.chain.joints.iter().zip(self.around).map(|(j, &q)| {
+        let mut kicked = self.around.to_vec();
+        for (i, j) in self.chain.joints.iter().enumerate() {
             let kick = (2.0 * unit_interval(&mut self.rng) - 1.0) * self.spread * j.range();
-            (q + kick).clamp(j.min, j.max)
-        });
-        Some(kicked.collect())
+            kicked[i] = self.chain.clamp_joint(i, kicked[i] + kick, &kicked);
+        }
+        Some(kicked)
     }
 }
 

@@ -261,6 +261,8 @@ pub struct MannequinDecl {
     pub spheres: Vec<SphereDecl>,
     /// `legs(...)`, each given once at most (the checker says so).
     pub legs: Vec<LegsDecl>,
+    /// `couple a, b`: joints whose ranges are coupled.
+    pub couples: Vec<CoupleDecl>,
     /// `seated` or `standing`, in the body or after an alias.
     pub postures: Vec<Spanned<Posture>>,
     pub span: Span,
@@ -293,6 +295,13 @@ pub struct SphereDecl {
 #[derive(Clone, Debug, PartialEq)]
 pub struct LegsDecl {
     pub args: Vec<(Name, Expr)>,
+    pub span: Span,
+}
+
+/// `couple a, b, ...`: two or more joints of the mannequin.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CoupleDecl {
+    pub joints: Vec<Name>,
     pub span: Span,
 }
 

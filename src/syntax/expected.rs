@@ -57,6 +57,7 @@ fn describe(rule: Rule) -> Option<&'static str> {
         link_name => "`link NAME`",
         sphere_decl => "`sphere`",
         legs_decl => "`legs(...)`",
+        couple_decl => "`couple`",
         posture => "`seated` or `standing`",
         mannequin_alias => "`= mannequin(...)`",
         mannequin_urdf => "`from urdf \"file\" root \"link\" tip \"link\"`",

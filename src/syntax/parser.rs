@@ -442,6 +442,7 @@ impl Builder {
         let mut effectors = Vec::new();
         let mut spheres = Vec::new();
         let mut legs = Vec::new();
+        let mut couples = Vec::new();
         let mut postures = Vec::new();
         let mut params = Vec::new();
         let mut alias = None;
@@ -454,6 +455,11 @@ impl Builder {
                     let span = self.span(&p);
                     let args = self.call_args(p.into_inner().next().unwrap());
                     legs.push(LegsDecl { args, span });
+                }
+                Rule::couple_decl => {
+                    let span = self.span(&p);
+                    let joints = p.into_inner().map(|q| self.name(q)).collect();
+                    couples.push(CoupleDecl { joints, span });
                 }
                 Rule::posture => postures.push(self.posture(p)),
                 Rule::mannequin_urdf => {
@@ -505,6 +511,7 @@ impl Builder {
             effectors,
             spheres,
             legs,
+            couples,
             postures,
             span,
         }

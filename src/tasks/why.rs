@@ -374,13 +374,12 @@ fn widen(chain: &Chain) -> Chain {
     wide
 }
 
-/// The joints of `chain` whose value in `q` lies beyond their limits.
+/// The joints of `chain` whose value in `q` lies beyond their limits, or
+/// in a coupling `q` breaks.
 fn beyond_limits(chain: &Chain, q: &[f64]) -> Vec<String> {
     chain
-        .joints
-        .iter()
-        .zip(q)
-        .filter(|(j, &v)| v < j.min || v > j.max)
-        .map(|(j, _)| j.name.clone())
+        .beyond_limits(q)
+        .into_iter()
+        .map(|i| chain.joints[i].name.clone())
         .collect()
 }

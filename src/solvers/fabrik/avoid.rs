@@ -109,7 +109,8 @@ impl Bend<'_> {
                 .flat_map(|q| {
                     (0..n).map(move |i| {
                         let mut q = q.clone();
-                        q[j] = joint.min + joint.range() * i as f64 / (n - 1) as f64;
+                        let v = joint.min + joint.range() * i as f64 / (n - 1) as f64;
+                        q[j] = self.chain.clamp_joint(j, v, &q);
                         q
                     })
                 })

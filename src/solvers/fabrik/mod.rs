@@ -174,7 +174,8 @@ impl Solver for FabrikSolver {
         solution
     }
 
-    fn solve_from(&self, problem: &IkProblem<'_>, start: Vec<f64>) -> IkSolution {
+    fn solve_from(&self, problem: &IkProblem<'_>, mut start: Vec<f64>) -> IkSolution {
+        problem.chain.pull_in(&mut start);
         let bones = bones(problem.chain);
         let mut rng = ChaCha8Rng::seed_from_u64(problem.seed ^ 0x6b69_636b);
         pass::Pass::new(&self.settings, problem, &bones, start).run(&mut rng)

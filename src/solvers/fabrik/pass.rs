@@ -21,7 +21,7 @@ use super::avoid;
 use super::bones::Bone;
 use super::stall::{Next, Stalls};
 use super::FabrikSettings;
-use crate::kinematics::{Chain, Joint, JointKind};
+use crate::kinematics::{Chain, JointKind};
 use crate::plugin::{IkProblem, IkSolution};
 
 /// The working state of one solve.
@@ -118,7 +118,7 @@ impl<'a> Pass<'a> {
     /// Kick the posture (see [`kick`]) and rebuild the points.
     fn kick(&mut self, rng: &mut ChaCha8Rng) {
         let chain = self.chain();
-        kick(&mut self.q, &chain.joints, self.settings.kick, rng);
+        kick(&mut self.q, chain, self.settings.kick, rng);
         self.forward_with(false, false);
     }
 
@@ -238,7 +238,7 @@ impl<'a> Pass<'a> {
                     JointKind::Revolute => best_turn(axis, end - pivot, goal - pivot),
                     JointKind::Prismatic => axis.dot(&(goal - end)),
                 };
-                let q = joint.clamp(self.q[j] + moved);
+                let q = chain.clamp_joint(j, self.q[j] + moved, &self.q);
                 let step = q - self.q[j];
                 self.q[j] = q;
                 match joint.kind {
@@ -292,11 +292,11 @@ impl<'a> Pass<'a> {
 }
 
 /// Move every joint by a seeded random amount, up to `fraction` of its
-/// range, within its limits.
-pub fn kick(q: &mut [f64], joints: &[Joint], fraction: f64, rng: &mut ChaCha8Rng) {
-    for (q, joint) in q.iter_mut().zip(joints) {
+/// range, within its limits and couplings.
+pub fn kick(q: &mut [f64], chain: &Chain, fraction: f64, rng: &mut ChaCha8Rng) {
+    for (i, joint) in chain.joints.iter().enumerate() {
         let u = (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
-        *q = joint.clamp(*q + (2.0 * u - 1.0) * fraction * joint.range());
+        q[i] = chain.clamp_joint(i, q[i] + (2.0 * u - 1.0) * fraction * joint.range(), q);
     }
 }
 

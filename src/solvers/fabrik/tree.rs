@@ -185,11 +185,12 @@ struct Used {
 impl Used {
     fn new(body: &Body, effectors: &[usize]) -> Self {
         let joints = body.joints_to(effectors);
-        let chain = Chain::new(
+        let mut chain = Chain::new(
             joints.iter().map(|&j| body.joints[j].clone()).collect(),
             "",
             nalgebra::Vector3::zeros(),
         );
+        chain.couplings = body.couplings_on(&joints);
         Used { joints, chain }
     }
 
@@ -241,7 +242,7 @@ impl Tree<'_> {
                 Next::Stop => break,
                 Next::Kick => {
                     let mut values = used.gather(&self.q);
-                    kick(&mut values, &used.chain.joints, s.kick, rng);
+                    kick(&mut values, &used.chain, s.kick, rng);
                     self.q = used.scatter(std::mem::take(&mut self.q), &values);
                     self.load();
                 }

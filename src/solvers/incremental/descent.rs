@@ -12,7 +12,7 @@
 use nalgebra::{Point3, Vector3};
 
 use super::IncrementalSettings;
-use crate::kinematics::{Chain, IncrementalFk, Joint, Posed, Step};
+use crate::kinematics::{Chain, IncrementalFk, Posed, Step};
 use crate::plugin::{IkProblem, IkSolution};
 
 /// One descent from `q`.
@@ -180,11 +180,12 @@ fn descend_with(
                 continue;
             }
             let step = &steps[i];
+            let interval = chain.interval(i, fk.q());
             let kept = try_joint(
                 s,
                 &mut fk,
                 i,
-                joint,
+                interval,
                 step,
                 &mut sign[i],
                 &mut d_sq,
@@ -261,7 +262,7 @@ fn try_joint<K: Kinematics>(
     s: &IncrementalSettings,
     fk: &mut K,
     i: usize,
-    joint: &Joint,
+    interval: (f64, f64),
     step: &Step,
     sign: &mut f64,
     d_sq: &mut f64,
@@ -270,7 +271,8 @@ fn try_joint<K: Kinematics>(
     let lever = fk.lever(i);
     let first = if s.sign_memory { *sign } else { 1.0 };
     let old = fk.q()[i];
-    let limits = |v: f64| v >= joint.min && v <= joint.max;
+    let (lo, hi) = interval;
+    let limits = |v: f64| v >= lo && v <= hi;
     let within = |guard: &mut Option<&mut Guard<'_, '_>>, v: f64| {
         limits(v) && guard.as_deref_mut().is_none_or(|g| g.allows(i, v))
     };

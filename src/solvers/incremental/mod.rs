@@ -229,7 +229,10 @@ impl Solver for IncrementalSolver {
         self.over_starts(problem, true)
     }
 
-    fn solve_from(&self, problem: &IkProblem<'_>, start: Vec<f64>) -> IkSolution {
+    fn solve_from(&self, problem: &IkProblem<'_>, mut start: Vec<f64>) -> IkSolution {
+        // A start from elsewhere (a neighbour's posture, a sample) is
+        // moved within this chain's limits and couplings first.
+        problem.chain.pull_in(&mut start);
         descent::descend(&self.settings, problem, start)
     }
 
