@@ -2,10 +2,11 @@
 //! along a run each point is first tried from where the point before it
 //! was reached (the base where it stood, the same posture), then searched
 //! as a reach would be, with that neighbour's base moved as the point
-//! moved as the search's last resort before its retry. Then the holes: a
-//! point not reached between two that are (in its row or its column) is
-//! tried from each of them in the same way, every hole from the first
-//! pass's answers, so the order the threads take them in does not matter.
+//! moved as the search's last resort before its retry. Then the holes and
+//! edges: a point not reached next to one that is (in its row or its
+//! column) is tried from each reached neighbour in the same way, every one
+//! from the first pass's answers, so the order the threads take them in
+//! does not matter.
 
 use nalgebra::{Point3, Vector3};
 use rayon::prelude::*;
@@ -236,10 +237,10 @@ impl<'a> GridRun<'a> {
             .then_some((pose, last.placement.solution.q.as_slice()))
     }
 
-    /// Each point not reached between two that are, in its row or its
-    /// column, tried again from each of them: where the base stood, then
-    /// moved as the point moved. Along a counter a hole between two
-    /// reached points is usually a search's miss.
+    /// Each point not reached next to one that is, in its row or its
+    /// column, tried again from each reached neighbour: where the base
+    /// stood, then moved as the point moved. Along a counter a hole, or a
+    /// ragged edge of the reached region, is often a search's miss.
     fn fill_holes(&self, grid: &Grid, solved: &mut [Solved]) {
         let holes: Vec<usize> = (0..solved.len())
             .filter(|&i| self.is_hole(grid, solved, i))
@@ -261,13 +262,11 @@ impl<'a> GridRun<'a> {
         }
     }
 
-    /// Whether point `i` is not reached and both its neighbours in its row,
-    /// or both in its column, are.
+    /// Whether point `i` is not reached and a neighbour in its row or its
+    /// column is.
     fn is_hole(&self, grid: &Grid, solved: &[Solved], i: usize) -> bool {
         let reached = |n: Option<usize>| n.is_some_and(|n| solved[n].reached.is_some());
-        let [left, right, below, above] = neighbours(grid, i);
-        solved[i].reached.is_none()
-            && ((reached(left) && reached(right)) || (reached(below) && reached(above)))
+        solved[i].reached.is_none() && neighbours(grid, i).into_iter().any(reached)
     }
 
     /// `cell`'s point tried from `neighbour`: where its base stood (and,
