@@ -9,7 +9,7 @@ use miette::Diagnostic;
 use serde::Serialize;
 
 use crate::error::{Diagnostics, Error};
-use crate::escape::escaped;
+use crate::escape::{escaped, escaped_keeping};
 use crate::source::Place;
 
 /// How diagnostics are written.
@@ -158,14 +158,18 @@ impl Finding {
     }
 }
 
-/// A workflow command's message, escaped as the Actions runner reads it.
+/// A workflow command's message, escaped as the Actions runner reads it,
+/// and with every other control or invisible character escaped as on a
+/// terminal (a log is shown on one).
 pub fn data(text: &str) -> String {
-    text.replace('%', "%25")
+    escaped_keeping(text, |c| c == '\n' || c == '\r')
+        .replace('%', "%25")
         .replace('\r', "%0D")
         .replace('\n', "%0A")
 }
 
-/// A workflow command's property value: as its message, and `:` and `,`.
+/// A workflow command's property value (a file name, a code): as its
+/// message, and `:` and `,`.
 pub fn property(text: &str) -> String {
     data(text).replace(':', "%3A").replace(',', "%2C")
 }
@@ -181,6 +185,9 @@ mod tests {
             ("50 %", "50 %25", "50 %25"),
             ("a\nb\r", "a%0Ab%0D", "a%0Ab%0D"),
             ("k.reach:3, x", "k.reach:3, x", "k.reach%3A3%2C x"),
+            // A file name that would recolour the log: escaped, not sent.
+            ("ev\u{1b}il.reach", "ev\\u{1b}il.reach", "ev\\u{1b}il.reach"),
+            ("\u{202e}a", "\\u{202e}a", "\\u{202e}a"),
         ];
         for (text, as_data, as_property) in cases {
             assert_eq!(data(text), as_data, "{text:?}");

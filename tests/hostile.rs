@@ -248,6 +248,17 @@ fn control_and_bidi_characters_are_escaped_in_diagnostics() {
         "{err}"
     );
     assert!(err.contains("evil\\u{1b}[31m.reach"), "{err}");
+    // In the styles a log or an editor reads: JSON keeps the name exact
+    // in its own escapes, a GitHub annotation escapes it as a terminal.
+    for (style, name) in [
+        ("json", "evil\\u001b[31m.reach"),
+        ("github", "evil\\u{1b}[31m.reach"),
+    ] {
+        let (code, _, err) = check(&path, &["--diagnostics", style]);
+        assert_eq!(code, Some(1), "{err}");
+        assert_printable(&err);
+        assert!(err.contains(name), "{style}: {err}");
+    }
 }
 
 #[test]
