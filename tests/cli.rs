@@ -187,7 +187,13 @@ fn out_dir_gets_report_json_and_nothing_half_written() {
     names.sort();
     assert_eq!(
         names,
-        ["report-stamp.js", "report.html", "report.json", "scene.glb"],
+        [
+            ".reach-set",
+            "report-stamp.js",
+            "report.html",
+            "report.json",
+            "scene.glb"
+        ],
         "no temporary file is left behind"
     );
     let html = std::fs::read_to_string(out.join("report.html")).unwrap();
@@ -220,8 +226,8 @@ fn out_dir_gets_a_csv_and_an_svg_per_map() {
     let files = std::fs::read_dir(dir.path()).unwrap().count();
     assert_eq!(
         files,
-        4 + 2 * 18,
-        "report.json, report.html, its stamp, scene.glb and two files for each of eighteen maps"
+        5 + 2 * 18,
+        "report.json, report.html, its stamp, scene.glb, the list of the set and two files for each of eighteen maps"
     );
 }
 

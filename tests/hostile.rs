@@ -584,6 +584,7 @@ fn an_output_set_has_a_file_per_map_and_is_written_whole_or_not_at_all() {
     assert_eq!(
         set,
         [
+            ".reach-set",
             "gaze_map-shelf-top-p.csv",
             "gaze_map-shelf-top-p.svg",
             "map-shelf-top-p-2.csv",
@@ -634,6 +635,44 @@ fn an_output_set_has_a_file_per_map_and_is_written_whole_or_not_at_all() {
             assert_eq!(&std::fs::read(out.join(name)).unwrap(), old, "{name}");
         }
     }
+}
+
+/// A set with one map less (a map taken out of the scenario) replaces a
+/// set of three: the files of the maps gone are removed with it, and a
+/// file the tool did not write stays.
+#[test]
+fn a_smaller_set_removes_the_files_of_the_previous_set_it_has_not() {
+    let (dir, path) = scenario_file(THREE_MAPS);
+    let out = dir.path().join("out");
+    let run = || {
+        reach_bin(&[
+            "run",
+            path.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ])
+    };
+    let o = run();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    std::fs::write(out.join("notes.txt"), "mine").unwrap();
+    let last_map = THREE_MAPS.lines().last().unwrap();
+    std::fs::write(&path, THREE_MAPS.replace(last_map, "")).unwrap();
+    let o = run();
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let names = names_in(&out);
+    assert!(
+        !names.iter().any(|n| n.starts_with("map-shelf-top-p-2")),
+        "{names:?}"
+    );
+    assert!(names.contains(&"notes.txt".to_string()), "{names:?}");
+    assert!(
+        names.contains(&"map-shelf-top-p.svg".to_string()),
+        "{names:?}"
+    );
+    assert!(
+        !names.iter().any(|n| n.starts_with(".reach-tmp")),
+        "{names:?}"
+    );
 }
 
 #[test]

@@ -2,11 +2,13 @@
 //! view, `html/`) with the stamp it polls, and, for each map, its CSV and
 //! SVG (`map_files.rs`), as one set. Every file is rendered first,
 //! then written as a temporary beside its place (with the user's umask),
-//! and only once all are written are they renamed into place; a failure
-//! before that (a name taken by a directory, a full disk) removes the
-//! temporaries and leaves the previous set as it was. The renames are
-//! written in a journal first (`journal.rs`): a run killed outright during
-//! them leaves it, and the next run finishes them before anything else.
+//! and only once all are written are they put in place (`placing.rs`:
+//! renamed, undone from backups if a rename fails, journalled so that a
+//! run killed outright is finished by the next); a failure before that (a
+//! name taken by a directory, a full disk) removes the temporaries and
+//! leaves the previous set as it was. A set lists its files in
+//! [`MANIFEST`], so that the next set removes those it has not (a map
+//! taken out of the scenario), and never a file it did not write.
 //! Temporaries a killed run left behind are swept at the next run. (The
 //! command line holds SIGINT and SIGTERM back while a set is written, so
 //! that they too leave a whole set.)
@@ -19,6 +21,7 @@ use super::glb;
 use super::html;
 use super::journal;
 use super::map_files;
+use super::placing;
 use super::view::view_data;
 use super::Json;
 use crate::error::{Error, ErrorKind};
@@ -28,6 +31,8 @@ use crate::scenario::Scenario;
 
 /// Temporaries start with this, then the process id and the file's name.
 const TEMPORARY: &str = ".reach-tmp-";
+/// The list of an `--out` set's files, written with it.
+pub const MANIFEST: &str = ".reach-set";
 /// A temporary older than this is a killed run's, and is swept.
 const STALE: Duration = Duration::from_secs(60);
 
@@ -94,7 +99,27 @@ fn map_file_parts(task: &TaskReport) -> Option<(String, String, map_files::Pictu
 /// `DIR/report.json`, `DIR/report.html`, and a CSV and an SVG for each
 /// map, as one set.
 pub fn write_outputs(report: &Report, scenario: &Scenario, dir: &Path) -> Result<(), Error> {
-    write_set(dir, &output_set(report, scenario))
+    let mut files = output_set(report, scenario);
+    let names: String = files.iter().map(|(name, _)| format!("{name}\n")).collect();
+    files.push((MANIFEST.to_string(), names.into_bytes()));
+    let leftovers = previous_set(dir)
+        .into_iter()
+        .filter(|old| !files.iter().any(|(name, _)| name == old))
+        .map(|old| dir.join(old))
+        .filter(|path| path.is_file())
+        .collect::<Vec<_>>();
+    place_set(dir, &files, &leftovers)
+}
+
+/// The names the set now in `dir` lists (none where it lists none): plain
+/// names in `dir`, never a path elsewhere.
+fn previous_set(dir: &Path) -> Vec<String> {
+    let text = std::fs::read_to_string(dir.join(MANIFEST)).unwrap_or_default();
+    text.lines()
+        .filter(|n| !n.is_empty() && !n.contains(['/', '\\']) && *n != "." && *n != "..")
+        .filter(|n| !n.starts_with(TEMPORARY) && *n != MANIFEST)
+        .map(str::to_string)
+        .collect()
 }
 
 fn write_error(path: &Path, e: &std::io::Error) -> Error {
@@ -104,11 +129,17 @@ fn write_error(path: &Path, e: &std::io::Error) -> Error {
     })
 }
 
-/// Write `files` into `dir` as one set: all of them, or (on an error
-/// before the renames) none. One set at a time in a process: the
+/// Write `files` into `dir` as one set: all of them, or none (the files
+/// they replace as they were).
+pub fn write_set(dir: &Path, files: &[(String, Vec<u8>)]) -> Result<(), Error> {
+    place_set(dir, files, &[])
+}
+
+/// Write `files` into `dir` as one set and remove `leftovers` (files of
+/// `dir`): all of it, or none. One set at a time in a process: the
 /// temporaries and the journal are named by the process (`reach test`
 /// writes golden reports from several threads).
-pub fn write_set(dir: &Path, files: &[(String, Vec<u8>)]) -> Result<(), Error> {
+fn place_set(dir: &Path, files: &[(String, Vec<u8>)], leftovers: &[PathBuf]) -> Result<(), Error> {
     static WRITING: std::sync::Mutex<()> = std::sync::Mutex::new(());
     let _one_at_a_time = WRITING.lock().unwrap_or_else(|e| e.into_inner());
     std::fs::create_dir_all(dir).map_err(|e| write_error(dir, &e))?;
@@ -131,22 +162,8 @@ pub fn write_set(dir: &Path, files: &[(String, Vec<u8>)]) -> Result<(), Error> {
         }
         written.push((temporary, dir.join(name)));
     }
-    let log = match journal::begin(dir, &written) {
-        Ok(log) => log,
-        Err(e) => {
-            remove_all(&written);
-            return Err(write_error(dir, &e));
-        }
-    };
-    for (k, (temporary, path)) in written.iter().enumerate() {
-        if let Err(e) = std::fs::rename(temporary, path) {
-            remove_all(&written[k..]);
-            let _ = std::fs::remove_file(&log);
-            return Err(write_error(path, &e));
-        }
-    }
-    let _ = std::fs::remove_file(&log);
-    Ok(())
+    let rename = |from: &Path, to: &Path| std::fs::rename(from, to);
+    placing::place(dir, &written, leftovers, &rename).map_err(|(path, e)| write_error(&path, &e))
 }
 
 /// A new file (replacing a temporary a run with this process id left),

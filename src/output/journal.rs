@@ -1,11 +1,13 @@
-//! The journal of an output set's renames. Once every file of a set is
-//! written as a temporary, the renames that put them in place are written
-//! down (itself by a rename, so it is whole or absent), done, and the
-//! journal removed. A run killed outright (SIGKILL, a power cut) during
-//! those few milliseconds leaves a directory holding part of each set
-//! and the journal; the next run that writes there first finishes the
-//! renames the journal lists (whose temporaries are still there), so
-//! that the directory holds the new set whole again.
+//! The journal of an output set's placing (`placing.rs`). Once every
+//! file of a set is written as a temporary, the renames that put them in
+//! place and the removals after them (backups, the previous set's
+//! leftovers) are written down (itself by a rename, so it is whole or
+//! absent), made, and the journal removed. A run killed outright
+//! (SIGKILL, a power cut) during those few milliseconds leaves a directory
+//! holding part of each set and the journal; the next run that writes
+//! there first finishes what the journal lists (the renames whose
+//! temporaries are still there, then the removals), so that the directory
+//! holds the new set whole again.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -13,16 +15,34 @@ use std::path::{Path, PathBuf};
 /// The journal's name: this, then the writing process's id.
 const JOURNAL: &str = ".reach-journal-";
 
-/// Write down that `renames` (temporary, final path; both in `dir`) are
-/// about to be made; returns the journal's path.
-pub fn begin(dir: &Path, renames: &[(PathBuf, PathBuf)]) -> std::io::Result<PathBuf> {
+/// One step of placing a set, on files of one directory.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Step {
+    /// A temporary renamed over its final path.
+    Rename(PathBuf, PathBuf),
+    /// A file removed once every rename is made.
+    Remove(PathBuf),
+}
+
+/// Write down that `steps` (on files in `dir`) are about to be made;
+/// returns the journal's path. A line a step: `R`, the temporary's name
+/// and the final name; or `D` and the name removed; tab-separated.
+pub fn begin(dir: &Path, steps: &[Step]) -> std::io::Result<PathBuf> {
+    let name = |p: &Path| p.file_name().map(|n| n.to_string_lossy().into_owned());
     let mut text = String::new();
-    for (temporary, path) in renames {
-        let name = |p: &Path| p.file_name().map(|n| n.to_string_lossy().into_owned());
-        let (Some(from), Some(to)) = (name(temporary), name(path)) else {
-            continue;
-        };
-        text.push_str(&format!("{from}\t{to}\n"));
+    for step in steps {
+        match step {
+            Step::Rename(temporary, path) => {
+                if let (Some(from), Some(to)) = (name(temporary), name(path)) {
+                    text.push_str(&format!("R\t{from}\t{to}\n"));
+                }
+            }
+            Step::Remove(path) => {
+                if let Some(gone) = name(path) {
+                    text.push_str(&format!("D\t{gone}\n"));
+                }
+            }
+        }
     }
     let journal = dir.join(format!("{JOURNAL}{}", std::process::id()));
     let draft = dir.join(format!("{JOURNAL}{}.draft", std::process::id()));
@@ -67,20 +87,26 @@ pub fn recover(dir: &Path) {
     }
 }
 
-/// Make each rename of a journal's `text` whose temporary is still there.
+/// Make each rename of a journal's `text` whose temporary is still there,
+/// then each removal.
 fn roll_forward(dir: &Path, text: &str) {
-    for line in text.lines() {
-        let Some((from, to)) = line.split_once('\t') else {
-            continue;
-        };
-        // Names only: a journal cannot move a file out of `dir`.
-        let plain = |n: &str| !n.is_empty() && !n.contains(['/', '\\']) && n != "." && n != "..";
-        if !(plain(from) && plain(to)) {
-            continue;
+    // Names only: a journal cannot touch a file outside `dir`.
+    let plain = |n: &str| !n.is_empty() && !n.contains(['/', '\\']) && n != "." && n != "..";
+    let fields = |line: &str| line.split('\t').map(str::to_string).collect::<Vec<_>>();
+    let lines: Vec<Vec<String>> = text.lines().map(fields).collect();
+    for line in &lines {
+        if let [tag, from, to] = line.as_slice() {
+            let temporary = dir.join(from);
+            if tag == "R" && plain(from) && plain(to) && temporary.is_file() {
+                let _ = std::fs::rename(&temporary, dir.join(to));
+            }
         }
-        let temporary = dir.join(from);
-        if temporary.is_file() {
-            let _ = std::fs::rename(&temporary, dir.join(to));
+    }
+    for line in &lines {
+        if let [tag, gone] = line.as_slice() {
+            if tag == "D" && plain(gone) && dir.join(gone).is_file() {
+                let _ = std::fs::remove_file(dir.join(gone));
+            }
         }
     }
 }
@@ -109,18 +135,22 @@ mod tests {
 
     /// A run killed after renaming report.json and before scene.glb: the
     /// next run's recovery puts the new scene.glb in place, removes the
-    /// journal, and touches nothing outside the directory.
+    /// previous set's leftover and the journal, and touches nothing
+    /// outside the directory.
     #[test]
     fn a_killed_set_is_finished_by_the_next_run() {
         let dir = tempfile::tempdir().unwrap();
         let d = dir.path();
         std::fs::write(d.join("report.json"), "new").unwrap();
         std::fs::write(d.join("scene.glb"), "old").unwrap();
+        std::fs::write(d.join("map-old.csv"), "old").unwrap();
         std::fs::write(d.join(".reach-tmp-4000000-scene.glb"), "new").unwrap();
         let journal = "\
-.reach-tmp-4000000-report.json\treport.json
-.reach-tmp-4000000-scene.glb\tscene.glb
-.reach-tmp-4000000-x\t../escaped
+R\t.reach-tmp-4000000-report.json\treport.json
+R\t.reach-tmp-4000000-scene.glb\tscene.glb
+R\t.reach-tmp-4000000-x\t../escaped
+D\tmap-old.csv
+D\t../outside
 ";
         std::fs::write(d.join(".reach-journal-4000000"), journal).unwrap();
         std::fs::write(d.join(".reach-tmp-4000000-x"), "x").unwrap();
@@ -128,6 +158,7 @@ mod tests {
         let read = |n: &str| std::fs::read_to_string(d.join(n)).unwrap();
         assert_eq!(read("report.json"), "new");
         assert_eq!(read("scene.glb"), "new");
+        assert!(!d.join("map-old.csv").exists());
         assert!(!d.join(".reach-journal-4000000").exists());
         assert!(!dir.path().parent().unwrap().join("escaped").exists());
     }

@@ -8,6 +8,7 @@ mod journal;
 mod json;
 pub mod json_layout;
 pub mod map_files;
+mod placing;
 mod text;
 pub mod view;
 
