@@ -2,13 +2,13 @@
 
 use nalgebra::{Point3, Vector3};
 
-use super::search::{search, Candidate};
+use super::search::{search, search_retrying_later, Candidate};
 use crate::kinematics::{Chain, Posture};
 use crate::plugin::{
     Base, BaseError, BasePlugin, BasePose, Fit, Hips, Options, ParamSpec, Params, Placement,
     Plugin, PreparedBase, ReachQuery, Settings, Solver,
 };
-use crate::scene::{IkSolution, OwnBody, Physique, Room};
+use crate::scene::{Blocked, IkSolution, OwnBody, Physique, Room};
 
 /// The plugin `fixed`.
 pub struct Fixed;
@@ -107,13 +107,31 @@ struct Prepared<'a> {
     chain: &'a Chain,
 }
 
-impl PreparedBase for Prepared<'_> {
-    fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement {
-        search(query, self.chain, [Candidate::at(self.pose)], solver).unwrap_or_else(|| Placement {
+impl Prepared<'_> {
+    /// Where nothing was solved: the neutral posture, infinitely far.
+    fn unsolved(&self) -> Placement {
+        Placement {
             pose: self.pose,
             solution: IkSolution::unsolved(self.chain),
             retried: false,
-        })
+        }
+    }
+}
+
+impl PreparedBase for Prepared<'_> {
+    fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement {
+        search(query, self.chain, [Candidate::at(self.pose)], solver)
+            .unwrap_or_else(|| self.unsolved())
+    }
+
+    fn reach_retrying_later(
+        &self,
+        query: &ReachQuery<'_>,
+        solver: &dyn Solver,
+    ) -> (Placement, Vec<Blocked>) {
+        let candidates = [Candidate::at(self.pose)];
+        let (kept, blocked) = search_retrying_later(query, self.chain, candidates, solver);
+        (kept.unwrap_or_else(|| self.unsolved()), blocked)
     }
 
     fn hips(&self, _target_room_mm: &Point3<f64>, _tolerance_mm: f64) -> Hips {

@@ -15,5 +15,6 @@ mod wheelchair;
 pub use fixed::{Fixed, FixedSettings};
 pub use placement::Mobile;
 pub use placing::{Approach, Placing, PlacingSettings};
+pub use search::retry;
 pub use trolley::{Trolley, TrolleySettings};
 pub use wheelchair::{Wheelchair, WheelchairSettings};

@@ -26,7 +26,7 @@ use rand_chacha::ChaCha8Rng;
 
 use super::capability::Capability;
 use super::placing::{Approach, Placing};
-use super::search::{search, Candidate};
+use super::search::{search, search_retrying_later, Candidate};
 use crate::floor::{Doorway, FloorObstacles, Footprint, Misfit, Region, Routes, Shut};
 use crate::geometry::Solid;
 use crate::kept::Kept;
@@ -34,7 +34,7 @@ use crate::kinematics::Chain;
 use crate::plugin::{
     Base, BasePose, Fit, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Solver, Tries,
 };
-use crate::scene::{column_solid, hash_bits, OwnBody, Physique, Room};
+use crate::scene::{column_solid, hash_bits, Blocked, OwnBody, Physique, Room};
 use crate::solvers::random_posture;
 
 /// The admissible region at each heading searched (one region for every
@@ -425,6 +425,19 @@ impl PreparedBase for PreparedMobile<'_> {
     fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement {
         search(query, self.chain, self.candidates(query), solver)
             .unwrap_or_else(|| nowhere(self.room, self.chain))
+    }
+
+    fn reach_retrying_later(
+        &self,
+        query: &ReachQuery<'_>,
+        solver: &dyn Solver,
+    ) -> (Placement, Vec<Blocked>) {
+        let candidates = self.candidates(query);
+        let (kept, blocked) = search_retrying_later(query, self.chain, candidates, solver);
+        (
+            kept.unwrap_or_else(|| nowhere(self.room, self.chain)),
+            blocked,
+        )
     }
 
     /// The nearest points of each heading's region, and the hip points

@@ -21,7 +21,7 @@ use crate::collision::KeptProofs;
 use crate::kinematics::Chain;
 
 use crate::plugin::{BasePose, IkProblem, Placement, ReachQuery, Retry, Search, Solver};
-use crate::scene::Preferred;
+use crate::scene::{Blocked, Preferred};
 use crate::solvers::Kicks;
 
 /// A placement to try: the base pose and, where one is known (a
@@ -37,12 +37,6 @@ impl Candidate {
     pub fn at(pose: BasePose) -> Self {
         Candidate { pose, start: None }
     }
-}
-
-/// A placement whose posture reached the target through something.
-struct Blocked {
-    pose: BasePose,
-    q: Vec<f64>,
 }
 
 /// The placement kept over `candidates` (none when there are none): from
@@ -63,6 +57,46 @@ pub fn search(
     candidates: impl IntoIterator<Item = Candidate>,
     solver: &dyn Solver,
 ) -> Option<Placement> {
+    let (mut best, blocked) = first_search(query, chain, candidates, solver);
+    if let (false, Some(retry)) = (best.reaches(), query.retry) {
+        retry_blocked(query, chain, &blocked, retry, &mut best);
+    }
+    best.into_kept()
+}
+
+/// [`search`] without its retry: the placement kept, and where none
+/// reaches, the blocked placements the retry would start from
+/// ([`retry`]).
+pub fn search_retrying_later(
+    query: &ReachQuery<'_>,
+    chain: &Chain,
+    candidates: impl IntoIterator<Item = Candidate>,
+    solver: &dyn Solver,
+) -> (Option<Placement>, Vec<Blocked>) {
+    let (best, blocked) = first_search(query, chain, candidates, solver);
+    if best.reaches() {
+        return (best.into_kept(), Vec::new());
+    }
+    (best.into_kept(), blocked)
+}
+
+/// The retry [`search`] makes, from `blocked` (what
+/// [`search_retrying_later`] left): the placement that reaches, if one
+/// does. None without the query's retry.
+pub fn retry(query: &ReachQuery<'_>, chain: &Chain, blocked: &[Blocked]) -> Option<Placement> {
+    let retry = query.retry?;
+    let mut best = Preferred::new(query.tolerance_mm);
+    retry_blocked(query, chain, blocked, retry, &mut best);
+    best.into_kept()
+}
+
+/// The search before its retry: the placements offered, and the blocked.
+fn first_search(
+    query: &ReachQuery<'_>,
+    chain: &Chain,
+    candidates: impl IntoIterator<Item = Candidate>,
+    solver: &dyn Solver,
+) -> (Preferred<Placement>, Vec<Blocked>) {
     let mut best = Preferred::new(query.tolerance_mm);
     let mut blocked = Vec::new();
     let bound_mm = chain.reach_bound_mm() + query.tolerance_mm;
@@ -86,18 +120,13 @@ pub fn search(
         }
         any_solved = true;
         if try_candidate(query, chain, &candidate, solver, &mut best, &mut blocked) {
-            return best.into_kept();
+            return (best, blocked);
         }
     }
     if let (false, Some(candidate)) = (any_solved, first_passed) {
-        if try_candidate(query, chain, &candidate, solver, &mut best, &mut blocked) {
-            return best.into_kept();
-        }
+        try_candidate(query, chain, &candidate, solver, &mut best, &mut blocked);
     }
-    if let (false, Some(retry)) = (best.reaches(), query.retry) {
-        retry_blocked(query, chain, &blocked, retry, &mut best);
-    }
-    best.into_kept()
+    (best, blocked)
 }
 
 /// Solve from `candidate`, offer the placement to `best` and note it in

@@ -12,7 +12,7 @@ use geo::MultiPolygon;
 
 use crate::floor::{Footprint, Misfit, Shut};
 use crate::kinematics::{Chain, Posture};
-use crate::scene::{BasePose, OwnBody, Physique, Placement, Room};
+use crate::scene::{BasePose, Blocked, OwnBody, Physique, Placement, Room};
 
 /// How hard a base looks for a placement.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -192,6 +192,17 @@ pub enum Fit {
 pub trait PreparedBase: Send + Sync {
     /// Place the base for the target and ask the solver for the posture.
     fn reach(&self, query: &ReachQuery<'_>, solver: &dyn Solver) -> Placement;
+    /// As [`PreparedBase::reach`], but where no placement reaches, the
+    /// retry is left to the caller: the placement, and the blocked
+    /// placements a retry (`bases::search::retry`) would start from. By
+    /// default `reach`, retry and all, and none left.
+    fn reach_retrying_later(
+        &self,
+        query: &ReachQuery<'_>,
+        solver: &dyn Solver,
+    ) -> (Placement, Vec<Blocked>) {
+        (self.reach(query, solver), Vec::new())
+    }
     /// Where a reach of `target_room_mm`, counted within `tolerance_mm`,
     /// may put the hip point (what a cache compares to know that a change
     /// of the room leaves the answer alone).

@@ -50,6 +50,15 @@ pub struct Placement {
     pub retried: bool,
 }
 
+/// A placement whose posture reached the target through something (an
+/// obstacle, the person's own body, their chair): where a retry starts.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Blocked {
+    pub pose: BasePose,
+    /// The posture that reached through it.
+    pub q: Vec<f64>,
+}
+
 /// A solver's answer: a posture within the joint limits and how far its
 /// effector is from the target.
 #[derive(Clone, Debug, PartialEq)]

@@ -2,22 +2,29 @@
 //! along a run each point is first tried from where the point before it
 //! was reached (the base where it stood, the same posture), then searched
 //! as a reach would be, with that neighbour's base moved as the point
-//! moved as the search's last resort before its retry. Then the holes and
-//! edges: a point not reached next to one that is (in its row or its
-//! column) is tried from each reached neighbour in the same way, every one
-//! from the first pass's answers, so the order the threads take them in
-//! does not matter.
+//! moved as the search's last resort. With neighbour starts the search's
+//! retry (`bases::search`) waits: first the reached region grows into its
+//! neighbours, round after round (each point not reached next to one
+//! newly reached is tried from it, the same way, with a steering descent
+//! as well), then each point still not reached whose search was blocked
+//! is retried from its blocked placements, in waves of every eighth point
+//! (diagonally), the region growing again from what each wave gains.
+//! Every round works from the answers of the round before, so the order
+//! the threads take points in never matters.
 
 use nalgebra::{Point3, Vector3};
 use rayon::prelude::*;
 
 use super::common::{mix_seed, Reaching};
 use super::grid_settings::GridSettings;
+use crate::bases::retry;
 use crate::collision::{KeptProofs, Obstacles};
 use crate::kinematics::Chain;
-use crate::plugin::{BasePose, Placement, PreparedBase, ReachQuery, Search, Subject, TaskInput};
+use crate::plugin::{
+    BasePose, Placement, PreparedBase, ReachQuery, Retry, Search, Subject, TaskInput,
+};
 use crate::report::{MapCell, MapReport, TaskReport};
-use crate::scene::{Grid, GridCell, Surface};
+use crate::scene::{Blocked, Grid, GridCell, Surface};
 
 /// Whether a point is reached (or seen), given where the base stood and
 /// the posture found, and the point.
@@ -56,6 +63,19 @@ pub(super) fn run_map(
 /// last: the rest of the row is another run, solved in parallel.
 const RUN: usize = 32;
 
+/// The waves the retries are made in: wave `k` retries the points whose
+/// row and column add up to `k` modulo this, and the reached region grows
+/// from what each wave gains before the next, so that along a row where
+/// one retry in several finds the way, the rest are reached from it
+/// rather than each retried (the answers are those of retrying every
+/// point, or more).
+const WAVES: usize = 8;
+
+/// How many times harder a hole (a point not reached between two that
+/// are) is searched: so many cold searches, each retrying so many times as
+/// many blocked placements.
+const HARDER: usize = 4;
+
 /// Where a point was reached, and the point (where the effector went).
 struct Reached {
     placement: Placement,
@@ -66,6 +86,9 @@ struct Reached {
 struct Solved {
     cell: MapCell,
     reached: Option<Reached>,
+    /// Where it was not: the blocked placements its search's retry, left
+    /// for later, starts from.
+    blocked: Vec<Blocked>,
 }
 
 /// What every point of one map is solved with.
@@ -96,7 +119,26 @@ fn map_report(
     };
     let mut solved = run.first_pass(&grid);
     if asked.grid.neighbour_starts {
-        run.fill_holes(&grid, &mut solved);
+        let reached: Vec<usize> = (0..solved.len())
+            .filter(|&i| solved[i].reached.is_some())
+            .collect();
+        run.grow(&grid, &mut solved, reached, Steer::AsTheNeighbour);
+        for wave in 0..WAVES {
+            let gained = run.retry_waiting(&grid, &mut solved, wave);
+            run.grow(&grid, &mut solved, gained, Steer::Always);
+        }
+        let holes: Vec<usize> = (0..solved.len())
+            .filter(|&i| is_hole(&grid, &solved, i))
+            .collect();
+        let filled: Vec<(usize, Solved)> = holes
+            .par_iter()
+            .filter_map(|&i| run.hole_searched(&grid, &solved, i).map(|s| (i, s)))
+            .collect();
+        let gained = filled.iter().map(|(i, _)| *i).collect();
+        for (i, s) in filled {
+            solved[i] = s;
+        }
+        run.grow(&grid, &mut solved, gained, Steer::Always);
     }
     let retried = solved
         .iter()
@@ -182,10 +224,21 @@ impl<'a> GridRun<'a> {
         let on = neighbour
             .map(|n| &n.placement)
             .filter(|p| self.prepared.admits(&p.pose, &query.target_room_mm))
-            .and_then(|p| self.on_from(&query, p, &counts));
+            .and_then(|p| self.on_from(&query, p, &counts, Steer::AsTheNeighbour));
+        if let Some(placement) = on {
+            return self.solved(cell, placement, query.target_room_mm);
+        }
         let solver = self.asked.reaching.solver.as_ref();
-        let placement = on.unwrap_or_else(|| self.prepared.reach(&query, solver));
-        self.solved(cell, placement, query.target_room_mm)
+        if !self.asked.grid.neighbour_starts {
+            let placement = self.prepared.reach(&query, solver);
+            return self.solved(cell, placement, query.target_room_mm);
+        }
+        let (placement, blocked) = self.prepared.reach_retrying_later(&query, solver);
+        let mut point = self.solved(cell, placement, query.target_room_mm);
+        if point.reached.is_none() {
+            point.blocked = blocked;
+        }
+        point
     }
 
     fn solved(&self, cell: &GridCell, placement: Placement, point_mm: Point3<f64>) -> Solved {
@@ -196,6 +249,7 @@ impl<'a> GridRun<'a> {
                 placement,
                 point_mm,
             }),
+            blocked: Vec::new(),
         }
     }
 
@@ -209,6 +263,7 @@ impl<'a> GridRun<'a> {
         query: &ReachQuery<'_>,
         last: &Placement,
         counts: &dyn Fn(&Placement) -> bool,
+        steer: Steer,
     ) -> Option<Placement> {
         let chain = self.asked.chain;
         let solver = self.asked.reaching.solver.as_ref();
@@ -216,7 +271,9 @@ impl<'a> GridRun<'a> {
         if counts(&next) {
             return Some(next);
         }
-        let retry = query.retry.filter(|_| last.retried)?;
+        let retry = query
+            .retry
+            .filter(|_| last.retried || steer == Steer::Always)?;
         let start = last.solution.q.clone();
         let mut steered = query.solve_from_at(chain, last.pose, retry.solver, start);
         steered.retried = true;
@@ -237,48 +294,124 @@ impl<'a> GridRun<'a> {
             .then_some((pose, last.placement.solution.q.as_slice()))
     }
 
-    /// Each point not reached next to one that is, in its row or its
-    /// column, tried again from each reached neighbour: where the base
-    /// stood, then moved as the point moved. Along a counter a hole, or a
-    /// ragged edge of the reached region, is often a search's miss.
-    fn fill_holes(&self, grid: &Grid, solved: &mut [Solved]) {
-        let holes: Vec<usize> = (0..solved.len())
-            .filter(|&i| self.is_hole(grid, solved, i))
-            .collect();
-        let filled: Vec<(usize, Solved)> = holes
+    /// Grow the reached region from `fresh` (points newly reached, in
+    /// order), round after round until a round reaches none: each point
+    /// not reached next to a fresh one (in its row or its column) is tried
+    /// from each fresh neighbour, where its base stood and then moved as
+    /// the point moved. A point is tried from each neighbour once at most,
+    /// and every round works from the answers of the round before.
+    fn grow(&self, grid: &Grid, solved: &mut [Solved], mut fresh: Vec<usize>, steer: Steer) {
+        while !fresh.is_empty() {
+            let mut asked: Vec<usize> = fresh
+                .iter()
+                .flat_map(|&f| neighbours(grid, f).into_iter().flatten())
+                .filter(|&i| solved[i].reached.is_none())
+                .collect();
+            asked.sort_unstable();
+            asked.dedup();
+            let from = |n: usize| fresh.binary_search(&n).is_ok();
+            let filled = self.fill(grid, solved, &asked, from, steer);
+            fresh = filled.iter().map(|(i, _)| *i).collect();
+            for (i, s) in filled {
+                solved[i] = s;
+            }
+        }
+    }
+
+    /// Each point of `asked` (in order) tried from each reached neighbour
+    /// that `from` takes: the points reached, in order.
+    fn fill(
+        &self,
+        grid: &Grid,
+        solved: &[Solved],
+        asked: &[usize],
+        from: impl Fn(usize) -> bool + Sync,
+        steer: Steer,
+    ) -> Vec<(usize, Solved)> {
+        asked
             .par_iter()
             .filter_map(|&i| {
                 let cell = &grid.cells[i];
                 neighbours(grid, i)
                     .into_iter()
                     .flatten()
+                    .filter(|&n| from(n))
                     .filter_map(|n| solved[n].reached.as_ref())
-                    .find_map(|n| self.hole_from(cell, n))
+                    .find_map(|n| self.hole_from(cell, n, steer))
                     .map(|s| (i, s))
             })
+            .collect()
+    }
+
+    /// Hole `i` tried from each reached neighbour, steering; else searched
+    /// again cold [`HARDER`] times, each with another seed and retrying
+    /// [`HARDER`] times as many blocked placements.
+    fn hole_searched(&self, grid: &Grid, solved: &[Solved], i: usize) -> Option<Solved> {
+        let cell = &grid.cells[i];
+        let from_neighbour = neighbours(grid, i)
+            .into_iter()
+            .flatten()
+            .filter_map(|n| solved[n].reached.as_ref())
+            .find_map(|n| self.hole_from(cell, n, Steer::Always));
+        if from_neighbour.is_some() {
+            return from_neighbour;
+        }
+        let solver = self.asked.reaching.solver.as_ref();
+        (0..HARDER as u64).find_map(|k| {
+            let usual = self.query(cell, None);
+            let query = ReachQuery {
+                seed: usual.seed ^ (0x9e37_79b9_7f4a_7c15_u64.wrapping_mul(k + 1)),
+                retry: usual.retry.map(|r| Retry {
+                    placements: r.placements * HARDER,
+                    ..r
+                }),
+                ..usual
+            };
+            let point = self.solved(
+                cell,
+                self.prepared.reach(&query, solver),
+                query.target_room_mm,
+            );
+            point.reached.is_some().then_some(point)
+        })
+    }
+
+    /// Each point of `wave` not reached whose search was blocked, retried
+    /// from its blocked placements as the search would have
+    /// (`bases::retry`); the points it reaches, in order. A point still
+    /// not reached keeps the first search's answer.
+    fn retry_waiting(&self, grid: &Grid, solved: &mut [Solved], wave: usize) -> Vec<usize> {
+        let in_wave = |i: usize| (grid.cells[i].row + grid.cells[i].column) % WAVES == wave;
+        let waiting: Vec<usize> = (0..solved.len())
+            .filter(|&i| in_wave(i) && solved[i].reached.is_none() && !solved[i].blocked.is_empty())
             .collect();
-        for (i, s) in filled {
+        let gained: Vec<(usize, Solved)> = waiting
+            .par_iter()
+            .filter_map(|&i| {
+                let cell = &grid.cells[i];
+                let query = self.query(cell, None);
+                let placement = retry(&query, self.asked.chain, &solved[i].blocked)?;
+                let point = self.solved(cell, placement, query.target_room_mm);
+                point.reached.is_some().then_some((i, point))
+            })
+            .collect();
+        let indices = gained.iter().map(|(i, _)| *i).collect();
+        for (i, s) in gained {
             solved[i] = s;
         }
+        indices
     }
 
-    /// Whether point `i` is not reached and a neighbour in its row or its
-    /// column is.
-    fn is_hole(&self, grid: &Grid, solved: &[Solved], i: usize) -> bool {
-        let reached = |n: Option<usize>| n.is_some_and(|n| solved[n].reached.is_some());
-        solved[i].reached.is_none() && neighbours(grid, i).into_iter().any(reached)
-    }
-
-    /// `cell`'s point tried from `neighbour`: where its base stood (and,
-    /// if it needed them, the retry's steering), then moved as the point
-    /// moved; the answer if one reaches.
-    fn hole_from(&self, cell: &GridCell, neighbour: &Reached) -> Option<Solved> {
+    /// `cell`'s point tried from `neighbour`: where its base stood (a
+    /// plain descent, then the retry's steering one), then moved as the
+    /// point moved; the answer if one reaches.
+    fn hole_from(&self, cell: &GridCell, neighbour: &Reached, steer: Steer) -> Option<Solved> {
         let query = self.query(cell, Some(neighbour));
         let counts = |p: &Placement| (self.judge)(p, cell.point_mm);
         let stayed = &neighbour.placement;
         let on = Some(stayed)
             .filter(|p| self.prepared.admits(&p.pose, &query.target_room_mm))
-            .and_then(|p| self.on_from(&query, p, &counts))
+            .and_then(|p| self.on_from(&query, p, &counts, steer))
             .or_else(|| {
                 let (pose, q) = query.last_resort?;
                 let solver = self.asked.reaching.solver.as_ref();
@@ -287,6 +420,26 @@ impl<'a> GridRun<'a> {
             })?;
         Some(self.solved(cell, on, query.target_room_mm))
     }
+}
+
+/// Whether point `i` is not reached and both its neighbours in its row,
+/// or both in its column, are: a hole.
+fn is_hole(grid: &Grid, solved: &[Solved], i: usize) -> bool {
+    let reached = |n: Option<usize>| n.is_some_and(|n| solved[n].reached.is_some());
+    let [left, right, below, above] = neighbours(grid, i);
+    solved[i].reached.is_none()
+        && ((reached(left) && reached(right)) || (reached(below) && reached(above)))
+}
+
+/// When a point tried from its neighbour's posture takes a steering
+/// descent (the retry's solver, which keeps a clear posture clear) after
+/// the plain descent fails.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Steer {
+    /// Only where the neighbour was itself reached by one.
+    AsTheNeighbour,
+    /// Always (a point at the edge of the reached region).
+    Always,
 }
 
 /// The indices of point `i`'s neighbours in `grid`: left and right in its
