@@ -291,7 +291,10 @@ impl ErrorKind {
             UnknownName { suggestion, .. } | BadUrdf { suggestion, .. } => {
                 suggestion.as_ref().map(|s| format!("did you mean `{s}`?"))
             }
-            Dimension { expected, .. } => Some(format!("write {expected}, such as {}", example_of(expected))),
+            Dimension { expected, .. } => Some(match example_of(expected) {
+                Some(example) => format!("write {expected}, such as {example}"),
+                None => format!("write {expected}"),
+            }),
             Operands { .. } => Some("both sides of + and - must have the same kind of unit".into()),
             TargetOutsideRoom { bounds, .. } => Some(format!("the room spans {bounds}")),
             TargetInsideBox { .. } => Some(
@@ -338,8 +341,12 @@ fn did_you_mean(suggestion: &Option<String>, otherwise: &str) -> String {
     }
 }
 
-fn example_of(expected: &str) -> &'static str {
-    if expected.contains("length") {
+fn example_of(expected: &str) -> Option<&'static str> {
+    let example = if expected.contains("list of points") {
+        "`((0, 0, 0), (900, 0, 0), (900, 600, 0))`"
+    } else if expected.contains("point") {
+        "`(900, 600, 0)`"
+    } else if expected.contains("length") {
         "`900mm`"
     } else if expected.contains("angle") {
         "`45deg`"
@@ -347,9 +354,12 @@ fn example_of(expected: &str) -> &'static str {
         "`6`"
     } else if expected.contains("true or false") {
         "`true`"
-    } else {
+    } else if expected.contains("number") {
         "`0.5`"
-    }
+    } else {
+        return None;
+    };
+    Some(example)
 }
 
 /// One diagnostic: a kind, where it is, and extra labelled places. Boxed,

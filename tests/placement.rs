@@ -92,6 +92,25 @@ fn zone(x: f64, y: f64, half_mm: f64) -> String {
     )
 }
 
+/// An L-shaped outline within the zone of `half_mm` about `(x, y)`, the
+/// point itself inside: the square less its corner beyond `(x + 100,
+/// y + 100)`.
+fn l_zone(x: f64, y: f64, half_mm: f64) -> String {
+    let corners = [
+        (x - half_mm, y - half_mm),
+        (x + half_mm, y - half_mm),
+        (x + half_mm, y + 100.0),
+        (x + 100.0, y + 100.0),
+        (x + 100.0, y + half_mm),
+        (x - half_mm, y + half_mm),
+    ];
+    let points: Vec<String> = corners
+        .iter()
+        .map(|(cx, cy)| format!("({cx}, {cy}, 0)"))
+        .collect();
+    format!("zone ({})", points.join(", "))
+}
+
 /// `p` moved out of the counter and the board, if it is in one: onto the
 /// counter, or above the board.
 fn outside([x, y, z]: [f64; 3], counter_h: f64, board_z: f64, board_d: f64) -> [f64; 3] {
@@ -120,8 +139,9 @@ proptest! {
     #![proptest_config(ProptestConfig { cases: 48, rng_seed: proptest::test_runner::RngSeed::Fixed(SEED), .. ProptestConfig::default() })]
 
     /// Pinned to a 2 mm square facing one of the sixteen headings, or
-    /// free in a zone around it (and in the whole room) with all sixteen:
-    /// what the pinned person reaches, the free one reaches.
+    /// free in an L-shaped outline around it, in the square that bounds
+    /// the outline, and in the whole room, with all sixteen: what the
+    /// person reaches in each, they reach in the next.
     #[test]
     fn a_larger_zone_never_reaches_less(
         counter_h in 700.0..950.0f64,
@@ -141,6 +161,7 @@ proptest! {
         let degrees = f64::from(heading) * 22.5;
         let bases = [
             format!("{} heading {degrees}deg", zone(hip_x, hip_y, 1.0)),
+            l_zone(hip_x, hip_y, 300.0),
             zone(hip_x, hip_y, 300.0),
             String::new(),
         ];
@@ -152,9 +173,11 @@ proptest! {
         }
         let ok = reached(&report);
         let n = targets.len();
+        let k = bases.len();
         for t in 0..n {
-            let (pinned, zoned, free) = (ok[t * 3], ok[t * 3 + 1], ok[t * 3 + 2]);
-            prop_assert!(!pinned || zoned, "t{t} {:?}: pinned reaches, the zone does not", points[t]);
+            let (pinned, outlined, zoned, free) = (ok[t * k], ok[t * k + 1], ok[t * k + 2], ok[t * k + 3]);
+            prop_assert!(!pinned || outlined, "t{t} {:?}: pinned reaches, the outline does not", points[t]);
+            prop_assert!(!outlined || zoned, "t{t} {:?}: the outline reaches, its square does not", points[t]);
             prop_assert!(!zoned || free, "t{t} {:?}: the zone reaches, the room does not", points[t]);
         }
     }

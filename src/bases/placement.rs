@@ -143,8 +143,12 @@ impl Mobile {
         let mut h = DefaultHasher::new();
         self.footprint.hash_with_floor(room, &mut h);
         hash_bits(&self.placing.headings, &mut h);
-        if let Some(zone) = self.placing.zone {
+        if let Some(zone) = &self.placing.zone {
             hash_bits(&[zone.min.0, zone.min.1, zone.max.0, zone.max.1], &mut h);
+            if let Some(outline) = &zone.outline {
+                let corners = outline.exterior().coords().flat_map(|c| [c.x, c.y]);
+                hash_bits(&corners.collect::<Vec<f64>>(), &mut h);
+            }
         }
         h.finish()
     }
@@ -153,7 +157,7 @@ impl Mobile {
     /// has doors, cut to what the base can get to from one
     /// (`floor/routes.rs`).
     fn compute_floor(&self, room: &Room) -> Floor {
-        let zone = self.placing.zone;
+        let zone = self.placing.zone.as_ref();
         let headings = &self.placing.headings;
         let obstacles = Arc::new(FloorObstacles::new(room, &self.footprint));
         let region = |h: f64| {
@@ -219,7 +223,7 @@ impl Mobile {
                 room,
                 &self.footprint,
                 &self.placing.headings,
-                self.placing.zone,
+                self.placing.zone.as_ref(),
             )
         });
         Fit::Nowhere(misfit)

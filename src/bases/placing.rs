@@ -84,6 +84,8 @@ pub struct PlacingSettings {
     pub heading_within_rad: Option<f64>,
     pub approach: String,
     pub zone_mm: [Option<Vector3<f64>>; 2],
+    /// `zone`: an outline's corners, in order (z left out).
+    pub zone_outline_mm: Option<Vec<Vector3<f64>>>,
 }
 
 impl PlacingSettings {
@@ -123,6 +125,12 @@ impl PlacingSettings {
                 p.optional_point("zone_from", zone_doc).get(),
                 p.optional_point("zone_to", "the opposite corner").get(),
             ],
+            zone_outline_mm: p
+                .optional_points(
+                    "zone",
+                    "instead of `zone_from` and `zone_to`: the outline the hip point stays within, its corners in order",
+                )
+                .get(),
         }
     }
 
@@ -131,7 +139,16 @@ impl PlacingSettings {
         Ok(Placing {
             headings: self.heading_list()?,
             approach: Approach::parse(&self.approach)?,
-            zone: zone(self.zone_mm)?,
+            zone: match &self.zone_outline_mm {
+                None => zone(self.zone_mm)?,
+                Some(_) if self.zone_mm != [None, None] => {
+                    return Err(SettingsError::invalid(
+                        "zone",
+                        "give a zone as an outline (`zone`) or as two corners (`zone_from`, `zone_to`), not both",
+                    ))
+                }
+                Some(corners) => Some(outline(corners)?),
+            },
         })
     }
 
@@ -171,10 +188,7 @@ fn zone(corners: [Option<Vector3<f64>>; 2]) -> Result<Option<Zone>, SettingsErro
     match corners {
         [Some(a), Some(b)] => {
             let (x, y) = (span(a.x, b.x), span(a.y, b.y));
-            Ok(Some(Zone {
-                min: (x.0, y.0),
-                max: (x.1, y.1),
-            }))
+            Ok(Some(Zone::rectangle((x.0, y.0), (x.1, y.1))))
         }
         [None, None] => Ok(None),
         [Some(_), None] => Err(SettingsError::invalid(
@@ -186,6 +200,48 @@ fn zone(corners: [Option<Vector3<f64>>; 2]) -> Result<Option<Zone>, SettingsErro
             "a zone needs `zone_from` too, its opposite corner",
         )),
     }
+}
+
+/// The most corners a zone's outline may have (checking that its sides
+/// do not cross costs the square of their count).
+pub const MOST_ZONE_CORNERS: usize = 256;
+
+/// The zone an outline gives: at least three corners, at most
+/// [`MOST_ZONE_CORNERS`], enclosing some floor, its sides never crossing.
+fn outline(corners: &[Vector3<f64>]) -> Result<Zone, SettingsError> {
+    use geo::{Area, Validation};
+    let bad = |message: String| Err(SettingsError::invalid("zone", message));
+    if corners.len() < 3 {
+        return bad(format!(
+            "a zone's outline needs at least three corners; {} given",
+            corners.len()
+        ));
+    }
+    if corners.len() > MOST_ZONE_CORNERS {
+        return bad(format!(
+            "a zone's outline has at most {MOST_ZONE_CORNERS} corners; {} given",
+            corners.len()
+        ));
+    }
+    let ring: Vec<geo::Coord<f64>> = corners
+        .iter()
+        .map(|c| geo::Coord { x: c.x, y: c.y })
+        .collect();
+    let in_a_line = ring.windows(3).all(|w| {
+        let (a, b, c) = (w[0], w[1], w[2]);
+        ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)).abs() < 1e-9
+    });
+    let polygon = geo::Polygon::new(geo::LineString::from(ring), Vec::new());
+    if in_a_line {
+        return bad("a zone's outline encloses no floor: its corners are in a line".into());
+    }
+    if !polygon.is_valid() {
+        return bad("a zone's outline crosses itself: give its corners in order round it".into());
+    }
+    if polygon.unsigned_area() < 1.0 {
+        return bad("a zone's outline encloses less than a square millimetre of floor".into());
+    }
+    Zone::outline(polygon).map_or_else(|| bad("a zone's outline has no bounds".into()), Ok)
 }
 
 #[cfg(test)]
@@ -209,6 +265,7 @@ mod tests {
             heading_within_rad: within.map(f64::to_radians),
             approach: "any".into(),
             zone_mm: [None, None],
+            zone_outline_mm: None,
         }
     }
 

@@ -117,6 +117,10 @@ impl Checker<'_> {
             }
             (ParamKind::Bool, OptionValue::Bool(b)) => Value::Bool(*b),
             (ParamKind::Point, OptionValue::Vec3(v)) => Value::Point(self.point(v)?),
+            (ParamKind::Points, OptionValue::Points(ps)) => {
+                let points: Option<Vec<_>> = ps.iter().map(|p| self.point(p)).collect();
+                Value::Points(points?)
+            }
             (ParamKind::Plugin(kind), OptionValue::Plugin(p)) => {
                 Value::Plugin(self.plugin_config(kind, p)?)
             }
@@ -201,6 +205,7 @@ fn describe(v: &OptionValue) -> &'static str {
     match v {
         OptionValue::Expr(_) => "a number",
         OptionValue::Vec3(_) => "a point",
+        OptionValue::Points(_) => "a list of points",
         OptionValue::Bool(_) => "true or false",
         OptionValue::String(_) => "a string",
         OptionValue::Plugin(_) => "a plugin block",

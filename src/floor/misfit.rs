@@ -30,7 +30,7 @@ const PRECISION: f64 = 0.005;
 
 impl Misfit {
     /// The misfit of `footprint` at `headings` in `room` (within `zone`).
-    pub fn of(room: &Room, footprint: &Footprint, headings: &[f64], zone: Option<Zone>) -> Self {
+    pub fn of(room: &Room, footprint: &Footprint, headings: &[f64], zone: Option<&Zone>) -> Self {
         let fits = |scale: f64| {
             let scaled = footprint.scaled(scale);
             let obstacles = Arc::new(FloorObstacles::new(room, &scaled));

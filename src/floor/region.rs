@@ -6,6 +6,8 @@
 //! Minkowski sum: for convex outlines, the convex hull of the pairwise
 //! differences of corners), each cut to the rectangle first.
 
+use std::sync::Arc;
+
 use geo::{
     BooleanOps, ConvexHull, Coord, LineString, MultiPoint, MultiPolygon, Point, Polygon, Rect,
 };
@@ -14,11 +16,48 @@ use super::obstacles::{bounds, FloorObstacles};
 use super::Footprint;
 use crate::scene::Room;
 
-/// A rectangle of the floor a user restricts the base to (an approach zone).
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The floor a user restricts the base's hip point to (an approach zone):
+/// a rectangle, or an outline (a polygon of floor points) and the
+/// rectangle that bounds it.
+#[derive(Clone, Debug, PartialEq)]
 pub struct Zone {
     pub min: (f64, f64),
     pub max: (f64, f64),
+    /// The outline, where the zone is not the whole rectangle.
+    pub outline: Option<Arc<Polygon<f64>>>,
+}
+
+impl Zone {
+    /// The rectangle from `min` to `max`.
+    pub fn rectangle(min: (f64, f64), max: (f64, f64)) -> Self {
+        Zone {
+            min,
+            max,
+            outline: None,
+        }
+    }
+
+    /// The polygon `outline` (of at least three corners), in its bounds.
+    pub fn outline(outline: Polygon<f64>) -> Option<Self> {
+        use geo::BoundingRect;
+        let bounds = outline.bounding_rect()?;
+        Some(Zone {
+            min: (bounds.min().x, bounds.min().y),
+            max: (bounds.max().x, bounds.max().y),
+            outline: Some(Arc::new(outline)),
+        })
+    }
+
+    /// `region` (hip points) cut to the outline, if the zone has one (the
+    /// rectangle is applied where the region is made).
+    pub fn cut(&self, region: MultiPolygon<f64>) -> MultiPolygon<f64> {
+        match &self.outline {
+            Some(outline) if !region.0.is_empty() => {
+                region.intersection(&MultiPolygon::new(vec![(**outline).clone()]))
+            }
+            _ => region,
+        }
+    }
 }
 
 /// A footprint turned to one heading: each part's corners about the hip
@@ -133,13 +172,17 @@ pub fn admissible(
     room: &Room,
     footprint: &Footprint,
     heading_rad: f64,
-    zone: Option<Zone>,
+    zone: Option<&Zone>,
 ) -> MultiPolygon<f64> {
     let turned = Turned::new(footprint, heading_rad);
     let Some(within) = shrunk_room(room, &turned, zone) else {
         return MultiPolygon::new(Vec::new());
     };
-    admissible_in(within, &turned, &FloorObstacles::new(room, footprint))
+    let region = admissible_in(within, &turned, &FloorObstacles::new(room, footprint));
+    match zone {
+        Some(z) => z.cut(region),
+        None => region,
+    }
 }
 
 /// The convex polygon `p` cut to `rect` (Sutherland-Hodgman), none if
@@ -195,7 +238,7 @@ fn clipped(p: &Polygon<f64>, rect: &Rect<f64>) -> Option<Polygon<f64>> {
 }
 
 /// Hip points keeping the whole footprint inside the room (and the zone).
-pub fn shrunk_room(room: &Room, turned: &Turned, zone: Option<Zone>) -> Option<Rect<f64>> {
+pub fn shrunk_room(room: &Room, turned: &Turned, zone: Option<&Zone>) -> Option<Rect<f64>> {
     let floor = Rect::new(
         Coord { x: 0.0, y: 0.0 },
         Coord {
@@ -207,7 +250,7 @@ pub fn shrunk_room(room: &Room, turned: &Turned, zone: Option<Zone>) -> Option<R
 }
 
 /// Hip points keeping the whole footprint inside `floor` (and the zone).
-pub fn shrunk(floor: Rect<f64>, turned: &Turned, zone: Option<Zone>) -> Option<Rect<f64>> {
+pub fn shrunk(floor: Rect<f64>, turned: &Turned, zone: Option<&Zone>) -> Option<Rect<f64>> {
     let (mut x0, mut y0) = (floor.min().x, floor.min().y);
     let (mut x1, mut y1) = (floor.max().x, floor.max().y);
     for c in turned.parts.iter().flatten() {
@@ -333,15 +376,12 @@ mod tests {
 
     #[test]
     fn a_zone_restricts_the_region() {
-        let zone = Zone {
-            min: (900.0, 800.0),
-            max: (1200.0, 1200.0),
-        };
+        let zone = Zone::rectangle((900.0, 800.0), (1200.0, 1200.0));
         let region = admissible(
             &room_with_counter(),
             &Footprint::circle(300.0, 2000.0),
             0.0,
-            Some(zone),
+            Some(&zone),
         );
         assert!(region.contains(&Point::new(1000.0, 1000.0)));
         assert!(!region.contains(&Point::new(1500.0, 1000.0)));

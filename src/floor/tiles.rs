@@ -27,6 +27,8 @@ pub struct Region {
     obstacles: Arc<FloorObstacles>,
     /// The shrunk room (and zone), none if the footprint fits in neither.
     free: Option<Rect<f64>>,
+    /// The zone, where it has an outline that cuts each tile's piece.
+    zone: Option<Zone>,
     tile_mm: f64,
     nx: usize,
     ny: usize,
@@ -39,19 +41,21 @@ impl Region {
         room: &Room,
         footprint: &Footprint,
         heading_rad: f64,
-        zone: Option<Zone>,
+        zone: Option<&Zone>,
         obstacles: Arc<FloorObstacles>,
     ) -> Self {
         let turned = Turned::new(footprint, heading_rad);
         let free = shrunk_room(room, &turned, zone);
         let (w, h) = free.map_or((0.0, 0.0), |r| (r.width(), r.height()));
         let tile_mm = TILE_MM.max((w * h / MAX_TILES).sqrt());
+        let zone = zone.filter(|z| z.outline.is_some()).cloned();
         let nx = (w / tile_mm).ceil().max(1.0) as usize;
         let ny = (h / tile_mm).ceil().max(1.0) as usize;
         Region {
             turned,
             obstacles,
             free,
+            zone,
             tile_mm,
             nx,
             ny,
@@ -67,22 +71,29 @@ impl Region {
         room: &Room,
         footprint: &Footprint,
         heading_rad: f64,
-        zone: Option<Zone>,
+        zone: Option<&Zone>,
         obstacles: Arc<FloorObstacles>,
         pieces: &MultiPolygon<f64>,
     ) -> Self {
         use geo::BooleanOps;
         let turned = Turned::new(footprint, heading_rad);
         let free = shrunk_room(room, &turned, zone);
-        let within = match free {
-            Some(r) => pieces.intersection(&MultiPolygon::new(vec![r.to_polygon()])),
-            None => MultiPolygon::new(Vec::new()),
+        let within = match (free, zone) {
+            (Some(r), zone) => {
+                let cut = pieces.intersection(&MultiPolygon::new(vec![r.to_polygon()]));
+                match zone {
+                    Some(z) => z.cut(cut),
+                    None => cut,
+                }
+            }
+            (None, _) => MultiPolygon::new(Vec::new()),
         };
         let (w, h) = free.map_or((0.0, 0.0), |r| (r.width(), r.height()));
         Region {
             turned,
             obstacles,
             free,
+            zone: None,
             tile_mm: w.max(h).max(1.0),
             nx: 1,
             ny: 1,
@@ -96,8 +107,12 @@ impl Region {
         self.tiles[j * self.nx + i].get_or_init(|| {
             let piece = self
                 .tile_rect(i, j)
-                .map(|r| admissible_in(r, &self.turned, &self.obstacles));
-            Inside::new(piece.unwrap_or_else(|| MultiPolygon::new(Vec::new())))
+                .map(|r| admissible_in(r, &self.turned, &self.obstacles))
+                .unwrap_or_else(|| MultiPolygon::new(Vec::new()));
+            Inside::new(match &self.zone {
+                Some(zone) => zone.cut(piece),
+                None => piece,
+            })
         })
     }
 
@@ -259,6 +274,42 @@ mod tests {
             targets: Vec::new(),
             surfaces: Vec::new(),
             doors: Vec::new(),
+        }
+    }
+
+    /// An L-shaped outline zone: the region is the floor's admissible
+    /// region within the L, whole or tile by tile; the corner the L leaves
+    /// out of its bounding square is out, though a chair fits there.
+    #[test]
+    fn an_outline_zone_leaves_out_what_it_does_not_enclose() {
+        use geo::{Contains, Coord, LineString, Polygon};
+        let corners = [
+            (1000.0, 300.0),
+            (1700.0, 300.0),
+            (1700.0, 700.0),
+            (1300.0, 700.0),
+            (1300.0, 1300.0),
+            (1000.0, 1300.0),
+        ];
+        let ring: Vec<Coord<f64>> = corners.iter().map(|&(x, y)| Coord { x, y }).collect();
+        let outline = Polygon::new(LineString::from(ring), Vec::new());
+        let zone = Zone::outline(outline.clone()).unwrap();
+        assert_eq!((zone.min, zone.max), ((1000.0, 300.0), (1700.0, 1300.0)));
+        let room = room();
+        let chair = Footprint::circle(300.0, 2000.0);
+        let free = admissible(&room, &chair, 0.0, None);
+        let zoned = admissible(&room, &chair, 0.0, Some(&zone));
+        let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
+        let tiled = Region::new(&room, &chair, 0.0, Some(&zone), obstacles);
+        let notch = Point::new(1500.0, 1000.0);
+        assert!(free.contains(&notch), "the notch is free floor");
+        for x in (900..=1800).step_by(50) {
+            for y in (200..=1400).step_by(50) {
+                let p = Point::new(f64::from(x) + 0.5, f64::from(y) + 0.5);
+                let inside = free.contains(&p) && outline.contains(&p);
+                assert_eq!(zoned.contains(&p), inside, "{p:?}");
+                assert_eq!(tiled.contains(p.x(), p.y()), inside, "{p:?}, tiled");
+            }
         }
     }
 

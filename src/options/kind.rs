@@ -45,6 +45,8 @@ pub enum ParamKind {
     Bool,
     /// A point `(x, y, z)` of lengths.
     Point,
+    /// Points `((x, y, z), (x, y, z), ...)`, two or more: an outline.
+    Points,
     /// A name the task resolves itself, such as an effector (`effector eyes`).
     Name,
     /// Another plugin, by name, with its own option block.
@@ -61,6 +63,7 @@ impl ParamKind {
             ParamKind::Integer => "a whole number".into(),
             ParamKind::Bool => "true or false".into(),
             ParamKind::Point => "a point (x, y, z)".into(),
+            ParamKind::Points => "a list of points ((x, y, z), ...)".into(),
             ParamKind::Name => "a name".into(),
             ParamKind::Plugin(k) => format!("the name of a {}", k.noun()),
         }
@@ -75,6 +78,7 @@ impl ParamKind {
             ParamKind::Integer => "integer",
             ParamKind::Bool => "bool",
             ParamKind::Point => "point",
+            ParamKind::Points => "points",
             ParamKind::Name => "name",
             ParamKind::Plugin(PluginKind::Solver) => "solver",
             ParamKind::Plugin(PluginKind::Base) => "base",

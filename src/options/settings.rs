@@ -301,6 +301,15 @@ impl<'a> Params<'a> {
         self.optional(name, ParamKind::Point, doc)
     }
 
+    /// Points (an outline) that may be left out.
+    pub fn optional_points(
+        &mut self,
+        name: &'static str,
+        doc: &'static str,
+    ) -> Field<'_, 'a, Option<Vec<Vector3<f64>>>> {
+        self.optional(name, ParamKind::Points, doc)
+    }
+
     /// A name that may be left out (the plugin then takes a default of its
     /// own, such as the mannequin's first effector).
     pub fn optional_name(
@@ -432,6 +441,18 @@ impl FromValue for Vector3<f64> {
     }
     fn placeholder() -> Self {
         Vector3::zeros()
+    }
+}
+
+impl FromValue for Vec<Vector3<f64>> {
+    fn from_value(value: &Value) -> Option<Self> {
+        match value {
+            Value::Points(v) => Some(v.clone()),
+            _ => None,
+        }
+    }
+    fn placeholder() -> Self {
+        Vec::new()
     }
 }
 

@@ -18,6 +18,7 @@ pub enum Value {
     Integer(i64),
     Bool(bool),
     Point(Vector3<f64>),
+    Points(Vec<Vector3<f64>>),
     Name(String),
     Plugin(PluginConfig),
 }
@@ -31,7 +32,11 @@ impl Value {
             Value::Number(v) => trim(*v),
             Value::Integer(v) => v.to_string(),
             Value::Bool(v) => v.to_string(),
-            Value::Point(p) => format!("({}, {}, {})", trim(p.x), trim(p.y), trim(p.z)),
+            Value::Point(p) => point(p),
+            Value::Points(ps) => {
+                let points: Vec<String> = ps.iter().map(point).collect();
+                format!("({})", points.join(", "))
+            }
             Value::Name(n) => n.clone(),
             Value::Plugin(c) if c.options.values.is_empty() => c.name.clone(),
             Value::Plugin(c) => {
@@ -55,6 +60,7 @@ impl Value {
                 | (ParamKind::Integer, Value::Integer(_))
                 | (ParamKind::Bool, Value::Bool(_))
                 | (ParamKind::Point, Value::Point(_))
+                | (ParamKind::Points, Value::Points(_))
                 | (ParamKind::Name, Value::Name(_))
                 | (ParamKind::Plugin(_), Value::Plugin(_))
         )
@@ -69,10 +75,15 @@ impl Hash for Value {
             Value::Integer(v) => v.hash(h),
             Value::Bool(v) => v.hash(h),
             Value::Point(p) => p.iter().for_each(|c| c.to_bits().hash(h)),
+            Value::Points(ps) => ps.iter().flatten().for_each(|c| c.to_bits().hash(h)),
             Value::Name(n) => n.hash(h),
             Value::Plugin(c) => c.hash(h),
         }
     }
+}
+
+fn point(p: &Vector3<f64>) -> String {
+    format!("({}, {}, {})", trim(p.x), trim(p.y), trim(p.z))
 }
 
 fn trim(v: f64) -> String {

@@ -486,6 +486,8 @@ pub struct OptionDecl {
 pub enum OptionValue {
     Expr(Expr),
     Vec3(Vec3Expr),
+    /// `((x, y, z), (x, y, z), ...)`.
+    Points(Vec<Vec3Expr>),
     Bool(bool),
     String(String),
     Plugin(PluginUse),

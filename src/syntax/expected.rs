@@ -58,6 +58,7 @@ fn describe(rule: Rule) -> Option<&'static str> {
         sphere_decl => "`sphere`",
         legs_decl => "`legs(...)`",
         couple_decl => "`couple`",
+        point_list => "a list of points",
         posture => "`seated` or `standing`",
         mannequin_alias => "`= mannequin(...)`",
         mannequin_urdf => "`from urdf \"file\" root \"link\" tip \"link\"`",

@@ -733,6 +733,9 @@ impl Builder {
                 let v = value_pair.into_inner().next().unwrap();
                 let value = match v.as_rule() {
                     Rule::vec3 => OptionValue::Vec3(self.vec3(v)),
+                    Rule::point_list => {
+                        OptionValue::Points(v.into_inner().map(|p| self.vec3(p)).collect())
+                    }
                     Rule::plugin_block => OptionValue::Plugin(self.plugin_use(v)),
                     Rule::boolean => OptionValue::Bool(v.as_str() == "true"),
                     Rule::string => {
