@@ -133,3 +133,46 @@ reach kettle by ann_facing
     assert_eq!(kettle.why, [Why::NoApproach], "{kettle:?}");
     assert!(!kettle.ok && kettle.iterations == 0);
 }
+
+/// `reach ... and gaze` says why too: where the hand alone does not reach
+/// the target, the same cause a reach gives (a point high across the
+/// room: out of reach); where it does, the reach part is reached or says
+/// it is not while looking.
+#[test]
+fn a_reach_while_looking_says_why_its_hand_does_not_reach() {
+    let text = "units mm deg
+use std::body
+room kitchen {
+  size 4000 x 3000 x 2500
+  box counter at (0, 0, 0) size (600, 3000, 900)
+  target far at (100, 2900, 2400)
+  target side at (900, 2200, 1000)
+}
+person ann { mannequin upper_body base fixed { at (900, 1500, 930) heading 180deg } }
+reach far, side and gaze by ann { size 10mm }
+reach far, side by ann
+";
+    let report = run(text);
+    let both: Vec<&reach::report::ReachAndGazeReport> = report
+        .tasks
+        .iter()
+        .filter_map(|t| match t {
+            reach::report::TaskReport::ReachAndGaze(r) => Some(r.as_ref()),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(both.len(), 2);
+    for r in both {
+        let alone = reach_of(&report, &r.name, "ann");
+        match (r.reach.ok, alone.ok) {
+            (true, _) => assert!(r.reach.why.is_empty(), "{r:?}"),
+            (false, false) => {
+                let causes = |w: &[Why]| w.iter().map(std::mem::discriminant).collect::<Vec<_>>();
+                assert_eq!(causes(&r.reach.why), causes(&alone.why), "{}", r.name);
+            }
+            (false, true) => assert_eq!(r.reach.why, [Why::WhileLooking], "{}", r.name),
+        }
+    }
+    let far = reach_of(&report, "far", "ann");
+    assert!(matches!(far.why[..], [Why::OutOfReach { .. }]), "{far:?}");
+}

@@ -41,6 +41,10 @@ pub enum Why {
     /// obstacles and the person's own body gone, the hand comes this close
     /// at best.
     OutOfReach { closest_mm: f64 },
+    /// `reach ... and gaze`: the hand reaches the target alone (searched
+    /// as a `reach`), but no posture found brings it there while the eyes
+    /// look at it from within the legible range.
+    WhileLooking,
 }
 
 impl Why {
@@ -65,6 +69,7 @@ impl Why {
             Why::JointLimits { .. } => "at the joints' limits".into(),
             Why::OutOfReach { .. } => "out of reach".into(),
             Why::NoApproach => "no place to approach it from".into(),
+            Why::WhileLooking => "not while looking at it".into(),
             Why::CannotGetThere { names } => {
                 let names: Vec<String> = names.iter().map(|n| quoted(n)).collect();
                 format!("cannot get there: closed in by {}", names.join(", "))
@@ -115,6 +120,7 @@ impl Why {
                 "{}: the base fits where the hand would reach it, but that floor is cut off from every door of the room (without the doors' routes, the hand reaches)",
                 self.short()
             ),
+            Why::WhileLooking => "not while looking at it: the hand reaches it alone, but no posture found brings it there while the eyes look at it from within the legible range (the neck's and eyes' limits, the line of sight)".into(),
             Why::NoApproach => "no place to approach it from: wherever the base fits, its `approach` or `heading` options do not let it face the target so; no posture was looked for".into(),
             Why::OutOfReach { closest_mm } => format!(
                 "out of reach: even with the room empty (no furniture on the floor or in the arm's way) and without the person's own body in the way, the hand comes no closer than {closest_mm:.1} mm"

@@ -10,15 +10,16 @@ use nalgebra::Point3;
 
 use super::common::{chain_of, mix_seed, Common, CommonDecl, Reaching, THOROUGH_RETRY};
 use super::gaze::{limit_look, needs_look_link, GazeObstacles, Looked, Looking};
-use crate::collision::PlacedObstacles;
+use super::why::{Failed, Found};
+use crate::collision::{Obstacles, PlacedObstacles};
 use crate::error::ErrorKind;
 use crate::kinematics::{Body, Chain};
 use crate::plugin::{
     BasePose, Dependence, EffectorNeed, IkSolution, Options, ParamSpec, Params, Placement, Plugin,
-    Registry, Search, Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin,
-    Tries,
+    ReachQuery, Registry, Search, Settings, SettingsError, Subject, SubjectKind, Task, TaskInput,
+    TaskPlugin, Tries,
 };
-use crate::report::{Asked, GazeReport, ReachAndGazeReport, ReachReport, TaskReport};
+use crate::report::{Asked, GazeReport, ReachAndGazeReport, ReachReport, TaskReport, Why};
 use crate::solvers::fabrik::{solve_tree, TreeGoal, TreeProblem, TreeSolution};
 use crate::solvers::FabrikSettings;
 
@@ -194,11 +195,11 @@ impl Task for ReachAndGazeTask {
             obstacles.body.as_ref(),
             own,
         );
-        let pose = input
+        let alone = input
             .base
             .prepare(input.room, &hand_chain)
-            .reach(&query, reaching.solver.as_ref())
-            .pose;
+            .reach(&query, reaching.solver.as_ref());
+        let pose = alone.pose;
         let goal = pose.to_base(&target.position_mm);
         let goals = [
             TreeGoal {
@@ -240,7 +241,10 @@ impl Task for ReachAndGazeTask {
         hand_placement.solution.collision = query
             .problem(&hand_chain, pose)
             .collision(&hand_placement.solution.q);
-        let reach = ReachReport::new(&asked(&hand_chain), &hand_placement, target.position_mm);
+        let mut reach = ReachReport::new(&asked(&hand_chain), &hand_placement, target.position_mm);
+        if !reach.ok {
+            reach.why = self.why_not(input, &hand_chain, &alone, &query, obstacles.body.as_ref());
+        }
         let eyes_chain = body.chain(eyes_index);
         let eyes_placement = placed(
             &body,
@@ -269,6 +273,38 @@ impl Task for ReachAndGazeTask {
             reach,
             gaze,
         }))
+    }
+}
+
+impl ReachAndGazeTask {
+    /// Why the hand did not reach while the eyes looked: where the hand
+    /// alone reaches (`alone`, searched as a `reach`), that it does not
+    /// while looking; else why the hand alone does not, found as a reach's
+    /// cause is (`why.rs`).
+    fn why_not(
+        &self,
+        input: &TaskInput<'_>,
+        hand_chain: &Chain,
+        alone: &Placement,
+        query: &ReachQuery<'_>,
+        obstacles: Option<&Obstacles>,
+    ) -> Vec<Why> {
+        if alone.solution.reaches(self.reaching.common.tolerance_mm) {
+            return vec![Why::WhileLooking];
+        }
+        let failed = Failed {
+            reaching: &self.reaching,
+            input,
+            chain: hand_chain,
+            target_mm: query.target_room_mm,
+            seed: query.seed,
+            obstacles,
+            placement: alone,
+        };
+        match failed.why() {
+            Found::Why(why) => why,
+            Found::Reached(_) => vec![Why::WhileLooking],
+        }
     }
 }
 
