@@ -126,6 +126,12 @@ pub enum ErrorKind {
         /// The share of the declaration that asks the most.
         decl_starts: u64,
     },
+    #[error("the mannequin `{mannequin}` passes through itself at rest: {part} meets {other}")]
+    MeetsItself {
+        mannequin: String,
+        part: String,
+        other: String,
+    },
     #[error("{what} is not supported yet")]
     Unsupported { what: String, help: String },
     #[error("{what} belong in the scenario file, not in a file it uses")]
@@ -195,6 +201,7 @@ impl ErrorKind {
             | BadMesh { .. }
             | BadMeshSetting { .. }
             | BadUrdf { .. } => "reach::file",
+            MeetsItself { .. } => "reach::body",
             ImportCycle { .. } | UnknownStdModule { .. } => "reach::use",
             UnknownName { .. } | AmbiguousSurface { .. } | Duplicate { .. } | LetCycle { .. } => {
                 "reach::name"
@@ -230,6 +237,7 @@ impl ErrorKind {
             BadMesh { .. } => "loaded here".into(),
             BadMeshSetting { expected, .. } => format!("not {expected}"),
             BadUrdf { .. } => "here".into(),
+            MeetsItself { .. } => "this mannequin".into(),
             NotUtf8 { .. } => "the first byte that is not UTF-8".into(),
             ImportCycle { .. } => "this `use` closes the cycle".into(),
             UnknownStdModule { .. } => "no such module".into(),
@@ -296,6 +304,10 @@ impl ErrorKind {
                 None => format!("write {expected}"),
             }),
             Operands { .. } => Some("both sides of + and - must have the same kind of unit".into()),
+            MeetsItself { .. } => Some(
+                "a body that meets itself in its neutral posture meets itself in every posture near it, so no answer would mean anything: give its links smaller radii (`link NAME radius 20mm` on a joint; `radius 20mm` after a URDF mannequin's `tip`) or lengths that keep them apart"
+                    .into(),
+            ),
             TargetOutsideRoom { bounds, .. } => Some(format!("the room spans {bounds}")),
             TargetInsideBox { .. } => Some(
                 "a box is solid: nothing inside it can be reached or seen; model an open cabinet as boards, or put the target on the box's surface".into(),

@@ -400,6 +400,51 @@ fn urdf_limits_origins_and_axes_are_checked_like_reach_text() {
     assert!(err.contains("nest 65 deep"), "{err}");
 }
 
+/// A URDF chain of `n` revolute joints 5 mm apart, from `l0` to `l{n}`.
+fn coiled_urdf(n: usize) -> String {
+    let mut text = String::from("<?xml version=\"1.0\"?>\n<robot name=\"coil\">");
+    for i in 0..=n {
+        text += &format!("<link name=\"l{i}\"/>");
+    }
+    for i in 0..n {
+        text += &format!(
+            "<joint name=\"j{i}\" type=\"revolute\"><parent link=\"l{i}\"/><child link=\"l{}\"/>\
+             <origin xyz=\"0 0 0.005\"/><axis xyz=\"0 1 0\"/><limit lower=\"-0.5\" upper=\"0.5\" effort=\"1\" velocity=\"1\"/></joint>",
+            i + 1
+        );
+    }
+    text + "</robot>\n"
+}
+
+/// A URDF chain of 200 joints 5 mm apart, every link 30 mm thick by
+/// default, meets itself in every posture (the search took 39 s to say
+/// so): refused at once, naming the two links that meet; with `radius
+/// 2mm` its links keep apart and it is run.
+#[test]
+fn a_mannequin_that_meets_itself_at_rest_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("coil.urdf"), coiled_urdf(200)).unwrap();
+    let text = |radius: &str| {
+        format!(
+            "units mm deg\nmannequin arm from urdf \"coil.urdf\" root \"l0\" tip \"l200\"{radius}\n\
+             room r {{ size 3000 x 3000 x 3000 target t at (1500, 1500, 1900) }}\n\
+             person p {{ mannequin arm base fixed {{ at (1500, 1500, 1000) }} }}\nreach t by p\n"
+        )
+    };
+    let root = dir.path().join("root.reach");
+    std::fs::write(&root, text("")).unwrap();
+    let (code, _, err) = check(&root, &[]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(
+        flat(&err).contains("passes through itself at rest"),
+        "{err}"
+    );
+    std::fs::write(&root, text(" radius 2mm")).unwrap();
+    let o = reach_bin(&["run", root.to_str().unwrap()]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stdout(&o).contains("reachable"), "{}", stdout(&o));
+}
+
 /// A cube as OBJ text from `min` to `min + size` (mm), its faces wound
 /// outwards ([`crate::watch::cube_obj`]) or, if `inwards`, inwards.
 fn cube_obj(min: [f64; 3], size: f64, inwards: bool) -> String {

@@ -216,7 +216,7 @@ impl Checker<'_> {
     }
 
     /// A radius: a length, zero or more.
-    fn radius(&mut self, e: &Expr) -> Option<f64> {
+    pub(super) fn radius(&mut self, e: &Expr) -> Option<f64> {
         let r = self.length(e)?;
         if r < 0.0 {
             self.out_of_range(

@@ -11,7 +11,9 @@ use crate::options::{Options, PluginConfig, PluginKind, Settings};
 use crate::plugin::{Base, BaseError};
 use crate::scene::{Person, Physique, Vision};
 use crate::span::Name;
-use crate::syntax::ast::{self, JointOverride, OptionDecl, PersonDecl, PersonMannequin};
+use crate::syntax::ast::{
+    self, JointOverride, MannequinRef, OptionDecl, PersonDecl, PersonMannequin,
+};
 
 impl Checker<'_> {
     /// The persons, each with their base built.
@@ -204,7 +206,32 @@ impl Checker<'_> {
         for j in &mut body.joints {
             j.neutral = j.neutral.clamp(j.min, j.max);
         }
+        if ok {
+            ok = self.apart_at_rest(&body, &m.mannequin);
+        }
         ok.then_some(body)
+    }
+
+    /// Whether each of `body`'s chains keeps its solids apart in the
+    /// neutral posture (else a diagnostic at the mannequin, naming the two
+    /// that meet): once per person, a look at every pair of solids.
+    fn apart_at_rest(&mut self, body: &Body, mannequin: &MannequinRef) -> bool {
+        for e in 0..body.effectors.len() {
+            let chain = body.chain(e);
+            let v = chain.volumes(&chain.neutral());
+            if let Some((i, j)) = v.self_hit() {
+                self.error(Error::new(
+                    ErrorKind::MeetsItself {
+                        mannequin: mannequin.name.value.clone(),
+                        part: chain.volume_name(v.owners[j]).to_string(),
+                        other: chain.volume_name(v.owners[i]).to_string(),
+                    },
+                    mannequin.name.span,
+                ));
+                return false;
+            }
+        }
+        true
     }
 
     pub(super) fn apply_override(&mut self, joints: &mut [Joint], o: &JointOverride) -> Option<()> {

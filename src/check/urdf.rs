@@ -44,8 +44,18 @@ impl Checker<'_> {
             Ok(r) => r,
             Err(e) => return fail(self, format!("not valid URDF: {e}"), None, source.path.span),
         };
+        let radius_mm = match &source.radius {
+            Some(e) => Some(self.radius(e)?),
+            None => None,
+        };
         match chain_from_urdf(&robot, &source.root.value, &source.tip.value) {
-            Ok(chain) => Some(Body::from_chain(chain)),
+            Ok(mut chain) => {
+                if let Some(r) = radius_mm {
+                    chain.joints.iter_mut().for_each(|j| j.link.radius_mm = r);
+                    chain.effector_link.radius_mm = r;
+                }
+                Some(Body::from_chain(chain))
+            }
             Err(UrdfError::UnknownLink { link, available }) => {
                 let at = if link == source.root.value {
                     source.root.span

@@ -401,6 +401,8 @@ pub struct UrdfSource {
     pub path: Spanned<String>,
     pub root: Spanned<String>,
     pub tip: Spanned<String>,
+    /// `radius 20mm`: every link's (else the default).
+    pub radius: Option<Expr>,
 }
 
 /// A mannequin by name, with parameters given: `upper_body(stature 1520mm)`.

@@ -463,16 +463,22 @@ impl Builder {
                 }
                 Rule::posture => postures.push(self.posture(p)),
                 Rule::mannequin_urdf => {
-                    let mut strings = p.into_inner().map(|q| {
+                    let mut parts = p.into_inner();
+                    let mut string = || {
+                        let q = parts.next().unwrap();
                         let span = self.span(&q);
                         Spanned::new(unescape(q.into_inner().next().unwrap().as_str()), span)
+                    };
+                    let (path, root, tip) = (string(), string(), string());
+                    let radius = parts
+                        .next()
+                        .map(|r| self.expr(r.into_inner().next().unwrap()));
+                    urdf = Some(UrdfSource {
+                        path,
+                        root,
+                        tip,
+                        radius,
                     });
-                    let (path, root, tip) = (
-                        strings.next().unwrap(),
-                        strings.next().unwrap(),
-                        strings.next().unwrap(),
-                    );
-                    urdf = Some(UrdfSource { path, root, tip });
                 }
                 Rule::mannequin_alias => {
                     let mut parts = p.into_inner();
