@@ -160,6 +160,12 @@ struct LimitArgs {
     /// Largest file read: scenario, OBJ mesh, URDF
     #[arg(long, value_name = "BYTES", default_value_t = DEFAULTS.file_bytes as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.file_bytes as u64))]
     max_file_bytes: u64,
+    /// Largest scenario file (.reach), the root or a used one
+    #[arg(long, value_name = "BYTES", default_value_t = DEFAULTS.scenario_bytes as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.scenario_bytes as u64))]
+    max_scenario_bytes: u64,
+    /// Most boxes in one room
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.boxes as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.boxes as u64))]
+    max_boxes: u64,
     /// Deepest nesting of parentheses and braces
     #[arg(long, value_name = "LEVELS", default_value_t = DEFAULTS.nesting as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.nesting as u64))]
     max_nesting: u64,
@@ -191,6 +197,8 @@ impl LimitArgs {
     fn limits(&self) -> Limits {
         Limits {
             file_bytes: self.max_file_bytes,
+            scenario_bytes: self.max_scenario_bytes,
+            boxes: self.max_boxes as usize,
             nesting: self.max_nesting as usize,
             expression_terms: self.max_expression_terms as usize,
             constant_chain: self.max_constant_chain as usize,

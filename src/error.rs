@@ -602,7 +602,7 @@ impl From<Error> for Diagnostics {
 }
 
 /// `n` with commas between groups of three digits: 1,234,567.
-fn thousands(n: u64) -> String {
+pub(crate) fn thousands(n: u64) -> String {
     let digits = n.to_string();
     let mut out = String::with_capacity(digits.len() + digits.len() / 3);
     for (i, c) in digits.chars().enumerate() {

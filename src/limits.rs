@@ -10,6 +10,13 @@
 pub struct Limits {
     /// Largest file read (scenario, OBJ mesh, URDF), in bytes.
     pub file_bytes: u64,
+    /// Largest scenario file (`.reach`, the root or a used one), in bytes:
+    /// smaller than a mesh may be, since its text is parsed (about 5 MB a
+    /// second).
+    pub scenario_bytes: u64,
+    /// Most boxes in one room (where they crowd, the floor a base may
+    /// stand on costs more than their count).
+    pub boxes: usize,
     /// Deepest nesting of parentheses and braces (expressions, points,
     /// option blocks), counted together.
     pub nesting: usize,
@@ -33,6 +40,8 @@ pub struct Limits {
 /// The limits unless told otherwise: far beyond any real scenario.
 pub const DEFAULTS: Limits = Limits {
     file_bytes: 64 * 1024 * 1024,
+    scenario_bytes: 16 * 1024 * 1024,
+    boxes: 5_000,
     nesting: 64,
     expression_terms: 1024,
     constant_chain: 256,
@@ -54,6 +63,8 @@ impl Default for Limits {
 /// keep to the defaults).
 pub const CEILINGS: Limits = Limits {
     file_bytes: 1 << 30,
+    scenario_bytes: 1 << 30,
+    boxes: 1_000_000,
     nesting: 256,
     expression_terms: 10_000,
     constant_chain: 4096,

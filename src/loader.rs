@@ -120,7 +120,7 @@ fn canonical(path: &Path) -> PathBuf {
 impl Loader {
     fn load_disk(&mut self, path: &Path, key: Key, used_at: Option<Span>) {
         let shown = path.display().to_string();
-        let limit = self.limits.file_bytes;
+        let limit = self.limits.file_bytes.min(self.limits.scenario_bytes);
         let read = match used_at {
             None => read::read_root(path, limit),
             Some(_) => read::read(
@@ -137,7 +137,12 @@ impl Loader {
             },
             Err(ReadError::TooLarge { limit_bytes }) => {
                 let what = format!("`{shown}`");
-                let limit = format!("{limit_bytes} bytes (--max-file-bytes)");
+                let flag = if self.limits.scenario_bytes < self.limits.file_bytes {
+                    "--max-scenario-bytes"
+                } else {
+                    "--max-file-bytes"
+                };
+                let limit = format!("{limit_bytes} bytes ({flag})");
                 return self.fail(ErrorKind::TooLarge { what, limit }, used_at);
             }
             Err(e) => {

@@ -397,7 +397,7 @@ fn stdlib_lists_people_chairs_and_visions() {
 fn every_limit_holds_at_its_ceiling_and_refuses_beyond() {
     use reach::limits::CEILINGS;
     type Make = fn(&std::path::Path, usize) -> String;
-    let cases: [(&str, usize, Make); 7] = [
+    let cases: [(&str, usize, Make); 9] = [
         ("--max-nesting", CEILINGS.nesting, |_, n| {
             format!("let a = {}1{}\n", "(".repeat(n), ")".repeat(n))
         }),
@@ -449,6 +449,23 @@ fn every_limit_holds_at_its_ceiling_and_refuses_beyond() {
         }),
         ("--max-file-bytes", 1 << 20, |_, n| {
             format!("let a = 1\n{}", " ".repeat(n - 10))
+        }),
+        ("--max-scenario-bytes", 1 << 20, |_, n| {
+            format!("let a = 1\n{}", " ".repeat(n - 10))
+        }),
+        // Not the ceiling (a million boxes is a 40 MB file): the limit
+        // holds at the value given.
+        ("--max-boxes", 2_000, |_, n| {
+            let boxes: String = (0..n)
+                .map(|i| {
+                    format!(
+                        "  box b{i} at ({}, {}, 0) size (10, 10, 10)\n",
+                        20 * (i % 100),
+                        20 * (i / 100)
+                    )
+                })
+                .collect();
+            format!("room r {{\n  size 4000 x 4000 x 2500\n{boxes}}}\n")
         }),
     ];
     for (flag, ceiling, make) in cases {

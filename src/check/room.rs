@@ -8,7 +8,7 @@ use rstar::RTree;
 
 use super::eval::fmt_num;
 use super::Checker;
-use crate::error::{Error, ErrorKind};
+use crate::error::{thousands, Error, ErrorKind};
 use crate::scene::{BoxObstacle, Door, Room, Surface, Target, Wall};
 use crate::span::Span;
 use crate::syntax::ast::{BoxDecl, DoorDecl, RoomDecl, RoomItem, SurfaceDecl};
@@ -61,6 +61,28 @@ impl Checker<'_> {
 
     fn room(&mut self, decl: &RoomDecl) -> Option<Room> {
         self.check_room_names(decl);
+        let box_count = decl
+            .items
+            .iter()
+            .filter(|i| matches!(i, RoomItem::Box(_)))
+            .count();
+        if box_count > self.limits.boxes {
+            self.error(Error::new(
+                ErrorKind::TooLarge {
+                    what: format!(
+                        "room `{}`'s {} boxes",
+                        decl.name.value,
+                        thousands(box_count as u64)
+                    ),
+                    limit: format!(
+                        "{} boxes in one room (--max-boxes)",
+                        thousands(self.limits.boxes as u64)
+                    ),
+                },
+                decl.name.span,
+            ));
+            return None;
+        }
         let sizes: Vec<_> = decl
             .items
             .iter()
