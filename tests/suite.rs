@@ -151,22 +151,32 @@ fn a_flipped_verdict_is_reported_in_words() {
     assert!(!out.contains("cup: ann"), "the cup did not change:\n{out}");
 }
 
-/// The golden report with the cup's base moved along x by `dx_mm`.
-fn nudged(golden: &str, dx_mm: f64) -> String {
+/// The golden report with the entry of target `name` edited by `edit`.
+fn edited(golden: &str, name: &str, edit: impl Fn(&mut serde_json::Value)) -> String {
     let mut v: serde_json::Value = serde_json::from_str(golden).unwrap();
     let tasks = v["tasks"].as_array_mut().unwrap();
-    let cup = tasks.iter_mut().find(|t| t["name"] == "cup").unwrap();
-    let x = cup["base"]["x_mm"].as_f64().unwrap();
-    cup["base"]["x_mm"] = serde_json::json!(x + dx_mm);
+    edit(tasks.iter_mut().find(|t| t["name"] == name).unwrap());
     serde_json::to_string_pretty(&v).unwrap()
 }
 
-/// The high jar's entry of the golden report with `edit` applied.
-fn jar_edited(golden: &str, edit: impl Fn(&mut serde_json::Value)) -> String {
-    let mut v: serde_json::Value = serde_json::from_str(golden).unwrap();
-    let tasks = v["tasks"].as_array_mut().unwrap();
-    edit(tasks.iter_mut().find(|t| t["name"] == "jar").unwrap());
-    serde_json::to_string_pretty(&v).unwrap()
+/// The golden report with the cup's base moved along x by `dx_mm`.
+fn nudged(golden: &str, dx_mm: f64) -> String {
+    edited(golden, "cup", |cup| {
+        let x = cup["base"]["x_mm"].as_f64().unwrap();
+        cup["base"]["x_mm"] = serde_json::json!(x + dx_mm);
+    })
+}
+
+/// A directory holding the kitchen with its shelf at `shelf_z_mm` and the
+/// golden report `reach test --update` wrote: the directory, the golden
+/// report's path and its text.
+fn with_golden(shelf_z_mm: u32) -> (tempfile::TempDir, std::path::PathBuf, String) {
+    let dir = tempfile::tempdir().unwrap();
+    write(dir.path(), "kitchen.reach", &scenario(shelf_z_mm, ""));
+    reach_in(dir.path(), &["test", "--update"]);
+    let golden_path = dir.path().join("kitchen.golden.json");
+    let golden = std::fs::read_to_string(&golden_path).unwrap();
+    (dir, golden_path, golden)
 }
 
 /// An unreached target whose reason (its `why`) is the same is not a
@@ -174,11 +184,7 @@ fn jar_edited(golden: &str, edit: impl Fn(&mut serde_json::Value)) -> String {
 /// reason is, in words that differ.
 #[test]
 fn an_unreached_answer_changes_with_its_reason_not_its_closest_posture() {
-    let dir = tempfile::tempdir().unwrap();
-    write(dir.path(), "kitchen.reach", &scenario(HIGH_MM, ""));
-    reach_in(dir.path(), &["test", "--update"]);
-    let golden_path = dir.path().join("kitchen.golden.json");
-    let golden = std::fs::read_to_string(&golden_path).unwrap();
+    let (dir, golden_path, golden) = with_golden(HIGH_MM);
     let jar: serde_json::Value = serde_json::from_str::<serde_json::Value>(&golden).unwrap()
         ["tasks"]
         .as_array()
@@ -189,13 +195,14 @@ fn an_unreached_answer_changes_with_its_reason_not_its_closest_posture() {
         .unwrap();
     assert!(!jar["why"].as_array().unwrap().is_empty(), "{jar}");
 
-    let met_else = jar_edited(&golden, |j| j["collision"] = "`counter`".into());
+    let met_else = edited(&golden, "jar", |j| j["collision"] = "`counter`".into());
     std::fs::write(&golden_path, met_else).unwrap();
     let o = reach_in(dir.path(), &["test"]);
     assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
 
-    let other_why = jar_edited(
+    let other_why = edited(
         &golden,
+        "jar",
         |j| {
             j["why"] =
                 serde_json::json!([{"cause": "obstacles", "names": ["counter"], "together": false}])
@@ -216,11 +223,7 @@ fn an_unreached_answer_changes_with_its_reason_not_its_closest_posture() {
 
 #[test]
 fn a_float_change_inside_the_tolerance_is_ignored_and_outside_reported() {
-    let dir = tempfile::tempdir().unwrap();
-    write(dir.path(), "kitchen.reach", &scenario(LOW_MM, ""));
-    reach_in(dir.path(), &["test", "--update"]);
-    let golden_path = dir.path().join("kitchen.golden.json");
-    let golden = std::fs::read_to_string(&golden_path).unwrap();
+    let (dir, golden_path, golden) = with_golden(LOW_MM);
 
     std::fs::write(&golden_path, nudged(&golden, 0.6)).unwrap();
     let o = reach_in(dir.path(), &["test"]);
