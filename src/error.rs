@@ -314,7 +314,13 @@ impl ErrorKind {
             ),
             MixedDefaults => Some("write the units on these numbers".into()),
             Unsupported { help, .. } => Some(help.clone()),
-            TooLarge { .. } => Some("split it up; the limits are in docs/language.md".into()),
+            TooLarge { limit, .. } => Some(match limit.split_once("(--") {
+                Some((_, flag)) => format!(
+                    "ask for less, or raise the limit with --{} (up to its ceiling: docs/language.md, \"Limits\")",
+                    flag.trim_end_matches(')')
+                ),
+                None => "ask for less; the limits are in docs/language.md, \"Limits\"".into(),
+            }),
             TooManyStarts { .. } => Some(
                 "ask less (a coarser `step`, fewer `starts`, `headings` or `blocked_retries`), or raise --max-solver-starts".into(),
             ),

@@ -71,7 +71,8 @@ fn a_target_just_past_a_limit_names_the_joint() {
     assert_eq!(
         past.why,
         [Why::JointLimits {
-            joints: vec!["shoulder".into()]
+            joints: vec!["shoulder".into()],
+            coupled: false
         }]
     );
 }
@@ -175,4 +176,70 @@ reach far, side by ann
     }
     let far = reach_of(&report, "far", "ann");
     assert!(matches!(far.why[..], [Why::OutOfReach { .. }]), "{far:?}");
+}
+
+/// A stick of two coupled joints (turn and bend, each +-90 deg alone) does
+/// not reach a point 75 deg round and 75 deg up, which the same stick
+/// uncoupled reaches: the coupled limits are named, with both joints.
+#[test]
+fn a_reach_left_short_by_a_coupling_names_the_coupled_joints() {
+    let text = "units mm deg
+room r {
+  size 3000 x 3000 x 2500
+  target both_far at (1250, 1567, 1866)
+}
+mannequin stick {
+  joint turn dh(alpha 90deg) limits(-90deg, 90deg)
+  joint bend dh(a 1000) limits(-90deg, 90deg)
+  couple turn, bend
+  effector hand at (0, 0, 0)
+}
+person p { mannequin stick base fixed { at (1500, 1500, 900) heading 90deg } }
+reach both_far by p
+";
+    let report = run(text);
+    let far = reach_of(&report, "both_far", "p");
+    assert_eq!(
+        far.why,
+        [Why::JointLimits {
+            joints: vec!["turn".into(), "bend".into()],
+            coupled: true
+        }],
+        "{far:?}"
+    );
+    let free = run(&text.replace("  couple turn, bend\n", ""));
+    assert!(reach_of(&free, "both_far", "p").ok);
+}
+
+/// A chair kept to an L of floor whose missing corner is the one place a
+/// table can be reached from: kept to its zone, where the chair kept to
+/// the L's bounding square reaches it; a zone wholly outside the room is
+/// said to be, not a chair too large.
+#[test]
+fn a_zone_that_keeps_the_chair_away_is_named() {
+    let zone_l = "zone ((500, 500, 0), (3000, 500, 0), (3000, 1500, 0), (1500, 1500, 0), (1500, 3000, 0), (500, 3000, 0))";
+    let text = |zone: &str| {
+        format!(
+            "units mm deg
+use std::people
+room den {{
+  size 4000 x 4000 x 2500
+  box table at (2600, 2600, 0) size (400, 400, 750)
+  target on_table at (2800, 2800, 800)
+}}
+person p {{ mannequin man_50th_seated base manual_wheelchair {{ headings 8 {zone} }} }}
+reach on_table by p
+"
+        )
+    };
+    let report = run(&text(zone_l));
+    let kept = reach_of(&report, "on_table", "p");
+    assert_eq!(kept.why, [Why::Zone], "{kept:?}");
+    let square = run(&text("zone_from (500, 500, 0) zone_to (3000, 3000, 0)"));
+    assert!(reach_of(&square, "on_table", "p").ok);
+    let outside = run(&text("zone_from (5000, 5000, 0) zone_to (6000, 6000, 0)"));
+    match &outside.tasks[0] {
+        reach::report::TaskReport::NotPlaced(n) => assert!(n.zone_outside_room, "{n:?}"),
+        other => panic!("placed: {other:?}"),
+    }
 }

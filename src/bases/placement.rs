@@ -271,6 +271,20 @@ impl Base for Mobile {
         Some(&self.footprint)
     }
 
+    fn unzoned(&self) -> Option<Box<dyn Base>> {
+        self.placing.zone.as_ref()?;
+        let placing = Placing {
+            zone: None,
+            ..self.placing.clone()
+        };
+        Some(Box::new(Mobile::new(
+            self.footprint.clone(),
+            self.hip_height_mm,
+            placing,
+            self.own.clone(),
+        )))
+    }
+
     fn reached_floor(&self, room: &Room, heading_rad: f64) -> Option<MultiPolygon<f64>> {
         let cell = self.floor(room);
         let floor = cell.get()?;

@@ -220,14 +220,24 @@ impl Checker<'_> {
             let chain = body.chain(e);
             let v = chain.volumes(&chain.neutral());
             if let Some((i, j)) = v.self_hit() {
-                self.error(Error::new(
+                let mut error = Error::new(
                     ErrorKind::MeetsItself {
                         mannequin: mannequin.name.value.clone(),
                         part: chain.volume_name(v.owners[j]).to_string(),
                         other: chain.volume_name(v.owners[i]).to_string(),
                     },
                     mannequin.name.span,
-                ));
+                );
+                // Where the radii are given: the declaration.
+                if let Ok((decl, _)) = self.mannequins.resolve(&mannequin.name) {
+                    error = match decl.urdf {
+                        Some(_) => {
+                            error.with_note(decl.span, "declared here: `radius` goes after `tip`")
+                        }
+                        None => error.with_note(decl.name.span, "declared here"),
+                    };
+                }
+                self.error(error);
                 return false;
             }
         }

@@ -70,7 +70,7 @@ impl Checker<'_> {
             self.error(Error::new(
                 ErrorKind::TooLarge {
                     what: format!(
-                        "room `{}`'s {} boxes",
+                        "room `{}`, with {} boxes,",
                         decl.name.value,
                         thousands(box_count as u64)
                     ),

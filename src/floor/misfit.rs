@@ -21,6 +21,8 @@ pub struct Misfit {
     pub fits_at: f64,
     /// Whether the base was kept to a zone of the floor.
     pub in_zone: bool,
+    /// Whether that zone lies wholly outside the room's floor.
+    pub zone_outside: bool,
 }
 
 /// The smallest fraction of the size tried, and how closely the fraction
@@ -53,10 +55,13 @@ impl Misfit {
         } else {
             0.0
         };
+        let (x, y) = (room.size_mm.x, room.size_mm.y);
         Misfit {
             size_mm: footprint.size_mm(),
             fits_at,
             in_zone: zone.is_some(),
+            zone_outside: zone
+                .is_some_and(|z| z.max.0 <= 0.0 || z.max.1 <= 0.0 || z.min.0 >= x || z.min.1 >= y),
         }
     }
 }

@@ -165,6 +165,11 @@ pub trait Base: Send + Sync {
     fn footprint(&self) -> Option<&Footprint> {
         None
     }
+    /// The same base free of the zone it is kept to, if it has one (to
+    /// learn whether the zone is what keeps a target out of reach).
+    fn unzoned(&self) -> Option<Box<dyn Base>> {
+        None
+    }
     /// Where the room has doors, the floor where the hip point can be at
     /// `heading_rad` (one of the base's headings) having come from a door
     /// (for pictures); none where the room has no door or the base does

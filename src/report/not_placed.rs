@@ -36,6 +36,10 @@ pub struct NotPlacedReport {
     /// Whether the base was kept to a zone (`zone_from`, `zone_to`): it
     /// fits nowhere within it (or cannot get there).
     pub in_zone: bool,
+    /// Whether that zone lies wholly outside the room's floor (a mistake
+    /// in the zone, not in the base's size).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub zone_outside_room: bool,
     /// Where the room has doors and the base fits somewhere but cannot get
     /// there: each door and how the base fares at it.
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -73,6 +77,7 @@ impl NotPlacedReport {
             footprint_mm: misfit.size_mm.map(mm),
             fits_at: fixed(misfit.fits_at, 3),
             in_zone: misfit.in_zone,
+            zone_outside_room: misfit.zone_outside,
             doors: Vec::new(),
         }
     }
@@ -97,6 +102,7 @@ impl NotPlacedReport {
             footprint_mm: shut.footprint_mm.map(mm),
             fits_at: 1.0,
             in_zone: shut.in_zone,
+            zone_outside_room: false,
             doors: shut
                 .doors
                 .iter()
@@ -129,6 +135,7 @@ impl NotPlacedReport {
 impl ReportKind for NotPlacedReport {
     fn answer(&self) -> Answer {
         let verdict = match (self.doors.is_empty(), self.comes_in()) {
+            _ if self.zone_outside_room => "does NOT fit: its zone lies outside the room",
             (true, _) => "does NOT fit in the room",
             (false, false) => "cannot get in: no door lets the base in",
             (false, true) => "cannot get there from a door",
@@ -146,6 +153,14 @@ impl ReportKind for NotPlacedReport {
     fn details(&self, out: &mut String) {
         if !self.doors.is_empty() {
             self.door_details(out);
+            return;
+        }
+        if self.zone_outside_room {
+            let _ = writeln!(
+                out,
+                "{} by {}: the {} base is kept to a zone that lies outside room `{}` (check `zone`, or `zone_from` and `zone_to`); no posture was looked for",
+                self.name, self.person, self.base, self.room
+            );
             return;
         }
         let [length, width] = self.footprint_mm;

@@ -24,9 +24,18 @@ pub enum Why {
     /// obstacles gone the hand still does not reach, without these too it
     /// does.
     Body { names: Vec<String> },
-    /// The joints' limits: each widened by 10 degrees, the hand reaches,
-    /// these joints going beyond their limits.
-    JointLimits { joints: Vec<String> },
+    /// The joints' limits: each widened by 10 degrees (and coupled joints
+    /// freed of their coupling), the hand reaches, these joints going
+    /// beyond their limits (`coupled`: some only beyond the range their
+    /// coupling leaves them together).
+    JointLimits {
+        joints: Vec<String>,
+        #[serde(default, skip_serializing_if = "is_false")]
+        coupled: bool,
+    },
+    /// The base's zone: outside it (anywhere else the base fits), the hand
+    /// reaches.
+    Zone,
     /// The room's furniture keeps the base too far away: with the named
     /// obstacles gone from the floor (and the arm's way), the hand reaches
     /// (`together`: only with all of them gone).
@@ -45,6 +54,10 @@ pub enum Why {
     /// as a `reach`), but no posture found brings it there while the eyes
     /// look at it from within the legible range.
     WhileLooking,
+}
+
+fn is_false(b: &bool) -> bool {
+    !b
 }
 
 impl Why {
@@ -66,7 +79,9 @@ impl Why {
                 )
             }
             Why::Body { names } => format!("blocked by {}", names.join(" and ")),
-            Why::JointLimits { .. } => "at the joints' limits".into(),
+            Why::JointLimits { coupled: false, .. } => "at the joints' limits".into(),
+            Why::JointLimits { coupled: true, .. } => "at the joints' coupled limits".into(),
+            Why::Zone => "kept to its zone".into(),
             Why::OutOfReach { .. } => "out of reach".into(),
             Why::NoApproach => "no place to approach it from".into(),
             Why::WhileLooking => "not while looking at it".into(),
@@ -97,10 +112,21 @@ impl Why {
             Why::Obstacles { together: true, .. } => {
                 format!("{}: without all of them (not without one), the hand reaches", self.short())
             }
-            Why::JointLimits { joints } => format!(
+            Why::JointLimits {
+                joints,
+                coupled: false,
+            } => format!(
                 "at the joints' limits: with each widened {WIDENED_DEG} deg the hand reaches, with {} beyond their limits",
                 joints.join(", ")
             ),
+            Why::JointLimits {
+                joints,
+                coupled: true,
+            } => format!(
+                "at the joints' coupled limits: with each widened {WIDENED_DEG} deg and coupled joints freed of their coupling (`couple`) the hand reaches, with {} beyond the range they have together",
+                joints.join(", ")
+            ),
+            Why::Zone => "kept to its zone: the base stays in its `zone` (or between `zone_from` and `zone_to`); anywhere else it fits, the hand reaches".into(),
             Why::KeptAway {
                 together: false,
                 names,

@@ -69,6 +69,9 @@ impl Failed<'_> {
         if let Some(why) = self.cut_off(own) {
             return Found::Why(vec![why]);
         }
+        if self.zone_keeps_it_away(own) {
+            return Found::Why(vec![Why::Zone]);
+        }
         let mut closest_mm = self.placement.solution.distance_mm;
         let mut found = Vec::new();
         if let Some(obstacles) = self.obstacles {
@@ -97,7 +100,16 @@ impl Failed<'_> {
                 return Found::Reached(loose);
             }
             if !beyond.is_empty() {
-                found.push(Why::JointLimits { joints: beyond });
+                let q = &loose.solution.q;
+                let coupled = self
+                    .chain
+                    .couplings
+                    .iter()
+                    .any(|c| !c.admits(&self.chain.joints, q));
+                found.push(Why::JointLimits {
+                    joints: beyond,
+                    coupled,
+                });
             }
         }
         if found.is_empty() {
@@ -130,6 +142,25 @@ impl Failed<'_> {
             .map(|i| room.obstacle_name(i).to_string())
             .collect();
         Some(Why::CannotGetThere { names })
+    }
+
+    /// Whether the base, kept to a zone, reaches the target from outside
+    /// it: the same search with the zone left out, everything else kept.
+    fn zone_keeps_it_away(&self, own: &OwnBody) -> bool {
+        let Some(free) = self.input.base.unzoned() else {
+            return false;
+        };
+        let query = self.reaching.query(
+            self.target_mm,
+            self.seed,
+            Search::MostComfortable,
+            self.obstacles,
+            own,
+        );
+        let placed = free
+            .prepare(self.input.room, self.chain)
+            .reach(&query, self.reaching.solver.as_ref());
+        self.valid(&placed)
     }
 
     /// The person's own body is in the way (`bare` reached without it and
@@ -361,9 +392,10 @@ fn distance_to_obstacle(room: &Room, i: usize, p: &Point3<f64>) -> f64 {
 }
 
 /// `chain` with each revolute joint's limits [`WIDENED_DEG`] wider on
-/// either side.
+/// either side, and no coupling.
 fn widen(chain: &Chain) -> Chain {
     let mut wide = chain.clone();
+    wide.couplings.clear();
     let by = WIDENED_DEG.to_radians();
     for joint in &mut wide.joints {
         if joint.kind == JointKind::Revolute {
