@@ -6,14 +6,15 @@
 //! Minkowski sum: for convex outlines, the convex hull of the pairwise
 //! differences of corners), each cut to the rectangle first.
 
+use std::collections::hash_map::DefaultHasher;
+use std::hash::{Hash, Hasher};
 use std::sync::Arc;
 
-use geo::{
-    BooleanOps, ConvexHull, Coord, LineString, MultiPoint, MultiPolygon, Point, Polygon, Rect,
-};
+use geo::{BooleanOps, Coord, LineString, MultiPolygon, Polygon, Rect};
 
 use super::obstacles::{bounds, FloorObstacles};
 use super::Footprint;
+use crate::kept::Kept;
 use crate::scene::Room;
 
 /// The floor a user restricts the base's hip point to (an approach zone):
@@ -101,12 +102,43 @@ pub fn admissible_in(
     if grown.is_empty() {
         return free;
     }
+    // The same rectangle and the same grown outlines give the same piece:
+    // kept by the process (a room with one box moved or taken away, to
+    // learn why a reach failed or at a save in watch mode, works out
+    // again only the pieces near it).
+    // In an order of their own (neighbours first, so that each union of
+    // `union` joins outlines near each other), not the order the R-tree
+    // of this room happens to give them in.
+    grown.sort_by(canonical);
+    let mut h = DefaultHasher::new();
+    let rect = [
+        within.min().x,
+        within.min().y,
+        within.max().x,
+        within.max().y,
+    ];
+    rect.iter().for_each(|v| v.to_bits().hash(&mut h));
+    for g in &grown {
+        g.exterior().0.len().hash(&mut h);
+        g.exterior()
+            .coords()
+            .for_each(|c| (c.x.to_bits(), c.y.to_bits()).hash(&mut h));
+    }
+    PIECES
+        .get_or(h.finish(), || Arc::new(free_of(free, grown)))
+        .as_ref()
+        .clone()
+}
+
+/// Pieces of admissible region kept by the process, by a hash of their
+/// rectangle and grown outlines.
+static PIECES: Kept<Arc<MultiPolygon<f64>>> = Kept::new(16_384);
+
+/// `free` less the union of the `grown` outlines.
+fn free_of(free: MultiPolygon<f64>, grown: Vec<Polygon<f64>>) -> MultiPolygon<f64> {
     if grown.len() <= UNION_LEAF {
         return free.difference(&geo::unary_union(&grown));
     }
-    // Neighbours first, so that each union below joins outlines near each
-    // other.
-    grown.sort_by(|a, b| left_of(a).total_cmp(&left_of(b)));
     if covered_by_a_few(&free, &grown) {
         return MultiPolygon::new(Vec::new());
     }
@@ -137,6 +169,25 @@ fn covered_by_a_few(free: &MultiPolygon<f64>, grown: &[Polygon<f64>]) -> bool {
 }
 
 /// The least x of a polygon's corners.
+/// Outlines ordered by their leftmost x, then corner by corner.
+fn canonical(a: &Polygon<f64>, b: &Polygon<f64>) -> std::cmp::Ordering {
+    let corners = |p: &Polygon<f64>| {
+        p.exterior()
+            .0
+            .iter()
+            .flat_map(|c| [c.x, c.y])
+            .collect::<Vec<f64>>()
+    };
+    left_of(a).total_cmp(&left_of(b)).then_with(|| {
+        let (ca, cb) = (corners(a), corners(b));
+        ca.iter()
+            .zip(&cb)
+            .map(|(x, y)| x.total_cmp(y))
+            .find(|o| o.is_ne())
+            .unwrap_or(ca.len().cmp(&cb.len()))
+    })
+}
+
 fn left_of(p: &Polygon<f64>) -> f64 {
     p.exterior()
         .0
@@ -269,23 +320,57 @@ pub fn shrunk(floor: Rect<f64>, turned: &Turned, zone: Option<&Zone>) -> Option<
 /// `O + (-F)`: the hip points at which footprint `F` would overlap the
 /// convex obstacle outline `O`.
 fn minkowski_with_reflected(obstacle: &[Coord<f64>], footprint: &[Coord<f64>]) -> Polygon<f64> {
-    let points: Vec<Point<f64>> = obstacle
+    let points: Vec<Coord<f64>> = obstacle
         .iter()
         .flat_map(|o| {
-            footprint
-                .iter()
-                .map(move |f| Point::new(o.x - f.x, o.y - f.y))
+            footprint.iter().map(move |f| Coord {
+                x: o.x - f.x,
+                y: o.y - f.y,
+            })
         })
         .collect();
-    let hull = MultiPoint::new(points).convex_hull();
-    Polygon::new(LineString::from(hull.exterior().0.clone()), Vec::new())
+    Polygon::new(LineString::from(convex_hull(points)), Vec::new())
+}
+
+/// The convex hull of `points`, counter-clockwise from the lowest-leftmost
+/// corner and closed (Andrew's monotone chain: a few dozen points here, so
+/// sorting them is cheaper than a general hull's partitions).
+fn convex_hull(mut points: Vec<Coord<f64>>) -> Vec<Coord<f64>> {
+    points.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    points.dedup();
+    if points.len() < 3 {
+        let mut ring = points;
+        if let Some(&first) = ring.first() {
+            ring.push(first);
+        }
+        return ring;
+    }
+    let cross = |o: Coord<f64>, a: Coord<f64>, b: Coord<f64>| {
+        (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x)
+    };
+    let mut hull: Vec<Coord<f64>> = Vec::with_capacity(points.len() + 1);
+    for &p in &points {
+        while hull.len() >= 2 && cross(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0 {
+            hull.pop();
+        }
+        hull.push(p);
+    }
+    let lower = hull.len() + 1;
+    for &p in points.iter().rev().skip(1) {
+        while hull.len() >= lower && cross(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0 {
+            hull.pop();
+        }
+        hull.push(p);
+    }
+    // The last point pushed is the first: the ring is closed.
+    hull
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::scene::BoxObstacle;
-    use geo::{Area, Contains};
+    use geo::{Area, Contains, Point};
 
     #[test]
     fn clipping_keeps_what_is_inside_and_drops_what_is_outside() {
@@ -432,6 +517,29 @@ mod union_tests {
     use super::*;
     use geo::Area;
     use proptest::prelude::*;
+
+    proptest! {
+        /// The hull of a few points (a box's corners less a chair's) is
+        /// geo's convex hull: the same area, every point within it.
+        #[test]
+        fn the_monotone_chain_hull_is_the_convex_hull(
+            points in prop::collection::vec((-500.0..500.0f64, -500.0..500.0f64), 3..40),
+        ) {
+            use geo::{ConvexHull, Contains, MultiPoint, Point};
+            let coords: Vec<Coord<f64>> = points.iter().map(|&(x, y)| Coord { x, y }).collect();
+            let ring = convex_hull(coords.clone());
+            prop_assert_eq!(ring.first(), ring.last());
+            let ours = Polygon::new(LineString::from(ring), Vec::new());
+            let theirs = MultiPoint::from(coords.iter().map(|&c| Point::from(c)).collect::<Vec<_>>()).convex_hull();
+            prop_assert!((ours.unsigned_area() - theirs.unsigned_area()).abs() < 1e-6 * (1.0 + theirs.unsigned_area()));
+            // Counter-clockwise: a positive signed area.
+            prop_assert!(ours.signed_area() >= 0.0);
+            for c in &coords {
+                let grown = ours.exterior().0.iter().any(|v| (v.x - c.x).hypot(v.y - c.y) < 1e-9);
+                prop_assert!(grown || ours.contains(&Point::from(*c)) || ours.exterior().contains(&Point::from(*c)));
+            }
+        }
+    }
 
     /// A square of side `side_mm` at (x, y).
     fn square(x: f64, y: f64, side_mm: f64) -> Polygon<f64> {
