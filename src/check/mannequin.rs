@@ -10,7 +10,9 @@ use crate::error::{Error, ErrorKind};
 use crate::kinematics::{Body, Coupling, Dh, Effector, Joint, JointKind, Link, Posture, Sphere};
 use crate::span::Span;
 use crate::span::{FileId, Name};
-use crate::syntax::ast::{self, Expr, JointDecl, LimitsExpr, MannequinDecl, MannequinRef};
+use crate::syntax::ast::{
+    self, CoupleDecl, Expr, JointDecl, LimitsExpr, MannequinDecl, MannequinRef,
+};
 use crate::units::Quantity;
 
 const DH_PARAMS: [&str; 4] = ["theta", "d", "alpha", "a"];
@@ -264,32 +266,66 @@ impl Checker<'_> {
     /// The couplings: each of two or more distinct joints of the mannequin.
     fn couplings(&mut self, decl: &MannequinDecl, joints: &[&Name]) -> Option<Vec<Coupling>> {
         let mut ok = true;
-        let mut couplings = Vec::new();
+        let mut couplings: Vec<Coupling> = Vec::new();
         for c in &decl.couples {
-            let mut indices = Vec::new();
-            for (k, name) in c.joints.iter().enumerate() {
-                if c.joints[..k].iter().any(|n| n.value == name.value) {
-                    let what = format!("joint `{}` in one `couple`", name.value);
-                    self.repeated(std::iter::once(name.span), &what);
-                    ok = false;
-                    continue;
-                }
-                match joints.iter().position(|n| n.value == name.value) {
-                    Some(i) => indices.push(i),
-                    None => {
-                        self.error(Error::unknown(
-                            "joint of this mannequin",
-                            &name.value,
-                            name.span,
-                            joints.iter().map(|n| n.value.as_str()),
-                        ));
-                        ok = false;
-                    }
-                }
+            let Some(indices) = self.coupled_joints(c, joints) else {
+                ok = false;
+                continue;
+            };
+            let sorted = |j: &[usize]| {
+                let mut j = j.to_vec();
+                j.sort_unstable();
+                j
+            };
+            if couplings
+                .iter()
+                .any(|k| sorted(&k.joints) == sorted(&indices))
+            {
+                self.repeated(std::iter::once(c.span), "this coupling");
+                ok = false;
+                continue;
             }
             couplings.push(Coupling { joints: indices });
         }
         ok.then_some(couplings)
+    }
+
+    /// The indices of a `couple`'s joints among the mannequin's `joints`:
+    /// two or more, each once, each known (else its diagnostics).
+    fn coupled_joints(&mut self, c: &CoupleDecl, joints: &[&Name]) -> Option<Vec<usize>> {
+        if c.joints.len() < 2 {
+            self.error(Error::new(
+                ErrorKind::Missing {
+                    owner: "this `couple`".into(),
+                    what: "second joint (write `couple a, b`: two joints or more)",
+                },
+                c.span,
+            ));
+            return None;
+        }
+        let mut ok = true;
+        let mut indices = Vec::new();
+        for (k, name) in c.joints.iter().enumerate() {
+            if c.joints[..k].iter().any(|n| n.value == name.value) {
+                let what = format!("joint `{}` in one `couple`", name.value);
+                self.repeated(std::iter::once(name.span), &what);
+                ok = false;
+                continue;
+            }
+            match joints.iter().position(|n| n.value == name.value) {
+                Some(i) => indices.push(i),
+                None => {
+                    self.error(Error::unknown(
+                        "joint of this mannequin",
+                        &name.value,
+                        name.span,
+                        joints.iter().map(|n| n.value.as_str()),
+                    ));
+                    ok = false;
+                }
+            }
+        }
+        ok.then_some(indices)
     }
 
     /// The index of joint `name` among those declared before it.
