@@ -297,7 +297,7 @@ impl Checker<'_> {
             self.error(Error::new(
                 ErrorKind::Missing {
                     owner: "this `couple`".into(),
-                    what: "second joint (write `couple a, b`: two joints or more)",
+                    what: "second joint",
                 },
                 c.span,
             ));
