@@ -152,6 +152,6 @@ impl ReportKind for GazeReport {
         if let Some(obstacle) = &self.occluded_by {
             let _ = writeln!(out, "  the line of sight meets `{obstacle}`");
         }
-        self.posture.write_line(out, "deg; look in mm");
+        self.posture.write_line(out);
     }
 }

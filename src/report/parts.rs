@@ -63,9 +63,10 @@ pub(super) const DISTANCE_TOLERANCE_MM: f64 = 1.0;
 pub(super) const COMFORT_TOLERANCE: f64 = 0.05;
 
 /// Joint values by joint name, in chain order: degrees for revolute joints,
-/// millimetres for prismatic ones.
+/// millimetres for prismatic ones (the names of those are the second
+/// field, for the text report; JSON has the values alone).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Posture(pub Vec<(String, f64)>);
+pub struct Posture(pub Vec<(String, f64)>, pub Vec<String>);
 
 /// A map from joint name to number (JSON objects keep no order in a
 /// schema; the report writes them in chain order).
@@ -108,13 +109,27 @@ impl Posture {
                 (j.name.clone(), shown)
             })
             .collect();
-        Posture(values)
+        let sliding = chain
+            .joints
+            .iter()
+            .filter(|j| j.kind == JointKind::Prismatic)
+            .map(|j| j.name.clone())
+            .collect();
+        Posture(values, sliding)
     }
 
-    /// `  posture (UNITS): joint value, ...`.
-    pub fn write_line(&self, out: &mut String, units: &str) {
-        let values: Vec<String> = self.0.iter().map(|(j, v)| format!("{j} {v:.1}")).collect();
-        let _ = writeln!(out, "  posture ({units}): {}", values.join(", "));
+    /// `  posture (deg): joint value, ..., slide 12.0 mm`: a sliding
+    /// joint's value in millimetres, said so.
+    pub fn write_line(&self, out: &mut String) {
+        let values: Vec<String> = self
+            .0
+            .iter()
+            .map(|(j, v)| match self.1.contains(j) {
+                true => format!("{j} {v:.1} mm"),
+                false => format!("{j} {v:.1}"),
+            })
+            .collect();
+        let _ = writeln!(out, "  posture (deg): {}", values.join(", "));
     }
 }
 

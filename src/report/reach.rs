@@ -114,7 +114,7 @@ impl ReportKind for ReachReport {
             self.solver.as_str(),
         ];
         self.base.write_line(out, what);
-        self.posture.write_line(out, "deg");
+        self.posture.write_line(out);
         if let (Some(part), Some(what)) = (&self.collision_part, &self.collision) {
             let _ = writeln!(out, "  {part} passes through {}", quoted(what));
         }
