@@ -88,6 +88,7 @@ fn main() {
                 retry: None,
                 proofs: None,
                 last_resort: None,
+                from_rest: true,
             };
             let start = Instant::now();
             let placement = prepared.reach(&query, &solver);

@@ -239,6 +239,10 @@ impl Mobile {
             floor: self.floor(room),
             capability: Capability::of(chain, &self.own),
             hint: workspace_centre(chain),
+            at_rest: {
+                let p = chain.effector(&chain.neutral());
+                Vector2::new(p.x, p.y)
+            },
         }
     }
 }
@@ -264,6 +268,7 @@ impl Base for Mobile {
         Tries {
             solved: self.placing.headings.len() as u64,
             seeded: SEEDED as u64,
+            from_rest: self.placing.headings.len() as u64,
         }
     }
 
@@ -306,6 +311,9 @@ pub struct PreparedMobile<'a> {
     floor: Arc<OnceLock<Floor>>,
     capability: Arc<Capability>,
     hint: Vector2<f64>,
+    /// Where the hand is, relative to the hip, in the neutral posture:
+    /// in front of the reaching shoulder.
+    at_rest: Vector2<f64>,
 }
 
 /// Two sampled placements at one heading closer than this are one.
@@ -334,10 +342,24 @@ impl PreparedMobile<'_> {
     ) -> impl Iterator<Item = Candidate> + 'q {
         // A nearest placement is kept even beside a sampled one: that is
         // descended from one seed, this from the solver's own starts.
-        let nearest = std::iter::once_with(|| self.nearest(&query.target_room_mm));
+        let nearest = std::iter::once_with(|| self.nearest(&query.target_room_mm, self.hint));
+        // Last, where the hand at rest would be at the target: the
+        // reaching shoulder in front of it, the base as close as it fits
+        // (a low point on a wall, reached leaning forward over the knees).
+        // For a reach; a map's points are reached from their neighbours.
+        let at_rest = std::iter::once_with(move || {
+            if !query.from_rest {
+                return Vec::new();
+            }
+            let near = self.nearest(&query.target_room_mm, self.hint);
+            let mut rest = self.nearest(&query.target_room_mm, self.at_rest);
+            rest.retain(|p| !near.iter().any(|n| same_place(n, p)));
+            rest
+        });
         self.sampled(query)
             .into_iter()
             .chain(nearest.flatten().map(Candidate::at))
+            .chain(at_rest.flatten().map(Candidate::fallback))
     }
 
     /// Up to `SEEDED` placements from the capability map whose posture is
@@ -383,8 +405,8 @@ impl PreparedMobile<'_> {
                     || query.problem(self.chain, pose).collision(q).is_none();
                 if clear {
                     found.push(Candidate {
-                        pose,
                         start: Some(q.to_vec()),
+                        ..Candidate::at(pose)
                     });
                 }
                 if found.len() == SEEDED || scanned.len() == SCANNED {
@@ -398,8 +420,8 @@ impl PreparedMobile<'_> {
     /// For each heading, the admissible point nearest to where the arm
     /// would rather have the target (its workspace centre, turned into the
     /// approach), the nearest first; those the approach admits.
-    fn nearest(&self, target: &Point3<f64>) -> Vec<BasePose> {
-        let hint = toward(self.hint, self.mobile.placing.approach);
+    fn nearest(&self, target: &Point3<f64>, hint: Vector2<f64>) -> Vec<BasePose> {
+        let hint = toward(hint, self.mobile.placing.approach);
         let mut scored: Vec<(f64, BasePose)> = self
             .regions()
             .filter_map(|(heading, region)| {
@@ -468,8 +490,10 @@ impl PreparedBase for PreparedMobile<'_> {
             + tolerance_mm
             + self.mobile.footprint.extent_mm()
             + NEAR_HEIGHT_MM[NEAR_HEIGHT_MM.len() - 1][1];
+        let mut poses = self.nearest(target_room_mm, self.hint);
+        poses.extend(self.nearest(target_room_mm, self.at_rest));
         Hips {
-            poses: self.nearest(target_room_mm),
+            poses,
             around: Some((*target_room_mm, radius_mm)),
         }
     }

@@ -30,12 +30,27 @@ use crate::solvers::Kicks;
 pub struct Candidate {
     pub pose: BasePose,
     pub start: Option<Vec<f64>>,
+    /// Tried only while no placement before it has reached: a last
+    /// resort, not a choice among comfortable placements.
+    pub fallback: bool,
 }
 
 impl Candidate {
     /// A pose with no known posture: the solver's own starts.
     pub fn at(pose: BasePose) -> Self {
-        Candidate { pose, start: None }
+        Candidate {
+            pose,
+            start: None,
+            fallback: false,
+        }
+    }
+
+    /// A pose tried only if nothing before it reached.
+    pub fn fallback(pose: BasePose) -> Self {
+        Candidate {
+            fallback: true,
+            ..Candidate::at(pose)
+        }
     }
 }
 
@@ -105,8 +120,13 @@ fn first_search(
     let last_resort = query.last_resort.map(|(pose, q)| Candidate {
         pose,
         start: Some(q.to_vec()),
+        fallback: true,
     });
     for candidate in candidates.into_iter().chain(last_resort) {
+        // Fallbacks come last: once one placement reaches, none is drawn.
+        if candidate.fallback && best.reaches() {
+            break;
+        }
         let target_mm = candidate.pose.to_base(&query.target_room_mm);
         let hopeless = target_mm.coords.norm() > bound_mm
             || query

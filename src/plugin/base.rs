@@ -45,6 +45,10 @@ pub struct ReachQuery<'a> {
     /// candidates, before the retry: a map's neighbour, where it was
     /// reached, moved as the point moved (`PreparedBase::moved`).
     pub last_resort: Option<(BasePose, &'a [f64])>,
+    /// Whether a moving base also tries, last, the placements where the
+    /// hand at rest would be at the target (a reach does; a map's point,
+    /// reached from its neighbours, does not).
+    pub from_rest: bool,
 }
 
 /// A second try where the task's solver reaches from no placement (used
@@ -126,11 +130,25 @@ impl<'a> ReachQuery<'a> {
 
 /// How many placements one reach may try: `solved` with each of the
 /// solver's starts, `seeded` with one descent from a posture known to
-/// reach near the target.
+/// reach near the target, and `from_rest`, with each of the solver's
+/// starts, where none of those reached and the query asks for them
+/// (`ReachQuery::from_rest`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Tries {
     pub solved: u64,
     pub seeded: u64,
+    pub from_rest: u64,
+}
+
+impl Tries {
+    /// The tries of a search that does not ask for the placements from
+    /// rest (a map's point).
+    pub fn without_rest(self) -> Tries {
+        Tries {
+            from_rest: 0,
+            ..self
+        }
+    }
 }
 
 /// A base configured from its option block: it decides where the person
@@ -158,6 +176,7 @@ pub trait Base: Send + Sync {
         Tries {
             solved: 1,
             seeded: 0,
+            from_rest: 0,
         }
     }
     /// What a base that moves keeps off the floor's obstacles (none for a

@@ -163,15 +163,15 @@ impl Reaching {
     /// placements: each runs the solver, and where obstacles block, the
     /// retry runs `blocked_solver` from some of them.
     pub fn starts_per_point(&self, placements: Tries) -> u64 {
-        let tried = placements.solved.saturating_add(placements.seeded);
+        let solved = placements.solved.saturating_add(placements.from_rest);
+        let tried = solved.saturating_add(placements.seeded);
         let retries = if self.common.collisions {
             u64::from(self.common.blocked_retries).min(tried)
         } else {
             0
         };
         let work = |solver: &dyn Solver| solver.starts().saturating_mul(solver.work_per_start());
-        placements
-            .solved
+        solved
             .saturating_mul(work(self.solver.as_ref()))
             .saturating_add(
                 placements
@@ -214,6 +214,7 @@ impl Reaching {
             retry,
             proofs: None,
             last_resort: None,
+            from_rest: true,
         }
     }
 

@@ -90,7 +90,7 @@ impl Task for GazeMapTask {
     }
 
     fn starts_per_point(&self, placements: Tries) -> u64 {
-        self.reaching.starts_per_point(placements)
+        self.reaching.starts_per_point(placements.without_rest())
     }
 
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence {

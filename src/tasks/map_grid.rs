@@ -204,6 +204,7 @@ impl<'a> GridRun<'a> {
         let seed = mix_seed(reaching.common.seed, "map", &target_room_mm);
         ReachQuery {
             last_resort: neighbour.and_then(|n| self.carried(n, &target_room_mm)),
+            from_rest: false,
             ..reaching
                 .query(
                     target_room_mm,
