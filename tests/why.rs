@@ -243,3 +243,55 @@ reach on_table by p
         other => panic!("placed: {other:?}"),
     }
 }
+
+/// A map that asks `why` gives each point it does not reach the cause a
+/// reach would: the planar arm's plane of points (lifted a hand's radius,
+/// 30 mm, to the arm's height) behind the board is blocked by it, and
+/// points farther than the arm's 600 mm are out of reach. A reached point
+/// has no cause, a map that does not ask gives none, and asking never
+/// loses a point (its searches can only find one reached after all).
+#[test]
+fn a_map_that_asks_why_names_the_board_and_the_points_out_of_reach() {
+    let map = |why: &str| {
+        scenario(true).replace(
+            "reach ahead, past_limit, far by pat\n",
+            &format!("map plane by pat {{ step 50mm {why} }}\n"),
+        )
+    };
+    let add_plane = |text: String| {
+        text.replace(
+            "  target far at",
+            "  surface plane at (1000, 700, 970) size (800, 600, 0)\n  target far at",
+        )
+    };
+    let asked = run(&add_plane(map("why true")));
+    let plain = run(&add_plane(map("")));
+    let cells = |report: &Report| match &report.tasks[0] {
+        reach::report::TaskReport::Map(m) => m.cells.clone(),
+        other => panic!("not a map: {other:?}"),
+    };
+    let (asked, plain) = (cells(&asked), cells(&plain));
+    let (mut blocked, mut far) = (0, 0);
+    for (a, p) in asked.iter().zip(&plain) {
+        assert!(a.reachable || !p.reachable, "lost with why: {a:?}");
+        assert!(p.why.is_empty(), "{p:?}");
+        assert_eq!(a.why.is_empty(), a.reachable, "{a:?}");
+        let [x, y, _] = a.point_mm;
+        let from_shoulder = ((x - 1000.0).powi(2) + (y - 1000.0).powi(2)).sqrt();
+        if from_shoulder > 620.0 {
+            assert!(
+                matches!(a.why.as_slice(), [Why::OutOfReach { closest_mm }] if *closest_mm > 0.0),
+                "{a:?}"
+            );
+            far += 1;
+        } else if x > 1270.0 && from_shoulder < 580.0 && (800.0..1200.0).contains(&y) {
+            let board = Why::Obstacles {
+                names: vec!["board".into()],
+                together: false,
+            };
+            assert_eq!(a.why, [board], "{a:?}");
+            blocked += 1;
+        }
+    }
+    assert!(blocked > 10 && far > 10, "{blocked} blocked, {far} far");
+}

@@ -37,19 +37,36 @@ fn stem(of: &str, surface: &str, who: &str) -> String {
 }
 
 /// One line per point: where it is, whether it is reachable, the distance
-/// left, the comfort, and where the base stood.
+/// left, the comfort, and where the base stood; where the map found why
+/// points were not reached (`why true`), why, in a last column.
 pub fn csv(m: &MapReport) -> String {
-    let mut out = String::from("column,row,x_mm,y_mm,z_mm,reachable,distance_mm,comfort,base_x_mm,base_y_mm,base_heading_deg\n");
+    let with_why = m.cells.iter().any(|c| !c.why.is_empty());
+    let mut out = String::from("column,row,x_mm,y_mm,z_mm,reachable,distance_mm,comfort,base_x_mm,base_y_mm,base_heading_deg");
+    out += if with_why { ",why\n" } else { "\n" };
     for c in &m.cells {
         let [x, y, z] = c.point_mm;
         let [bx, by, bh] = c.base_mm_deg;
-        let _ = writeln!(
+        let _ = write!(
             out,
             "{},{},{x},{y},{z},{},{},{},{bx},{by},{bh}",
             c.column, c.row, c.reachable, c.distance_mm, c.comfort
         );
+        if with_why {
+            let _ = write!(out, ",{}", csv_field(&c.why_words()));
+        }
+        out.push('\n');
     }
     out
+}
+
+/// `text` as one CSV field: quoted, its quotes doubled, where it holds a
+/// comma, a quote or a line break.
+fn csv_field(text: &str) -> String {
+    if text.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_string()
+    }
 }
 
 /// One line per point of a population's map: where it is, the share of
@@ -113,7 +130,8 @@ impl Picture {
                 words: match (c.reachable, m.of) {
                     (true, _) => m.words()[1].to_string(),
                     (false, "gaze") => "not seen".to_string(),
-                    (false, _) => format!("{} mm short", c.distance_mm),
+                    (false, _) if c.why.is_empty() => format!("{} mm short", c.distance_mm),
+                    (false, _) => format!("{} mm short: {}", c.distance_mm, c.why_words()),
                 },
             })
             .collect();

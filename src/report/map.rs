@@ -7,7 +7,7 @@ use nalgebra::Vector3;
 use serde::Serialize;
 
 use super::parts::point;
-use super::{deg, fixed, mm, Answer, Figure, ReportKind};
+use super::{deg, fixed, mm, Answer, Figure, ReportKind, Why};
 use crate::kinematics::Chain;
 use crate::scene::{Grid, GridCell, Person, Placement, Surface};
 
@@ -89,6 +89,10 @@ pub struct MapCell {
     pub comfort: f64,
     /// Where the base stood: x, y and heading in degrees.
     pub base_mm_deg: [f64; 3],
+    /// Why a point not reached was not, found as a reach's is (only
+    /// where the map asks, `why true`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub why: Vec<Why>,
 }
 
 impl MapCell {
@@ -107,7 +111,15 @@ impl MapCell {
                 mm(pose.position_mm.y),
                 deg(pose.heading_rad),
             ],
+            why: Vec::new(),
         }
+    }
+
+    /// Why it was not reached, each cause in a few words (empty where the
+    /// map did not ask, or it was reached).
+    pub fn why_words(&self) -> String {
+        let words: Vec<String> = self.why.iter().map(Why::short).collect();
+        words.join(", ")
     }
 }
 
@@ -252,5 +264,36 @@ impl ReportKind for MapReport {
             self.rows,
             self.step_mm
         );
+        let causes = self.causes();
+        if !causes.is_empty() {
+            let listed: Vec<String> = causes
+                .iter()
+                .map(|(why, n)| format!("{why} ({})", points(*n)))
+                .collect();
+            let _ = writeln!(out, "  not reached: {}", listed.join("; "));
+        }
+    }
+}
+
+impl MapReport {
+    /// How many points not reached each cause (in a few words) stopped,
+    /// the most first, as found where the map asked why.
+    pub fn causes(&self) -> Vec<(String, usize)> {
+        let mut counted: std::collections::BTreeMap<String, usize> = Default::default();
+        for cell in self.cells.iter().filter(|c| !c.why.is_empty()) {
+            *counted.entry(cell.why_words()).or_default() += 1;
+        }
+        let mut causes: Vec<(String, usize)> = counted.into_iter().collect();
+        causes.sort_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
+        causes
+    }
+}
+
+/// `1 point`, `12 points`.
+fn points(n: usize) -> String {
+    if n == 1 {
+        "1 point".into()
+    } else {
+        format!("{n} points")
     }
 }

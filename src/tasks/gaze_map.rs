@@ -126,6 +126,7 @@ impl Task for GazeMapTask {
             obstacles: obstacles.body.as_ref(),
             of: "gaze",
             lift_mm: nalgebra::Vector3::zeros(),
+            why: false,
         };
         run_map(input, &asked, &judge)
     }

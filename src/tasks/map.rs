@@ -21,8 +21,9 @@ use crate::report::TaskReport;
 /// The plugin `map`.
 pub struct Map;
 
-/// Its settings: the common ones and the grid's.
-struct MapSettings(Common, GridSettings);
+/// Its settings: the common ones, the grid's, and whether to find why
+/// each point not reached was not.
+struct MapSettings(Common, GridSettings, bool);
 
 impl Settings for MapSettings {
     fn visit(p: &mut Params<'_>) -> Self {
@@ -36,7 +37,15 @@ impl Settings for MapSettings {
                 retry: MAP_RETRY,
             },
         );
-        MapSettings(common, GridSettings::visit(p))
+        let grid = GridSettings::visit(p);
+        let why = p
+            .boolean(
+                "why",
+                false,
+                "find why each point not reached was not, as a reach's why is found (searched again without what may have stopped it): each such point costs about as much as a reach that fails",
+            )
+            .get();
+        MapSettings(common, grid, why)
     }
 }
 
@@ -64,10 +73,11 @@ impl TaskPlugin for Map {
         options: &Options,
         plugins: &Registry,
     ) -> Result<Box<dyn Task>, SettingsError> {
-        let MapSettings(common, grid) = MapSettings::from_options(options)?;
+        let MapSettings(common, grid, why) = MapSettings::from_options(options)?;
         Ok(Box::new(MapTask {
             reaching: Reaching::new(common, plugins)?,
             grid,
+            why,
         }))
     }
 }
@@ -76,6 +86,7 @@ impl TaskPlugin for Map {
 struct MapTask {
     reaching: Reaching,
     grid: GridSettings,
+    why: bool,
 }
 
 impl Task for MapTask {
@@ -119,6 +130,7 @@ impl Task for MapTask {
             obstacles: obstacles.as_ref(),
             of: "reach",
             lift_mm: hand_lift(&input.subject, &chain),
+            why: self.why,
         };
         run_map(input, &asked, &judge)
     }

@@ -17,6 +17,7 @@ use rayon::prelude::*;
 
 use super::common::{mix_seed, Reaching};
 use super::grid_settings::GridSettings;
+use super::why::{Failed, Found};
 use crate::bases::retry;
 use crate::collision::{KeptProofs, Obstacles};
 use crate::kinematics::Chain;
@@ -44,6 +45,9 @@ pub(super) struct MapAsked<'a> {
     /// touches a point with its side, a hand's radius out of it; the eyes
     /// look at the point itself).
     pub lift_mm: Vector3<f64>,
+    /// Whether to find why each point not reached was not, as a reach's
+    /// why is found (`why.rs`).
+    pub why: bool,
 }
 
 /// A map of the task's surface: each point's placement found as for a
@@ -89,6 +93,8 @@ struct Solved {
     /// Where it was not: the blocked placements its search's retry, left
     /// for later, starts from.
     blocked: Vec<Blocked>,
+    /// Where it was not and the map asks why: the closest placement found.
+    closest: Option<Placement>,
 }
 
 /// What every point of one map is solved with.
@@ -139,6 +145,9 @@ fn map_report(
             solved[i] = s;
         }
         run.grow(&grid, &mut solved, gained, Steer::Always);
+    }
+    if asked.why {
+        run.find_why(&grid, &mut solved);
     }
     let retried = solved
         .iter()
@@ -244,13 +253,61 @@ impl<'a> GridRun<'a> {
 
     fn solved(&self, cell: &GridCell, placement: Placement, point_mm: Point3<f64>) -> Solved {
         let counts = (self.judge)(&placement, cell.point_mm);
-        Solved {
-            cell: MapCell::new(cell, &placement, self.asked.chain, counts),
-            reached: counts.then_some(Reached {
+        let cell = MapCell::new(cell, &placement, self.asked.chain, counts);
+        let (reached, closest) = if counts {
+            let reached = Reached {
                 placement,
                 point_mm,
-            }),
+            };
+            (Some(reached), None)
+        } else {
+            (None, self.asked.why.then_some(placement))
+        };
+        Solved {
+            cell,
+            reached,
             blocked: Vec::new(),
+            closest,
+        }
+    }
+
+    /// Why each point not reached was not, found as a reach's is
+    /// (searched again without what may have stopped it); a point such a
+    /// search finds a posture for after all is reached with it.
+    fn find_why(&self, grid: &Grid, solved: &mut [Solved]) {
+        let unreached: Vec<usize> = (0..solved.len())
+            .filter(|&i| solved[i].reached.is_none())
+            .collect();
+        self.input.progress.add_work(unreached.len() as u64);
+        let found: Vec<(usize, Found)> = unreached
+            .par_iter()
+            .with_max_len(1)
+            .filter_map(|&i| {
+                let closest = solved[i].closest.as_ref()?;
+                let query = self.query(&grid.cells[i], None);
+                let failed = Failed {
+                    reaching: self.asked.reaching,
+                    input: self.input,
+                    chain: self.asked.chain,
+                    target_mm: query.target_room_mm,
+                    seed: query.seed,
+                    obstacles: self.asked.obstacles,
+                    placement: closest,
+                };
+                let found = failed.why();
+                self.input.progress.advance(1);
+                Some((i, found))
+            })
+            .collect();
+        for (i, found) in found {
+            match found {
+                Found::Why(why) => solved[i].cell.why = why,
+                Found::Reached(placement) => {
+                    let cell = &grid.cells[i];
+                    let point_mm = cell.point_mm + self.asked.lift_mm;
+                    solved[i] = self.solved(cell, placement, point_mm);
+                }
+            }
         }
     }
 
