@@ -5,6 +5,8 @@
 //! rollator puts each person's hip where their legs put it; an arm does not
 //! pass through the chest, nor a hand into a slot narrower than itself.
 
+use std::f64::consts::FRAC_1_SQRT_2;
+
 use nalgebra::Point3;
 use reach::collision::{Obstacles, PlacedObstacles};
 use reach::plugin::{BasePose, Registry};
@@ -111,6 +113,50 @@ fn the_placement_search_finds_the_low_forward_reach_unaided() {
     for (i, mannequin) in SEATED.iter().enumerate() {
         let high = reach_of(&report, "at_380", &format!("p{i}"));
         assert!(high.ok, "{mannequin} does not reach 380 mm: {high:?}");
+    }
+}
+
+/// `approach forward` faces the wall and `approach side` runs parallel to
+/// it, each to within 45 degrees, wherever the search finds the best
+/// placement (a chair parallel to the wall reaching a point a little
+/// ahead of it is a side approach, however small the angle from the hip);
+/// every seated person reaches ADA 308.2.1's and 308.3.1's 380 and 1,220
+/// mm both ways.
+#[test]
+fn a_forward_approach_faces_the_wall_and_a_side_approach_runs_along_it() {
+    let mut text = String::from(
+        "units mm deg\nuse std::people\nroom r {\n  size 3000 x 2000 x 2500\n  \
+         target low at (3000, 1000, 380)\n  target high at (3000, 1000, 1220)\n}\n",
+    );
+    for (i, mannequin) in SEATED.iter().enumerate() {
+        for approach in ["forward", "side"] {
+            text += &format!(
+                "person {approach}{i} {{ mannequin {mannequin} base manual_wheelchair \
+                 {{ approach {approach} }} }}\n"
+            );
+        }
+    }
+    let people: Vec<String> = (0..SEATED.len())
+        .flat_map(|i| [format!("forward{i}"), format!("side{i}")])
+        .collect();
+    text += &format!("reach low, high by {}\n", people.join(", "));
+    let (_, report) = run(&text);
+    for person in &people {
+        for target in ["low", "high"] {
+            let r = reach_of(&report, target, person);
+            assert!(r.ok, "{person} does not reach {target}: {r:?}");
+            // The wall's inward normal is -x: facing it is heading 0.
+            let facing = r.base.heading_deg.to_radians().cos();
+            if person.starts_with("forward") {
+                assert!(facing > FRAC_1_SQRT_2, "{person} {target}: {:?}", r.base);
+            } else {
+                assert!(
+                    facing.abs() < FRAC_1_SQRT_2,
+                    "{person} {target}: {:?}",
+                    r.base
+                );
+            }
+        }
     }
 }
 

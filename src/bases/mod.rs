@@ -5,6 +5,7 @@
 //! (`capability.rs`) within what its options allow (`placing.rs`).
 
 mod capability;
+mod face;
 mod fixed;
 mod placement;
 mod placing;

@@ -25,7 +25,8 @@ use rand_chacha::rand_core::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
 use super::capability::Capability;
-use super::placing::{Approach, Placing};
+use super::face::face_normal;
+use super::placing::{Approach, Placing, SIDE_SLACK_MM};
 use super::search::{search, search_retrying_later, Candidate};
 use crate::floor::{Doorway, FloorObstacles, Footprint, Misfit, Region, Routes, Shut};
 use crate::geometry::Solid;
@@ -243,6 +244,7 @@ impl Mobile {
                 let p = chain.effector(&chain.neutral());
                 Vector2::new(p.x, p.y)
             },
+            half_width_mm: self.footprint.half_width_mm(),
         }
     }
 }
@@ -314,6 +316,9 @@ pub struct PreparedMobile<'a> {
     /// Where the hand is, relative to the hip, in the neutral posture:
     /// in front of the reaching shoulder.
     at_rest: Vector2<f64>,
+    /// The lines of the footprint's sides, either side of the hip point
+    /// (what the approach measures).
+    half_width_mm: f64,
 }
 
 /// Two sampled placements at one heading closer than this are one.
@@ -377,14 +382,21 @@ impl PreparedMobile<'_> {
             }
         }
         let approach = self.mobile.placing.approach;
+        let face = (approach != Approach::Any)
+            .then(|| face_normal(self.room, target))
+            .flatten();
         let mut scanned: Vec<BasePose> = Vec::new();
         let mut found: Vec<Candidate> = Vec::new();
         for sample in near {
-            if !approach.admits(&sample.effector_mm) || !capability.clear(sample) {
+            let admitted = approach.admits(&sample.effector_mm, self.half_width_mm);
+            if !admitted || !capability.clear(sample) {
                 continue;
             }
             let hand = sample.effector_mm.xy();
             for (heading, region) in self.regions() {
+                if !approach.faces(*heading, face) {
+                    continue;
+                }
                 let offset = Rotation2::new(*heading) * hand;
                 let (x, y) = (target.x - offset.x, target.y - offset.y);
                 let pose = BasePose {
@@ -421,9 +433,11 @@ impl PreparedMobile<'_> {
     /// would rather have the target (its workspace centre, turned into the
     /// approach), the nearest first; those the approach admits.
     fn nearest(&self, target: &Point3<f64>, hint: Vector2<f64>) -> Vec<BasePose> {
-        let hint = toward(hint, self.mobile.placing.approach);
+        let hint = toward(hint, self.mobile.placing.approach, self.half_width_mm);
+        let face = face_normal(self.room, target);
         let mut scored: Vec<(f64, BasePose)> = self
             .regions()
+            .filter(|(heading, _)| self.mobile.placing.approach.faces(*heading, face))
             .filter_map(|(heading, region)| {
                 let offset = Rotation2::new(*heading) * hint;
                 let preferred = Point::new(target.x - offset.x, target.y - offset.y);
@@ -432,7 +446,11 @@ impl PreparedMobile<'_> {
                     position_mm: Point3::new(p.x(), p.y(), self.mobile.hip_height_mm),
                     heading_rad: *heading,
                 };
-                let admitted = self.mobile.placing.approach.admits_pose(&pose, target);
+                let admitted =
+                    self.mobile
+                        .placing
+                        .approach
+                        .admits_pose(&pose, target, self.half_width_mm);
                 admitted.then(|| ((p.x() - preferred.x()).hypot(p.y() - preferred.y()), pose))
             })
             .collect();
@@ -446,18 +464,27 @@ fn same_place(a: &BasePose, b: &BasePose) -> bool {
     a.heading_rad == b.heading_rad && (a.position_mm - b.position_mm).xy().norm() < APART_MM
 }
 
-/// The workspace centre `hint` turned, if it must be, into the approach:
-/// straight ahead for a forward approach, straight to its side for a side
-/// one.
-fn toward(hint: Vector2<f64>, approach: Approach) -> Vector2<f64> {
-    let length = hint.norm();
-    if approach.admits(&hint.push(0.0)) {
+/// Where the arm would rather have the target, `hint`, moved if it must
+/// be into the approach, keeping what it can: for a forward approach, its
+/// sideways offset kept within the base's sides (`half_width_mm`) and
+/// brought at least as far ahead as aside (a hand at rest beside the hip
+/// puts the shoulder in line with the target); for a side one, out past
+/// the base's side, and not behind.
+fn toward(hint: Vector2<f64>, approach: Approach, half_width_mm: f64) -> Vector2<f64> {
+    if approach.admits(&hint.push(0.0), half_width_mm) {
         return hint;
     }
+    let inside = (half_width_mm - 2.0 * SIDE_SLACK_MM).max(0.0);
     match approach {
-        Approach::Side if hint.y > 0.0 => Vector2::new(0.0, length),
-        Approach::Side => Vector2::new(0.0, -length),
-        _ => Vector2::new(length, 0.0),
+        Approach::Side => {
+            let sign = if hint.y > 0.0 { 1.0 } else { -1.0 };
+            let y = sign * hint.y.abs().max(half_width_mm);
+            Vector2::new(hint.x.max(-y.abs()), y)
+        }
+        _ => {
+            let y = hint.y.clamp(-inside, inside);
+            Vector2::new(hint.x.max(y.abs()).max(1.0), y)
+        }
     }
 }
 
@@ -499,10 +526,10 @@ impl PreparedBase for PreparedMobile<'_> {
     }
 
     fn admits(&self, pose: &BasePose, target_room_mm: &Point3<f64>) -> bool {
-        self.mobile
-            .placing
-            .approach
-            .admits_pose(pose, target_room_mm)
+        let approach = self.mobile.placing.approach;
+        approach == Approach::Any
+            || (approach.admits_pose(pose, target_room_mm, self.half_width_mm)
+                && approach.faces(pose.heading_rad, face_normal(self.room, target_room_mm)))
     }
 
     fn moved(&self, pose: &BasePose, by_mm: Vector2<f64>) -> Option<BasePose> {

@@ -5,7 +5,7 @@
 
 use std::f64::consts::{FRAC_PI_4, PI};
 
-use nalgebra::{Point3, Vector3};
+use nalgebra::{Point3, Vector2, Vector3};
 
 use crate::floor::Zone;
 use crate::plugin::{BasePose, Params, SettingsError};
@@ -15,12 +15,21 @@ use crate::plugin::{BasePose, Params, SettingsError};
 pub enum Approach {
     /// Anywhere.
     Any,
-    /// In front: within 45 degrees of the direction faced (ADA 308.2).
+    /// In front: between the lines of the base's sides, and within 45
+    /// degrees of the direction faced (ADA 308.2: the person faces the
+    /// element).
     Forward,
-    /// Beside: between 45 and 135 degrees from it, either side (ADA 308.3:
-    /// the chair parallel to the element).
+    /// Beside: beyond the line of one of the base's sides, and not behind
+    /// (within 135 degrees of the direction faced; ADA 308.3: the chair
+    /// parallel to the element, which is beside it). A chair parallel to a
+    /// wall reaching a point on it a little ahead is a side approach,
+    /// however small the angle from the hip.
     Side,
 }
+
+/// A target this close inside the line of a base's side is beside it: a
+/// chair against a wall stands up to two floor cells (10 mm) off it.
+pub const SIDE_SLACK_MM: f64 = 10.0;
 
 impl Approach {
     /// `any`, `forward` or `side`, as an option's value says it.
@@ -37,20 +46,44 @@ impl Approach {
     }
 
     /// Whether a target at `in_base_mm` (the base frame: x ahead, y to the
-    /// left) is where this approach puts it.
-    pub fn admits(self, in_base_mm: &Vector3<f64>) -> bool {
+    /// left) is where this approach puts it, for a base whose sides are
+    /// `half_width_mm` either side of the hip point.
+    pub fn admits(self, in_base_mm: &Vector3<f64>, half_width_mm: f64) -> bool {
         let off_ahead = in_base_mm.y.atan2(in_base_mm.x).abs();
+        let beside = in_base_mm.y.abs() >= half_width_mm - SIDE_SLACK_MM;
         match self {
             Approach::Any => true,
-            Approach::Forward => off_ahead <= FRAC_PI_4 + 1e-9,
-            Approach::Side => off_ahead > FRAC_PI_4 && off_ahead <= 3.0 * FRAC_PI_4 + 1e-9,
+            Approach::Forward => !beside && off_ahead <= FRAC_PI_4 + 1e-9,
+            Approach::Side => beside && off_ahead <= 3.0 * FRAC_PI_4 + 1e-9,
+        }
+    }
+
+    /// Whether a base facing `heading_rad` approaches a target on a
+    /// vertical face whose outward normal is `face` (none: the target is on
+    /// no face, and any heading will do) as this approach asks: facing the
+    /// face to within 45 degrees for a forward approach, parallel to it to
+    /// within 45 degrees for a side one (a chair at 45 degrees to the face
+    /// is at neither).
+    pub fn faces(self, heading_rad: f64, face: Option<Vector2<f64>>) -> bool {
+        let Some(normal) = face else { return true };
+        let ahead = Vector2::new(heading_rad.cos(), heading_rad.sin());
+        let facing = -ahead.dot(&normal);
+        match self {
+            Approach::Any => true,
+            Approach::Forward => facing > FRAC_PI_4.cos() + 1e-9,
+            Approach::Side => facing.abs() < FRAC_PI_4.sin() - 1e-9,
         }
     }
 
     /// Whether the target `target_room_mm` is where this approach puts it
-    /// for a base at `pose`.
-    pub fn admits_pose(self, pose: &BasePose, target_room_mm: &Point3<f64>) -> bool {
-        self.admits(&pose.to_base(target_room_mm).coords)
+    /// for a base at `pose` (its sides `half_width_mm` from the hip point).
+    pub fn admits_pose(
+        self,
+        pose: &BasePose,
+        target_room_mm: &Point3<f64>,
+        half_width_mm: f64,
+    ) -> bool {
+        self.admits(&pose.to_base(target_room_mm).coords, half_width_mm)
     }
 }
 
@@ -290,12 +323,21 @@ mod tests {
 
     #[test]
     fn a_forward_approach_has_the_target_ahead_a_side_approach_beside() {
-        let ahead = Vector3::new(500.0, -100.0, 0.0);
-        let beside = Vector3::new(100.0, -500.0, 0.0);
-        let behind = Vector3::new(-500.0, -100.0, 0.0);
-        assert!(Approach::Forward.admits(&ahead) && !Approach::Side.admits(&ahead));
-        assert!(Approach::Side.admits(&beside) && !Approach::Forward.admits(&beside));
-        assert!(!Approach::Side.admits(&behind) && !Approach::Forward.admits(&behind));
-        assert!(Approach::Any.admits(&behind));
+        // A chair 660 mm wide.
+        let half = 330.0;
+        let admits = |a: Approach, x: f64, y: f64| a.admits(&Vector3::new(x, y, 0.0), half);
+        let (ahead, beside, behind) = ((500.0, -100.0), (100.0, -500.0), (-500.0, -100.0));
+        assert!(admits(Approach::Forward, ahead.0, ahead.1));
+        assert!(!admits(Approach::Side, ahead.0, ahead.1));
+        assert!(admits(Approach::Side, beside.0, beside.1));
+        assert!(!admits(Approach::Forward, beside.0, beside.1));
+        assert!(!admits(Approach::Side, behind.0, behind.1));
+        assert!(!admits(Approach::Forward, behind.0, behind.1));
+        assert!(admits(Approach::Any, behind.0, behind.1));
+        // The chair parallel to a wall on its right, its side against it,
+        // a point on the wall 400 mm ahead: 39.5 deg off the heading, but
+        // beside the chair, a side approach.
+        assert!(admits(Approach::Side, 400.0, -330.0));
+        assert!(!admits(Approach::Forward, 400.0, -330.0));
     }
 }

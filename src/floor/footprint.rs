@@ -35,6 +35,16 @@ pub struct Footprint {
 }
 
 impl Footprint {
+    /// How far its widest part reaches to either side of the hip point
+    /// (the lines of its sides, for a forward or side approach).
+    pub fn half_width_mm(&self) -> f64 {
+        self.parts
+            .iter()
+            .flat_map(|p| p.outline_mm.iter())
+            .map(|v| v.y.abs())
+            .fold(0.0, f64::max)
+    }
+
     /// The heights each part stands at, from the floor up.
     pub fn bands_mm(&self) -> Vec<[f64; 2]> {
         self.parts.iter().map(|p| p.z_mm).collect()
