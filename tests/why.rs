@@ -295,3 +295,39 @@ fn a_map_that_asks_why_names_the_board_and_the_points_out_of_reach() {
     }
     assert!(blocked > 10 && far > 10, "{blocked} blocked, {far} far");
 }
+
+/// What keeps the base away is looked for on the floor, not only among
+/// the obstacles nearest the target: a knob on a wall cabinet's door,
+/// above a 600 mm counter and beside an open shelf unit whose boards and
+/// sides are nearer the knob than the counter's body is. A small woman
+/// in her chair does not reach it; without the counter she does, so the
+/// counter is named (the wall cabinet and the shelves, nearest the knob,
+/// were named instead, "together", from a new user's try).
+#[test]
+fn the_counter_that_keeps_the_chair_back_is_named_among_nearer_shelves() {
+    let text = "units mm deg
+use std::people
+room kitchen {
+  size 3000 x 3000 x 2500
+  box counter      at (0, 0, 0)    size (600, 1600, 900)
+  box wall_cabinet at (0, 0, 1400) size (350, 1600, 700)
+  box shelf_4 at (0, 2000, 1500) size (300, 800, 20)
+  box side_a  at (0, 1980, 0)    size (300, 20, 2000)
+  target knob at (380, 1450, 1650)
+}
+person pat { mannequin woman_5th_seated base manual_wheelchair }
+reach knob by pat
+";
+    let knob = run(text);
+    let knob = reach_of(&knob, "knob", "pat");
+    assert!(
+        matches!(&knob.why[..], [Why::KeptAway { names, together: false }]
+            if names.contains(&"counter".to_string())),
+        "{knob:?}"
+    );
+    let without = text.replace(
+        "  box counter      at (0, 0, 0)    size (600, 1600, 900)\n",
+        "",
+    );
+    assert!(reach_of(&run(&without), "knob", "pat").ok);
+}

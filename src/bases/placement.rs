@@ -442,22 +442,67 @@ impl PreparedMobile<'_> {
                 let offset = Rotation2::new(*heading) * hint;
                 let preferred = Point::new(target.x - offset.x, target.y - offset.y);
                 let p = region.nearest(preferred)?;
-                let pose = BasePose {
-                    position_mm: Point3::new(p.x(), p.y(), self.mobile.hip_height_mm),
-                    heading_rad: *heading,
+                let pose = self.pose_at(p.x(), p.y(), *heading);
+                let pose = if self.admitted(&pose, target) {
+                    pose
+                } else {
+                    self.along_approach(target, *heading, hint, region)?
                 };
-                let admitted =
-                    self.mobile
-                        .placing
-                        .approach
-                        .admits_pose(&pose, target, self.half_width_mm);
-                admitted.then(|| ((p.x() - preferred.x()).hypot(p.y() - preferred.y()), pose))
+                let p = pose.position_mm;
+                Some(((p.x - preferred.x()).hypot(p.y - preferred.y()), pose))
             })
             .collect();
         scored.sort_by(|a, b| a.0.total_cmp(&b.0));
         scored.into_iter().map(|(_, pose)| pose).collect()
     }
+
+    fn pose_at(&self, x: f64, y: f64, heading_rad: f64) -> BasePose {
+        BasePose {
+            position_mm: Point3::new(x, y, self.mobile.hip_height_mm),
+            heading_rad,
+        }
+    }
+
+    /// Whether the approach admits `target` from `pose` (its face left
+    /// to the caller).
+    fn admitted(&self, pose: &BasePose, target: &Point3<f64>) -> bool {
+        let approach = self.mobile.placing.approach;
+        approach.admits_pose(pose, target, self.half_width_mm)
+    }
+
+    /// Where the free point nearest the preferred one lies outside the
+    /// approach (round the end of an island, beside what a forward
+    /// approach should face), the nearest free point the approach admits
+    /// along its line: the hip moved back from the preferred point
+    /// straight away from the target (forward) or out to the side (side),
+    /// in steps of [`ALONG_STEP_MM`], as far as the arm and the footprint
+    /// could matter.
+    fn along_approach(
+        &self,
+        target: &Point3<f64>,
+        heading_rad: f64,
+        hint: Vector2<f64>,
+        region: &Region,
+    ) -> Option<BasePose> {
+        let turn = Rotation2::new(heading_rad);
+        let away = match self.mobile.placing.approach {
+            Approach::Side => Vector2::new(0.0, hint.y.signum()),
+            _ => Vector2::new(1.0, 0.0),
+        };
+        let farthest_mm =
+            self.chain.reach_bound_mm() + self.mobile.footprint.extent_mm() + ALONG_STEP_MM;
+        let steps = (farthest_mm / ALONG_STEP_MM).ceil() as usize;
+        (0..=steps).find_map(|k| {
+            let offset = turn * (hint + away * (k as f64 * ALONG_STEP_MM));
+            let (x, y) = (target.x - offset.x, target.y - offset.y);
+            let pose = self.pose_at(x, y, heading_rad);
+            (region.contains(x, y) && self.admitted(&pose, target)).then_some(pose)
+        })
+    }
 }
+
+/// The step along an approach's line in [`PreparedMobile::along_approach`].
+const ALONG_STEP_MM: f64 = 10.0;
 
 /// Whether two poses are one candidate: the same heading, close.
 fn same_place(a: &BasePose, b: &BasePose) -> bool {

@@ -139,7 +139,7 @@ impl Checker<'_> {
                 }
                 _ => return self.mismatch(spec, "an expression", opt.value_span),
             },
-            (_, other) => return self.mismatch(spec, describe(other), opt.value_span),
+            (_, other) => return self.mismatch(spec, &describe(other), opt.value_span),
         };
         self.in_range(spec, &value, opt.value_span).then_some(value)
     }
@@ -201,7 +201,19 @@ impl Checker<'_> {
     }
 }
 
-fn describe(v: &OptionValue) -> &'static str {
+/// What an option's value is, as a mismatch says it: a bare word is
+/// named, not called a number (`why yes`).
+fn describe(v: &OptionValue) -> String {
+    match v {
+        OptionValue::Expr(e) => match &e.kind {
+            ExprKind::Name(name) => format!("the word `{name}`"),
+            _ => "a number".into(),
+        },
+        other => describe_kind(other).into(),
+    }
+}
+
+fn describe_kind(v: &OptionValue) -> &'static str {
     match v {
         OptionValue::Expr(_) => "a number",
         OptionValue::Vec3(_) => "a point",

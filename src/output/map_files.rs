@@ -49,7 +49,11 @@ pub fn csv(m: &MapReport) -> String {
         let _ = write!(
             out,
             "{},{},{x},{y},{z},{},{},{},{bx},{by},{bh}",
-            c.column, c.row, c.reachable, c.distance_mm, c.comfort
+            c.column,
+            c.row,
+            c.reachable,
+            finite(c.distance_mm),
+            finite(c.comfort)
         );
         if with_why {
             let _ = write!(out, ",{}", csv_field(&c.why_words()));
@@ -57,6 +61,16 @@ pub fn csv(m: &MapReport) -> String {
         out.push('\n');
     }
     out
+}
+
+/// A figure for the CSV: empty where there is none (no place to
+/// approach the point from, so no posture).
+fn finite(value: f64) -> String {
+    if value.is_finite() {
+        value.to_string()
+    } else {
+        String::new()
+    }
 }
 
 /// `text` as one CSV field: quoted, its quotes doubled, where it holds a
@@ -130,6 +144,9 @@ impl Picture {
                 words: match (c.reachable, m.of) {
                     (true, _) => m.words()[1].to_string(),
                     (false, "gaze") => "not seen".to_string(),
+                    (false, _) if !c.distance_mm.is_finite() => {
+                        "no place to approach it from".into()
+                    }
                     (false, _) if c.why.is_empty() => format!("{} mm short", c.distance_mm),
                     (false, _) => format!("{} mm short: {}", c.distance_mm, c.why_words()),
                 },

@@ -76,8 +76,13 @@ fn table(answers: &[Answer]) -> String {
     let header = [
         "task", "target", "person", "result", "distance", "sweeps", "comfort",
     ];
+    // An answer with no posture (no place to approach the target from)
+    // has no distance, sweeps or comfort to show.
     let shown = |a: &Answer, name: &str, show: fn(f64) -> String| {
-        a.figure(name).map_or("-".to_string(), |f| show(f.value))
+        let placed = a.figure("distance").is_none_or(|f| f.value.is_finite());
+        a.figure(name)
+            .filter(|_| placed)
+            .map_or("-".to_string(), |f| show(f.value))
     };
     let rows: Vec<[String; 7]> = answers
         .iter()

@@ -281,7 +281,8 @@ impl MapReport {
     pub fn causes(&self) -> Vec<(String, usize)> {
         let mut counted: std::collections::BTreeMap<String, usize> = Default::default();
         for cell in self.cells.iter().filter(|c| !c.why.is_empty()) {
-            *counted.entry(cell.why_words()).or_default() += 1;
+            let words: Vec<String> = cell.why.iter().map(|w| w.sorted().short()).collect();
+            *counted.entry(words.join(", ")).or_default() += 1;
         }
         let mut causes: Vec<(String, usize)> = counted.into_iter().collect();
         causes.sort_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(&b.0)));

@@ -113,8 +113,15 @@ impl ReportKind for ReachReport {
             self.person.as_str(),
             self.solver.as_str(),
         ];
-        self.base.write_line(out, what);
-        self.posture.write_line(out);
+        if self.distance_mm.is_finite() {
+            self.base.write_line(out, what);
+            self.posture.write_line(out);
+        } else {
+            // No place to approach the target from: no base was placed and
+            // no posture looked for.
+            let [name, verb, person, _] = what;
+            let _ = writeln!(out, "\n{name} {verb} {person}: the base was not placed");
+        }
         if let (Some(part), Some(what)) = (&self.collision_part, &self.collision) {
             let _ = writeln!(out, "  {part} passes through {}", quoted(what));
         }

@@ -91,10 +91,30 @@ impl Why {
             }
             Why::KeptAway { names, together } => {
                 let names: Vec<String> = names.iter().map(|n| quoted(n)).collect();
-                let join = if *together { " and " } else { " or " };
-                format!("the base is kept away by {}", names.join(join))
+                let (join, and) = if *together {
+                    (" and ", " together")
+                } else {
+                    (" or ", "")
+                };
+                format!("the base is kept away by {}{and}", names.join(join))
             }
         }
+    }
+
+    /// The same cause with the names it gives in alphabetical order (the
+    /// order they were found in says which was met first; two answers
+    /// naming the same things are one cause).
+    pub fn sorted(&self) -> Why {
+        let mut why = self.clone();
+        match &mut why {
+            Why::Obstacles { names, .. }
+            | Why::Body { names }
+            | Why::KeptAway { names, .. }
+            | Why::CannotGetThere { names } => names.sort(),
+            Why::JointLimits { joints, .. } => joints.sort(),
+            Why::Zone | Why::NoApproach | Why::OutOfReach { .. } | Why::WhileLooking => {}
+        }
+        why
     }
 
     /// In a sentence, for the text report's details.

@@ -87,7 +87,7 @@ impl Failed<'_> {
                 let empty = self.without_furniture(&[]);
                 let roomy = self.solve_in(&empty, self.chain, None, &OwnBody::default());
                 if self.reaches(&roomy) {
-                    return Found::Why(vec![self.kept_away()]);
+                    return Found::Why(vec![self.kept_away(obstacles, &roomy)]);
                 }
                 closest_mm = roomy.solution.distance_mm;
             }
@@ -241,43 +241,83 @@ impl Failed<'_> {
     }
 
     /// The furniture keeps the base away (it reached with the room
-    /// emptied): which of the obstacles nearest the target, each removed
-    /// alone from the floor and the arm's way, lets the hand reach.
-    fn kept_away(&self) -> Why {
+    /// emptied, `roomy`): which obstacles, each removed alone from the
+    /// floor and the arm's way, let the hand reach. Tried are the
+    /// obstacles nearest the target that the footprint meets (what keeps
+    /// the base back), the two nearest of all, and those `roomy`'s posture
+    /// would pass through in the room as it is (what stands in the arm's
+    /// way from nearer); where none alone does, all of them, together.
+    fn kept_away(&self, obstacles: &Obstacles, roomy: &Placement) -> Why {
         let room = self.input.room;
-        let near = self.nearest_obstacles(TRIED_WITHOUT);
         let own = self.input.base.own_body();
-        let clearance_mm = self.reaching.common.clearance_mm;
-        let enough: Vec<String> = near
-            .iter()
-            .filter(|&&(_, i)| {
-                let without = self.without_furniture(&[i]);
-                let obstacles = Obstacles::new(&without, clearance_mm);
-                self.reaches(&self.solve_in(&without, self.chain, Some(&obstacles), own))
-            })
-            .map(|&(_, i)| room.obstacle_name(i).to_string())
-            .collect();
-        if enough.is_empty() {
-            let names = near
-                .iter()
-                .map(|&(_, i)| room.obstacle_name(i).to_string())
-                .collect();
-            return Why::KeptAway {
-                names,
-                together: true,
-            };
+        let mut tried: Vec<usize> = Vec::new();
+        let floor = self.nearest_floor_obstacles(TRIED_WITHOUT);
+        for (_, i) in floor.into_iter().chain(self.nearest_obstacles(NEAREST)) {
+            if !tried.contains(&i) {
+                tried.push(i);
+            }
         }
+        let placed = PlacedObstacles {
+            obstacles,
+            own,
+            base_pose: roomy.pose,
+        };
+        let hits = placed.posture_hits(self.chain, &roomy.solution.q, self.tolerance());
+        for blocker in hits.into_iter().take(TRIED_WITHOUT) {
+            if let Blocker::Obstacle(i) = blocker {
+                if !tried.contains(&i) {
+                    tried.push(i);
+                }
+            }
+        }
+        let clearance_mm = self.reaching.common.clearance_mm;
+        let alone_enough = |i: usize| {
+            let without = self.without_furniture(&[i]);
+            let obstacles = Obstacles::new(&without, clearance_mm);
+            self.reaches(&self.solve_in(&without, self.chain, Some(&obstacles), own))
+        };
+        let enough: Vec<usize> = tried.iter().copied().filter(|&i| alone_enough(i)).collect();
+        let together = enough.is_empty();
+        let names = if together { tried } else { enough };
         Why::KeptAway {
-            names: enough,
-            together: false,
+            names: names
+                .into_iter()
+                .map(|i| room.obstacle_name(i).to_string())
+                .collect(),
+            together,
         }
     }
 
     /// The `n` obstacles of the room nearest the target, nearest first,
     /// with their distances.
     fn nearest_obstacles(&self, n: usize) -> Vec<(f64, usize)> {
+        self.nearest_of(n, |_| true)
+    }
+
+    /// The `n` obstacles nearest the target that can keep the base away:
+    /// those that come within the heights of its footprint (a wall
+    /// cabinet over a counter keeps no chair back; the counter does).
+    /// Meshes all count.
+    fn nearest_floor_obstacles(&self, n: usize) -> Vec<(f64, usize)> {
+        let bands = self
+            .input
+            .base
+            .footprint()
+            .map(|f| f.bands_mm())
+            .unwrap_or_default();
+        let room = self.input.room;
+        self.nearest_of(n, |i| {
+            room.boxes
+                .get(i)
+                .is_none_or(|b| bands.iter().any(|&band| b.meets_band(band)))
+        })
+    }
+
+    /// The `n` obstacles `counts` takes, nearest the target first.
+    fn nearest_of(&self, n: usize, counts: impl Fn(usize) -> bool) -> Vec<(f64, usize)> {
         let room = self.input.room;
         let mut near: Vec<(f64, usize)> = (0..room.boxes.len() + room.meshes.len())
+            .filter(|&i| counts(i))
             .map(|i| (distance_to_obstacle(room, i, &self.target_mm), i))
             .collect();
         near.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
