@@ -17,7 +17,7 @@ use nalgebra::{Vector2, Vector3};
 use super::colours::{cell_colour, share_colour, MISSED, REACHED, SEEN, SHARES, SHORT};
 use super::view::RoomView;
 use crate::escape::markup;
-use crate::report::{MapReport, PopulationReport, ShareCell, ShareGrid};
+use crate::report::{quoted, MapReport, PopulationReport, ShareCell, ShareGrid};
 
 /// File names for a map: `map-SURFACE-PERSON.csv` and `.svg`
 /// (`gaze_map-...` for a gaze map).
@@ -147,7 +147,10 @@ impl Picture {
                     (false, _) if !c.distance_mm.is_finite() => {
                         "no place to approach it from".into()
                     }
-                    (false, _) if c.why.is_empty() => format!("{} mm short", c.distance_mm),
+                    (false, _) if c.why.is_empty() => match &c.through {
+                        Some(what) => format!("reached only through {}", quoted(what)),
+                        None => format!("{} mm short", c.distance_mm),
+                    },
                     (false, _) => format!("{} mm short: {}", c.distance_mm, c.why_words()),
                 },
             })

@@ -89,6 +89,11 @@ pub struct MapCell {
     pub comfort: f64,
     /// Where the base stood: x, y and heading in degrees.
     pub base_mm_deg: [f64; 3],
+    /// Where the closest posture found came within the tolerance but
+    /// passed through something, and the point is not reached: what
+    /// (`counter`, "the right thigh").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub through: Option<String>,
     /// Why a point not reached was not, found as a reach's is (only
     /// where the map asks, `why true`).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
@@ -111,6 +116,7 @@ impl MapCell {
                 mm(pose.position_mm.y),
                 deg(pose.heading_rad),
             ],
+            through: None,
             why: Vec::new(),
         }
     }
@@ -264,6 +270,14 @@ impl ReportKind for MapReport {
             self.rows,
             self.step_mm
         );
+        let through = self.cells.iter().filter(|c| c.through.is_some()).count();
+        if through > 0 {
+            let _ = writeln!(
+                out,
+                "  {} not reached came within the tolerance only through something (`through` in the JSON)",
+                points(through)
+            );
+        }
         let causes = self.causes();
         if !causes.is_empty() {
             let listed: Vec<String> = causes

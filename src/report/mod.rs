@@ -30,7 +30,7 @@ pub use map::{cells_apart, MapCell, MapReport};
 pub use not_placed::NotPlacedReport;
 pub use parts::{deg, fixed, mm, Asked, BaseReport, Names, Posture};
 pub use population::{wilson95, Excluded, PopulationReport, ShareCell, ShareGrid};
-pub use reach::ReachReport;
+pub use reach::{quoted, ReachReport};
 pub use reach_and_gaze::ReachAndGazeReport;
 pub use schema::schema_json;
 pub use standard::{ElementCheck, FloorShape, PersonAnswer, RuleCheck, StandardReport};

@@ -133,7 +133,7 @@ impl ReportKind for ReachReport {
 
 /// A room's obstacle in backquotes; the person's own parts and the room's
 /// sides ("the left thigh", "the floor") as they are.
-pub(super) fn quoted(what: &str) -> String {
+pub fn quoted(what: &str) -> String {
     if what.starts_with("the ") {
         what.to_string()
     } else {

@@ -24,7 +24,7 @@ use crate::kinematics::Chain;
 use crate::plugin::{
     BasePose, Placement, PreparedBase, ReachQuery, Retry, Search, Subject, TaskInput,
 };
-use crate::report::{MapCell, MapReport, TaskReport};
+use crate::report::{MapCell, MapReport, Names, TaskReport};
 use crate::scene::{Blocked, Grid, GridCell, Surface};
 
 /// Whether a point is reached (or seen), given where the base stood and
@@ -253,7 +253,10 @@ impl<'a> GridRun<'a> {
 
     fn solved(&self, cell: &GridCell, placement: Placement, point_mm: Point3<f64>) -> Solved {
         let counts = (self.judge)(&placement, cell.point_mm);
-        let cell = MapCell::new(cell, &placement, self.asked.chain, counts);
+        let mut cell = MapCell::new(cell, &placement, self.asked.chain, counts);
+        if !counts && self.asked.of == "reach" {
+            cell.through = self.through(&placement);
+        }
         let (reached, closest) = if counts {
             let reached = Reached {
                 placement,
@@ -269,6 +272,22 @@ impl<'a> GridRun<'a> {
             blocked: Vec::new(),
             closest,
         }
+    }
+
+    /// What the closest posture of a point not reached passes through,
+    /// where it came within the tolerance.
+    fn through(&self, placement: &Placement) -> Option<String> {
+        let solution = &placement.solution;
+        let collision = solution.collision.as_ref()?;
+        let tolerance_mm = self.asked.reaching.common.tolerance_mm;
+        (solution.distance_mm <= tolerance_mm).then(|| {
+            Names {
+                room: self.input.room,
+                own: self.input.base.own_body(),
+                chain: self.asked.chain,
+            }
+            .blocker(collision.blocker)
+        })
     }
 
     /// Why each point not reached was not, found as a reach's is
