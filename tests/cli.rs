@@ -223,6 +223,10 @@ fn out_dir_gets_a_csv_and_an_svg_per_map() {
     let svg = std::fs::read_to_string(dir.path().join("map-tall_cabinet-front-ann.svg")).unwrap();
     assert!(svg.starts_with("<svg") && svg.contains("tall_cabinet.front reached by ann"));
     assert!(svg.contains("reachable") && svg.contains("height z (mm)"));
+    // The lowest points are there only through the thighs: purple, said
+    // so in the legend and the tooltip, not "short".
+    assert!(svg.contains("there only through something"));
+    assert!(svg.contains("reached only through the right thigh"));
     let files = std::fs::read_dir(dir.path()).unwrap().count();
     assert_eq!(
         files,

@@ -14,6 +14,10 @@ pub const SHORT: [(&str, &str); 4] = [
     ("#df7d48", "150-225 mm"),
     (MISSED, "225 mm or more"),
 ];
+/// A point not reached whose closest posture came within the tolerance
+/// only through something (an obstacle, the person's own body): not
+/// short, blocked.
+pub const THROUGH: (&str, &str) = ("#8e6bbf", "there only through something");
 /// A population map's cell colours: the share of its people who reach
 /// (or see) a point, from everyone down to no one. A share counts in the
 /// first band whose least it reaches.

@@ -14,7 +14,7 @@ use std::fmt::Write;
 
 use nalgebra::{Vector2, Vector3};
 
-use super::colours::{cell_colour, share_colour, MISSED, REACHED, SEEN, SHARES, SHORT};
+use super::colours::{cell_colour, share_colour, MISSED, REACHED, SEEN, SHARES, SHORT, THROUGH};
 use super::view::RoomView;
 use crate::escape::markup;
 use crate::report::{quoted, MapReport, PopulationReport, ShareCell, ShareGrid};
@@ -140,7 +140,10 @@ impl Picture {
             .iter()
             .map(|c| PictureCell {
                 point_mm: c.point_mm,
-                fill: cell_colour(m.of, c.reachable, c.distance_mm),
+                fill: match c.through {
+                    Some(_) => THROUGH.0,
+                    None => cell_colour(m.of, c.reachable, c.distance_mm),
+                },
                 words: match (c.reachable, m.of) {
                     (true, _) => m.words()[1].to_string(),
                     (false, "gaze") => "not seen".to_string(),
@@ -162,8 +165,14 @@ impl Picture {
             ]
         } else {
             let short = SHORT.iter().map(|(c, t)| (*c, (*t).to_string()));
+            let through = m
+                .cells
+                .iter()
+                .any(|c| c.through.is_some())
+                .then(|| (THROUGH.0, THROUGH.1.to_string()));
             std::iter::once((REACHED, m.words()[1].to_string()))
                 .chain(short)
+                .chain(through)
                 .collect()
         };
         Picture {
