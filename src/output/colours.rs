@@ -17,7 +17,7 @@ pub const SHORT: [(&str, &str); 4] = [
 /// A point not reached whose closest posture came within the tolerance
 /// only through something (an obstacle, the person's own body): not
 /// short, blocked.
-pub const THROUGH: (&str, &str) = ("#8e6bbf", "there only through something");
+pub const THROUGH: (&str, &str) = ("#c463c9", "there only through something");
 /// A population map's cell colours: the share of its people who reach
 /// (or see) a point, from everyone down to no one. A share counts in the
 /// first band whose least it reaches.
@@ -38,12 +38,18 @@ pub fn share_colour(share: f64) -> &'static str {
         .map_or(MISSED, |(_, colour, _)| colour)
 }
 
+/// What the 3D view's cells carry for a point there only through
+/// something, in place of how far short it fell.
+pub const THROUGH_MARK: f64 = -1.0;
+
 /// A point's colour as the 3D view gives it: `of` is `reach`, `gaze` or
-/// `share`, `value` how far short (0 where reached or seen) or the share
-/// of a population.
+/// `share`, `value` how far short (0 where reached or seen,
+/// [`THROUGH_MARK`] where there only through something) or the share of
+/// a population.
 pub fn view_cell_colour(of: &str, value: f64) -> &'static str {
     match of {
         "share" => share_colour(value),
+        _ if value < 0.0 => THROUGH.0,
         _ => cell_colour(of, value <= 0.0, value),
     }
 }

@@ -16,14 +16,17 @@ const COLOURS = {
   floor: 0xeceff3,
   surface: 0x4a7bd0,
   door: 0x6b4fbb,
+  through: 0xc463c9,
 };
 
 // How far short a map cell fell, as a colour: green where reached, then
-// yellow to red as the shortfall grows to 300 mm and beyond.
+// yellow to red as the shortfall grows to 300 mm and beyond; purple (a
+// negative value) where there only through something.
 const RAMP_MM = 300;
 function shortColour(shortMm) {
   const c = new THREE.Color();
-  if (shortMm <= 0) return c.setHex(COLOURS.ok);
+  if (shortMm < 0) return c.setHex(COLOURS.through);
+  if (shortMm === 0) return c.setHex(COLOURS.ok);
   const t = Math.min(shortMm / RAMP_MM, 1);
   return c.setHex(0xe8d44d).lerp(new THREE.Color(COLOURS.not), t);
 }
@@ -276,6 +279,9 @@ function legend(data) {
     html += `<div class="row"><span class="swatch" style="background:#2b6cd6"></span>gaze map: seen</div>`;
     html += `<div class="row">reach map: reached &rarr; short by</div><div class="row"><span class="ramp"></span></div>` +
       `<div class="row" style="justify-content:space-between;width:140px"><span>0</span><span>${RAMP_MM / 2}</span><span>&ge;${RAMP_MM} mm short</span></div>`;
+  }
+  if (data.tasks.some((t) => t.cells && t.cells.of !== "share" && t.cells.points.some((p) => p[3] < 0))) {
+    html += `<div class="row"><span class="swatch" style="background:#c463c9"></span>reach map: there only through something</div>`;
   }
   if (data.tasks.some((t) => t.cells && t.cells.of === "share")) {
     html += `<div class="row">population map: share who reach</div>` +

@@ -12,7 +12,7 @@ use serde::Serialize;
 
 mod simplify;
 
-use super::colours::SHARES;
+use super::colours::{SHARES, THROUGH_MARK};
 use crate::figure;
 use crate::geometry::{Cuboid, Shape};
 use crate::kinematics::{Body, JointKind};
@@ -480,10 +480,12 @@ fn cells(m: &MapReport) -> CellsView {
             .iter()
             .map(|c| {
                 // A point not seen is not short by a distance: any
-                // positive value marks it.
+                // positive value marks it; one there only through
+                // something, -1.
                 let short = match (c.reachable, m.of) {
                     (true, _) => 0.0,
                     (false, "gaze") => 1.0,
+                    (false, _) if c.through.is_some() => THROUGH_MARK,
                     (false, _) => mm(c.distance_mm).max(0.1),
                 };
                 [c.point_mm[0], c.point_mm[1], c.point_mm[2], short]
