@@ -274,13 +274,13 @@ fn a_map_that_asks_why_names_the_board_and_the_points_out_of_reach() {
     let (mut blocked, mut far) = (0, 0);
     for (a, p) in asked.iter().zip(&plain) {
         assert!(a.reachable || !p.reachable, "lost with why: {a:?}");
-        assert!(p.why.is_empty(), "{p:?}");
-        assert_eq!(a.why.is_empty(), a.reachable, "{a:?}");
+        assert!(p.why().is_empty(), "{p:?}");
+        assert_eq!(a.why().is_empty(), a.reachable, "{a:?}");
         let [x, y, _] = a.point_mm;
         let from_shoulder = ((x - 1000.0).powi(2) + (y - 1000.0).powi(2)).sqrt();
         if from_shoulder > 620.0 {
             assert!(
-                matches!(a.why.as_slice(), [Why::OutOfReach { closest_mm }] if *closest_mm > 0.0),
+                matches!(a.why(), [Why::OutOfReach { closest_mm }] if *closest_mm > 0.0),
                 "{a:?}"
             );
             far += 1;
@@ -289,7 +289,7 @@ fn a_map_that_asks_why_names_the_board_and_the_points_out_of_reach() {
                 names: vec!["board".into()],
                 together: false,
             };
-            assert_eq!(a.why, [board], "{a:?}");
+            assert_eq!(a.why(), [board], "{a:?}");
             blocked += 1;
         }
     }

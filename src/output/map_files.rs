@@ -40,7 +40,7 @@ fn stem(of: &str, surface: &str, who: &str) -> String {
 /// left, the comfort, and where the base stood; where the map found why
 /// points were not reached (`why true`), why, in a last column.
 pub fn csv(m: &MapReport) -> String {
-    let with_why = m.cells.iter().any(|c| !c.why.is_empty());
+    let with_why = m.cells.iter().any(|c| !c.why().is_empty());
     let mut out = String::from("column,row,x_mm,y_mm,z_mm,reachable,distance_mm,comfort,base_x_mm,base_y_mm,base_heading_deg");
     out += if with_why { ",why\n" } else { "\n" };
     for c in &m.cells {
@@ -140,7 +140,7 @@ impl Picture {
             .iter()
             .map(|c| PictureCell {
                 point_mm: c.point_mm,
-                fill: match c.through {
+                fill: match c.through() {
                     Some(_) => THROUGH.0,
                     None => cell_colour(m.of, c.reachable, c.distance_mm),
                 },
@@ -150,7 +150,7 @@ impl Picture {
                     (false, _) if !c.distance_mm.is_finite() => {
                         "no place to approach it from".into()
                     }
-                    (false, _) if c.why.is_empty() => match &c.through {
+                    (false, _) if c.why().is_empty() => match c.through() {
                         Some(what) => format!("reached only through {}", quoted(what)),
                         None => format!("{} mm short", c.distance_mm),
                     },
@@ -168,7 +168,7 @@ impl Picture {
             let through = m
                 .cells
                 .iter()
-                .any(|c| c.through.is_some())
+                .any(|c| c.through().is_some())
                 .then(|| (THROUGH.0, THROUGH.1.to_string()));
             std::iter::once((REACHED, m.words()[1].to_string()))
                 .chain(short)

@@ -89,15 +89,23 @@ pub struct MapCell {
     pub comfort: f64,
     /// Where the base stood: x, y and heading in degrees.
     pub base_mm_deg: [f64; 3],
+    /// What more a point not reached says, where it says more (boxed: a
+    /// map of 100,000 points keeps its cells twice over while it ends).
+    #[serde(flatten)]
+    missed: Option<Box<Missed>>,
+}
+
+/// What more a map point not reached says.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, schemars::JsonSchema)]
+struct Missed {
     /// Where the closest posture found came within the tolerance but
-    /// passed through something, and the point is not reached: what
-    /// (`counter`, "the right thigh").
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub through: Option<String>,
-    /// Why a point not reached was not, found as a reach's is (only
-    /// where the map asks, `why true`).
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub why: Vec<Why>,
+    /// passed through something: what (`counter`, "the right thigh").
+    #[serde(skip_serializing_if = "Option::is_none")]
+    through: Option<String>,
+    /// Why it was not reached, found as a reach's is (only where the map
+    /// asks, `why true`).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    why: Vec<Why>,
 }
 
 impl MapCell {
@@ -116,15 +124,37 @@ impl MapCell {
                 mm(pose.position_mm.y),
                 deg(pose.heading_rad),
             ],
-            through: None,
-            why: Vec::new(),
+            missed: None,
+        }
+    }
+
+    /// What the closest posture of a point not reached passed through,
+    /// where it came within the tolerance.
+    pub fn through(&self) -> Option<&str> {
+        self.missed.as_ref()?.through.as_deref()
+    }
+
+    /// Why it was not reached (empty where the map did not ask).
+    pub fn why(&self) -> &[Why] {
+        self.missed.as_ref().map_or(&[], |m| &m.why)
+    }
+
+    pub fn set_through(&mut self, through: Option<String>) {
+        if through.is_some() || self.missed.is_some() {
+            self.missed.get_or_insert_with(Box::default).through = through;
+        }
+    }
+
+    pub fn set_why(&mut self, why: Vec<Why>) {
+        if !why.is_empty() || self.missed.is_some() {
+            self.missed.get_or_insert_with(Box::default).why = why;
         }
     }
 
     /// Why it was not reached, each cause in a few words (empty where the
     /// map did not ask, or it was reached).
     pub fn why_words(&self) -> String {
-        let words: Vec<String> = self.why.iter().map(Why::short).collect();
+        let words: Vec<String> = self.why().iter().map(Why::short).collect();
         words.join(", ")
     }
 }
@@ -270,7 +300,7 @@ impl ReportKind for MapReport {
             self.rows,
             self.step_mm
         );
-        let through = self.cells.iter().filter(|c| c.through.is_some()).count();
+        let through = self.cells.iter().filter(|c| c.through().is_some()).count();
         if through > 0 {
             let _ = writeln!(
                 out,
@@ -294,8 +324,8 @@ impl MapReport {
     /// the most first, as found where the map asked why.
     pub fn causes(&self) -> Vec<(String, usize)> {
         let mut counted: std::collections::BTreeMap<String, usize> = Default::default();
-        for cell in self.cells.iter().filter(|c| !c.why.is_empty()) {
-            let words: Vec<String> = cell.why.iter().map(|w| w.sorted().short()).collect();
+        for cell in self.cells.iter().filter(|c| !c.why().is_empty()) {
+            let words: Vec<String> = cell.why().iter().map(|w| w.sorted().short()).collect();
             *counted.entry(words.join(", ")).or_default() += 1;
         }
         let mut causes: Vec<(String, usize)> = counted.into_iter().collect();

@@ -93,8 +93,9 @@ struct Solved {
     /// Where it was not: the blocked placements its search's retry, left
     /// for later, starts from.
     blocked: Vec<Blocked>,
-    /// Where it was not and the map asks why: the closest placement found.
-    closest: Option<Placement>,
+    /// Where it was not and the map asks why: the closest placement found
+    /// (boxed: a map of 100,000 points keeps one `Solved` a point).
+    closest: Option<Box<Placement>>,
 }
 
 /// What every point of one map is solved with.
@@ -255,7 +256,7 @@ impl<'a> GridRun<'a> {
         let counts = (self.judge)(&placement, cell.point_mm);
         let mut cell = MapCell::new(cell, &placement, self.asked.chain, counts);
         if !counts && self.asked.of == "reach" {
-            cell.through = self.through(&placement);
+            cell.set_through(self.through(&placement));
         }
         let (reached, closest) = if counts {
             let reached = Reached {
@@ -264,7 +265,7 @@ impl<'a> GridRun<'a> {
             };
             (Some(reached), None)
         } else {
-            (None, self.asked.why.then_some(placement))
+            (None, self.asked.why.then(|| Box::new(placement)))
         };
         Solved {
             cell,
@@ -320,7 +321,7 @@ impl<'a> GridRun<'a> {
             .collect();
         for (i, found) in found {
             match found {
-                Found::Why(why) => solved[i].cell.why = why,
+                Found::Why(why) => solved[i].cell.set_why(why),
                 Found::Reached(placement) => {
                     let cell = &grid.cells[i];
                     let point_mm = cell.point_mm + self.asked.lift_mm;

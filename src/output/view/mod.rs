@@ -485,7 +485,7 @@ fn cells(m: &MapReport) -> CellsView {
                 let short = match (c.reachable, m.of) {
                     (true, _) => 0.0,
                     (false, "gaze") => 1.0,
-                    (false, _) if c.through.is_some() => THROUGH_MARK,
+                    (false, _) if c.through().is_some() => THROUGH_MARK,
                     (false, _) => mm(c.distance_mm).max(0.1),
                 };
                 [c.point_mm[0], c.point_mm[1], c.point_mm[2], short]
