@@ -14,9 +14,11 @@
 //! target minus admissible base positions) made of samples, with the heading
 //! theta_0 of section 5.3.6 searched over the headings the options allow.
 
+use std::cell::OnceCell;
 use std::collections::hash_map::DefaultHasher;
 use std::collections::HashMap;
 use std::hash::Hasher;
+use std::rc::Rc;
 use std::sync::{Arc, Mutex, OnceLock};
 
 use geo::{MultiPolygon, Point};
@@ -347,7 +349,14 @@ impl PreparedMobile<'_> {
     ) -> impl Iterator<Item = Candidate> + 'q {
         // A nearest placement is kept even beside a sampled one: that is
         // descended from one seed, this from the solver's own starts.
-        let nearest = std::iter::once_with(|| self.nearest(&query.target_room_mm, self.hint));
+        // Worked out once, for itself and to leave out of the last ones.
+        let near: Rc<OnceCell<Vec<BasePose>>> = Rc::default();
+        let near_too = Rc::clone(&near);
+        let nearest = move || {
+            near_too
+                .get_or_init(|| self.nearest(&query.target_room_mm, self.hint))
+                .clone()
+        };
         // Last, where the hand at rest would be at the target: the
         // reaching shoulder in front of it, the base as close as it fits
         // (a low point on a wall, reached leaning forward over the knees).
@@ -356,11 +365,12 @@ impl PreparedMobile<'_> {
             if !query.from_rest {
                 return Vec::new();
             }
-            let near = self.nearest(&query.target_room_mm, self.hint);
+            let near = near.get_or_init(|| self.nearest(&query.target_room_mm, self.hint));
             let mut rest = self.nearest(&query.target_room_mm, self.at_rest);
             rest.retain(|p| !near.iter().any(|n| same_place(n, p)));
             rest
         });
+        let nearest = std::iter::once_with(nearest);
         self.sampled(query)
             .into_iter()
             .chain(nearest.flatten().map(Candidate::at))
@@ -382,9 +392,7 @@ impl PreparedMobile<'_> {
             }
         }
         let approach = self.mobile.placing.approach;
-        let face = (approach != Approach::Any)
-            .then(|| face_normal(self.room, target))
-            .flatten();
+        let face = self.face(target);
         let mut scanned: Vec<BasePose> = Vec::new();
         let mut found: Vec<Candidate> = Vec::new();
         for sample in near {
@@ -399,10 +407,7 @@ impl PreparedMobile<'_> {
                 }
                 let offset = Rotation2::new(*heading) * hand;
                 let (x, y) = (target.x - offset.x, target.y - offset.y);
-                let pose = BasePose {
-                    position_mm: Point3::new(x, y, self.mobile.hip_height_mm),
-                    heading_rad: *heading,
-                };
+                let pose = self.pose_at(x, y, *heading);
                 // The quick count first, the exact test (which would count
                 // again) only for a new point it lets in.
                 if !region.roughly_contains(x, y)
@@ -429,12 +434,13 @@ impl PreparedMobile<'_> {
         found
     }
 
-    /// For each heading, the admissible point nearest to where the arm
-    /// would rather have the target (its workspace centre, turned into the
-    /// approach), the nearest first; those the approach admits.
+    /// For each heading that faces the target as the approach asks, the
+    /// admissible point nearest to where the arm would rather have it
+    /// (`hint`, turned into the approach), or where that point is outside
+    /// the approach, the nearest along its line; the nearest first.
     fn nearest(&self, target: &Point3<f64>, hint: Vector2<f64>) -> Vec<BasePose> {
         let hint = toward(hint, self.mobile.placing.approach, self.half_width_mm);
-        let face = face_normal(self.room, target);
+        let face = self.face(target);
         let mut scored: Vec<(f64, BasePose)> = self
             .regions()
             .filter(|(heading, _)| self.mobile.placing.approach.faces(*heading, face))
@@ -454,6 +460,15 @@ impl PreparedMobile<'_> {
             .collect();
         scored.sort_by(|a, b| a.0.total_cmp(&b.0));
         scored.into_iter().map(|(_, pose)| pose).collect()
+    }
+
+    /// The vertical face `target` is on, where the approach measures
+    /// against one (not `any`).
+    fn face(&self, target: &Point3<f64>) -> Option<Vector2<f64>> {
+        match self.mobile.placing.approach {
+            Approach::Any => None,
+            _ => face_normal(self.room, target),
+        }
     }
 
     fn pose_at(&self, x: f64, y: f64, heading_rad: f64) -> BasePose {
@@ -572,9 +587,8 @@ impl PreparedBase for PreparedMobile<'_> {
 
     fn admits(&self, pose: &BasePose, target_room_mm: &Point3<f64>) -> bool {
         let approach = self.mobile.placing.approach;
-        approach == Approach::Any
-            || (approach.admits_pose(pose, target_room_mm, self.half_width_mm)
-                && approach.faces(pose.heading_rad, face_normal(self.room, target_room_mm)))
+        self.admitted(pose, target_room_mm)
+            && approach.faces(pose.heading_rad, self.face(target_room_mm))
     }
 
     fn moved(&self, pose: &BasePose, by_mm: Vector2<f64>) -> Option<BasePose> {
