@@ -7,7 +7,7 @@ use crate::error::{Error, ErrorKind};
 use crate::names::suggest;
 use crate::options::{Options, ParamKind, ParamSpec, SettingsError, Value};
 use crate::span::Span;
-use crate::syntax::ast::{ExprKind, OptionDecl, OptionValue, PluginUse};
+use crate::syntax::ast::{Expr, ExprKind, OptionDecl, OptionValue, PluginUse};
 
 /// Whole numbers up to this size are exact in f64.
 const MAX_INTEGER: f64 = 9_007_199_254_740_992.0;
@@ -205,21 +205,15 @@ impl Checker<'_> {
 /// named, not called a number (`why yes`).
 fn describe(v: &OptionValue) -> String {
     match v {
-        OptionValue::Expr(e) => match &e.kind {
-            ExprKind::Name(name) => format!("the word `{name}`"),
-            _ => "a number".into(),
-        },
-        other => describe_kind(other).into(),
-    }
-}
-
-fn describe_kind(v: &OptionValue) -> &'static str {
-    match v {
-        OptionValue::Expr(_) => "a number",
-        OptionValue::Vec3(_) => "a point",
-        OptionValue::Points(_) => "a list of points",
-        OptionValue::Bool(_) => "true or false",
-        OptionValue::String(_) => "a string",
-        OptionValue::Plugin(_) => "a plugin block",
+        OptionValue::Expr(Expr {
+            kind: ExprKind::Name(name),
+            ..
+        }) => format!("the word `{name}`"),
+        OptionValue::Expr(_) => "a number".into(),
+        OptionValue::Vec3(_) => "a point".into(),
+        OptionValue::Points(_) => "a list of points".into(),
+        OptionValue::Bool(_) => "true or false".into(),
+        OptionValue::String(_) => "a string".into(),
+        OptionValue::Plugin(_) => "a plugin block".into(),
     }
 }

@@ -150,11 +150,16 @@ impl Picture {
                     (false, _) if !c.distance_mm.is_finite() => {
                         "no place to approach it from".into()
                     }
-                    (false, _) if c.why().is_empty() => match c.through() {
-                        Some(what) => format!("reached only through {}", quoted(what)),
-                        None => format!("{} mm short", c.distance_mm),
-                    },
-                    (false, _) => format!("{} mm short: {}", c.distance_mm, c.why_words()),
+                    (false, _) => {
+                        let missed = match c.through() {
+                            Some(what) => format!("reached only through {}", quoted(what)),
+                            None => format!("{} mm short", c.distance_mm),
+                        };
+                        match c.why_words() {
+                            why if why.is_empty() => missed,
+                            why => format!("{missed}: {why}"),
+                        }
+                    }
                 },
             })
             .collect();

@@ -299,7 +299,7 @@ impl<'a> GridRun<'a> {
             .filter(|&i| solved[i].reached.is_none())
             .collect();
         self.input.progress.add_work(unreached.len() as u64);
-        let found: Vec<(usize, Found)> = unreached
+        let found: Vec<(usize, Point3<f64>, Found)> = unreached
             .par_iter()
             .with_max_len(1)
             .filter_map(|&i| {
@@ -316,16 +316,14 @@ impl<'a> GridRun<'a> {
                 };
                 let found = failed.why();
                 self.input.progress.advance(1);
-                Some((i, found))
+                Some((i, query.target_room_mm, found))
             })
             .collect();
-        for (i, found) in found {
+        for (i, point_mm, found) in found {
             match found {
                 Found::Why(why) => solved[i].cell.set_why(why),
                 Found::Reached(placement) => {
-                    let cell = &grid.cells[i];
-                    let point_mm = cell.point_mm + self.asked.lift_mm;
-                    solved[i] = self.solved(cell, placement, point_mm);
+                    solved[i] = self.solved(&grid.cells[i], placement, point_mm);
                 }
             }
         }

@@ -250,24 +250,25 @@ impl Failed<'_> {
     fn kept_away(&self, obstacles: &Obstacles, roomy: &Placement) -> Why {
         let room = self.input.room;
         let own = self.input.base.own_body();
-        let mut tried: Vec<usize> = Vec::new();
-        let floor = self.nearest_floor_obstacles(TRIED_WITHOUT);
-        for (_, i) in floor.into_iter().chain(self.nearest_obstacles(NEAREST)) {
-            if !tried.contains(&i) {
-                tried.push(i);
-            }
-        }
         let placed = PlacedObstacles {
             obstacles,
             own,
             base_pose: roomy.pose,
         };
         let hits = placed.posture_hits(self.chain, &roomy.solution.q, self.tolerance());
-        for blocker in hits.into_iter().take(TRIED_WITHOUT) {
-            if let Blocker::Obstacle(i) = blocker {
-                if !tried.contains(&i) {
-                    tried.push(i);
-                }
+        let in_the_way = hits
+            .into_iter()
+            .take(TRIED_WITHOUT)
+            .filter_map(|b| match b {
+                Blocker::Obstacle(i) => Some(i),
+                _ => None,
+            });
+        let near = self.nearest_floor_obstacles(TRIED_WITHOUT).into_iter();
+        let near = near.chain(self.nearest_obstacles(NEAREST)).map(|(_, i)| i);
+        let mut tried: Vec<usize> = Vec::new();
+        for i in near.chain(in_the_way) {
+            if !tried.contains(&i) {
+                tried.push(i);
             }
         }
         let clearance_mm = self.reaching.common.clearance_mm;
