@@ -12,7 +12,7 @@ use crate::scene::{BoxObstacle, Room};
 
 /// How far in front of a vertical face a target may be and still be on
 /// it (a switch, a handle, a label stand out from the face).
-const ON_FACE_MM: f64 = 50.0;
+pub const ON_FACE_MM: f64 = 50.0;
 /// How far behind the face's plane (inside the box or wall) it may be.
 const INSIDE_MM: f64 = 1.0;
 

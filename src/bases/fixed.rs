@@ -85,6 +85,11 @@ impl Base for FixedBase {
         &self.own
     }
 
+    /// Only the room's size, whether the hip point is in it.
+    fn reads_room_through_floor(&self) -> bool {
+        true
+    }
+
     /// The hip point must be inside the room.
     fn fit(&self, room: &Room) -> Fit {
         if room.contains(&self.pose.position_mm) {

@@ -13,6 +13,7 @@ mod search;
 mod trolley;
 mod wheelchair;
 
+pub use face::ON_FACE_MM;
 pub use fixed::{Fixed, FixedSettings};
 pub use placement::Mobile;
 pub use placing::{Approach, Placing, PlacingSettings};

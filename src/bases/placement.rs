@@ -256,6 +256,11 @@ impl Base for Mobile {
         &self.own
     }
 
+    /// Its floor, and the face a target is on (`face.rs`).
+    fn reads_room_through_floor(&self) -> bool {
+        true
+    }
+
     fn hip_height_mm(&self) -> Option<f64> {
         Some(self.hip_height_mm)
     }

@@ -14,19 +14,33 @@ use std::sync::Arc;
 use rayon::prelude::*;
 
 use super::reach::{obstacles_within, Tried};
+use super::touched::points_bounds;
 use crate::kinematics::{Body, Chain, Joint};
 use crate::plugin::Dependence;
 use crate::progress::NoProgress;
 use crate::scenario::{Scenario, SubjectRef, TaskSpec};
 use crate::scene::{hash_bits, BasePose, Person, Room};
+use nalgebra::Point3;
 
 /// The placements tried for each point of a task, by what they depend on.
 pub(super) type Placements = HashMap<u64, Arc<Vec<Tried>>>;
 
+/// A task's keys.
+pub(super) struct TaskKey {
+    /// Of everything its answer depends on, the obstacles within its
+    /// reach included.
+    pub strict: u64,
+    /// Of everything but the obstacles, for a task that records what its
+    /// questions touch (`touched.rs`); none for one that does not.
+    pub loose: Option<u64>,
+    /// The bounds of the task's points.
+    pub points: Option<[Point3<f64>; 2]>,
+}
+
 /// The keys of the scenario's tasks, in order; `placements` holds, after,
 /// the placements of this scenario's tasks (reused from it where nothing
 /// they depend on changed).
-pub(super) fn keys(scenario: &Scenario, placements: &mut Placements) -> Vec<u64> {
+pub(super) fn keys(scenario: &Scenario, placements: &mut Placements) -> Vec<TaskKey> {
     let dependences: Vec<Dependence> = scenario
         .tasks
         .par_iter()
@@ -57,9 +71,49 @@ pub(super) fn keys(scenario: &Scenario, placements: &mut Placements) -> Vec<u64>
         .zip(&dependences)
         .zip(&floor_keys)
         .map(|((task, dependence), floor_key)| {
-            key(scenario, task, dependence, &placements[floor_key])
+            let tried = &placements[floor_key];
+            TaskKey {
+                strict: key(scenario, task, dependence, tried),
+                loose: loose_key(scenario, task, tried),
+                points: points_bounds(&dependence.points_mm),
+            }
         })
         .collect()
+}
+
+/// The key of everything `task`'s answer depends on but the room's
+/// obstacles, where the task records what its questions touch and its
+/// base reads the room only through the floor: its settings, subject and
+/// person, the room's size, the placements its base may try and, for a
+/// base that moves, the floor it moves on.
+fn loose_key(scenario: &Scenario, task: &TaskSpec, tried: &[Tried]) -> Option<u64> {
+    let base = &scenario.bases[task.person];
+    let tracked = task.task.records_touches() && base.reads_room_through_floor();
+    if task.population.is_some() || !tracked {
+        return None;
+    }
+    let room = &scenario.rooms[task.room];
+    Some(hash_of(|h| {
+        (&task.kind, &task.options, &task.effectors).hash(h);
+        hash_subject(&task.subject, room, h);
+        hash_person(&scenario.persons[task.person], h);
+        room.name.hash(h);
+        hash_bits(room.size_mm.iter(), h);
+        hash_tried(tried, h);
+        if base.footprint().is_some() {
+            room.hash_floor(&footprint_bands(scenario, task), h);
+        }
+    }))
+}
+
+/// Where the base may put the hip for each point.
+fn hash_tried(tried: &[Tried], h: &mut DefaultHasher) {
+    for t in tried {
+        t.hips.poses.iter().for_each(|pose| hash_pose(pose, h));
+        if let Some((centre, radius_mm)) = &t.hips.around {
+            hash_bits(centre.iter().chain([radius_mm]), h);
+        }
+    }
 }
 
 /// The placements a task's base may try for each of its points.
@@ -111,12 +165,7 @@ fn key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence, tried: &[T
         hash_person(&scenario.persons[task.person], h);
         room.name.hash(h);
         hash_bits(room.size_mm.iter(), h);
-        for t in tried {
-            t.hips.poses.iter().for_each(|pose| hash_pose(pose, h));
-            if let Some((centre, radius_mm)) = &t.hips.around {
-                hash_bits(centre.iter().chain([radius_mm]), h);
-            }
-        }
+        hash_tried(tried, h);
         // Where the room has doors, whether a base that moves can get to a
         // place depends on the doors and on the floor of the whole room.
         let routed = !room.doors.is_empty() && tried.iter().any(|t| t.hips.around.is_some());

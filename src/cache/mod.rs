@@ -5,10 +5,15 @@
 //! the obstacles within reach of one of those placements (`reach.rs`).
 //! Spans are not part of the key, so editing one line leaves the other
 //! tasks' results in place, and an obstacle moved out of a task's reach
-//! leaves that task's result in place too.
+//! leaves that task's result in place too. A task that records which
+//! obstacles its questions came near keeps its result, too, while the
+//! obstacles it touched stay as they were and the others move only a
+//! little (`touched.rs`): a shelf raised by a millimetre re-runs only the
+//! tasks whose arms came near it.
 
 mod key;
 mod reach;
+mod touched;
 
 use std::collections::HashMap;
 
@@ -20,6 +25,9 @@ use crate::scenario::{Scenario, TaskSpec};
 #[derive(Default)]
 pub struct TaskCache {
     results: HashMap<u64, TaskReport>,
+    /// Results by the key of all but the obstacles, with what their
+    /// questions touched.
+    kept: HashMap<u64, touched::Kept>,
     /// The placements each task's base may try, kept while the room and
     /// the person stay as they are.
     placements: key::Placements,
@@ -37,34 +45,42 @@ impl TaskCache {
     /// changed; afterwards the cache holds exactly this run's results.
     pub fn run(&mut self, scenario: &Scenario, progress: &dyn Progress) -> (Report, CacheStats) {
         let keys = key::keys(scenario, &mut self.placements);
-        let stale: Vec<&TaskSpec> = scenario
-            .tasks
-            .iter()
-            .zip(&keys)
-            .filter(|(_, k)| !self.results.contains_key(k))
+        let seen: Vec<Vec<touched::Seen>> = scenario.rooms.iter().map(touched::seen).collect();
+        let held: Vec<Option<TaskReport>> = (scenario.tasks.iter().zip(&keys))
+            .map(|(task, k)| self.held(k, &seen[task.room]))
+            .collect();
+        let stale: Vec<&TaskSpec> = (scenario.tasks.iter().zip(&held))
+            .filter(|(_, h)| h.is_none())
             .map(|(task, _)| task)
             .collect();
-        let mut ran_now = scenario.run_tasks(&stale, progress).into_iter();
-        let fresh: Vec<Option<TaskReport>> = keys
-            .iter()
-            .map(|k| {
-                if self.results.contains_key(k) {
-                    None
-                } else {
-                    ran_now.next()
+        let mut ran_now = scenario.run_tasks_recording(&stale, progress).into_iter();
+        let mut kept = HashMap::new();
+        let mut tasks = Vec::with_capacity(keys.len());
+        for ((task, k), held) in scenario.tasks.iter().zip(&keys).zip(held) {
+            let report = match held {
+                Some(report) => {
+                    let old = k.loose.and_then(|l| self.kept.remove(&l).map(|e| (l, e)));
+                    kept.extend(old);
+                    report
                 }
-            })
+                None => {
+                    let (report, set) = ran_now.next().expect("an answer per task run");
+                    if let (Some(l), Some(set)) = (k.loose, set) {
+                        let room = seen[task.room].clone();
+                        kept.insert(l, touched::Kept::new(report.clone(), set, room, k.points));
+                    }
+                    report
+                }
+            };
+            tasks.push(report);
+        }
+        let ran = stale.len();
+        self.kept = kept;
+        self.results = (keys.iter().map(|k| k.strict))
+            .zip(tasks.iter().cloned())
             .collect();
-        let ran = fresh.iter().filter(|r| r.is_some()).count();
-        let tasks: Vec<TaskReport> = fresh
-            .into_iter()
-            .zip(&keys)
-            .map(|(r, k)| r.unwrap_or_else(|| self.results[k].clone()))
-            .collect();
-        self.results = keys.iter().copied().zip(tasks.iter().cloned()).collect();
         // Standards are checked again every time: they read the whole room.
         let all: Vec<&TaskSpec> = scenario.tasks.iter().collect();
-        let mut tasks = tasks;
         let standards = scenario.run_standards(&all, &tasks);
         tasks.extend(standards);
         let report = Report {
@@ -81,5 +97,16 @@ impl TaskCache {
                 ran,
             },
         )
+    }
+
+    /// The result kept for a task of keys `k` in a room whose obstacles
+    /// are `seen`: under its full key, or under the key of all but the
+    /// obstacles where those it touched are as they were.
+    fn held(&self, k: &key::TaskKey, seen: &[touched::Seen]) -> Option<TaskReport> {
+        if let Some(report) = self.results.get(&k.strict) {
+            return Some(report.clone());
+        }
+        let kept = self.kept.get(&k.loose?)?;
+        kept.holds(seen).then(|| kept.report.clone())
     }
 }

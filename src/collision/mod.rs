@@ -10,10 +10,14 @@ mod kept_proofs;
 mod placed;
 #[cfg(test)]
 mod split_mesh_tests;
+mod touched;
 
 pub use beyond::{OutOfReach, Verdict};
 pub use kept_proofs::KeptProofs;
 pub use placed::PlacedObstacles;
+pub use touched::{bounds_meet, bounds_within, Touched, TouchedSet, TOUCH_MARGIN_MM};
+
+use std::sync::Arc;
 
 use nalgebra::{Isometry3, Point3, Vector3};
 use parry3d_f64::query::{self, Ray};
@@ -48,6 +52,9 @@ pub struct Obstacles {
     /// The room's sides that count (all six, but where a search asks what
     /// it would reach without one).
     walls: Vec<Wall>,
+    /// Where the obstacles the questions come near are recorded (watch
+    /// mode's cache), if anywhere.
+    touched: Option<Arc<Touched>>,
 }
 
 const WALLS: [Wall; 6] = [
@@ -79,13 +86,7 @@ impl Obstacles {
             .enumerate()
             .filter_map(|(k, m)| {
                 let MeshShape { parts, solid } = m.shape()?.clone();
-                let bounds = parts.iter().fold(
-                    [
-                        Point3::from([f64::INFINITY; 3]),
-                        Point3::from([f64::NEG_INFINITY; 3]),
-                    ],
-                    |[lo, hi], p| [lo.inf(&p.bounds[0]), hi.sup(&p.bounds[1])],
-                );
+                let bounds = parts_bounds(&parts);
                 Some(Mesh {
                     index: first_mesh + k,
                     name: m.name.clone(),
@@ -101,6 +102,48 @@ impl Obstacles {
             size_mm: room.size_mm,
             clearance_mm,
             walls: WALLS.to_vec(),
+            touched: None,
+        }
+    }
+
+    /// These obstacles, recording in `touched` which of them the questions
+    /// put to them come near.
+    pub fn recording(self, touched: Option<&Arc<Touched>>) -> Self {
+        Obstacles {
+            touched: touched.cloned(),
+            ..self
+        }
+    }
+
+    /// Record obstacle `index`, whose bounds are `bounds`, as touched if
+    /// the segment `a`-`b`, whose bounds grown by `r_mm` are `asked`, comes
+    /// nearer than `r_mm` to them grown by the margin (`touched.rs`): the
+    /// obstacle, wherever it moves within them, could meet it. (A line of
+    /// sight, which meets what it enters, asks with `r_mm` nought.)
+    fn note(
+        &self,
+        index: usize,
+        bounds: &[Point3<f64>; 2],
+        segment: (&Point3<f64>, &Point3<f64>, f64),
+        asked: &[Point3<f64>; 2],
+    ) {
+        let Some(touched) = &self.touched else {
+            return;
+        };
+        if !bounds_meet(bounds, asked, TOUCH_MARGIN_MM) {
+            return;
+        }
+        let (a, b, r_mm) = segment;
+        let grown = Vector3::repeat(TOUCH_MARGIN_MM);
+        let [lo, hi] = [bounds[0] - grown, bounds[1] + grown];
+        let aabb = Cuboid {
+            centre: nalgebra::center(&lo, &hi),
+            half_mm: (hi - lo) / 2.0,
+            yaw_rad: 0.0,
+        };
+        // A little more than the exact tests count, to be safe.
+        if aabb.distance_to_segment(a, b) < r_mm.max(0.0) + 1e-6 {
+            touched.mark(index);
         }
     }
 
@@ -155,6 +198,9 @@ impl Obstacles {
     pub fn capsule_hits<'a>(&'a self, capsule: &'a Capsule) -> impl Iterator<Item = Blocker> + 'a {
         let r = capsule.radius_mm + self.clearance_mm;
         let [clo, chi] = capsule.bounds();
+        let grown = Vector3::repeat(self.clearance_mm);
+        let asked = [clo - grown, chi + grown];
+        let segment = (&capsule.a, &capsule.b, r);
         let reach = move |[lo, hi]: &[Point3<f64>; 2]| {
             (0..3)
                 .all(|i| chi[i] + self.clearance_mm >= lo[i] && clo[i] - self.clearance_mm <= hi[i])
@@ -165,10 +211,12 @@ impl Obstacles {
             .iter()
             .enumerate()
             .filter_map(move |(i, (_, cuboid, bounds))| {
+                self.note(i, bounds, segment, &asked);
                 (reach(bounds) && touches(cuboid.distance_to_segment(&capsule.a, &capsule.b)))
                     .then_some(Blocker::Obstacle(i))
             });
         let meshes = self.meshes.iter().filter_map(move |m| {
+            self.note(m.index, &m.bounds, segment, &asked);
             (reach(&m.bounds) && mesh_touches(m, capsule, r.max(1e-9), reach))
                 .then_some(Blocker::Obstacle(m.index))
         });
@@ -214,27 +262,38 @@ impl Obstacles {
         }
         let max = 1.0 - end_gap_mm / length;
         let end = eye + (target - eye) * max;
+        let asked = [eye.inf(&end), eye.sup(&end)];
+        // A segment whose bounds miss an obstacle's cannot meet it.
+        let near = |i: usize, bounds: &[Point3<f64>; 2]| {
+            self.note(i, bounds, (eye, &end, 0.0), &asked);
+            bounds_meet(bounds, &asked, 0.0)
+        };
         let boxes = self
             .boxes
             .iter()
             .enumerate()
             // A removed box has no extent (`without`).
             .filter(|(_, (_, _, [lo, hi]))| lo.x <= hi.x)
+            .filter(|(i, (_, _, bounds))| near(*i, bounds))
             .filter_map(|(i, (_, cuboid, _))| {
                 entry_along(cuboid, eye, &end).map(|t| (Blocker::Obstacle(i), t * max))
             });
         let ray = Ray::new(*eye, target - eye);
         let at = Isometry3::identity();
-        let meshes = self.meshes.iter().filter_map(|m| {
-            let toi = if m.closed && m.parts[0].shape.contains_point(&at, eye) {
-                Some(0.0)
-            } else {
-                (m.parts.iter())
-                    .filter_map(|p| p.shape.cast_ray(&at, &ray, max, true))
-                    .min_by(f64::total_cmp)
-            };
-            toi.map(|t| (Blocker::Obstacle(m.index), t))
-        });
+        let meshes = self
+            .meshes
+            .iter()
+            .filter(|m| near(m.index, &m.bounds))
+            .filter_map(|m| {
+                let toi = if m.closed && m.parts[0].shape.contains_point(&at, eye) {
+                    Some(0.0)
+                } else {
+                    (m.parts.iter())
+                        .filter_map(|p| p.shape.cast_ray(&at, &ray, max, true))
+                        .min_by(f64::total_cmp)
+                };
+                toi.map(|t| (Blocker::Obstacle(m.index), t))
+            });
         let outside = self
             .wall_hit(&Capsule::sphere(*eye, 0.0), 0.0)
             .map(|wall| (wall, 0.0));
@@ -243,6 +302,25 @@ impl Obstacles {
             .chain(outside)
             .min_by(|a, b| a.1.total_cmp(&b.1).then(rank(&a.0).cmp(&rank(&b.0))))
     }
+}
+
+/// The bounds that hold a mesh's parts.
+fn parts_bounds(parts: &[MeshPart]) -> [Point3<f64>; 2] {
+    parts.iter().fold(
+        [
+            Point3::from([f64::INFINITY; 3]),
+            Point3::from([f64::NEG_INFINITY; 3]),
+        ],
+        |[lo, hi], p| [lo.inf(&p.bounds[0]), hi.sup(&p.bounds[1])],
+    )
+}
+
+/// The bounds of each of the room's obstacles (the boxes, then the
+/// meshes) as [`Obstacles`] holds them: none for a mesh with no solid.
+pub fn obstacle_bounds(room: &Room) -> Vec<Option<[Point3<f64>; 2]>> {
+    let boxes = room.boxes.iter().map(|b| Some(b.cuboid().bounds()));
+    let meshes = (room.meshes.iter()).map(|m| m.shape().map(|s| parts_bounds(&s.parts)));
+    boxes.chain(meshes).collect()
 }
 
 /// Whether the capsule's segment comes within `r` of mesh `m` (or lies in

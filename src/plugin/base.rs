@@ -184,6 +184,15 @@ pub trait Base: Send + Sync {
     fn footprint(&self) -> Option<&Footprint> {
         None
     }
+    /// Whether the base reads the room only through its floor (what
+    /// `Room::hash_floor` holds for its footprint's bands) and the faces
+    /// of boxes within 50 mm of a target (where an approach is measured):
+    /// then watch mode may keep a task's answer when an obstacle the
+    /// task's questions did not come near moves a little. False (the
+    /// default) for a base that may read more.
+    fn reads_room_through_floor(&self) -> bool {
+        false
+    }
     /// The same base free of the zone it is kept to, if it has one (to
     /// learn whether the zone is what keeps a target out of reach).
     fn unzoned(&self) -> Option<Box<dyn Base>> {

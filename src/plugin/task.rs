@@ -4,9 +4,12 @@
 //! effectors, and a run hands them to the configured task, which looks no
 //! name up.
 
+use std::sync::Arc;
+
 use nalgebra::Point3;
 
 use super::{Base, Options, Plugin, Registry, SettingsError, Tries};
+use crate::collision::Touched;
 use crate::error::ErrorKind;
 use crate::kinematics::Chain;
 use crate::progress::Progress;
@@ -64,6 +67,10 @@ pub struct TaskInput<'a> {
     /// where it does not, why): a search may stop at the first placement
     /// that holds instead of looking on for the most comfortable one.
     pub verdict_only: bool,
+    /// Where the obstacles the task's questions come near are recorded
+    /// (watch mode's cache), if anywhere: only a task that
+    /// [`Task::records_touches`] is given one.
+    pub touched: Option<&'a Arc<Touched>>,
 }
 
 /// What a task's answer depends on in its room beyond its own settings,
@@ -123,5 +130,15 @@ pub trait Task: Send + Sync {
     fn starts_per_point(&self, placements: Tries) -> u64;
     /// What the answer depends on in the room (for the cache).
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence;
+    /// Whether the task asks about the room's obstacles only through
+    /// `collision::Obstacles` made with [`TaskInput::touched`] (or marks
+    /// every obstacle touched where it looks at them otherwise), and about
+    /// the floor only through its base: then watch mode may keep its
+    /// answer when an obstacle its questions did not come near moves a
+    /// little. False (the default) keeps the answer only while every
+    /// obstacle within the task's reach stays as it was.
+    fn records_touches(&self) -> bool {
+        false
+    }
     fn run(&self, input: &TaskInput<'_>) -> TaskReport;
 }

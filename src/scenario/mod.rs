@@ -166,6 +166,7 @@ impl Scenario {
             effectors: &task.effectors,
             progress,
             verdict_only: false,
+            touched: None,
         }
     }
 }

@@ -5,10 +5,12 @@
 //! the number of threads.
 
 use std::collections::BTreeMap;
+use std::sync::Arc;
 
 use rayon::prelude::*;
 
 use super::{Scenario, TaskSpec};
+use crate::collision::{Touched, TouchedSet};
 use crate::plugin::{Fit, TaskInput};
 use crate::progress::Progress;
 use crate::report::{NotPlacedReport, PersonAnswer, PopulationReport, TaskReport};
@@ -35,6 +37,28 @@ impl Scenario {
 
     /// Run `tasks` in parallel; their answers in the order given.
     pub fn run_tasks(&self, tasks: &[&TaskSpec], progress: &dyn Progress) -> Vec<TaskReport> {
+        let ran = self.run_jobs(tasks, progress, false);
+        ran.into_iter().map(|(report, _)| report).collect()
+    }
+
+    /// As [`Scenario::run_tasks`], with what each task's questions touched
+    /// of its room where it records that (`Task::records_touches`; never
+    /// for a population's task).
+    pub fn run_tasks_recording(
+        &self,
+        tasks: &[&TaskSpec],
+        progress: &dyn Progress,
+    ) -> Vec<(TaskReport, Option<TouchedSet>)> {
+        self.run_jobs(tasks, progress, true)
+    }
+
+    /// `tasks` run in parallel, recording what they touch if `record`.
+    fn run_jobs(
+        &self,
+        tasks: &[&TaskSpec],
+        progress: &dyn Progress,
+        record: bool,
+    ) -> Vec<(TaskReport, Option<TouchedSet>)> {
         // The positions of the tasks by each population.
         let mut by_population: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
         let mut jobs = Vec::new();
@@ -64,17 +88,32 @@ impl Scenario {
         }
         // Each job's answers: a task's alone, or a member's in the order
         // of their population's tasks.
-        let found: Vec<Vec<TaskReport>> = jobs
+        let found: Vec<(Vec<TaskReport>, Option<TouchedSet>)> = jobs
             .par_iter()
             .map(|job| match *job {
-                Job::Alone(k) => vec![self.run_one(tasks[k], progress, false)],
-                Job::Member { population, person } => by_population[&population]
-                    .iter()
-                    .map(|&k| self.run_member(tasks[k], person, progress))
-                    .collect(),
+                Job::Alone(k) => {
+                    let (report, touched) = self.run_one(tasks[k], progress, false, record);
+                    (vec![report], touched)
+                }
+                Job::Member { population, person } => {
+                    let each = by_population[&population]
+                        .iter()
+                        .map(|&k| self.run_member(tasks[k], person, progress))
+                        .collect();
+                    (each, None)
+                }
             })
             .collect();
-        self.gather(tasks, &by_population, &jobs, found)
+        let mut touched: Vec<Option<TouchedSet>> = vec![None; tasks.len()];
+        let mut answers = Vec::with_capacity(found.len());
+        for (job, (each, set)) in jobs.iter().zip(found) {
+            if let Job::Alone(k) = job {
+                touched[*k] = set;
+            }
+            answers.push(each);
+        }
+        let reports = self.gather(tasks, &by_population, &jobs, answers);
+        reports.into_iter().zip(touched).collect()
     }
 
     /// Each standard checked on its room, in parallel, in the order given;
@@ -154,7 +193,7 @@ impl Scenario {
             population: None,
             ..task.clone()
         };
-        let answer = self.run_one(&spec, progress, true);
+        let (answer, _) = self.run_one(&spec, progress, true, false);
         if self.one_point(task) {
             progress.advance(1);
         }
@@ -162,10 +201,21 @@ impl Scenario {
     }
 
     /// Run `task` for its one person (`verdict_only`: as a member of a
-    /// population, of whom only the verdict is kept).
-    fn run_one(&self, task: &TaskSpec, progress: &dyn Progress, verdict_only: bool) -> TaskReport {
+    /// population, of whom only the verdict is kept), and what its
+    /// questions touched of the room, if `record` and it records that.
+    fn run_one(
+        &self,
+        task: &TaskSpec,
+        progress: &dyn Progress,
+        verdict_only: bool,
+        record: bool,
+    ) -> (TaskReport, Option<TouchedSet>) {
+        let room = &self.rooms[task.room];
+        let touched = (record && task.task.records_touches())
+            .then(|| Arc::new(Touched::new(room.boxes.len() + room.meshes.len())));
         let input = TaskInput {
             verdict_only,
+            touched: touched.as_ref(),
             ..self.input(task, progress)
         };
         let label = match task.kind.as_str() {
@@ -183,8 +233,11 @@ impl Scenario {
                 NotPlacedReport::new(label, subject, person, base, room, &misfit)
             }
             Fit::Shut(shut) => NotPlacedReport::shut(label, subject, person, base, room, &shut),
-            Fit::Fits | Fit::Outside => return task.task.run(&input),
+            Fit::Fits | Fit::Outside => {
+                let report = task.task.run(&input);
+                return (report, touched.map(|t| t.set()));
+            }
         };
-        TaskReport::NotPlaced(report)
+        (TaskReport::NotPlaced(report), touched.map(|t| t.set()))
     }
 }

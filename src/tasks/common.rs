@@ -13,7 +13,7 @@ use crate::plugin::{
     Retry, Search, SettingsError, Solver, TaskInput, Tries, Value,
 };
 use crate::report::Asked;
-use crate::scene::{OwnBody, Room};
+use crate::scene::OwnBody;
 
 /// How a task declares its common options: what one of its subjects is
 /// called in the docs, the seed's doc, the default solver, and the
@@ -181,11 +181,12 @@ impl Reaching {
             .saturating_add(retries.saturating_mul(work(self.blocked_solver.as_ref())))
     }
 
-    /// The room's obstacles when the task checks collisions.
-    pub fn obstacles(&self, room: &Room) -> Option<Obstacles> {
+    /// The room's obstacles when the task checks collisions, recording
+    /// what the questions touch where `input` asks for that.
+    pub fn obstacles(&self, input: &TaskInput<'_>) -> Option<Obstacles> {
         self.common
             .collisions
-            .then(|| Obstacles::new(room, self.common.clearance_mm))
+            .then(|| Obstacles::new(input.room, self.common.clearance_mm).recording(input.touched))
     }
 
     /// A reach of `target_room_mm` keeping the person out of `obstacles`

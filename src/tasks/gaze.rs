@@ -209,6 +209,12 @@ impl Task for GazeTask {
         self.reaching.starts_per_point(placements)
     }
 
+    /// Its obstacles are asked about through `Reaching::obstacles` (and
+    /// finding why marks them all), its floor through its base.
+    fn records_touches(&self) -> bool {
+        true
+    }
+
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
         let eyes = self.looking.eyes(Some(&input.person.vision));
         let chain = with_look_range(
@@ -234,7 +240,7 @@ impl Task for GazeTask {
         );
         // With collisions on, the look link is a link like any other: the
         // solver and the base prefer a posture whose line of sight is clear.
-        let obstacles = GazeObstacles::new(input.room, reaching, input.base.own_body());
+        let obstacles = GazeObstacles::new(input, reaching);
         let query = reaching.query(
             target.position_mm,
             mix_seed(reaching.common.seed, "gaze", &target.position_mm),
@@ -274,12 +280,14 @@ pub(super) struct GazeObstacles<'a> {
 }
 
 impl<'a> GazeObstacles<'a> {
-    pub fn new(room: &'a Room, reaching: &Reaching, own: &'a OwnBody) -> Self {
+    /// The obstacles of `input`'s room and its person's own body and
+    /// base, recording what the questions touch where `input` asks.
+    pub fn new(input: &TaskInput<'a>, reaching: &Reaching) -> Self {
         GazeObstacles {
-            sight: Obstacles::new(room, 0.0),
-            body: reaching.obstacles(room),
-            room,
-            own,
+            sight: Obstacles::new(input.room, 0.0).recording(input.touched),
+            body: reaching.obstacles(input),
+            room: input.room,
+            own: input.base.own_body(),
         }
     }
 }

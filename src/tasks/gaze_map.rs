@@ -93,6 +93,12 @@ impl Task for GazeMapTask {
         self.reaching.starts_per_point(placements.without_rest())
     }
 
+    /// Its obstacles are asked about through `Reaching::obstacles` (and
+    /// finding why marks them all), its floor through its base.
+    fn records_touches(&self) -> bool {
+        true
+    }
+
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
         let eyes = self.looking.eyes(Some(&input.person.vision));
         let chain = with_look_range(
@@ -109,7 +115,7 @@ impl Task for GazeMapTask {
             &chain_of(input, 0),
             eyes.aimed_mm(self.reaching.common.tolerance_mm),
         );
-        let obstacles = GazeObstacles::new(input.room, &self.reaching, input.base.own_body());
+        let obstacles = GazeObstacles::new(input, &self.reaching);
         let tolerance_mm = self.reaching.common.tolerance_mm;
         let judge = |placement: &Placement, target| {
             let looked = Looked {

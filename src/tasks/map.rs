@@ -106,6 +106,12 @@ impl Task for MapTask {
         self.reaching.starts_per_point(placements.without_rest())
     }
 
+    /// Its obstacles are asked about through `Reaching::obstacles` (and
+    /// finding why marks them all), its floor through its base.
+    fn records_touches(&self) -> bool {
+        true
+    }
+
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
         let chain = chain_of(input, 0);
         let lift = hand_lift(&input.subject, &chain);
@@ -121,7 +127,7 @@ impl Task for MapTask {
     fn run(&self, input: &TaskInput<'_>) -> TaskReport {
         let tolerance_mm = self.reaching.common.tolerance_mm;
         let chain = chain_of(input, 0);
-        let obstacles = self.reaching.obstacles(input.room);
+        let obstacles = self.reaching.obstacles(input);
         let judge = |placement: &Placement, _| placement.solution.reaches(tolerance_mm);
         let asked = MapAsked {
             reaching: &self.reaching,

@@ -72,6 +72,12 @@ impl Task for ReachTask {
         self.0.starts_per_point(placements)
     }
 
+    /// Its obstacles are asked about through `Reaching::obstacles` (and
+    /// finding why marks them all), its floor through its base.
+    fn records_touches(&self) -> bool {
+        true
+    }
+
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
         let chain = chain_of(input, 0);
         let Subject::Target(target) = input.subject else {
@@ -87,7 +93,7 @@ impl Task for ReachTask {
             unreachable!("the checker gives a reach a target")
         };
         let chain = chain_of(input, 0);
-        let obstacles = reaching.obstacles(input.room);
+        let obstacles = reaching.obstacles(input);
         let seed = mix_seed(reaching.common.seed, "reach", &target.position_mm);
         // Whether any placement reaches does not depend on which is kept:
         // for a verdict alone, the first that reaches will do.

@@ -163,6 +163,12 @@ impl Task for ReachAndGazeTask {
         self.reaching.starts_per_point(placements)
     }
 
+    /// Its obstacles are asked about through `Reaching::obstacles` (and
+    /// finding why marks them all), its floor through its base.
+    fn records_touches(&self) -> bool {
+        true
+    }
+
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
         let eyes = self.looking.eyes(Some(&input.person.vision));
         let (body, _, eyes_index) =
@@ -187,7 +193,7 @@ impl Task for ReachAndGazeTask {
             body_with_look_range(input, eyes.aimed_mm(self.reaching.common.tolerance_mm));
         let hand_chain = chain_of(input, 0);
         let own = input.base.own_body();
-        let obstacles = GazeObstacles::new(input.room, reaching, own);
+        let obstacles = GazeObstacles::new(input, reaching);
         let query = reaching.query(
             target.position_mm,
             mix_seed(reaching.common.seed, "reach+gaze", &target.position_mm),

@@ -22,7 +22,7 @@
 use nalgebra::Point3;
 
 use super::common::Reaching;
-use crate::collision::{Obstacles, PlacedObstacles};
+use crate::collision::{obstacle_bounds, Obstacles, PlacedObstacles, TOUCH_MARGIN_MM};
 use crate::floor::Routes;
 use crate::kinematics::{Chain, JointKind};
 use crate::plugin::{Placement, Search, TaskInput};
@@ -271,10 +271,11 @@ impl Failed<'_> {
                 tried.push(i);
             }
         }
-        let clearance_mm = self.reaching.common.clearance_mm;
         let alone_enough = |i: usize| {
             let without = self.without_furniture(&[i]);
-            let obstacles = Obstacles::new(&without, clearance_mm);
+            // The obstacles by their indices in the room as it is (what
+            // they touch is recorded by those).
+            let obstacles = obstacles.without(&[Blocker::Obstacle(i)]);
             self.reaches(&self.solve_in(&without, self.chain, Some(&obstacles), own))
         };
         let enough: Vec<usize> = tried.iter().copied().filter(|&i| alone_enough(i)).collect();
@@ -323,7 +324,33 @@ impl Failed<'_> {
             .collect();
         near.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
         near.truncate(n);
+        self.note_nearest(&near, n, counts);
         near
+    }
+
+    /// For watch mode's cache: each obstacle `counts` takes that a move
+    /// within the touch margin could bring among the `n` nearest (`near`)
+    /// counts as touched. One whose bounds are farther than the farthest
+    /// of them by twice the margin stays farther when its bounds move
+    /// within the margin (by at most the margin times the root of three).
+    fn note_nearest(&self, near: &[(f64, usize)], n: usize, counts: impl Fn(usize) -> bool) {
+        let Some(touched) = self.input.touched else {
+            return;
+        };
+        let farthest_mm = match near.last() {
+            Some(&(d, _)) if near.len() == n => d,
+            _ => f64::INFINITY,
+        };
+        let bounds = obstacle_bounds(self.input.room);
+        for (i, b) in bounds.iter().enumerate().filter(|(i, _)| counts(*i)) {
+            let close = b.is_none_or(|[lo, hi]| {
+                let nearest = self.target_mm.sup(&lo).inf(&hi);
+                (nearest - self.target_mm).norm() <= farthest_mm + 2.0 * TOUCH_MARGIN_MM
+            });
+            if close {
+                touched.mark(i);
+            }
+        }
     }
 
     /// The task's room without the obstacles `removed` (all of them when

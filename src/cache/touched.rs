@@ -1,0 +1,111 @@
+//! Answers kept by what their questions touched. A task that records
+//! which obstacles its questions came near (`collision::Touched`) keeps
+//! its answer under a key of everything but the obstacles (its settings,
+//! subject, person, placements and the floor), beside the room's
+//! obstacles as they were. A later room with the same key takes the
+//! answer when each obstacle is as it was, or was not touched and still
+//! lies within its old bounds grown by the margin: every question then
+//! gets the answer it got, so the run would be the same run. An obstacle
+//! near the task's points counts as touched whatever the record says: a
+//! mobile base measures an approach against the face a target is on.
+
+use std::collections::hash_map::DefaultHasher;
+use std::hash::Hasher;
+
+use nalgebra::Point3;
+
+use crate::bases::ON_FACE_MM;
+use crate::collision::{bounds_meet, bounds_within, obstacle_bounds, TouchedSet, TOUCH_MARGIN_MM};
+use crate::report::TaskReport;
+use crate::scene::Room;
+
+/// One of the room's obstacles as a kept answer saw it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Seen {
+    /// Its bounds as the collision checks hold them (none: a mesh with
+    /// no solid, which they leave out).
+    bounds: Option<[Point3<f64>; 2]>,
+    /// A hash of it by value, name included.
+    value: u64,
+}
+
+/// The room's obstacles (the boxes, then the meshes) as seen now.
+pub(super) fn seen(room: &Room) -> Vec<Seen> {
+    obstacle_bounds(room)
+        .into_iter()
+        .enumerate()
+        .map(|(i, bounds)| {
+            let mut h = DefaultHasher::new();
+            room.hash_obstacle(i, &mut h);
+            Seen {
+                bounds,
+                value: h.finish(),
+            }
+        })
+        .collect()
+}
+
+/// An answer kept with what it depended on of the room's obstacles.
+#[derive(Clone)]
+pub(super) struct Kept {
+    pub report: TaskReport,
+    /// What its questions touched, and the obstacles near its points.
+    touched: TouchedSet,
+    /// The room's obstacles as they were when it was found.
+    seen: Vec<Seen>,
+}
+
+impl Kept {
+    /// `report`, found in a room whose obstacles were `seen`, its
+    /// questions having touched `touched`; the task's points lie within
+    /// `points_bounds`.
+    pub fn new(
+        report: TaskReport,
+        mut touched: TouchedSet,
+        seen: Vec<Seen>,
+        points_bounds: Option<[Point3<f64>; 2]>,
+    ) -> Self {
+        // A box within this of a point may hold the face an approach is
+        // measured against (a hand's lift from a map's surface included).
+        let face_mm = ON_FACE_MM + 2.0 * TOUCH_MARGIN_MM + 100.0;
+        for (i, s) in seen.iter().enumerate() {
+            let near = match (s.bounds, points_bounds) {
+                (Some(b), Some(p)) => bounds_meet(&b, &p, face_mm),
+                _ => true,
+            };
+            if near {
+                touched.insert(i);
+            }
+        }
+        Kept {
+            report,
+            touched,
+            seen,
+        }
+    }
+
+    /// Whether the answer holds in a room (of the same key) whose
+    /// obstacles are `now`.
+    pub fn holds(&self, now: &[Seen]) -> bool {
+        self.seen.len() == now.len()
+            && (self.seen.iter().zip(now).enumerate()).all(|(i, (was, is))| {
+                was.value == is.value
+                    || (!self.touched.contains(i)
+                        && match (was.bounds, is.bounds) {
+                            (Some(a), Some(b)) => bounds_within(&b, &a, TOUCH_MARGIN_MM),
+                            (None, None) => true,
+                            _ => false,
+                        })
+            })
+    }
+}
+
+/// The bounds of `points`, none if there are none.
+pub(super) fn points_bounds(points: &[Point3<f64>]) -> Option<[Point3<f64>; 2]> {
+    let first = *points.first()?;
+    Some(
+        points
+            .iter()
+            .fold([first, first], |[lo, hi], p| [lo.inf(p), hi.sup(p)]),
+    )
+}

@@ -1,0 +1,148 @@
+//! Which of a room's obstacles a task's questions came near: the record
+//! watch mode keeps beside a task's answer, so that an obstacle moved a
+//! little where no question came near it leaves the answer as it was.
+//!
+//! An obstacle is marked when its bounds, grown by [`TOUCH_MARGIN_MM`] on
+//! every side, meet the bounds of a question that is put to it (a solid
+//! of the person, a line of sight) before the exact test. An obstacle not
+//! marked was, at every question, farther than the margin from it along
+//! some axis; moved or resized within its grown bounds it still is, so
+//! every question gets the answer it got, and the task's whole run, which
+//! depends on the room only through these questions (and the floor,
+//! which the cache compares whole), is the same run. A question that
+//! stops at the first obstacle it meets marks only those it looked at:
+//! the rest could not change its answer.
+
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+
+use nalgebra::Point3;
+
+/// How far beyond an obstacle's bounds a question marks it: an obstacle
+/// not marked may move or grow by up to this on every side without
+/// changing the run.
+pub const TOUCH_MARGIN_MM: f64 = 5.0;
+
+/// The obstacles (by index: the boxes, then the meshes) one task's
+/// questions came near, recorded as it runs, from any thread.
+#[derive(Debug, Default)]
+pub struct Touched {
+    words: Vec<AtomicU64>,
+    /// Every obstacle counts as touched (a question that looked at them
+    /// all, such as which are nearest).
+    all: AtomicBool,
+}
+
+/// What a task's run touched, once it has ended.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum TouchedSet {
+    /// These obstacles, by index.
+    Some(Vec<u64>),
+    /// Every obstacle.
+    All,
+}
+
+impl Touched {
+    /// None touched yet, of a room with `obstacles` obstacles.
+    pub fn new(obstacles: usize) -> Self {
+        Touched {
+            words: (0..obstacles.div_ceil(64))
+                .map(|_| AtomicU64::new(0))
+                .collect(),
+            all: AtomicBool::new(false),
+        }
+    }
+
+    /// Obstacle `index` was touched.
+    pub fn mark(&self, index: usize) {
+        let bit = 1u64 << (index % 64);
+        match self.words.get(index / 64) {
+            // Read first: the threads of one task mark the same few
+            // obstacles again and again, and a write each time would pass
+            // the line between them.
+            Some(word) if word.load(Ordering::Relaxed) & bit == 0 => {
+                word.fetch_or(bit, Ordering::Relaxed);
+            }
+            Some(_) => {}
+            None => self.mark_all(),
+        }
+    }
+
+    /// Every obstacle was touched.
+    pub fn mark_all(&self) {
+        self.all.store(true, Ordering::Relaxed);
+    }
+
+    /// What was touched.
+    pub fn set(&self) -> TouchedSet {
+        if self.all.load(Ordering::Relaxed) {
+            return TouchedSet::All;
+        }
+        TouchedSet::Some(
+            self.words
+                .iter()
+                .map(|w| w.load(Ordering::Relaxed))
+                .collect(),
+        )
+    }
+}
+
+impl TouchedSet {
+    /// Whether obstacle `index` was touched.
+    pub fn contains(&self, index: usize) -> bool {
+        match self {
+            TouchedSet::All => true,
+            TouchedSet::Some(words) => words
+                .get(index / 64)
+                .is_none_or(|w| w & (1u64 << (index % 64)) != 0),
+        }
+    }
+
+    /// Obstacle `index` counts as touched too.
+    pub fn insert(&mut self, index: usize) {
+        if let TouchedSet::Some(words) = self {
+            if words.len() <= index / 64 {
+                words.resize(index / 64 + 1, 0);
+            }
+            words[index / 64] |= 1u64 << (index % 64);
+        }
+    }
+}
+
+/// Whether the bounds `a` and `b` meet once `a` is grown by `grow_mm` on
+/// every side.
+pub fn bounds_meet(a: &[Point3<f64>; 2], b: &[Point3<f64>; 2], grow_mm: f64) -> bool {
+    (0..3).all(|i| a[0][i] - grow_mm <= b[1][i] && b[0][i] <= a[1][i] + grow_mm)
+}
+
+/// Whether `inner` lies within `outer` grown by `grow_mm` on every side.
+pub fn bounds_within(inner: &[Point3<f64>; 2], outer: &[Point3<f64>; 2], grow_mm: f64) -> bool {
+    (0..3).all(|i| outer[0][i] - grow_mm <= inner[0][i] && inner[1][i] <= outer[1][i] + grow_mm)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn marks_are_kept_by_index_and_all_covers_every_index() {
+        let touched = Touched::new(130);
+        touched.mark(3);
+        touched.mark(129);
+        let set = touched.set();
+        assert!(set.contains(3) && set.contains(129));
+        assert!(!set.contains(4) && !set.contains(64));
+        touched.mark_all();
+        assert!(touched.set().contains(4));
+    }
+
+    #[test]
+    fn grown_bounds_meet_and_hold() {
+        let b = [Point3::new(0.0, 0.0, 0.0), Point3::new(10.0, 10.0, 10.0)];
+        let near = [Point3::new(13.0, 0.0, 0.0), Point3::new(20.0, 5.0, 5.0)];
+        assert!(!bounds_meet(&b, &near, 2.0));
+        assert!(bounds_meet(&b, &near, 3.0));
+        let moved = [Point3::new(1.0, -1.0, 0.0), Point3::new(11.0, 9.0, 10.0)];
+        assert!(bounds_within(&moved, &b, 1.0));
+        assert!(!bounds_within(&moved, &b, 0.5));
+    }
+}
