@@ -6,7 +6,8 @@
 //!
 //! `cargo build --release && cargo run --release --example bench_watch -- EDIT [SAVES]`,
 //! EDIT one of `target` (a target moved 1 mm), `shelf` (shelf_3 up 1 mm),
-//! `tall` (the tall cabinet's top up 1 mm), each undone at the next save;
+//! `shelf_side` (shelf_3 along the wall by 1 mm), `tall` (the tall
+//! cabinet's top up 1 mm), each undone at the next save;
 //! or `shelf_on` (shelf_3 up 1 mm further at every save, never back: a
 //! room not seen before at every save). Prints each save's time and
 //! summary, then the least, median and greatest.
@@ -17,7 +18,7 @@ use std::process::{Command, Stdio};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
-const EDITS: [(&str, &str, &str); 3] = [
+const EDITS: [(&str, &str, &str); 4] = [
     (
         "target",
         "target counter_front  at (550, 1500, counter_h + 50)",
@@ -27,6 +28,11 @@ const EDITS: [(&str, &str, &str); 3] = [
         "shelf",
         "box shelf_3 at (1500, 2900, 1400)",
         "box shelf_3 at (1500, 2900, 1401)",
+    ),
+    (
+        "shelf_side",
+        "box shelf_3 at (1500, 2900, 1400)",
+        "box shelf_3 at (1501, 2900, 1400)",
     ),
     (
         "tall",
@@ -42,7 +48,7 @@ fn main() {
     let onward = edit == "shelf_on";
     let named = if onward { "shelf" } else { edit };
     let Some(&(_, from, to)) = EDITS.iter().find(|(name, ..)| *name == named) else {
-        panic!("EDIT is target, shelf, tall or shelf_on");
+        panic!("EDIT is target, shelf, shelf_side, tall or shelf_on");
     };
     let original = std::fs::read_to_string("examples/kitchen_wheelchair.reach")
         .expect("run from the crate's directory");

@@ -180,7 +180,9 @@ impl Routes {
     /// The room's obstacles (boxes, then meshes, by index) that close in
     /// the floor a base of `footprint` at `heading_rad` with its hip at
     /// `hip_mm` cannot get to from a door: those within the footprint's
-    /// reach of that floor's edge, nearest first.
+    /// reach of that floor's edge that come within the heights of its
+    /// parts (a wall cabinet over the floor closes nothing in), nearest
+    /// first.
     pub fn enclosing(
         room: &Room,
         footprint: &Footprint,
@@ -201,10 +203,12 @@ impl Routes {
             return Vec::new();
         };
         let reach_mm = footprint.extent_mm() + SPARE_MM;
+        let bands = footprint.bands_mm();
         let mut near: Vec<(f64, usize)> = room
             .boxes
             .iter()
             .enumerate()
+            .filter(|(_, b)| bands.iter().any(|&band| b.meets_band(band)))
             .map(|(i, b)| {
                 let outline = Polygon::new(LineString::from(box_outline(b)), Vec::new());
                 (Euclidean.distance(&outline, piece.exterior()), i)

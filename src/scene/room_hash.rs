@@ -38,19 +38,25 @@ impl Room {
     }
 
     /// Everything the floor of a base whose footprint's parts stand at the
-    /// heights `bands_mm` depends on: the size, the doors, each box's name,
-    /// outline on the floor and turn and, for each band, whether the box
-    /// comes within it (how high it is otherwise does not matter: a shelf
-    /// raised within a band leaves the floor as it was), every mesh by
-    /// value.
+    /// heights `bands_mm` depends on: the size, the doors, each box's turn
+    /// (the routes from a door follow the sides of turned boxes) and, for
+    /// each band, whether the box comes within it, and the name and
+    /// outline on the floor of each box that comes within one (how high it
+    /// is otherwise does not matter: a shelf raised within a band leaves
+    /// the floor as it was, and a wall cabinet above every band may move
+    /// anywhere), every mesh by value.
     pub fn hash_floor(&self, bands_mm: &[[f64; 2]], h: &mut impl Hasher) {
         hash_bits(self.size_mm.iter(), h);
         (self.boxes.len(), self.meshes.len()).hash(h);
         for b in &self.boxes {
-            b.name.hash(h);
-            let (c, s) = (&b.corner_mm, &b.size_mm);
-            hash_bits(&[c.x, c.y, s.x, s.y, b.yaw_rad], h);
-            bands_mm.iter().for_each(|&band| b.meets_band(band).hash(h));
+            let meets: Vec<bool> = bands_mm.iter().map(|&band| b.meets_band(band)).collect();
+            meets.hash(h);
+            b.yaw_rad.to_bits().hash(h);
+            if meets.contains(&true) {
+                b.name.hash(h);
+                let (c, s) = (&b.corner_mm, &b.size_mm);
+                hash_bits(&[c.x, c.y, s.x, s.y], h);
+            }
         }
         let meshes = self.boxes.len()..self.boxes.len() + self.meshes.len();
         meshes.for_each(|i| self.hash_obstacle(i, h));
