@@ -282,3 +282,61 @@ fn a_shelf_raised_a_millimetre_re_runs_only_the_tasks_that_came_near_it() {
         }
     }
 }
+
+/// `before` run, then `after` run through the same cache: the cached
+/// report is the fresh one (the files written to a directory of their
+/// own, the scenario as `scene.reach`).
+fn cached_equals_fresh(files: &[(&str, &str)], before: &str, after: &str) {
+    let dir = tempfile::tempdir().unwrap();
+    for (name, text) in files {
+        std::fs::write(dir.path().join(name), text).unwrap();
+    }
+    let path = dir.path().join("scene.reach");
+    let checked_file = |text: &str| {
+        std::fs::write(&path, text).unwrap();
+        let (_, checked) = reach::check(Input::Path(&path), &Registry::builtin());
+        checked.expect("the scenario checks")
+    };
+    let mut cache = TaskCache::default();
+    cache.run(&checked_file(before), &NoProgress);
+    let second = checked_file(after);
+    let (cached, _) = cache.run(&second, &NoProgress);
+    assert_eq!(json(&cached), json(&reach::run(&second)));
+}
+
+/// A reach blocked by two boards, whose why names the obstacles nearest
+/// the target together: the second nearest is a small box far beyond the
+/// arm's reach (which the key of the obstacles within reach leaves out).
+/// Renamed, the answer names it by its new name.
+#[test]
+fn a_why_that_names_a_far_obstacle_is_not_kept_when_it_is_renamed() {
+    let room = |name: &str| {
+        format!(
+            "use std::arm\nroom r {{\n  size 3000 x 2600 x 2500\n  box board_a at (2780, 0, 0) size (20, 2600, 2500)\n  box board_b at (2810, 0, 0) size (20, 2600, 2500)\n  box {name} at (1150, 1250, 950) size (20, 100, 100)\n  target mug at (1960, 1300, 1000)\n}}\nperson ben {{ mannequin right_arm base fixed {{ at (2900, 1300, 930) heading 180deg }} }}\nreach mug by ben\n"
+        )
+    };
+    cached_equals_fresh(&[], &room("far_box"), &room("far_box2"));
+}
+
+/// A mesh whose triangle beside the target has no area (left out of its
+/// solid, but counted by its vertices when finding why): renamed, or that
+/// triangle moved away, the answer is worked out again.
+#[test]
+fn a_mesh_measured_by_its_vertices_is_touched_by_them() {
+    let obj = |far: bool| {
+        let at = if far { "2850 2450" } else { "600 1300" };
+        format!(
+            "v 2800 2400 0\nv 2900 2400 0\nv 2800 2500 0\nv 2800 2400 100\nv {at} 1100\nv {at} 1110\nv {at} 1120\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\nf 5 6 7\n"
+        )
+    };
+    let room = |name: &str, file: &str| {
+        format!(
+            "use std::arm\nroom r {{\n  size 3000 x 2600 x 2500\n  box board_a at (740, 0, 0) size (20, 2600, 2500)\n  box board_b at (770, 0, 0) size (20, 2600, 2500)\n  mesh {name} from \"{file}\" unit mm\n  target mug at (600, 1300, 1000)\n}}\nperson ben {{ mannequin right_arm base fixed {{ at (1000, 1300, 930) heading 180deg }} }}\nreach mug by ben\n"
+        )
+    };
+    let files = [("near.obj", obj(false)), ("far.obj", obj(true))];
+    let files: Vec<(&str, &str)> = files.iter().map(|(n, t)| (*n, t.as_str())).collect();
+    let before = room("stray", "near.obj");
+    cached_equals_fresh(&files, &before, &room("stray2", "near.obj"));
+    cached_equals_fresh(&files, &before, &room("stray", "far.obj"));
+}

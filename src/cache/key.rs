@@ -94,16 +94,24 @@ fn loose_key(scenario: &Scenario, task: &TaskSpec, tried: &[Tried]) -> Option<u6
     }
     let room = &scenario.rooms[task.room];
     Some(hash_of(|h| {
-        (&task.kind, &task.options, &task.effectors).hash(h);
-        hash_subject(&task.subject, room, h);
-        hash_person(&scenario.persons[task.person], h);
-        room.name.hash(h);
-        hash_bits(room.size_mm.iter(), h);
-        hash_tried(tried, h);
+        hash_task(scenario, task, tried, h);
         if base.footprint().is_some() {
             room.hash_floor(&footprint_bands(scenario, task), h);
         }
     }))
+}
+
+/// What both keys hold: the task's settings, subject and person, its
+/// room's name and size, and where its base may put the hip for each
+/// point.
+fn hash_task(scenario: &Scenario, task: &TaskSpec, tried: &[Tried], h: &mut DefaultHasher) {
+    let room = &scenario.rooms[task.room];
+    (&task.kind, &task.options, &task.effectors).hash(h);
+    hash_subject(&task.subject, room, h);
+    hash_person(&scenario.persons[task.person], h);
+    room.name.hash(h);
+    hash_bits(room.size_mm.iter(), h);
+    hash_tried(tried, h);
 }
 
 /// Where the base may put the hip for each point.
@@ -160,12 +168,7 @@ fn footprint_bands(scenario: &Scenario, task: &TaskSpec) -> Vec<[f64; 2]> {
 fn key(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence, tried: &[Tried]) -> u64 {
     let room = &scenario.rooms[task.room];
     hash_of(|h| {
-        (&task.kind, &task.options, &task.effectors).hash(h);
-        hash_subject(&task.subject, room, h);
-        hash_person(&scenario.persons[task.person], h);
-        room.name.hash(h);
-        hash_bits(room.size_mm.iter(), h);
-        hash_tried(tried, h);
+        hash_task(scenario, task, tried, h);
         // Where the room has doors, whether a base that moves can get to a
         // place depends on the doors and on the floor of the whole room.
         let routed = !room.doors.is_empty() && tried.iter().any(|t| t.hips.around.is_some());

@@ -24,6 +24,9 @@ use crate::scenario::{Scenario, TaskSpec};
 /// Results of earlier runs, by key.
 #[derive(Default)]
 pub struct TaskCache {
+    /// Results by their full key: all but those whose run ranked the
+    /// room's obstacles by distance (finding why), which may name an
+    /// obstacle beyond the reach the key holds.
     results: HashMap<u64, TaskReport>,
     /// Results by the key of all but the obstacles, with what their
     /// questions touched.
@@ -55,30 +58,34 @@ impl TaskCache {
             .collect();
         let mut ran_now = scenario.run_tasks_recording(&stale, progress).into_iter();
         let mut kept = HashMap::new();
+        let mut results = HashMap::new();
         let mut tasks = Vec::with_capacity(keys.len());
         for ((task, k), held) in scenario.tasks.iter().zip(&keys).zip(held) {
-            let report = match held {
+            let (report, by_strict_key) = match held {
                 Some(report) => {
                     let old = k.loose.and_then(|l| self.kept.remove(&l).map(|e| (l, e)));
+                    let ranked = old.as_ref().is_some_and(|(_, e)| e.ranked());
                     kept.extend(old);
-                    report
+                    (report, !ranked)
                 }
                 None => {
                     let (report, set) = ran_now.next().expect("an answer per task run");
+                    let ranked = set.as_ref().is_some_and(|s| s.ranked());
                     if let (Some(l), Some(set)) = (k.loose, set) {
                         let room = seen[task.room].clone();
                         kept.insert(l, touched::Kept::new(report.clone(), set, room, k.points));
                     }
-                    report
+                    (report, !ranked)
                 }
             };
+            if by_strict_key {
+                results.insert(k.strict, report.clone());
+            }
             tasks.push(report);
         }
         let ran = stale.len();
         self.kept = kept;
-        self.results = (keys.iter().map(|k| k.strict))
-            .zip(tasks.iter().cloned())
-            .collect();
+        self.results = results;
         // Standards are checked again every time: they read the whole room.
         let all: Vec<&TaskSpec> = scenario.tasks.iter().collect();
         let standards = scenario.run_standards(&all, &tasks);

@@ -84,6 +84,11 @@ impl Kept {
         }
     }
 
+    /// Whether its run ranked the room's obstacles by distance.
+    pub fn ranked(&self) -> bool {
+        self.touched.ranked()
+    }
+
     /// Whether the answer holds in a room (of the same key) whose
     /// obstacles are `now`.
     pub fn holds(&self, now: &[Seen]) -> bool {

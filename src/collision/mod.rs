@@ -24,7 +24,7 @@ use parry3d_f64::query::{self, Ray};
 use parry3d_f64::shape::Capsule as ParryCapsule;
 
 use crate::geometry::{Capsule, Cuboid};
-use crate::scene::{Blocker, MeshPart, MeshShape, Room, Wall};
+use crate::scene::{Blocker, MeshObstacle, MeshPart, MeshShape, Room, Wall};
 
 /// A mesh obstacle as parry holds it, and its name for reports.
 #[derive(Clone)]
@@ -86,7 +86,7 @@ impl Obstacles {
             .enumerate()
             .filter_map(|(k, m)| {
                 let MeshShape { parts, solid } = m.shape()?.clone();
-                let bounds = parts_bounds(&parts);
+                let bounds = mesh_bounds(m, &parts);
                 Some(Mesh {
                     index: first_mesh + k,
                     name: m.name.clone(),
@@ -315,11 +315,25 @@ fn parts_bounds(parts: &[MeshPart]) -> [Point3<f64>; 2] {
     )
 }
 
+/// The bounds of a mesh: of its solid's `parts` and of every vertex it
+/// lists (a triangle without area is left out of the solid, but a search
+/// for why measures the mesh by its vertices).
+fn mesh_bounds(m: &MeshObstacle, parts: &[MeshPart]) -> [Point3<f64>; 2] {
+    let [lo, hi] = parts_bounds(parts);
+    let vertices = m.vertices_mm.iter();
+    vertices.fold([lo, hi], |[lo, hi], v| [lo.inf(v), hi.sup(v)])
+}
+
 /// The bounds of each of the room's obstacles (the boxes, then the
-/// meshes) as [`Obstacles`] holds them: none for a mesh with no solid.
+/// meshes) as [`Obstacles`] holds them (a mesh's hold its vertices too):
+/// none for a mesh with neither solid nor vertices.
 pub fn obstacle_bounds(room: &Room) -> Vec<Option<[Point3<f64>; 2]>> {
     let boxes = room.boxes.iter().map(|b| Some(b.cuboid().bounds()));
-    let meshes = (room.meshes.iter()).map(|m| m.shape().map(|s| parts_bounds(&s.parts)));
+    let meshes = (room.meshes.iter()).map(|m| {
+        let parts = m.shape().map_or(&[][..], |s| &s.parts[..]);
+        let [lo, hi] = mesh_bounds(m, parts);
+        (lo.x <= hi.x).then_some([lo, hi])
+    });
     boxes.chain(meshes).collect()
 }
 

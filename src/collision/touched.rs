@@ -11,7 +11,10 @@
 //! depends on the room only through these questions (and the floor,
 //! which the cache compares whole), is the same run. A question that
 //! stops at the first obstacle it meets marks only those it looked at:
-//! the rest could not change its answer.
+//! the rest could not change its answer. A run that ranks the room's
+//! obstacles by their distance (finding why) says so: its answer depends
+//! on obstacles however far, which a key of the obstacles within reach
+//! does not hold.
 
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
@@ -27,18 +30,19 @@ pub const TOUCH_MARGIN_MM: f64 = 5.0;
 #[derive(Debug, Default)]
 pub struct Touched {
     words: Vec<AtomicU64>,
-    /// Every obstacle counts as touched (a question that looked at them
-    /// all, such as which are nearest).
+    /// Every obstacle counts as touched.
     all: AtomicBool,
+    /// The obstacles were ranked by their distance.
+    ranked: AtomicBool,
 }
 
 /// What a task's run touched, once it has ended.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum TouchedSet {
-    /// These obstacles, by index.
-    Some(Vec<u64>),
-    /// Every obstacle.
-    All,
+pub struct TouchedSet {
+    /// The obstacles touched, by index, as bits (none: every obstacle).
+    words: Option<Vec<u64>>,
+    /// Whether the run ranked the room's obstacles by their distance.
+    ranked: bool,
 }
 
 impl Touched {
@@ -49,6 +53,7 @@ impl Touched {
                 .map(|_| AtomicU64::new(0))
                 .collect(),
             all: AtomicBool::new(false),
+            ranked: AtomicBool::new(false),
         }
     }
 
@@ -72,34 +77,41 @@ impl Touched {
         self.all.store(true, Ordering::Relaxed);
     }
 
+    /// The run ranked the room's obstacles by their distance.
+    pub fn mark_ranked(&self) {
+        self.ranked.store(true, Ordering::Relaxed);
+    }
+
     /// What was touched.
     pub fn set(&self) -> TouchedSet {
-        if self.all.load(Ordering::Relaxed) {
-            return TouchedSet::All;
+        let all = self.all.load(Ordering::Relaxed);
+        let words = self.words.iter().map(|w| w.load(Ordering::Relaxed));
+        TouchedSet {
+            words: (!all).then(|| words.collect()),
+            ranked: self.ranked.load(Ordering::Relaxed),
         }
-        TouchedSet::Some(
-            self.words
-                .iter()
-                .map(|w| w.load(Ordering::Relaxed))
-                .collect(),
-        )
     }
 }
 
 impl TouchedSet {
     /// Whether obstacle `index` was touched.
     pub fn contains(&self, index: usize) -> bool {
-        match self {
-            TouchedSet::All => true,
-            TouchedSet::Some(words) => words
+        self.words.as_ref().is_none_or(|words| {
+            words
                 .get(index / 64)
-                .is_none_or(|w| w & (1u64 << (index % 64)) != 0),
-        }
+                .is_none_or(|w| w & (1u64 << (index % 64)) != 0)
+        })
+    }
+
+    /// Whether the run ranked the room's obstacles by their distance: its
+    /// answer may name an obstacle however far from the task.
+    pub fn ranked(&self) -> bool {
+        self.ranked
     }
 
     /// Obstacle `index` counts as touched too.
     pub fn insert(&mut self, index: usize) {
-        if let TouchedSet::Some(words) = self {
+        if let Some(words) = &mut self.words {
             if words.len() <= index / 64 {
                 words.resize(index / 64 + 1, 0);
             }

@@ -39,7 +39,11 @@ impl IkProblem<'_> {
     }
 }
 
-/// A solver built from its settings.
+/// A solver built from its settings. It asks about the room only through
+/// the problem it is given ([`IkProblem::collision`], or the problem's
+/// obstacles' questions) and keeps nothing from one solve to the next:
+/// watch mode keeps a task's answer by what those questions came near
+/// (`collision::Touched`).
 pub trait Solver: Send + Sync {
     fn solve(&self, problem: &IkProblem<'_>) -> IkSolution;
     /// A solve that may stop at the first start whose posture reaches the

@@ -328,7 +328,8 @@ impl Failed<'_> {
         near
     }
 
-    /// For watch mode's cache: each obstacle `counts` takes that a move
+    /// For watch mode's cache: the obstacles were ranked (the answer may
+    /// name one however far), and each obstacle `counts` takes that a move
     /// within the touch margin could bring among the `n` nearest (`near`)
     /// counts as touched. One whose bounds are farther than the farthest
     /// of them by twice the margin stays farther when its bounds move
@@ -337,6 +338,7 @@ impl Failed<'_> {
         let Some(touched) = self.input.touched else {
             return;
         };
+        touched.mark_ranked();
         let farthest_mm = match near.last() {
             Some(&(d, _)) if near.len() == n => d,
             _ => f64::INFINITY,
