@@ -175,8 +175,12 @@ impl Obstacles {
         }
     }
 
-    /// The name of the room's obstacle `index` (as the hits give it).
+    /// The name of the room's obstacle `index` (as the hits give it): an
+    /// obstacle whose name is asked for counts as touched.
     pub fn name(&self, index: usize) -> &str {
+        if let Some(touched) = &self.touched {
+            touched.mark(index);
+        }
         match self.boxes.get(index) {
             Some((name, ..)) => name,
             None => self
@@ -472,6 +476,39 @@ mod tests {
             None,
             "stops short"
         );
+    }
+
+    #[test]
+    fn questions_mark_the_obstacles_they_come_within_the_margin_of() {
+        let boxes = vec![
+            block("near", [500.0, 500.0, 500.0], [100.0; 3], 0.0),
+            block("far", [1500.0, 500.0, 500.0], [100.0; 3], 0.0),
+            block("named", [2500.0, 500.0, 500.0], [100.0; 3], 0.0),
+        ];
+        let touched = Arc::new(Touched::new(boxes.len()));
+        let o = Obstacles::new(&room_with(boxes), 0.0).recording(Some(&touched));
+        // A capsule 3 mm clear of `near`'s side: no hit, but within the
+        // margin; `far` is not near it.
+        let c = Capsule::new(
+            Point3::new(487.0, 550.0, 550.0),
+            Point3::new(487.0, 550.0, 580.0),
+            10.0,
+        );
+        assert_eq!(o.capsule_hit(&c), None);
+        o.name(2);
+        let set = touched.set();
+        assert!(set.contains(0) && set.contains(2));
+        assert!(!set.contains(1));
+        // Farther than the margin: not marked.
+        let quiet = Arc::new(Touched::new(3));
+        let o = o.recording(Some(&quiet));
+        let away = Capsule::new(
+            Point3::new(470.0, 550.0, 550.0),
+            Point3::new(470.0, 550.0, 580.0),
+            10.0,
+        );
+        assert_eq!(o.capsule_hit(&away), None);
+        assert!(!quiet.set().contains(0));
     }
 
     /// A closed cube of side 100 mm at the origin, faces outwards.
