@@ -124,7 +124,7 @@ fn box_bounds(b: &BoxObstacle) -> Bounds {
 }
 
 fn mesh_bounds(m: &MeshObstacle) -> Bounds {
-    Bounds::of(m.vertices_mm.iter().copied())
+    Bounds::of(m.vertex_bounds().into_iter().flatten())
 }
 
 #[cfg(test)]

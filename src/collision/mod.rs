@@ -324,8 +324,10 @@ fn parts_bounds(parts: &[MeshPart]) -> [Point3<f64>; 2] {
 /// for why measures the mesh by its vertices).
 fn mesh_bounds(m: &MeshObstacle, parts: &[MeshPart]) -> [Point3<f64>; 2] {
     let [lo, hi] = parts_bounds(parts);
-    let vertices = m.vertices_mm.iter();
-    vertices.fold([lo, hi], |[lo, hi], v| [lo.inf(v), hi.sup(v)])
+    match m.vertex_bounds() {
+        Some([vlo, vhi]) => [lo.inf(&vlo), hi.sup(&vhi)],
+        None => [lo, hi],
+    }
 }
 
 /// The bounds of each of the room's obstacles (the boxes, then the

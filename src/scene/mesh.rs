@@ -26,6 +26,8 @@ pub struct MeshObstacle {
     pub triangles: Vec<[u32; 3]>,
     /// Whether every piece closes, found when the triangles were cleaned.
     encloses: bool,
+    /// The box that holds every vertex (none without vertices).
+    vertex_bounds: Option<[Point3<f64>; 2]>,
     shape: ShapeCache,
 }
 
@@ -78,13 +80,23 @@ impl MeshObstacle {
     /// The mesh of `triangles` (indices into `vertices_mm`), cleaned.
     pub fn new(name: String, vertices_mm: Vec<Point3<f64>>, triangles: &[[u32; 3]]) -> Self {
         let (triangles, encloses) = cleaned_triangles(&vertices_mm, triangles);
+        let vertex_bounds = vertices_mm.first().map(|&first| {
+            (vertices_mm.iter()).fold([first, first], |[lo, hi], v| [lo.inf(v), hi.sup(v)])
+        });
         MeshObstacle {
             name,
             vertices_mm,
             triangles,
             encloses,
+            vertex_bounds,
             shape: ShapeCache::default(),
         }
+    }
+
+    /// The box that holds every vertex, triangles without area included
+    /// (none for a mesh without vertices).
+    pub fn vertex_bounds(&self) -> Option<[Point3<f64>; 2]> {
+        self.vertex_bounds
     }
 
     /// Whether the mesh encloses solids (every piece closed): then inside

@@ -295,9 +295,7 @@ struct Measure<'r> {
 fn mesh_bounds(room: &Room) -> Vec<BoxObstacle> {
     (room.meshes.iter())
         .filter_map(|m| {
-            let first = m.vertices_mm.first()?;
-            let (lo, hi) =
-                (m.vertices_mm.iter()).fold((*first, *first), |(lo, hi), v| (lo.inf(v), hi.sup(v)));
+            let [lo, hi] = m.vertex_bounds()?;
             Some(BoxObstacle {
                 name: m.name.clone(),
                 corner_mm: lo,

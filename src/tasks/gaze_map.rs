@@ -94,7 +94,7 @@ impl Task for GazeMapTask {
     }
 
     /// Its obstacles are asked about through `Reaching::obstacles` (and
-    /// finding why marks them all), its floor through its base.
+    /// finding why marks those it ranks), its floor through its base.
     fn records_touches(&self) -> bool {
         true
     }

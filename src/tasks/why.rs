@@ -448,13 +448,9 @@ fn distance_to_obstacle(room: &Room, i: usize, p: &Point3<f64>) -> f64 {
         Some(b) => b.cuboid().distance_to_segment(p, p),
         None => {
             let mesh = &room.meshes[i - room.boxes.len()];
-            let (lo, hi) = mesh.vertices_mm.iter().fold(
-                (
-                    Point3::from([f64::INFINITY; 3]),
-                    Point3::from([f64::NEG_INFINITY; 3]),
-                ),
-                |(lo, hi), v| (lo.inf(v), hi.sup(v)),
-            );
+            let Some([lo, hi]) = mesh.vertex_bounds() else {
+                return f64::INFINITY;
+            };
             let outside = (lo - p).sup(&(p - hi)).sup(&nalgebra::Vector3::zeros());
             outside.norm()
         }
