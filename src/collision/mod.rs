@@ -120,7 +120,21 @@ impl Obstacles {
     /// nearer than `r_mm` to them grown by the margin (`touched.rs`): the
     /// obstacle, wherever it moves within them, could meet it. (A line of
     /// sight, which meets what it enters, asks with `r_mm` nought.)
+    #[inline]
     fn note(
+        &self,
+        index: usize,
+        bounds: &[Point3<f64>; 2],
+        segment: (&Point3<f64>, &Point3<f64>, f64),
+        asked: &[Point3<f64>; 2],
+    ) {
+        if self.touched.is_some() {
+            self.note_recorded(index, bounds, segment, asked);
+        }
+    }
+
+    /// [`Obstacles::note`] where the questions are recorded.
+    fn note_recorded(
         &self,
         index: usize,
         bounds: &[Point3<f64>; 2],
