@@ -76,7 +76,7 @@ fn main() {
             }
         };
         let checked_s = start.elapsed().as_secs_f64();
-        let report = reach::run(&scenario);
+        let report = reach::run(&scenario).expect("within the bound on solver work");
         let total_s = start.elapsed().as_secs_f64();
         let answers = report.answers();
         let shares: Vec<String> = answers.iter().map(|a| a.verdict.clone()).collect();

@@ -94,7 +94,7 @@ fn run(path: &Path) -> String {
     let limits = reach::limits::Limits::default();
     let (_, checked) = reach::check_within(Input::Path(path), &registry, &limits);
     let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(false)));
-    let report = reach::run(&scenario);
+    let report = reach::run(&scenario).expect("within the bound on solver work");
     let json = registry.format("json").expect("the json format");
     json.render(&report, &scenario.format_scene())
 }

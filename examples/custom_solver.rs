@@ -128,7 +128,7 @@ fn run_checked() -> (Scenario, Report) {
     );
     match checked {
         Ok(scenario) => {
-            let report = reach::run(&scenario);
+            let report = reach::run(&scenario).expect("within the bound on solver work");
             (scenario, report)
         }
         Err(d) => panic!("{}", d.render(true)),

@@ -184,6 +184,10 @@ struct LimitArgs {
     /// Most solver starts the tasks may need, counted at their worst
     #[arg(long, value_name = "N", default_value_t = DEFAULTS.solver_starts as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.solver_starts as u64))]
     max_solver_starts: u64,
+    /// Most work the solvers may do in one run (about a joint moved once
+    /// a unit), counted as they work
+    #[arg(long, value_name = "UNITS", default_value_t = DEFAULTS.solver_work, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.solver_work))]
+    max_solver_work: u64,
     /// Most people one population may draw
     #[arg(long, value_name = "N", default_value_t = DEFAULTS.people as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.people as u64))]
     max_people: u64,
@@ -205,6 +209,7 @@ impl LimitArgs {
             use_chain: self.max_use_chain as usize,
             alias_chain: self.max_alias_chain as usize,
             solver_starts: self.max_solver_starts,
+            solver_work: self.max_solver_work,
             people: self.max_people as usize,
         }
     }
@@ -386,14 +391,19 @@ fn run(registry: &Registry, e: &Evaluate, shown: &Shown) -> i32 {
     };
     let limits = e.limits.limits();
     let allowed = &e.limits.allow_path;
-    let (_, checked) = reach::check_allowing(Input::Path(&e.file), registry, &limits, allowed);
+    let (sources, checked) =
+        reach::check_allowing(Input::Path(&e.file), registry, &limits, allowed);
     let scenario = match checked {
         Ok(s) => s,
         Err(d) => return shown.diagnostics(&d),
     };
     let bar = crate::bar::Bar::new(!shown.quiet);
-    let report = reach::run_with_progress(&scenario, &bar);
+    let ran = reach::run_with_progress(&scenario, &bar);
     bar.clear();
+    let report = match ran {
+        Ok(report) => report,
+        Err(error) => return shown.diagnostics(&Diagnostics::single(error).attach(&sources)),
+    };
     if let Some(dir) = &e.out {
         if let Err(error) =
             crate::signals::whole(|| reach::output::write_outputs(&report, &scenario, dir))

@@ -126,6 +126,11 @@ pub enum ErrorKind {
         /// The share of the declaration that asks the most.
         decl_starts: u64,
     },
+    #[error(
+        "the run needed more solver work than the limit of {} units, and was stopped",
+        thousands(*.limit)
+    )]
+    TooMuchWork { limit: u64 },
     #[error("the mannequin `{mannequin}` passes through itself at rest: {part} meets {other}")]
     MeetsItself {
         mannequin: String,
@@ -213,7 +218,7 @@ impl ErrorKind {
             Unsupported { .. } | Misplaced { .. } | NoLookLink { .. } => "reach::scene",
             Illegible { .. } => "reach::range",
             NoEffector { .. } => "reach::name",
-            TooLarge { .. } | TooManyStarts { .. } => "reach::limit",
+            TooLarge { .. } | TooManyStarts { .. } | TooMuchWork { .. } => "reach::limit",
             BaseOutsideRoom { .. } => "reach::scene",
             UnknownPlugin { .. }
             | UnknownOption { .. }
@@ -262,6 +267,7 @@ impl ErrorKind {
             TooManyStarts { decl_starts, .. } => {
                 format!("these tasks: up to {} starts", thousands(*decl_starts))
             }
+            TooMuchWork { .. } => "the tasks that may ask the most".into(),
             BaseOutsideRoom { .. } => "cannot be placed for this task".into(),
             Misplaced { .. } => "in a used file".into(),
             Illegible { .. } => "for this size".into(),
@@ -323,6 +329,9 @@ impl ErrorKind {
             }),
             TooManyStarts { .. } => Some(
                 "ask less (a coarser `step`, fewer `starts`, `headings` or `blocked_retries`), or raise --max-solver-starts".into(),
+            ),
+            TooMuchWork { .. } => Some(
+                "ask less (a coarser `step`; fewer `starts`, `blocked_retries` or iterations: `max_iterations`, `sweeps`, `samples`, `kicks`), or raise --max-solver-work; no answer of this run is shown, since some were cut short".into(),
             ),
             BaseOutsideRoom { .. } => Some("a fixed base must stand inside the room: check its `at`".into()),
             Misplaced { .. } => Some("move it to the file you run, which can `use` this one".into()),

@@ -34,6 +34,7 @@ pub mod limits;
 mod loader;
 pub mod machine_diagnostics;
 pub mod meshfile;
+pub mod meter;
 mod names;
 pub mod options;
 pub mod output;
@@ -102,22 +103,39 @@ pub fn check_allowing(
 }
 
 /// Run every task of a checked scenario, in parallel; the report lists them
-/// in the order of the file whatever the number of threads.
-pub fn run(scenario: &Scenario) -> Report {
+/// in the order of the file whatever the number of threads. An error where
+/// the solvers needed more work than the scenario's bound
+/// ([`Limits::solver_work`]; no answer is given, since some were cut short).
+pub fn run(scenario: &Scenario) -> Result<Report, Error> {
     run_with_progress(scenario, &progress::NoProgress)
 }
 
 /// [`run`], telling `progress` how long tasks (maps) advance.
-pub fn run_with_progress(scenario: &Scenario, progress: &dyn progress::Progress) -> Report {
+pub fn run_with_progress(
+    scenario: &Scenario,
+    progress: &dyn progress::Progress,
+) -> Result<Report, Error> {
+    run_counting(scenario, progress).map(|(report, _)| report)
+}
+
+/// [`run_with_progress`], and the work its solvers did, in the units of
+/// [`meter`]: the same on every run and thread count.
+pub fn run_counting(
+    scenario: &Scenario,
+    progress: &dyn progress::Progress,
+) -> Result<(Report, u64), Error> {
     let all: Vec<&scenario::TaskSpec> = scenario.tasks.iter().collect();
-    let mut tasks = scenario.run_tasks(&all, progress);
+    let ran = scenario.run_tasks(&all, progress)?;
+    let work = ran.iter().map(|r| r.work).sum();
+    let mut tasks: Vec<_> = ran.into_iter().map(|r| r.report).collect();
     let standards = scenario.run_standards(&all, &tasks);
     tasks.extend(standards);
-    Report {
+    let report = Report {
         schema: report::SCHEMA_VERSION,
         file: scenario.file.clone(),
         notes: scenario.notes(),
         expectations: scenario.judge(&tasks),
         tasks,
-    }
+    };
+    Ok((report, work))
 }

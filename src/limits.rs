@@ -33,6 +33,10 @@ pub struct Limits {
     /// their worst (every placement tried, every retry run), each weighted
     /// by its solver's iteration options over their defaults.
     pub solver_starts: u64,
+    /// Most work the solvers of one run may do, in the units of
+    /// [`crate::meter`] (about a joint moved once): counted as they work,
+    /// and the run stopped with a diagnostic once past it.
+    pub solver_work: u64,
     /// Most people one population may draw.
     pub people: usize,
 }
@@ -48,6 +52,7 @@ pub const DEFAULTS: Limits = Limits {
     use_chain: 64,
     alias_chain: 16,
     solver_starts: 20_000_000,
+    solver_work: 250_000_000,
     people: 10_000,
 };
 
@@ -71,5 +76,6 @@ pub const CEILINGS: Limits = Limits {
     use_chain: 1024,
     alias_chain: 256,
     solver_starts: 1_000_000_000_000,
+    solver_work: 1_000_000_000_000_000,
     people: 1_000_000,
 };

@@ -101,9 +101,15 @@ impl State {
             &self.also_allowed,
         );
         let mut screen = String::new();
-        let summary = match checked {
-            Ok(scenario) => {
-                let (report, stats) = self.cache.run(&scenario, &reach::progress::NoProgress);
+        // A run past the bound on solver work is an error like the others.
+        let ran = checked.and_then(|scenario| {
+            match self.cache.run(&scenario, &reach::progress::NoProgress) {
+                Ok(ran) => Ok((scenario, ran)),
+                Err(e) => Err(reach::Diagnostics::single(e).attach(&sources)),
+            }
+        });
+        let summary = match ran {
+            Ok((scenario, (report, stats))) => {
                 screen.push_str(&formatter.render(&report, &scenario.format_scene()));
                 if let Some(dir) = out {
                     let written = crate::signals::whole(|| {

@@ -24,7 +24,7 @@ pub fn run(text: &str) -> (reach::scenario::Scenario, Report) {
         &registry,
     );
     let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(false)));
-    let report = reach::run(&scenario);
+    let report = reach::run(&scenario).expect("within the bound on solver work");
     (scenario, report)
 }
 

@@ -170,14 +170,16 @@ proptest! {
     fn a_cached_answer_is_a_fresh_one(mut room in room(), edits in prop::collection::vec(edit(), 1..4)) {
         let mut cache = TaskCache::default();
         if let Some(s) = checked(&room.text()) {
-            cache.run(&s, &NoProgress);
+            cache.run(&s, &NoProgress).expect("within the bound on solver work");
         }
         for e in &edits {
             room.apply(e);
             let Some(s) = checked(&room.text()) else { continue };
-            let (cached, _) = cache.run(&s, &NoProgress);
-            let fresh = reach::run(&s);
+            let (cached, stats) = cache.run(&s, &NoProgress).expect("within the bound on solver work");
+            let (fresh, work) = reach::run_counting(&s, &NoProgress).expect("within the bound on solver work");
             prop_assert_eq!(json(&cached), json(&fresh), "after {:?}", e);
+            // Its work too, which the bound on solver work counts.
+            prop_assert_eq!(stats.work, work, "after {:?}", e);
         }
     }
 }
@@ -195,13 +197,19 @@ fn an_obstacle_moved_far_away_leaves_a_task_cached() {
     };
     let mut cache = TaskCache::default();
     let first = checked(&text(7000)).unwrap();
-    let (before, stats) = cache.run(&first, &NoProgress);
+    let (before, stats) = cache
+        .run(&first, &NoProgress)
+        .expect("within the bound on solver work");
     assert_eq!(stats.ran, 1);
     let far = checked(&text(7200)).unwrap();
-    let (_, stats) = cache.run(&far, &NoProgress);
+    let (_, stats) = cache
+        .run(&far, &NoProgress)
+        .expect("within the bound on solver work");
     assert_eq!((stats.reused, stats.ran), (1, 0), "moved 5 m away");
     let near = checked(&text(750)).unwrap();
-    let (after, stats) = cache.run(&near, &NoProgress);
+    let (after, stats) = cache
+        .run(&near, &NoProgress)
+        .expect("within the bound on solver work");
     assert_eq!(stats.ran, 1, "moved between ben and the mug");
     assert_ne!(json(&before), json(&after));
 }
@@ -239,7 +247,7 @@ proptest! {
         seen.push(seen[0].clone());
         for text in &seen {
             let Some(s) = checked(text) else { continue };
-            let here: serde_json::Value = serde_json::from_str(&json(&reach::run(&s))).unwrap();
+            let here: serde_json::Value = serde_json::from_str(&json(&reach::run(&s).expect("within the bound on solver work"))).unwrap();
             prop_assert_eq!(&here["tasks"], &fresh_process_tasks(text));
         }
     }
@@ -261,14 +269,18 @@ fn a_shelf_raised_a_millimetre_re_runs_only_the_tasks_that_came_near_it() {
     };
     assert_ne!(at(1401), kitchen, "the example still has shelf_3");
     let mut cache = TaskCache::default();
-    let (_, stats) = cache.run(&checked(&at(1400)).unwrap(), &NoProgress);
+    let (_, stats) = cache
+        .run(&checked(&at(1400)).unwrap(), &NoProgress)
+        .expect("within the bound on solver work");
     let tasks = stats.ran;
     for (z, all) in [(1401, false), (1400, false), (1420, true)] {
         let scenario = checked(&at(z)).unwrap();
-        let (cached, stats) = cache.run(&scenario, &NoProgress);
+        let (cached, stats) = cache
+            .run(&scenario, &NoProgress)
+            .expect("within the bound on solver work");
         assert_eq!(
             json(&cached),
-            json(&reach::run(&scenario)),
+            json(&reach::run(&scenario).expect("within the bound on solver work")),
             "shelf_3 at {z}"
         );
         assert_eq!(stats.ran + stats.reused, tasks);
@@ -298,10 +310,17 @@ fn cached_equals_fresh(files: &[(&str, &str)], before: &str, after: &str) {
         checked.expect("the scenario checks")
     };
     let mut cache = TaskCache::default();
-    cache.run(&checked_file(before), &NoProgress);
+    cache
+        .run(&checked_file(before), &NoProgress)
+        .expect("within the bound on solver work");
     let second = checked_file(after);
-    let (cached, _) = cache.run(&second, &NoProgress);
-    assert_eq!(json(&cached), json(&reach::run(&second)));
+    let (cached, _) = cache
+        .run(&second, &NoProgress)
+        .expect("within the bound on solver work");
+    assert_eq!(
+        json(&cached),
+        json(&reach::run(&second).expect("within the bound on solver work"))
+    );
 }
 
 /// A reach blocked by two boards, whose why names the obstacles nearest
@@ -339,4 +358,36 @@ fn a_mesh_measured_by_its_vertices_is_touched_by_them() {
     let before = room("stray", "near.obj");
     cached_equals_fresh(&files, &before, &room("stray2", "near.obj"));
     cached_equals_fresh(&files, &before, &room("stray", "far.obj"));
+}
+
+/// A watch run counts the work of the answers it reuses against the bound
+/// on solver work, so that it stops where a fresh run of the same text
+/// would, even when it runs no task.
+#[test]
+fn answers_reused_count_their_work_against_the_bound() {
+    let text = "use std::arm\nroom r {\n  size 3000 x 3000 x 2500\n  box board at (0, 1000, 1200) size (300, 800, 20)\n  target mug at (150, 1300, 1250)\n}\nperson ann { mannequin right_arm base wheelchair }\nreach mug by ann\nmap board.top by ann { step 100mm }\n";
+    let within = |limit: u64| {
+        let limits = reach::Limits {
+            solver_work: limit,
+            ..reach::Limits::default()
+        };
+        let input = Input::Text {
+            name: "cache.reach",
+            text,
+        };
+        reach::check_within(input, &Registry::builtin(), &limits)
+            .1
+            .expect("the scenario checks")
+    };
+    let (_, work) = reach::run_counting(&within(u64::MAX / 2), &NoProgress).unwrap();
+    let mut cache = TaskCache::default();
+    let (_, stats) = cache.run(&within(work), &NoProgress).unwrap();
+    assert_eq!((stats.ran, stats.work), (2, work));
+    let (_, stats) = cache.run(&within(work), &NoProgress).unwrap();
+    assert_eq!((stats.ran, stats.work), (0, work));
+    let past = cache.run(&within(work - 1), &NoProgress).unwrap_err();
+    assert!(
+        matches!(past.kind(), reach::ErrorKind::TooMuchWork { .. }),
+        "{past}"
+    );
 }

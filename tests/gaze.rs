@@ -10,7 +10,7 @@ use reach::Input;
 fn run(input: Input<'_>) -> Report {
     let registry = Registry::builtin();
     let (_, scenario) = reach::check(input, &registry);
-    reach::run(&scenario.expect("the scenario checks"))
+    reach::run(&scenario.expect("the scenario checks")).expect("within the bound on solver work")
 }
 
 fn gaze<'r>(report: &'r Report, target: &str, person: &str) -> &'r GazeReport {
@@ -95,7 +95,7 @@ fn the_view_marks_only_moved_joints_at_their_limits() {
     let registry = Registry::builtin();
     let (_, checked) = reach::check(Input::Path("examples/gaze_shelf.reach".as_ref()), &registry);
     let scenario = checked.expect("the scenario checks");
-    let report = reach::run(&scenario);
+    let report = reach::run(&scenario).expect("within the bound on solver work");
     let view = reach::output::view::view_data(&report, &scenario.format_scene());
     let mut marks = 0;
     for (task, seen) in report.tasks.iter().zip(&view.tasks) {

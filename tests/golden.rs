@@ -27,7 +27,7 @@ fn json_report(path: &Path) -> String {
         Ok(s) => s,
         Err(d) => panic!("{} does not check:\n{}", path.display(), d.render(true)),
     };
-    let report = reach::run(&scenario);
+    let report = reach::run(&scenario).expect("within the bound on solver work");
     registry
         .format("json")
         .unwrap()

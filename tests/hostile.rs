@@ -7,7 +7,7 @@
 
 use proptest::prelude::*;
 use reach::plugin::Registry;
-use reach::{Input, Limits};
+use reach::{ErrorKind, Input, Limits};
 
 /// The seed files, the examples first; returns them and how many examples.
 fn seeds() -> (Vec<Vec<u8>>, usize) {
@@ -179,10 +179,11 @@ proptest! {
                 }
                 prop_assert!(!diagnostics.render(true).is_empty());
             }
-            Ok(scenario) => {
-                let report = reach::run(&scenario);
-                prop_assert_eq!(report.tasks.len(), scenario.tasks.len());
-            }
+            Ok(scenario) => match reach::run(&scenario) {
+                Ok(report) => prop_assert_eq!(report.tasks.len(), scenario.tasks.len()),
+                // A run past the bound on solver work is refused as a whole.
+                Err(e) => prop_assert!(matches!(e.kind(), ErrorKind::TooMuchWork { .. }), "{e}"),
+            },
         }
     }
 }
@@ -825,4 +826,105 @@ fn a_box_name_in_two_rooms_is_ambiguous_until_the_room_is_named() {
         "{}",
         share("kitchen.counter.top")
     );
+}
+
+// ------------------------------------------------------------------------
+// Class 4: every accepted input finishes in bounded time: the solvers'
+// work is metered as they work, and a run past the bound stops.
+
+/// A map whose high points are out of reach over a shelf, by a solver
+/// whose every iteration option is at its cap: well within the count of
+/// solver starts, and minutes of work (with the default bound it stops
+/// after about 7 s).
+const CAPPED: &str = "units mm deg
+use std::arm
+room r {
+  size 3000 x 3000 x 2500
+  box counter at (0, 0, 0) size (600, 3000, 900)
+  box shelf at (0, 0, 1400) size (350, 3000, 20)
+  surface front at (600, 500, 100) size (0, 1500, 1900)
+}
+person ann { mannequin right_arm base fixed { at (1000, 1250, 500) heading 180deg } }
+map front by ann { step 300mm blocked_retries 0 solver fabrik { starts 1 max_iterations 10000 stall 10000 sweeps 20 samples 20 kicks 100 } }
+";
+
+#[test]
+fn a_run_past_the_bound_on_solver_work_stops_with_the_limit_named() {
+    let (dir, path) = scenario_file(CAPPED);
+    let out = dir.path().join("out");
+    let o = reach_bin(&[
+        "run",
+        path.to_str().unwrap(),
+        "--max-solver-work",
+        "20000000",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(
+        flat(&err).contains("more solver work than the limit of 20,000,000 units"),
+        "{err}"
+    );
+    assert!(err.contains("--max-solver-work"), "{err}");
+    // At the task that may ask the most, and no answer shown or written.
+    assert!(err.contains("root.reach:10"), "{err}");
+    assert!(stdout(&o).is_empty(), "{}", stdout(&o));
+    assert!(!out.exists());
+}
+
+/// A map through a shelf and a reach over it by a wheelchair user: the
+/// map's retries and kept proofs, the reach's placements.
+const METERED: &str = "units mm deg
+use std::arm
+room r {
+  size 3000 x 3000 x 2500
+  box counter at (0, 0, 0) size (600, 3000, 900)
+  box shelf at (0, 0, 1400) size (350, 3000, 20)
+  surface front at (600, 500, 100) size (0, 1500, 1900)
+  target cup at (300, 1500, 1450)
+}
+person ann { mannequin right_arm base wheelchair }
+map front by ann { step 80mm }
+reach cup by ann
+";
+
+/// The run of `text` within `limit` units of solver work, on `threads`
+/// threads: the work, or the error.
+fn metered_run(text: &str, limit: u64, threads: usize) -> Result<u64, reach::Error> {
+    let registry = Registry::builtin();
+    let limits = Limits {
+        solver_work: limit,
+        ..Limits::default()
+    };
+    let input = Input::Text {
+        name: "metered.reach",
+        text,
+    };
+    let scenario = reach::check_within(input, &registry, &limits)
+        .1
+        .expect("the scenario checks");
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .expect("a pool");
+    pool.install(|| reach::run_counting(&scenario, &reach::progress::NoProgress))
+        .map(|(_, work)| work)
+}
+
+/// The work of a run is a sum that does not depend on the threads, so a
+/// run either stays within the bound on every thread count or passes it
+/// on each: at its own work it runs, one unit less it stops.
+#[test]
+fn a_run_stays_within_the_bound_or_passes_it_whatever_the_threads() {
+    let work = metered_run(METERED, u64::MAX / 2, 1).expect("within the bound");
+    assert!(work > 100_000, "{work}");
+    for threads in [1, 3] {
+        assert_eq!(metered_run(METERED, work, threads).ok(), Some(work));
+        let past = metered_run(METERED, work - 1, threads).expect_err("past the bound");
+        assert!(
+            matches!(past.kind(), ErrorKind::TooMuchWork { limit } if *limit == work - 1),
+            "{past}"
+        );
+    }
 }

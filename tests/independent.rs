@@ -65,7 +65,7 @@ fn every_reported_posture_is_what_the_report_says() {
         let registry = Registry::builtin();
         let (_, scenario) = reach::check(Input::Path(example.as_ref()), &registry);
         let scenario = scenario.unwrap();
-        let report = reach::run(&scenario);
+        let report = reach::run(&scenario).expect("within the bound on solver work");
         for task in &report.tasks {
             let TaskReport::Reach(r) = task else { continue };
             let body = &scenario.person(&r.person).unwrap().body;
@@ -161,7 +161,7 @@ fn every_reported_gaze_is_what_the_report_says() {
     let registry = Registry::builtin();
     let (_, scenario) = reach::check(Input::Path("examples/gaze_shelf.reach".as_ref()), &registry);
     let scenario = scenario.unwrap();
-    let report = reach::run(&scenario);
+    let report = reach::run(&scenario).expect("within the bound on solver work");
     let mut checked = 0;
     for task in &report.tasks {
         let g = match task {
@@ -309,7 +309,7 @@ mod random_rooms {
                 return Ok(());
             };
             RUN.with(|r| r.set(r.get() + 1));
-            let report = reach::run(&scenario);
+            let report = reach::run(&scenario).expect("within the bound on solver work");
             let own = scenario.bases[0].own_body();
             let body = &scenario.persons[0].body;
             for task in &report.tasks {

@@ -219,7 +219,7 @@ fn glb(quads: &[[[f64; 3]; 4]], declared: Option<usize>) -> Vec<u8> {
 fn run_file(path: &Path) -> Report {
     let (_, checked) = reach::check(Input::Path(path), &Registry::builtin());
     let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(false)));
-    reach::run(&scenario)
+    reach::run(&scenario).expect("within the bound on solver work")
 }
 
 /// The kitchen with its counters as the mesh file `file` (`props` after

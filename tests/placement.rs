@@ -41,7 +41,7 @@ fn try_run(text: &str) -> Result<Report, String> {
         &registry,
     );
     let scenario = checked.map_err(|d| d.render(true))?;
-    Ok(reach::run(&scenario))
+    Ok(reach::run(&scenario).expect("within the bound on solver work"))
 }
 
 /// Whether each reach task of `report`, in order, reached.

@@ -203,7 +203,10 @@ fn the_report_is_the_same_on_one_thread_and_on_two() {
             .num_threads(threads)
             .build()
             .unwrap();
-        pool.install(|| serde_json::to_string(&reach::run(&scenario)).unwrap())
+        pool.install(|| {
+            serde_json::to_string(&reach::run(&scenario).expect("within the bound on solver work"))
+                .unwrap()
+        })
     };
     assert_eq!(json(1), json(2));
 }

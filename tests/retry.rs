@@ -33,7 +33,7 @@ fn run_text(name: &str, text: &str) -> Report {
     let registry = Registry::builtin();
     let (_, checked) = reach::check(Input::Text { name, text }, &registry);
     let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(true)));
-    reach::run(&scenario)
+    reach::run(&scenario).expect("within the bound on solver work")
 }
 
 /// The wheelchair kitchen's room and people with `maps`, 100 mm apart,

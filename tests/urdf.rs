@@ -127,7 +127,7 @@ fn a_urdf_mannequin_reaches() {
         },
         &registry,
     );
-    let report = reach::run(&checked.unwrap());
+    let report = reach::run(&checked.unwrap()).expect("within the bound on solver work");
     assert!(report.tasks[0].answer().ok, "{:?}", report.tasks[0]);
 }
 

@@ -184,6 +184,7 @@ fn clear_start(problem: &IkProblem<'_>, kicks: &mut Kicks<'_>, draws: usize) -> 
     let mut start = Vec::new();
     for _ in 0..draws {
         start = kicks.next().unwrap_or_default();
+        problem.meter.charge(problem.check_units());
         if problem.collision(&start).is_none() {
             break;
         }
@@ -210,7 +211,7 @@ fn retry_blocked(
     let proofs = match query.proofs {
         Some(kept) => kept,
         None => {
-            made_here = KeptProofs::new(chain, query.own);
+            made_here = KeptProofs::new(chain, query.own, query.meter);
             &made_here
         }
     };

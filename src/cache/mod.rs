@@ -17,6 +17,7 @@ mod touched;
 
 use std::collections::HashMap;
 
+use crate::error::Error;
 use crate::progress::Progress;
 use crate::report::{Report, TaskReport, SCHEMA_VERSION};
 use crate::scenario::{Scenario, TaskSpec};
@@ -27,7 +28,7 @@ pub struct TaskCache {
     /// Results by their full key: all but those whose run ranked the
     /// room's obstacles by distance (finding why), which may name an
     /// obstacle beyond the reach the key holds.
-    results: HashMap<u64, TaskReport>,
+    results: HashMap<u64, (TaskReport, u64)>,
     /// Results by the key of all but the obstacles, with what their
     /// questions touched.
     kept: HashMap<u64, touched::Kept>,
@@ -36,52 +37,66 @@ pub struct TaskCache {
     placements: key::Placements,
 }
 
-/// How many tasks a cached run reused and how many it ran.
+/// How many tasks a cached run reused and how many it ran, and the work
+/// of all of them (the solver work a fresh run would count).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct CacheStats {
     pub reused: usize,
     pub ran: usize,
+    pub work: u64,
 }
 
 impl TaskCache {
     /// Run the scenario, reusing the results of tasks whose inputs have not
-    /// changed; afterwards the cache holds exactly this run's results.
-    pub fn run(&mut self, scenario: &Scenario, progress: &dyn Progress) -> (Report, CacheStats) {
+    /// changed; afterwards the cache holds exactly this run's results. The
+    /// work of the results reused counts against the scenario's bound as
+    /// if they had run: an error where a fresh run would stop too.
+    pub fn run(
+        &mut self,
+        scenario: &Scenario,
+        progress: &dyn Progress,
+    ) -> Result<(Report, CacheStats), Error> {
         let keys = key::keys(scenario, &mut self.placements);
         let seen: Vec<Vec<touched::Seen>> = scenario.rooms.iter().map(touched::seen).collect();
-        let held: Vec<Option<TaskReport>> = (scenario.tasks.iter().zip(&keys))
+        let held: Vec<Option<(TaskReport, u64)>> = (scenario.tasks.iter().zip(&keys))
             .map(|(task, k)| self.held(k, &seen[task.room]))
             .collect();
         let stale: Vec<&TaskSpec> = (scenario.tasks.iter().zip(&held))
             .filter(|(_, h)| h.is_none())
             .map(|(task, _)| task)
             .collect();
-        let mut ran_now = scenario.run_tasks_recording(&stale, progress).into_iter();
+        let reused_work = held.iter().flatten().map(|(_, w)| *w).sum();
+        let mut ran_now = scenario
+            .run_tasks_recording(&stale, progress, reused_work)?
+            .into_iter();
         let mut kept = HashMap::new();
         let mut results = HashMap::new();
         let mut tasks = Vec::with_capacity(keys.len());
+        let mut work = 0;
         for ((task, k), held) in scenario.tasks.iter().zip(&keys).zip(held) {
-            let (report, by_strict_key) = match held {
-                Some(report) => {
+            let (answer, by_strict_key) = match held {
+                Some(answer) => {
                     let old = k.loose.and_then(|l| self.kept.remove(&l).map(|e| (l, e)));
                     let ranked = old.as_ref().is_some_and(|(_, e)| e.ranked());
                     kept.extend(old);
-                    (report, !ranked)
+                    (answer, !ranked)
                 }
                 None => {
-                    let (report, set) = ran_now.next().expect("an answer per task run");
-                    let ranked = set.as_ref().is_some_and(|s| s.ranked());
-                    if let (Some(l), Some(set)) = (k.loose, set) {
+                    let ran = ran_now.next().expect("an answer per task run");
+                    let answer = (ran.report, ran.work);
+                    let ranked = ran.touched.as_ref().is_some_and(|s| s.ranked());
+                    if let (Some(l), Some(set)) = (k.loose, ran.touched) {
                         let room = seen[task.room].clone();
-                        kept.insert(l, touched::Kept::new(report.clone(), set, room, k.points));
+                        kept.insert(l, touched::Kept::new(answer.clone(), set, room, k.points));
                     }
-                    (report, !ranked)
+                    (answer, !ranked)
                 }
             };
             if by_strict_key {
-                results.insert(k.strict, report.clone());
+                results.insert(k.strict, answer.clone());
             }
-            tasks.push(report);
+            work += answer.1;
+            tasks.push(answer.0);
         }
         let ran = stale.len();
         self.kept = kept;
@@ -97,23 +112,22 @@ impl TaskCache {
             expectations: scenario.judge(&tasks),
             tasks,
         };
-        (
-            report,
-            CacheStats {
-                reused: keys.len() - ran,
-                ran,
-            },
-        )
+        let stats = CacheStats {
+            reused: keys.len() - ran,
+            ran,
+            work,
+        };
+        Ok((report, stats))
     }
 
     /// The result kept for a task of keys `k` in a room whose obstacles
-    /// are `seen`: under its full key, or under the key of all but the
+    /// are `seen`, and its work: under its full key, or under the key of all but the
     /// obstacles where those it touched are as they were.
-    fn held(&self, k: &key::TaskKey, seen: &[touched::Seen]) -> Option<TaskReport> {
-        if let Some(report) = self.results.get(&k.strict) {
-            return Some(report.clone());
+    fn held(&self, k: &key::TaskKey, seen: &[touched::Seen]) -> Option<(TaskReport, u64)> {
+        if let Some(answer) = self.results.get(&k.strict) {
+            return Some(answer.clone());
         }
         let kept = self.kept.get(&k.loose?)?;
-        kept.holds(seen).then(|| kept.report.clone())
+        kept.holds(seen).then(|| (kept.report.clone(), kept.work))
     }
 }

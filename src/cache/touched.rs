@@ -49,6 +49,8 @@ pub(super) fn seen(room: &Room) -> Vec<Seen> {
 #[derive(Clone)]
 pub(super) struct Kept {
     pub report: TaskReport,
+    /// The work its solvers did ([`crate::meter`]).
+    pub work: u64,
     /// What its questions touched, and the obstacles near its points.
     touched: TouchedSet,
     /// The room's obstacles as they were when it was found.
@@ -56,11 +58,11 @@ pub(super) struct Kept {
 }
 
 impl Kept {
-    /// `report`, found in a room whose obstacles were `seen`, its
+    /// `report` and its work, found in a room whose obstacles were `seen`, its
     /// questions having touched `touched`; the task's points lie within
     /// `points_bounds`.
     pub fn new(
-        report: TaskReport,
+        (report, work): (TaskReport, u64),
         mut touched: TouchedSet,
         seen: Vec<Seen>,
         points_bounds: Option<[Point3<f64>; 2]>,
@@ -79,6 +81,7 @@ impl Kept {
         }
         Kept {
             report,
+            work,
             touched,
             seen,
         }

@@ -17,14 +17,15 @@ use crate::span::{FileId, Span};
 
 impl Checker<'_> {
     /// Refuse the tasks if together they may need more solver starts than
-    /// the limit.
+    /// the limit; the task declaration that may ask the most (where a run
+    /// past the limit on solver work is reported), if any.
     pub(super) fn check_budget(
         &mut self,
         tasks: &[TaskSpec],
         rooms: &[Room],
         bases: &[Arc<dyn Base>],
         populations: &[Population],
-    ) {
+    ) -> Option<Span> {
         // Per declaration (one declaration gives a task per subject and person).
         let mut by_decl: Vec<(Span, u64)> = Vec::new();
         let mut index: HashMap<(FileId, u32), usize> = HashMap::new();
@@ -43,12 +44,11 @@ impl Checker<'_> {
         let total = by_decl
             .iter()
             .fold(0u64, |sum, (_, s)| sum.saturating_add(*s));
+        // The first of those that ask the most.
+        let &(span, decl_starts) = by_decl.iter().rev().max_by_key(|(_, s)| *s)?;
         if total <= self.limits.solver_starts {
-            return;
+            return Some(span);
         }
-        let Some(&(span, decl_starts)) = by_decl.iter().max_by_key(|(_, s)| *s) else {
-            return;
-        };
         self.error(Error::new(
             ErrorKind::TooManyStarts {
                 total,
@@ -57,6 +57,7 @@ impl Checker<'_> {
             },
             span,
         ));
+        Some(span)
     }
 }
 

@@ -27,7 +27,7 @@ use crate::kinematics::Body;
 use crate::limits::Limits;
 use crate::loader::LoadedFile;
 use crate::plugin::Registry;
-use crate::scenario::Scenario;
+use crate::scenario::{Scenario, WorkBound};
 use crate::source::Sources;
 use crate::span::{FileId, Spanned};
 use crate::syntax::ast::{Item, LetDecl};
@@ -65,9 +65,11 @@ pub fn check(
         tasks: &tasks,
         standards: &standards,
     });
-    if c.errors.is_empty() {
-        c.check_budget(&tasks, &rooms, &bases, &populations);
-    }
+    let costliest = if c.errors.is_empty() {
+        c.check_budget(&tasks, &rooms, &bases, &populations)
+    } else {
+        None
+    };
     let result = if c.errors.is_empty() {
         Ok(Scenario {
             file: sources.get(root).name.clone(),
@@ -78,6 +80,10 @@ pub fn check(
             tasks,
             standards,
             expectations,
+            work: WorkBound {
+                limit: c.limits.solver_work,
+                costliest,
+            },
         })
     } else {
         Err(Diagnostics { errors: c.errors })

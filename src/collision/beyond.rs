@@ -194,6 +194,16 @@ impl<'a> OutOfReach<'a> {
     /// `tolerance_mm` of `target_mm` (in the base frame), looking at up to
     /// `boxes` boxes of trunk postures.
     pub fn decide(&self, target_mm: &Point3<f64>, tolerance_mm: f64, boxes: usize) -> Verdict {
+        self.decide_looking(target_mm, tolerance_mm, boxes).0
+    }
+
+    /// [`OutOfReach::decide`], and how many boxes it looked at.
+    pub fn decide_looking(
+        &self,
+        target_mm: &Point3<f64>,
+        tolerance_mm: f64,
+        boxes: usize,
+    ) -> (Verdict, usize) {
         self.branch_and_bound(target_mm, tolerance_mm, boxes, Cut::Body)
     }
 
@@ -208,6 +218,17 @@ impl<'a> OutOfReach<'a> {
         tolerance_mm: f64,
         boxes: usize,
     ) -> Verdict {
+        self.decide_by_limits_looking(target_mm, tolerance_mm, boxes)
+            .0
+    }
+
+    /// [`OutOfReach::decide_by_limits`], and how many boxes it looked at.
+    pub fn decide_by_limits_looking(
+        &self,
+        target_mm: &Point3<f64>,
+        tolerance_mm: f64,
+        boxes: usize,
+    ) -> (Verdict, usize) {
         self.branch_and_bound(target_mm, tolerance_mm, boxes, Cut::Limits)
     }
 
@@ -217,7 +238,7 @@ impl<'a> OutOfReach<'a> {
         tolerance_mm: f64,
         boxes: usize,
         cut: Cut,
-    ) -> Verdict {
+    ) -> (Verdict, usize) {
         let reach_mm = self.arm_mm + tolerance_mm;
         let n = self.trunk_joints;
         let mut root: Ranges = [(0.0, 0.0); MOST_TRUNK_JOINTS];
@@ -235,7 +256,7 @@ impl<'a> OutOfReach<'a> {
         while let Some(Boxed { ranges, .. }) = waiting.pop() {
             looked += 1;
             if looked > boxes {
-                return Verdict::Undecided;
+                return (Verdict::Undecided, boxes);
             }
             if !self.couplings_admit(&ranges[..n]) {
                 // No posture of this box is within the coupled limits.
@@ -273,7 +294,7 @@ impl<'a> OutOfReach<'a> {
             {
                 // A clear trunk posture with the shoulder within the arm's
                 // length: the cut cannot rule the point out.
-                return Verdict::Cannot;
+                return (Verdict::Cannot, looked);
             }
             let widest = self.widest(&trunk, &pivot, half);
             let (lo, hi) = ranges[widest];
@@ -285,7 +306,7 @@ impl<'a> OutOfReach<'a> {
                 waiting.push(Boxed { nearest_mm, ranges });
             }
         }
-        Verdict::Proved
+        (Verdict::Proved, looked)
     }
 
     /// Whether some posture in the box of trunk joint `ranges` keeps every

@@ -9,28 +9,29 @@
 //! none within the tolerance of any point of the cell.
 //!
 //! A proof the budget of [`BOXES`] did not decide is made again, with
-//! four times the budget, when its cell has been asked about four times as
-//! often: a cell that comes again and again earns a longer look, and the
-//! looks never cost more than a third more than looking once each time.
-//!
-//! Whether a cell is beyond the trunk's limits and the arm's length (the
-//! body left out) is the same whoever asks first, so a placement it rules
-//! out is not solved at all: no posture comes within the tolerance there,
-//! so it would not even be blocked and retried, and the search shows the
-//! closest of the others. Which retries the longer looks skip depends
-//! on the order the points are asked in (on the threads); the answers do
-//! not: the proof is sound, so a retry it skips would not have reached,
-//! and a retry that does not reach leaves the answer as it was
-//! (`bases::search`).
+//! four, sixteen and sixty-four times the budget, once its cell has been
+//! asked about four, sixteen and sixty-four times: a cell that comes again
+//! and again earns a longer look, and the looks never cost more than a
+//! third more than looking once each time. The longer looks are made
+//! between the map's rounds ([`KeptProofs::settle`]), never while one is
+//! solved: within a round every question gets the verdict of the first
+//! look (the same whoever asks first) or of a longer look made before the
+//! round, so which retries are skipped, and the work the map does, is the
+//! same whatever the order the threads ask in. The answers would not
+//! depend on it either way: the proof is sound, so a retry it skips would
+//! not have reached, and a retry that does not reach leaves the answer as
+//! it was (`bases::search`).
 
 use std::collections::HashMap;
 use std::sync::Mutex;
 
 use nalgebra::Point3;
+use rayon::prelude::*;
 
 use super::beyond::{Verdict, BOXES};
 use super::OutOfReach;
 use crate::kinematics::Chain;
+use crate::meter::Meter;
 use crate::scene::OwnBody;
 
 /// The side of the grid cells points are rounded to.
@@ -55,23 +56,38 @@ struct Kept {
     beyond_limits: bool,
     /// How many times the retry asked about it.
     asked: usize,
-    /// The verdict of the longest look so far that kept out of the body.
-    verdict: Verdict,
+    /// The verdict of the first look that keeps out of the body
+    /// ([`BOXES`] boxes), once a question asked for it: the same whoever
+    /// asked.
+    first: Option<Verdict>,
+    /// The verdict of the longest look made between rounds (or of the
+    /// limits), and the boxes it was given.
+    settled: Verdict,
+    looked: usize,
 }
 
 /// The proofs made for one chain and one own body.
 pub struct KeptProofs<'a> {
     cut: Option<OutOfReach<'a>>,
     cells: Mutex<HashMap<Key, Kept>>,
+    /// What each look is told to: the looks kept (one per cell and
+    /// budget, whoever made it), so that the work is the same whatever
+    /// the threads.
+    meter: &'a Meter,
 }
+
+/// What looking at one box of trunk postures costs, in the meter's units
+/// (`crate::meter`; about half a microsecond).
+const BOX_UNITS: u64 = 6;
 
 impl<'a> KeptProofs<'a> {
     /// None made yet, for `chain` in a person whose own body and base are
-    /// `own`.
-    pub fn new(chain: &'a Chain, own: &'a OwnBody) -> Self {
+    /// `own`, the looks' work told to `meter`.
+    pub fn new(chain: &'a Chain, own: &'a OwnBody, meter: &'a Meter) -> Self {
         KeptProofs {
             cut: OutOfReach::of(chain, own),
             cells: Mutex::new(HashMap::new()),
+            meter,
         }
     }
 
@@ -86,41 +102,77 @@ impl<'a> KeptProofs<'a> {
 
     /// Whether no posture that keeps out of the person's own body brings
     /// the effector within `tolerance_mm` of `target_mm` (in the base
-    /// frame), by the proof for the point's grid cell: looked at on the
-    /// retry's first question, and again with a larger budget as its
-    /// questions grow fourfold while it is undecided. False where it
-    /// cannot tell, or there is no proof for this chain. Which answer a
-    /// question gets depends on the questions before it: only a retry,
-    /// which changes nothing where it fails, may be skipped by it.
+    /// frame), by the proof for the point's grid cell: the first look, or
+    /// the longest made before this round ([`KeptProofs::settle`]). False
+    /// where it cannot tell, or there is no proof for this chain. Only a
+    /// retry, which changes nothing where it fails, may be skipped by it.
     pub fn proves(&self, target_mm: &Point3<f64>, tolerance_mm: f64) -> bool {
         let Some((key, _)) = self.cell(target_mm, tolerance_mm) else {
             return false;
         };
-        let asked = {
+        let first = {
             let mut cells = self.lock();
             let Some(kept) = cells.get_mut(&key) else {
                 return false;
             };
             kept.asked += 1;
-            match kept.verdict {
+            match kept.settled {
                 Verdict::Proved => return true,
                 Verdict::Cannot => return false,
-                Verdict::Undecided => kept.asked,
+                Verdict::Undecided => kept.first,
             }
         };
-        let boxes = BOXES.saturating_mul(asked);
-        if !is_power_of_four(asked) || boxes > MOST_BOXES {
-            return false;
-        }
-        let verdict = self.look(&key, boxes, OutOfReach::decide);
+        let first = first.unwrap_or_else(|| {
+            let (verdict, looked) = self.look(&key, BOXES, OutOfReach::decide_looking);
+            let mut cells = self.lock();
+            match cells.get_mut(&key) {
+                Some(Kept {
+                    first: Some(kept), ..
+                }) => *kept,
+                Some(kept) => {
+                    self.charge(looked);
+                    *kept.first.insert(verdict)
+                }
+                None => verdict,
+            }
+        });
+        first == Verdict::Proved
+    }
+
+    /// Between two rounds of a map: each cell still undecided whose
+    /// questions have grown to four, sixteen or sixty-four is looked at
+    /// again with so many times [`BOXES`] (in parallel), and the verdict
+    /// answers its questions from the next round on.
+    pub fn settle(&self) {
+        let longer: Vec<(Key, usize)> = self
+            .lock()
+            .iter()
+            .filter(|(_, kept)| {
+                kept.settled == Verdict::Undecided && kept.first == Some(Verdict::Undecided)
+            })
+            .filter_map(|(key, kept)| {
+                let boxes = longest_look(kept.asked);
+                (boxes > kept.looked.max(BOXES)).then_some((*key, boxes))
+            })
+            .collect();
+        let verdicts: Vec<(Key, usize, (Verdict, usize))> = longer
+            .into_par_iter()
+            .map(|(key, boxes)| {
+                (
+                    key,
+                    boxes,
+                    self.look(&key, boxes, OutOfReach::decide_looking),
+                )
+            })
+            .collect();
         let mut cells = self.lock();
-        if let Some(kept) = cells.get_mut(&key) {
-            // Another thread's longer look may have decided it meanwhile.
-            if kept.verdict == Verdict::Undecided {
-                kept.verdict = verdict;
+        for (key, boxes, (verdict, looked)) in verdicts {
+            self.charge(looked);
+            if let Some(kept) = cells.get_mut(&key) {
+                kept.settled = verdict;
+                kept.looked = boxes;
             }
         }
-        verdict == Verdict::Proved
     }
 
     /// The point's grid cell and what is known of it, looked at by the
@@ -136,16 +188,22 @@ impl<'a> KeptProofs<'a> {
         if let Some(&kept) = self.lock().get(&key) {
             return Some((key, kept));
         }
-        let beyond_limits = self.look(&key, BOXES, OutOfReach::decide_by_limits) == Verdict::Proved;
-        let kept = *self.lock().entry(key).or_insert(Kept {
-            beyond_limits,
-            asked: 0,
-            // Beyond the limits is beyond them clear of the body too.
-            verdict: if beyond_limits {
-                Verdict::Proved
-            } else {
-                Verdict::Undecided
-            },
+        let (verdict, looked) = self.look(&key, BOXES, OutOfReach::decide_by_limits_looking);
+        let beyond_limits = verdict == Verdict::Proved;
+        let kept = *self.lock().entry(key).or_insert_with(|| {
+            self.charge(looked);
+            Kept {
+                beyond_limits,
+                asked: 0,
+                first: None,
+                // Beyond the limits is beyond them clear of the body too.
+                settled: if beyond_limits {
+                    Verdict::Proved
+                } else {
+                    Verdict::Undecided
+                },
+                looked: 0,
+            }
         });
         Some((key, kept))
     }
@@ -156,15 +214,20 @@ impl<'a> KeptProofs<'a> {
         &self,
         key: &Key,
         boxes: usize,
-        decide: fn(&OutOfReach<'a>, &Point3<f64>, f64, usize) -> Verdict,
-    ) -> Verdict {
+        decide: fn(&OutOfReach<'a>, &Point3<f64>, f64, usize) -> (Verdict, usize),
+    ) -> (Verdict, usize) {
         let Some(cut) = &self.cut else {
-            return Verdict::Undecided;
+            return (Verdict::Undecided, 0);
         };
         let ([x, y, z], tolerance_bits) = *key;
         let centre_mm = Point3::new(x as f64, y as f64, z as f64) * GRID_MM;
         let tolerance_mm = f64::from_bits(tolerance_bits) + HALF_DIAGONAL_MM;
         decide(cut, &centre_mm, tolerance_mm, boxes)
+    }
+
+    /// Tell the meter of a look kept that looked at `boxes` boxes.
+    fn charge(&self, boxes: usize) {
+        self.meter.charge(boxes as u64 * BOX_UNITS);
     }
 
     fn lock(&self) -> std::sync::MutexGuard<'_, HashMap<Key, Kept>> {
@@ -173,7 +236,13 @@ impl<'a> KeptProofs<'a> {
     }
 }
 
-/// Whether `n` is 1, 4, 16, 64...
-fn is_power_of_four(n: usize) -> bool {
-    n.is_power_of_two() && n.trailing_zeros().is_multiple_of(2)
+/// The boxes of the longest look a cell asked about `asked` times has
+/// earned: [`BOXES`] times the largest power of four not above `asked`,
+/// at most [`MOST_BOXES`].
+fn longest_look(asked: usize) -> usize {
+    let mut times = 1;
+    while times * 4 <= asked && BOXES * times * 4 <= MOST_BOXES {
+        times *= 4;
+    }
+    BOXES * times
 }

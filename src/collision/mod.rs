@@ -189,6 +189,11 @@ impl Obstacles {
         }
     }
 
+    /// How many boxes and meshes a check looks at.
+    pub fn count(&self) -> usize {
+        self.boxes.len() + self.meshes.len()
+    }
+
     /// The name of the room's obstacle `index` (as the hits give it): an
     /// obstacle whose name is asked for counts as touched.
     pub fn name(&self, index: usize) -> &str {

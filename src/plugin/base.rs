@@ -12,7 +12,8 @@ use geo::MultiPolygon;
 
 use crate::floor::{Footprint, Misfit, Shut};
 use crate::kinematics::{Chain, Posture};
-use crate::scene::{BasePose, Blocked, OwnBody, Physique, Placement, Room};
+use crate::meter::Meter;
+use crate::scene::{BasePose, Blocked, Collision, OwnBody, Physique, Placement, Room};
 
 /// How hard a base looks for a placement.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -49,6 +50,8 @@ pub struct ReachQuery<'a> {
     /// hand at rest would be at the target (a reach does; a map's point,
     /// reached from its neighbours, does not).
     pub from_rest: bool,
+    /// What the solves tell their work to.
+    pub meter: &'a Meter,
 }
 
 /// A second try where the task's solver reaches from no placement (used
@@ -88,6 +91,7 @@ impl<'a> ReachQuery<'a> {
                 own: self.own,
                 base_pose: pose,
             }),
+            meter: self.meter,
         }
     }
 
@@ -100,12 +104,19 @@ impl<'a> ReachQuery<'a> {
             Search::MostComfortable => solver.solve(&problem),
             Search::FirstReaching => solver.solve_until_reached(&problem),
         };
-        solution.collision = problem.collision(&solution.q);
+        solution.collision = self.checked(&problem, &solution.q);
         Placement {
             pose,
             solution,
             retried: false,
         }
+    }
+
+    /// What posture `q` of `problem` runs into, the check told to the
+    /// meter.
+    pub fn checked(&self, problem: &IkProblem<'_>, q: &[f64]) -> Option<Collision> {
+        self.meter.charge(problem.check_units());
+        problem.collision(q)
     }
 
     /// One solve from `pose` and posture `start` (a neighbouring point's on
@@ -119,7 +130,7 @@ impl<'a> ReachQuery<'a> {
     ) -> Placement {
         let problem = self.problem(chain, pose);
         let mut solution = solver.solve_from(&problem, start);
-        solution.collision = problem.collision(&solution.q);
+        solution.collision = self.checked(&problem, &solution.q);
         Placement {
             pose,
             solution,

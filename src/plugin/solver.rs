@@ -6,6 +6,7 @@ use nalgebra::Point3;
 use super::{Options, Plugin, SettingsError};
 use crate::collision::PlacedObstacles;
 use crate::kinematics::{Chain, Volumes};
+use crate::meter::Meter;
 use crate::scene::{Collision, IkSolution};
 
 /// An inverse kinematics problem: bring the chain's effector to a point
@@ -20,6 +21,10 @@ pub struct IkProblem<'a> {
     /// The room's obstacles and the person's own body, when the posture
     /// must stay out of them.
     pub obstacles: Option<PlacedObstacles<'a>>,
+    /// What the solve's work is told to: a solve counts its steps and its
+    /// checks against the room ([`crate::meter`]) and stops early once
+    /// the run is past its limit (its answer is then thrown away).
+    pub meter: &'a Meter,
 }
 
 impl IkProblem<'_> {
@@ -29,6 +34,14 @@ impl IkProblem<'_> {
     pub fn collision(&self, q: &[f64]) -> Option<Collision> {
         let obstacles = self.obstacles.as_ref()?;
         obstacles.posture_hit(self.chain, q, self.tolerance_mm)
+    }
+
+    /// What one check of a posture costs the meter ([`crate::meter`]):
+    /// nothing where obstacles are not checked.
+    pub fn check_units(&self) -> u64 {
+        self.obstacles
+            .as_ref()
+            .map_or(0, |o| crate::meter::posture_check(o.obstacles.count()))
     }
 
     /// The first thing the chain's solids `v` (of some posture) run into,
@@ -43,7 +56,10 @@ impl IkProblem<'_> {
 /// the problem it is given ([`IkProblem::collision`], or the problem's
 /// obstacles' questions) and keeps nothing from one solve to the next:
 /// watch mode keeps a task's answer by what those questions came near
-/// (`collision::Touched`).
+/// (`collision::Touched`). It tells the problem's meter the work it does
+/// (`Meter::tally`: a unit a joint moved, [`IkProblem::check_units`]
+/// a posture checked) and stops once the meter says the run is past its
+/// limit; the work must not depend on anything but the problem.
 pub trait Solver: Send + Sync {
     fn solve(&self, problem: &IkProblem<'_>) -> IkSolution;
     /// A solve that may stop at the first start whose posture reaches the

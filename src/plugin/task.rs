@@ -12,6 +12,7 @@ use super::{Base, Options, Plugin, Registry, SettingsError, Tries};
 use crate::collision::Touched;
 use crate::error::ErrorKind;
 use crate::kinematics::Chain;
+use crate::meter::Meter;
 use crate::progress::Progress;
 use crate::report::TaskReport;
 use crate::scene::{Person, Room, Surface, Target};
@@ -71,6 +72,9 @@ pub struct TaskInput<'a> {
     /// (watch mode's cache), if anywhere: only a task that
     /// [`Task::records_touches`] is given one.
     pub touched: Option<&'a Arc<Touched>>,
+    /// What the task's solves tell their work to ([`crate::meter`]): a
+    /// task whose run passes the limit is thrown away with the run.
+    pub meter: &'a Meter,
 }
 
 /// What a task's answer depends on in its room beyond its own settings,

@@ -12,6 +12,8 @@ pub use expect::{ExpectCheck, ExpectSpec};
 use std::fmt;
 use std::sync::Arc;
 
+use crate::error::{Error, ErrorKind};
+use crate::meter::Meter;
 use crate::options::Options;
 use crate::plugin::{Base, FormatScene, Standard, Subject, Task, TaskInput, TaskPlace};
 use crate::progress::Progress;
@@ -33,6 +35,30 @@ pub struct Scenario {
     pub standards: Vec<StandardSpec>,
     /// What the file expects of the answers.
     pub expectations: Vec<ExpectSpec>,
+    /// The most work its run's solvers may do.
+    pub work: WorkBound,
+}
+
+/// The bound on the solvers' work in one run ([`crate::meter`]), and where
+/// a run past it is reported.
+#[derive(Clone, Copy, Debug)]
+pub struct WorkBound {
+    /// In the meter's units.
+    pub limit: u64,
+    /// The task declaration that may ask the most (by the count of solver
+    /// starts, so the same on every run), if there are tasks.
+    pub costliest: Option<Span>,
+}
+
+impl WorkBound {
+    /// The error of a run past the bound.
+    pub fn exceeded(&self) -> Error {
+        let kind = ErrorKind::TooMuchWork { limit: self.limit };
+        match self.costliest {
+            Some(span) => Error::new(kind, span),
+            None => Error::unplaced(kind),
+        }
+    }
 }
 
 /// A building standard to check on one room.
@@ -167,6 +193,7 @@ impl Scenario {
             progress,
             verdict_only: false,
             touched: None,
+            meter: Meter::unmetered(),
         }
     }
 }

@@ -11,9 +11,19 @@ use rayon::prelude::*;
 
 use super::{Scenario, TaskSpec};
 use crate::collision::{Touched, TouchedSet};
+use crate::error::Error;
+use crate::meter::{Meter, RunWork};
 use crate::plugin::{Fit, TaskInput};
 use crate::progress::Progress;
 use crate::report::{NotPlacedReport, PersonAnswer, PopulationReport, TaskReport};
+
+/// One task's answer, what its questions touched of its room (where it
+/// records that) and the work its solvers did.
+pub struct Ran {
+    pub report: TaskReport,
+    pub touched: Option<TouchedSet>,
+    pub work: u64,
+}
 
 /// One piece of parallel work.
 enum Job {
@@ -30,35 +40,52 @@ impl Scenario {
     /// Run `task`: its plugin's answer, or, where the person's base fits
     /// nowhere in the task's room, that answer (and nothing tried); for a
     /// task by a population, the share of its people it accommodates.
-    pub fn run_task(&self, task: &TaskSpec, progress: &dyn Progress) -> TaskReport {
-        let mut reports = self.run_tasks(&[task], progress);
-        reports.pop().expect("one answer per task")
+    /// An error where its solvers needed more work than the scenario's
+    /// bound.
+    pub fn run_task(&self, task: &TaskSpec, progress: &dyn Progress) -> Result<TaskReport, Error> {
+        let mut ran = self.run_tasks(&[task], progress)?;
+        Ok(ran.pop().expect("one answer per task").report)
     }
 
-    /// Run `tasks` in parallel; their answers in the order given.
-    pub fn run_tasks(&self, tasks: &[&TaskSpec], progress: &dyn Progress) -> Vec<TaskReport> {
-        let ran = self.run_jobs(tasks, progress, false);
-        ran.into_iter().map(|(report, _)| report).collect()
+    /// Run `tasks` in parallel; their answers (and the work of each) in
+    /// the order given, or an error where their solvers needed more work
+    /// than the scenario's bound.
+    pub fn run_tasks(
+        &self,
+        tasks: &[&TaskSpec],
+        progress: &dyn Progress,
+    ) -> Result<Vec<Ran>, Error> {
+        self.run_jobs(tasks, progress, false, &RunWork::new(self.work.limit))
     }
 
     /// As [`Scenario::run_tasks`], with what each task's questions touched
     /// of its room where it records that (`Task::records_touches`; never
-    /// for a population's task).
+    /// for a population's task), and the work each did; the work of the
+    /// tasks not run (`also_spent`, kept from before) is counted against
+    /// the bound as well, so that a run that reuses answers stops where a
+    /// fresh run would.
     pub fn run_tasks_recording(
         &self,
         tasks: &[&TaskSpec],
         progress: &dyn Progress,
-    ) -> Vec<(TaskReport, Option<TouchedSet>)> {
-        self.run_jobs(tasks, progress, true)
+        also_spent: u64,
+    ) -> Result<Vec<Ran>, Error> {
+        let run = RunWork::new(self.work.limit);
+        if !Meter::of(&run).charge(also_spent) {
+            return Err(self.work.exceeded());
+        }
+        self.run_jobs(tasks, progress, true, &run)
     }
 
-    /// `tasks` run in parallel, recording what they touch if `record`.
+    /// `tasks` run in parallel, recording what they touch if `record`,
+    /// their work told to `run`.
     fn run_jobs(
         &self,
         tasks: &[&TaskSpec],
         progress: &dyn Progress,
         record: bool,
-    ) -> Vec<(TaskReport, Option<TouchedSet>)> {
+        run: &Arc<RunWork>,
+    ) -> Result<Vec<Ran>, Error> {
         // The positions of the tasks by each population.
         let mut by_population: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
         let mut jobs = Vec::new();
@@ -86,34 +113,61 @@ impl Scenario {
                 let _ = mesh.shape();
             }
         }
-        // Each job's answers: a task's alone, or a member's in the order
-        // of their population's tasks.
-        let found: Vec<(Vec<TaskReport>, Option<TouchedSet>)> = jobs
+        // Each job's answers (a task's alone, or a member's in the order
+        // of their population's tasks) and the work of each; none once the
+        // run is past its bound (no job starts then).
+        type Found = (Vec<(TaskReport, u64)>, Option<TouchedSet>);
+        let found: Vec<Option<Found>> = jobs
             .par_iter()
-            .map(|job| match *job {
-                Job::Alone(k) => {
-                    let (report, touched) = self.run_one(tasks[k], progress, false, record);
-                    (vec![report], touched)
-                }
-                Job::Member { population, person } => {
-                    let each = by_population[&population]
-                        .iter()
-                        .map(|&k| self.run_member(tasks[k], person, progress))
-                        .collect();
-                    (each, None)
-                }
+            .map(|job| {
+                (!run.exceeded()).then(|| match *job {
+                    Job::Alone(k) => {
+                        let (report, touched, work) =
+                            self.run_one(tasks[k], progress, false, record, run);
+                        (vec![(report, work)], touched)
+                    }
+                    Job::Member { population, person } => {
+                        let each = by_population[&population]
+                            .iter()
+                            .map(|&k| self.run_member(tasks[k], person, progress, run))
+                            .collect();
+                        (each, None)
+                    }
+                })
             })
             .collect();
+        let found: Vec<Found> = match found.into_iter().collect::<Option<_>>() {
+            Some(found) if !run.exceeded() => found,
+            _ => return Err(self.work.exceeded()),
+        };
         let mut touched: Vec<Option<TouchedSet>> = vec![None; tasks.len()];
+        let mut work = vec![0u64; tasks.len()];
         let mut answers = Vec::with_capacity(found.len());
         for (job, (each, set)) in jobs.iter().zip(found) {
-            if let Job::Alone(k) = job {
-                touched[*k] = set;
+            match job {
+                Job::Alone(k) => touched[*k] = set,
+                Job::Member { population, .. } => {
+                    for (&k, (_, w)) in by_population[population].iter().zip(&each) {
+                        work[k] += w;
+                    }
+                }
             }
-            answers.push(each);
+            if let Job::Alone(k) = job {
+                work[*k] = each[0].1;
+            }
+            answers.push(each.into_iter().map(|(report, _)| report).collect());
         }
         let reports = self.gather(tasks, &by_population, &jobs, answers);
-        reports.into_iter().zip(touched).collect()
+        Ok(reports
+            .into_iter()
+            .zip(touched)
+            .zip(work)
+            .map(|((report, touched), work)| Ran {
+                report,
+                touched,
+                work,
+            })
+            .collect())
     }
 
     /// Each standard checked on its room, in parallel, in the order given;
@@ -186,36 +240,46 @@ impl Scenario {
         task.task.points(&task.subject_in(&self.rooms[task.room])) <= 1
     }
 
-    /// `task` (by a population) for its member `person`.
-    fn run_member(&self, task: &TaskSpec, person: usize, progress: &dyn Progress) -> TaskReport {
+    /// `task` (by a population) for its member `person`, and its work.
+    fn run_member(
+        &self,
+        task: &TaskSpec,
+        person: usize,
+        progress: &dyn Progress,
+        run: &Arc<RunWork>,
+    ) -> (TaskReport, u64) {
         let spec = TaskSpec {
             person,
             population: None,
             ..task.clone()
         };
-        let (answer, _) = self.run_one(&spec, progress, true, false);
+        let (answer, _, work) = self.run_one(&spec, progress, true, false, run);
         if self.one_point(task) {
             progress.advance(1);
         }
-        answer
+        (answer, work)
     }
 
     /// Run `task` for its one person (`verdict_only`: as a member of a
-    /// population, of whom only the verdict is kept), and what its
-    /// questions touched of the room, if `record` and it records that.
+    /// population, of whom only the verdict is kept), its work told to
+    /// `run`: its answer, what its questions touched of the room (if
+    /// `record` and it records that) and its work.
     fn run_one(
         &self,
         task: &TaskSpec,
         progress: &dyn Progress,
         verdict_only: bool,
         record: bool,
-    ) -> (TaskReport, Option<TouchedSet>) {
+        run: &Arc<RunWork>,
+    ) -> (TaskReport, Option<TouchedSet>, u64) {
         let room = &self.rooms[task.room];
         let touched = (record && task.task.records_touches())
             .then(|| Arc::new(Touched::new(room.boxes.len() + room.meshes.len())));
+        let meter = Meter::of(run);
         let input = TaskInput {
             verdict_only,
             touched: touched.as_ref(),
+            meter: &meter,
             ..self.input(task, progress)
         };
         let label = match task.kind.as_str() {
@@ -235,9 +299,10 @@ impl Scenario {
             Fit::Shut(shut) => NotPlacedReport::shut(label, subject, person, base, room, &shut),
             Fit::Fits | Fit::Outside => {
                 let report = task.task.run(&input);
-                return (report, touched.map(|t| t.set()));
+                return (report, touched.map(|t| t.set()), meter.spent());
             }
         };
-        (TaskReport::NotPlaced(report), touched.map(|t| t.set()))
+        let touched = touched.map(|t| t.set());
+        (TaskReport::NotPlaced(report), touched, meter.spent())
     }
 }

@@ -118,8 +118,12 @@ impl DlsSolver {
         let mut columns = vec![Vector3::zeros(); chain.dof()];
         let mut iterations = 0;
         let mut p = effector_and_jacobian(chain, &q, &mut columns);
+        let mut tally = problem.meter.tally();
+        // An iteration moves every joint and works out its column.
+        let per_iteration = 3 * chain.dof() as u64;
         while (problem.target_mm - p).norm() > problem.tolerance_mm
             && iterations < self.max_iterations
+            && tally.add(per_iteration)
         {
             iterations += 1;
             let mut e = problem.target_mm - p;
@@ -141,6 +145,7 @@ impl DlsSolver {
             }
             p = effector_and_jacobian(chain, &q, &mut columns);
         }
+        tally.add(problem.check_units());
         IkSolution {
             distance_mm: (problem.target_mm - p).norm(),
             collision: problem.collision(&q),

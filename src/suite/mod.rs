@@ -173,7 +173,13 @@ fn run_one(
             return (outcome, used);
         }
     };
-    let report = crate::run(&scenario);
+    let report = match crate::run(&scenario) {
+        Ok(report) => report,
+        Err(e) => {
+            outcome.diagnostics = Some(Diagnostics::single(e).attach(&sources));
+            return (outcome, used);
+        }
+    };
     outcome.answers = report.tasks.len();
     outcome.expectations = report.expectations.clone();
     let golden_path = golden_path(path, roots, options.golden_dir.as_deref());

@@ -8,6 +8,7 @@ use nalgebra::Point3;
 
 use crate::collision::Obstacles;
 use crate::kinematics::Chain;
+use crate::meter::Meter;
 use crate::plugin::{
     Dependence, EffectorNeed, Params, Placement, PluginConfig, PluginKind, ReachQuery, Registry,
     Retry, Search, SettingsError, Solver, TaskInput, Tries, Value,
@@ -199,6 +200,7 @@ impl Reaching {
         search: Search,
         obstacles: Option<&'q Obstacles>,
         own: &'q OwnBody,
+        meter: &'q Meter,
     ) -> ReachQuery<'q> {
         let retry = (obstacles.is_some() && self.common.blocked_retries > 0).then(|| Retry {
             solver: self.blocked_solver.as_ref(),
@@ -216,6 +218,7 @@ impl Reaching {
             proofs: None,
             last_resort: None,
             from_rest: true,
+            meter,
         }
     }
 

@@ -247,6 +247,7 @@ impl Task for GazeTask {
             Search::MostComfortable,
             obstacles.body.as_ref(),
             input.base.own_body(),
+            input.meter,
         );
         let placement = input
             .base

@@ -122,9 +122,10 @@ fn map_report(
         asked,
         judge,
         prepared: input.base.prepare(input.room, asked.chain),
-        proofs: KeptProofs::new(asked.chain, input.base.own_body()),
+        proofs: KeptProofs::new(asked.chain, input.base.own_body(), input.meter),
     };
     let mut solved = run.first_pass(&grid);
+    run.proofs.settle();
     if asked.grid.neighbour_starts {
         let reached: Vec<usize> = (0..solved.len())
             .filter(|&i| solved[i].reached.is_some())
@@ -132,6 +133,7 @@ fn map_report(
         run.grow(&grid, &mut solved, reached, Steer::AsTheNeighbour);
         for wave in 0..WAVES {
             let gained = run.retry_waiting(&grid, &mut solved, wave);
+            run.proofs.settle();
             run.grow(&grid, &mut solved, gained, Steer::Always);
         }
         let holes: Vec<usize> = (0..solved.len())
@@ -222,6 +224,7 @@ impl<'a> GridRun<'a> {
                     Search::FirstReaching,
                     self.asked.obstacles,
                     self.input.base.own_body(),
+                    self.input.meter,
                 )
                 .keeping_proofs(&self.proofs)
         }

@@ -108,6 +108,7 @@ impl Task for ReachTask {
             search,
             obstacles.as_ref(),
             input.base.own_body(),
+            input.meter,
         );
         let mut placement = input
             .base

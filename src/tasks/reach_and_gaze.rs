@@ -200,6 +200,7 @@ impl Task for ReachAndGazeTask {
             Search::MostComfortable,
             obstacles.body.as_ref(),
             own,
+            input.meter,
         );
         let alone = input
             .base
@@ -231,6 +232,7 @@ impl Task for ReachAndGazeTask {
                     own,
                     base_pose: pose,
                 }),
+                meter: input.meter,
             },
         );
         let asked = |chain| Asked {

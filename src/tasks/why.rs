@@ -156,6 +156,7 @@ impl Failed<'_> {
             Search::MostComfortable,
             self.obstacles,
             own,
+            self.input.meter,
         );
         let placed = free
             .prepare(self.input.room, self.chain)
@@ -400,6 +401,7 @@ impl Failed<'_> {
             Search::MostComfortable,
             obstacles,
             own,
+            self.input.meter,
         );
         self.input
             .base

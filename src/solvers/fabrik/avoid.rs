@@ -14,6 +14,7 @@ use super::bones::Bone;
 use crate::collision::PlacedObstacles;
 use crate::geometry::Capsule;
 use crate::kinematics::Chain;
+use crate::meter::capsule_check;
 
 /// How many of a group's joints are sampled (the first ones); the others
 /// keep their values.
@@ -38,20 +39,30 @@ pub(super) struct Bend<'a> {
 impl Bend<'_> {
     /// A posture that moves bone `k` (its group starting from frame
     /// `before`) out of the obstacles, if it passes through one and some
-    /// sample is clear; `None` leaves the posture as it is.
-    pub fn clear_posture(&self, k: usize, before: &IsometryMatrix3<f64>) -> Option<Vec<f64>> {
+    /// sample is clear (`None` leaves the posture as it is); and the work
+    /// that took, in the meter's units.
+    pub fn clear_posture(
+        &self,
+        k: usize,
+        before: &IsometryMatrix3<f64>,
+    ) -> (Option<Vec<f64>>, u64) {
         let root = self.points[k];
+        let joints = self.bones[k].joints.len() as u64 + 1;
+        let check = capsule_check(self.obstacles.obstacles.count());
         if self.clear(root, self.end_with(k, before, self.q), k) {
-            return None;
+            return (None, joints + check);
         }
         let goal = self.goals[k + 1];
         let next_goal = self.goals.get(k + 2).copied();
         let mut best: Option<(bool, f64, Vec<f64>)> = None;
-        for q in self.samples(k) {
+        let samples = self.samples(k);
+        let mut work = (samples.len() as u64 + 1) * (joints + check);
+        for q in samples {
             let end = self.end_with(k, before, &q);
             if !self.clear(root, end, k) {
                 continue;
             }
+            work += check;
             let onward = next_goal.is_none_or(|g| self.clear(end, g, k + 1));
             let score = (end - goal).norm();
             let better = best
@@ -61,7 +72,7 @@ impl Bend<'_> {
                 best = Some((onward, score, q));
             }
         }
-        best.map(|(_, _, q)| q)
+        (best.map(|(_, _, q)| q), work)
     }
 
     /// Whether bone `bone` from `a` to `b` (a capsule of its link's

@@ -36,6 +36,9 @@ pub(super) struct Pass<'a> {
     pub goals: Vec<Point3<f64>>,
     /// Joint axes of the group being aligned (scratch).
     axes: Vec<Vector3<f64>>,
+    /// Work done since the meter was last told, in its units
+    /// ([`crate::meter`]): a joint moved or carried, a bone placed.
+    pub work: u64,
 }
 
 impl<'a> Pass<'a> {
@@ -54,6 +57,7 @@ impl<'a> Pass<'a> {
             points: vec![Point3::origin(); n],
             goals: vec![Point3::origin(); n],
             axes: Vec::new(),
+            work: 0,
         };
         pass.forward_with(false, false);
         pass
@@ -75,7 +79,17 @@ impl<'a> Pass<'a> {
         let mut best: Option<(bool, f64, Vec<f64>)> = None;
         let mut stalls = Stalls::new();
         let mut iterations = 0;
+        let mut tally = self.problem.meter.tally();
+        let check = if avoiding {
+            self.problem.check_units()
+        } else {
+            0
+        };
         while iterations < s.max_iterations {
+            let work = std::mem::take(&mut self.work);
+            if !tally.add(work + check) && best.is_some() {
+                break;
+            }
             let d = self.effector_distance();
             let clear = !avoiding || self.problem.collision(&self.q).is_none();
             let reaches = d <= tolerance && clear;
@@ -102,6 +116,7 @@ impl<'a> Pass<'a> {
             }
         }
         let (_, _, q) = best.expect("at least one posture seen");
+        tally.add(std::mem::take(&mut self.work) + check);
         let chain = self.chain();
         IkSolution {
             distance_mm: (chain.effector(&q) - self.problem.target_mm).norm(),
@@ -118,6 +133,7 @@ impl<'a> Pass<'a> {
     /// Kick the posture (see [`kick`]) and rebuild the points.
     fn kick(&mut self, rng: &mut ChaCha8Rng) {
         let chain = self.chain();
+        self.work += chain.dof() as u64;
         kick(&mut self.q, chain, self.settings.kick, rng);
         self.forward_with(false, false);
     }
@@ -134,6 +150,7 @@ impl<'a> Pass<'a> {
 
     /// Goals from point `last` (put at `goal`) back to the base.
     pub fn backward_from(&mut self, last: usize, goal: Point3<f64>) {
+        self.work += last as u64;
         self.goals[last] = goal;
         for k in (0..last).rev() {
             let from = self.goals[k + 1];
@@ -179,6 +196,7 @@ impl<'a> Pass<'a> {
     pub fn advance(&mut self, k: usize, before: &IsometryMatrix3<f64>) -> IsometryMatrix3<f64> {
         let bone = &self.bones[k];
         let chain = self.chain();
+        self.work += bone.joints.len() as u64 + 1;
         let frame = bone
             .joints
             .clone()
@@ -203,7 +221,9 @@ impl<'a> Pass<'a> {
             points: &self.points,
             goals: &self.goals,
         };
-        if let Some(q) = bend.clear_posture(k, before) {
+        let (moved, work) = bend.clear_posture(k, before);
+        self.work += work;
+        if let Some(q) = moved {
             self.q = q;
         }
     }
@@ -230,6 +250,7 @@ impl<'a> Pass<'a> {
         let chain = self.chain();
         let pivot = self.points[k];
         let joints = self.bones[k].joints.clone();
+        self.work += u64::from(self.settings.sweeps) * joints.len() as u64;
         for _ in 0..self.settings.sweeps {
             for (i, j) in joints.clone().enumerate() {
                 let joint = &chain.joints[j];

@@ -17,6 +17,7 @@ use super::stall::{Next, Stalls};
 use super::FabrikSettings;
 use crate::collision::PlacedObstacles;
 use crate::kinematics::{Body, Chain};
+use crate::meter::{posture_check, Meter};
 use crate::plugin::IkProblem;
 use crate::solvers::starts::Starts;
 
@@ -40,6 +41,8 @@ pub struct TreeProblem<'a> {
     pub tolerance_mm: f64,
     pub seed: u64,
     pub obstacles: Option<PlacedObstacles<'a>>,
+    /// What the solve's work is told to (`IkProblem::meter`).
+    pub meter: &'a Meter,
 }
 
 /// The posture found, in the body's joint order, and each goal's distance.
@@ -101,6 +104,7 @@ pub fn solve_tree(settings: &FabrikSettings, problem: &TreeProblem<'_>) -> TreeS
             tolerance_mm: problem.tolerance_mm,
             seed: problem.seed,
             obstacles: problem.obstacles,
+            meter: problem.meter,
         })
         .collect();
     let shared = shared_bones(&branches);
@@ -225,7 +229,24 @@ impl Tree<'_> {
         let mut best = self.solution(0);
         let mut stalls = Stalls::new();
         let mut iterations = 0;
+        let mut tally = self.problem.meter.tally();
+        let checks = if s.avoid_obstacles && self.problem.obstacles.is_some() {
+            self.problem
+                .obstacles
+                .map_or(0, |o| posture_check(o.obstacles.count()))
+                * self.passes.len() as u64
+        } else {
+            0
+        };
         while iterations < s.max_iterations {
+            let work: u64 = self
+                .passes
+                .iter_mut()
+                .map(|p| std::mem::take(&mut p.work))
+                .sum();
+            if !tally.add(work + checks) {
+                break;
+            }
             let now = self.solution(iterations);
             let (reaches, score) = now.score(self.problem.goals, self.problem.tolerance_mm);
             let near = now

@@ -115,6 +115,8 @@ struct Guard<'p, 'a> {
     problem: &'p IkProblem<'a>,
     clear: bool,
     posed: Posed<'a>,
+    /// Postures checked since the meter was last told.
+    checks: u64,
 }
 
 impl<'p, 'a> Guard<'p, 'a> {
@@ -125,17 +127,20 @@ impl<'p, 'a> Guard<'p, 'a> {
             problem,
             clear: problem.collision(q).is_none(),
             posed: Posed::new(problem.chain, q),
+            checks: 1,
         })
     }
 
     /// Whether joint `i` may move to `value`: always while the posture is
     /// not yet clear, and then only if it stays clear.
     fn allows(&mut self, i: usize, value: f64) -> bool {
-        !self.clear
-            || self
-                .problem
-                .collision_of(self.posed.volumes_with(i, value))
-                .is_none()
+        if !self.clear {
+            return true;
+        }
+        self.checks += 1;
+        self.problem
+            .collision_of(self.posed.volumes_with(i, value))
+            .is_none()
     }
 
     /// After joint `i` moved to `value`: note whether the posture has come
@@ -143,8 +148,14 @@ impl<'p, 'a> Guard<'p, 'a> {
     fn moved(&mut self, i: usize, value: f64) {
         self.posed.set(i, value);
         if !self.clear {
+            self.checks += 1;
             self.clear = self.problem.collision_of(self.posed.volumes()).is_none();
         }
+    }
+
+    /// The work of the checks since the last call, in meter units.
+    fn take_work(&mut self) -> u64 {
+        std::mem::take(&mut self.checks) * self.problem.check_units()
     }
 }
 
@@ -172,7 +183,9 @@ fn descend_with(
         .collect();
     let mut sweeps = 0u64;
     let mut stalled = 0u32;
-    while d_sq > tolerance_sq && sweeps < u64::from(s.max_sweeps) {
+    let mut tally = problem.meter.tally();
+    let joints = chain.dof() as u64;
+    while d_sq > tolerance_sq && sweeps < u64::from(s.max_sweeps) && tally.within() {
         sweeps += 1;
         let before = d_sq.sqrt();
         for (i, joint) in chain.joints.iter().enumerate() {
@@ -192,6 +205,7 @@ fn descend_with(
                 guard.as_mut(),
             );
             let factor = if kept { s.grow } else { s.shrink };
+            tally.add(guard.as_mut().map_or(0, |g| g.take_work()));
             if factor != 1.0 {
                 let scaled = steps[i].scaled(factor);
                 steps[i] = if scaled.delta > joint.range() {
@@ -201,6 +215,7 @@ fn descend_with(
                 };
             }
         }
+        tally.add(joints);
         if steps
             .iter()
             .zip(&min_steps)
@@ -236,6 +251,9 @@ fn descend_with(
     // The distance reported is that of the plain product of the chain,
     // whatever the descent computed on the way.
     let q = fk.into_q();
+    if s.avoid_obstacles {
+        tally.add(problem.check_units());
+    }
     IkSolution {
         distance_mm: (chain.effector(&q) - problem.target_mm).norm(),
         collision: if s.avoid_obstacles {

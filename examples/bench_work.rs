@@ -1,0 +1,53 @@
+//! The meter of solver work (`reach::meter`) against the clock: for each
+//! scenario file given (the examples by default), the work its run did,
+//! the wall time, and the work per millisecond. The bound on solver work
+//! (`--max-solver-work`) is chosen from the slowest rate this prints, so
+//! that what the default admits finishes in about 10 s on this machine
+//! (docs/benchmarks.md, "Solver work").
+//!
+//! `cargo run --release --example bench_work -- [FILE.reach ...]`
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use reach::limits::CEILINGS;
+use reach::plugin::Registry;
+use reach::{Input, Limits};
+
+fn main() {
+    let mut files: Vec<PathBuf> = std::env::args().skip(1).map(PathBuf::from).collect();
+    if files.is_empty() {
+        let mut examples: Vec<PathBuf> = std::fs::read_dir("examples")
+            .expect("run from the crate's directory")
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.extension().is_some_and(|x| x == "reach"))
+            .collect();
+        examples.sort();
+        files = examples;
+    }
+    let registry = Registry::builtin();
+    // Every limit at its ceiling: this measures, it does not refuse.
+    let limits = Limits {
+        solver_starts: CEILINGS.solver_starts,
+        solver_work: CEILINGS.solver_work,
+        ..Limits::default()
+    };
+    println!("| scenario | work (units) | seconds | units per ms |");
+    println!("|---|---|---|---|");
+    for file in files {
+        let (_, checked) = reach::check_within(Input::Path(&file), &registry, &limits);
+        let Ok(scenario) = checked else {
+            println!("| {} | does not check | | |", file.display());
+            continue;
+        };
+        let started = Instant::now();
+        let ran = reach::run_counting(&scenario, &reach::progress::NoProgress);
+        let seconds = started.elapsed().as_secs_f64();
+        let work = ran.map(|(_, w)| w).unwrap_or_default();
+        println!(
+            "| {} | {work} | {seconds:.3} | {:.0} |",
+            file.display(),
+            work as f64 / (seconds * 1000.0)
+        );
+    }
+}

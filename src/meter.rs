@@ -1,0 +1,192 @@
+//! The meter of solver work: what a run's solvers spend, in units of
+//! about the cost of moving one joint once (one step of a descent, one
+//! bone of a FABRIK pass), with a solid checked against the room and the
+//! body counted by the obstacles it is checked against
+//! ([`capsule_check`]; a posture is [`POSTURE_CAPSULES`] solids). The count checked
+//! before a run (`--max-solver-starts`) bounds how many solves may run;
+//! the meter bounds what they cost, iterations and checks included, so
+//! that a scenario asking for the costliest solves the count admits stops
+//! with the limit named rather than running for hours.
+//!
+//! Every solve does the same work whatever thread runs it and whatever
+//! ran before it, so the work of a whole run is a sum that does not
+//! depend on the threads: a run either stays within the limit on every
+//! machine and thread count, or passes it on each (a sum that only grows
+//! passes a limit whatever order its terms come in). Once past, solves
+//! stop early and the run's answers are thrown away.
+
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Arc;
+
+/// How many solids a posture check counts (an arm's links and hand).
+pub const POSTURE_CAPSULES: u64 = 8;
+
+/// How many of a room's obstacles a solid is checked against in the time
+/// of one unit (each is looked at: its bounds, then its distance where
+/// they meet).
+const OBSTACLES_PER_UNIT: u64 = 256;
+
+/// What checking one solid against a room of `obstacles` obstacles (and
+/// the person's own body) costs, in units.
+pub fn capsule_check(obstacles: usize) -> u64 {
+    1 + obstacles as u64 / OBSTACLES_PER_UNIT
+}
+
+/// What checking a posture against a room of `obstacles` obstacles costs.
+pub fn posture_check(obstacles: usize) -> u64 {
+    POSTURE_CAPSULES * capsule_check(obstacles)
+}
+
+/// Units a solve spends before it tells its meter (and learns whether the
+/// run is still within its limit): few enough that a run past it stops
+/// within a millisecond or so, many enough that the threads seldom meet
+/// at the shared counter.
+const BATCH: u64 = 4_096;
+
+/// The work a whole run has spent, against its limit.
+#[derive(Debug)]
+pub struct RunWork {
+    spent: AtomicU64,
+    limit: u64,
+}
+
+impl RunWork {
+    /// Nothing spent yet, of `limit` units.
+    pub fn new(limit: u64) -> Arc<Self> {
+        Arc::new(RunWork {
+            spent: AtomicU64::new(0),
+            limit,
+        })
+    }
+
+    /// Units spent so far.
+    pub fn spent(&self) -> u64 {
+        self.spent.load(Ordering::Relaxed)
+    }
+
+    /// Whether the run has spent more than its limit.
+    pub fn exceeded(&self) -> bool {
+        self.spent() > self.limit
+    }
+}
+
+/// The meter of one task (one person's): what it spent, added to its
+/// run's work as well.
+#[derive(Debug)]
+pub struct Meter {
+    own: AtomicU64,
+    run: Option<Arc<RunWork>>,
+}
+
+/// A meter of no run, which never stops a solve.
+static UNMETERED: Meter = Meter {
+    own: AtomicU64::new(0),
+    run: None,
+};
+
+impl Meter {
+    /// A meter of a task of the run `run`.
+    pub fn of(run: &Arc<RunWork>) -> Self {
+        Meter {
+            own: AtomicU64::new(0),
+            run: Some(Arc::clone(run)),
+        }
+    }
+
+    /// A meter that never stops anything (benchmarks of one solver, tests
+    /// of one solve).
+    pub fn unmetered() -> &'static Meter {
+        &UNMETERED
+    }
+
+    /// Add `units`; whether the run is still within its limit.
+    pub fn charge(&self, units: u64) -> bool {
+        self.own.fetch_add(units, Ordering::Relaxed);
+        match &self.run {
+            Some(run) => {
+                let before = run.spent.fetch_add(units, Ordering::Relaxed);
+                before.saturating_add(units) <= run.limit
+            }
+            None => true,
+        }
+    }
+
+    /// Whether the run has spent more than its limit (a solve stops).
+    pub fn exceeded(&self) -> bool {
+        self.run.as_ref().is_some_and(|run| run.exceeded())
+    }
+
+    /// Units this task has spent.
+    pub fn spent(&self) -> u64 {
+        self.own.load(Ordering::Relaxed)
+    }
+
+    /// A tally for one solve, which tells this meter in batches.
+    pub fn tally(&self) -> Tally<'_> {
+        Tally {
+            meter: self,
+            pending: 0,
+            within: !self.exceeded(),
+        }
+    }
+}
+
+/// The work of one solve, told to its meter every [`BATCH`] units and
+/// when it is dropped.
+pub struct Tally<'m> {
+    meter: &'m Meter,
+    pending: u64,
+    within: bool,
+}
+
+impl Tally<'_> {
+    /// Add `units`; whether the solve may go on (the run is within its
+    /// limit, as far as the last batch told).
+    pub fn add(&mut self, units: u64) -> bool {
+        self.pending = self.pending.saturating_add(units);
+        if self.pending >= BATCH {
+            self.within = self.meter.charge(std::mem::take(&mut self.pending));
+        }
+        self.within
+    }
+
+    /// Whether the solve may go on.
+    pub fn within(&self) -> bool {
+        self.within
+    }
+}
+
+impl Drop for Tally<'_> {
+    fn drop(&mut self) {
+        if self.pending > 0 {
+            self.meter.charge(self.pending);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_run_past_its_limit_stops_every_task_and_each_task_keeps_its_own_sum() {
+        let run = RunWork::new(10_000);
+        let (a, b) = (Meter::of(&run), Meter::of(&run));
+        {
+            let mut tally = a.tally();
+            assert!(tally.add(6_000));
+        }
+        assert!(b.charge(4_000));
+        assert!(!run.exceeded());
+        assert!(!b.charge(1));
+        assert!(run.exceeded() && a.exceeded());
+        assert_eq!((a.spent(), b.spent(), run.spent()), (6_000, 4_001, 10_001));
+        assert!(!a.tally().within());
+    }
+
+    #[test]
+    fn the_unmetered_meter_never_stops() {
+        assert!(Meter::unmetered().charge(u64::MAX));
+        assert!(Meter::unmetered().tally().add(u64::MAX));
+    }
+}
