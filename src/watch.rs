@@ -5,7 +5,8 @@
 //! moment. On a terminal each evaluation replaces the screen; piped, each
 //! is printed in full after a separator line. Every evaluation ends with a
 //! summary: the time it took and which results changed since the last good
-//! evaluation.
+//! evaluation. A change that leaves the files the last evaluation read as
+//! they were, byte for byte, is not evaluated again.
 
 use std::collections::BTreeSet;
 use std::io::{IsTerminal, Write};
@@ -60,14 +61,59 @@ pub fn watch(
     // the moment the result appears is never missed.
     state.rewatch(&mut watcher, &root, Vec::new());
     loop {
+        // The bytes of the files the last evaluation read, taken before
+        // this one reads them: a change made meanwhile is seen next time.
+        let read_before = state.watched_files.clone();
+        let bytes = fingerprint(&read_before, state.limits.file_bytes);
         let (files, screen) = state.evaluate(registry, file, formatter, out);
-        state.rewatch(&mut watcher, &root, files);
+        state.rewatch(&mut watcher, &root, files.clone());
         state.show(&screen);
-        if !wait_for_change(&rx, &state.watched_files, &state.watched_dirs) {
-            return 0;
+        // Only where this evaluation read the same files is the
+        // fingerprint theirs.
+        let shown = (state.watched_files == read_before).then_some(bytes);
+        loop {
+            if !wait_for_change(&rx, &state.watched_files, &state.watched_dirs) {
+                return 0;
+            }
+            wait_until_present(&root);
+            // A save that leaves every file as it was (an editor's rename
+            // after the write was already seen, a file saved unchanged)
+            // would show the same screen again. A directory made again
+            // since is watched first, then the files are read: what is
+            // written in it from then on is an event, and before, a change.
+            state.rewatch(&mut watcher, &root, files.clone());
+            if shown != Some(fingerprint(&state.watched_files, state.limits.file_bytes)) {
+                break;
+            }
         }
-        wait_until_present(&root);
     }
+}
+
+/// A hash of the bytes of `files`: each regular file's length and content
+/// (up to one byte more than an evaluation may read, `max_bytes`), and
+/// what the others are (missing, a directory, a FIFO, which are never
+/// read: a FIFO would block).
+fn fingerprint(files: &BTreeSet<PathBuf>, max_bytes: u64) -> u64 {
+    use std::hash::{Hash, Hasher};
+    use std::io::Read;
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    for path in files {
+        path.hash(&mut h);
+        match std::fs::metadata(path) {
+            Ok(m) if m.is_file() => {
+                let mut bytes = Vec::new();
+                let read = std::fs::File::open(path)
+                    .and_then(|f| f.take(max_bytes.saturating_add(1)).read_to_end(&mut bytes));
+                match read {
+                    Ok(_) => (0u8, m.len(), bytes).hash(&mut h),
+                    Err(e) => (1u8, e.kind().to_string()).hash(&mut h),
+                }
+            }
+            Ok(m) => (2u8, format!("{:?}", m.file_type())).hash(&mut h),
+            Err(e) => (3u8, e.kind().to_string()).hash(&mut h),
+        }
+    }
+    h.finish()
 }
 
 struct State {
