@@ -502,18 +502,12 @@ impl<'a> GridRun<'a> {
 }
 
 /// Whether point `i` is not reached and both its neighbours in its row,
-/// or both in its column, are: a hole. At the grid's edge, where a point
-/// has one neighbour in a row or a column, that one reached will do: the
-/// last point of a line, next to one reached, is searched as hard.
+/// or both in its column, are: a hole.
 fn is_hole(grid: &Grid, solved: &[Solved], i: usize) -> bool {
-    let reached = |n: usize| solved[n].reached.is_some();
-    let between = |a: Option<usize>, b: Option<usize>| match (a, b) {
-        (Some(a), Some(b)) => reached(a) && reached(b),
-        (Some(n), None) | (None, Some(n)) => reached(n),
-        (None, None) => false,
-    };
+    let reached = |n: Option<usize>| n.is_some_and(|n| solved[n].reached.is_some());
     let [left, right, below, above] = neighbours(grid, i);
-    solved[i].reached.is_none() && (between(left, right) || between(below, above))
+    solved[i].reached.is_none()
+        && ((reached(left) && reached(right)) || (reached(below) && reached(above)))
 }
 
 /// When a point tried from its neighbour's posture takes a steering
