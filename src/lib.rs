@@ -10,8 +10,10 @@
 //! ```no_run
 //! let registry = reach::plugin::Registry::builtin();
 //! let (_sources, checked) = reach::check(reach::Input::Path("kitchen.reach".as_ref()), &registry);
-//! match checked {
-//!     Ok(scenario) => println!("{:?}", reach::run(&scenario).tasks),
+//! match checked.map(|scenario| reach::run(&scenario)) {
+//!     Ok(Ok(report)) => println!("{:?}", report.tasks),
+//!     // A run whose solvers worked past the bound (`Limits::solver_work`).
+//!     Ok(Err(error)) => eprintln!("{error}"),
 //!     Err(diagnostics) => eprintln!("{}", diagnostics.render(true)),
 //! }
 //! ```

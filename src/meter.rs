@@ -24,7 +24,7 @@ pub const POSTURE_CAPSULES: u64 = 8;
 /// How many of a room's obstacles a solid is checked against in the time
 /// of one unit (each is looked at: its bounds, then its distance where
 /// they meet).
-const OBSTACLES_PER_UNIT: u64 = 256;
+const OBSTACLES_PER_UNIT: u64 = 128;
 
 /// What checking one solid against a room of `obstacles` obstacles (and
 /// the person's own body) costs, in units.

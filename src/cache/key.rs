@@ -112,6 +112,8 @@ fn hash_task(scenario: &Scenario, task: &TaskSpec, tried: &[Tried], h: &mut Defa
     room.name.hash(h);
     hash_bits(room.size_mm.iter(), h);
     hash_tried(tried, h);
+    // What a check costs the meter: a kept answer's work is a fresh run's.
+    crate::meter::capsule_check(room.boxes.len() + room.meshes.len()).hash(h);
 }
 
 /// Where the base may put the hip for each point.

@@ -144,6 +144,10 @@ impl<'a> KeptProofs<'a> {
     /// again with so many times [`BOXES`] (in parallel), and the verdict
     /// answers its questions from the next round on.
     pub fn settle(&self) {
+        if self.meter.exceeded() {
+            // The run is thrown away: no longer look is worth making.
+            return;
+        }
         let longer: Vec<(Key, usize)> = self
             .lock()
             .iter()
@@ -180,6 +184,10 @@ impl<'a> KeptProofs<'a> {
     /// this chain.
     fn cell(&self, target_mm: &Point3<f64>, tolerance_mm: f64) -> Option<(Key, Kept)> {
         self.cut.as_ref()?;
+        if self.meter.exceeded() {
+            // The run is thrown away: no proof is worth making.
+            return None;
+        }
         let cell = target_mm.coords.map(|c| (c / GRID_MM).round());
         let key = (
             [cell.x as i64, cell.y as i64, cell.z as i64],

@@ -55,6 +55,9 @@ pub struct Obstacles {
     /// Where the obstacles the questions come near are recorded (watch
     /// mode's cache), if anywhere.
     touched: Option<Arc<Touched>>,
+    /// The room's boxes and meshes, which a check is charged for
+    /// ([`crate::meter`]) whichever of them a search leaves out.
+    charged: usize,
 }
 
 const WALLS: [Wall; 6] = [
@@ -103,6 +106,7 @@ impl Obstacles {
             clearance_mm,
             walls: WALLS.to_vec(),
             touched: None,
+            charged: room.boxes.len() + room.meshes.len(),
         }
     }
 
@@ -185,13 +189,16 @@ impl Obstacles {
         Obstacles {
             size_mm: self.size_mm,
             clearance_mm: self.clearance_mm,
+            charged: self.charged,
             ..Obstacles::default()
         }
     }
 
-    /// How many boxes and meshes a check looks at.
+    /// How many boxes and meshes a check is charged for: the room's,
+    /// whichever of them a search leaves out, so that a task's work
+    /// depends on the room only through their number.
     pub fn count(&self) -> usize {
-        self.boxes.len() + self.meshes.len()
+        self.charged
     }
 
     /// The name of the room's obstacle `index` (as the hits give it): an

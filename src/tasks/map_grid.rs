@@ -25,7 +25,7 @@ use crate::plugin::{
     BasePose, Placement, PreparedBase, ReachQuery, Retry, Search, Subject, TaskInput,
 };
 use crate::report::{MapCell, MapReport, Names, TaskReport};
-use crate::scene::{Blocked, Grid, GridCell, Surface};
+use crate::scene::{Blocked, Grid, GridCell, IkSolution, Surface};
 
 /// Whether a point is reached (or seen), given where the base stood and
 /// the posture found, and the point.
@@ -126,18 +126,21 @@ fn map_report(
     };
     let mut solved = run.first_pass(&grid);
     run.proofs.settle();
-    if asked.grid.neighbour_starts {
+    // A run past its bound on solver work is thrown away: what is left of
+    // the map is not worked out.
+    let stopped = || input.meter.exceeded();
+    if asked.grid.neighbour_starts && !stopped() {
         let reached: Vec<usize> = (0..solved.len())
             .filter(|&i| solved[i].reached.is_some())
             .collect();
         run.grow(&grid, &mut solved, reached, Steer::AsTheNeighbour);
-        for wave in 0..WAVES {
+        for wave in (0..WAVES).take_while(|_| !stopped()) {
             let gained = run.retry_waiting(&grid, &mut solved, wave);
             run.proofs.settle();
             run.grow(&grid, &mut solved, gained, Steer::Always);
         }
         let holes: Vec<usize> = (0..solved.len())
-            .filter(|&i| is_hole(&grid, &solved, i))
+            .filter(|&i| !stopped() && is_hole(&grid, &solved, i))
             .collect();
         let filled: Vec<(usize, Solved)> = holes
             .par_iter()
@@ -149,7 +152,7 @@ fn map_report(
         }
         run.grow(&grid, &mut solved, gained, Steer::Always);
     }
-    if asked.why {
+    if asked.why && !stopped() {
         run.find_why(&grid, &mut solved);
     }
     let retried = solved
@@ -234,6 +237,18 @@ impl<'a> GridRun<'a> {
     /// run), else searched.
     fn solve(&self, cell: &GridCell, neighbour: Option<&Reached>) -> Solved {
         let query = self.query(cell, neighbour);
+        if self.input.meter.exceeded() {
+            // The run is thrown away: the point is left unsolved.
+            let placement = Placement {
+                pose: BasePose {
+                    position_mm: Point3::origin(),
+                    heading_rad: 0.0,
+                },
+                solution: IkSolution::unsolved(self.asked.chain),
+                retried: false,
+            };
+            return self.solved(cell, placement, query.target_room_mm);
+        }
         let counts = |p: &Placement| (self.judge)(p, cell.point_mm);
         let on = neighbour
             .map(|n| &n.placement)
