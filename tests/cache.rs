@@ -401,7 +401,10 @@ fn answers_kept_across_many_more_obstacles_count_a_fresh_runs_work() {
     let text = |far_boxes: usize| {
         let mut t = String::from("use std::arm\nroom r {\n  size 8000 x 3000 x 2500\n  box board at (0, 1000, 1200) size (300, 800, 20)\n  target mug at (150, 1300, 1250)\n");
         for k in 0..far_boxes {
-            t += &format!("  box far{k} at ({}, 100, 100) size (10, 10, 10)\n", 5000 + 20 * (k % 100));
+            t += &format!(
+                "  box far{k} at ({}, 100, 100) size (10, 10, 10)\n",
+                5000 + 20 * (k % 100)
+            );
         }
         t + "}\nperson ben { mannequin right_arm base fixed { at (700, 1300, 930) heading 180deg } }\nreach mug by ben\n"
     };

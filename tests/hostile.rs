@@ -832,25 +832,38 @@ fn a_box_name_in_two_rooms_is_ambiguous_until_the_room_is_named() {
 // Class 4: every accepted input finishes in bounded time: the solvers'
 // work is metered as they work, and a run past the bound stops.
 
-/// A map whose high points are out of reach over a shelf, by a solver
-/// whose every iteration option is at its cap: well within the count of
-/// solver starts, and minutes of work (with the default bound it stops
-/// after about 7 s).
-const CAPPED: &str = "units mm deg
+/// A counter with a shelf over it and the plane of its front, `more` in
+/// the room, and `rest` after it.
+fn shelf_room(more: &str, rest: &str) -> String {
+    format!(
+        "units mm deg
 use std::arm
-room r {
+room r {{
   size 3000 x 3000 x 2500
   box counter at (0, 0, 0) size (600, 3000, 900)
   box shelf at (0, 0, 1400) size (350, 3000, 20)
   surface front at (600, 500, 100) size (0, 1500, 1900)
+{more}}}
+{rest}"
+    )
 }
-person ann { mannequin right_arm base fixed { at (1000, 1250, 500) heading 180deg } }
+
+/// A map whose high points are out of reach over the shelf, by a solver
+/// whose every iteration option is at its cap: well within the count of
+/// solver starts, and minutes of work (with the default bound it stops
+/// after about 7 s).
+fn capped() -> String {
+    shelf_room(
+        "",
+        "person ann { mannequin right_arm base fixed { at (1000, 1250, 500) heading 180deg } }
 map front by ann { step 300mm blocked_retries 0 solver fabrik { starts 1 max_iterations 10000 stall 10000 sweeps 20 samples 20 kicks 100 } }
-";
+",
+    )
+}
 
 #[test]
 fn a_run_past_the_bound_on_solver_work_stops_with_the_limit_named() {
-    let (dir, path) = scenario_file(CAPPED);
+    let (dir, path) = scenario_file(&capped());
     let out = dir.path().join("out");
     let o = reach_bin(&[
         "run",
@@ -873,21 +886,14 @@ fn a_run_past_the_bound_on_solver_work_stops_with_the_limit_named() {
     assert!(!out.exists());
 }
 
-/// A map through a shelf and a reach over it by a wheelchair user: the
+/// A map through the shelf and a reach over it by a wheelchair user: the
 /// map's retries and kept proofs, the reach's placements.
-const METERED: &str = "units mm deg
-use std::arm
-room r {
-  size 3000 x 3000 x 2500
-  box counter at (0, 0, 0) size (600, 3000, 900)
-  box shelf at (0, 0, 1400) size (350, 3000, 20)
-  surface front at (600, 500, 100) size (0, 1500, 1900)
-  target cup at (300, 1500, 1450)
+fn metered() -> String {
+    shelf_room(
+        "  target cup at (300, 1500, 1450)\n",
+        "person ann { mannequin right_arm base wheelchair }\nmap front by ann { step 80mm }\nreach cup by ann\n",
+    )
 }
-person ann { mannequin right_arm base wheelchair }
-map front by ann { step 80mm }
-reach cup by ann
-";
 
 /// The run of `text` within `limit` units of solver work, on `threads`
 /// threads: the work, or the error.
@@ -917,11 +923,11 @@ fn metered_run(text: &str, limit: u64, threads: usize) -> Result<u64, reach::Err
 /// on each: at its own work it runs, one unit less it stops.
 #[test]
 fn a_run_stays_within_the_bound_or_passes_it_whatever_the_threads() {
-    let work = metered_run(METERED, u64::MAX / 2, 1).expect("within the bound");
+    let work = metered_run(&metered(), u64::MAX / 2, 1).expect("within the bound");
     assert!(work > 100_000, "{work}");
     for threads in [1, 3] {
-        assert_eq!(metered_run(METERED, work, threads).ok(), Some(work));
-        let past = metered_run(METERED, work - 1, threads).expect_err("past the bound");
+        assert_eq!(metered_run(&metered(), work, threads).ok(), Some(work));
+        let past = metered_run(&metered(), work - 1, threads).expect_err("past the bound");
         assert!(
             matches!(past.kind(), ErrorKind::TooMuchWork { limit } if *limit == work - 1),
             "{past}"

@@ -81,14 +81,21 @@ impl Drop for Watch {
     }
 }
 
-#[test]
-fn watch_follows_every_way_of_saving() {
+/// A scenario that uses `parts.reach`, in a directory of its own, watched
+/// until its first results are shown.
+fn watching() -> (tempfile::TempDir, std::path::PathBuf, Watch) {
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("watched.reach");
     std::fs::write(dir.path().join("parts.reach"), PARTS).unwrap();
     std::fs::write(&file, scenario(0)).unwrap();
     let mut w = Watch::start(&file);
     w.expect("first results", 1);
+    (dir, file, w)
+}
+
+#[test]
+fn watch_follows_every_way_of_saving() {
+    let (dir, file, mut w) = watching();
 
     // Written in place.
     std::fs::write(&file, scenario(1500)).unwrap();
@@ -265,12 +272,7 @@ fn watch_follows_links_remade_directories_and_is_not_held_by_a_fifo() {
 /// the next real change is shown.
 #[test]
 fn watch_does_not_evaluate_again_what_a_save_left_unchanged() {
-    let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("watched.reach");
-    std::fs::write(dir.path().join("parts.reach"), PARTS).unwrap();
-    std::fs::write(&file, scenario(0)).unwrap();
-    let mut w = Watch::start(&file);
-    w.expect("first results", 1);
+    let (dir, file, mut w) = watching();
     // The first evaluation found the used file: the files it read are
     // known from the second on.
     std::fs::write(&file, scenario(1)).unwrap();
