@@ -163,7 +163,7 @@ struct LimitArgs {
     /// Largest scenario file (.reach), the root or a used one
     #[arg(long, value_name = "BYTES", default_value_t = DEFAULTS.scenario_bytes as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.scenario_bytes as u64))]
     max_scenario_bytes: u64,
-    /// Most boxes in one room
+    /// Most boxes and meshes in one room
     #[arg(long, value_name = "N", default_value_t = DEFAULTS.boxes as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.boxes as u64))]
     max_boxes: u64,
     /// Deepest nesting of parentheses and braces

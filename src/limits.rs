@@ -14,7 +14,7 @@ pub struct Limits {
     /// smaller than a mesh may be, since its text is parsed (about 5 MB a
     /// second).
     pub scenario_bytes: u64,
-    /// Most boxes in one room (where they crowd, the floor a base may
+    /// Most boxes and meshes in one room (where they crowd, the floor a base may
     /// stand on costs more than their count).
     pub boxes: usize,
     /// Deepest nesting of parentheses and braces (expressions, points,

@@ -934,3 +934,27 @@ fn a_run_stays_within_the_bound_or_passes_it_whatever_the_threads() {
         );
     }
 }
+
+/// Each check against the room looks at every mesh as at every box, so
+/// meshes count towards `--max-boxes` with the boxes (20,000 `mesh`
+/// lines were accepted at any bound before).
+#[test]
+fn meshes_count_towards_the_most_boxes_a_room_may_have() {
+    let meshes: String = (0..4)
+        .map(|k| format!("  mesh m{k} from \"cube.obj\"\n"))
+        .collect();
+    let text = format!(
+        "units mm deg\nroom r {{\n  size 3000 x 3000 x 2500\n  box b at (0, 0, 0) size (100, 100, 100)\n{meshes}}}\n"
+    );
+    let (dir, path) = scenario_file(&text);
+    std::fs::write(
+        dir.path().join("cube.obj"),
+        cube_obj([1000.0; 3], 100.0, false),
+    )
+    .unwrap();
+    let (code, _, err) = check(&path, &["--max-boxes", "4"]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(flat(&err).contains("with 5 boxes and meshes"), "{err}");
+    let (code, _, err) = check(&path, &["--max-boxes", "5"]);
+    assert_eq!(code, Some(0), "{err}");
+}

@@ -61,21 +61,22 @@ impl Checker<'_> {
 
     fn room(&mut self, decl: &RoomDecl) -> Option<Room> {
         self.check_room_names(decl);
+        // Every check against the room looks at each box and each mesh.
         let box_count = decl
             .items
             .iter()
-            .filter(|i| matches!(i, RoomItem::Box(_)))
+            .filter(|i| matches!(i, RoomItem::Box(_) | RoomItem::Mesh(_)))
             .count();
         if box_count > self.limits.boxes {
             self.error(Error::new(
                 ErrorKind::TooLarge {
                     what: format!(
-                        "room `{}`, with {} boxes,",
+                        "room `{}`, with {} boxes and meshes,",
                         decl.name.value,
                         thousands(box_count as u64)
                     ),
                     limit: format!(
-                        "{} boxes in one room (--max-boxes)",
+                        "{} boxes and meshes in one room (--max-boxes)",
                         thousands(self.limits.boxes as u64)
                     ),
                 },
