@@ -82,35 +82,26 @@ pub fn watch(
             // since is watched first, then the files are read: what is
             // written in it from then on is an event, and before, a change.
             state.rewatch(&mut watcher, &root, files.clone());
-            if shown != Some(fingerprint(&state.watched_files, state.limits.file_bytes)) {
+            let unchanged =
+                |bytes| bytes == fingerprint(&state.watched_files, state.limits.file_bytes);
+            if !shown.is_some_and(unchanged) {
                 break;
             }
         }
     }
 }
 
-/// A hash of the bytes of `files`: each regular file's length and content
-/// (up to one byte more than an evaluation may read, `max_bytes`), and
-/// what the others are (missing, a directory, a FIFO, which are never
-/// read: a FIFO would block).
+/// A hash of what reading `files` gives, as an evaluation reads them
+/// (`reach::read`: regular files only, a FIFO never waited on, at most
+/// `max_bytes`): each file's bytes, or why it could not be read.
 fn fingerprint(files: &BTreeSet<PathBuf>, max_bytes: u64) -> u64 {
     use std::hash::{Hash, Hasher};
-    use std::io::Read;
     let mut h = std::collections::hash_map::DefaultHasher::new();
     for path in files {
         path.hash(&mut h);
-        match std::fs::metadata(path) {
-            Ok(m) if m.is_file() => {
-                let mut bytes = Vec::new();
-                let read = std::fs::File::open(path)
-                    .and_then(|f| f.take(max_bytes.saturating_add(1)).read_to_end(&mut bytes));
-                match read {
-                    Ok(_) => (0u8, m.len(), bytes).hash(&mut h),
-                    Err(e) => (1u8, e.kind().to_string()).hash(&mut h),
-                }
-            }
-            Ok(m) => (2u8, format!("{:?}", m.file_type())).hash(&mut h),
-            Err(e) => (3u8, e.kind().to_string()).hash(&mut h),
+        match reach::read::read_root(path, max_bytes) {
+            Ok(bytes) => (0u8, bytes).hash(&mut h),
+            Err(e) => (1u8, e.to_string()).hash(&mut h),
         }
     }
     h.finish()
