@@ -129,15 +129,6 @@ pub fn run_counting(
     let all: Vec<&scenario::TaskSpec> = scenario.tasks.iter().collect();
     let ran = scenario.run_tasks(&all, progress)?;
     let work = ran.iter().map(|r| r.work).sum();
-    let mut tasks: Vec<_> = ran.into_iter().map(|r| r.report).collect();
-    let standards = scenario.run_standards(&all, &tasks);
-    tasks.extend(standards);
-    let report = Report {
-        schema: report::SCHEMA_VERSION,
-        file: scenario.file.clone(),
-        notes: scenario.notes(),
-        expectations: scenario.judge(&tasks),
-        tasks,
-    };
-    Ok((report, work))
+    let tasks = ran.into_iter().map(|r| r.report).collect();
+    Ok((scenario.report(tasks), work))
 }

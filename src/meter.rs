@@ -68,6 +68,12 @@ impl RunWork {
     pub fn exceeded(&self) -> bool {
         self.spent() > self.limit
     }
+
+    /// Add `units`; whether the run is still within its limit.
+    pub fn charge(&self, units: u64) -> bool {
+        let before = self.spent.fetch_add(units, Ordering::Relaxed);
+        before.saturating_add(units) <= self.limit
+    }
 }
 
 /// The meter of one task (one person's): what it spent, added to its
@@ -102,13 +108,7 @@ impl Meter {
     /// Add `units`; whether the run is still within its limit.
     pub fn charge(&self, units: u64) -> bool {
         self.own.fetch_add(units, Ordering::Relaxed);
-        match &self.run {
-            Some(run) => {
-                let before = run.spent.fetch_add(units, Ordering::Relaxed);
-                before.saturating_add(units) <= run.limit
-            }
-            None => true,
-        }
+        self.run.as_ref().is_none_or(|run| run.charge(units))
     }
 
     /// Whether the run has spent more than its limit (a solve stops).

@@ -424,7 +424,10 @@ impl PreparedMobile<'_> {
                 scanned.push(pose);
                 let q = capability.q(sample);
                 let clear = query.obstacles.is_none()
-                    || query.checked(&query.problem(self.chain, pose), q).is_none();
+                    || query
+                        .problem(self.chain, pose)
+                        .collision_charged(q)
+                        .is_none();
                 if clear {
                     found.push(Candidate {
                         start: Some(q.to_vec()),

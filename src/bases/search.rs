@@ -184,8 +184,7 @@ fn clear_start(problem: &IkProblem<'_>, kicks: &mut Kicks<'_>, draws: usize) -> 
     let mut start = Vec::new();
     for _ in 0..draws {
         start = kicks.next().unwrap_or_default();
-        problem.meter.charge(problem.check_units());
-        if problem.collision(&start).is_none() {
+        if problem.collision_charged(&start).is_none() {
             break;
         }
     }

@@ -19,7 +19,7 @@ use std::collections::HashMap;
 
 use crate::error::Error;
 use crate::progress::Progress;
-use crate::report::{Report, TaskReport, SCHEMA_VERSION};
+use crate::report::{Report, TaskReport};
 use crate::scenario::{Scenario, TaskSpec};
 
 /// Results of earlier runs, by key.
@@ -101,17 +101,7 @@ impl TaskCache {
         let ran = stale.len();
         self.kept = kept;
         self.results = results;
-        // Standards are checked again every time: they read the whole room.
-        let all: Vec<&TaskSpec> = scenario.tasks.iter().collect();
-        let standards = scenario.run_standards(&all, &tasks);
-        tasks.extend(standards);
-        let report = Report {
-            schema: SCHEMA_VERSION,
-            file: scenario.file.clone(),
-            notes: scenario.notes(),
-            expectations: scenario.judge(&tasks),
-            tasks,
-        };
+        let report = scenario.report(tasks);
         let stats = CacheStats {
             reused: keys.len() - ran,
             ran,

@@ -21,6 +21,12 @@ pub struct PlacedObstacles<'a> {
 }
 
 impl PlacedObstacles<'_> {
+    /// What one check of a posture against these costs the meter
+    /// ([`crate::meter`]).
+    pub fn check_units(&self) -> u64 {
+        crate::meter::posture_check(self.obstacles.count())
+    }
+
     /// What one solid of the person, in the base frame, overlaps first:
     /// their own legs or base, then the room.
     pub fn capsule_hit(&self, capsule: &Capsule) -> Option<Blocker> {

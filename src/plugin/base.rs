@@ -13,7 +13,7 @@ use geo::MultiPolygon;
 use crate::floor::{Footprint, Misfit, Shut};
 use crate::kinematics::{Chain, Posture};
 use crate::meter::Meter;
-use crate::scene::{BasePose, Blocked, Collision, OwnBody, Physique, Placement, Room};
+use crate::scene::{BasePose, Blocked, OwnBody, Physique, Placement, Room};
 
 /// How hard a base looks for a placement.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -104,19 +104,12 @@ impl<'a> ReachQuery<'a> {
             Search::MostComfortable => solver.solve(&problem),
             Search::FirstReaching => solver.solve_until_reached(&problem),
         };
-        solution.collision = self.checked(&problem, &solution.q);
+        solution.collision = problem.collision_charged(&solution.q);
         Placement {
             pose,
             solution,
             retried: false,
         }
-    }
-
-    /// What posture `q` of `problem` runs into, the check told to the
-    /// meter.
-    pub fn checked(&self, problem: &IkProblem<'_>, q: &[f64]) -> Option<Collision> {
-        self.meter.charge(problem.check_units());
-        problem.collision(q)
     }
 
     /// One solve from `pose` and posture `start` (a neighbouring point's on
@@ -130,7 +123,7 @@ impl<'a> ReachQuery<'a> {
     ) -> Placement {
         let problem = self.problem(chain, pose);
         let mut solution = solver.solve_from(&problem, start);
-        solution.collision = self.checked(&problem, &solution.q);
+        solution.collision = problem.collision_charged(&solution.q);
         Placement {
             pose,
             solution,

@@ -41,7 +41,14 @@ impl IkProblem<'_> {
     pub fn check_units(&self) -> u64 {
         self.obstacles
             .as_ref()
-            .map_or(0, |o| crate::meter::posture_check(o.obstacles.count()))
+            .map_or(0, PlacedObstacles::check_units)
+    }
+
+    /// [`IkProblem::collision`], the check told to the meter at once (for
+    /// a check outside a solve's tally: a placement's, a start's).
+    pub fn collision_charged(&self, q: &[f64]) -> Option<Collision> {
+        self.meter.charge(self.check_units());
+        self.collision(q)
     }
 
     /// The first thing the chain's solids `v` (of some posture) run into,

@@ -15,7 +15,9 @@ use crate::error::Error;
 use crate::meter::{Meter, RunWork};
 use crate::plugin::{Fit, TaskInput};
 use crate::progress::Progress;
-use crate::report::{NotPlacedReport, PersonAnswer, PopulationReport, TaskReport};
+use crate::report::{
+    NotPlacedReport, PersonAnswer, PopulationReport, Report, TaskReport, SCHEMA_VERSION,
+};
 
 /// One task's answer, what its questions touched of its room (where it
 /// records that) and the work its solvers did.
@@ -71,7 +73,7 @@ impl Scenario {
         also_spent: u64,
     ) -> Result<Vec<Ran>, Error> {
         let run = RunWork::new(self.work.limit);
-        if !Meter::of(&run).charge(also_spent) {
+        if !run.charge(also_spent) {
             return Err(self.work.exceeded());
         }
         self.run_jobs(tasks, progress, true, &run)
@@ -145,15 +147,12 @@ impl Scenario {
         let mut answers = Vec::with_capacity(found.len());
         for (job, (each, set)) in jobs.iter().zip(found) {
             match job {
-                Job::Alone(k) => touched[*k] = set,
+                Job::Alone(k) => (touched[*k], work[*k]) = (set, each[0].1),
                 Job::Member { population, .. } => {
                     for (&k, (_, w)) in by_population[population].iter().zip(&each) {
                         work[k] += w;
                     }
                 }
-            }
-            if let Job::Alone(k) = job {
-                work[*k] = each[0].1;
             }
             answers.push(each.into_iter().map(|(report, _)| report).collect());
         }
@@ -168,6 +167,23 @@ impl Scenario {
                 work,
             })
             .collect())
+    }
+
+    /// The report of a run whose tasks, all of them in the order of the
+    /// file, answered `tasks`: those answers, then the standards (checked
+    /// again each time: they read the whole room), and what the file
+    /// expects of them.
+    pub fn report(&self, mut tasks: Vec<TaskReport>) -> Report {
+        let all: Vec<&TaskSpec> = self.tasks.iter().collect();
+        let standards = self.run_standards(&all, &tasks);
+        tasks.extend(standards);
+        Report {
+            schema: SCHEMA_VERSION,
+            file: self.file.clone(),
+            notes: self.notes(),
+            expectations: self.judge(&tasks),
+            tasks,
+        }
     }
 
     /// Each standard checked on its room, in parallel, in the order given;

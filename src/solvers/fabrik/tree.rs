@@ -17,7 +17,7 @@ use super::stall::{Next, Stalls};
 use super::FabrikSettings;
 use crate::collision::PlacedObstacles;
 use crate::kinematics::{Body, Chain};
-use crate::meter::{posture_check, Meter};
+use crate::meter::Meter;
 use crate::plugin::IkProblem;
 use crate::solvers::starts::Starts;
 
@@ -230,14 +230,10 @@ impl Tree<'_> {
         let mut stalls = Stalls::new();
         let mut iterations = 0;
         let mut tally = self.problem.meter.tally();
-        let checks = if s.avoid_obstacles && self.problem.obstacles.is_some() {
-            self.problem
-                .obstacles
-                .map_or(0, |o| posture_check(o.obstacles.count()))
-                * self.passes.len() as u64
-        } else {
-            0
-        };
+        // Each look at the posture checks every branch.
+        let checks = (self.problem.obstacles)
+            .filter(|_| s.avoid_obstacles)
+            .map_or(0, |o| o.check_units() * self.passes.len() as u64);
         while iterations < s.max_iterations {
             let work: u64 = self
                 .passes
