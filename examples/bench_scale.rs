@@ -1,13 +1,14 @@
 //! Rooms at real scale: how long a run takes and how much memory it
 //! holds as the room grows. Each row is generated (boxes in shelving
 //! units; a scanned kitchen as one open mesh of small triangles; a map of
-//! a counter's front), then checked and run in a child process of this
+//! a counter's front; posts in a hall entered by a door, so that the
+//! routes from the door cross the whole hall), then checked and run in a child process of this
 //! program, which reports its time and its peak resident memory (Linux:
 //! `VmHWM`). Prints one table row per size and the growth exponent
 //! between the two largest sizes of each kind.
 //!
 //! `cargo run --release --example bench_scale` (all rows), or with a kind
-//! (`boxes`, `mesh`, `map`) to run only those.
+//! (`boxes`, `mesh`, `map`, `doors`) to run only those.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -17,11 +18,12 @@ use std::time::Instant;
 use reach::plugin::Registry;
 use reach::Input;
 
-/// The sizes of each kind: boxes, triangles, map points.
-const ROWS: [(&str, [usize; 2]); 3] = [
+/// The sizes of each kind: boxes, triangles, map points, posts.
+const ROWS: [(&str, [usize; 2]); 4] = [
     ("boxes", [200, 2_000]),
     ("mesh", [100_000, 1_000_000]),
     ("map", [10_000, 100_000]),
+    ("doors", [200, 2_000]),
 ];
 
 fn main() {
@@ -65,6 +67,7 @@ fn describe(kind: &str) -> &'static str {
     match kind {
         "boxes" => "box obstacles, wheelchair, 20 targets",
         "mesh" => "one scanned mesh (triangles), wheelchair, 20 targets",
+        "doors" => "posts 1 m apart in a hall with a door, manual wheelchair, 1 target",
         _ => "map points, wheelchair, JSON report",
     }
 }
@@ -78,6 +81,7 @@ fn child(kind: &str, size: usize) {
             std::fs::write(dir.path().join("scan.obj"), scan(size)).expect("written");
             mesh_room()
         }
+        "doors" => hall(size),
         _ => map(size),
     };
     let path = dir.path().join("scale.reach");
@@ -148,6 +152,23 @@ fn boxes(n: usize) -> String {
         names.push(format!("t{k}"));
     }
     t + "}\n" + PERSON + &format!("reach {} by ann\n", names.join(", "))
+}
+
+/// `n` posts of 100 mm on a 1 m grid in a square hall with a door in
+/// its wall x = 0, and one target on a post: a seated man in the stdlib's
+/// manual wheelchair (its twelve parts) must be able to get there.
+fn hall(n: usize) -> String {
+    let k = (n as f64).sqrt().ceil() as usize;
+    let side = 1000 * (k + 1);
+    let mut t =
+        format!("units mm deg\nuse std::people\nroom hall {{\n  size {side} x {side} x 2500\n");
+    for i in 0..n {
+        let (x, y) = (1000 * (1 + i / k), 1000 * (1 + i % k));
+        writeln!(t, "  box p{i} at ({x}, {y}, 0) size (100, 100, 900)").unwrap();
+    }
+    writeln!(t, "  target t at (1050, 1050, 960)").unwrap();
+    writeln!(t, "  door d at (0, {}) width 1000mm\n}}", side / 2).unwrap();
+    t + "person ann {\n  mannequin man_50th_seated\n  base manual_wheelchair\n}\nreach t by ann\n"
 }
 
 /// A kitchen scanned as one mesh of about `n` triangles: an L-shaped

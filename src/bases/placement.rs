@@ -175,7 +175,7 @@ impl Mobile {
         };
         let fits = regions.iter().any(|(_, r)| !r.is_empty());
         let routes = fits
-            .then(|| Routes::new(room, &self.footprint, headings))
+            .then(|| Routes::of(room, &self.footprint, headings))
             .flatten();
         let Some(routes) = routes else {
             return Floor {
@@ -186,14 +186,14 @@ impl Mobile {
         };
         let reached = |h: f64| {
             let obstacles = Arc::clone(&obstacles);
-            let pieces = routes.reached(h);
-            Arc::new(Region::of_pieces(
+            let routes = Arc::clone(&routes);
+            Arc::new(Region::reached(
                 room,
                 &self.footprint,
                 h,
                 zone,
                 obstacles,
-                &pieces,
+                routes,
             ))
         };
         Floor {

@@ -8,6 +8,7 @@
 mod clear;
 mod footprint;
 mod inside;
+mod layer;
 mod mesh_cells;
 mod misfit;
 mod obstacles;

@@ -15,19 +15,27 @@
 //! forwards or backwards. The pieces joined to one that reaches the far
 //! end of a passage are where it can get to; a place elsewhere in the room
 //! is cut off.
+//!
+//! Each heading's floor is worked out a tile at a time (`layer.rs`), so
+//! that the cost grows with the room's size, not faster: a piece of one
+//! tile is joined to the pieces of the tiles beside it that it runs on
+//! into.
 
+use std::collections::hash_map::DefaultHasher;
 use std::f64::consts::TAU;
+use std::hash::Hasher;
+use std::sync::Arc;
 
-use geo::{
-    Contains, ConvexHull, Coord, Distance, Euclidean, InteriorPoint, Intersects, LineString,
-    MultiPoint, MultiPolygon, Point, Polygon, Rect,
-};
+use geo::{ConvexHull, Distance, Euclidean, InteriorPoint, Intersects, LineString, MultiPoint};
+use geo::{Coord, Point, Polygon, Rect};
 use nalgebra::{Point3, Vector3};
 
+use super::layer::{Grid, Layer};
 use super::obstacles::{box_outline, FloorObstacles};
-use super::region::{admissible_in, shrunk, shrunk_room, Turned};
+use super::region::{shrunk, shrunk_room, Turned};
 use super::Footprint;
-use crate::scene::{BoxObstacle, Door, MeshObstacle, Room, Wall};
+use crate::kept::Kept;
+use crate::scene::{hash_bits, BoxObstacle, Door, MeshObstacle, Room, Wall};
 
 /// The headings a turning base is followed at, besides its own and the
 /// doors': every 22.5 degrees.
@@ -46,18 +54,16 @@ const SPARE_MM: f64 = 100.0;
 
 /// Where a base can get to in one room.
 pub struct Routes {
-    /// The headings followed, ascending in [0, 2 pi), each with the room's
-    /// admissible region in pieces and whether each can be got to.
-    headings: Vec<Pieces>,
+    grid: Grid,
+    /// The headings followed, ascending in [0, 2 pi), each with the
+    /// extended floor's admissible region tile by tile.
+    layers: Vec<Layer>,
+    /// Whether each piece (numbered across the layers) can be got to.
+    reached: Vec<bool>,
+    /// Each piece's set of joined pieces (a piece's number in it).
+    sets: Vec<usize>,
     /// How the base comes in, door by door.
     pub doors: Vec<Doorway>,
-}
-
-/// The room's admissible region at one heading, piece by piece.
-struct Pieces {
-    heading_rad: f64,
-    region: MultiPolygon<f64>,
-    reached: Vec<bool>,
 }
 
 /// Whether a base comes in through a door.
@@ -91,63 +97,67 @@ pub enum Entry {
     Blocked,
 }
 
+/// Routes kept by the process, by a hash of the room's floor, the
+/// footprint and the headings.
+static KEPT: Kept<Option<Arc<Routes>>> = Kept::new(16);
+
 impl Routes {
     /// Where a base of `footprint` can get to in `room` from its doors,
     /// followed at the base's `headings` too; none if the room has no
-    /// door (then it may be placed wherever it fits).
+    /// door (then it may be placed wherever it fits). Kept by the process:
+    /// the same room, footprint and headings give the same routes.
+    pub fn of(room: &Room, footprint: &Footprint, headings: &[f64]) -> Option<Arc<Routes>> {
+        if room.doors.is_empty() {
+            return None;
+        }
+        let mut h = DefaultHasher::new();
+        footprint.hash_with_floor(room, &mut h);
+        hash_bits(headings, &mut h);
+        KEPT.get_or(h.finish(), || {
+            Routes::new(room, footprint, headings).map(Arc::new)
+        })
+    }
+
+    /// Like `of`, worked out afresh.
     pub fn new(room: &Room, footprint: &Footprint, headings: &[f64]) -> Option<Routes> {
         if room.doors.is_empty() {
             return None;
         }
         let space = Space::new(room, footprint);
-        let inside = FloorObstacles::new(room, footprint);
+        let grid = Grid::over(space.floor);
         let followed = followed_headings(footprint, headings, room);
-        // The extended floor's pieces at each heading, which the joins and
-        // the doors act on.
-        let extended: Vec<MultiPolygon<f64>> = followed
-            .iter()
-            .map(|&h| space.region(footprint, h))
-            .collect();
-        let mut joined = Joined::new(&extended);
-        if footprint.turns() {
-            join_turns(&space, footprint, &followed, &extended, &mut joined);
+        let mut layers: Vec<Layer> = Vec::with_capacity(followed.len());
+        for &h in &followed {
+            let first = layers.last().map_or(0, Layer::end);
+            layers.push(space.layer(&grid, footprint, h, first));
         }
-        let mut doors = Vec::new();
-        for (d, door) in room.doors.iter().enumerate() {
-            let ends: Vec<(usize, usize)> = (extended.iter().enumerate())
-                .flat_map(|(h, region)| {
-                    let end = &space.outside[d];
-                    (region.0.iter().enumerate())
-                        .filter(move |(_, p)| p.intersects(end))
-                        .map(move |(k, _)| (h, k))
-                })
-                .collect();
-            for &(h, k) in &ends {
-                joined.start(h, k);
+        let mut joined = Joined::new(layers.last().map_or(0, Layer::end));
+        for layer in &layers {
+            for (a, b) in layer.seams(&grid) {
+                joined.union(a, b);
             }
-            doors.push((door, ends));
         }
-        let mut pieces: Vec<Pieces> = followed
-            .iter()
-            .map(|&h| Pieces::at(room, footprint, h, &inside))
-            .collect();
-        for (h, p) in pieces.iter_mut().enumerate() {
-            p.reached = (p.region.0.iter())
-                .map(|poly| {
-                    poly.interior_point()
-                        .and_then(|c| piece_at(&extended[h], c))
-                        .is_some_and(|k| joined.reached(h, k))
-                })
-                .collect();
+        if footprint.turns() {
+            join_turns(&space, &grid, footprint, &layers, &mut joined);
         }
-        let doors = doors
-            .into_iter()
-            .map(|(door, ends)| doorway(door, footprint, &ends, &pieces, &extended, &mut joined))
+        let ends: Vec<Vec<usize>> = (0..room.doors.len())
+            .map(|d| door_ends(&layers, space.outside[d]))
             .collect();
-        Some(Routes {
-            headings: pieces,
-            doors,
-        })
+        ends.iter().flatten().for_each(|&n| joined.start(n));
+        let count = layers.last().map_or(0, Layer::end);
+        let sets: Vec<usize> = (0..count).map(|n| joined.root(n)).collect();
+        let reached = (0..count).map(|n| joined.reached(n)).collect();
+        let mut routes = Routes {
+            grid,
+            layers,
+            reached,
+            sets,
+            doors: Vec::new(),
+        };
+        routes.doors = (room.doors.iter().zip(&ends))
+            .map(|(door, ends)| routes.doorway(room, door, footprint, ends))
+            .collect();
+        Some(routes)
     }
 
     /// Whether the base comes in through any door.
@@ -155,26 +165,19 @@ impl Routes {
         self.doors.iter().any(|d| d.comes_in == Entry::Through)
     }
 
-    /// The pieces of the admissible region at `heading_rad` (one of the
-    /// headings given to `new`) the base can get to.
-    pub fn reached(&self, heading_rad: f64) -> MultiPolygon<f64> {
-        self.kept(heading_rad, true)
+    /// Whether the base, its hip at `(x, y)` and facing `heading_rad` (one
+    /// of the headings given to `new`), is where it can get to from a
+    /// door; none where it does not fit.
+    pub fn reached_at(&self, heading_rad: f64, x: f64, y: f64) -> Option<bool> {
+        let layer = self.layer(heading_rad)?;
+        let n = layer.piece_at(&self.grid, Point::new(x, y))?;
+        Some(self.reached[n])
     }
 
-    /// The pieces of the admissible region at `heading_rad` the base
-    /// cannot get to.
-    pub fn cut_off(&self, heading_rad: f64) -> MultiPolygon<f64> {
-        self.kept(heading_rad, false)
-    }
-
-    fn kept(&self, heading_rad: f64, reached: bool) -> MultiPolygon<f64> {
-        let Some(p) = self.pieces(heading_rad) else {
-            return MultiPolygon::new(Vec::new());
-        };
-        let kept = (p.region.0.iter().zip(&p.reached))
-            .filter(|(_, &r)| r == reached)
-            .map(|(poly, _)| poly.clone());
-        MultiPolygon::new(kept.collect())
+    /// Whether the base gets anywhere at `heading_rad`.
+    pub fn reaches_any(&self, heading_rad: f64) -> bool {
+        self.layer(heading_rad)
+            .is_some_and(|l| l.pieces().any(|(n, _)| self.reached[n]))
     }
 
     /// The room's obstacles (boxes, then meshes, by index) that close in
@@ -189,17 +192,11 @@ impl Routes {
         heading_rad: f64,
         hip_mm: (f64, f64),
     ) -> Vec<usize> {
-        let Some(routes) = Routes::new(room, footprint, &[heading_rad]) else {
+        let Some(routes) = Routes::of(room, footprint, &[heading_rad]) else {
             return Vec::new();
         };
         let hip = Point::new(hip_mm.0, hip_mm.1);
-        let cut_off = routes.cut_off(heading_rad);
-        let piece = cut_off.0.iter().min_by(|a, b| {
-            Euclidean
-                .distance(*a, &hip)
-                .total_cmp(&Euclidean.distance(*b, &hip))
-        });
-        let Some(piece) = piece else {
+        let Some(piece) = routes.cut_off_near(heading_rad, hip) else {
             return Vec::new();
         };
         let reach_mm = footprint.extent_mm() + SPARE_MM;
@@ -226,93 +223,79 @@ impl Routes {
         near.into_iter().map(|(_, i)| i).collect()
     }
 
-    fn pieces(&self, heading_rad: f64) -> Option<&Pieces> {
-        let h = normalized(heading_rad);
-        self.headings
-            .iter()
-            .find(|p| (p.heading_rad - h).abs() <= SAME_HEADING_RAD)
+    /// The floor at `heading_rad` the base cannot get to nearest `hip`, in
+    /// one piece: the tiles' pieces of its set joined, the part nearest
+    /// `hip`.
+    fn cut_off_near(&self, heading_rad: f64, hip: Point<f64>) -> Option<Polygon<f64>> {
+        let layer = self.layer(heading_rad)?;
+        let distance = |p: &Polygon<f64>| Euclidean.distance(p, &hip);
+        let (nearest, _) = (layer.pieces())
+            .filter(|(n, _)| !self.reached[*n])
+            .min_by(|a, b| distance(a.1).total_cmp(&distance(b.1)))?;
+        let set = self.sets[nearest];
+        let parts: Vec<Polygon<f64>> = (layer.pieces())
+            .filter(|(n, _)| self.sets[*n] == set)
+            .map(|(_, p)| p.clone())
+            .collect();
+        let whole = geo::unary_union(&parts);
+        whole
+            .0
+            .into_iter()
+            .min_by(|a, b| distance(a).total_cmp(&distance(b)))
     }
-}
 
-impl Pieces {
-    fn at(
-        room: &Room,
-        footprint: &Footprint,
-        heading_rad: f64,
-        obstacles: &FloorObstacles,
-    ) -> Self {
-        let turned = Turned::new(footprint, heading_rad);
-        let region = match shrunk_room(room, &turned, None) {
-            Some(within) => admissible_in(within, &turned, obstacles),
-            None => MultiPolygon::new(Vec::new()),
+    fn layer(&self, heading_rad: f64) -> Option<&Layer> {
+        let h = normalized(heading_rad);
+        self.layers
+            .iter()
+            .find(|l| (l.heading_rad - h).abs() <= SAME_HEADING_RAD)
+    }
+
+    /// How a base fares at `door`: through if a piece its passage's far
+    /// end reaches (`ends`) is joined to floor in the room; blocked if it
+    /// only gets into the doorway; too narrow if it cannot stand in the
+    /// passage at all.
+    fn doorway(&self, room: &Room, door: &Door, footprint: &Footprint, ends: &[usize]) -> Doorway {
+        let turned = Turned::new(footprint, door.inward_heading_rad());
+        let along = |c: &Coord<f64>| match door.wall {
+            Wall::XMin | Wall::XMax => c.y,
+            _ => c.x,
         };
-        Pieces {
-            heading_rad,
-            reached: vec![false; region.0.len()],
-            region,
+        let (lo, hi) = (turned.parts.iter().flatten())
+            .map(along)
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                (a.min(v), b.max(v))
+            });
+        let sets: Vec<usize> = ends.iter().map(|&n| self.sets[n]).collect();
+        // Whether a piece joined to this door's ends lies in the room.
+        let inside = self.layers.iter().any(|layer| {
+            let turned = Turned::new(footprint, layer.heading_rad);
+            shrunk_room(room, &turned, None)
+                .is_some_and(|r| layer.any_overlapping(r, |n| sets.contains(&self.sets[n])))
+        });
+        Doorway {
+            name: door.name.clone(),
+            width_mm: door.width_mm,
+            needs_mm: hi - lo,
+            comes_in: if ends.is_empty() {
+                Entry::TooNarrow
+            } else if inside {
+                Entry::Through
+            } else {
+                Entry::Blocked
+            },
         }
     }
 }
 
-/// How a base fares at `door`: through if a piece its passage's far end
-/// reaches is joined to floor in the room; blocked if it only gets into
-/// the doorway; too narrow if it cannot stand in the passage at all.
-fn doorway(
-    door: &Door,
-    footprint: &Footprint,
-    ends: &[(usize, usize)],
-    pieces: &[Pieces],
-    extended: &[MultiPolygon<f64>],
-    joined: &mut Joined,
-) -> Doorway {
-    let turned = Turned::new(footprint, door.inward_heading_rad());
-    let along = |c: &Coord<f64>| match door.wall {
-        Wall::XMin | Wall::XMax => c.y,
-        _ => c.x,
-    };
-    let (lo, hi) = (turned.parts.iter().flatten())
-        .map(along)
-        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-            (a.min(v), b.max(v))
-        });
-    // Whether a piece of the room joined to this door's ends is reached
-    // from them.
-    let roots: Vec<usize> = ends.iter().map(|&(h, k)| joined.root_of(h, k)).collect();
-    let inside = pieces.iter().enumerate().any(|(h, p)| {
-        p.region.0.iter().any(|poly| {
-            poly.interior_point()
-                .and_then(|c| piece_at(&extended[h], c))
-                .is_some_and(|k| roots.contains(&joined.root_of(h, k)))
-        })
-    });
-    Doorway {
-        name: door.name.clone(),
-        width_mm: door.width_mm,
-        needs_mm: hi - lo,
-        comes_in: if ends.is_empty() {
-            Entry::TooNarrow
-        } else if inside {
-            Entry::Through
-        } else {
-            Entry::Blocked
-        },
-    }
-}
-
-/// The piece of `region` holding `p`, or the nearest within a millimetre
-/// (a point a boolean operation left on an edge).
-fn piece_at(region: &MultiPolygon<f64>, p: Point<f64>) -> Option<usize> {
-    let polygons = &region.0;
-    if let Some(k) = polygons.iter().position(|poly| poly.contains(&p)) {
-        return Some(k);
-    }
-    polygons
-        .iter()
-        .map(|poly| Euclidean.distance(poly, &p))
-        .enumerate()
-        .filter(|(_, d)| *d <= 1.0)
-        .min_by(|a, b| a.1.total_cmp(&b.1))
-        .map(|(k, _)| k)
+/// The pieces, of every layer, that reach the far end of a door's
+/// passage (`end`).
+fn door_ends(layers: &[Layer], end: Rect<f64>) -> Vec<usize> {
+    (layers.iter())
+        .flat_map(|layer| layer.pieces())
+        .filter(|(_, p)| p.intersects(&end))
+        .map(|(n, _)| n)
+        .collect()
 }
 
 /// The floor a route search follows: the room grown on every side by a
@@ -364,13 +347,12 @@ impl Space {
         }
     }
 
-    /// Where `footprint` fits on this floor at `heading_rad`.
-    fn region(&self, footprint: &Footprint, heading_rad: f64) -> MultiPolygon<f64> {
+    /// Where `footprint` fits on this floor at `heading_rad`, tile by
+    /// tile on `grid`, its pieces numbered from `first`.
+    fn layer(&self, grid: &Grid, footprint: &Footprint, heading_rad: f64, first: usize) -> Layer {
         let turned = Turned::new(footprint, heading_rad);
-        match shrunk(self.floor, &turned, None) {
-            Some(within) => admissible_in(within, &turned, &self.obstacles),
-            None => MultiPolygon::new(Vec::new()),
-        }
+        let within = shrunk(self.floor, &turned, None);
+        Layer::new(grid, within, &turned, heading_rad, &self.obstacles, first)
     }
 }
 
@@ -463,23 +445,29 @@ fn normalized(heading_rad: f64) -> f64 {
 /// sweeps turning from the one to the other.
 fn join_turns(
     space: &Space,
+    grid: &Grid,
     footprint: &Footprint,
-    followed: &[f64],
-    extended: &[MultiPolygon<f64>],
+    layers: &[Layer],
     joined: &mut Joined,
 ) {
-    let n = followed.len();
+    let n = layers.len();
     for h in 0..n {
         let next = (h + 1) % n;
-        let angle = (followed[next] - followed[h]).rem_euclid(TAU);
-        let angle = if n == 1 { TAU } else { angle };
-        let turning = space.region(&footprint.swept(angle), followed[h]);
-        for poly in &turning.0 {
+        let (from, to) = (layers[h].heading_rad, layers[next].heading_rad);
+        let angle = if n == 1 {
+            TAU
+        } else {
+            (to - from).rem_euclid(TAU)
+        };
+        let turning = space.layer(grid, &footprint.swept(angle), from, 0);
+        for (_, poly) in turning.pieces() {
             let Some(p) = poly.interior_point() else {
                 continue;
             };
-            if let (Some(a), Some(b)) = (piece_at(&extended[h], p), piece_at(&extended[next], p)) {
-                joined.union((h, a), (next, b));
+            let a = layers[h].piece_at(grid, p);
+            let b = layers[next].piece_at(grid, p);
+            if let (Some(a), Some(b)) = (a, b) {
+                joined.union(a, b);
             }
         }
     }
@@ -496,27 +484,18 @@ fn mesh_outline(mesh: &MeshObstacle) -> Polygon<f64> {
     MultiPoint::new(points).convex_hull()
 }
 
-/// Which pieces are joined (a union-find over every heading's pieces),
-/// and which are come in to.
+/// Which pieces are joined (a union-find over every layer's pieces), and
+/// which are come in to.
 struct Joined {
-    /// Where each heading's pieces start in `parent`.
-    first: Vec<usize>,
     parent: Vec<usize>,
     started: Vec<bool>,
 }
 
 impl Joined {
-    fn new(regions: &[MultiPolygon<f64>]) -> Self {
-        let mut first = Vec::with_capacity(regions.len());
-        let mut total = 0;
-        for r in regions {
-            first.push(total);
-            total += r.0.len();
-        }
+    fn new(count: usize) -> Self {
         Joined {
-            first,
-            parent: (0..total).collect(),
-            started: vec![false; total],
+            parent: (0..count).collect(),
+            started: vec![false; count],
         }
     }
 
@@ -528,25 +507,21 @@ impl Joined {
         i
     }
 
-    fn union(&mut self, (h, a): (usize, usize), (g, b): (usize, usize)) {
-        let (ra, rb) = (self.root(self.first[h] + a), self.root(self.first[g] + b));
+    fn union(&mut self, a: usize, b: usize) {
+        let (ra, rb) = (self.root(a), self.root(b));
         let (keep, gone) = (ra.min(rb), ra.max(rb));
         self.parent[gone] = keep;
         self.started[keep] |= self.started[gone];
     }
 
-    fn start(&mut self, h: usize, k: usize) {
-        let r = self.root(self.first[h] + k);
+    fn start(&mut self, n: usize) {
+        let r = self.root(n);
         self.started[r] = true;
     }
 
-    fn reached(&mut self, h: usize, k: usize) -> bool {
-        let r = self.root(self.first[h] + k);
+    fn reached(&mut self, n: usize) -> bool {
+        let r = self.root(n);
         self.started[r]
-    }
-
-    fn root_of(&mut self, h: usize, k: usize) -> usize {
-        self.root(self.first[h] + k)
     }
 }
 
@@ -554,7 +529,6 @@ impl Joined {
 mod tests {
     use super::*;
     use crate::scene::BoxObstacle;
-    use geo::Contains;
     use nalgebra::{Point3, Vector2, Vector3};
     use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -595,7 +569,7 @@ mod tests {
     }
 
     fn reaches(routes: &Routes, heading: f64, x: f64, y: f64) -> bool {
-        routes.reached(heading).contains(&Point::new(x, y))
+        routes.reached_at(heading, x, y) == Some(true)
     }
 
     /// A 4 x 6 m room cut across at y = 3000 by two boxes with a gap of
@@ -625,6 +599,46 @@ mod tests {
         );
         let wide = Routes::new(&divided(661.0), &chair(), &headings).unwrap();
         assert!(reaches(&wide, FRAC_PI_2, far.0, far.1), "through at 661 mm");
+    }
+
+    /// `divided`, its wall at `y` and its gap's centre at `x`.
+    fn divided_at(gap: f64, x: f64, y: f64) -> Room {
+        let left = x - gap / 2.0;
+        room(
+            [4000.0, 6000.0],
+            vec![
+                block("left", [0.0, y - 100.0], [left, 200.0]),
+                block(
+                    "right",
+                    [left + gap, y - 100.0],
+                    [4000.0 - left - gap, 200.0],
+                ),
+            ],
+            vec![door(Wall::YMin, 2000.0, 900.0)],
+        )
+    }
+
+    #[test]
+    fn a_narrow_way_is_followed_wherever_the_tiles_cut_it() {
+        // The floor is worked out in 2 m tiles: a gap 1 mm wider than the
+        // chair opens the way, and 1 mm narrower closes it, wherever the
+        // tiles' edges cross the gap.
+        let headings = [FRAC_PI_2];
+        for k in 0..12 {
+            let x = 700.0 + 230.0 * f64::from(k);
+            let y = 2500.0 + 330.0 * f64::from(k % 5);
+            let far = (2000.0, 5200.0);
+            let wide = Routes::new(&divided_at(661.0, x, y), &chair(), &headings).unwrap();
+            assert!(
+                reaches(&wide, FRAC_PI_2, far.0, far.1),
+                "661 mm at ({x}, {y})"
+            );
+            let narrow = Routes::new(&divided_at(659.0, x, y), &chair(), &headings).unwrap();
+            assert!(
+                !reaches(&narrow, FRAC_PI_2, far.0, far.1),
+                "659 mm at ({x}, {y})"
+            );
+        }
     }
 
     /// A room cut across by a wall set at 30 degrees, with a channel
@@ -680,8 +694,11 @@ mod tests {
         let routes = Routes::new(&r, &chair(), &[0.0, FRAC_PI_2]).unwrap();
         // Facing +x the chair fits in the pocket with its hip at x 1765 to
         // 1900 mm.
-        let inside = routes.cut_off(0.0);
-        assert!(inside.contains(&Point::new(1850.0, 2750.0)), "the pocket");
+        assert_eq!(
+            routes.reached_at(0.0, 1850.0, 2750.0),
+            Some(false),
+            "the pocket"
+        );
         assert!(!reaches(&routes, 0.0, 1850.0, 2750.0));
         assert!(
             reaches(&routes, FRAC_PI_2, 3500.0, 2750.0),
@@ -746,10 +763,7 @@ mod tests {
             "forwards, down the galley"
         );
         assert!(reaches(&routes, PI, 4000.0, 1050.0), "backed in");
-        assert!(
-            routes.reached(FRAC_PI_2).0.is_empty(),
-            "sideways: it does not fit"
-        );
+        assert!(!routes.reaches_any(FRAC_PI_2), "sideways: it does not fit");
     }
 
     #[test]
@@ -763,7 +777,7 @@ mod tests {
         assert!(!routes.enters());
         assert_eq!(routes.doors[0].comes_in, Entry::TooNarrow);
         assert!((routes.doors[0].needs_mm - 660.0).abs() < 1e-6);
-        assert!(routes.reached(0.0).0.is_empty());
+        assert!(!routes.reaches_any(0.0));
         let blocked = room(
             [4000.0, 4000.0],
             vec![block("crate", [1000.0, 0.0], [2000.0, 400.0])],

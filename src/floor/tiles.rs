@@ -8,11 +8,11 @@
 
 use std::sync::{Arc, OnceLock};
 
-use geo::{Closest, ClosestPoint, Coord, MultiPolygon, Point, Rect};
+use geo::{Closest, ClosestPoint, Coord, MultiPolygon, Point, Polygon, Rect};
 
 use super::obstacles::FloorObstacles;
 use super::region::{admissible_in, shrunk_room, Turned, Zone};
-use super::{Footprint, Inside};
+use super::{Footprint, Inside, Routes};
 use crate::scene::Room;
 
 /// The side of a tile, for rooms up to `MAX_TILES` of them.
@@ -34,6 +34,27 @@ pub struct Region {
     ny: usize,
     tiles: Vec<OnceLock<Inside>>,
     empty: OnceLock<bool>,
+    /// The routes from the room's doors and the heading they are followed
+    /// at, where only what they reach is kept.
+    routes: Option<(Arc<Routes>, f64)>,
+}
+
+/// The pieces of `region` a base facing `heading_rad` can get to by
+/// `routes` (a piece is reached whole or not at all: any point inside it
+/// tells).
+fn reached_pieces(
+    region: MultiPolygon<f64>,
+    routes: &Routes,
+    heading_rad: f64,
+) -> MultiPolygon<f64> {
+    use geo::InteriorPoint;
+    let reached = |piece: &Polygon<f64>| {
+        piece
+            .interior_point()
+            .and_then(|p| routes.reached_at(heading_rad, p.x(), p.y()))
+            .unwrap_or(false)
+    };
+    MultiPolygon::new(region.0.into_iter().filter(reached).collect())
 }
 
 impl Region {
@@ -61,44 +82,30 @@ impl Region {
             ny,
             tiles: (0..nx * ny).map(|_| OnceLock::new()).collect(),
             empty: OnceLock::new(),
+            routes: None,
         }
     }
 
-    /// The region made of `pieces` (the parts of the admissible region at
-    /// this heading a base can get to: `Routes::reached`), cut to the
-    /// shrunk room and the zone: one tile, worked out already.
-    pub fn of_pieces(
+    /// The part of the region a base can get to from the room's doors
+    /// (`routes`, followed at `heading_rad` among others): a tile's pieces
+    /// the routes do not reach are left out of it.
+    pub fn reached(
         room: &Room,
         footprint: &Footprint,
         heading_rad: f64,
         zone: Option<&Zone>,
         obstacles: Arc<FloorObstacles>,
-        pieces: &MultiPolygon<f64>,
+        routes: Arc<Routes>,
     ) -> Self {
-        use geo::BooleanOps;
-        let turned = Turned::new(footprint, heading_rad);
-        let free = shrunk_room(room, &turned, zone);
-        let within = match (free, zone) {
-            (Some(r), zone) => {
-                let cut = pieces.intersection(&MultiPolygon::new(vec![r.to_polygon()]));
-                match zone {
-                    Some(z) => z.cut(cut),
-                    None => cut,
-                }
-            }
-            (None, _) => MultiPolygon::new(Vec::new()),
-        };
-        let (w, h) = free.map_or((0.0, 0.0), |r| (r.width(), r.height()));
+        let region = Region::new(room, footprint, heading_rad, zone, obstacles);
+        let empty = OnceLock::new();
+        if !routes.enters() {
+            let _ = empty.set(true);
+        }
         Region {
-            turned,
-            obstacles,
-            free,
-            zone: None,
-            tile_mm: w.max(h).max(1.0),
-            nx: 1,
-            ny: 1,
-            tiles: vec![OnceLock::from(Inside::new(within))],
-            empty: OnceLock::new(),
+            routes: Some((routes, heading_rad)),
+            empty,
+            ..region
         }
     }
 
@@ -109,8 +116,12 @@ impl Region {
                 .tile_rect(i, j)
                 .map(|r| admissible_in(r, &self.turned, &self.obstacles))
                 .unwrap_or_else(|| MultiPolygon::new(Vec::new()));
-            Inside::new(match &self.zone {
+            let piece = match &self.zone {
                 Some(zone) => zone.cut(piece),
+                None => piece,
+            };
+            Inside::new(match &self.routes {
+                Some((routes, heading_rad)) => reached_pieces(piece, routes, *heading_rad),
                 None => piece,
             })
         })
