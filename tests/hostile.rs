@@ -527,10 +527,18 @@ fn a_mesh_wound_inwards_or_with_degenerate_faces_is_the_same_solid() {
 
 #[test]
 fn a_box_outside_the_room_changes_no_answer() {
+    // Without a door, and with one (the routes from it are followed over
+    // the floor outside the room too).
+    for door in ["", "  door hall at (2000, 0) width 900mm\n"] {
+        a_box_outside_the_room_changes_no_answer_with(door);
+    }
+}
+
+fn a_box_outside_the_room_changes_no_answer_with(door: &str) {
     let scenario = |far: &str| {
         format!(
             "units mm deg\nuse std::people\nroom kitchen {{\n  size 3600 x 2800 x 2500\n  \
-             box counter at (0, 0, 0) size (600, 2800, 900)\n{far}  \
+             box counter at (0, 0, 0) size (600, 2800, 900)\n{far}{door}  \
              target mug at (400, 1150, 960)\n}}\n\
              person mum {{ mannequin woman_5th_seated base manual_wheelchair }}\n\
              reach mug by mum\n"
@@ -550,6 +558,8 @@ fn a_box_outside_the_room_changes_no_answer() {
         "  box far at (1e15, 1e15, 0) size (500, 500, 900)\n",
         "  box far at (-1e12, 100, 0) size (500, 500, 900)\n",
         "  box far at (5000, -1e12, 0) size (1e6, 2e12, 900)\n",
+        // Outside the wall the door is in, beside the door's passage.
+        "  box far at (-1e12, -1e12, 0) size (1000000001000, 999999999990, 900)\n",
     ] {
         assert_eq!(report(&scenario(far)), alone, "{far}");
     }

@@ -15,7 +15,7 @@ use std::hash::{Hash, Hasher};
 use std::sync::Arc;
 
 use super::obstacles::FloorObstacles;
-use super::region::{admissible_in, shrunk_room, Turned};
+use super::region::{admissible_in, shrunk_room, Grown, Turned};
 use super::{FloorPart, Footprint};
 use crate::kept::Kept;
 use crate::scene::{BoxObstacle, Door, Room, Wall};
@@ -83,7 +83,10 @@ static WHOLE: Kept<Arc<MultiPolygon<f64>>> = Kept::new(512);
 fn worked_out(room: &Room, footprint: &Footprint, heading_rad: f64) -> MultiPolygon<f64> {
     let turned = Turned::new(footprint, heading_rad);
     match shrunk_room(room, &turned, None) {
-        Some(within) => admissible_in(within, &turned, &FloorObstacles::new(room, footprint)),
+        Some(within) => {
+            let obstacles = FloorObstacles::new(room, footprint);
+            admissible_in(within, &turned, &obstacles, &Grown::default())
+        }
         None => MultiPolygon::new(Vec::new()),
     }
 }

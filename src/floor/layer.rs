@@ -111,10 +111,10 @@ impl Layer {
         obstacles: &FloorObstacles,
         first: usize,
     ) -> Self {
-        let mut grown = Grown::default();
+        let grown = Grown::default();
         let tiles: Vec<Vec<Polygon<f64>>> = (0..grid.len())
             .map(|t| match within.and_then(|w| grid.rect(t, w)) {
-                Some(rect) => admissible_joined(rect, turned, obstacles, &mut grown).0,
+                Some(rect) => admissible_joined(rect, turned, obstacles, &grown).0,
                 None => Vec::new(),
             })
             .collect();

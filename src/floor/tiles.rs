@@ -11,7 +11,7 @@ use std::sync::{Arc, OnceLock};
 use geo::{Closest, ClosestPoint, Coord, MultiPolygon, Point, Polygon, Rect};
 
 use super::obstacles::FloorObstacles;
-use super::region::{admissible_in, shrunk_room, Turned, Zone};
+use super::region::{admissible_in, shrunk_room, Grown, Turned, Zone};
 use super::{Footprint, Inside, Routes};
 use crate::scene::Room;
 
@@ -24,6 +24,8 @@ const OVERLAP_MM: f64 = 1.0;
 /// The admissible region at one heading.
 pub struct Region {
     turned: Turned,
+    /// Each obstacle shape's grown outline at this heading.
+    grown: Grown,
     obstacles: Arc<FloorObstacles>,
     /// The shrunk room (and zone), none if the footprint fits in neither.
     free: Option<Rect<f64>>,
@@ -74,6 +76,7 @@ impl Region {
         let ny = (h / tile_mm).ceil().max(1.0) as usize;
         Region {
             turned,
+            grown: Grown::default(),
             obstacles,
             free,
             zone,
@@ -114,7 +117,7 @@ impl Region {
         self.tiles[j * self.nx + i].get_or_init(|| {
             let piece = self
                 .tile_rect(i, j)
-                .map(|r| admissible_in(r, &self.turned, &self.obstacles))
+                .map(|r| admissible_in(r, &self.turned, &self.obstacles, &self.grown))
                 .unwrap_or_else(|| MultiPolygon::new(Vec::new()));
             let piece = match &self.zone {
                 Some(zone) => zone.cut(piece),
