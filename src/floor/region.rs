@@ -67,6 +67,8 @@ impl Zone {
 pub struct Turned {
     pub parts: Vec<Vec<Coord<f64>>>,
     reach: Vec<(Coord<f64>, Coord<f64>)>,
+    /// Each part's corners hashed bit for bit.
+    hashes: Vec<u64>,
 }
 
 impl Turned {
@@ -75,7 +77,18 @@ impl Turned {
             .map(|k| footprint.corners(k, heading_rad))
             .collect();
         let reach = parts.iter().map(|p| bounds(p)).collect();
-        Turned { parts, reach }
+        let hashes = (parts.iter())
+            .map(|corners| {
+                let mut h = DefaultHasher::new();
+                (corners.iter()).for_each(|c| (c.x.to_bits(), c.y.to_bits()).hash(&mut h));
+                h.finish()
+            })
+            .collect();
+        Turned {
+            parts,
+            reach,
+            hashes,
+        }
     }
 }
 
@@ -104,17 +117,15 @@ pub fn admissible_in(
         within.max().y,
     ];
     rect.iter().for_each(|v| v.to_bits().hash(&mut h));
-    for corners in &turned.parts {
-        corners.len().hash(&mut h);
-        corners
-            .iter()
-            .for_each(|c| (c.x.to_bits(), c.y.to_bits()).hash(&mut h));
-    }
+    // Only the parts that meet an obstacle here count: people whose
+    // footprints differ only in parts that meet none (a population's
+    // legs, far from a counter) share the piece.
     for m in &met {
         m.outline
             .iter()
             .for_each(|c| (c.x.to_bits(), c.y.to_bits()).hash(&mut h));
-        m.parts.hash(&mut h);
+        m.parts.len().hash(&mut h);
+        m.parts.iter().for_each(|&k| turned.hashes[k].hash(&mut h));
     }
     let pairs: usize = met.iter().map(|m| m.parts.len()).sum();
     PIECES
@@ -218,11 +229,15 @@ pub fn admissible_joined(
     free_of_met(within, &met, turned, grown)
 }
 
+/// An obstacle whose grown outline reaches beyond a tile by more than this
+/// (or than the tile's size) is grown part by part and cut to the tile.
+const FAR_MM: f64 = 100_000.0;
+
 /// `within` less the outlines of the obstacles `met` grown by the parts
 /// of `turned` that meet them. An obstacle whose grown outline reaches far
-/// beyond `within` (a wall of a large floor, a box far bigger than the
-/// room) is grown part by part, each outline cut to `within` first: the
-/// boolean operations round to a grid the size of all they join.
+/// beyond `within` (a box far bigger than any room) is grown part by
+/// part, each outline cut to `within` first: the boolean operations round
+/// to a grid the size of all they join (100 m across: a tenth of a micron).
 fn free_of_met(
     within: Rect<f64>,
     met: &[Met<'_>],
@@ -234,7 +249,7 @@ fn free_of_met(
         return free;
     }
     let cut = cut_of(within);
-    let reach = cut.width().max(cut.height());
+    let reach = cut.width().max(cut.height()).max(FAR_MM);
     let far = Rect::new(
         cut.min() - Coord { x: reach, y: reach },
         cut.max() + Coord { x: reach, y: reach },
