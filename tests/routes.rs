@@ -44,6 +44,32 @@ fn a_gap_a_millimetre_narrower_than_the_chair_closes_the_way_and_one_wider_opens
     );
 }
 
+/// An 11 x 10 m room cut across by two counters with a gap exactly as
+/// wide as the chair (660 mm) between them: with no room to spare there is
+/// no way through, wherever the tiles the floor is worked out in cut the
+/// gap (found by a helper comparing routes before and after the tiles:
+/// here the tiles' rounding had left a channel of no width open).
+#[test]
+fn a_gap_exactly_as_wide_as_the_chair_is_no_way() {
+    let text = "units mm deg\nuse std::people\nroom r {\n  size 11408 x 10071 x 2500\n  \
+         box left at (0, 6977, 0) size (6127.2, 549, 900)\n  \
+         box right at (6787.2, 6977, 0) size (4620.4, 549, 900)\n  \
+         door door1 at (4889, 0) width 938mm\n  \
+         target t1 at (6270, 8210, 645)\n  target t3 at (4202, 8659, 926)\n}\n\
+         person ann { mannequin woman_5th_seated base manual_wheelchair }\nreach t1, t3 by ann\n";
+    let (scenario, report) = run(text);
+    let width = scenario.bases[0].footprint().expect("a chair").size_mm()[1];
+    assert!((width - 660.0).abs() < 1e-9, "the chair is {width} mm wide");
+    for task in &report.tasks {
+        let answer = task.answer();
+        assert!(
+            !answer.ok && answer.verdict.contains("cannot get there"),
+            "{}",
+            answer.verdict
+        );
+    }
+}
+
 #[test]
 fn a_person_the_doors_shut_out_is_an_answer_and_strict_exits_3() {
     let dir = tempfile::tempdir().unwrap();

@@ -299,6 +299,13 @@ impl Base for Mobile {
         )))
     }
 
+    fn enclosing(&self, room: &Room, heading_rad: f64, hip_mm: (f64, f64)) -> Vec<usize> {
+        // The routes the placement followed, kept by the process.
+        Routes::of(room, &self.footprint, &self.placing.headings).map_or(Vec::new(), |routes| {
+            routes.enclosing(room, &self.footprint, heading_rad, hip_mm)
+        })
+    }
+
     fn reached_floor(&self, room: &Room, heading_rad: f64) -> Option<MultiPolygon<f64>> {
         let cell = self.floor(room);
         let floor = cell.get()?;

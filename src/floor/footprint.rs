@@ -133,6 +133,34 @@ impl Footprint {
         Polygon::new(LineString::from(ring), Vec::new())
     }
 
+    /// Each part's outline pushed `by_mm` outwards, corner by corner (away
+    /// from the part's centre): a base that fits this clears each obstacle
+    /// by at least a hair.
+    pub fn grown(&self, by_mm: f64) -> Footprint {
+        let parts = (self.parts.iter())
+            .map(|part| {
+                let n = part.outline_mm.len().max(1) as f64;
+                let centre = part.outline_mm.iter().sum::<Vector2<f64>>() / n;
+                let outline_mm = (part.outline_mm.iter())
+                    .map(|&v| {
+                        let out = v - centre;
+                        let norm = out.norm();
+                        if norm > 0.0 {
+                            v + out * (by_mm / norm)
+                        } else {
+                            v
+                        }
+                    })
+                    .collect();
+                FloorPart {
+                    outline_mm,
+                    z_mm: part.z_mm,
+                }
+            })
+            .collect();
+        Footprint { parts }
+    }
+
     /// What the footprint covers while it turns in place about the hip
     /// point from its heading to `angle_rad` more (counter-clockwise):
     /// each part the convex hull of its outline at steps of at most

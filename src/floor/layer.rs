@@ -8,7 +8,7 @@
 //! their number (500 posts: 27 s, 2,000: 158 s); tile by tile, each
 //! operation meets only the obstacles near its tile.
 
-use geo::{BooleanOps, BoundingRect, Contains, Coord, Distance, Euclidean};
+use geo::{Area, BooleanOps, BoundingRect, Contains, Coord, Distance, Euclidean};
 use geo::{InteriorPoint, MultiPolygon, Point, Polygon, Rect};
 
 use super::obstacles::FloorObstacles;
@@ -227,7 +227,10 @@ fn seam(a: &[Polygon<f64>], b: &[Polygon<f64>], strip: Rect<f64>) -> Vec<(usize,
             continue;
         }
         let parts = MultiPolygon::new(vec![piece.clone()]).intersection(&area);
-        for part in &parts.0 {
+        // A part thinner than a hundredth of a millimetre across the strip
+        // is the rounding of a way exactly as wide as the base, not a way.
+        let wide = |part: &&Polygon<f64>| part.unsigned_area() >= SEAM_NEAR_MM * strip_mm(strip);
+        for part in parts.0.iter().filter(wide) {
             let ka = part
                 .interior_point()
                 .and_then(|p| piece_near(a, p, SEAM_NEAR_MM));
@@ -239,6 +242,11 @@ fn seam(a: &[Polygon<f64>], b: &[Polygon<f64>], strip: Rect<f64>) -> Vec<(usize,
     joins.sort_unstable();
     joins.dedup();
     joins
+}
+
+/// The width of the strip two tiles share (its shorter side).
+fn strip_mm(strip: Rect<f64>) -> f64 {
+    strip.width().min(strip.height())
 }
 
 /// The piece of `pieces` holding `p`, or the nearest within `near_mm`.

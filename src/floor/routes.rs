@@ -48,6 +48,9 @@ const TURNED_MAX_APART_RAD: f64 = 0.02;
 const TURNED_MOST: usize = 4;
 /// Headings closer than this are one.
 const SAME_HEADING_RAD: f64 = 1e-9;
+/// How much wider the base is followed than it is: a way must be wider
+/// than the base by more than this.
+const HAIR_MM: f64 = 0.01;
 /// Room to spare at the far end of a door's passage, beyond what holds
 /// the base.
 const SPARE_MM: f64 = 100.0;
@@ -123,6 +126,12 @@ impl Routes {
         if room.doors.is_empty() {
             return None;
         }
+        let given = footprint;
+        // A way exactly as wide as the base is no way: followed with the
+        // base a hair wider, it is closed wherever the tiles cut it (the
+        // boolean operations of one tile may keep a channel of no width
+        // open that those of another close).
+        let footprint = &given.grown(HAIR_MM);
         let space = Space::new(room, footprint);
         let grid = Grid::over(space.floor);
         let followed = followed_headings(footprint, headings, room);
@@ -155,7 +164,7 @@ impl Routes {
             doors: Vec::new(),
         };
         routes.doors = (room.doors.iter().zip(&ends))
-            .map(|(door, ends)| routes.doorway(room, door, footprint, ends))
+            .map(|(door, ends)| routes.doorway(room, door, given, ends))
             .collect();
         Some(routes)
     }
@@ -181,22 +190,21 @@ impl Routes {
     }
 
     /// The room's obstacles (boxes, then meshes, by index) that close in
-    /// the floor a base of `footprint` at `heading_rad` with its hip at
+    /// the floor a base of `footprint` (the routes' own) at `heading_rad`
+    /// (one of the headings followed) with its hip at
     /// `hip_mm` cannot get to from a door: those within the footprint's
     /// reach of that floor's edge that come within the heights of its
     /// parts (a wall cabinet over the floor closes nothing in), nearest
     /// first.
     pub fn enclosing(
+        &self,
         room: &Room,
         footprint: &Footprint,
         heading_rad: f64,
         hip_mm: (f64, f64),
     ) -> Vec<usize> {
-        let Some(routes) = Routes::of(room, footprint, &[heading_rad]) else {
-            return Vec::new();
-        };
         let hip = Point::new(hip_mm.0, hip_mm.1);
-        let Some(piece) = routes.cut_off_near(heading_rad, hip) else {
+        let Some(piece) = self.cut_off_near(heading_rad, hip) else {
             return Vec::new();
         };
         let reach_mm = footprint.extent_mm() + SPARE_MM;
@@ -219,7 +227,10 @@ impl Routes {
             }))
             .filter(|(d, _)| *d <= reach_mm)
             .collect();
-        near.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        // Nearest first by the millimetre, then in the room's order: two
+        // obstacles that both bound the floor are both at about nothing,
+        // and the rounding of the floor's edge must not order them.
+        near.sort_by(|a, b| a.0.round().total_cmp(&b.0.round()).then(a.1.cmp(&b.1)));
         near.into_iter().map(|(_, i)| i).collect()
     }
 
@@ -621,8 +632,8 @@ mod tests {
     #[test]
     fn a_narrow_way_is_followed_wherever_the_tiles_cut_it() {
         // The floor is worked out in 2 m tiles: a gap 1 mm wider than the
-        // chair opens the way, and 1 mm narrower closes it, wherever the
-        // tiles' edges cross the gap.
+        // chair opens the way, and 1 mm narrower or exactly as wide closes
+        // it, wherever the tiles' edges cross the gap.
         let headings = [FRAC_PI_2];
         for k in 0..12 {
             let x = 700.0 + 230.0 * f64::from(k);
@@ -637,6 +648,12 @@ mod tests {
             assert!(
                 !reaches(&narrow, FRAC_PI_2, far.0, far.1),
                 "659 mm at ({x}, {y})"
+            );
+            // Exactly as wide as the chair: no way, whatever the rounding.
+            let exact = Routes::new(&divided_at(660.0, x, y), &chair(), &headings).unwrap();
+            assert!(
+                !reaches(&exact, FRAC_PI_2, far.0, far.1),
+                "660 mm at ({x}, {y})"
             );
         }
     }

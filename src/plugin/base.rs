@@ -202,6 +202,14 @@ pub trait Base: Send + Sync {
     fn unzoned(&self) -> Option<Box<dyn Base>> {
         None
     }
+    /// Where the room has doors, the obstacles (boxes, then meshes, by
+    /// index) that close in the floor the base, facing `heading_rad` (one
+    /// of its headings) with its hip at `hip_mm`, cannot get to from a
+    /// door, nearest first; none where it can, where the room has no door
+    /// or the base does not move.
+    fn enclosing(&self, _room: &Room, _heading_rad: f64, _hip_mm: (f64, f64)) -> Vec<usize> {
+        Vec::new()
+    }
     /// Where the room has doors, the floor where the hip point can be at
     /// `heading_rad` (one of the base's headings) having come from a door
     /// (for pictures); none where the room has no door or the base does

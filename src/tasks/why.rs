@@ -23,7 +23,6 @@ use nalgebra::Point3;
 
 use super::common::Reaching;
 use crate::collision::{obstacle_bounds, Obstacles, PlacedObstacles, TOUCH_MARGIN_MM};
-use crate::floor::Routes;
 use crate::kinematics::{Chain, JointKind};
 use crate::plugin::{Placement, Search, TaskInput};
 use crate::report::{Names, Why, WIDENED_DEG};
@@ -123,7 +122,8 @@ impl Failed<'_> {
     /// every placement allowed), and what closes that floor in.
     fn cut_off(&self, own: &OwnBody) -> Option<Why> {
         let room = self.input.room;
-        let footprint = self.input.base.footprint()?;
+        // Only a base that moves is cut off.
+        self.input.base.footprint()?;
         if room.doors.is_empty() {
             return None;
         }
@@ -137,7 +137,8 @@ impl Failed<'_> {
             return None;
         }
         let hip = (placed.pose.position_mm.x, placed.pose.position_mm.y);
-        let names = Routes::enclosing(room, footprint, placed.pose.heading_rad, hip)
+        let names = (self.input.base)
+            .enclosing(room, placed.pose.heading_rad, hip)
             .into_iter()
             .map(|i| room.obstacle_name(i).to_string())
             .collect();
