@@ -4,7 +4,9 @@
 //! It is the rectangle minus, for each part, the outlines it meets near
 //! the rectangle (`obstacles.rs`) grown by the reflected part (their
 //! Minkowski sum: for convex outlines, the convex hull of the pairwise
-//! differences of corners), each cut to the rectangle first.
+//! differences of corners), each cut to the rectangle first; where many
+//! outlines meet one rectangle, each obstacle's grown by the parts that
+//! meet it are joined first, once per shape (`Grown`).
 
 use std::collections::hash_map::DefaultHasher;
 use std::collections::{BTreeMap, HashMap};
@@ -16,6 +18,7 @@ use geo::{BooleanOps, Coord, LineString, MultiPolygon, Polygon, Rect};
 use super::obstacles::{bounds, FloorObstacles};
 use super::Footprint;
 use crate::kept::Kept;
+use crate::scene::hash_bits;
 use crate::scene::Room;
 
 /// The floor a user restricts the base's hip point to (an approach zone):
@@ -80,7 +83,7 @@ impl Turned {
         let hashes = (parts.iter())
             .map(|corners| {
                 let mut h = DefaultHasher::new();
-                (corners.iter()).for_each(|c| (c.x.to_bits(), c.y.to_bits()).hash(&mut h));
+                hash_corners(corners, &mut h);
                 h.finish()
             })
             .collect();
@@ -110,20 +113,13 @@ pub fn admissible_in(
         return MultiPolygon::new(vec![within.to_polygon()]);
     }
     let mut h = DefaultHasher::new();
-    let rect = [
-        within.min().x,
-        within.min().y,
-        within.max().x,
-        within.max().y,
-    ];
-    rect.iter().for_each(|v| v.to_bits().hash(&mut h));
+    hash_corners(&[within.min(), within.max()], &mut h);
     // Only the parts that meet an obstacle here count: people whose
     // footprints differ only in parts that meet none (a population's
     // legs, far from a counter) share the piece.
     for m in &met {
-        m.outline
-            .iter()
-            .for_each(|c| (c.x.to_bits(), c.y.to_bits()).hash(&mut h));
+        m.outline.len().hash(&mut h);
+        hash_corners(m.outline, &mut h);
         m.parts.len().hash(&mut h);
         m.parts.iter().for_each(|&k| turned.hashes[k].hash(&mut h));
     }
@@ -154,14 +150,31 @@ const JOIN_FROM: usize = UNION_LEAF;
 /// part of `turned` that meets it on its own and cut to `within`.
 fn free_of_parts(within: Rect<f64>, met: &[Met<'_>], turned: &Turned) -> MultiPolygon<f64> {
     let cut = cut_of(within);
-    let mut grown: Vec<Polygon<f64>> = Vec::new();
-    for (k, corners) in turned.parts.iter().enumerate() {
-        for m in met.iter().filter(|m| m.parts.contains(&k)) {
-            grown.extend(clipped(&minkowski_with_reflected(m.outline, corners), &cut));
-        }
-    }
+    let mut grown: Vec<Polygon<f64>> = (met.iter())
+        .flat_map(|m| grown_part_by_part(m, turned, cut))
+        .collect();
     grown.sort_by(canonical);
     free_of(MultiPolygon::new(vec![within.to_polygon()]), grown)
+}
+
+/// `met`'s outline grown by each of its parts on its own, each cut to
+/// `cut` (none where nothing of it is left).
+fn grown_part_by_part<'a>(
+    met: &'a Met<'_>,
+    turned: &'a Turned,
+    cut: Rect<f64>,
+) -> impl Iterator<Item = Polygon<f64>> + 'a {
+    (met.parts.iter()).filter_map(move |&k| {
+        clipped(
+            &minkowski_with_reflected(met.outline, &turned.parts[k]),
+            &cut,
+        )
+    })
+}
+
+/// `corners`, bit for bit.
+fn hash_corners(corners: &[Coord<f64>], h: &mut impl Hasher) {
+    hash_bits(corners.iter().flat_map(|c| [&c.x, &c.y]), h);
 }
 
 /// `within` widened by a millimetre: grown outlines are cut to it, so
@@ -259,9 +272,7 @@ fn free_of_met(
         if inside(grown_bounds(m, turned), far) {
             outlines.extend(grown.outline(m, turned));
         } else {
-            outlines.extend(m.parts.iter().filter_map(|&k| {
-                clipped(&minkowski_with_reflected(m.outline, &turned.parts[k]), &cut)
-            }));
+            outlines.extend(grown_part_by_part(m, turned, cut));
         }
     }
     // In an order of their own (neighbours first, so that each union of
@@ -329,7 +340,8 @@ fn admissible_part_by_part(
 }
 
 /// Pieces of admissible region kept by the process, by a hash of their
-/// rectangle and grown outlines.
+/// rectangle, the obstacles near it and the corners of the parts that
+/// meet each.
 static PIECES: Kept<Arc<MultiPolygon<f64>>> = Kept::new(16_384);
 
 /// `free` less the union of the `grown` outlines.
