@@ -5,11 +5,12 @@
 //! (`capability.rs`) within what its options allow (`placing.rs`).
 
 mod capability;
+mod descents;
 mod face;
 mod fixed;
 mod placement;
 mod placing;
-mod search;
+pub mod search;
 mod trolley;
 mod wheelchair;
 

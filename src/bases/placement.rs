@@ -413,6 +413,8 @@ impl PreparedMobile<'_> {
                 continue;
             }
             let hand = sample.effector_mm.xy();
+            // The sample's solids, worked out once for every heading.
+            let mut volumes = None;
             for (heading, region) in self.regions() {
                 if !approach.faces(*heading, face) {
                     continue;
@@ -430,11 +432,11 @@ impl PreparedMobile<'_> {
                 }
                 scanned.push(pose);
                 let q = capability.q(sample);
-                let clear = query.obstacles.is_none()
-                    || query
-                        .problem(self.chain, pose)
-                        .collision_charged(q)
-                        .is_none();
+                let clear = query.obstacles.is_none() || {
+                    let v = volumes.get_or_insert_with(|| self.chain.volumes(q));
+                    let problem = query.problem(self.chain, pose);
+                    problem.collision_of_charged(v).is_none()
+                };
                 if clear {
                     found.push(Candidate {
                         start: Some(q.to_vec()),

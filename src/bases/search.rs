@@ -17,6 +17,7 @@
 //! (`collision::KeptProofs`) is skipped, and the answer must be the same
 //! whether or not the proof was made.
 
+use super::descents::Descents;
 use crate::collision::KeptProofs;
 use crate::kinematics::Chain;
 
@@ -117,6 +118,7 @@ fn first_search(
     let bound_mm = chain.reach_bound_mm() + query.tolerance_mm;
     let mut first_passed = None;
     let mut any_solved = false;
+    let mut descents = Descents::default();
     let last_resort = query.last_resort.map(|(pose, q)| Candidate {
         pose,
         start: Some(q.to_vec()),
@@ -139,14 +141,32 @@ fn first_search(
             continue;
         }
         any_solved = true;
-        if try_candidate(query, chain, &candidate, solver, &mut best, &mut blocked) {
+        let tried = Tried {
+            best: &mut best,
+            blocked: &mut blocked,
+            descents: &mut descents,
+        };
+        if try_candidate(query, chain, &candidate, solver, tried) {
             return (best, blocked);
         }
     }
     if let (false, Some(candidate)) = (any_solved, first_passed) {
-        try_candidate(query, chain, &candidate, solver, &mut best, &mut blocked);
+        let tried = Tried {
+            best: &mut best,
+            blocked: &mut blocked,
+            descents: &mut descents,
+        };
+        try_candidate(query, chain, &candidate, solver, tried);
     }
     (best, blocked)
+}
+
+/// What a search has found so far: the placement it keeps, the blocked
+/// ones, and the descents it made.
+struct Tried<'s> {
+    best: &'s mut Preferred<Placement>,
+    blocked: &'s mut Vec<Blocked>,
+    descents: &'s mut Descents,
 }
 
 /// Solve from `candidate`, offer the placement to `best` and note it in
@@ -157,24 +177,25 @@ fn try_candidate(
     chain: &Chain,
     candidate: &Candidate,
     solver: &dyn Solver,
-    best: &mut Preferred<Placement>,
-    blocked: &mut Vec<Blocked>,
+    tried: Tried<'_>,
 ) -> bool {
     let pose = candidate.pose;
     let placement = match &candidate.start {
-        Some(start) => query.solve_from_at(chain, pose, solver, start.clone()),
+        Some(start) => tried
+            .descents
+            .solve_from_at(query, chain, pose, solver, start),
         None => query.solve_at(chain, pose, solver),
     };
     let solution = &placement.solution;
     if solution.collision.is_some() && solution.distance_mm <= query.tolerance_mm {
-        blocked.push(Blocked {
+        tried.blocked.push(Blocked {
             pose,
             q: solution.q.clone(),
         });
     }
     let comfort = chain.discomfort(&placement.solution.q);
-    best.offer(placement, comfort);
-    best.reaches() && query.search == Search::FirstReaching
+    tried.best.offer(placement, comfort);
+    tried.best.reaches() && query.search == Search::FirstReaching
 }
 
 /// The first of up to `draws` starts that is clear of obstacles and of

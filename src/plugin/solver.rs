@@ -57,6 +57,14 @@ impl IkProblem<'_> {
         let obstacles = self.obstacles.as_ref()?;
         obstacles.volumes_hit(self.chain, v, self.tolerance_mm)
     }
+
+    /// [`IkProblem::collision_of`], the check told to the meter at once, as
+    /// [`IkProblem::collision_charged`] tells it: for the solids of one
+    /// posture checked at several base poses.
+    pub fn collision_of_charged(&self, v: &Volumes) -> Option<Collision> {
+        self.meter.charge(self.check_units());
+        self.collision_of(v)
+    }
 }
 
 /// A solver built from its settings. It asks about the room only through
@@ -95,6 +103,14 @@ pub trait Solver: Send + Sync {
     /// Whether a descent from a clear posture stays clear (so that it pays
     /// to start it from one).
     fn steers_clear(&self) -> bool {
+        false
+    }
+    /// Whether [`Solver::solve_from`]'s posture depends only on the chain,
+    /// the start, the target in the base frame and the tolerance: not on
+    /// the room's obstacles, the person's own body or the seed. A search
+    /// may then reuse a posture found from the same start for the same
+    /// target at another base pose, judged again there.
+    fn blind_to_room(&self) -> bool {
         false
     }
 }

@@ -110,6 +110,11 @@ impl Solver for DlsSolver {
     fn work_per_start(&self) -> u64 {
         work_ratio(&[(self.max_iterations as f64, 200.0)])
     }
+
+    /// Its steps look at the target alone; the room only judges the end.
+    fn blind_to_room(&self) -> bool {
+        true
+    }
 }
 
 impl DlsSolver {

@@ -247,4 +247,10 @@ impl Solver for IncrementalSolver {
     fn steers_clear(&self) -> bool {
         self.settings.steer_clear
     }
+
+    /// Blind unless it steers clear: a plain descent looks at the room
+    /// only to judge the posture it ends at.
+    fn blind_to_room(&self) -> bool {
+        !self.settings.steer_clear
+    }
 }
