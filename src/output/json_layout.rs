@@ -82,11 +82,63 @@ fn write_map(out: &mut String, fields: &serde_json::Map<String, Value>, points: 
     out.push('[');
     for (j, cell) in points.iter().enumerate() {
         entry(out, j, 4);
-        let value = serde_json::to_value(cell).expect("cells serialize");
-        write_item(out, &value, 4);
+        write_cell(out, cell);
     }
     close(out, 3, ']');
     close(out, 2, '}');
+}
+
+/// A map's cell at level 4: a cell with no reasons why it was not
+/// reached is flat, and is written straight from its fields on one line
+/// as [`write_inline`] writes its value; one with reasons is laid out
+/// from its value.
+fn write_cell(out: &mut String, cell: &MapCell) {
+    if !cell.why().is_empty() {
+        let value = serde_json::to_value(cell).expect("cells serialize");
+        write_item(out, &value, 4);
+        return;
+    }
+    let mut bytes = Vec::with_capacity(160);
+    let mut line = serde_json::Serializer::with_formatter(&mut bytes, Inline);
+    serde::Serialize::serialize(cell, &mut line).expect("cells serialize");
+    out.push_str(std::str::from_utf8(&bytes).expect("JSON is UTF-8"));
+}
+
+/// Flat values on one line, as [`write_inline`] lays them out: a comma
+/// and a space between items, a colon and a space after a key.
+struct Inline;
+
+impl serde_json::ser::Formatter for Inline {
+    fn begin_array_value<W: ?Sized + std::io::Write>(
+        &mut self,
+        writer: &mut W,
+        first: bool,
+    ) -> std::io::Result<()> {
+        if first {
+            Ok(())
+        } else {
+            writer.write_all(b", ")
+        }
+    }
+
+    fn begin_object_key<W: ?Sized + std::io::Write>(
+        &mut self,
+        writer: &mut W,
+        first: bool,
+    ) -> std::io::Result<()> {
+        if first {
+            Ok(())
+        } else {
+            writer.write_all(b", ")
+        }
+    }
+
+    fn begin_object_value<W: ?Sized + std::io::Write>(
+        &mut self,
+        writer: &mut W,
+    ) -> std::io::Result<()> {
+        writer.write_all(b": ")
+    }
 }
 
 fn write(out: &mut String, value: &Value, level: usize) {
