@@ -3,12 +3,14 @@
 //! with the few edges of its band (even-odd, holes included) instead of
 //! every edge. A placement search asks thousands of these per target.
 
-use geo::{Contains, MultiPolygon, Point};
+use geo::{BoundingRect, Contains, MultiPolygon, Point, Rect};
 
 /// A region with its edges by band.
 #[derive(Clone, Debug)]
 pub struct Inside {
     region: MultiPolygon<f64>,
+    /// The region's bounding rectangle (none if it is empty).
+    bounds: Option<Rect<f64>>,
     bottom_mm: f64,
     band_mm: f64,
     /// Each band's edges, `[x0, y0, x1, y1]`.
@@ -20,6 +22,7 @@ const EDGES_PER_BAND: f64 = 2.0;
 
 impl Inside {
     pub fn new(region: MultiPolygon<f64>) -> Self {
+        let bounds = region.bounding_rect();
         let edges: Vec<[f64; 4]> = region
             .0
             .iter()
@@ -41,6 +44,7 @@ impl Inside {
         if edges.is_empty() {
             return Inside {
                 region,
+                bounds,
                 bottom_mm: 0.0,
                 band_mm: 1.0,
                 bands: Vec::new(),
@@ -58,10 +62,20 @@ impl Inside {
         }
         Inside {
             region,
+            bounds,
             bottom_mm,
             band_mm,
             bands,
         }
+    }
+
+    /// How far `p` is from the region's bounding rectangle (0 inside
+    /// it): no point of the region is nearer. None if it is empty.
+    pub fn bounds_distance_mm(&self, p: Point<f64>) -> Option<f64> {
+        let b = self.bounds?;
+        let dx = (b.min().x - p.x()).max(p.x() - b.max().x).max(0.0);
+        let dy = (b.min().y - p.y()).max(p.y() - b.max().y).max(0.0);
+        Some(dx.hypot(dy))
     }
 
     /// The region.

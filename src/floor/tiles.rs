@@ -200,7 +200,16 @@ impl Region {
                 break;
             }
             for (i, j) in ring_tiles(ci, cj, ring, self.nx, self.ny) {
-                let Some(q) = closest(self.tile(i, j).region(), p) else {
+                let tile = self.tile(i, j);
+                // A piece whose bounds are no nearer than the best cannot
+                // be nearer (nor, by a tie, replace it).
+                let Some(near_mm) = tile.bounds_distance_mm(p) else {
+                    continue;
+                };
+                if best.is_some_and(|(d, _)| near_mm >= d) {
+                    continue;
+                }
+                let Some(q) = closest(tile.region(), near_mm, p) else {
                     continue;
                 };
                 let d = (q.x() - p.x()).hypot(q.y() - p.y());
@@ -242,13 +251,14 @@ fn ring_tiles(
         .map(|(i, j)| (i as usize, j as usize))
 }
 
-/// The point of `region` nearest to `p`, none if it is empty.
-fn closest(region: &MultiPolygon<f64>, p: Point<f64>) -> Option<Point<f64>> {
+/// The point of `region` nearest to `p`, none if it is empty; `near_mm`
+/// is how far `p` is from its bounds (if not 0, `p` is outside it).
+fn closest(region: &MultiPolygon<f64>, near_mm: f64, p: Point<f64>) -> Option<Point<f64>> {
     use geo::Contains;
     if region.0.is_empty() {
         return None;
     }
-    if region.contains(&p) {
+    if near_mm == 0.0 && region.contains(&p) {
         return Some(p);
     }
     match region.closest_point(&p) {
@@ -355,7 +365,7 @@ mod tests {
         ] {
             let p = Point::new(x, y);
             let q = tiled.nearest(p).expect("the chair fits");
-            let expected = closest(&whole, p).expect("the chair fits");
+            let expected = closest(&whole, 0.0, p).expect("the chair fits");
             let (d, e) = (
                 (q.x() - x).hypot(q.y() - y),
                 (expected.x() - x).hypot(expected.y() - y),
