@@ -89,6 +89,7 @@ fn main() {
                 proofs: None,
                 last_resort: None,
                 from_rest: true,
+                descents: None,
                 meter: reach::meter::Meter::unmetered(),
             };
             let start = Instant::now();

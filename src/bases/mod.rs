@@ -5,7 +5,8 @@
 //! (`capability.rs`) within what its options allow (`placing.rs`).
 
 mod capability;
-mod descents;
+#[cfg(test)]
+mod descents_tests;
 mod face;
 mod fixed;
 mod placement;

@@ -17,11 +17,10 @@
 //! (`collision::KeptProofs`) is skipped, and the answer must be the same
 //! whether or not the proof was made.
 
-use super::descents::Descents;
 use crate::collision::KeptProofs;
 use crate::kinematics::Chain;
 
-use crate::plugin::{BasePose, IkProblem, Placement, ReachQuery, Retry, Search, Solver};
+use crate::plugin::{BasePose, Descents, IkProblem, Placement, ReachQuery, Retry, Search, Solver};
 use crate::scene::{Blocked, Preferred};
 use crate::solvers::Kicks;
 
@@ -118,7 +117,9 @@ fn first_search(
     let bound_mm = chain.reach_bound_mm() + query.tolerance_mm;
     let mut first_passed = None;
     let mut any_solved = false;
-    let mut descents = Descents::default();
+    let mut own_descents = Descents::default();
+    let mut kept = query.descents.map(|d| d.borrow_mut());
+    let descents = kept.as_deref_mut().unwrap_or(&mut own_descents);
     let last_resort = query.last_resort.map(|(pose, q)| Candidate {
         pose,
         start: Some(q.to_vec()),
@@ -144,7 +145,7 @@ fn first_search(
         let tried = Tried {
             best: &mut best,
             blocked: &mut blocked,
-            descents: &mut descents,
+            descents,
         };
         if try_candidate(query, chain, &candidate, solver, tried) {
             return (best, blocked);
@@ -154,7 +155,7 @@ fn first_search(
         let tried = Tried {
             best: &mut best,
             blocked: &mut blocked,
-            descents: &mut descents,
+            descents,
         };
         try_candidate(query, chain, &candidate, solver, tried);
     }
@@ -184,7 +185,7 @@ fn try_candidate(
         Some(start) => tried
             .descents
             .solve_from_at(query, chain, pose, solver, start),
-        None => query.solve_at(chain, pose, solver),
+        None => tried.descents.solve_at(query, chain, pose, solver),
     };
     let solution = &placement.solution;
     if solution.collision.is_some() && solution.distance_mm <= query.tolerance_mm {

@@ -2,11 +2,12 @@
 //! for a room and a chain, then asked to reach: it chooses candidate
 //! placements and asks a solver for the posture from each.
 
+use std::cell::RefCell;
 use std::fmt;
 
 use nalgebra::{Point3, Vector2};
 
-use super::{IkProblem, Options, Plugin, SettingsError, Solver};
+use super::{Descents, IkProblem, Options, Plugin, SettingsError, Solver};
 use crate::collision::{KeptProofs, Obstacles, PlacedObstacles};
 use geo::MultiPolygon;
 
@@ -50,6 +51,9 @@ pub struct ReachQuery<'a> {
     /// hand at rest would be at the target (a reach does; a map's point,
     /// reached from its neighbours, does not).
     pub from_rest: bool,
+    /// The descents made for the queries before this one that it may
+    /// reuse (a map's run of points); none: the search keeps its own.
+    pub descents: Option<&'a RefCell<Descents>>,
     /// What the solves tell their work to.
     pub meter: &'a Meter,
 }

@@ -6,6 +6,7 @@
 //! settings, typed, and looks nothing up by name.
 
 mod base;
+mod descents;
 mod format;
 mod registry;
 mod solver;
@@ -15,6 +16,7 @@ mod task;
 pub use base::{
     Base, BaseError, BasePlugin, Fit, Hips, PreparedBase, ReachQuery, Retry, Search, Tries,
 };
+pub use descents::Descents;
 pub use format::{FormatPlugin, FormatScene, TaskPlace};
 pub use registry::Registry;
 pub use solver::{work_ratio, IkProblem, Solver, SolverPlugin};

@@ -113,6 +113,13 @@ pub trait Solver: Send + Sync {
     fn blind_to_room(&self) -> bool {
         false
     }
+    /// Whether [`Solver::solve`]'s starts depend on the problem's seed:
+    /// where they do not, a solve from the solver's own starts is, like a
+    /// [`Solver::solve_from`], the same for the same target in the base
+    /// frame.
+    fn seeded(&self) -> bool {
+        true
+    }
 }
 
 pub trait SolverPlugin: Plugin {

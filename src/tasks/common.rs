@@ -218,6 +218,7 @@ impl Reaching {
             proofs: None,
             last_resort: None,
             from_rest: true,
+            descents: None,
             meter,
         }
     }

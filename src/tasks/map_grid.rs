@@ -12,6 +12,8 @@
 //! Every round works from the answers of the round before, so the order
 //! the threads take points in never matters.
 
+use std::cell::RefCell;
+
 use nalgebra::{Point3, Vector3};
 use rayon::prelude::*;
 
@@ -22,7 +24,7 @@ use crate::bases::retry;
 use crate::collision::{KeptProofs, Obstacles};
 use crate::kinematics::Chain;
 use crate::plugin::{
-    BasePose, Placement, PreparedBase, ReachQuery, Retry, Search, Subject, TaskInput,
+    BasePose, Descents, Placement, PreparedBase, ReachQuery, Retry, Search, Subject, TaskInput,
 };
 use crate::report::{MapCell, MapReport, Names, TaskReport};
 use crate::scene::{Blocked, Grid, GridCell, IkSolution, Surface};
@@ -195,11 +197,13 @@ impl<'a> GridRun<'a> {
                 // The last point of the run reached, by its index.
                 let mut solved: Vec<Solved> = Vec::with_capacity(run.len());
                 let mut last: Option<usize> = None;
+                // The run's descents, kept from point to point.
+                let descents = RefCell::new(Descents::default());
                 for cell in *run {
                     let neighbour = last
                         .filter(|_| self.asked.grid.neighbour_starts)
                         .and_then(|i| solved[i].reached.as_ref());
-                    let point = self.solve(cell, neighbour);
+                    let point = self.solve(cell, neighbour, &descents);
                     self.input.progress.advance(1);
                     if point.reached.is_some() {
                         last = Some(solved.len());
@@ -234,9 +238,17 @@ impl<'a> GridRun<'a> {
     }
 
     /// `cell`'s point: from `neighbour` (the last point reached in its
-    /// run), else searched.
-    fn solve(&self, cell: &GridCell, neighbour: Option<&Reached>) -> Solved {
-        let query = self.query(cell, neighbour);
+    /// run), else searched, reusing the run's `descents`.
+    fn solve(
+        &self,
+        cell: &GridCell,
+        neighbour: Option<&Reached>,
+        descents: &RefCell<Descents>,
+    ) -> Solved {
+        let query = ReachQuery {
+            descents: Some(descents),
+            ..self.query(cell, neighbour)
+        };
         if self.input.meter.exceeded() {
             // The run is thrown away: the point is left unsolved.
             let placement = Placement {

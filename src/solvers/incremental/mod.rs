@@ -253,4 +253,9 @@ impl Solver for IncrementalSolver {
     fn blind_to_room(&self) -> bool {
         !self.settings.steer_clear
     }
+
+    /// One start, the neutral posture: no seed is drawn from.
+    fn seeded(&self) -> bool {
+        self.settings.starts > 1 || !self.settings.neutral_start
+    }
 }
