@@ -238,15 +238,17 @@ impl<'a> GridRun<'a> {
     }
 
     /// `cell`'s point: from `neighbour` (the last point reached in its
-    /// run), else searched, reusing the run's `descents`.
+    /// run), else searched, reusing the run's `descents` (with neighbour
+    /// starts).
     fn solve(
         &self,
         cell: &GridCell,
         neighbour: Option<&Reached>,
         descents: &RefCell<Descents>,
     ) -> Solved {
+        // Without neighbour starts each point is solved cold, on its own.
         let query = ReachQuery {
-            descents: Some(descents),
+            descents: Some(descents).filter(|_| self.asked.grid.neighbour_starts),
             ..self.query(cell, neighbour)
         };
         if self.input.meter.exceeded() {
