@@ -148,7 +148,7 @@ impl Obstacles {
         let Some(touched) = &self.touched else {
             return;
         };
-        if !bounds_meet(bounds, asked, TOUCH_MARGIN_MM) {
+        if touched.is_marked(index) || !bounds_meet(bounds, asked, TOUCH_MARGIN_MM) {
             return;
         }
         let (a, b, r_mm) = segment;

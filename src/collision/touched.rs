@@ -72,6 +72,16 @@ impl Touched {
         }
     }
 
+    /// Whether obstacle `index` is touched already (then a question need
+    /// not work out whether it comes near it).
+    pub fn is_marked(&self, index: usize) -> bool {
+        self.all.load(Ordering::Relaxed)
+            || self
+                .words
+                .get(index / 64)
+                .is_some_and(|word| word.load(Ordering::Relaxed) & (1u64 << (index % 64)) != 0)
+    }
+
     /// Every obstacle was touched.
     pub fn mark_all(&self) {
         self.all.store(true, Ordering::Relaxed);
