@@ -8,8 +8,10 @@
 //! newly reached is tried from it, the same way, with a steering descent
 //! as well), then each point still not reached whose search was blocked
 //! is retried from its blocked placements, in waves of every eighth point
-//! (diagonally), the region growing again from what each wave gains.
-//! Every round works from the answers of the round before, so the order
+//! (diagonally), the region growing again from what each wave gains;
+//! last, the points in gaps (runs not reached with a reached point at
+//! either end, along a row or a column) are searched harder, and the
+//! region grows again. Every round works from the answers of the round before, so the order
 //! the threads take points in never matters.
 
 use std::cell::RefCell;
@@ -77,8 +79,8 @@ const RUN: usize = 32;
 /// point, or more).
 const WAVES: usize = 8;
 
-/// How many times harder a hole (a point not reached between two that
-/// are) is searched: so many cold searches, each retrying so many times as
+/// How many times harder a point in a gap (points not reached between
+/// two that are, along a row or a column) is searched: so many cold searches, each retrying so many times as
 /// many blocked placements.
 const HARDER: usize = 4;
 
@@ -141,18 +143,7 @@ fn map_report(
             run.proofs.settle();
             run.grow(&grid, &mut solved, gained, Steer::Always);
         }
-        let holes: Vec<usize> = (0..solved.len())
-            .filter(|&i| !stopped() && is_hole(&grid, &solved, i))
-            .collect();
-        let filled: Vec<(usize, Solved)> = holes
-            .par_iter()
-            .filter_map(|&i| run.hole_searched(&grid, &solved, i).map(|s| (i, s)))
-            .collect();
-        let gained = filled.iter().map(|(i, _)| *i).collect();
-        for (i, s) in filled {
-            solved[i] = s;
-        }
-        run.grow(&grid, &mut solved, gained, Steer::Always);
+        run.fill_gaps(&grid, &mut solved);
     }
     if asked.why && !stopped() {
         run.find_why(&grid, &mut solved);
@@ -451,6 +442,35 @@ impl<'a> GridRun<'a> {
             .collect()
     }
 
+    /// Each point in a gap searched harder ([`GridRun::hole_searched`]),
+    /// in parallel, and the reached region grown from what that gains;
+    /// again while the region's growth opens new gaps, each point searched
+    /// harder once at most.
+    fn fill_gaps(&self, grid: &Grid, solved: &mut [Solved]) {
+        let mut searched = vec![false; solved.len()];
+        loop {
+            let holes: Vec<usize> = gaps(grid, solved)
+                .into_iter()
+                .filter(|&i| !searched[i])
+                .collect();
+            if holes.is_empty() || self.input.meter.exceeded() {
+                return;
+            }
+            for &i in &holes {
+                searched[i] = true;
+            }
+            let filled: Vec<(usize, Solved)> = holes
+                .par_iter()
+                .filter_map(|&i| self.hole_searched(grid, solved, i).map(|s| (i, s)))
+                .collect();
+            let gained = filled.iter().map(|(i, _)| *i).collect();
+            for (i, s) in filled {
+                solved[i] = s;
+            }
+            self.grow(grid, solved, gained, Steer::Always);
+        }
+    }
+
     /// Hole `i` tried from each reached neighbour, steering; else searched
     /// again cold [`HARDER`] times, each with another seed and retrying
     /// [`HARDER`] times as many blocked placements.
@@ -530,13 +550,40 @@ impl<'a> GridRun<'a> {
     }
 }
 
-/// Whether point `i` is not reached and both its neighbours in its row,
-/// or both in its column, are: a hole.
-fn is_hole(grid: &Grid, solved: &[Solved], i: usize) -> bool {
-    let reached = |n: Option<usize>| n.is_some_and(|n| solved[n].reached.is_some());
-    let [left, right, below, above] = neighbours(grid, i);
-    solved[i].reached.is_none()
-        && ((reached(left) && reached(right)) || (reached(below) && reached(above)))
+/// The points not reached that lie in a gap, in order: a run of points
+/// not reached, along a row or a column, with a reached point at either
+/// end (a single point between two reached ones is the shortest).
+fn gaps(grid: &Grid, solved: &[Solved]) -> Vec<usize> {
+    let columns = grid.columns.max(1);
+    let mut in_gap = vec![false; solved.len()];
+    let lines = (0..grid.rows)
+        .map(|r| (r * columns, 1, columns))
+        .chain((0..columns).map(|c| (c, columns, grid.rows)));
+    for (first, stride, len) in lines {
+        let line: Vec<usize> = (0..len)
+            .map(|k| first + k * stride)
+            .filter(|&i| i < solved.len())
+            .collect();
+        mark_gaps(&line, |i| solved[i].reached.is_some(), &mut in_gap);
+    }
+    (0..solved.len()).filter(|&i| in_gap[i]).collect()
+}
+
+/// Marks in `in_gap` the points of `line` (indices, in order) that lie
+/// between two reached ones with none reached between.
+fn mark_gaps(line: &[usize], reached: impl Fn(usize) -> bool, in_gap: &mut [bool]) {
+    let mut last_reached: Option<usize> = None;
+    for (k, &i) in line.iter().enumerate() {
+        if !reached(i) {
+            continue;
+        }
+        if let Some(j) = last_reached {
+            for &g in &line[j + 1..k] {
+                in_gap[g] = true;
+            }
+        }
+        last_reached = Some(k);
+    }
 }
 
 /// When a point tried from its neighbour's posture takes a steering
@@ -565,4 +612,34 @@ fn neighbours(grid: &Grid, i: usize) -> [Option<usize>; 4] {
         at(row.checked_sub(1), Some(column)),
         at(Some(row + 1), Some(column)),
     ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::mark_gaps;
+
+    /// The gaps of a line written as `#` (reached) and `.` (not).
+    fn gaps_of(line: &str) -> Vec<usize> {
+        let reached: Vec<bool> = line.chars().map(|c| c == '#').collect();
+        let indices: Vec<usize> = (0..reached.len()).collect();
+        let mut in_gap = vec![false; reached.len()];
+        mark_gaps(&indices, |i| reached[i], &mut in_gap);
+        (0..reached.len()).filter(|&i| in_gap[i]).collect()
+    }
+
+    #[test]
+    fn a_gap_is_a_run_not_reached_with_a_reached_point_at_either_end() {
+        let table: [(&str, &[usize]); 7] = [
+            ("#.#", &[1]),
+            ("#....#", &[1, 2, 3, 4]),
+            ("..#..", &[]),
+            ("#..#.#..", &[1, 2, 4]),
+            ("####", &[]),
+            ("....", &[]),
+            ("", &[]),
+        ];
+        for (line, expected) in table {
+            assert_eq!(gaps_of(line), expected, "{line:?}");
+        }
+    }
 }
