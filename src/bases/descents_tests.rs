@@ -9,8 +9,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use nalgebra::{Point3, Vector3};
 
 use crate::collision::Obstacles;
+use crate::kinematics::revolute;
 use crate::kinematics::Chain;
-use crate::kinematics::{Dh, Joint, JointKind, Link};
 use crate::meter::Meter;
 use crate::options::Settings;
 use crate::plugin::{BasePose, Descents, IkProblem, IkSolution, ReachQuery, Search, Solver};
@@ -20,19 +20,12 @@ use crate::solvers::{IncrementalSettings, IncrementalSolver};
 /// A planar arm of three links (300, 250 and 150 mm) turning about
 /// vertical axes.
 fn arm() -> Chain {
-    let joint = |name: &str, a_mm: f64| Joint {
-        name: name.into(),
-        kind: JointKind::Revolute,
-        dh: Dh::new(0.0, 0.0, 0.0, a_mm),
-        fixed: None,
-        min: -3.0,
-        max: 3.0,
-        neutral: 0.0,
-        weight: 1.0,
-        link: Link::named(name),
-    };
     Chain::new(
-        vec![joint("a", 300.0), joint("b", 250.0), joint("c", 150.0)],
+        vec![
+            revolute("a", 0.0, 0.0, 0.0, 300.0),
+            revolute("b", 0.0, 0.0, 0.0, 250.0),
+            revolute("c", 0.0, 0.0, 0.0, 150.0),
+        ],
         "tip",
         Vector3::zeros(),
     )

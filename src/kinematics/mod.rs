@@ -15,6 +15,8 @@ mod urdf;
 mod volumes;
 
 pub use body::{Body, Effector, Sphere};
+#[cfg(test)]
+pub(crate) use chain::revolute;
 pub use chain::{Chain, Joint, JointKind, Link, Rider};
 pub use coupling::Coupling;
 pub use dh::Dh;
