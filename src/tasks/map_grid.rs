@@ -485,6 +485,9 @@ impl<'a> GridRun<'a> {
             return from_neighbour;
         }
         let solver = self.asked.reaching.solver.as_ref();
+        // The searches differ in their seeds: where the solver's own
+        // starts draw none, their first searches are one search, made once.
+        let descents = RefCell::new(Descents::default());
         (0..HARDER as u64).find_map(|k| {
             let usual = self.query(cell, None);
             let query = ReachQuery {
@@ -493,6 +496,7 @@ impl<'a> GridRun<'a> {
                     placements: r.placements * HARDER,
                     ..r
                 }),
+                descents: Some(&descents),
                 ..usual
             };
             let point = self.solved(
