@@ -119,7 +119,11 @@ fn first_search(
     let mut any_solved = false;
     let mut own_descents = Descents::default();
     let mut kept = query.descents.map(|d| d.borrow_mut());
-    let descents = kept.as_deref_mut().unwrap_or(&mut own_descents);
+    let mut tried = Tried {
+        best: &mut best,
+        blocked: &mut blocked,
+        descents: kept.as_deref_mut().unwrap_or(&mut own_descents),
+    };
     let last_resort = query.last_resort.map(|(pose, q)| Candidate {
         pose,
         start: Some(q.to_vec()),
@@ -127,7 +131,7 @@ fn first_search(
     });
     for candidate in candidates.into_iter().chain(last_resort) {
         // Fallbacks come last: once one placement reaches, none is drawn.
-        if candidate.fallback && best.reaches() {
+        if candidate.fallback && tried.best.reaches() {
             break;
         }
         let target_mm = candidate.pose.to_base(&query.target_room_mm);
@@ -142,22 +146,12 @@ fn first_search(
             continue;
         }
         any_solved = true;
-        let tried = Tried {
-            best: &mut best,
-            blocked: &mut blocked,
-            descents,
-        };
-        if try_candidate(query, chain, &candidate, solver, tried) {
+        if try_candidate(query, chain, &candidate, solver, &mut tried) {
             return (best, blocked);
         }
     }
     if let (false, Some(candidate)) = (any_solved, first_passed) {
-        let tried = Tried {
-            best: &mut best,
-            blocked: &mut blocked,
-            descents,
-        };
-        try_candidate(query, chain, &candidate, solver, tried);
+        try_candidate(query, chain, &candidate, solver, &mut tried);
     }
     (best, blocked)
 }
@@ -178,7 +172,7 @@ fn try_candidate(
     chain: &Chain,
     candidate: &Candidate,
     solver: &dyn Solver,
-    tried: Tried<'_>,
+    tried: &mut Tried<'_>,
 ) -> bool {
     let pose = candidate.pose;
     let placement = match &candidate.start {

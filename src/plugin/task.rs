@@ -14,7 +14,7 @@ use crate::error::ErrorKind;
 use crate::kinematics::Chain;
 use crate::meter::Meter;
 use crate::progress::Progress;
-use crate::report::TaskReport;
+use crate::report::{Names, TaskReport};
 use crate::scene::{Person, Room, Surface, Target};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -75,6 +75,19 @@ pub struct TaskInput<'a> {
     /// What the task's solves tell their work to ([`crate::meter`]): a
     /// task whose run passes the limit is thrown away with the run.
     pub meter: &'a Meter,
+}
+
+impl<'a> TaskInput<'a> {
+    /// The names of what `chain`, the task's person's, may run into: the
+    /// room's obstacles and sides, the person's own body and base, the
+    /// chain's own parts.
+    pub fn names(&self, chain: &'a Chain) -> Names<'a> {
+        Names {
+            room: self.room,
+            own: self.base.own_body(),
+            chain,
+        }
+    }
 }
 
 /// What a task's answer depends on in its room beyond its own settings,

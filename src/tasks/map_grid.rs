@@ -29,7 +29,7 @@ use crate::kinematics::Chain;
 use crate::plugin::{
     BasePose, Descents, Placement, PreparedBase, ReachQuery, Retry, Search, Subject, TaskInput,
 };
-use crate::report::{MapCell, MapReport, Names, TaskReport};
+use crate::report::{MapCell, MapReport, TaskReport};
 use crate::scene::{Blocked, Blocker, Grid, GridCell, IkSolution, Surface};
 
 /// Whether a point is reached (or seen), given where the base stood and
@@ -81,8 +81,9 @@ const RUN: usize = 32;
 const WAVES: usize = 8;
 
 /// How many times harder a point in a gap (points not reached between
-/// two that are, along a row or a column) or at a board's edge is searched: so many cold searches, each retrying so many times as
-/// many blocked placements.
+/// two that are, along a row or a column) or at a board's edge is
+/// searched: so many cold searches, each retrying so many times as many
+/// blocked placements.
 const HARDER: usize = 4;
 
 /// Where a point was reached, and the point (where the effector went).
@@ -284,12 +285,9 @@ impl<'a> GridRun<'a> {
         let mut cell = MapCell::new(cell, &placement, self.asked.chain, counts);
         let mut through_room = false;
         if !counts && self.asked.of == "reach" {
-            cell.set_through(self.through(&placement));
-            through_room =
-                placement.solution.distance_mm <= self.asked.reaching.common.tolerance_mm
-                    && placement.solution.collision.is_some_and(|c| {
-                        matches!(c.blocker, Blocker::Obstacle(_) | Blocker::Wall(_))
-                    });
+            let blocker = self.through(&placement);
+            cell.set_through(blocker.map(|b| self.input.names(self.asked.chain).blocker(b)));
+            through_room = matches!(blocker, Some(Blocker::Obstacle(_) | Blocker::Wall(_)));
         }
         let (reached, closest) = if counts {
             let reached = Reached {
@@ -311,18 +309,11 @@ impl<'a> GridRun<'a> {
 
     /// What the closest posture of a point not reached passes through,
     /// where it came within the tolerance.
-    fn through(&self, placement: &Placement) -> Option<String> {
+    fn through(&self, placement: &Placement) -> Option<Blocker> {
         let solution = &placement.solution;
         let collision = solution.collision.as_ref()?;
         let tolerance_mm = self.asked.reaching.common.tolerance_mm;
-        (solution.distance_mm <= tolerance_mm).then(|| {
-            Names {
-                room: self.input.room,
-                own: self.input.base.own_body(),
-                chain: self.asked.chain,
-            }
-            .blocker(collision.blocker)
-        })
+        (solution.distance_mm <= tolerance_mm).then_some(collision.blocker)
     }
 
     /// Why each point not reached was not, found as a reach's is
@@ -460,11 +451,10 @@ impl<'a> GridRun<'a> {
     fn fill_gaps(&self, grid: &Grid, solved: &mut [Solved]) {
         let mut searched = vec![false; solved.len()];
         loop {
-            let mut holes = gaps(grid, solved);
-            holes.extend((0..solved.len()).filter(|&i| at_board_edge(grid, solved, i)));
-            holes.sort_unstable();
-            holes.dedup();
-            holes.retain(|&i| !searched[i]);
+            let in_gap = gaps(grid, solved);
+            let holes: Vec<usize> = (0..solved.len())
+                .filter(|&i| !searched[i] && (in_gap[i] || at_board_edge(grid, solved, i)))
+                .collect();
             if holes.is_empty() || self.input.meter.exceeded() {
                 return;
             }
@@ -566,10 +556,10 @@ impl<'a> GridRun<'a> {
     }
 }
 
-/// The points not reached that lie in a gap, in order: a run of points
-/// not reached, along a row or a column, with a reached point at either
-/// end (a single point between two reached ones is the shortest).
-fn gaps(grid: &Grid, solved: &[Solved]) -> Vec<usize> {
+/// Whether each point lies in a gap: a run of points not reached, along a
+/// row or a column, with a reached point at either end (a single point
+/// between two reached ones is the shortest).
+fn gaps(grid: &Grid, solved: &[Solved]) -> Vec<bool> {
     let columns = grid.columns.max(1);
     let mut in_gap = vec![false; solved.len()];
     let lines = (0..grid.rows)
@@ -582,7 +572,7 @@ fn gaps(grid: &Grid, solved: &[Solved]) -> Vec<usize> {
             .collect();
         mark_gaps(&line, |i| solved[i].reached.is_some(), &mut in_gap);
     }
-    (0..solved.len()).filter(|&i| in_gap[i]).collect()
+    in_gap
 }
 
 /// Whether point `i` is not reached, has a reached neighbour, and came

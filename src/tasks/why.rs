@@ -25,7 +25,7 @@ use super::common::Reaching;
 use crate::collision::{obstacle_bounds, Obstacles, PlacedObstacles, TOUCH_MARGIN_MM};
 use crate::kinematics::{Chain, JointKind};
 use crate::plugin::{Placement, Search, TaskInput};
-use crate::report::{Names, Why, WIDENED_DEG};
+use crate::report::{Why, WIDENED_DEG};
 use crate::scene::{Blocker, OwnBody, Room};
 
 /// How many of the room's obstacles a failed reach met are each tried
@@ -436,12 +436,7 @@ impl Failed<'_> {
     }
 
     fn name(&self, b: Blocker) -> String {
-        Names {
-            room: self.input.room,
-            own: self.input.base.own_body(),
-            chain: self.chain,
-        }
-        .blocker(b)
+        self.input.names(self.chain).blocker(b)
     }
 }
 
