@@ -103,17 +103,7 @@ impl<'a> ReachQuery<'a> {
     /// is checked here whatever the solver did, so that no solver can
     /// report a posture through a box.
     pub fn solve_at(&self, chain: &Chain, pose: BasePose, solver: &dyn Solver) -> Placement {
-        let problem = self.problem(chain, pose);
-        let mut solution = match self.search {
-            Search::MostComfortable => solver.solve(&problem),
-            Search::FirstReaching => solver.solve_until_reached(&problem),
-        };
-        solution.collision = problem.collision_charged(&solution.q);
-        Placement {
-            pose,
-            solution,
-            retried: false,
-        }
+        self.solve_problem(&self.problem(chain, pose), pose, solver, None)
     }
 
     /// One solve from `pose` and posture `start` (a neighbouring point's on
@@ -125,8 +115,23 @@ impl<'a> ReachQuery<'a> {
         solver: &dyn Solver,
         start: Vec<f64>,
     ) -> Placement {
-        let problem = self.problem(chain, pose);
-        let mut solution = solver.solve_from(&problem, start);
+        self.solve_problem(&self.problem(chain, pose), pose, solver, Some(start))
+    }
+
+    /// `problem` (this query's at `pose`, or one like it) solved from
+    /// `start`, else from the solver's own starts, the collision checked.
+    pub fn solve_problem(
+        &self,
+        problem: &IkProblem<'_>,
+        pose: BasePose,
+        solver: &dyn Solver,
+        start: Option<Vec<f64>>,
+    ) -> Placement {
+        let mut solution = match (start, self.search) {
+            (Some(start), _) => solver.solve_from(problem, start),
+            (None, Search::MostComfortable) => solver.solve(problem),
+            (None, Search::FirstReaching) => solver.solve_until_reached(problem),
+        };
         solution.collision = problem.collision_charged(&solution.q);
         Placement {
             pose,
