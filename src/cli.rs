@@ -185,7 +185,7 @@ struct LimitArgs {
     #[arg(long, value_name = "N", default_value_t = DEFAULTS.solver_starts as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.solver_starts as u64))]
     max_solver_starts: u64,
     /// Most work the solvers may do in one run (about a joint moved once
-    /// a unit), counted as they work
+    /// a unit), counted as they work, with the routes from the doors
     #[arg(long, value_name = "UNITS", default_value_t = DEFAULTS.solver_work, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.solver_work))]
     max_solver_work: u64,
     /// Most people one population may draw

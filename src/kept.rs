@@ -42,6 +42,23 @@ impl<V: Clone> Kept<V> {
         kept.insert(key, value.clone());
         value
     }
+
+    /// The value kept for `key`, or `compute`'s, kept only where it is
+    /// one (a computation cut short is not kept).
+    pub fn get_or_try<E>(&self, key: u64, compute: impl FnOnce() -> Result<V, E>) -> Result<V, E> {
+        let values = self.values.get_or_init(Mutex::default);
+        let lock = || values.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(value) = lock().get(&key) {
+            return Ok(value.clone());
+        }
+        let value = compute()?;
+        let mut kept = lock();
+        if kept.len() >= self.most {
+            kept.clear();
+        }
+        kept.insert(key, value.clone());
+        Ok(value)
+    }
 }
 
 #[cfg(test)]
@@ -57,5 +74,13 @@ mod tests {
         // Full: the third starts again.
         assert_eq!(kept.get_or(3, || 30), 30);
         assert_eq!(kept.get_or(1, || 11), 11);
+    }
+
+    #[test]
+    fn a_value_that_failed_is_not_kept() {
+        let kept: Kept<u32> = Kept::new(2);
+        assert_eq!(kept.get_or_try(1, || Err::<u32, ()>(())), Err(()));
+        assert_eq!(kept.get_or_try(1, || Ok::<u32, ()>(10)), Ok(10));
+        assert_eq!(kept.get_or_try(1, || Err::<u32, ()>(())), Ok(10));
     }
 }

@@ -6,7 +6,10 @@
 //! before a run (`--max-solver-starts`) bounds how many solves may run;
 //! the meter bounds what they cost, iterations and checks included, so
 //! that a scenario asking for the costliest solves the count admits stops
-//! with the limit named rather than running for hours.
+//! with the limit named rather than running for hours. The routes from a
+//! room's doors, a floor's costliest part, are counted in the same units
+//! (`floor/region.rs`, `UNITS_PER_CORNER`), charged to the first task of
+//! the scenario that places the person in the room.
 //!
 //! Every solve does the same work whatever thread runs it and whatever
 //! ran before it, so the work of a whole run is a sum that does not
@@ -109,6 +112,14 @@ impl Meter {
     pub fn charge(&self, units: u64) -> bool {
         self.own.fetch_add(units, Ordering::Relaxed);
         self.run.as_ref().is_none_or(|run| run.charge(units))
+    }
+
+    /// Whether the run would still be within its limit were `units` more
+    /// spent (nothing is charged).
+    pub fn would_stay_within(&self, units: u64) -> bool {
+        self.run
+            .as_ref()
+            .is_none_or(|run| run.spent().saturating_add(units) <= run.limit)
     }
 
     /// Whether the run has spent more than its limit (a solve stops).

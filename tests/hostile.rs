@@ -905,6 +905,19 @@ fn metered() -> String {
     )
 }
 
+/// A reach and a map by a wheelchair user who comes in by a door: the
+/// routes from the door count towards the bound too, charged to the
+/// first task that places her in the room. `unique` names a box of its
+/// own, so that no other test's run keeps this room's routes.
+fn through_a_door(unique: &str) -> String {
+    shelf_room(
+        &format!(
+            "  target cup at (300, 1500, 950)\n  door d at (3000, 1500) width 900mm\n  box {unique} at (2500, 200, 0) size (123, 77, 300)\n"
+        ),
+        "person ann { mannequin right_arm base wheelchair }\nreach cup by ann\nmap front by ann { step 300mm }\n",
+    )
+}
+
 /// The run of `text` within `limit` units of solver work, on `threads`
 /// threads: the work, or the error.
 fn metered_run(text: &str, limit: u64, threads: usize) -> Result<u64, reach::Error> {
@@ -933,16 +946,45 @@ fn metered_run(text: &str, limit: u64, threads: usize) -> Result<u64, reach::Err
 /// on each: at its own work it runs, one unit less it stops.
 #[test]
 fn a_run_stays_within_the_bound_or_passes_it_whatever_the_threads() {
-    let work = metered_run(&metered(), u64::MAX / 2, 1).expect("within the bound");
-    assert!(work > 100_000, "{work}");
-    for threads in [1, 3] {
-        assert_eq!(metered_run(&metered(), work, threads).ok(), Some(work));
-        let past = metered_run(&metered(), work - 1, threads).expect_err("past the bound");
-        assert!(
-            matches!(past.kind(), ErrorKind::TooMuchWork { limit } if *limit == work - 1),
-            "{past}"
-        );
+    for text in [metered(), through_a_door("bound")] {
+        let work = metered_run(&text, u64::MAX / 2, 1).expect("within the bound");
+        assert!(work > 100_000, "{work}");
+        for threads in [1, 3] {
+            assert_eq!(metered_run(&text, work, threads).ok(), Some(work));
+            let past = metered_run(&text, work - 1, threads).expect_err("past the bound");
+            assert!(
+                matches!(past.kind(), ErrorKind::TooMuchWork { limit } if *limit == work - 1),
+                "{past}"
+            );
+        }
     }
+}
+
+/// Routes from a door past what the run has left are cut short (10,000
+/// units: less than their first heading), the run stopped with the limit
+/// named, and nothing of them kept: the runs after it, within the bound,
+/// work them out whole, with the same work each time and the cup reached.
+#[test]
+fn routes_from_a_door_count_towards_the_bound_and_a_run_cut_short_keeps_nothing() {
+    let text = through_a_door("cut_short");
+    let past = metered_run(&text, 10_000, 2).expect_err("past the bound");
+    assert!(
+        matches!(past.kind(), ErrorKind::TooMuchWork { .. }),
+        "{past}"
+    );
+    let work = metered_run(&text, u64::MAX / 2, 2).expect("within the bound");
+    assert_eq!(metered_run(&text, u64::MAX / 2, 2).ok(), Some(work));
+    let registry = Registry::builtin();
+    let input = Input::Text {
+        name: "door.reach",
+        text: &text,
+    };
+    let scenario = reach::check_within(input, &registry, &Limits::default())
+        .1
+        .expect("the scenario checks");
+    let (report, _) = reach::run_counting(&scenario, &reach::progress::NoProgress).expect("runs");
+    let json = serde_json::to_value(&report).expect("a report is JSON");
+    assert_eq!(json["tasks"][0]["ok"], true, "{json}");
 }
 
 /// Each check against the room looks at every mesh as at every box, so

@@ -4,6 +4,7 @@ use nalgebra::{Point3, Vector3};
 
 use super::search::{search, search_retrying_later, Candidate};
 use crate::kinematics::{Chain, Posture};
+use crate::meter::Meter;
 use crate::plugin::{
     Base, BaseError, BasePlugin, BasePose, Fit, Hips, Options, ParamSpec, Params, Placement,
     Plugin, PreparedBase, ReachQuery, Settings, Solver,
@@ -91,12 +92,16 @@ impl Base for FixedBase {
     }
 
     /// The hip point must be inside the room.
-    fn fit(&self, room: &Room) -> Fit {
-        if room.contains(&self.pose.position_mm) {
-            Fit::Fits
-        } else {
+    fn fit(&self, room: &Room, _: &Meter) -> Fit {
+        if self.outside(room) {
             Fit::Outside
+        } else {
+            Fit::Fits
         }
+    }
+
+    fn outside(&self, room: &Room) -> bool {
+        !room.contains(&self.pose.position_mm)
     }
 
     fn prepare<'a>(&'a self, _: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a> {

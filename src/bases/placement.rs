@@ -30,10 +30,11 @@ use super::capability::Capability;
 use super::face::face_normal;
 use super::placing::{Approach, Placing, SIDE_SLACK_MM};
 use super::search::{search, search_retrying_later, Candidate};
-use crate::floor::{Doorway, FloorObstacles, Footprint, Misfit, Region, Routes, Shut};
+use crate::floor::{CutShort, Doorway, FloorObstacles, Footprint, Misfit, Region, Routes, Shut};
 use crate::geometry::Solid;
 use crate::kept::Kept;
 use crate::kinematics::Chain;
+use crate::meter::Meter;
 use crate::plugin::{
     Base, BasePose, Fit, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Solver, Tries,
 };
@@ -55,6 +56,9 @@ struct Floor {
     doors: Option<Vec<Doorway>>,
     /// Whether it fits somewhere, doors aside.
     fits: bool,
+    /// What working out its routes cost, in units of the meter
+    /// ([`Base::floor_work`]).
+    work: u64,
 }
 
 /// A base that moves on the floor: its footprint, the person's own body
@@ -133,10 +137,27 @@ impl Mobile {
         )
     }
 
-    /// Where the base may be placed, worked out once per room.
-    fn floor(&self, room: &Room) -> Arc<OnceLock<Floor>> {
+    /// Where the base may be placed, worked out once per room (with what
+    /// its routes cost told to `meter`; cut short once the run would pass
+    /// its work: nowhere then, and kept by no other run).
+    fn floor(&self, room: &Room, meter: &Meter) -> Arc<OnceLock<Floor>> {
         let cell = self.floors.cell(room);
-        cell.get_or_init(|| FLOORS.get_or(self.floor_key(room), || self.compute_floor(room)));
+        if cell.get().is_none() {
+            let key = self.floor_key(room);
+            let floor = FLOORS
+                .get_or_try(key, || self.compute_floor(room, meter))
+                .unwrap_or_else(|cut| {
+                    // Past the run's limit: the run stops.
+                    meter.charge(cut.work);
+                    Floor {
+                        regions: Vec::new(),
+                        doors: None,
+                        fits: false,
+                        work: cut.work,
+                    }
+                });
+            let _ = cell.set(floor);
+        }
         cell
     }
 
@@ -159,7 +180,7 @@ impl Mobile {
     /// The admissible regions, one per heading searched; where the room
     /// has doors, cut to what the base can get to from one
     /// (`floor/routes.rs`).
-    fn compute_floor(&self, room: &Room) -> Floor {
+    fn compute_floor(&self, room: &Room, meter: &Meter) -> Result<Floor, CutShort> {
         let zone = self.placing.zone.as_ref();
         let headings = &self.placing.headings;
         let obstacles = Arc::new(FloorObstacles::new(room, &self.footprint));
@@ -174,16 +195,20 @@ impl Mobile {
             headings.iter().map(|&h| (h, Arc::clone(&one))).collect()
         };
         let fits = regions.iter().any(|(_, r)| !r.is_empty());
-        let routes = fits
-            .then(|| Routes::of(room, &self.footprint, headings))
-            .flatten();
+        let within = |units: u64| meter.would_stay_within(units);
+        let routes = match fits {
+            true => Routes::of(room, &self.footprint, headings, &within)?,
+            false => None,
+        };
         let Some(routes) = routes else {
-            return Floor {
+            return Ok(Floor {
                 regions,
                 doors: None,
                 fits,
-            };
+                work: 0,
+            });
         };
+        let work = routes.work;
         let reached = |h: f64| {
             let obstacles = Arc::clone(&obstacles);
             let routes = Arc::clone(&routes);
@@ -196,21 +221,28 @@ impl Mobile {
                 routes,
             ))
         };
-        Floor {
+        Ok(Floor {
             regions: headings.iter().map(|&h| (h, reached(h))).collect(),
             doors: Some(routes.doors.clone()),
             fits,
-        }
+            work,
+        })
     }
 
     /// Whether the base fits anywhere in the room (and can get there from
     /// a door, where the room has doors), and if not, by how much it
-    /// misses or which doors shut it out (worked out once per room).
-    pub fn fit(&self, room: &Room) -> Fit {
-        let cell = self.floor(room);
+    /// misses or which doors shut it out (worked out once per room; its
+    /// routes cut short where they would take the run past its work, and
+    /// the run then stopped).
+    pub fn fit(&self, room: &Room, meter: &Meter) -> Fit {
+        let cell = self.floor(room, meter);
         let Some(floor) = cell.get() else {
             return Fit::Fits;
         };
+        if meter.exceeded() {
+            // The task stops where it starts, and the run with it.
+            return Fit::Fits;
+        }
         if floor.regions.iter().any(|(_, r)| !r.is_empty()) {
             return Fit::Fits;
         }
@@ -239,7 +271,7 @@ impl Mobile {
             mobile: self,
             room,
             chain,
-            floor: self.floor(room),
+            floor: self.floor(room, Meter::unmetered()),
             capability: Capability::of(chain, &self.own),
             hint: workspace_centre(chain),
             at_rest: {
@@ -265,8 +297,13 @@ impl Base for Mobile {
         Some(self.hip_height_mm)
     }
 
-    fn fit(&self, room: &Room) -> Fit {
-        Mobile::fit(self, room)
+    fn fit(&self, room: &Room, meter: &Meter) -> Fit {
+        Mobile::fit(self, room, meter)
+    }
+
+    fn floor_work(&self, room: &Room) -> u64 {
+        let cell = self.floor(room, Meter::unmetered());
+        cell.get().map_or(0, |floor| floor.work)
     }
 
     fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a> {
@@ -301,13 +338,15 @@ impl Base for Mobile {
 
     fn enclosing(&self, room: &Room, heading_rad: f64, hip_mm: (f64, f64)) -> Vec<usize> {
         // The routes the placement followed, kept by the process.
-        Routes::of(room, &self.footprint, &self.placing.headings).map_or(Vec::new(), |routes| {
-            routes.enclosing(room, &self.footprint, heading_rad, hip_mm)
-        })
+        let routes = Routes::of(room, &self.footprint, &self.placing.headings, &|_| true);
+        match routes {
+            Ok(Some(routes)) => routes.enclosing(room, &self.footprint, heading_rad, hip_mm),
+            _ => Vec::new(),
+        }
     }
 
     fn reached_floor(&self, room: &Room, heading_rad: f64) -> Option<MultiPolygon<f64>> {
-        let cell = self.floor(room);
+        let cell = self.floor(room, Meter::unmetered());
         let floor = cell.get()?;
         floor.doors.as_ref()?;
         let (_, region) = floor.regions.iter().min_by(|a, b| {

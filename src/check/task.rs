@@ -7,7 +7,7 @@ use std::sync::Arc;
 use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::names::suggest;
-use crate::plugin::{Base, Fit, PluginKind, SubjectKind, Task};
+use crate::plugin::{Base, PluginKind, SubjectKind, Task};
 use crate::scenario::{SubjectRef, TaskSpec};
 use crate::scene::{Person, Population, Room, FACES};
 use crate::span::{Span, Spanned};
@@ -207,7 +207,7 @@ impl Checker<'_> {
                     continue;
                 }
                 checked.push(*room);
-                if bases[person].fit(&rooms[*room]) == Fit::Outside {
+                if bases[person].outside(&rooms[*room]) {
                     self.error(Error::new(
                         ErrorKind::BaseOutsideRoom {
                             person: persons[person].name.clone(),

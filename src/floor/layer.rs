@@ -12,6 +12,8 @@ use geo::{Area, BooleanOps, BoundingRect, Contains, Coord, Distance, Euclidean};
 use geo::{InteriorPoint, MultiPolygon, Point, Polygon, Rect};
 
 use super::obstacles::FloorObstacles;
+use rayon::prelude::*;
+
 use super::region::{admissible_joined, Grown, Turned};
 
 /// The side of a tile, for floors up to `MAX_TILES` of them.
@@ -97,6 +99,8 @@ pub struct Layer {
     tiles: Vec<Vec<Polygon<f64>>>,
     /// The number of tile `t`'s first piece.
     starts: Vec<usize>,
+    /// What working it out cost, in units of the meter.
+    pub work: u64,
 }
 
 impl Layer {
@@ -112,12 +116,21 @@ impl Layer {
         first: usize,
     ) -> Self {
         let grown = Grown::default();
-        let tiles: Vec<Vec<Polygon<f64>>> = (0..grid.len())
+        // The tiles in parallel (each on its own; in the grid's order).
+        let worked: Vec<(Vec<Polygon<f64>>, u64)> = (0..grid.len())
+            .into_par_iter()
             .map(|t| match within.and_then(|w| grid.rect(t, w)) {
-                Some(rect) => admissible_joined(rect, turned, obstacles, &grown).0,
-                None => Vec::new(),
+                Some(rect) => {
+                    let (piece, work) = admissible_joined(rect, turned, obstacles, &grown);
+                    (piece.0, work)
+                }
+                None => (Vec::new(), 0),
             })
             .collect();
+        let work = worked
+            .iter()
+            .fold(0u64, |sum, (_, w)| sum.saturating_add(*w));
+        let tiles: Vec<Vec<Polygon<f64>>> = worked.into_iter().map(|(p, _)| p).collect();
         let mut starts = Vec::with_capacity(tiles.len());
         let mut next = first;
         for pieces in &tiles {
@@ -129,6 +142,7 @@ impl Layer {
             within,
             tiles,
             starts,
+            work,
         }
     }
 

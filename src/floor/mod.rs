@@ -25,5 +25,5 @@ pub use mesh_cells::{CELL_MM, FLOOR_TOLERANCE_MM};
 pub use misfit::Misfit;
 pub use obstacles::FloorObstacles;
 pub use region::{admissible, Zone};
-pub use routes::{Doorway, Entry, Routes, Shut};
+pub use routes::{CutShort, Doorway, Entry, Routes, Shut};
 pub use tiles::Region;

@@ -67,6 +67,34 @@ pub struct Routes {
     sets: Vec<usize>,
     /// How the base comes in, door by door.
     pub doors: Vec<Doorway>,
+    /// What working them out cost, in units of the meter
+    /// ([`crate::meter`]): every run that uses them is charged it.
+    pub work: u64,
+}
+
+/// Routes cut short: their work so far (`work`) passed what they were
+/// allowed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CutShort {
+    pub work: u64,
+}
+
+/// The work of routes being worked out, and what they are allowed.
+struct Work<'a> {
+    done: u64,
+    within: &'a dyn Fn(u64) -> bool,
+}
+
+impl Work<'_> {
+    /// Add `units`; cut short if the work done is more than allowed.
+    fn add(&mut self, units: u64) -> Result<(), CutShort> {
+        self.done = self.done.saturating_add(units);
+        if (self.within)(self.done) {
+            Ok(())
+        } else {
+            Err(CutShort { work: self.done })
+        }
+    }
 }
 
 /// Whether a base comes in through a door.
@@ -108,23 +136,42 @@ impl Routes {
     /// Where a base of `footprint` can get to in `room` from its doors,
     /// followed at the base's `headings` too; none if the room has no
     /// door (then it may be placed wherever it fits). Kept by the process:
-    /// the same room, footprint and headings give the same routes.
-    pub fn of(room: &Room, footprint: &Footprint, headings: &[f64]) -> Option<Arc<Routes>> {
+    /// the same room, footprint and headings give the same routes. Cut
+    /// short once their work would pass what `within` allows (what a run
+    /// has left of its work; not kept then).
+    pub fn of(
+        room: &Room,
+        footprint: &Footprint,
+        headings: &[f64],
+        within: &dyn Fn(u64) -> bool,
+    ) -> Result<Option<Arc<Routes>>, CutShort> {
         if room.doors.is_empty() {
-            return None;
+            return Ok(None);
         }
         let mut h = DefaultHasher::new();
         footprint.hash_with_floor(room, &mut h);
         hash_bits(headings, &mut h);
-        KEPT.get_or(h.finish(), || {
-            Routes::new(room, footprint, headings).map(Arc::new)
+        KEPT.get_or_try(h.finish(), || {
+            Routes::within(room, footprint, headings, within).map(|r| r.map(Arc::new))
         })
     }
 
-    /// Like `of`, worked out afresh.
+    /// Like `of`, worked out afresh, whatever it costs.
     pub fn new(room: &Room, footprint: &Footprint, headings: &[f64]) -> Option<Routes> {
+        Routes::within(room, footprint, headings, &|_| true)
+            .unwrap_or_else(|_| unreachable!("nothing cuts short routes allowed any work"))
+    }
+
+    /// Like `new`, cut short once their work would pass what `within`
+    /// allows.
+    fn within(
+        room: &Room,
+        footprint: &Footprint,
+        headings: &[f64],
+        within: &dyn Fn(u64) -> bool,
+    ) -> Result<Option<Routes>, CutShort> {
         if room.doors.is_empty() {
-            return None;
+            return Ok(None);
         }
         let given = footprint;
         // A way exactly as wide as the base is no way: followed with the
@@ -135,10 +182,13 @@ impl Routes {
         let space = Space::new(room, footprint);
         let grid = Grid::over(space.floor);
         let followed = followed_headings(footprint, headings, room);
+        let mut work = Work { done: 0, within };
         let mut layers: Vec<Layer> = Vec::with_capacity(followed.len());
         for &h in &followed {
             let first = layers.last().map_or(0, Layer::end);
-            layers.push(space.layer(&grid, footprint, h, first));
+            let layer = space.layer(&grid, footprint, h, first);
+            work.add(layer.work)?;
+            layers.push(layer);
         }
         let mut joined = Joined::new(layers.last().map_or(0, Layer::end));
         for layer in &layers {
@@ -147,7 +197,7 @@ impl Routes {
             }
         }
         if footprint.turns() {
-            join_turns(&space, &grid, footprint, &layers, &mut joined);
+            join_turns(&space, &grid, footprint, &layers, &mut joined, &mut work)?;
         }
         let ends: Vec<Vec<usize>> = (0..room.doors.len())
             .map(|d| door_ends(&layers, space.outside[d]))
@@ -162,11 +212,12 @@ impl Routes {
             reached,
             sets,
             doors: Vec::new(),
+            work: work.done,
         };
         routes.doors = (room.doors.iter().zip(&ends))
             .map(|(door, ends)| routes.doorway(room, door, given, ends))
             .collect();
-        Some(routes)
+        Ok(Some(routes))
     }
 
     /// Whether the base comes in through any door.
@@ -460,7 +511,8 @@ fn join_turns(
     footprint: &Footprint,
     layers: &[Layer],
     joined: &mut Joined,
-) {
+    work: &mut Work<'_>,
+) -> Result<(), CutShort> {
     let n = layers.len();
     for h in 0..n {
         let next = (h + 1) % n;
@@ -471,6 +523,7 @@ fn join_turns(
             (to - from).rem_euclid(TAU)
         };
         let turning = space.layer(grid, &footprint.swept(angle), from, 0);
+        work.add(turning.work)?;
         for (_, poly) in turning.pieces() {
             let Some(p) = poly.interior_point() else {
                 continue;
@@ -482,6 +535,7 @@ fn join_turns(
             }
         }
     }
+    Ok(())
 }
 
 /// A mesh's outline on the floor, for naming it: the convex hull of its

@@ -176,10 +176,24 @@ pub trait Base: Send + Sync {
     fn hip_height_mm(&self) -> Option<f64> {
         None
     }
-    /// Whether the base can be anywhere in the room at all: the checker
-    /// refuses a base the scenario puts outside the room; a task whose
-    /// base fits nowhere is answered "does not fit".
-    fn fit(&self, room: &Room) -> Fit;
+    /// Whether the base can be anywhere in the room at all: a task whose
+    /// base fits nowhere is answered "does not fit". Where working that
+    /// out would take the run past its work (`meter`), it is cut short
+    /// and the run stopped.
+    fn fit(&self, room: &Room, meter: &Meter) -> Fit;
+    /// What working out where the base may stand in `room` cost, in units
+    /// of the meter ([`crate::meter`]), once [`Base::fit`] has: a mobile
+    /// base's routes from the doors. The run charges it to the first task
+    /// of the scenario that places the person in the room.
+    fn floor_work(&self, _room: &Room) -> u64 {
+        0
+    }
+    /// Whether the scenario puts the base outside the room, which the
+    /// checker refuses: asked before the run, so cheaply (no floor is
+    /// worked out).
+    fn outside(&self, _room: &Room) -> bool {
+        false
+    }
     /// Get ready for reaches in `room` with `chain` (caching what does not
     /// depend on the target, such as where the base fits).
     fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a>;

@@ -4,7 +4,7 @@
 //! and the answers come back in the order the tasks were given, whatever
 //! the number of threads.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap, HashSet};
 use std::sync::Arc;
 
 use rayon::prelude::*;
@@ -36,6 +36,19 @@ enum Job {
     /// capability map, the floor) is built by the thread that uses it, not
     /// waited for by another.
     Member { population: usize, person: usize },
+}
+
+/// Which tasks are charged their person's floor ([`Scenario::floor_charges`]).
+struct FloorCharges {
+    first: HashMap<usize, bool>,
+}
+
+impl FloorCharges {
+    /// Whether `task` is charged its person's floor.
+    fn of(&self, task: &TaskSpec) -> bool {
+        let address = std::ptr::from_ref(task) as usize;
+        self.first.get(&address).copied().unwrap_or(true)
+    }
 }
 
 impl Scenario {
@@ -115,6 +128,7 @@ impl Scenario {
                 let _ = mesh.shape();
             }
         }
+        let floor_charges = self.floor_charges();
         // Each job's answers (a task's alone, or a member's in the order
         // of their population's tasks) and the work of each; none once the
         // run is past its bound (no job starts then).
@@ -124,14 +138,18 @@ impl Scenario {
             .map(|job| {
                 (!run.exceeded()).then(|| match *job {
                     Job::Alone(k) => {
+                        let charges = floor_charges.of(tasks[k]);
                         let (report, touched, work) =
-                            self.run_one(tasks[k], progress, false, record, run);
+                            self.run_one(tasks[k], progress, false, record, run, charges);
                         (vec![(report, work)], touched)
                     }
                     Job::Member { population, person } => {
                         let each = by_population[&population]
                             .iter()
-                            .map(|&k| self.run_member(tasks[k], person, progress, run))
+                            .map(|&k| {
+                                let charges = floor_charges.of(tasks[k]);
+                                self.run_member(tasks[k], person, progress, run, charges)
+                            })
                             .collect();
                         (each, None)
                     }
@@ -263,17 +281,36 @@ impl Scenario {
         person: usize,
         progress: &dyn Progress,
         run: &Arc<RunWork>,
+        charges: bool,
     ) -> (TaskReport, u64) {
         let spec = TaskSpec {
             person,
             population: None,
             ..task.clone()
         };
-        let (answer, _, work) = self.run_one(&spec, progress, true, false, run);
+        let (answer, _, work) = self.run_one(&spec, progress, true, false, run, charges);
         if self.one_point(task) {
             progress.advance(1);
         }
         (answer, work)
+    }
+
+    /// For each task of the scenario (by its address), whether it is
+    /// charged the work of its person's floor in its room
+    /// ([`Base::floor_work`]): the first task of the scenario in that room
+    /// by the same person (or population), whichever runs first and
+    /// whichever answers a watch reuses, so that every task's work is the
+    /// same on every run. A task not of the scenario is charged it.
+    fn floor_charges(&self) -> FloorCharges {
+        let mut seen = HashSet::new();
+        let first = (self.tasks.iter())
+            .map(|t| {
+                let person = t.population.is_none().then_some(t.person);
+                let first = seen.insert((t.room, t.population, person));
+                (std::ptr::from_ref(t) as usize, first)
+            })
+            .collect();
+        FloorCharges { first }
     }
 
     /// Run `task` for its one person (`verdict_only`: as a member of a
@@ -287,6 +324,7 @@ impl Scenario {
         verdict_only: bool,
         record: bool,
         run: &Arc<RunWork>,
+        charges_floor: bool,
     ) -> (TaskReport, Option<TouchedSet>, u64) {
         let room = &self.rooms[task.room];
         let touched = (record && task.task.records_touches())
@@ -308,7 +346,11 @@ impl Scenario {
         };
         let (subject, person) = (input.subject.name(), &input.person.name);
         let (base, room) = (&input.person.base.name, &input.room.name);
-        let report = match input.base.fit(input.room) {
+        let fit = input.base.fit(input.room, &meter);
+        if charges_floor {
+            meter.charge(input.base.floor_work(input.room));
+        }
+        let report = match fit {
             Fit::Nowhere(misfit) => {
                 NotPlacedReport::new(label, subject, person, base, room, &misfit)
             }
