@@ -119,6 +119,9 @@ struct Solved {
     /// Where it was not: whether the closest posture came within the
     /// tolerance through an obstacle or a side of the room.
     through_room: bool,
+    /// Where it was not: whether it came within the tolerance through
+    /// the person's own body or base.
+    through_body: bool,
 }
 
 /// What every point of one map is solved with.
@@ -297,11 +300,12 @@ impl<'a> GridRun<'a> {
     fn solved(&self, cell: &GridCell, placement: Placement, point_mm: Point3<f64>) -> Solved {
         let counts = (self.judge)(&placement, cell.point_mm);
         let mut cell = MapCell::new(cell, &placement, self.asked.chain, counts);
-        let mut through_room = false;
+        let (mut through_room, mut through_body) = (false, false);
         if !counts && self.asked.of == "reach" {
             let blocker = self.through(&placement);
             cell.set_through(blocker.map(|b| self.input.names(self.asked.chain).blocker(b)));
             through_room = matches!(blocker, Some(Blocker::Obstacle(_) | Blocker::Wall(_)));
+            through_body = matches!(blocker, Some(Blocker::Own(_) | Blocker::Body(_)));
         }
         let (reached, closest) = if counts {
             let reached = Reached {
@@ -318,6 +322,7 @@ impl<'a> GridRun<'a> {
             blocked: Vec::new(),
             closest,
             through_room,
+            through_body,
         }
     }
 
@@ -381,14 +386,16 @@ impl<'a> GridRun<'a> {
         steer: Steer,
     ) -> Option<Placement> {
         let chain = self.asked.chain;
-        let solver = self.asked.reaching.solver.as_ref();
-        let next = query.solve_from_at(chain, last.pose, solver, last.solution.q.clone());
-        if counts(&next) {
-            return Some(next);
+        if steer != Steer::Only {
+            let solver = self.asked.reaching.solver.as_ref();
+            let next = query.solve_from_at(chain, last.pose, solver, last.solution.q.clone());
+            if counts(&next) {
+                return Some(next);
+            }
         }
         let retry = query
             .retry
-            .filter(|_| last.retried || steer == Steer::Always)?;
+            .filter(|_| last.retried || steer != Steer::AsTheNeighbour)?;
         let start = last.solution.q.clone();
         let mut steered = query.solve_from_at(chain, last.pose, retry.solver, start);
         steered.retried = true;
@@ -459,26 +466,39 @@ impl<'a> GridRun<'a> {
     }
 
     /// Each point in a gap or at a board's edge searched harder
-    /// ([`GridRun::hole_searched`]), in parallel, and the reached region
-    /// grown from what that gains; again while the region's growth opens
-    /// new ones, each point searched harder once at most.
+    /// ([`GridRun::hole_searched`]), and each at the edge through the
+    /// person's own body tried from its reached neighbours, steering, in
+    /// parallel, and the reached region grown from what that gains; again
+    /// while the region's growth opens new ones, each point searched
+    /// harder once at most, and tried so once at most.
     fn fill_gaps(&self, grid: &Grid, solved: &mut [Solved]) {
         let mut searched = vec![false; solved.len()];
+        let mut steered = vec![false; solved.len()];
         loop {
             let in_gap = gaps(grid, solved);
-            let holes: Vec<usize> = (0..solved.len())
-                .filter(|&i| !searched[i] && (in_gap[i] || at_board_edge(grid, solved, i)))
+            let holes: Vec<(usize, bool)> = (0..solved.len())
+                .filter_map(|i| {
+                    let harder = !searched[i] && (in_gap[i] || at_board_edge(grid, solved, i));
+                    let steer = !steered[i] && at_body_edge(grid, solved, i);
+                    (harder || steer).then_some((i, harder))
+                })
                 .collect();
             if holes.is_empty() || self.input.meter.exceeded() {
                 return;
             }
-            for &i in &holes {
-                searched[i] = true;
+            for &(i, harder) in &holes {
+                searched[i] |= harder;
+                steered[i] = true;
             }
-
             let filled: Vec<(usize, Solved)> = holes
                 .par_iter()
-                .filter_map(|&i| self.hole_searched(grid, solved, i).map(|s| (i, s)))
+                .filter_map(|&(i, harder)| {
+                    let found = match harder {
+                        true => self.hole_searched(grid, solved, i),
+                        false => self.tried_from_neighbours(grid, solved, i, Steer::Only),
+                    };
+                    found.map(|s| (i, s))
+                })
                 .collect();
             let gained = filled.iter().map(|(i, _)| *i).collect();
             for (i, s) in filled {
@@ -493,11 +513,7 @@ impl<'a> GridRun<'a> {
     /// [`HARDER`] times as many blocked placements.
     fn hole_searched(&self, grid: &Grid, solved: &[Solved], i: usize) -> Option<Solved> {
         let cell = &grid.cells[i];
-        let from_neighbour = neighbours(grid, i)
-            .into_iter()
-            .flatten()
-            .filter_map(|n| solved[n].reached.as_ref())
-            .find_map(|n| self.hole_from(cell, n, Steer::Always));
+        let from_neighbour = self.tried_from_neighbours(grid, solved, i, Steer::Always);
         if from_neighbour.is_some() {
             return from_neighbour;
         }
@@ -523,6 +539,22 @@ impl<'a> GridRun<'a> {
             );
             point.reached.is_some().then_some(point)
         })
+    }
+
+    /// Point `i` tried from each reached neighbour, as `steer` says.
+    fn tried_from_neighbours(
+        &self,
+        grid: &Grid,
+        solved: &[Solved],
+        i: usize,
+        steer: Steer,
+    ) -> Option<Solved> {
+        let cell = &grid.cells[i];
+        neighbours(grid, i)
+            .into_iter()
+            .flatten()
+            .filter_map(|n| solved[n].reached.as_ref())
+            .find_map(|n| self.hole_from(cell, n, steer))
     }
 
     /// Each point of `wave` not reached whose search was blocked, retried
@@ -553,7 +585,8 @@ impl<'a> GridRun<'a> {
 
     /// `cell`'s point tried from `neighbour`: where its base stood (a
     /// plain descent, then the retry's steering one), then moved as the
-    /// point moved; the answer if one reaches.
+    /// point moved (with [`Steer::Only`], the steering descent alone);
+    /// the answer if one reaches.
     fn hole_from(&self, cell: &GridCell, neighbour: &Reached, steer: Steer) -> Option<Solved> {
         let query = self.query(cell, Some(neighbour));
         let counts = |p: &Placement| (self.judge)(p, cell.point_mm);
@@ -562,7 +595,7 @@ impl<'a> GridRun<'a> {
             .filter(|p| self.prepared.admits(&p.pose, &query.target_room_mm))
             .and_then(|p| self.on_from(&query, p, &counts, steer))
             .or_else(|| {
-                let (pose, q) = query.last_resort?;
+                let (pose, q) = query.last_resort.filter(|_| steer != Steer::Only)?;
                 let solver = self.asked.reaching.solver.as_ref();
                 let moved = query.solve_from_at(self.asked.chain, pose, solver, q.to_vec());
                 counts(&moved).then_some(moved)
@@ -622,6 +655,21 @@ fn at_board_edge(grid: &Grid, solved: &[Solved], i: usize) -> bool {
         && neighbours(grid, i).into_iter().any(reached)
 }
 
+/// Whether point `i` is not reached, has a reached neighbour, and came
+/// within the tolerance through the person's own body or base (a thigh,
+/// the backrest): at the edge of the reached region, where the body most
+/// often ends the reach, but a descent from the neighbour's posture that
+/// steers round the body may not (one steering descent a neighbour, not a
+/// search four times harder: that costs 4 s for 4 points on the
+/// 100,000-point map of `bench_scale`; these descents 0.04 s for its 512
+/// such points, 77 points more on 160 random maps).
+fn at_body_edge(grid: &Grid, solved: &[Solved], i: usize) -> bool {
+    let reached = |n: Option<usize>| n.is_some_and(|n| solved[n].reached.is_some());
+    solved[i].reached.is_none()
+        && solved[i].through_body
+        && neighbours(grid, i).into_iter().any(reached)
+}
+
 /// Marks in `in_gap` the points of `line` (indices, in order) that lie
 /// between two reached ones with none reached between, at most `longest`
 /// of them.
@@ -649,6 +697,9 @@ enum Steer {
     AsTheNeighbour,
     /// Always (a point at the edge of the reached region).
     Always,
+    /// Only the steering descent, the plain ones made already (a point at
+    /// the edge of the reached region through the person's own body).
+    Only,
 }
 
 /// The indices of point `i`'s neighbours in `grid`: left and right in its
