@@ -116,12 +116,9 @@ struct Solved {
     /// Where it was not and the map asks why: the closest placement found
     /// (boxed: a map of 100,000 points keeps one `Solved` a point).
     closest: Option<Box<Placement>>,
-    /// Where it was not: whether the closest posture came within the
-    /// tolerance through an obstacle or a side of the room.
-    through_room: bool,
-    /// Where it was not: whether it came within the tolerance through
-    /// the person's own body or base.
-    through_body: bool,
+    /// Where it was not: what the closest posture went through, where it
+    /// came within the tolerance.
+    through: Option<Blocker>,
 }
 
 /// What every point of one map is solved with.
@@ -300,12 +297,10 @@ impl<'a> GridRun<'a> {
     fn solved(&self, cell: &GridCell, placement: Placement, point_mm: Point3<f64>) -> Solved {
         let counts = (self.judge)(&placement, cell.point_mm);
         let mut cell = MapCell::new(cell, &placement, self.asked.chain, counts);
-        let (mut through_room, mut through_body) = (false, false);
+        let mut through = None;
         if !counts && self.asked.of == "reach" {
-            let blocker = self.through(&placement);
-            cell.set_through(blocker.map(|b| self.input.names(self.asked.chain).blocker(b)));
-            through_room = matches!(blocker, Some(Blocker::Obstacle(_) | Blocker::Wall(_)));
-            through_body = matches!(blocker, Some(Blocker::Own(_) | Blocker::Body(_)));
+            through = self.through(&placement);
+            cell.set_through(through.map(|b| self.input.names(self.asked.chain).blocker(b)));
         }
         let (reached, closest) = if counts {
             let reached = Reached {
@@ -321,8 +316,7 @@ impl<'a> GridRun<'a> {
             reached,
             blocked: Vec::new(),
             closest,
-            through_room,
-            through_body,
+            through,
         }
     }
 
@@ -649,10 +643,10 @@ fn longest_gap(spacing_mm: f64) -> usize {
 /// on the 100,000-point map of `bench_scale` searching those harder too
 /// costs 4 s for 4 points more.)
 fn at_board_edge(grid: &Grid, solved: &[Solved], i: usize) -> bool {
-    let reached = |n: Option<usize>| n.is_some_and(|n| solved[n].reached.is_some());
-    solved[i].reached.is_none()
-        && solved[i].through_room
-        && neighbours(grid, i).into_iter().any(reached)
+    matches!(
+        solved[i].through,
+        Some(Blocker::Obstacle(_) | Blocker::Wall(_))
+    ) && at_edge(grid, solved, i)
 }
 
 /// Whether point `i` is not reached, has a reached neighbour, and came
@@ -664,10 +658,15 @@ fn at_board_edge(grid: &Grid, solved: &[Solved], i: usize) -> bool {
 /// 100,000-point map of `bench_scale`; these descents 0.04 s for its 512
 /// such points, 77 points more on 160 random maps).
 fn at_body_edge(grid: &Grid, solved: &[Solved], i: usize) -> bool {
+    matches!(solved[i].through, Some(Blocker::Own(_) | Blocker::Body(_)))
+        && at_edge(grid, solved, i)
+}
+
+/// Whether point `i` is not reached and has a reached neighbour, in its
+/// row or its column.
+fn at_edge(grid: &Grid, solved: &[Solved], i: usize) -> bool {
     let reached = |n: Option<usize>| n.is_some_and(|n| solved[n].reached.is_some());
-    solved[i].reached.is_none()
-        && solved[i].through_body
-        && neighbours(grid, i).into_iter().any(reached)
+    solved[i].reached.is_none() && neighbours(grid, i).into_iter().any(reached)
 }
 
 /// Marks in `in_gap` the points of `line` (indices, in order) that lie
