@@ -7,6 +7,7 @@
 //! value worked out afresh (the tests of each user say how they know).
 
 use std::collections::HashMap;
+use std::convert::Infallible;
 use std::sync::{Mutex, OnceLock};
 
 /// Values of one kind, at most `most` at a time: when full, it starts
@@ -28,25 +29,17 @@ impl<V: Clone> Kept<V> {
     /// The value kept for `key`, or `compute`'s, then kept. Two threads
     /// asking at once may both compute it; both get the same value.
     pub fn get_or(&self, key: u64, compute: impl FnOnce() -> V) -> V {
-        let values = self.values.get_or_init(Mutex::default);
-        // A thread that panicked while holding the lock left whole entries.
-        let lock = || values.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some(value) = lock().get(&key) {
-            return value.clone();
+        match self.get_or_try(key, || Ok::<V, Infallible>(compute())) {
+            Ok(value) => value,
+            Err(never) => match never {},
         }
-        let value = compute();
-        let mut kept = lock();
-        if kept.len() >= self.most {
-            kept.clear();
-        }
-        kept.insert(key, value.clone());
-        value
     }
 
     /// The value kept for `key`, or `compute`'s, kept only where it is
     /// one (a computation cut short is not kept).
     pub fn get_or_try<E>(&self, key: u64, compute: impl FnOnce() -> Result<V, E>) -> Result<V, E> {
         let values = self.values.get_or_init(Mutex::default);
+        // A thread that panicked while holding the lock left whole entries.
         let lock = || values.lock().unwrap_or_else(|e| e.into_inner());
         if let Some(value) = lock().get(&key) {
             return Ok(value.clone());

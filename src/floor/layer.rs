@@ -10,10 +10,9 @@
 
 use geo::{Area, BooleanOps, BoundingRect, Contains, Coord, Distance, Euclidean};
 use geo::{InteriorPoint, MultiPolygon, Point, Polygon, Rect};
-
-use super::obstacles::FloorObstacles;
 use rayon::prelude::*;
 
+use super::obstacles::FloorObstacles;
 use super::region::{admissible_joined, Grown, Turned};
 
 /// The side of a tile, for floors up to `MAX_TILES` of them.
