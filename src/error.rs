@@ -331,7 +331,7 @@ impl ErrorKind {
                 "ask less (a coarser `step`, fewer `starts`, `headings` or `blocked_retries`), or raise --max-solver-starts".into(),
             ),
             TooMuchWork { .. } => Some(
-                "ask less (a coarser `step`; fewer `starts`, `blocked_retries` or iterations: `max_iterations`, `sweeps`, `samples`, `kicks`; in a room with doors, whose routes count too, fewer people or `headings`), or raise --max-solver-work; no answer of this run is shown, since some were cut short".into(),
+                "ask less (a coarser `step`; fewer `starts`, `blocked_retries` or iterations: `max_iterations`, `sweeps`, `samples`, `kicks`; in a room with doors, whose routes count too, or one so crowded that the base fits only far from where it is asked to, whose floor counts too: fewer people or `headings`), or raise --max-solver-work; no answer of this run is shown, since some were cut short".into(),
             ),
             BaseOutsideRoom { .. } => Some("a fixed base must stand inside the room: check its `at`".into()),
             Misplaced { .. } => Some("move it to the file you run, which can `use` this one".into()),

@@ -918,6 +918,25 @@ fn through_a_door(unique: &str) -> String {
     )
 }
 
+/// A hall so full of posts that the chair fits only along one wall, far
+/// from the cup: the search for that floor, and the floor of each room
+/// without one post that finding why tries, count towards the bound.
+fn crowded_hall() -> String {
+    let mut text =
+        String::from("units mm deg\nuse std::arm\nroom hall {\n  size 6000 x 6000 x 2500\n");
+    for i in 1..=15 {
+        for j in 0..19 {
+            let (x, y) = (300 * i, 300 * j);
+            text.push_str(&format!(
+                "  box p{i}_{j} at ({x}, {y}, 0) size (50, 50, 900)\n"
+            ));
+        }
+    }
+    text.push_str("  target cup at (1520, 1520, 950)\n}\n");
+    text.push_str("person ann { mannequin right_arm base wheelchair }\nreach cup by ann\n");
+    text
+}
+
 /// The run of `text` within `limit` units of solver work, on `threads`
 /// threads: the work, or the error.
 fn metered_run(text: &str, limit: u64, threads: usize) -> Result<u64, reach::Error> {
@@ -946,7 +965,7 @@ fn metered_run(text: &str, limit: u64, threads: usize) -> Result<u64, reach::Err
 /// on each: at its own work it runs, one unit less it stops.
 #[test]
 fn a_run_stays_within_the_bound_or_passes_it_whatever_the_threads() {
-    for text in [metered(), through_a_door("bound")] {
+    for text in [metered(), through_a_door("bound"), crowded_hall()] {
         let work = metered_run(&text, u64::MAX / 2, 1).expect("within the bound");
         assert!(work > 100_000, "{work}");
         for threads in [1, 3] {

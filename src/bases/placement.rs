@@ -19,18 +19,23 @@ use std::collections::hash_map::DefaultHasher;
 use std::collections::HashMap;
 use std::hash::Hasher;
 use std::rc::Rc;
+use std::sync::atomic::AtomicU64;
+use std::sync::atomic::Ordering::Relaxed;
 use std::sync::{Arc, Mutex, OnceLock};
 
 use geo::{MultiPolygon, Point};
 use nalgebra::{Point3, Rotation2, Vector2};
 use rand_chacha::rand_core::SeedableRng;
 use rand_chacha::ChaCha8Rng;
+use rayon::prelude::*;
 
 use super::capability::Capability;
 use super::face::face_normal;
 use super::placing::{Approach, Placing, SIDE_SLACK_MM};
 use super::search::{search, search_retrying_later, Candidate};
-use crate::floor::{CutShort, Doorway, FloorObstacles, Footprint, Misfit, Region, Routes, Shut};
+use crate::floor::{
+    CutShort, Doorway, FloorObstacles, Footprint, Misfit, Region, Routes, Shut, Work,
+};
 use crate::geometry::Solid;
 use crate::kept::Kept;
 use crate::kinematics::Chain;
@@ -44,6 +49,42 @@ use crate::solvers::random_posture;
 /// The admissible region at each heading searched (one region for every
 /// heading when turning changes nothing).
 type Regions = Vec<(f64, Arc<Region>)>;
+
+/// Whether the base fits at one of `regions`' headings, each region (a
+/// base that does not turn has one for all) found out in full, in
+/// parallel, so that the work, added to `work`, is the same whatever comes
+/// first. Cut short where that work would pass what `work` allows: a
+/// region counts what the others have finished, and the sum at the end
+/// decides.
+fn any_fits(regions: &Regions, work: &mut Work<'_>) -> Result<bool, CutShort> {
+    let mut distinct: Vec<&Region> = Vec::new();
+    for (_, region) in regions {
+        if !distinct.iter().any(|d| std::ptr::eq(*d, region.as_ref())) {
+            distinct.push(region);
+        }
+    }
+    let done = AtomicU64::new(0);
+    let outer: &Work<'_> = work;
+    let found: Vec<Result<bool, CutShort>> = distinct
+        .par_iter()
+        .map(|region| {
+            let allowed = |units: u64| outer.allows(done.load(Relaxed).saturating_add(units));
+            let mut own = Work::new(&allowed);
+            let found = region.emptiness(&mut own);
+            let units = found.as_ref().map_or_else(|cut| cut.work, |_| own.done);
+            done.fetch_add(units, Relaxed);
+            found
+        })
+        .collect();
+    let total = done.into_inner();
+    if found.iter().any(Result::is_err) {
+        return Err(CutShort {
+            work: work.done.saturating_add(total),
+        });
+    }
+    work.add(total)?;
+    Ok(found.contains(&Ok(false)))
+}
 
 /// Where the base may be placed in one room, worked out once.
 #[derive(Clone)]
@@ -70,8 +111,8 @@ pub struct Mobile {
     pub own: OwnBody,
     /// Where it may be placed in each room, worked out once.
     floors: ByRoom<Floor>,
-    /// Where it fits nowhere, by how much.
-    misfits: ByRoom<Misfit>,
+    /// Where it fits nowhere, by how much, and what finding out cost.
+    misfits: ByRoom<(Misfit, u64)>,
 }
 
 /// Something worked out once per room (by its name) and shared by every
@@ -155,6 +196,7 @@ impl Mobile {
                 .unwrap_or_else(|cut| {
                     // Past the run's limit: the run stops.
                     meter.charge(cut.work);
+                    debug_assert!(meter.exceeded(), "a floor cut short stops the run");
                     Floor {
                         regions: Vec::new(),
                         doors: None,
@@ -200,21 +242,27 @@ impl Mobile {
             let one = region(0.0);
             headings.iter().map(|&h| (h, Arc::clone(&one))).collect()
         };
-        let fits = regions.iter().any(|(_, r)| !r.is_empty());
         let within = |units: u64| meter.would_stay_within(units);
-        let routes = match fits {
-            true => Routes::of(room, &self.footprint, headings, &within)?,
-            false => None,
-        };
+        let mut work = Work::new(&within);
+        let fits = any_fits(&regions, &mut work)?;
+        let routes =
+            match fits {
+                true => Routes::of(room, &self.footprint, headings, &|u| work.allows(u)).map_err(
+                    |cut| CutShort {
+                        work: work.done.saturating_add(cut.work),
+                    },
+                )?,
+                false => None,
+            };
         let Some(routes) = routes else {
             return Ok(Floor {
                 regions,
                 doors: None,
                 fits,
-                work: 0,
+                work: work.done,
             });
         };
-        let work = routes.work;
+        work.add(routes.work)?;
         let reached = |h: f64| {
             let obstacles = Arc::clone(&obstacles);
             let routes = Arc::clone(&routes);
@@ -227,11 +275,13 @@ impl Mobile {
                 routes,
             ))
         };
+        let regions: Regions = headings.iter().map(|&h| (h, reached(h))).collect();
+        any_fits(&regions, &mut work)?;
         Ok(Floor {
-            regions: headings.iter().map(|&h| (h, reached(h))).collect(),
+            regions,
             doors: Some(routes.doors.clone()),
             fits,
-            work,
+            work: work.done,
         })
     }
 
@@ -259,14 +309,25 @@ impl Mobile {
                 footprint_mm: self.footprint.size_mm(),
             });
         }
-        let misfit = *self.misfits.cell(room).get_or_init(|| {
-            Misfit::of(
-                room,
-                &self.footprint,
-                &self.placing.headings,
-                self.placing.zone.as_ref(),
-            )
-        });
+        let cell = self.misfits.cell(room);
+        if cell.get().is_none() {
+            let within = |units: u64| meter.would_stay_within(units);
+            let mut work = Work::new(&within);
+            let (headings, zone) = (&self.placing.headings, self.placing.zone.as_ref());
+            match Misfit::counted(room, &self.footprint, headings, zone, &mut work) {
+                Ok(misfit) => {
+                    let _ = cell.set((misfit, work.done));
+                }
+                Err(cut) => {
+                    // Past the run's limit: the run stops.
+                    meter.charge(cut.work);
+                    return Fit::Fits;
+                }
+            }
+        }
+        let Some(&(misfit, _)) = cell.get() else {
+            return Fit::Fits;
+        };
         Fit::Nowhere(misfit)
     }
 
@@ -309,7 +370,16 @@ impl Base for Mobile {
 
     fn floor_work(&self, room: &Room) -> u64 {
         let cell = self.floor(room, Meter::unmetered());
-        cell.get().map_or(0, |floor| floor.work)
+        let floor = cell.get().map_or(0, |floor| floor.work);
+        let misfit = self.misfits.cell(room).get().map_or(0, |&(_, work)| work);
+        floor.saturating_add(misfit)
+    }
+
+    fn floor_work_beside(&self, room: &Room, beside: &Room) -> u64 {
+        if self.floor_key(room) == self.floor_key(beside) {
+            return 0;
+        }
+        self.floor_work(room)
     }
 
     fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a> {
@@ -411,7 +481,7 @@ impl PreparedMobile<'_> {
         let near_too = Rc::clone(&near);
         let nearest = move || {
             near_too
-                .get_or_init(|| self.nearest(&query.target_room_mm, self.hint))
+                .get_or_init(|| self.nearest(&query.target_room_mm, self.hint, query.meter))
                 .clone()
         };
         // Last, where the hand at rest would be at the target: the
@@ -422,8 +492,9 @@ impl PreparedMobile<'_> {
             if !query.from_rest {
                 return Vec::new();
             }
-            let near = near.get_or_init(|| self.nearest(&query.target_room_mm, self.hint));
-            let mut rest = self.nearest(&query.target_room_mm, self.at_rest);
+            let near =
+                near.get_or_init(|| self.nearest(&query.target_room_mm, self.hint, query.meter));
+            let mut rest = self.nearest(&query.target_room_mm, self.at_rest, query.meter);
             rest.retain(|p| !near.iter().any(|n| same_place(n, p)));
             rest
         });
@@ -499,8 +570,9 @@ impl PreparedMobile<'_> {
     /// For each heading that faces the target as the approach asks, the
     /// admissible point nearest to where the arm would rather have it
     /// (`hint`, turned into the approach), or where that point is outside
-    /// the approach, the nearest along its line; the nearest first.
-    fn nearest(&self, target: &Point3<f64>, hint: Vector2<f64>) -> Vec<BasePose> {
+    /// the approach, the nearest along its line; the nearest first. The
+    /// search for floor far from the target is charged to `meter`.
+    fn nearest(&self, target: &Point3<f64>, hint: Vector2<f64>, meter: &Meter) -> Vec<BasePose> {
         let hint = toward(hint, self.mobile.placing.approach, self.half_width_mm);
         let face = self.face(target);
         let mut scored: Vec<(f64, BasePose)> = self
@@ -509,7 +581,7 @@ impl PreparedMobile<'_> {
             .filter_map(|(heading, region)| {
                 let offset = Rotation2::new(*heading) * hint;
                 let preferred = Point::new(target.x - offset.x, target.y - offset.y);
-                let p = region.nearest(preferred)?;
+                let p = region.nearest_metered(preferred, meter)?;
                 let pose = self.pose_at(p.x(), p.y(), *heading);
                 let pose = if self.admitted(&pose, target) {
                     pose
@@ -639,8 +711,10 @@ impl PreparedBase for PreparedMobile<'_> {
             + tolerance_mm
             + self.mobile.footprint.extent_mm()
             + NEAR_HEIGHT_MM[NEAR_HEIGHT_MM.len() - 1][1];
-        let mut poses = self.nearest(target_room_mm, self.hint);
-        poses.extend(self.nearest(target_room_mm, self.at_rest));
+        // Watch mode's key, worked out before the run (not metered).
+        let unmetered = Meter::unmetered();
+        let mut poses = self.nearest(target_room_mm, self.hint, unmetered);
+        poses.extend(self.nearest(target_room_mm, self.at_rest, unmetered));
         Hips {
             poses,
             around: Some((*target_room_mm, radius_mm)),

@@ -8,6 +8,7 @@
 use std::sync::Arc;
 
 use super::region::Zone;
+use super::work::{unbounded, CutShort, Work};
 use super::{FloorObstacles, FloorPart, Footprint, Region};
 use crate::scene::Room;
 
@@ -33,19 +34,37 @@ const PRECISION: f64 = 0.005;
 impl Misfit {
     /// The misfit of `footprint` at `headings` in `room` (within `zone`).
     pub fn of(room: &Room, footprint: &Footprint, headings: &[f64], zone: Option<&Zone>) -> Self {
-        let fits = |scale: f64| {
+        let mut work = Work::new(&unbounded);
+        Misfit::counted(room, footprint, headings, zone, &mut work)
+            .unwrap_or_else(|_| unreachable!("nothing cuts short a misfit allowed any work"))
+    }
+
+    /// Like `of`, its work (the floor its smaller footprints are tried on)
+    /// added to `work`, cut short where that would pass what it allows.
+    pub fn counted(
+        room: &Room,
+        footprint: &Footprint,
+        headings: &[f64],
+        zone: Option<&Zone>,
+        work: &mut Work<'_>,
+    ) -> Result<Self, CutShort> {
+        let mut fits = |scale: f64| -> Result<bool, CutShort> {
             let scaled = footprint.scaled(scale);
             let obstacles = Arc::new(FloorObstacles::new(room, &scaled));
-            headings
-                .iter()
-                .any(|&h| !Region::new(room, &scaled, h, zone, Arc::clone(&obstacles)).is_empty())
+            for &h in headings {
+                let region = Region::new(room, &scaled, h, zone, Arc::clone(&obstacles));
+                if !region.emptiness(work)? {
+                    return Ok(true);
+                }
+            }
+            Ok(false)
         };
-        let fits_at = if fits(SMALLEST) {
+        let fits_at = if fits(SMALLEST)? {
             // fits(lo) and not fits(hi), as the base fits nowhere.
             let (mut lo, mut hi) = (SMALLEST, 1.0);
             while hi - lo > PRECISION {
                 let mid = (lo + hi) / 2.0;
-                if fits(mid) {
+                if fits(mid)? {
                     lo = mid;
                 } else {
                     hi = mid;
@@ -56,13 +75,13 @@ impl Misfit {
             0.0
         };
         let (x, y) = (room.size_mm.x, room.size_mm.y);
-        Misfit {
+        Ok(Misfit {
             size_mm: footprint.size_mm(),
             fits_at,
             in_zone: zone.is_some(),
             zone_outside: zone
                 .is_some_and(|z| z.max.0 <= 0.0 || z.max.1 <= 0.0 || z.min.0 >= x || z.min.1 >= y),
-        }
+        })
     }
 }
 

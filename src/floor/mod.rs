@@ -15,6 +15,7 @@ mod obstacles;
 mod region;
 mod routes;
 mod tiles;
+mod work;
 
 pub use clear::{
     disc_centre, door_clear_width, knee_limited, route_width, t_space, FreeFloor, RouteFloor,
@@ -25,5 +26,6 @@ pub use mesh_cells::{CELL_MM, FLOOR_TOLERANCE_MM};
 pub use misfit::Misfit;
 pub use obstacles::FloorObstacles;
 pub use region::{admissible, Zone};
-pub use routes::{CutShort, Doorway, Entry, Routes, Shut};
+pub use routes::{Doorway, Entry, Routes, Shut};
 pub use tiles::Region;
+pub use work::{CutShort, Work};

@@ -101,17 +101,20 @@ impl Turned {
 /// shape (`grown` keeps them for `turned`). The same rectangle, footprint
 /// and obstacles near give the same piece: kept by the process (a room
 /// with one box moved or taken away, to learn why a reach failed or at a
-/// save in watch mode, works out again only the pieces near it).
+/// save in watch mode, works out again only the pieces near it). With
+/// the piece, what working it out costs ([`floor_work`]), whether or not
+/// it was kept.
 pub fn admissible_in(
     within: Rect<f64>,
     turned: &Turned,
     obstacles: &FloorObstacles,
     grown: &Grown,
-) -> MultiPolygon<f64> {
+) -> (MultiPolygon<f64>, u64) {
     let met = obstacles_met(cut_of(within), turned, obstacles);
     if met.is_empty() {
-        return MultiPolygon::new(vec![within.to_polygon()]);
+        return (MultiPolygon::new(vec![within.to_polygon()]), 0);
     }
+    let work = floor_work(&met, turned);
     let mut h = DefaultHasher::new();
     hash_corners(&[within.min(), within.max()], &mut h);
     // Only the parts that meet an obstacle here count: people whose
@@ -124,7 +127,7 @@ pub fn admissible_in(
         m.parts.iter().for_each(|&k| turned.hashes[k].hash(&mut h));
     }
     let pairs: usize = met.iter().map(|m| m.parts.len()).sum();
-    PIECES
+    let piece = PIECES
         .get_or(h.finish(), || {
             Arc::new(if pairs <= JOIN_FROM {
                 free_of_parts(within, &met, turned)
@@ -133,7 +136,8 @@ pub fn admissible_in(
             })
         })
         .as_ref()
-        .clone()
+        .clone();
+    (piece, work)
 }
 
 /// Up to this many outlines grown part by part, a piece is worked out
@@ -460,7 +464,7 @@ pub fn admissible(
         return MultiPolygon::new(Vec::new());
     };
     let obstacles = FloorObstacles::new(room, footprint);
-    let region = admissible_in(within, &turned, &obstacles, &Grown::default());
+    let (region, _) = admissible_in(within, &turned, &obstacles, &Grown::default());
     match zone {
         Some(z) => z.cut(region),
         None => region,

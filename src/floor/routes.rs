@@ -33,6 +33,7 @@ use nalgebra::{Point3, Vector3};
 use super::layer::{Grid, Layer};
 use super::obstacles::{box_outline, FloorObstacles};
 use super::region::{shrunk, shrunk_room, Turned};
+use super::work::{CutShort, Work};
 use super::Footprint;
 use crate::kept::Kept;
 use crate::scene::{hash_bits, BoxObstacle, Door, MeshObstacle, Room, Wall};
@@ -70,31 +71,6 @@ pub struct Routes {
     /// What working them out cost, in units of the meter
     /// ([`crate::meter`]): every run that uses them is charged it.
     pub work: u64,
-}
-
-/// Routes cut short: their work so far (`work`) passed what they were
-/// allowed.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct CutShort {
-    pub work: u64,
-}
-
-/// The work of routes being worked out, and what they are allowed.
-struct Work<'a> {
-    done: u64,
-    within: &'a dyn Fn(u64) -> bool,
-}
-
-impl Work<'_> {
-    /// Add `units`; cut short if the work done is more than allowed.
-    fn add(&mut self, units: u64) -> Result<(), CutShort> {
-        self.done = self.done.saturating_add(units);
-        if (self.within)(self.done) {
-            Ok(())
-        } else {
-            Err(CutShort { work: self.done })
-        }
-    }
 }
 
 /// Whether a base comes in through a door.
@@ -143,7 +119,7 @@ impl Routes {
         room: &Room,
         footprint: &Footprint,
         headings: &[f64],
-        within: &dyn Fn(u64) -> bool,
+        within: &(dyn Fn(u64) -> bool + Sync),
     ) -> Result<Option<Arc<Routes>>, CutShort> {
         if room.doors.is_empty() {
             return Ok(None);
@@ -168,7 +144,7 @@ impl Routes {
         room: &Room,
         footprint: &Footprint,
         headings: &[f64],
-        within: &dyn Fn(u64) -> bool,
+        within: &(dyn Fn(u64) -> bool + Sync),
     ) -> Result<Option<Routes>, CutShort> {
         if room.doors.is_empty() {
             return Ok(None);
@@ -182,7 +158,7 @@ impl Routes {
         let space = Space::new(room, footprint);
         let grid = Grid::over(space.floor);
         let followed = followed_headings(footprint, headings, room);
-        let mut work = Work { done: 0, within };
+        let mut work = Work::new(within);
         let mut layers: Vec<Layer> = Vec::with_capacity(followed.len());
         for &h in &followed {
             let first = layers.last().map_or(0, Layer::end);

@@ -12,7 +12,9 @@ use geo::{Closest, ClosestPoint, Coord, MultiPolygon, Point, Polygon, Rect};
 
 use super::obstacles::FloorObstacles;
 use super::region::{admissible_in, shrunk_room, Grown, Turned, Zone};
+use super::work::{unbounded, CutShort, Work};
 use super::{Footprint, Inside, Routes};
+use crate::meter::Meter;
 use crate::scene::Room;
 
 /// The side of a tile, for rooms up to `MAX_TILES` of them.
@@ -20,6 +22,27 @@ const TILE_MM: f64 = 1000.0;
 const MAX_TILES: f64 = 4096.0;
 /// How far each tile's piece reaches beyond the tile.
 const OVERLAP_MM: f64 = 1.0;
+/// A search for the nearest admissible point is charged the tiles it
+/// looks at this many steps or more from the point's own: the few around
+/// a target are worked out once and looked at by every placement near it,
+/// and bounded by the obstacles there; the search beyond them, for floor
+/// farther off, may cross the whole room (and does where the base fits
+/// only far from the target).
+const CHARGED_FROM_RING: usize = 2;
+
+/// A tile's piece of the region, and what working it out costs.
+struct Tile {
+    inside: Inside,
+    work: u64,
+}
+
+/// Whether a region is empty, and what finding out cost (every tile its
+/// search looked at).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Emptiness {
+    empty: bool,
+    work: u64,
+}
 
 /// The admissible region at one heading.
 pub struct Region {
@@ -34,8 +57,8 @@ pub struct Region {
     tile_mm: f64,
     nx: usize,
     ny: usize,
-    tiles: Vec<OnceLock<Inside>>,
-    empty: OnceLock<bool>,
+    tiles: Vec<OnceLock<Tile>>,
+    empty: OnceLock<Emptiness>,
     /// The routes from the room's doors and the heading they are followed
     /// at, where only what they reach is kept.
     routes: Option<(Arc<Routes>, f64)>,
@@ -103,7 +126,10 @@ impl Region {
         let region = Region::new(room, footprint, heading_rad, zone, obstacles);
         let empty = OnceLock::new();
         if !routes.enters() {
-            let _ = empty.set(true);
+            let _ = empty.set(Emptiness {
+                empty: true,
+                work: 0,
+            });
         }
         Region {
             routes: Some((routes, heading_rad)),
@@ -112,21 +138,22 @@ impl Region {
         }
     }
 
-    /// Tile `(i, j)`'s piece of the region.
-    fn tile(&self, i: usize, j: usize) -> &Inside {
+    /// Tile `(i, j)`'s piece of the region, and its work.
+    fn tile(&self, i: usize, j: usize) -> &Tile {
         self.tiles[j * self.nx + i].get_or_init(|| {
-            let piece = self
+            let (piece, work) = self
                 .tile_rect(i, j)
                 .map(|r| admissible_in(r, &self.turned, &self.obstacles, &self.grown))
-                .unwrap_or_else(|| MultiPolygon::new(Vec::new()));
+                .unwrap_or_else(|| (MultiPolygon::new(Vec::new()), 0));
             let piece = match &self.zone {
                 Some(zone) => zone.cut(piece),
                 None => piece,
             };
-            Inside::new(match &self.routes {
+            let inside = Inside::new(match &self.routes {
                 Some((routes, heading_rad)) => reached_pieces(piece, routes, *heading_rad),
                 None => piece,
-            })
+            });
+            Tile { inside, work }
         })
     }
 
@@ -162,36 +189,101 @@ impl Region {
     /// Whether `(x, y)` is inside the region, not on its boundary.
     pub fn contains(&self, x: f64, y: f64) -> bool {
         self.tile_of(x, y)
-            .is_some_and(|(i, j)| self.tile(i, j).contains(x, y))
+            .is_some_and(|(i, j)| self.tile(i, j).inside.contains(x, y))
     }
 
     /// Like `contains`, for ruling points out quickly (a point on the
     /// boundary may go either way).
     pub fn roughly_contains(&self, x: f64, y: f64) -> bool {
         self.tile_of(x, y)
-            .is_some_and(|(i, j)| self.tile(i, j).roughly_contains(x, y))
+            .is_some_and(|(i, j)| self.tile(i, j).inside.roughly_contains(x, y))
     }
 
-    /// Whether the base fits nowhere at this heading.
+    /// Whether the base fits nowhere at this heading (found out once).
     pub fn is_empty(&self) -> bool {
-        *self.empty.get_or_init(|| {
-            let Some(free) = self.free else {
-                return true;
-            };
-            let centre = Point::from(free.center());
-            self.nearest(centre).is_none()
-        })
+        let mut work = Work::new(&unbounded);
+        self.emptiness(&mut work).unwrap_or(false)
+    }
+
+    /// Whether the base fits nowhere at this heading, the work of finding
+    /// out (every tile its search looked at, each at what working it out
+    /// costs, whether or not it is worked out now) added to `work`: cut
+    /// short where `work` would pass what it is allowed (then nothing is
+    /// kept).
+    pub fn emptiness(&self, work: &mut Work<'_>) -> Result<bool, CutShort> {
+        let found = match self.empty.get() {
+            Some(found) => *found,
+            None => {
+                let allowed = |units: u64| work.allows(units);
+                let mut own = Work::new(&allowed);
+                let empty = match self.free {
+                    None => true,
+                    Some(free) => {
+                        let centre = Point::from(free.center());
+                        // Cut short, the work is all `work` counted.
+                        let counted = self.nearest_counted(centre, 0, &mut own);
+                        let total = |cut: CutShort| CutShort {
+                            work: work.done.saturating_add(cut.work),
+                        };
+                        counted.map_err(total)?.is_none()
+                    }
+                };
+                let found = Emptiness {
+                    empty,
+                    work: own.done,
+                };
+                *self.empty.get_or_init(|| found)
+            }
+        };
+        work.add(found.work)?;
+        Ok(found.empty)
     }
 
     /// The admissible point nearest to `p` (itself if admissible), found
     /// tile by tile outwards from `p`'s, none if the region is empty.
     pub fn nearest(&self, p: Point<f64>) -> Option<Point<f64>> {
-        let free = self.free?;
+        let mut work = Work::new(&unbounded);
+        self.nearest_counted(p, usize::MAX, &mut work)
+            .unwrap_or(None)
+    }
+
+    /// Like `nearest`, `meter` charged the tiles looked at beyond those
+    /// around `p` ([`CHARGED_FROM_RING`]); none once the run is past its
+    /// limit.
+    pub fn nearest_metered(&self, p: Point<f64>, meter: &Meter) -> Option<Point<f64>> {
+        let allowed = |units: u64| meter.would_stay_within(units);
+        let mut work = Work::new(&allowed);
+        let found = self.nearest_counted(p, CHARGED_FROM_RING, &mut work);
+        match found {
+            Ok(found) => {
+                meter.charge(work.done);
+                found
+            }
+            Err(cut) => {
+                meter.charge(cut.work);
+                None
+            }
+        }
+    }
+
+    /// `nearest`, `work` charged each tile looked at `from_ring` steps or
+    /// more from `p`'s.
+    fn nearest_counted(
+        &self,
+        p: Point<f64>,
+        from_ring: usize,
+        work: &mut Work<'_>,
+    ) -> Result<Option<Point<f64>>, CutShort> {
+        let Some(free) = self.free else {
+            return Ok(None);
+        };
         let clamped = Point::new(
             p.x().clamp(free.min().x, free.max().x),
             p.y().clamp(free.min().y, free.max().y),
         );
-        let (ci, cj) = self.tile_of(clamped.x(), clamped.y())?;
+        let Some((ci, cj)) = self.tile_of(clamped.x(), clamped.y()) else {
+            return Ok(None);
+        };
         let mut best: Option<(f64, Point<f64>)> = None;
         for ring in 0..self.nx.max(self.ny) {
             // Every tile's piece in this ring is at least this far from `p`.
@@ -201,15 +293,18 @@ impl Region {
             }
             for (i, j) in ring_tiles(ci, cj, ring, self.nx, self.ny) {
                 let tile = self.tile(i, j);
+                if ring >= from_ring {
+                    work.add(tile.work)?;
+                }
                 // A piece whose bounds are no nearer than the best cannot
                 // be nearer (nor, by a tie, replace it).
-                let Some(near_mm) = tile.bounds_distance_mm(p) else {
+                let Some(near_mm) = tile.inside.bounds_distance_mm(p) else {
                     continue;
                 };
                 if best.is_some_and(|(d, _)| near_mm >= d) {
                     continue;
                 }
-                let Some(q) = closest(tile.region(), near_mm, p) else {
+                let Some(q) = closest(tile.inside.region(), near_mm, p) else {
                     continue;
                 };
                 let d = (q.x() - p.x()).hypot(q.y() - p.y());
@@ -218,7 +313,7 @@ impl Region {
                 }
             }
         }
-        best.map(|(_, q)| q)
+        Ok(best.map(|(_, q)| q))
     }
 
     /// The whole region, every tile worked out and the pieces (which
@@ -227,7 +322,7 @@ impl Region {
         let mut pieces = Vec::new();
         for j in 0..self.ny {
             for i in 0..self.nx {
-                pieces.extend(self.tile(i, j).region().0.iter().cloned());
+                pieces.extend(self.tile(i, j).inside.region().0.iter().cloned());
             }
         }
         geo::unary_union(&pieces)
@@ -299,6 +394,83 @@ mod tests {
             surfaces: Vec::new(),
             doors: Vec::new(),
         }
+    }
+
+    /// A 6 x 6 m hall full of posts 300 mm apart but for a strip along
+    /// one wall, where a chair of 600 mm fits.
+    fn crowded() -> Room {
+        let mut boxes = Vec::new();
+        for i in 0..15 {
+            for j in 0..19 {
+                boxes.push(BoxObstacle {
+                    name: format!("p{i}_{j}"),
+                    corner_mm: Point3::new(300.0 * f64::from(i + 1), 300.0 * f64::from(j), 0.0),
+                    size_mm: Vector3::new(50.0, 50.0, 900.0),
+                    yaw_rad: 0.0,
+                });
+            }
+        }
+        Room {
+            name: "hall".into(),
+            size_mm: Vector3::new(6000.0, 6000.0, 2500.0),
+            boxes,
+            ..room()
+        }
+    }
+
+    /// Finding out whether a base fits anywhere counts every tile the
+    /// search looks at, and is cut short (nothing kept) where that work
+    /// would pass what it is allowed; found out, it is charged the same
+    /// again without being worked out again.
+    #[test]
+    fn emptiness_counts_the_tiles_it_looks_at_and_is_cut_short_past_its_allowance() {
+        let room = crowded();
+        let chair = Footprint::circle(300.0, 900.0);
+        let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
+        let region = Region::new(&room, &chair, 0.0, None, obstacles);
+        let mut whole = Work::new(&unbounded);
+        assert_eq!(region.emptiness(&mut whole), Ok(false));
+        assert!(whole.done > 10_000, "{}", whole.done);
+        let short = |units: u64| units < whole.done;
+        let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
+        let fresh = Region::new(&room, &chair, 0.0, None, obstacles);
+        let mut before = Work::new(&short);
+        before.add(7).expect("allowed");
+        let cut = fresh.emptiness(&mut before).expect_err("cut short");
+        assert!(!short(cut.work), "all the work counted: {}", cut.work);
+        assert!(fresh.empty.get().is_none(), "nothing kept when cut short");
+        let mut again = Work::new(&unbounded);
+        assert_eq!(region.emptiness(&mut again), Ok(false));
+        assert_eq!(again.done, whole.done);
+    }
+
+    /// A search for the nearest floor is charged the tiles it looks at
+    /// beyond the target's own and those around it: nothing where the
+    /// base fits beside the target, the tiles crossed where it fits only
+    /// far off; once the run is past its limit, it finds nothing.
+    #[test]
+    fn a_search_for_far_floor_is_charged_and_a_near_one_is_not() {
+        use crate::meter::RunWork;
+        let room = crowded();
+        let chair = Footprint::circle(300.0, 900.0);
+        let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
+        let region = Region::new(&room, &chair, 0.0, None, obstacles);
+        let run = RunWork::new(u64::MAX / 2);
+        let meter = Meter::of(&run);
+        let near = region.nearest_metered(Point::new(5500.0, 3000.0), &meter);
+        assert_eq!(near, region.nearest(Point::new(5500.0, 3000.0)));
+        assert_eq!(meter.spent(), 0);
+        let far = region.nearest_metered(Point::new(1000.0, 3000.0), &meter);
+        assert_eq!(far, region.nearest(Point::new(1000.0, 3000.0)));
+        assert!(far.is_some_and(|p| p.x() > 4500.0), "{far:?}");
+        assert!(meter.spent() > 1_000, "{}", meter.spent());
+        let spent = meter.spent();
+        let tight = Meter::of(&RunWork::new(spent / 2));
+        assert_eq!(
+            region.nearest_metered(Point::new(1000.0, 3000.0), &tight),
+            None
+        );
+        assert!(tight.exceeded());
     }
 
     /// An L-shaped outline zone: the region is the floor's admissible

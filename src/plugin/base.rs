@@ -182,11 +182,20 @@ pub trait Base: Send + Sync {
     /// and the run stopped.
     fn fit(&self, room: &Room, meter: &Meter) -> Fit;
     /// What working out where the base may stand in `room` cost, in units
-    /// of the meter ([`crate::meter`]), once [`Base::fit`] has: a mobile
-    /// base's routes from the doors. The run charges it to the first task
+    /// of the meter ([`crate::meter`]), once [`Base::fit`] has: for a mobile
+    /// base, the search at each heading for floor it fits on, the routes
+    /// from the doors, and where it fits nowhere, the search for how much
+    /// smaller it would fit. The run charges it to the first task
     /// of the scenario that places the person in the room.
     fn floor_work(&self, _room: &Room) -> u64 {
         0
+    }
+    /// What working out where the base may stand in `room`, a room the
+    /// task's `beside` with something taken away, adds to what `beside`'s
+    /// cost (nothing where the base's floor is the same in both, as when a
+    /// wall cabinet is taken away), once [`Base::fit`] has.
+    fn floor_work_beside(&self, room: &Room, _beside: &Room) -> u64 {
+        self.floor_work(room)
     }
     /// Whether the scenario puts the base outside the room, which the
     /// checker refuses: asked before the run, so cheaply (no floor is

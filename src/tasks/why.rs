@@ -24,7 +24,8 @@ use nalgebra::Point3;
 use super::common::Reaching;
 use crate::collision::{obstacle_bounds, Obstacles, PlacedObstacles, TOUCH_MARGIN_MM};
 use crate::kinematics::{Chain, JointKind};
-use crate::plugin::{Placement, Search, TaskInput};
+use crate::meter::Meter;
+use crate::plugin::{Base, Placement, Search, TaskInput};
 use crate::report::{Why, WIDENED_DEG};
 use crate::scene::{Blocker, OwnBody, Room};
 
@@ -159,6 +160,7 @@ impl Failed<'_> {
             own,
             self.input.meter,
         );
+        charge_floor(free.as_ref(), self.input.room, None, self.input.meter);
         let placed = free
             .prepare(self.input.room, self.chain)
             .reach(&query, self.reaching.solver.as_ref());
@@ -404,6 +406,12 @@ impl Failed<'_> {
             own,
             self.input.meter,
         );
+        charge_floor(
+            self.input.base,
+            room,
+            Some(self.input.room),
+            self.input.meter,
+        );
         self.input
             .base
             .prepare(room, chain)
@@ -478,4 +486,18 @@ fn beyond_limits(chain: &Chain, q: &[f64]) -> Vec<String> {
         .into_iter()
         .map(|i| chain.joints[i].name.clone())
         .collect()
+}
+
+/// Work out where `base` may stand in `room` (a room the search is made
+/// in again without something, `beside` the task's own where only the
+/// base is the same), charging `meter` what that costs, kept or not:
+/// the search's floor counts towards the run's work as the task's own
+/// does, but for what it shares with the task's.
+fn charge_floor(base: &dyn Base, room: &Room, beside: Option<&Room>, meter: &Meter) {
+    base.fit(room, meter);
+    let work = match beside {
+        Some(beside) => base.floor_work_beside(room, beside),
+        None => base.floor_work(room),
+    };
+    meter.charge(work);
 }
