@@ -53,9 +53,8 @@ type Regions = Vec<(f64, Arc<Region>)>;
 /// Whether the base fits at one of `regions`' headings, each region (a
 /// base that does not turn has one for all) found out in full, in
 /// parallel, so that the work, added to `work`, is the same whatever comes
-/// first. Cut short where that work would pass what `work` allows: a
-/// region counts what the others have finished, and the sum at the end
-/// decides.
+/// first. Cut short where that work would pass what `work` allows: each
+/// region tells what it has counted as it goes, and checks the sum.
 fn any_fits(regions: &Regions, work: &mut Work<'_>) -> Result<bool, CutShort> {
     let mut distinct: Vec<&Region> = Vec::new();
     for (_, region) in regions {
@@ -63,20 +62,22 @@ fn any_fits(regions: &Regions, work: &mut Work<'_>) -> Result<bool, CutShort> {
             distinct.push(region);
         }
     }
-    let done = AtomicU64::new(0);
+    let counted = AtomicU64::new(0);
     let outer: &Work<'_> = work;
     let found: Vec<Result<bool, CutShort>> = distinct
         .par_iter()
         .map(|region| {
-            let allowed = |units: u64| outer.allows(done.load(Relaxed).saturating_add(units));
-            let mut own = Work::new(&allowed);
-            let found = region.emptiness(&mut own);
-            let units = found.as_ref().map_or_else(|cut| cut.work, |_| own.done);
-            done.fetch_add(units, Relaxed);
-            found
+            // The most this region has told: its work asked about so far.
+            let told = AtomicU64::new(0);
+            let allowed = |own: u64| {
+                let more = own.saturating_sub(told.fetch_max(own, Relaxed));
+                let all = counted.fetch_add(more, Relaxed).saturating_add(more);
+                outer.allows(all)
+            };
+            region.emptiness(&mut Work::new(&allowed))
         })
         .collect();
-    let total = done.into_inner();
+    let total = counted.into_inner();
     if found.iter().any(Result::is_err) {
         return Err(CutShort {
             work: work.done.saturating_add(total),

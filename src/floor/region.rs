@@ -114,7 +114,6 @@ pub fn admissible_in(
     if met.is_empty() {
         return (MultiPolygon::new(vec![within.to_polygon()]), 0);
     }
-    let work = floor_work(&met, turned);
     let mut h = DefaultHasher::new();
     hash_corners(&[within.min(), within.max()], &mut h);
     // Only the parts that meet an obstacle here count: people whose
@@ -127,17 +126,15 @@ pub fn admissible_in(
         m.parts.iter().for_each(|&k| turned.hashes[k].hash(&mut h));
     }
     let pairs: usize = met.iter().map(|m| m.parts.len()).sum();
-    let piece = PIECES
-        .get_or(h.finish(), || {
-            Arc::new(if pairs <= JOIN_FROM {
-                free_of_parts(within, &met, turned)
-            } else {
-                free_of_met(within, &met, turned, grown)
-            })
+    let kept = PIECES.get_or(h.finish(), || {
+        Arc::new(if pairs <= JOIN_FROM {
+            free_of_parts(within, &met, turned)
+        } else {
+            free_of_met(within, &met, turned, grown)
         })
-        .as_ref()
-        .clone();
-    (piece, work)
+    });
+    let (piece, crossings) = kept.as_ref();
+    (piece.clone(), floor_work(*crossings))
 }
 
 /// Up to this many outlines grown part by part, a piece is worked out
@@ -152,7 +149,11 @@ const JOIN_FROM: usize = UNION_LEAF;
 
 /// `within` less the outlines of the obstacles `met`, each grown by each
 /// part of `turned` that meets it on its own and cut to `within`.
-fn free_of_parts(within: Rect<f64>, met: &[Met<'_>], turned: &Turned) -> MultiPolygon<f64> {
+fn free_of_parts(
+    within: Rect<f64>,
+    met: &[Met<'_>],
+    turned: &Turned,
+) -> (MultiPolygon<f64>, usize) {
     let cut = cut_of(within);
     let mut grown: Vec<Polygon<f64>> = (met.iter())
         .flat_map(|m| grown_part_by_part(m, turned, cut))
@@ -236,7 +237,7 @@ impl Grown {
 /// Like `admissible_in`, worked out afresh (not kept by the process):
 /// what a route search asks of every tile of a large floor at many
 /// headings.
-/// And its work, in the units of the meter ([`floor_work`]).
+/// And its work, in the units of the meter ([`route_tile_work`]).
 pub fn admissible_joined(
     within: Rect<f64>,
     turned: &Turned,
@@ -244,26 +245,49 @@ pub fn admissible_joined(
     grown: &Grown,
 ) -> (MultiPolygon<f64>, u64) {
     let met = obstacles_met(cut_of(within), turned, obstacles);
-    let work = floor_work(&met, turned);
-    (free_of_met(within, &met, turned, grown), work)
+    let (free, _) = free_of_met(within, &met, turned, grown);
+    (free, route_tile_work(&met, turned))
 }
 
-/// Units of the meter ([`crate::meter`]) a corner of the outlines a tile
-/// is worked out from costs: an obstacle's corners and a part's, for each
-/// part that meets it. Calibrated on routes from a door (2 cores, release,
-/// a layer's tiles in parallel): at 3 units a corner they do 27,000 to
-/// 32,000 units a millisecond (5,000 posts 400 mm apart; 300 posts
-/// followed at 360 headings; 300 wheelchair users in a kitchen), as the
-/// solvers do 20,000 to 40,000.
+/// Units of the meter a corner of the outlines a tile of routes is worked
+/// out from costs: an obstacle's corners and a part's, for each part that
+/// meets it. Calibrated on routes from a door (2 cores, release, a
+/// layer's tiles in parallel), whose time is the tiles' and the joining
+/// of their pieces and of the headings' as much: at 3 units a corner they
+/// do 27,000 to 32,000 units a millisecond (5,000 posts 400 mm apart; 300
+/// posts followed at 360 headings; 300 wheelchair users in a kitchen), as
+/// the solvers do 20,000 to 40,000. (A tile's crossings, which measure a
+/// tile of placements better, undercount them: 300 posts at 360 headings
+/// with a door ran 11 s within the bound so counted.)
 const UNITS_PER_CORNER: u64 = 3;
 
-/// The work of a tile whose footprint parts meet the obstacles `met`.
-fn floor_work(met: &[Met<'_>], turned: &Turned) -> u64 {
+/// The work of a tile of routes whose footprint parts meet the obstacles
+/// `met`.
+fn route_tile_work(met: &[Met<'_>], turned: &Turned) -> u64 {
     let corners: usize = (met.iter())
         .map(|m| (m.parts.iter()).map(|&k| m.outline.len() + turned.parts[k].len()))
         .map(Iterator::sum::<usize>)
         .sum();
     (corners as u64).saturating_mul(UNITS_PER_CORNER)
+}
+
+/// Units of the meter ([`crate::meter`]) two of a tile's crossings cost
+/// (see `crossing_pairs`: each pair of outlines whose bounds overlap, by
+/// the corners of the two). Measured tile by tile on one thread
+/// (release): the crossings predict a tile's time within a factor of two,
+/// 12 to 24 a microsecond, from posts 400 mm apart to 5,000 boxes of 3 mm
+/// crowded round one target, where the outlines' corners alone went from
+/// 2.3 to 17 a microsecond (the boolean operations meet every crossing of
+/// edges, and crowded outlines cross pairwise). At three units for two,
+/// the crowded floor does about 37,000 units a millisecond on two cores
+/// and posts about 66,000 (the solvers do 20,000 to 40,000): a room at the
+/// bound stops within about 10 s however its obstacles crowd, and one of
+/// posts sooner than it need.
+const UNITS_PER_TWO_CROSSINGS: u64 = 3;
+
+/// The work of a tile whose outlines made `crossings`.
+fn floor_work(crossings: usize) -> u64 {
+    (crossings as u64).saturating_mul(UNITS_PER_TWO_CROSSINGS) / 2
 }
 
 /// An obstacle whose grown outline reaches beyond a tile by more than this
@@ -280,10 +304,10 @@ fn free_of_met(
     met: &[Met<'_>],
     turned: &Turned,
     grown: &Grown,
-) -> MultiPolygon<f64> {
+) -> (MultiPolygon<f64>, usize) {
     let free = MultiPolygon::new(vec![within.to_polygon()]);
     if met.is_empty() {
-        return free;
+        return (free, 0);
     }
     let cut = cut_of(within);
     let reach = cut.width().max(cut.height()).max(FAR_MM);
@@ -360,23 +384,22 @@ fn admissible_part_by_part(
     obstacles: &FloorObstacles,
 ) -> MultiPolygon<f64> {
     let met = obstacles_met(cut_of(within), turned, obstacles);
-    free_of_parts(within, &met, turned)
+    free_of_parts(within, &met, turned).0
 }
 
 /// Pieces of admissible region kept by the process, by a hash of their
 /// rectangle, the obstacles near it and the corners of the parts that
-/// meet each.
-static PIECES: Kept<Arc<MultiPolygon<f64>>> = Kept::new(16_384);
+/// meet each, with the crossings working each out met.
+static PIECES: Kept<Arc<(MultiPolygon<f64>, usize)>> = Kept::new(16_384);
 
-/// `free` less the union of the `grown` outlines.
-fn free_of(free: MultiPolygon<f64>, grown: Vec<Polygon<f64>>) -> MultiPolygon<f64> {
-    if grown.len() <= UNION_LEAF {
-        return free.difference(&geo::unary_union(&grown));
+/// `free` less the union of the `grown` outlines, and the crossings the
+/// unions on the way met (`crossing_pairs`: what they cost).
+fn free_of(free: MultiPolygon<f64>, grown: Vec<Polygon<f64>>) -> (MultiPolygon<f64>, usize) {
+    let mut crossings = 0;
+    if grown.len() > UNION_LEAF && covered_by_a_few(&free, &grown, &mut crossings) {
+        return (MultiPolygon::new(Vec::new()), crossings);
     }
-    if covered_by_a_few(&free, &grown) {
-        return MultiPolygon::new(Vec::new());
-    }
-    free.difference(&union(&grown))
+    (free.difference(&union(&grown, &mut crossings)), crossings)
 }
 
 /// The fewest outlines tried first, and how many times more each try
@@ -389,12 +412,16 @@ const MORE: usize = 4;
 /// them. Where boxes crowd round a target, a few cover the floor and the
 /// union of all of them is not needed (the region is then empty whatever
 /// the others are); elsewhere the tries cost at most a third more.
-fn covered_by_a_few(free: &MultiPolygon<f64>, grown: &[Polygon<f64>]) -> bool {
+fn covered_by_a_few(
+    free: &MultiPolygon<f64>,
+    grown: &[Polygon<f64>],
+    crossings: &mut usize,
+) -> bool {
     let mut few = FIRST_FEW;
     while few * MORE <= grown.len() {
         let stride = grown.len() / few;
         let some: Vec<Polygon<f64>> = grown.iter().step_by(stride).cloned().collect();
-        if free.difference(&union(&some)).0.is_empty() {
+        if free.difference(&union(&some, crossings)).0.is_empty() {
             return true;
         }
         few *= MORE;
@@ -441,13 +468,50 @@ const UNION_LEAF: usize = 64;
 /// overlap nearly all pairwise, and one sweep over all of them meets
 /// every crossing of their edges (5,000 boxes near one target took 19
 /// s); the union of half of them has only the edges of its outline, so
-/// that joining halves costs what their outlines do.
-fn union(polygons: &[Polygon<f64>]) -> MultiPolygon<f64> {
-    if polygons.len() <= UNION_LEAF {
-        return geo::unary_union(polygons);
+/// that joining halves costs what their outlines do. Counted in
+/// `crossings`: each sweep's `crossing_pairs`, and the corners of every
+/// union made.
+fn union(polygons: &[Polygon<f64>], crossings: &mut usize) -> MultiPolygon<f64> {
+    let joined = if polygons.len() <= UNION_LEAF {
+        *crossings += crossing_pairs(polygons);
+        geo::unary_union(polygons)
+    } else {
+        let (left, right) = polygons.split_at(polygons.len() / 2);
+        union(left, crossings).union(&union(right, crossings))
+    };
+    *crossings += corners_of(&joined);
+    joined
+}
+
+/// What one sweep over `polygons` costs: for each pair whose bounds
+/// overlap (where their edges may cross), the corners of the two. At most
+/// `UNION_LEAF` polygons: a few thousand pairs, against a sweep's
+/// milliseconds.
+fn crossing_pairs(polygons: &[Polygon<f64>]) -> usize {
+    use geo::BoundingRect;
+    let boxes: Vec<(Rect<f64>, usize)> = (polygons.iter())
+        .filter_map(|p| Some((p.bounding_rect()?, p.exterior().0.len())))
+        .collect();
+    let mut n = 0;
+    for (i, (a, ca)) in boxes.iter().enumerate() {
+        for (b, cb) in &boxes[i + 1..] {
+            if a.min().x <= b.max().x
+                && b.min().x <= a.max().x
+                && a.min().y <= b.max().y
+                && b.min().y <= a.max().y
+            {
+                n += ca + cb;
+            }
+        }
     }
-    let (left, right) = polygons.split_at(polygons.len() / 2);
-    union(left).union(&union(right))
+    n
+}
+
+/// How many corners `region`'s outlines have, holes included.
+fn corners_of(region: &MultiPolygon<f64>) -> usize {
+    (region.0.iter())
+        .map(|p| p.exterior().0.len() + p.interiors().iter().map(|r| r.0.len()).sum::<usize>())
+        .sum()
 }
 
 /// The hip points where `footprint` fits in `room` at `heading_rad`, as
@@ -809,13 +873,13 @@ mod union_tests {
                 corners.iter().map(|&(x, y)| square(x, y, side_mm)).collect();
             let plain = free.difference(&geo::unary_union(&grown));
             grown.sort_by(|a, b| left_of(a).total_cmp(&left_of(b)));
-            let halved = free.difference(&union(&grown));
+            let halved = free.difference(&union(&grown, &mut 0));
             let apart = plain.difference(&halved).unsigned_area() + halved.difference(&plain).unsigned_area();
             // The boolean operations round to their own grid, which
             // depends on what they join: slivers of a hundredth of a
             // square millimetre, a millionth of the floor, may differ.
             prop_assert!(apart < 1e-6 * within.to_polygon().unsigned_area(), "the regions differ by {apart} mm2");
-            if covered_by_a_few(&free, &grown) {
+            if covered_by_a_few(&free, &grown, &mut 0) {
                 prop_assert!(plain.unsigned_area() < 1e-9, "called covered, {} mm2 free", plain.unsigned_area());
             }
         }
