@@ -418,22 +418,26 @@ mod tests {
         }
     }
 
+    /// The crowded hall's region for a chair of 600 mm, facing along x.
+    fn crowded_region() -> Region {
+        let room = crowded();
+        let chair = Footprint::circle(300.0, 900.0);
+        let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
+        Region::new(&room, &chair, 0.0, None, obstacles)
+    }
+
     /// Finding out whether a base fits anywhere counts every tile the
     /// search looks at, and is cut short (nothing kept) where that work
     /// would pass what it is allowed; found out, it is charged the same
     /// again without being worked out again.
     #[test]
     fn emptiness_counts_the_tiles_it_looks_at_and_is_cut_short_past_its_allowance() {
-        let room = crowded();
-        let chair = Footprint::circle(300.0, 900.0);
-        let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
-        let region = Region::new(&room, &chair, 0.0, None, obstacles);
+        let region = crowded_region();
         let mut whole = Work::new(&unbounded);
         assert_eq!(region.emptiness(&mut whole), Ok(false));
         assert!(whole.done > 10_000, "{}", whole.done);
         let short = |units: u64| units < whole.done;
-        let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
-        let fresh = Region::new(&room, &chair, 0.0, None, obstacles);
+        let fresh = crowded_region();
         let mut before = Work::new(&short);
         before.add(7).expect("allowed");
         let cut = fresh.emptiness(&mut before).expect_err("cut short");
@@ -451,10 +455,7 @@ mod tests {
     #[test]
     fn a_search_for_far_floor_is_charged_and_a_near_one_is_not() {
         use crate::meter::RunWork;
-        let room = crowded();
-        let chair = Footprint::circle(300.0, 900.0);
-        let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
-        let region = Region::new(&room, &chair, 0.0, None, obstacles);
+        let region = crowded_region();
         let run = RunWork::new(u64::MAX / 2);
         let meter = Meter::of(&run);
         let near = region.nearest_metered(Point::new(5500.0, 3000.0), &meter);
