@@ -918,14 +918,17 @@ fn through_a_door(unique: &str) -> String {
     )
 }
 
-/// A hall so full of posts that the chair fits only along one wall, far
-/// from the cup: the search for that floor, and the floor of each room
-/// without one post that finding why tries, count towards the bound.
-fn crowded_hall() -> String {
+/// A hall of `size_mm` with posts 300 mm apart in `columns` columns
+/// from x = 300 mm, and a cup among them: with 15 columns in 6 m the
+/// chair fits only along one wall, far from the cup (the search for that
+/// floor, and the floor of each room without one post that finding why
+/// tries, count towards the bound); with the hall full it fits nowhere
+/// (the search for how much smaller it would fit counts too).
+fn hall_of_posts(size_mm: u32, columns: u32) -> String {
     let mut text =
-        String::from("units mm deg\nuse std::arm\nroom hall {\n  size 6000 x 6000 x 2500\n");
-    for i in 1..=15 {
-        for j in 0..19 {
+        format!("units mm deg\nuse std::arm\nroom hall {{\n  size {size_mm} x {size_mm} x 2500\n");
+    for i in 1..=columns {
+        for j in 0..size_mm / 300 {
             let (x, y) = (300 * i, 300 * j);
             text.push_str(&format!(
                 "  box p{i}_{j} at ({x}, {y}, 0) size (50, 50, 900)\n"
@@ -965,7 +968,8 @@ fn metered_run(text: &str, limit: u64, threads: usize) -> Result<u64, reach::Err
 /// on each: at its own work it runs, one unit less it stops.
 #[test]
 fn a_run_stays_within_the_bound_or_passes_it_whatever_the_threads() {
-    for text in [metered(), through_a_door("bound"), crowded_hall()] {
+    let (far_floor, no_floor) = (hall_of_posts(6000, 15), hall_of_posts(3000, 9));
+    for text in [metered(), through_a_door("bound"), far_floor, no_floor] {
         let work = metered_run(&text, u64::MAX / 2, 1).expect("within the bound");
         assert!(work > 100_000, "{work}");
         for threads in [1, 3] {

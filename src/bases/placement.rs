@@ -246,15 +246,16 @@ impl Mobile {
         let within = |units: u64| meter.would_stay_within(units);
         let mut work = Work::new(&within);
         let fits = any_fits(&regions, &mut work)?;
-        let routes =
-            match fits {
-                true => Routes::of(room, &self.footprint, headings, &|u| work.allows(u)).map_err(
-                    |cut| CutShort {
-                        work: work.done.saturating_add(cut.work),
-                    },
-                )?,
-                false => None,
+        let routes = if fits {
+            // Cut short, the work is all `work` counted.
+            let left = |units: u64| work.allows(units);
+            let total = |cut: CutShort| CutShort {
+                work: work.done.saturating_add(cut.work),
             };
+            Routes::of(room, &self.footprint, headings, &left).map_err(total)?
+        } else {
+            None
+        };
         let Some(routes) = routes else {
             return Ok(Floor {
                 regions,
