@@ -34,7 +34,7 @@ use super::face::face_normal;
 use super::placing::{Approach, Placing, SIDE_SLACK_MM};
 use super::search::{search, search_retrying_later, Candidate};
 use crate::floor::{
-    CutShort, Doorway, FloorObstacles, Footprint, Misfit, Region, Routes, Shut, Work,
+    unbounded, CutShort, Doorway, FloorObstacles, Footprint, Misfit, Region, Routes, Shut, Work,
 };
 use crate::geometry::Solid;
 use crate::kept::Kept;
@@ -79,9 +79,7 @@ fn any_fits(regions: &Regions, work: &mut Work<'_>) -> Result<bool, CutShort> {
         .collect();
     let total = counted.into_inner();
     if found.iter().any(Result::is_err) {
-        return Err(CutShort {
-            work: work.done.saturating_add(total),
-        });
+        return Err(work.cut_short_with(total));
     }
     work.add(total)?;
     Ok(found.contains(&Ok(false)))
@@ -247,12 +245,9 @@ impl Mobile {
         let mut work = Work::new(&within);
         let fits = any_fits(&regions, &mut work)?;
         let routes = if fits {
-            // Cut short, the work is all `work` counted.
             let left = |units: u64| work.allows(units);
-            let total = |cut: CutShort| CutShort {
-                work: work.done.saturating_add(cut.work),
-            };
-            Routes::of(room, &self.footprint, headings, &left).map_err(total)?
+            Routes::of(room, &self.footprint, headings, &left)
+                .map_err(|cut| work.cut_short_with(cut.work))?
         } else {
             None
         };
@@ -416,7 +411,7 @@ impl Base for Mobile {
 
     fn enclosing(&self, room: &Room, heading_rad: f64, hip_mm: (f64, f64)) -> Vec<usize> {
         // The routes the placement followed, kept by the process.
-        let routes = Routes::of(room, &self.footprint, &self.placing.headings, &|_| true);
+        let routes = Routes::of(room, &self.footprint, &self.placing.headings, &unbounded);
         match routes {
             Ok(Some(routes)) => routes.enclosing(room, &self.footprint, heading_rad, hip_mm),
             _ => Vec::new(),

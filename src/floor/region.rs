@@ -479,7 +479,7 @@ fn union(polygons: &[Polygon<f64>], crossings: &mut usize) -> MultiPolygon<f64> 
         let (left, right) = polygons.split_at(polygons.len() / 2);
         union(left, crossings).union(&union(right, crossings))
     };
-    *crossings += corners_of(&joined);
+    *crossings += geo::CoordsIter::coords_count(&joined);
     joined
 }
 
@@ -488,30 +488,19 @@ fn union(polygons: &[Polygon<f64>], crossings: &mut usize) -> MultiPolygon<f64> 
 /// `UNION_LEAF` polygons: a few thousand pairs, against a sweep's
 /// milliseconds.
 fn crossing_pairs(polygons: &[Polygon<f64>]) -> usize {
-    use geo::BoundingRect;
+    use geo::{BoundingRect, Intersects};
     let boxes: Vec<(Rect<f64>, usize)> = (polygons.iter())
         .filter_map(|p| Some((p.bounding_rect()?, p.exterior().0.len())))
         .collect();
     let mut n = 0;
     for (i, (a, ca)) in boxes.iter().enumerate() {
         for (b, cb) in &boxes[i + 1..] {
-            if a.min().x <= b.max().x
-                && b.min().x <= a.max().x
-                && a.min().y <= b.max().y
-                && b.min().y <= a.max().y
-            {
+            if a.intersects(b) {
                 n += ca + cb;
             }
         }
     }
     n
-}
-
-/// How many corners `region`'s outlines have, holes included.
-fn corners_of(region: &MultiPolygon<f64>) -> usize {
-    (region.0.iter())
-        .map(|p| p.exterior().0.len() + p.interiors().iter().map(|r| r.0.len()).sum::<usize>())
-        .sum()
 }
 
 /// The hip points where `footprint` fits in `room` at `heading_rad`, as

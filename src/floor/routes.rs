@@ -33,7 +33,7 @@ use nalgebra::{Point3, Vector3};
 use super::layer::{Grid, Layer};
 use super::obstacles::{box_outline, FloorObstacles};
 use super::region::{shrunk, shrunk_room, Turned};
-use super::work::{CutShort, Work};
+use super::work::{unbounded, CutShort, Work};
 use super::Footprint;
 use crate::kept::Kept;
 use crate::scene::{hash_bits, BoxObstacle, Door, MeshObstacle, Room, Wall};
@@ -134,7 +134,7 @@ impl Routes {
 
     /// Like `of`, worked out afresh, whatever it costs.
     pub fn new(room: &Room, footprint: &Footprint, headings: &[f64]) -> Option<Routes> {
-        Routes::within(room, footprint, headings, &|_| true)
+        Routes::within(room, footprint, headings, &unbounded)
             .unwrap_or_else(|_| unreachable!("nothing cuts short routes allowed any work"))
     }
 

@@ -220,12 +220,10 @@ impl Region {
                     None => true,
                     Some(free) => {
                         let centre = Point::from(free.center());
-                        // Cut short, the work is all `work` counted.
                         let counted = self.nearest_counted(centre, 0, &mut own);
-                        let total = |cut: CutShort| CutShort {
-                            work: work.done.saturating_add(cut.work),
-                        };
-                        counted.map_err(total)?.is_none()
+                        counted
+                            .map_err(|cut| work.cut_short_with(cut.work))?
+                            .is_none()
                     }
                 };
                 let found = Emptiness {

@@ -25,6 +25,14 @@ impl<'a> Work<'a> {
         (self.within)(self.done.saturating_add(more))
     }
 
+    /// Cut short after this work and `inner`'s more, done inside it (the
+    /// work a cut short names is all that was counted).
+    pub fn cut_short_with(&self, inner: u64) -> CutShort {
+        CutShort {
+            work: self.done.saturating_add(inner),
+        }
+    }
+
     /// Add `units`; cut short if the work done is more than allowed.
     pub fn add(&mut self, units: u64) -> Result<(), CutShort> {
         self.done = self.done.saturating_add(units);
