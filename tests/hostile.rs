@@ -983,6 +983,20 @@ fn a_run_stays_within_the_bound_or_passes_it_whatever_the_threads() {
     }
 }
 
+/// A hall where the chair fits only far from the cup, answered in well
+/// under a second, is answered within the default bound: the rooms that
+/// finding why tries (the hall without a post or four) are charged for
+/// the pieces of floor that differ from the hall's, and a placement's
+/// search over floor already paid for is charged for looking, not for
+/// working it out again (charged in full, the run counted 284 M units and
+/// was refused).
+#[test]
+fn a_crowded_hall_searched_again_for_why_is_answered_within_the_default_bound() {
+    let bound = Limits::default().solver_work;
+    let work = metered_run(&hall_of_posts(6000, 15), bound, 2).expect("within the bound");
+    assert!(work < bound / 4, "{work} of {bound}");
+}
+
 /// Routes from a door past what the run has left are cut short (10,000
 /// units: less than their first heading), the run stopped with the limit
 /// named, and nothing of them kept: the runs after it, within the bound,

@@ -34,7 +34,8 @@ use super::face::face_normal;
 use super::placing::{Approach, Placing, SIDE_SLACK_MM};
 use super::search::{search, search_retrying_later, Candidate};
 use crate::floor::{
-    unbounded, CutShort, Doorway, FloorObstacles, Footprint, Misfit, Region, Routes, Shut, Work,
+    unbounded, CutShort, Doorway, FloorObstacles, Footprint, Looked, Misfit, Region, Routes, Shut,
+    Work,
 };
 use crate::geometry::Solid;
 use crate::kept::Kept;
@@ -96,9 +97,20 @@ struct Floor {
     doors: Option<Vec<Doorway>>,
     /// Whether it fits somewhere, doors aside.
     fits: bool,
-    /// What working out its routes cost, in units of the meter
-    /// ([`Base::floor_work`]).
+    /// What working it out cost, in units of the meter
+    /// ([`Base::floor_work`]): the searches for whether it fits anywhere
+    /// and the routes.
     work: u64,
+    /// What the routes cost of it (worked out afresh in each room).
+    routes_work: u64,
+    /// The pieces of floor the searches looked at (kept by the process,
+    /// and shared by a room that differs elsewhere).
+    looked: Looked,
+}
+
+/// The pieces of floor `regions`' searches looked at.
+fn looked_in(regions: &Regions) -> Looked {
+    (regions.iter()).fold(Looked::default(), |all, (_, r)| all.join(r.looked()))
 }
 
 /// A base that moves on the floor: its footprint, the person's own body
@@ -201,6 +213,8 @@ impl Mobile {
                         doors: None,
                         fits: false,
                         work: cut.work,
+                        routes_work: cut.work,
+                        looked: Looked::default(),
                     }
                 });
             let _ = cell.set(floor);
@@ -251,12 +265,15 @@ impl Mobile {
         } else {
             None
         };
+        let looked = looked_in(&regions);
         let Some(routes) = routes else {
             return Ok(Floor {
                 regions,
                 doors: None,
                 fits,
                 work: work.done,
+                routes_work: 0,
+                looked,
             });
         };
         work.add(routes.work)?;
@@ -275,10 +292,12 @@ impl Mobile {
         let regions: Regions = headings.iter().map(|&h| (h, reached(h))).collect();
         any_fits(&regions, &mut work)?;
         Ok(Floor {
+            looked: looked.join(looked_in(&regions)),
             regions,
             doors: Some(routes.doors.clone()),
             fits,
             work: work.done,
+            routes_work: routes.work,
         })
     }
 
@@ -347,6 +366,14 @@ impl Mobile {
     }
 }
 
+impl Mobile {
+    /// What finding how much smaller the base would fit in `room` cost
+    /// (0 where it fits, or it was not looked for).
+    fn misfit_work(&self, room: &Room) -> u64 {
+        self.misfits.cell(room).get().map_or(0, |&(_, work)| work)
+    }
+}
+
 impl Base for Mobile {
     fn own_body(&self) -> &OwnBody {
         &self.own
@@ -368,15 +395,25 @@ impl Base for Mobile {
     fn floor_work(&self, room: &Room) -> u64 {
         let cell = self.floor(room, Meter::unmetered());
         let floor = cell.get().map_or(0, |floor| floor.work);
-        let misfit = self.misfits.cell(room).get().map_or(0, |&(_, work)| work);
-        floor.saturating_add(misfit)
+        floor.saturating_add(self.misfit_work(room))
     }
 
+    /// What the floor costs beyond `beside`'s: its routes, where the base
+    /// fits nowhere the search for how much smaller it would fit, and the
+    /// pieces of floor `beside`'s searches did not look at (a post taken
+    /// away changes the pieces about it alone).
     fn floor_work_beside(&self, room: &Room, beside: &Room) -> u64 {
         if self.floor_key(room) == self.floor_key(beside) {
             return 0;
         }
-        self.floor_work(room)
+        let (cell, theirs) = (self.floor(room, Meter::unmetered()), self.floors.cell(beside));
+        let (Some(floor), Some(theirs)) = (cell.get(), theirs.get()) else {
+            return self.floor_work(room);
+        };
+        let pieces = floor.looked.work_not_in(&theirs.looked);
+        (floor.routes_work)
+            .saturating_add(pieces)
+            .saturating_add(self.misfit_work(room))
     }
 
     fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a> {

@@ -85,7 +85,7 @@ fn worked_out(room: &Room, footprint: &Footprint, heading_rad: f64) -> MultiPoly
     match shrunk_room(room, &turned, None) {
         Some(within) => {
             let obstacles = FloorObstacles::new(room, footprint);
-            admissible_in(within, &turned, &obstacles, &Grown::default()).0
+            admissible_in(within, &turned, &obstacles, &Grown::default()).free
         }
         None => MultiPolygon::new(Vec::new()),
     }

@@ -28,4 +28,4 @@ pub use obstacles::FloorObstacles;
 pub use region::{admissible, Zone};
 pub use routes::{Doorway, Entry, Routes, Shut};
 pub use tiles::Region;
-pub use work::{unbounded, CutShort, Work};
+pub use work::{unbounded, CutShort, Looked, Work};

@@ -101,18 +101,20 @@ impl Turned {
 /// shape (`grown` keeps them for `turned`). The same rectangle, footprint
 /// and obstacles near give the same piece: kept by the process (a room
 /// with one box moved or taken away, to learn why a reach failed or at a
-/// save in watch mode, works out again only the pieces near it). With
-/// the piece, what working it out costs ([`floor_work`]), whether or not
-/// it was kept.
+/// save in watch mode, works out again only the pieces near it).
 pub fn admissible_in(
     within: Rect<f64>,
     turned: &Turned,
     obstacles: &FloorObstacles,
     grown: &Grown,
-) -> (MultiPolygon<f64>, u64) {
+) -> Piece {
     let met = obstacles_met(cut_of(within), turned, obstacles);
     if met.is_empty() {
-        return (MultiPolygon::new(vec![within.to_polygon()]), 0);
+        return Piece {
+            free: MultiPolygon::new(vec![within.to_polygon()]),
+            work: 0,
+            key: 0,
+        };
     }
     let mut h = DefaultHasher::new();
     hash_corners(&[within.min(), within.max()], &mut h);
@@ -126,15 +128,32 @@ pub fn admissible_in(
         m.parts.iter().for_each(|&k| turned.hashes[k].hash(&mut h));
     }
     let pairs: usize = met.iter().map(|m| m.parts.len()).sum();
-    let kept = PIECES.get_or(h.finish(), || {
+    let key = h.finish();
+    let kept = PIECES.get_or(key, || {
         Arc::new(if pairs <= JOIN_FROM {
             free_of_parts(within, &met, turned)
         } else {
             free_of_met(within, &met, turned, grown)
         })
     });
-    let (piece, crossings) = kept.as_ref();
-    (piece.clone(), floor_work(*crossings))
+    let (free, crossings) = kept.as_ref();
+    Piece {
+        free: free.clone(),
+        work: floor_work(*crossings),
+        key,
+    }
+}
+
+/// A rectangle's piece of the admissible region (`admissible_in`).
+pub struct Piece {
+    /// Where the base fits within the rectangle.
+    pub free: MultiPolygon<f64>,
+    /// What working it out costs ([`floor_work`]), whether or not it was
+    /// kept by the process.
+    pub work: u64,
+    /// What it depends on, hashed: the same key, the same piece, kept
+    /// once (0: it meets no obstacle, and costs nothing).
+    pub key: u64,
 }
 
 /// Up to this many outlines grown part by part, a piece is worked out
@@ -517,7 +536,7 @@ pub fn admissible(
         return MultiPolygon::new(Vec::new());
     };
     let obstacles = FloorObstacles::new(room, footprint);
-    let (region, _) = admissible_in(within, &turned, &obstacles, &Grown::default());
+    let region = admissible_in(within, &turned, &obstacles, &Grown::default()).free;
     match zone {
         Some(z) => z.cut(region),
         None => region,

@@ -12,7 +12,7 @@ use geo::{Closest, ClosestPoint, Coord, MultiPolygon, Point, Polygon, Rect};
 
 use super::obstacles::FloorObstacles;
 use super::region::{admissible_in, shrunk_room, Grown, Turned, Zone};
-use super::work::{unbounded, CutShort, Work};
+use super::work::{unbounded, CutShort, Looked, Work};
 use super::{Footprint, Inside, Routes};
 use crate::meter::Meter;
 use crate::scene::Room;
@@ -30,18 +30,24 @@ const OVERLAP_MM: f64 = 1.0;
 /// only far from the target).
 const CHARGED_FROM_RING: usize = 2;
 
-/// A tile's piece of the region, and what working it out costs.
+/// A tile's piece of the region, what working it out costs and the key
+/// it is kept by (`region::Piece`).
 struct Tile {
     inside: Inside,
     work: u64,
+    key: u64,
+    /// What looking for the nearest point in the piece costs once it is
+    /// worked out (its corners, a unit each).
+    corners: u64,
 }
 
 /// Whether a region is empty, and what finding out cost (every tile its
-/// search looked at).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// search looked at, and those tiles' pieces).
+#[derive(Clone, Debug, PartialEq, Eq)]
 struct Emptiness {
     empty: bool,
     work: u64,
+    looked: Looked,
 }
 
 /// The admissible region at one heading.
@@ -129,6 +135,7 @@ impl Region {
             let _ = empty.set(Emptiness {
                 empty: true,
                 work: 0,
+                looked: Looked::default(),
             });
         }
         Region {
@@ -141,10 +148,13 @@ impl Region {
     /// Tile `(i, j)`'s piece of the region, and its work.
     fn tile(&self, i: usize, j: usize) -> &Tile {
         self.tiles[j * self.nx + i].get_or_init(|| {
-            let (piece, work) = self
-                .tile_rect(i, j)
-                .map(|r| admissible_in(r, &self.turned, &self.obstacles, &self.grown))
-                .unwrap_or_else(|| (MultiPolygon::new(Vec::new()), 0));
+            let (piece, work, key) = match self.tile_rect(i, j) {
+                Some(r) => {
+                    let piece = admissible_in(r, &self.turned, &self.obstacles, &self.grown);
+                    (piece.free, piece.work, piece.key)
+                }
+                None => (MultiPolygon::new(Vec::new()), 0, 0),
+            };
             let piece = match &self.zone {
                 Some(zone) => zone.cut(piece),
                 None => piece,
@@ -153,7 +163,13 @@ impl Region {
                 Some((routes, heading_rad)) => reached_pieces(piece, routes, *heading_rad),
                 None => piece,
             });
-            Tile { inside, work }
+            let corners = geo::CoordsIter::coords_count(inside.region()) as u64;
+            Tile {
+                inside,
+                work,
+                key,
+                corners,
+            }
         })
     }
 
@@ -205,6 +221,14 @@ impl Region {
         self.emptiness(&mut work).unwrap_or(false)
     }
 
+    /// The pieces the search for whether the base fits anywhere here
+    /// looked at (none before it was made).
+    pub fn looked(&self) -> Looked {
+        self.empty
+            .get()
+            .map_or_else(Looked::default, |found| found.looked.clone())
+    }
+
     /// Whether the base fits nowhere at this heading, the work of finding
     /// out (every tile its search looked at, each at what working it out
     /// costs, whether or not it is worked out now) added to `work`: cut
@@ -212,15 +236,15 @@ impl Region {
     /// kept).
     pub fn emptiness(&self, work: &mut Work<'_>) -> Result<bool, CutShort> {
         let found = match self.empty.get() {
-            Some(found) => *found,
+            Some(found) => (found.empty, found.work),
             None => {
                 let allowed = |units: u64| work.allows(units);
-                let mut own = Work::new(&allowed);
+                let mut own = Work::looking(&allowed);
                 let empty = match self.free {
                     None => true,
                     Some(free) => {
                         let centre = Point::from(free.center());
-                        let counted = self.nearest_counted(centre, 0, &mut own);
+                        let counted = self.nearest_counted(centre, 0, None, &mut own);
                         counted
                             .map_err(|cut| work.cut_short_with(cut.work))?
                             .is_none()
@@ -229,29 +253,35 @@ impl Region {
                 let found = Emptiness {
                     empty,
                     work: own.done,
+                    looked: own.looked(),
                 };
-                *self.empty.get_or_init(|| found)
+                let kept = self.empty.get_or_init(|| found);
+                (kept.empty, kept.work)
             }
         };
-        work.add(found.work)?;
-        Ok(found.empty)
+        let (empty, units) = found;
+        work.add(units)?;
+        Ok(empty)
     }
 
     /// The admissible point nearest to `p` (itself if admissible), found
     /// tile by tile outwards from `p`'s, none if the region is empty.
     pub fn nearest(&self, p: Point<f64>) -> Option<Point<f64>> {
         let mut work = Work::new(&unbounded);
-        self.nearest_counted(p, usize::MAX, &mut work)
+        self.nearest_counted(p, usize::MAX, None, &mut work)
             .unwrap_or(None)
     }
 
     /// Like `nearest`, `meter` charged the tiles looked at beyond those
     /// around `p` ([`CHARGED_FROM_RING`]); none once the run is past its
-    /// limit.
+    /// limit. A tile the search for whether the base fits anywhere looked
+    /// at (and paid for) is charged only its corners, what looking in it
+    /// again costs.
     pub fn nearest_metered(&self, p: Point<f64>, meter: &Meter) -> Option<Point<f64>> {
         let allowed = |units: u64| meter.would_stay_within(units);
         let mut work = Work::new(&allowed);
-        let found = self.nearest_counted(p, CHARGED_FROM_RING, &mut work);
+        let paid = self.empty.get().map(|found| &found.looked);
+        let found = self.nearest_counted(p, CHARGED_FROM_RING, paid, &mut work);
         match found {
             Ok(found) => {
                 meter.charge(work.done);
@@ -265,11 +295,13 @@ impl Region {
     }
 
     /// `nearest`, `work` charged each tile looked at `from_ring` steps or
-    /// more from `p`'s.
+    /// more from `p`'s: its corners where its piece is among those `paid`
+    /// for, what working it out costs otherwise.
     fn nearest_counted(
         &self,
         p: Point<f64>,
         from_ring: usize,
+        paid: Option<&Looked>,
         work: &mut Work<'_>,
     ) -> Result<Option<Point<f64>>, CutShort> {
         let Some(free) = self.free else {
@@ -292,7 +324,11 @@ impl Region {
             for (i, j) in ring_tiles(ci, cj, ring, self.nx, self.ny) {
                 let tile = self.tile(i, j);
                 if ring >= from_ring {
-                    work.add(tile.work)?;
+                    let units = match paid {
+                        Some(paid) if paid.contains(tile.key) => tile.corners,
+                        _ => tile.work,
+                    };
+                    work.add_piece(tile.key, units)?;
                 }
                 // A piece whose bounds are no nearer than the best cannot
                 // be nearer (nor, by a tie, replace it).

@@ -12,12 +12,40 @@ pub struct CutShort {
 pub struct Work<'a> {
     pub done: u64,
     within: &'a (dyn Fn(u64) -> bool + Sync),
+    /// The pieces added, where they are written down.
+    looked: Option<Looked>,
 }
 
 impl<'a> Work<'a> {
     /// None done yet; `within` says whether a total is allowed.
     pub fn new(within: &'a (dyn Fn(u64) -> bool + Sync)) -> Self {
-        Work { done: 0, within }
+        Work {
+            done: 0,
+            within,
+            looked: None,
+        }
+    }
+
+    /// Like `new`, and the pieces added written down ([`Work::looked`]).
+    pub fn looking(within: &'a (dyn Fn(u64) -> bool + Sync)) -> Self {
+        Work {
+            looked: Some(Looked::default()),
+            ..Work::new(within)
+        }
+    }
+
+    /// The pieces added, if they were written down.
+    pub fn looked(self) -> Looked {
+        self.looked.unwrap_or_default().settled()
+    }
+
+    /// Add the work of piece `key` (written down, if this work is
+    /// looking); cut short as `add`.
+    pub fn add_piece(&mut self, key: u64, units: u64) -> Result<(), CutShort> {
+        if let Some(looked) = &mut self.looked {
+            looked.add(key, units);
+        }
+        self.add(units)
     }
 
     /// Whether `more` units on top of the work done would be allowed.
@@ -44,6 +72,48 @@ impl<'a> Work<'a> {
     }
 }
 
+/// The pieces of floor a search looked at (by the key they are kept by,
+/// `region::Piece`), with what each costs: a room searched again with one
+/// thing changed works out again only the pieces that thing is in, and
+/// is charged for those alone. Each piece once, by key, once settled.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Looked(Vec<(u64, u64)>);
+
+impl Looked {
+    /// Piece `key`, costing `units` (one that costs nothing is shared by
+    /// any room, and not written down).
+    fn add(&mut self, key: u64, units: u64) {
+        if units > 0 {
+            self.0.push((key, units));
+        }
+    }
+
+    /// Sorted by key, each piece once.
+    fn settled(mut self) -> Looked {
+        self.0.sort_unstable();
+        self.0.dedup_by_key(|&mut (key, _)| key);
+        self
+    }
+
+    /// The pieces of both.
+    pub fn join(mut self, other: Looked) -> Looked {
+        self.0.extend(other.0);
+        self.settled()
+    }
+
+    /// Whether piece `key` was looked at.
+    pub fn contains(&self, key: u64) -> bool {
+        self.0.binary_search_by_key(&key, |&(k, _)| k).is_ok()
+    }
+
+    /// The work of the pieces looked at here and not in `other`.
+    pub fn work_not_in(&self, other: &Looked) -> u64 {
+        (self.0.iter())
+            .filter(|&&(key, _)| !other.contains(key))
+            .fold(0, |sum: u64, &(_, units)| sum.saturating_add(units))
+    }
+}
+
 /// Allows any work.
 pub fn unbounded(_: u64) -> bool {
     true
@@ -60,5 +130,25 @@ mod tests {
         assert_eq!(work.add(6), Ok(()));
         assert_eq!(work.add(4), Ok(()));
         assert_eq!(work.add(1), Err(CutShort { work: 11 }));
+    }
+
+    #[test]
+    fn a_search_again_is_charged_the_pieces_the_first_did_not_look_at() {
+        let mut work = Work::looking(&unbounded);
+        for (key, units) in [(1, 10), (2, 20), (0, 0), (1, 10)] {
+            work.add_piece(key, units).unwrap();
+        }
+        assert_eq!(work.done, 40, "the work is all counted, twice if twice");
+        let first = work.looked();
+        let mut again = Work::looking(&unbounded);
+        for (key, units) in [(2, 20), (4, 5), (5, 7)] {
+            again.add_piece(key, units).unwrap();
+        }
+        let again = again.looked();
+        assert_eq!(again.work_not_in(&first), 12, "4 and 5");
+        assert_eq!(first.work_not_in(&again), 10, "1, once");
+        assert_eq!(first.work_not_in(&first.clone().join(again)), 0);
+        assert!(first.contains(2) && !first.contains(0) && !first.contains(4));
+        assert_eq!(Work::new(&unbounded).looked(), Looked::default());
     }
 }
