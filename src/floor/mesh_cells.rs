@@ -10,10 +10,12 @@
 //! blocks as well as a closed one. Triangles lying on the floor (below
 //! `FLOOR_TOLERANCE_MM`) are floor and block nothing.
 //!
-//! For a part, the cells it is blocked by become rectangles (runs along x,
-//! merged over rows while they stay within a cell of the first row's), which
-//! the region grows by the part like boxes: exact where the mesh follows the
-//! cells, conservative by at most two cells elsewhere.
+//! For a part, the cells it is blocked by become rectangles (runs along x
+//! stacked over rows while they stay the same, then stacked further where
+//! a run only a cell in or out of the first covers at most two cells more:
+//! a scan's ragged edge), which the region grows by the part like boxes:
+//! exact where the mesh follows the cells, conservative by at most two
+//! cells elsewhere.
 
 use geo::Coord;
 use nalgebra::{Point3, Vector3};
@@ -231,30 +233,36 @@ impl MeshCells {
     }
 
     /// The rectangles of cells that block a part spanning `z_mm`, as
-    /// outlines on the floor.
+    /// outlines on the floor: the runs of each row stacked while they stay
+    /// the same, then those stacked further where that covers at most
+    /// `MAX_ADDED_CELLS` cells more (a scan's ragged edge).
     pub fn rectangles(&self, z_mm: [f64; 2]) -> Vec<Vec<Coord<f64>>> {
         let mask = self.part_mask(z_mm);
         if mask == 0 {
             return Vec::new();
         }
+        let exact = self.exact_rectangles(mask);
+        let merged = merge_ragged(exact);
+        merged.iter().map(|r| r.outline(self.cell_mm)).collect()
+    }
+
+    /// The cells meeting `mask` as rectangles, each a run of cells the
+    /// same in consecutive rows; by first row, then first cell.
+    fn exact_rectangles(&self, mask: u64) -> Vec<Rectangle> {
         let mut done: Vec<Rectangle> = Vec::new();
         let mut open: Vec<Rectangle> = Vec::new();
         for j in 0..self.ny {
             let row = &self.masks[j * self.nx..(j + 1) * self.nx];
             let mut next: Vec<Rectangle> = Vec::new();
             for (i0, i1) in runs(row, mask) {
-                match open.iter().position(|r| r.takes(i0, i1)) {
+                match open.iter().position(|r| r.x == [i0, i1]) {
                     Some(k) => {
                         let mut r = open.swap_remove(k);
-                        r.x = [r.x[0].min(i0), r.x[1].max(i1)];
                         r.y[1] = j;
+                        r.cells += i1 - i0 + 1;
                         next.push(r);
                     }
-                    None => next.push(Rectangle {
-                        first: [i0, i1],
-                        x: [i0, i1],
-                        y: [j, j],
-                    }),
+                    None => next.push(Rectangle::new([i0, i1], j)),
                 }
             }
             done.append(&mut open);
@@ -262,10 +270,36 @@ impl MeshCells {
         }
         done.append(&mut open);
         done.sort_by_key(|r| (r.y[0], r.x[0]));
-        done.iter().map(|r| r.outline(self.cell_mm)).collect()
+        done
     }
 }
 
+/// Cells a merge of two rectangles may cover that neither does.
+const MAX_ADDED_CELLS: usize = 2;
+
+/// `exact` (by first row) with each stacked on the one just below it
+/// where their ends are within a cell of where that began and the
+/// rectangle round both covers at most `MAX_ADDED_CELLS` cells more: a
+/// ragged edge, a cell in or out from row to row, becomes one rectangle,
+/// while an edge that moves for good (where two boxes meet) stays exact.
+fn merge_ragged(exact: Vec<Rectangle>) -> Vec<Rectangle> {
+    let mut done: Vec<Rectangle> = Vec::new();
+    let mut open: Vec<Rectangle> = Vec::new();
+    for e in exact {
+        let (ended, still): (Vec<Rectangle>, Vec<Rectangle>) =
+            open.into_iter().partition(|r| r.y[1] + 1 < e.y[0]);
+        done.extend(ended);
+        open = still;
+        let joins = |r: &Rectangle| r.y[1] + 1 == e.y[0] && r.takes(&e);
+        match open.iter().position(joins) {
+            Some(k) => open[k].stack(&e),
+            None => open.push(e),
+        }
+    }
+    done.extend(open);
+    done.sort_by_key(|r| (r.y[0], r.x[0]));
+    done
+}
 /// Where in a cell (in cells from its corner) faces are sampled.
 const SAMPLE: (f64, f64) = (0.500_000_314_159, 0.500_000_271_828);
 
@@ -290,18 +324,52 @@ fn height_in(v: &[Point3<f64>; 3], x: f64, y: f64) -> Option<f64> {
 }
 
 /// Cells `[x0, x1]` over rows `[y0, y1]`, inclusive; `first` is the run it
-/// began with.
+/// began with, `cells` how many of its cells are blocked.
 struct Rectangle {
     first: [usize; 2],
     x: [usize; 2],
     y: [usize; 2],
+    cells: usize,
 }
 
 impl Rectangle {
-    /// Whether the run `i0..=i1` may join it: its ends are within a cell
-    /// of the ends of the run it began with.
-    fn takes(&self, i0: usize, i1: usize) -> bool {
-        i0.abs_diff(self.first[0]) <= 1 && i1.abs_diff(self.first[1]) <= 1
+    /// The run `x` in row `j`.
+    fn new(x: [usize; 2], j: usize) -> Self {
+        Rectangle {
+            first: x,
+            x,
+            y: [j, j],
+            cells: x[1] - x[0] + 1,
+        }
+    }
+
+    /// The cells of its outline.
+    fn area(&self) -> usize {
+        (self.x[1] - self.x[0] + 1) * (self.y[1] - self.y[0] + 1)
+    }
+
+    /// The rectangle round it and `e`, the rows just below it.
+    fn round(&self, e: &Rectangle) -> Rectangle {
+        Rectangle {
+            first: self.first,
+            x: [self.x[0].min(e.x[0]), self.x[1].max(e.x[1])],
+            y: [self.y[0], e.y[1]],
+            cells: self.cells + e.cells,
+        }
+    }
+
+    /// Whether `e`, the rows just below, may be stacked on it: its ends
+    /// are within a cell of the run it began with, and the rectangle round
+    /// both covers at most `MAX_ADDED_CELLS` cells neither is blocked at.
+    fn takes(&self, e: &Rectangle) -> bool {
+        let near = e.x[0].abs_diff(self.first[0]) <= 1 && e.x[1].abs_diff(self.first[1]) <= 1;
+        let round = self.round(e);
+        near && round.area() - round.cells <= self.area() - self.cells + MAX_ADDED_CELLS
+    }
+
+    /// `e` stacked on it.
+    fn stack(&mut self, e: &Rectangle) {
+        *self = self.round(e);
     }
 
     fn outline(&self, cell_mm: f64) -> Vec<Coord<f64>> {
@@ -515,6 +583,21 @@ mod tests {
         assert!((low - 1000.0 * 1000.0).abs() < 1.0, "{low}");
         let high = area(&cells.rectangles([500.0, 1400.0]));
         assert!((high - 500.0 * 1000.0).abs() < 1.0, "{high}");
+    }
+
+    #[test]
+    fn two_tops_that_meet_in_one_row_block_their_cells_not_a_cell_more() {
+        // A counter whose end overlaps a narrower one's by a row of cells,
+        // and one cell further out: the rows past the overlap stay exact.
+        let quads = [
+            top(1420.0, 1600.0, 2175.0, 2180.0, 20.0),
+            top(1415.0, 735.0, 1465.0, 1605.0, 20.0),
+        ];
+        let f = Footprint::circle(250.0, 300.0);
+        let cells = MeshCells::new(&[mesh(&quads)], [4000.0, 3200.0], &f).unwrap();
+        let rects = cells.rectangles([0.0, 300.0]);
+        let union = 755.0 * 580.0 + 50.0 * 870.0 - 45.0 * 5.0;
+        assert!((area(&rects) - union).abs() < 1.0, "{}", area(&rects));
     }
 
     #[test]
