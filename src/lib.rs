@@ -128,7 +128,8 @@ pub fn run_counting(
 ) -> Result<(Report, u64), Error> {
     let all: Vec<&scenario::TaskSpec> = scenario.tasks.iter().collect();
     let ran = scenario.run_tasks(&all, progress)?;
-    let work = ran.iter().map(|r| r.work).sum();
+    let work: u64 = ran.iter().map(|r| r.work).sum();
     let tasks = ran.into_iter().map(|r| r.report).collect();
-    Ok((scenario.report(tasks), work))
+    let (report, standards) = scenario.report(tasks, work)?;
+    Ok((report, work + standards))
 }

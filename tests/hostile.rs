@@ -997,6 +997,28 @@ fn a_crowded_hall_searched_again_for_why_is_answered_within_the_default_bound() 
     assert!(work < bound / 4, "{work} of {bound}");
 }
 
+/// A standard's rules work out floor over the whole room (where a turning
+/// space fits, a route's width found by halving, the free floor under
+/// each element): that counts towards the bound as the tasks' work does,
+/// the same on any thread count, and a run past it stops with the limit
+/// named (before, ada2010 in a hall of 1,980 posts ran 100 s unmetered).
+#[test]
+fn a_standards_floor_counts_towards_the_bound() {
+    let plain = through_a_door("standard");
+    let checked = format!("{plain}standard ada2010 in r\n");
+    let without = metered_run(&plain, u64::MAX / 2, 2).expect("within the bound");
+    let with = metered_run(&checked, u64::MAX / 2, 2).expect("within the bound");
+    assert!(with > without, "{with} against {without}");
+    for threads in [1, 3] {
+        assert_eq!(metered_run(&checked, with, threads).ok(), Some(with));
+        let past = metered_run(&checked, with - 1, threads).expect_err("past the bound");
+        assert!(
+            matches!(past.kind(), ErrorKind::TooMuchWork { limit } if *limit == with - 1),
+            "{past}"
+        );
+    }
+}
+
 /// Routes from a door past what the run has left are cut short (10,000
 /// units: less than their first heading), the run stopped with the limit
 /// named, and nothing of them kept: the runs after it, within the bound,

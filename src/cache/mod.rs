@@ -101,11 +101,11 @@ impl TaskCache {
         let ran = stale.len();
         self.kept = kept;
         self.results = results;
-        let report = scenario.report(tasks);
+        let (report, standards) = scenario.report(tasks, work)?;
         let stats = CacheStats {
             reused: keys.len() - ran,
             ran,
-            work,
+            work: work + standards,
         };
         Ok((report, stats))
     }

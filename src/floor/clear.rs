@@ -4,6 +4,11 @@
 //! rectangle of floor is free (a clear floor space), where a circle or a
 //! T of floor fits (a turning space), and how wide a way is from a door to
 //! a place (the widest disc that travels from one to the other).
+//!
+//! Each region is worked out over the whole room and charged to the run's
+//! meter as the bases' floor is (`region::Piece`'s work, kept or not);
+//! once the run is past its limit, no more are worked out (each is then
+//! empty, and the run gives no answer).
 
 use geo::{
     BooleanOps, BoundingRect, Contains, Coord, Distance, Euclidean, InteriorPoint, Intersects,
@@ -18,6 +23,7 @@ use super::obstacles::FloorObstacles;
 use super::region::{admissible_in, shrunk_room, Grown, Turned};
 use super::{FloorPart, Footprint};
 use crate::kept::Kept;
+use crate::meter::Meter;
 use crate::scene::{BoxObstacle, Door, Room, Wall};
 
 /// Sides of the polygon inscribed in a circle: its flats are within a
@@ -33,7 +39,7 @@ pub struct FreeFloor {
 }
 
 impl FreeFloor {
-    pub fn new(room: &Room, below_mm: f64) -> Self {
+    pub fn new(room: &Room, below_mm: f64, meter: &Meter) -> Self {
         // A point (a square a micrometre across) as the footprint.
         let h = 0.0005;
         let point = Footprint {
@@ -45,7 +51,7 @@ impl FreeFloor {
             )],
         };
         FreeFloor {
-            region: whole(room, &point, 0.0),
+            region: whole(room, &point, 0.0, meter),
         }
     }
 
@@ -63,31 +69,46 @@ fn part(outline_mm: Vec<Vector2<f64>>, below_mm: f64) -> FloorPart {
     }
 }
 
-/// Where `footprint` fits in the whole room at `heading_rad`.
-fn whole(room: &Room, footprint: &Footprint, heading_rad: f64) -> Arc<MultiPolygon<f64>> {
+/// Where `footprint` fits in the whole room at `heading_rad`, its work
+/// charged to `meter` (nowhere, worked out no more, once the run is past
+/// its limit).
+fn whole(
+    room: &Room,
+    footprint: &Footprint,
+    heading_rad: f64,
+    meter: &Meter,
+) -> Arc<MultiPolygon<f64>> {
+    if meter.exceeded() {
+        return Arc::new(MultiPolygon::new(Vec::new()));
+    }
     let mut h = DefaultHasher::new();
     footprint.hash_with_floor(room, &mut h);
     heading_rad.to_bits().hash(&mut h);
-    WHOLE.get_or(h.finish(), || {
-        Arc::new(worked_out(room, footprint, heading_rad))
-    })
+    let (region, work) = WHOLE.get_or(h.finish(), || {
+        let (region, work) = worked_out(room, footprint, heading_rad);
+        (Arc::new(region), work)
+    });
+    meter.charge(work);
+    region
 }
 
 /// The regions [`whole`] worked out in this process: watch mode checks a
 /// standard's rules again at every save, and a route's width is found by
 /// halving, each step a region (about 15 a clear floor space); 512 holds
 /// those of a kitchen's elements several times.
-static WHOLE: Kept<Arc<MultiPolygon<f64>>> = Kept::new(512);
+static WHOLE: Kept<(Arc<MultiPolygon<f64>>, u64)> = Kept::new(512);
 
-/// Where `footprint`, turned to `heading_rad`, fits in `room`, worked out.
-fn worked_out(room: &Room, footprint: &Footprint, heading_rad: f64) -> MultiPolygon<f64> {
+/// Where `footprint`, turned to `heading_rad`, fits in `room`, worked out,
+/// and what that cost.
+fn worked_out(room: &Room, footprint: &Footprint, heading_rad: f64) -> (MultiPolygon<f64>, u64) {
     let turned = Turned::new(footprint, heading_rad);
     match shrunk_room(room, &turned, None) {
         Some(within) => {
             let obstacles = FloorObstacles::new(room, footprint);
-            admissible_in(within, &turned, &obstacles, &Grown::default()).free
+            let piece = admissible_in(within, &turned, &obstacles, &Grown::default());
+            (piece.free, piece.work)
         }
-        None => MultiPolygon::new(Vec::new()),
+        None => (MultiPolygon::new(Vec::new()), 0),
     }
 }
 
@@ -116,9 +137,10 @@ pub fn disc_centre(
     radius_mm: f64,
     below_mm: f64,
     on: Option<&RouteFloor>,
+    meter: &Meter,
 ) -> Option<Point<f64>> {
     let footprint = disc(radius_mm, below_mm);
-    let region = on_route(whole(room, &footprint, 0.0), on);
+    let region = on_route(whole(room, &footprint, 0.0, meter), on);
     let obstacles = FloorObstacles::new(room, &footprint);
     let clear = |c: Point<f64>| {
         let (x, y) = (c.x(), c.y());
@@ -164,6 +186,7 @@ pub fn t_space(
     arm_mm: f64,
     below_mm: f64,
     on: Option<&RouteFloor>,
+    meter: &Meter,
 ) -> Option<(Point<f64>, f64)> {
     let h = square_mm / 2.0;
     let a = arm_mm / 2.0;
@@ -181,7 +204,7 @@ pub fn t_space(
     };
     (0..4).find_map(|k| {
         let heading = f64::from(k) * std::f64::consts::FRAC_PI_2;
-        let region = on_route(whole(room, &t, heading), on);
+        let region = on_route(whole(room, &t, heading, meter), on);
         let centre = region.0.iter().find_map(|p| p.interior_point())?;
         Some((centre, heading))
     })
@@ -199,6 +222,7 @@ pub fn route_width(
     to: &Polygon<f64>,
     below_mm: f64,
     most_mm: f64,
+    meter: &Meter,
 ) -> f64 {
     let Some(target) = to.bounding_rect() else {
         return 0.0;
@@ -212,7 +236,7 @@ pub fn route_width(
             target.min() - Coord { x: r, y: r },
             target.max() + Coord { x: r, y: r },
         );
-        let region = whole(room, &disc(r, below_mm), 0.0);
+        let region = whole(room, &disc(r, below_mm), 0.0, meter);
         region
             .0
             .iter()
@@ -248,7 +272,7 @@ pub struct RouteFloor {
 
 impl RouteFloor {
     /// None for a room without doors.
-    pub fn new(room: &Room, width_mm: f64, below_mm: f64) -> Option<Self> {
+    pub fn new(room: &Room, width_mm: f64, below_mm: f64, meter: &Meter) -> Option<Self> {
         if room.doors.is_empty() {
             return None;
         }
@@ -256,7 +280,7 @@ impl RouteFloor {
         let starts: Vec<Rect<f64>> = (room.doors.iter())
             .filter_map(|d| doorway(room, d, r))
             .collect();
-        let region = whole(room, &disc(r, below_mm), 0.0);
+        let region = whole(room, &disc(r, below_mm), 0.0, meter);
         let pieces = (region.0.iter())
             .filter(|piece| starts.iter().any(|s| piece.intersects(s)))
             .cloned()
@@ -412,12 +436,12 @@ mod tests {
                 Vec::new(),
             )
         };
-        assert!(disc_centre(&corridor(1526.0), 762.5, 685.0, None).is_some());
-        assert!(disc_centre(&corridor(1524.0), 762.5, 685.0, None).is_none());
+        assert!(disc_centre(&corridor(1526.0), 762.5, 685.0, None, Meter::unmetered()).is_some());
+        assert!(disc_centre(&corridor(1524.0), 762.5, 685.0, None, Meter::unmetered()).is_none());
         // A counter with knee space under it (from 700 mm) leaves the floor.
         let mut raised = corridor(1000.0);
         raised.boxes[1].corner_mm.z = 700.0;
-        assert!(disc_centre(&raised, 762.5, 685.0, None).is_some());
+        assert!(disc_centre(&raised, 762.5, 685.0, None, Meter::unmetered()).is_some());
     }
 
     #[test]
@@ -425,7 +449,7 @@ mod tests {
         // A T in a 1525 mm square with 915 mm arms fits where a square
         // does; a 915 mm corridor crossing a 1525 mm one makes a T too.
         let open = room([1525.5, 1525.5], Vec::new(), Vec::new());
-        assert!(t_space(&open, 1525.0, 915.0, 685.0, None).is_some());
+        assert!(t_space(&open, 1525.0, 915.0, 685.0, None, Meter::unmetered()).is_some());
         // Fill the square's corners beside the stem: still a T.
         let corners = room(
             [1525.5, 1525.5],
@@ -435,7 +459,7 @@ mod tests {
             ],
             Vec::new(),
         );
-        assert!(t_space(&corners, 1525.0, 915.0, 685.0, None).is_some());
+        assert!(t_space(&corners, 1525.0, 915.0, 685.0, None, Meter::unmetered()).is_some());
         // Narrow the stem below 915 mm: no T.
         let narrow = room(
             [1525.5, 1525.5],
@@ -445,7 +469,7 @@ mod tests {
             ],
             Vec::new(),
         );
-        let found = t_space(&narrow, 1525.0, 915.0, 685.0, None);
+        let found = t_space(&narrow, 1525.0, 915.0, 685.0, None, Meter::unmetered());
         assert!(found.is_none(), "{found:?}");
     }
 
@@ -475,14 +499,21 @@ mod tests {
             ]),
             Vec::new(),
         );
-        let width = route_width(&r, &r.doors[0], &far, 2030.0, 3000.0);
+        let width = route_width(&r, &r.doors[0], &far, 2030.0, 3000.0, Meter::unmetered());
         assert!((width - 800.0).abs() <= 2.0, "{width}");
         // Wider than the door: the door is ruled on apart.
         let mut wide = r.clone();
         wide.boxes[1].corner_mm.x = 3400.0;
-        let width = route_width(&wide, &wide.doors[0], &far, 2030.0, 3000.0);
+        let width = route_width(
+            &wide,
+            &wide.doors[0],
+            &far,
+            2030.0,
+            3000.0,
+            Meter::unmetered(),
+        );
         assert!((width - 1800.0).abs() <= 2.0, "{width}");
-        let free = FreeFloor::new(&r, 685.0);
+        let free = FreeFloor::new(&r, 685.0, Meter::unmetered());
         assert!(free.holds(&far));
         let on_counter = Polygon::new(
             LineString::from(vec![

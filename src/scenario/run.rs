@@ -188,30 +188,45 @@ impl Scenario {
     }
 
     /// The report of a run whose tasks, all of them in the order of the
-    /// file, answered `tasks`: those answers, then the standards (checked
-    /// again each time: they read the whole room), and what the file
-    /// expects of them.
-    pub fn report(&self, mut tasks: Vec<TaskReport>) -> Report {
+    /// file, answered `tasks` (`spent` units of work, counted against the
+    /// bound with the standards'): those answers, then the standards
+    /// (checked again each time: they read the whole room), and what the
+    /// file expects of them; with the standards' work. An error where the
+    /// standards would take the run past its bound.
+    pub fn report(&self, mut tasks: Vec<TaskReport>, spent: u64) -> Result<(Report, u64), Error> {
         let all: Vec<&TaskSpec> = self.tasks.iter().collect();
-        let standards = self.run_standards(&all, &tasks);
+        let run = RunWork::new(self.work.limit);
+        run.charge(spent);
+        let standards = self.run_standards(&all, &tasks, &run);
+        if run.exceeded() {
+            return Err(self.work.exceeded());
+        }
         tasks.extend(standards);
-        Report {
+        let report = Report {
             schema: SCHEMA_VERSION,
             file: self.file.clone(),
             notes: self.notes(),
             expectations: self.judge(&tasks),
             tasks,
-        }
+        };
+        Ok((report, run.spent() - spent))
     }
 
-    /// Each standard checked on its room, in parallel, in the order given;
-    /// beside each element, what the tasks (`tasks`, whose answers are
-    /// `answers`) in that room about it answered.
-    pub fn run_standards(&self, tasks: &[&TaskSpec], answers: &[TaskReport]) -> Vec<TaskReport> {
+    /// Each standard checked on its room, in parallel, in the order given,
+    /// its work told to `run`; beside each element, what the tasks
+    /// (`tasks`, whose answers are `answers`) in that room about it
+    /// answered.
+    fn run_standards(
+        &self,
+        tasks: &[&TaskSpec],
+        answers: &[TaskReport],
+        run: &Arc<RunWork>,
+    ) -> Vec<TaskReport> {
         self.standards
             .par_iter()
             .map(|spec| {
-                let mut report = spec.standard.check(&self.rooms[spec.room]);
+                let meter = Meter::of(run);
+                let mut report = spec.standard.check(&self.rooms[spec.room], &meter);
                 for element in &mut report.elements {
                     let about = tasks.iter().zip(answers).filter(|(t, _)| {
                         t.room == spec.room && t.subject_name(self) == element.name

@@ -33,6 +33,7 @@ use crate::bases::Approach;
 use crate::floor::{
     disc_centre, door_clear_width, knee_limited, route_width, t_space, FreeFloor, RouteFloor,
 };
+use crate::meter::Meter;
 use crate::plugin::{
     Options, ParamSpec, Params, Plugin, Settings, SettingsError, Standard, StandardPlugin,
 };
@@ -123,12 +124,12 @@ impl StandardPlugin for Ada2010 {
 struct Checked(Approach);
 
 impl Standard for Checked {
-    fn check(&self, room: &Room) -> StandardReport {
+    fn check(&self, room: &Room, meter: &Meter) -> StandardReport {
         // Floor under an element counts only so deep (306).
         let knees = knee_limited(room, KNEE_HIGH, KNEE_DEEPEST);
-        let floor = FreeFloor::new(&knees, KNEE_HIGH);
+        let floor = FreeFloor::new(&knees, KNEE_HIGH, meter);
         // A route's floor, to a rounded 915 mm (as `route` measures).
-        let routes = RouteFloor::new(room, ROUTE - 0.5, HEADROOM);
+        let routes = RouteFloor::new(room, ROUTE - 0.5, HEADROOM, meter);
         let mut notes = Vec::new();
         if room.doors.is_empty() {
             notes.push("the room has no `door`: routes (403.5.1) are not checked".to_string());
@@ -145,7 +146,7 @@ impl Standard for Checked {
             checks: 0,
             failed: 0,
             notes,
-            room_rules: std::iter::once(turning_space(&knees, routes.as_ref()))
+            room_rules: std::iter::once(turning_space(&knees, routes.as_ref(), meter))
                 .chain(room.doors.iter().map(|d| door_width(room, d)))
                 .collect(),
             elements: {
@@ -154,6 +155,7 @@ impl Standard for Checked {
                     floor: &floor,
                     routes: routes.as_ref(),
                     meshes: mesh_bounds(room),
+                    meter,
                 };
                 room.targets
                     .iter()
@@ -167,12 +169,12 @@ impl Standard for Checked {
 
 /// 304: a 1525 mm circle, or else a T, on floor a route from a door gets
 /// to (where the room has doors).
-fn turning_space(room: &Room, routes: Option<&RouteFloor>) -> RuleCheck {
+fn turning_space(room: &Room, routes: Option<&RouteFloor>, meter: &Meter) -> RuleCheck {
     let limit = format!("a {TURNING:.0} mm circle, or a T in a {TURNING:.0} mm square with {TURNING_ARM:.0} mm arms");
     // Exactly the rule's figures hold.
     let radius = TURNING / 2.0 - EXACT_MM;
     let (square, arm) = (TURNING - 2.0 * EXACT_MM, TURNING_ARM - 2.0 * EXACT_MM);
-    if let Some(c) = disc_centre(room, radius, KNEE_HIGH, routes) {
+    if let Some(c) = disc_centre(room, radius, KNEE_HIGH, routes, meter) {
         return RuleCheck {
             section: "304.3.1".into(),
             rule: "turning space".into(),
@@ -189,7 +191,7 @@ fn turning_space(room: &Room, routes: Option<&RouteFloor>) -> RuleCheck {
             }),
         };
     }
-    if let Some((c, heading)) = t_space(room, square, arm, KNEE_HIGH, routes) {
+    if let Some((c, heading)) = t_space(room, square, arm, KNEE_HIGH, routes, meter) {
         return RuleCheck {
             section: "304.3.2".into(),
             rule: "turning space".into(),
@@ -207,8 +209,8 @@ fn turning_space(room: &Room, routes: Option<&RouteFloor>) -> RuleCheck {
         };
     }
     let cut_off = routes.is_some()
-        && (disc_centre(room, radius, KNEE_HIGH, None).is_some()
-            || t_space(room, square, arm, KNEE_HIGH, None).is_some());
+        && (disc_centre(room, radius, KNEE_HIGH, None, meter).is_some()
+            || t_space(room, square, arm, KNEE_HIGH, None, meter).is_some());
     RuleCheck {
         section: "304.3".into(),
         rule: "turning space".into(),
@@ -289,6 +291,8 @@ struct Measure<'r> {
     floor: &'r FreeFloor,
     routes: Option<&'r RouteFloor>,
     meshes: Vec<BoxObstacle>,
+    /// What the floors worked out are charged to.
+    meter: &'r Meter,
 }
 
 /// Each mesh's bounding box, named as the mesh.
@@ -333,7 +337,7 @@ fn element(m: &Measure<'_>, t: &Target, approach: Approach) -> ElementCheck {
     // The chosen approach's route, measured.
     if m.routes.is_some() {
         usage.rules.pop();
-        usage.rules.push(route(m.room, &usage.space));
+        usage.rules.push(route(m.room, &usage.space, m.meter));
     }
     ElementCheck {
         name: t.name.clone(),
@@ -629,13 +633,13 @@ fn clear_floor(
 }
 
 /// 403.5.1: the widest way from a door to `space`.
-fn route(room: &Room, space: &Polygon<f64>) -> RuleCheck {
+fn route(room: &Room, space: &Polygon<f64>, meter: &Meter) -> RuleCheck {
     let (width, door) = room
         .doors
         .iter()
         .map(|d| {
             (
-                route_width(room, d, space, HEADROOM, ROUTE_MOST),
+                route_width(room, d, space, HEADROOM, ROUTE_MOST, meter),
                 d.name.as_str(),
             )
         })
@@ -685,12 +689,14 @@ mod tests {
         };
         let switch = Point3::new(0.0, 2000.0, 1000.0);
         let reach_from_the_room = |room: &Room| {
-            let floor = FreeFloor::new(room, KNEE_HIGH);
+            let meter = Meter::unmetered();
+            let floor = FreeFloor::new(room, KNEE_HIGH, meter);
             let m = Measure {
                 room,
                 floor: &floor,
                 routes: None,
                 meshes: mesh_bounds(room),
+                meter,
             };
             forward(&m, &switch, &approached(room, &switch, Vector2::x())).rules[0].clone()
         };
