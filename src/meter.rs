@@ -18,8 +18,9 @@
 //! passes a limit whatever order its terms come in). Once past, solves
 //! stop early and the run's answers are thrown away.
 
+use std::collections::BTreeSet;
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 
 /// How many solids a posture check counts (an arm's links and hand).
 pub const POSTURE_CAPSULES: u64 = 8;
@@ -85,12 +86,17 @@ impl RunWork {
 pub struct Meter {
     own: AtomicU64,
     run: Option<Arc<RunWork>>,
+    /// The pieces of floor this task has been charged for working out
+    /// (by the key the process keeps them by): looked at again, they are
+    /// charged for looking alone (`floor/tiles.rs`).
+    pieces: Mutex<BTreeSet<u64>>,
 }
 
 /// A meter of no run, which never stops a solve.
 static UNMETERED: Meter = Meter {
     own: AtomicU64::new(0),
     run: None,
+    pieces: Mutex::new(BTreeSet::new()),
 };
 
 impl Meter {
@@ -99,7 +105,19 @@ impl Meter {
         Meter {
             own: AtomicU64::new(0),
             run: Some(Arc::clone(run)),
+            pieces: Mutex::default(),
         }
+    }
+
+    /// Whether this task looks at piece of floor `key` for the first time
+    /// (it is written down; a meter of no run writes nothing down). Which
+    /// of two threads of one task comes first does not change the sum.
+    pub fn first_look(&self, key: u64) -> bool {
+        if self.run.is_none() {
+            return true;
+        }
+        let mut pieces = self.pieces.lock().unwrap_or_else(|e| e.into_inner());
+        pieces.insert(key)
     }
 
     /// A meter that never stops anything (benchmarks of one solver, tests

@@ -17,7 +17,7 @@
 use std::cell::OnceCell;
 use std::collections::hash_map::DefaultHasher;
 use std::collections::HashMap;
-use std::hash::Hasher;
+use std::hash::{Hash, Hasher};
 use std::rc::Rc;
 use std::sync::atomic::AtomicU64;
 use std::sync::atomic::Ordering::Relaxed;
@@ -101,16 +101,30 @@ struct Floor {
     /// ([`Base::floor_work`]): the searches for whether it fits anywhere
     /// and the routes.
     work: u64,
-    /// What the routes cost of it (worked out afresh in each room).
-    routes_work: u64,
-    /// The pieces of floor the searches looked at (kept by the process,
-    /// and shared by a room that differs elsewhere).
-    looked: Looked,
 }
 
-/// The pieces of floor `regions`' searches looked at.
-fn looked_in(regions: &Regions) -> Looked {
-    (regions.iter()).fold(Looked::default(), |all, (_, r)| all.join(r.looked()))
+/// What `floor`, of a room with more in it, found at heading `k`: whether
+/// the base fits there (then it fits here: taking obstacles or doors away
+/// never takes floor away), and the pieces its search looked at.
+fn found_there(floor: Option<&Floor>, k: usize) -> Option<(bool, Looked)> {
+    let (_, region) = floor?.regions.get(k)?;
+    let empty = region.known_empty()?;
+    Some((!empty, region.looked()))
+}
+
+/// Two keys as one.
+fn hash_pair(a: u64, b: u64) -> u64 {
+    let mut h = DefaultHasher::new();
+    (a, b).hash(&mut h);
+    h.finish()
+}
+
+/// `region`, beside what a room with more in it found (`Region::beside`).
+fn hinted(region: Region, there: Option<(bool, Looked)>) -> Arc<Region> {
+    Arc::new(match there {
+        Some((fits, paid)) => region.beside(fits, paid),
+        None => region,
+    })
 }
 
 /// A base that moves on the floor: its footprint, the person's own body
@@ -193,6 +207,18 @@ impl Mobile {
     /// its routes cost told to `meter`; cut short once the run would pass
     /// its work: nowhere then, and kept by no other run).
     fn floor(&self, room: &Room, meter: &Meter) -> Arc<OnceLock<Floor>> {
+        self.floor_within(room, None, meter)
+    }
+
+    /// `floor`, for a room that is `wider` (whose floor is worked out)
+    /// with obstacles or doors taken away: at each heading where the base
+    /// fits there, it fits here, unsearched.
+    fn floor_within(
+        &self,
+        room: &Room,
+        wider: Option<&Room>,
+        meter: &Meter,
+    ) -> Arc<OnceLock<Floor>> {
         let cell = self.floors.cell(room);
         // Not `get_or_init`: the routes work out a heading's tiles in
         // parallel, and a thread waiting for them may take up another task
@@ -201,9 +227,15 @@ impl Mobile {
         // out; the first kept stays (it measured 0.3 s slower on
         // kitchen_wheelchair, too).
         if cell.get().is_none() {
-            let key = self.floor_key(room);
+            let mut key = self.floor_key(room);
+            let hint = wider.map(|w| {
+                // Its work depends on the hint: kept apart.
+                key = hash_pair(key, self.floor_key(w));
+                self.floors.cell(w)
+            });
+            let hint = hint.as_ref().and_then(|c| c.get());
             let floor = FLOORS
-                .get_or_try(key, || self.compute_floor(room, meter))
+                .get_or_try(key, || self.compute_floor(room, hint, meter))
                 .unwrap_or_else(|cut| {
                     // Past the run's limit: the run stops.
                     meter.charge(cut.work);
@@ -213,8 +245,6 @@ impl Mobile {
                         doors: None,
                         fits: false,
                         work: cut.work,
-                        routes_work: cut.work,
-                        looked: Looked::default(),
                     }
                 });
             let _ = cell.set(floor);
@@ -240,19 +270,28 @@ impl Mobile {
 
     /// The admissible regions, one per heading searched; where the room
     /// has doors, cut to what the base can get to from one
-    /// (`floor/routes.rs`).
-    fn compute_floor(&self, room: &Room, meter: &Meter) -> Result<Floor, CutShort> {
+    /// (`floor/routes.rs`). Where `hint` is the floor of this room with
+    /// more in it, each heading it fits at is not searched.
+    fn compute_floor(
+        &self,
+        room: &Room,
+        hint: Option<&Floor>,
+        meter: &Meter,
+    ) -> Result<Floor, CutShort> {
         let zone = self.placing.zone.as_ref();
         let headings = &self.placing.headings;
         let obstacles = Arc::new(FloorObstacles::new(room, &self.footprint));
-        let region = |h: f64| {
+        let region = |k: usize, h: f64| {
             let obstacles = Arc::clone(&obstacles);
-            Arc::new(Region::new(room, &self.footprint, h, zone, obstacles))
+            let region = Region::new(room, &self.footprint, h, zone, obstacles);
+            hinted(region, found_there(hint, k))
         };
         let regions: Regions = if self.footprint.turns() {
-            headings.iter().map(|&h| (h, region(h))).collect()
+            (headings.iter().enumerate())
+                .map(|(k, &h)| (h, region(k, h)))
+                .collect()
         } else {
-            let one = region(0.0);
+            let one = region(0, 0.0);
             headings.iter().map(|&h| (h, Arc::clone(&one))).collect()
         };
         let within = |units: u64| meter.would_stay_within(units);
@@ -265,39 +304,30 @@ impl Mobile {
         } else {
             None
         };
-        let looked = looked_in(&regions);
         let Some(routes) = routes else {
             return Ok(Floor {
                 regions,
                 doors: None,
                 fits,
                 work: work.done,
-                routes_work: 0,
-                looked,
             });
         };
         work.add(routes.work)?;
-        let reached = |h: f64| {
+        let reached = |k: usize, h: f64| {
             let obstacles = Arc::clone(&obstacles);
             let routes = Arc::clone(&routes);
-            Arc::new(Region::reached(
-                room,
-                &self.footprint,
-                h,
-                zone,
-                obstacles,
-                routes,
-            ))
+            let region = Region::reached(room, &self.footprint, h, zone, obstacles, routes);
+            hinted(region, found_there(hint, k))
         };
-        let regions: Regions = headings.iter().map(|&h| (h, reached(h))).collect();
+        let regions: Regions = (headings.iter().enumerate())
+            .map(|(k, &h)| (h, reached(k, h)))
+            .collect();
         any_fits(&regions, &mut work)?;
         Ok(Floor {
-            looked: looked.join(looked_in(&regions)),
             regions,
             doors: Some(routes.doors.clone()),
             fits,
             work: work.done,
-            routes_work: routes.work,
         })
     }
 
@@ -307,7 +337,13 @@ impl Mobile {
     /// routes cut short where they would take the run past its work, and
     /// the run then stopped).
     pub fn fit(&self, room: &Room, meter: &Meter) -> Fit {
-        let cell = self.floor(room, meter);
+        self.fit_within(room, None, meter)
+    }
+
+    /// `fit`, for a room that is `wider` with obstacles or doors taken
+    /// away ([`Mobile::floor_within`]).
+    fn fit_within(&self, room: &Room, wider: Option<&Room>, meter: &Meter) -> Fit {
+        let cell = self.floor_within(room, wider, meter);
         let Some(floor) = cell.get() else {
             return Fit::Fits;
         };
@@ -392,28 +428,21 @@ impl Base for Mobile {
         Mobile::fit(self, room, meter)
     }
 
+    fn fit_beside(&self, room: &Room, beside: &Room, meter: &Meter) -> Fit {
+        self.fit_within(room, Some(beside), meter)
+    }
+
     fn floor_work(&self, room: &Room) -> u64 {
-        let cell = self.floor(room, Meter::unmetered());
+        let cell = self.floors.cell(room);
         let floor = cell.get().map_or(0, |floor| floor.work);
         floor.saturating_add(self.misfit_work(room))
     }
 
-    /// What the floor costs beyond `beside`'s: its routes, where the base
-    /// fits nowhere the search for how much smaller it would fit, and the
-    /// pieces of floor `beside`'s searches did not look at (a post taken
-    /// away changes the pieces about it alone).
     fn floor_work_beside(&self, room: &Room, beside: &Room) -> u64 {
         if self.floor_key(room) == self.floor_key(beside) {
             return 0;
         }
-        let (cell, theirs) = (self.floor(room, Meter::unmetered()), self.floors.cell(beside));
-        let (Some(floor), Some(theirs)) = (cell.get(), theirs.get()) else {
-            return self.floor_work(room);
-        };
-        let pieces = floor.looked.work_not_in(&theirs.looked);
-        (floor.routes_work)
-            .saturating_add(pieces)
-            .saturating_add(self.misfit_work(room))
+        self.floor_work(room)
     }
 
     fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a> {

@@ -114,6 +114,7 @@ pub fn admissible_in(
             free: MultiPolygon::new(vec![within.to_polygon()]),
             work: 0,
             key: 0,
+            finding: 0,
         };
     }
     let mut h = DefaultHasher::new();
@@ -129,6 +130,10 @@ pub fn admissible_in(
     }
     let pairs: usize = met.iter().map(|m| m.parts.len()).sum();
     let key = h.finish();
+    let finding = (met.iter())
+        .map(|m| (m.outline.len() * m.parts.len()) as u64)
+        .sum::<u64>()
+        .saturating_mul(UNITS_PER_MET_CORNER);
     let kept = PIECES.get_or(key, || {
         Arc::new(if pairs <= JOIN_FROM {
             free_of_parts(within, &met, turned)
@@ -141,8 +146,14 @@ pub fn admissible_in(
         free: free.clone(),
         work: floor_work(*crossings),
         key,
+        finding,
     }
 }
+
+/// Units of the meter finding what a piece depends on costs, for each
+/// corner of an outline met times the parts that meet it (the outlines
+/// near each part looked up and hashed), whether or not the piece is kept.
+const UNITS_PER_MET_CORNER: u64 = 1;
 
 /// A rectangle's piece of the admissible region (`admissible_in`).
 pub struct Piece {
@@ -154,6 +165,9 @@ pub struct Piece {
     /// What it depends on, hashed: the same key, the same piece, kept
     /// once (0: it meets no obstacle, and costs nothing).
     pub key: u64,
+    /// What finding the key cost ([`UNITS_PER_MET_CORNER`]): the piece
+    /// kept, its cost.
+    pub finding: u64,
 }
 
 /// Up to this many outlines grown part by part, a piece is worked out

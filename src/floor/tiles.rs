@@ -36,9 +36,10 @@ struct Tile {
     inside: Inside,
     work: u64,
     key: u64,
-    /// What looking for the nearest point in the piece costs once it is
-    /// worked out (its corners, a unit each).
-    corners: u64,
+    /// What looking at the tile costs where its piece was worked out
+    /// before (finding its key, `region::Piece`, and its corners, a unit
+    /// each, for the nearest point in it).
+    again: u64,
 }
 
 /// Whether a region is empty, and what finding out cost (every tile its
@@ -68,6 +69,9 @@ pub struct Region {
     /// The routes from the room's doors and the heading they are followed
     /// at, where only what they reach is kept.
     routes: Option<(Arc<Routes>, f64)>,
+    /// Pieces paid for by the search of a room with more in it (this one
+    /// is that with obstacles or doors taken away).
+    paid: Looked,
 }
 
 /// The pieces of `region` a base facing `heading_rad` can get to by
@@ -115,6 +119,7 @@ impl Region {
             tiles: (0..nx * ny).map(|_| OnceLock::new()).collect(),
             empty: OnceLock::new(),
             routes: None,
+            paid: Looked::default(),
         }
     }
 
@@ -148,12 +153,12 @@ impl Region {
     /// Tile `(i, j)`'s piece of the region, and its work.
     fn tile(&self, i: usize, j: usize) -> &Tile {
         self.tiles[j * self.nx + i].get_or_init(|| {
-            let (piece, work, key) = match self.tile_rect(i, j) {
+            let (piece, work, key, finding) = match self.tile_rect(i, j) {
                 Some(r) => {
                     let piece = admissible_in(r, &self.turned, &self.obstacles, &self.grown);
-                    (piece.free, piece.work, piece.key)
+                    (piece.free, piece.work, piece.key, piece.finding)
                 }
-                None => (MultiPolygon::new(Vec::new()), 0, 0),
+                None => (MultiPolygon::new(Vec::new()), 0, 0, 0),
             };
             let piece = match &self.zone {
                 Some(zone) => zone.cut(piece),
@@ -168,7 +173,7 @@ impl Region {
                 inside,
                 work,
                 key,
-                corners,
+                again: finding.saturating_add(corners),
             }
         })
     }
@@ -221,6 +226,33 @@ impl Region {
         self.emptiness(&mut work).unwrap_or(false)
     }
 
+    /// Whether the base fits nowhere at this heading, where that is known
+    /// (none before it is found out).
+    pub fn known_empty(&self) -> Option<bool> {
+        self.empty.get().map(|found| found.empty)
+    }
+
+    /// The region of a room that is another with obstacles or doors
+    /// taken away, whose search at this heading looked at the pieces
+    /// `paid` and found that the base `fits` there: then it fits here,
+    /// unsearched; else the search here is charged for the pieces that
+    /// one did not look at, and for looking again at those it did.
+    pub fn beside(self, fits: bool, paid: Looked) -> Self {
+        let empty = OnceLock::new();
+        if fits {
+            let _ = empty.set(Emptiness {
+                empty: false,
+                work: 0,
+                looked: Looked::default(),
+            });
+        }
+        Region {
+            empty,
+            paid,
+            ..self
+        }
+    }
+
     /// The pieces the search for whether the base fits anywhere here
     /// looked at (none before it was made).
     pub fn looked(&self) -> Looked {
@@ -240,11 +272,12 @@ impl Region {
             None => {
                 let allowed = |units: u64| work.allows(units);
                 let mut own = Work::looking(&allowed);
+                let fresh = |key: u64| !self.paid.contains(key);
                 let empty = match self.free {
                     None => true,
                     Some(free) => {
                         let centre = Point::from(free.center());
-                        let counted = self.nearest_counted(centre, 0, None, &mut own);
+                        let counted = self.nearest_counted(centre, 0, Some(&fresh), &mut own);
                         counted
                             .map_err(|cut| work.cut_short_with(cut.work))?
                             .is_none()
@@ -274,14 +307,20 @@ impl Region {
 
     /// Like `nearest`, `meter` charged the tiles looked at beyond those
     /// around `p` ([`CHARGED_FROM_RING`]); none once the run is past its
-    /// limit. A tile the search for whether the base fits anywhere looked
-    /// at (and paid for) is charged only its corners, what looking in it
-    /// again costs.
+    /// limit. A tile's piece is charged what working it out costs the
+    /// first time the task looks at it, and only its corners (what looking
+    /// in it again costs) after that, or where the search for whether the
+    /// base fits anywhere looked at it (and the floor paid for it).
     pub fn nearest_metered(&self, p: Point<f64>, meter: &Meter) -> Option<Point<f64>> {
         let allowed = |units: u64| meter.would_stay_within(units);
         let mut work = Work::new(&allowed);
-        let paid = self.empty.get().map(|found| &found.looked);
-        let found = self.nearest_counted(p, CHARGED_FROM_RING, paid, &mut work);
+        let searched = self.empty.get().map(|found| &found.looked);
+        let fresh = |key: u64| {
+            !self.paid.contains(key)
+                && !searched.is_some_and(|s| s.contains(key))
+                && meter.first_look(key)
+        };
+        let found = self.nearest_counted(p, CHARGED_FROM_RING, Some(&fresh), &mut work);
         match found {
             Ok(found) => {
                 meter.charge(work.done);
@@ -295,13 +334,13 @@ impl Region {
     }
 
     /// `nearest`, `work` charged each tile looked at `from_ring` steps or
-    /// more from `p`'s: its corners where its piece is among those `paid`
-    /// for, what working it out costs otherwise.
+    /// more from `p`'s: what working it out costs where its piece is
+    /// `fresh` (all are, if none is given), its corners otherwise.
     fn nearest_counted(
         &self,
         p: Point<f64>,
         from_ring: usize,
-        paid: Option<&Looked>,
+        fresh: Option<&dyn Fn(u64) -> bool>,
         work: &mut Work<'_>,
     ) -> Result<Option<Point<f64>>, CutShort> {
         let Some(free) = self.free else {
@@ -324,8 +363,8 @@ impl Region {
             for (i, j) in ring_tiles(ci, cj, ring, self.nx, self.ny) {
                 let tile = self.tile(i, j);
                 if ring >= from_ring {
-                    let units = match paid {
-                        Some(paid) if paid.contains(tile.key) => tile.corners,
+                    let units = match fresh {
+                        Some(fresh) if !fresh(tile.key) => tile.again,
                         _ => tile.work,
                     };
                     work.add_piece(tile.key, units)?;
@@ -480,6 +519,30 @@ mod tests {
         let mut again = Work::new(&unbounded);
         assert_eq!(region.emptiness(&mut again), Ok(false));
         assert_eq!(again.done, whole.done);
+    }
+
+    /// A room that is another with obstacles taken away: where the base
+    /// fits in that one, it fits here, unsearched and uncharged; where it
+    /// fits nowhere there, the search here is charged in full only for the
+    /// pieces that one did not look at, and for looking at the others.
+    #[test]
+    fn a_room_with_less_in_it_is_searched_only_where_the_wider_found_nothing() {
+        let wider = crowded_region();
+        let mut whole = Work::new(&unbounded);
+        assert_eq!(wider.emptiness(&mut whole), Ok(false));
+        let fits = crowded_region().beside(true, wider.looked());
+        let mut none = Work::new(&unbounded);
+        assert_eq!(fits.emptiness(&mut none), Ok(false));
+        assert_eq!(none.done, 0);
+        let searched = crowded_region().beside(false, wider.looked());
+        let mut looking = Work::new(&unbounded);
+        assert_eq!(searched.emptiness(&mut looking), Ok(false));
+        assert!(
+            looking.done > 0 && looking.done * 4 < whole.done,
+            "{} of {}",
+            looking.done,
+            whole.done
+        );
     }
 
     /// A search for the nearest floor is charged the tiles it looks at

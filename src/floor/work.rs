@@ -73,9 +73,9 @@ impl<'a> Work<'a> {
 }
 
 /// The pieces of floor a search looked at (by the key they are kept by,
-/// `region::Piece`), with what each costs: a room searched again with one
-/// thing changed works out again only the pieces that thing is in, and
-/// is charged for those alone. Each piece once, by key, once settled.
+/// `region::Piece`), with what each costs: a search that looks at them
+/// again is charged for looking, not for working them out. Each piece
+/// once, by key, once settled.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Looked(Vec<(u64, u64)>);
 
@@ -95,22 +95,9 @@ impl Looked {
         self
     }
 
-    /// The pieces of both.
-    pub fn join(mut self, other: Looked) -> Looked {
-        self.0.extend(other.0);
-        self.settled()
-    }
-
     /// Whether piece `key` was looked at.
     pub fn contains(&self, key: u64) -> bool {
         self.0.binary_search_by_key(&key, |&(k, _)| k).is_ok()
-    }
-
-    /// The work of the pieces looked at here and not in `other`.
-    pub fn work_not_in(&self, other: &Looked) -> u64 {
-        (self.0.iter())
-            .filter(|&&(key, _)| !other.contains(key))
-            .fold(0, |sum: u64, &(_, units)| sum.saturating_add(units))
     }
 }
 
@@ -133,22 +120,15 @@ mod tests {
     }
 
     #[test]
-    fn a_search_again_is_charged_the_pieces_the_first_did_not_look_at() {
+    fn the_pieces_looked_at_are_written_down_each_once() {
         let mut work = Work::looking(&unbounded);
         for (key, units) in [(1, 10), (2, 20), (0, 0), (1, 10)] {
             work.add_piece(key, units).unwrap();
         }
         assert_eq!(work.done, 40, "the work is all counted, twice if twice");
-        let first = work.looked();
-        let mut again = Work::looking(&unbounded);
-        for (key, units) in [(2, 20), (4, 5), (5, 7)] {
-            again.add_piece(key, units).unwrap();
-        }
-        let again = again.looked();
-        assert_eq!(again.work_not_in(&first), 12, "4 and 5");
-        assert_eq!(first.work_not_in(&again), 10, "1, once");
-        assert_eq!(first.work_not_in(&first.clone().join(again)), 0);
-        assert!(first.contains(2) && !first.contains(0) && !first.contains(4));
+        let looked = work.looked();
+        assert_eq!(looked, Looked(vec![(1, 10), (2, 20)]));
+        assert!(looked.contains(2) && !looked.contains(0) && !looked.contains(4));
         assert_eq!(Work::new(&unbounded).looked(), Looked::default());
     }
 }

@@ -181,6 +181,13 @@ pub trait Base: Send + Sync {
     /// out would take the run past its work (`meter`), it is cut short
     /// and the run stopped.
     fn fit(&self, room: &Room, meter: &Meter) -> Fit;
+    /// [`Base::fit`] in `room`, which is `beside` with obstacles or doors
+    /// taken away (as finding why a reach failed tries it), where
+    /// `beside`'s has been found: the base fits wherever it fitted there,
+    /// which need not be searched again.
+    fn fit_beside(&self, room: &Room, _beside: &Room, meter: &Meter) -> Fit {
+        self.fit(room, meter)
+    }
     /// What working out where the base may stand in `room` cost, in units
     /// of the meter ([`crate::meter`]), once [`Base::fit`] has: for a mobile
     /// base, the search at each heading for floor it fits on, the routes

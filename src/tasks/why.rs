@@ -492,12 +492,18 @@ fn beyond_limits(chain: &Chain, q: &[f64]) -> Vec<String> {
 /// in again without something, `beside` the task's own where only the
 /// base is the same), charging `meter` what that costs, kept or not:
 /// the search's floor counts towards the run's work as the task's own
-/// does, but for what it shares with the task's.
+/// does, where the base's floor differs from the task's (and only for
+/// what it searches afresh: wherever it fitted there, it fits here).
 fn charge_floor(base: &dyn Base, room: &Room, beside: Option<&Room>, meter: &Meter) {
-    base.fit(room, meter);
     let work = match beside {
-        Some(beside) => base.floor_work_beside(room, beside),
-        None => base.floor_work(room),
+        Some(beside) => {
+            base.fit_beside(room, beside, meter);
+            base.floor_work_beside(room, beside)
+        }
+        None => {
+            base.fit(room, meter);
+            base.floor_work(room)
+        }
     };
     meter.charge(work);
 }
