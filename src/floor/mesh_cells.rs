@@ -121,7 +121,11 @@ impl MeshCells {
     /// which has no bottom): going down a column, a face up enters a solid
     /// and a face down leaves one, so solids that overlap stay filled.
     fn fill_solids(&mut self, mut crossings: Vec<Crossing>) {
-        crossings.sort_by(|a, b| a.cell.cmp(&b.cell).then(b.z_mm.total_cmp(&a.z_mm)));
+        crossings.sort_unstable_by(|a, b| {
+            (a.cell.cmp(&b.cell))
+                .then(b.z_mm.total_cmp(&a.z_mm))
+                .then(b.up.cmp(&a.up))
+        });
         for column in crossings.chunk_by(|a, b| a.cell == b.cell) {
             let mut depth = 0_u32;
             let mut top_mm = f64::INFINITY;
