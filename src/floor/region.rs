@@ -115,6 +115,7 @@ pub fn admissible_in(
             work: 0,
             key: 0,
             finding: 0,
+            shapes: Vec::new(),
         };
     }
     let mut h = DefaultHasher::new();
@@ -147,7 +148,39 @@ pub fn admissible_in(
         work: floor_work(*crossings),
         key,
         finding,
+        shapes: if pairs <= JOIN_FROM {
+            Vec::new()
+        } else {
+            shapes_grown(&met, turned)
+        },
     }
+}
+
+/// The distinct shapes among `met` that working out a piece from them
+/// grows (`Grown::outline`: each part's outline grown, then joined; once
+/// for each shape at each heading, kept), each by a key of its corners
+/// about its first and the parts at this heading, with what growing it
+/// costs: its crossings, as if each part's grown outline met each other's.
+fn shapes_grown(met: &[Met<'_>], turned: &Turned) -> Vec<(u64, u64)> {
+    let mut shapes: Vec<(u64, u64)> = (met.iter())
+        .map(|m| {
+            let mut h = DefaultHasher::new();
+            let origin = m.outline[0];
+            for c in m.outline {
+                // To the micrometre (`Grown::outline` keys to the nanometre).
+                ((c.x - origin.x) * 1e3).round().to_bits().hash(&mut h);
+                ((c.y - origin.y) * 1e3).round().to_bits().hash(&mut h);
+            }
+            m.parts.iter().for_each(|&k| turned.hashes[k].hash(&mut h));
+            let corners: usize = (m.parts.iter())
+                .map(|&k| m.outline.len() + turned.parts[k].len())
+                .sum();
+            (h.finish(), floor_work(corners * m.parts.len()))
+        })
+        .collect();
+    shapes.sort_unstable();
+    shapes.dedup_by_key(|&mut (key, _)| key);
+    shapes
 }
 
 /// Units of the meter finding what a piece depends on costs, for each
@@ -168,6 +201,9 @@ pub struct Piece {
     /// What finding the key cost ([`UNITS_PER_MET_CORNER`]): the piece
     /// kept, its cost.
     pub finding: u64,
+    /// The shapes working it out grows, by key, and what growing each
+    /// costs (`shapes_grown`): charged once for each region's search.
+    pub shapes: Vec<(u64, u64)>,
 }
 
 /// Up to this many outlines grown part by part, a piece is worked out
@@ -729,6 +765,38 @@ mod tests {
             surfaces: Vec::new(),
             doors: Vec::new(),
         }
+    }
+
+    /// 100 small boxes crowded in one tile (more outlines than are grown
+    /// part by part): boxes of one size are one shape, grown once and
+    /// charged once; boxes each of its own size are a hundred.
+    #[test]
+    fn a_piece_names_each_shape_it_grows_once() {
+        let shapes = |size: &dyn Fn(usize) -> f64| {
+            let mut room = room_with_counter();
+            room.boxes = (0..100)
+                .map(|k| BoxObstacle {
+                    name: format!("b{k}"),
+                    corner_mm: Point3::new(
+                        1000.0 + 60.0 * (k % 10) as f64,
+                        500.0 + 60.0 * (k / 10) as f64,
+                        0.0,
+                    ),
+                    size_mm: Vector3::new(size(k), 20.0, 900.0),
+                    yaw_rad: 0.0,
+                })
+                .collect();
+            let chair = Footprint::circle(300.0, 900.0);
+            let turned = Turned::new(&chair, 0.0);
+            let within = shrunk_room(&room, &turned, None).expect("the chair fits the room");
+            let obstacles = FloorObstacles::new(&room, &chair);
+            admissible_in(within, &turned, &obstacles, &Grown::default()).shapes
+        };
+        let alike = shapes(&|_| 20.0);
+        assert_eq!(alike.len(), 1);
+        let each = shapes(&|k| 10.0 + 0.25 * k as f64);
+        assert_eq!(each.len(), 100);
+        assert!(each.iter().all(|&(_, units)| units == alike[0].1));
     }
 
     #[test]

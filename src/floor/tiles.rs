@@ -6,6 +6,8 @@
 //! point on a tile's edge is inside its own tile's piece; the pieces,
 //! together, are the region `admissible` gives whole.
 
+use std::cell::RefCell;
+use std::collections::HashSet;
 use std::sync::{Arc, OnceLock};
 
 use geo::{Closest, ClosestPoint, Coord, MultiPolygon, Point, Polygon, Rect};
@@ -30,6 +32,13 @@ const OVERLAP_MM: f64 = 1.0;
 /// only far from the target).
 const CHARGED_FROM_RING: usize = 2;
 
+/// Which pieces of floor, and which shapes grown for them, a search is
+/// charged in full for: those not worked out for it before.
+struct Fresh<'a> {
+    piece: &'a dyn Fn(u64) -> bool,
+    shape: &'a dyn Fn(u64) -> bool,
+}
+
 /// A tile's piece of the region, what working it out costs and the key
 /// it is kept by (`region::Piece`).
 struct Tile {
@@ -40,6 +49,9 @@ struct Tile {
     /// before (finding its key, `region::Piece`, and its corners, a unit
     /// each, for the nearest point in it).
     again: u64,
+    /// The shapes working its piece out grows, and what each costs
+    /// (`region::Piece`).
+    shapes: Vec<(u64, u64)>,
 }
 
 /// Whether a region is empty, and what finding out cost (every tile its
@@ -153,12 +165,12 @@ impl Region {
     /// Tile `(i, j)`'s piece of the region, and its work.
     fn tile(&self, i: usize, j: usize) -> &Tile {
         self.tiles[j * self.nx + i].get_or_init(|| {
-            let (piece, work, key, finding) = match self.tile_rect(i, j) {
-                Some(r) => {
-                    let piece = admissible_in(r, &self.turned, &self.obstacles, &self.grown);
-                    (piece.free, piece.work, piece.key, piece.finding)
-                }
-                None => (MultiPolygon::new(Vec::new()), 0, 0, 0),
+            let piece = self
+                .tile_rect(i, j)
+                .map(|r| admissible_in(r, &self.turned, &self.obstacles, &self.grown));
+            let (piece, work, key, finding, shapes) = match piece {
+                Some(p) => (p.free, p.work, p.key, p.finding, p.shapes),
+                None => (MultiPolygon::new(Vec::new()), 0, 0, 0, Vec::new()),
             };
             let piece = match &self.zone {
                 Some(zone) => zone.cut(piece),
@@ -174,6 +186,7 @@ impl Region {
                 work,
                 key,
                 again: finding.saturating_add(corners),
+                shapes,
             }
         })
     }
@@ -273,6 +286,13 @@ impl Region {
                 let allowed = |units: u64| work.allows(units);
                 let mut own = Work::looking(&allowed);
                 let fresh = |key: u64| !self.paid.contains(key);
+                // Each shape is grown once at this heading.
+                let grown = RefCell::new(HashSet::new());
+                let grows = |shape: u64| grown.borrow_mut().insert(shape);
+                let fresh = Fresh {
+                    piece: &fresh,
+                    shape: &grows,
+                };
                 let empty = match self.free {
                     None => true,
                     Some(free) => {
@@ -320,6 +340,11 @@ impl Region {
                 && !searched.is_some_and(|s| s.contains(key))
                 && meter.first_look(key)
         };
+        let grows = |shape: u64| meter.first_look(shape);
+        let fresh = Fresh {
+            piece: &fresh,
+            shape: &grows,
+        };
         let found = self.nearest_counted(p, CHARGED_FROM_RING, Some(&fresh), &mut work);
         match found {
             Ok(found) => {
@@ -334,13 +359,14 @@ impl Region {
     }
 
     /// `nearest`, `work` charged each tile looked at `from_ring` steps or
-    /// more from `p`'s: what working it out costs where its piece is
-    /// `fresh` (all are, if none is given), its corners otherwise.
+    /// more from `p`'s: where its piece is `fresh` (all are, if none is
+    /// given), what working it out costs, and growing each shape it grows
+    /// that is fresh too; what looking at it again costs otherwise.
     fn nearest_counted(
         &self,
         p: Point<f64>,
         from_ring: usize,
-        fresh: Option<&dyn Fn(u64) -> bool>,
+        fresh: Option<&Fresh<'_>>,
         work: &mut Work<'_>,
     ) -> Result<Option<Point<f64>>, CutShort> {
         let Some(free) = self.free else {
@@ -364,8 +390,11 @@ impl Region {
                 let tile = self.tile(i, j);
                 if ring >= from_ring {
                     let units = match fresh {
-                        Some(fresh) if !fresh(tile.key) => tile.again,
-                        _ => tile.work,
+                        Some(fresh) if !(fresh.piece)(tile.key) => tile.again,
+                        Some(fresh) => (tile.shapes.iter())
+                            .filter(|&&(shape, _)| (fresh.shape)(shape))
+                            .fold(tile.work, |sum, &(_, units)| sum.saturating_add(units)),
+                        None => tile.work,
                     };
                     work.add_piece(tile.key, units)?;
                 }
