@@ -972,24 +972,29 @@ fn a_run_stays_within_the_bound_or_passes_it_whatever_the_threads() {
     for text in [metered(), through_a_door("bound"), far_floor, no_floor] {
         let work = metered_run(&text, u64::MAX / 2, 1).expect("within the bound");
         assert!(work > 100_000, "{work}");
-        for threads in [1, 3] {
-            assert_eq!(metered_run(&text, work, threads).ok(), Some(work));
-            let past = metered_run(&text, work - 1, threads).expect_err("past the bound");
-            assert!(
-                matches!(past.kind(), ErrorKind::TooMuchWork { limit } if *limit == work - 1),
-                "{past}"
-            );
-        }
+        runs_at_its_work_and_stops_one_unit_under(&text, work);
+    }
+}
+
+/// `text`, whose run does `work` units, runs within a bound of `work` and
+/// stops with the limit named one unit under, on 1 and 3 threads.
+fn runs_at_its_work_and_stops_one_unit_under(text: &str, work: u64) {
+    for threads in [1, 3] {
+        assert_eq!(metered_run(text, work, threads).ok(), Some(work));
+        let past = metered_run(text, work - 1, threads).expect_err("past the bound");
+        assert!(
+            matches!(past.kind(), ErrorKind::TooMuchWork { limit } if *limit == work - 1),
+            "{past}"
+        );
     }
 }
 
 /// A hall where the chair fits only far from the cup, answered in well
 /// under a second, is answered within the default bound: the rooms that
-/// finding why tries (the hall without a post or four) are charged for
-/// the pieces of floor that differ from the hall's, and a placement's
-/// search over floor already paid for is charged for looking, not for
-/// working it out again (charged in full, the run counted 284 M units and
-/// was refused).
+/// finding why tries (the hall without a post or four) are not searched
+/// where the chair fits in the hall, and a placement's search over floor
+/// already paid for is charged for looking, not for working it out again
+/// (charged in full, the run counted 284 M units and was refused).
 #[test]
 fn a_crowded_hall_searched_again_for_why_is_answered_within_the_default_bound() {
     let bound = Limits::default().solver_work;
@@ -1009,14 +1014,7 @@ fn a_standards_floor_counts_towards_the_bound() {
     let without = metered_run(&plain, u64::MAX / 2, 2).expect("within the bound");
     let with = metered_run(&checked, u64::MAX / 2, 2).expect("within the bound");
     assert!(with > without, "{with} against {without}");
-    for threads in [1, 3] {
-        assert_eq!(metered_run(&checked, with, threads).ok(), Some(with));
-        let past = metered_run(&checked, with - 1, threads).expect_err("past the bound");
-        assert!(
-            matches!(past.kind(), ErrorKind::TooMuchWork { limit } if *limit == with - 1),
-            "{past}"
-        );
-    }
+    runs_at_its_work_and_stops_one_unit_under(&checked, with);
 }
 
 /// Routes from a door past what the run has left are cut short (10,000
