@@ -116,20 +116,26 @@ impl Layer {
     ) -> Self {
         let grown = Grown::default();
         // The tiles in parallel (each on its own; in the grid's order).
-        let worked: Vec<(Vec<Polygon<f64>>, u64)> = (0..grid.len())
+        type Worked = (Vec<Polygon<f64>>, u64, Vec<(u64, u64)>);
+        let worked: Vec<Worked> = (0..grid.len())
             .into_par_iter()
             .map(|t| match within.and_then(|w| grid.rect(t, w)) {
                 Some(rect) => {
-                    let (piece, work) = admissible_joined(rect, turned, obstacles, &grown);
-                    (piece.0, work)
+                    let (piece, work, shapes) = admissible_joined(rect, turned, obstacles, &grown);
+                    (piece.0, work, shapes)
                 }
-                None => (Vec::new(), 0),
+                None => (Vec::new(), 0, Vec::new()),
             })
             .collect();
-        let work = worked
+        // Each shape is grown once for the layer, whichever tile first.
+        let mut shapes: Vec<(u64, u64)> = worked.iter().flat_map(|w| w.2.iter().copied()).collect();
+        shapes.sort_unstable();
+        shapes.dedup_by_key(|&mut (key, _)| key);
+        let growing = shapes
             .iter()
-            .fold(0u64, |sum, (_, w)| sum.saturating_add(*w));
-        let tiles: Vec<Vec<Polygon<f64>>> = worked.into_iter().map(|(p, _)| p).collect();
+            .fold(0u64, |sum, &(_, u)| sum.saturating_add(u));
+        let work = (worked.iter()).fold(growing, |sum, (_, w, _)| sum.saturating_add(*w));
+        let tiles: Vec<Vec<Polygon<f64>>> = worked.into_iter().map(|(p, _, _)| p).collect();
         let mut starts = Vec::with_capacity(tiles.len());
         let mut next = first;
         for pieces in &tiles {

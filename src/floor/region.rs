@@ -305,17 +305,21 @@ impl Grown {
 
 /// Like `admissible_in`, worked out afresh (not kept by the process):
 /// what a route search asks of every tile of a large floor at many
-/// headings.
-/// And its work, in the units of the meter ([`route_tile_work`]).
+/// headings. And its work, in the units of the meter
+/// ([`route_tile_work`]), and the shapes it grows (`Piece::shapes`: the
+/// tiles of a layer share them, and pay for each once).
 pub fn admissible_joined(
     within: Rect<f64>,
     turned: &Turned,
     obstacles: &FloorObstacles,
     grown: &Grown,
-) -> (MultiPolygon<f64>, u64) {
+) -> (MultiPolygon<f64>, u64, Vec<(u64, u64)>) {
     let met = obstacles_met(cut_of(within), turned, obstacles);
-    let (free, _) = free_of_met(within, &met, turned, grown);
-    (free, route_tile_work(&met, turned))
+    let (free, crossings) = free_of_met(within, &met, turned, grown);
+    let shapes = shapes_grown(&met, turned);
+    // The corners measure posts' tiles, the crossings crowded ones.
+    let work = route_tile_work(&met, turned).max(floor_work(crossings));
+    (free, work, shapes)
 }
 
 /// Units of the meter a corner of the outlines a tile of routes is worked
@@ -1016,7 +1020,7 @@ mod union_tests {
             let obstacles = FloorObstacles::new(&room, &chair);
             let within = shrunk_room(&room, &turned, None).unwrap();
             let part_by_part = admissible_part_by_part(within, &turned, &obstacles);
-            let (joined, _) = admissible_joined(within, &turned, &obstacles, &Grown::default());
+            let (joined, _, _) = admissible_joined(within, &turned, &obstacles, &Grown::default());
             let apart = part_by_part.difference(&joined).unsigned_area()
                 + joined.difference(&part_by_part).unsigned_area();
             prop_assert!(apart < 1e-6 * within.to_polygon().unsigned_area(), "the regions differ by {apart} mm2");
