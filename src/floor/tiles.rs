@@ -327,10 +327,11 @@ impl Region {
 
     /// Like `nearest`, `meter` charged the tiles looked at beyond those
     /// around `p` ([`CHARGED_FROM_RING`]); none once the run is past its
-    /// limit. A tile's piece is charged what working it out costs the
-    /// first time the task looks at it, and only its corners (what looking
-    /// in it again costs) after that, or where the search for whether the
-    /// base fits anywhere looked at it (and the floor paid for it).
+    /// limit. A tile's piece is charged what working it out costs (and
+    /// each shape it grows, the first time the task grows it) the first
+    /// time the task looks at it, and only what looking again costs after
+    /// that, or where the search for whether the base fits anywhere
+    /// looked at it (and the floor paid for it).
     pub fn nearest_metered(&self, p: Point<f64>, meter: &Meter) -> Option<Point<f64>> {
         let allowed = |units: u64| meter.would_stay_within(units);
         let mut work = Work::new(&allowed);
