@@ -281,3 +281,64 @@ pub fn piece_near(pieces: &[Polygon<f64>], p: Point<f64>, near_mm: f64) -> Optio
         .min_by(|a, b| a.1.total_cmp(&b.1))
         .map(|(k, _)| k)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::floor::region::shrunk_room;
+    use crate::floor::Footprint;
+    use crate::scene::{BoxObstacle, Room};
+    use nalgebra::{Point3, Vector3};
+
+    /// A 10 m hall with 100 posts 1 m apart, each `side(k)` mm square.
+    fn hall(side: &dyn Fn(usize) -> f64) -> Room {
+        Room {
+            name: "hall".into(),
+            size_mm: Vector3::new(10_000.0, 10_000.0, 2500.0),
+            boxes: (0..100)
+                .map(|k| BoxObstacle {
+                    name: format!("p{k}"),
+                    corner_mm: Point3::new(
+                        500.0 + 1000.0 * (k % 10) as f64,
+                        500.0 + 1000.0 * (k / 10) as f64,
+                        0.0,
+                    ),
+                    size_mm: Vector3::new(side(k), side(k), 900.0),
+                    yaw_rad: 0.0,
+                })
+                .collect(),
+            meshes: Vec::new(),
+            targets: Vec::new(),
+            surfaces: Vec::new(),
+            doors: Vec::new(),
+        }
+    }
+
+    /// The work of a layer of `room` for a chair of two parts, and what
+    /// growing one of its shapes costs.
+    fn layer_work(room: &Room) -> (u64, u64) {
+        let chair = Footprint::rectangle(600.0, 500.0, 660.0, 1400.0);
+        let turned = Turned::new(&chair, 0.3);
+        let obstacles = FloorObstacles::new(room, &chair);
+        let within = shrunk_room(room, &turned, None);
+        let grid = Grid::over(within.expect("the chair fits the hall"));
+        let layer = Layer::new(&grid, within, &turned, 0.3, &obstacles, 0);
+        let tile = grid.rect(0, within.unwrap()).unwrap();
+        let (_, _, shapes) = admissible_joined(tile, &turned, &obstacles, &Grown::default());
+        (layer.work, shapes[0].1)
+    }
+
+    /// A layer grows each distinct shape once, whatever tiles meet it:
+    /// posts each of its own size cost a hundred shapes more than posts
+    /// alike, not one for every tile that meets each.
+    #[test]
+    fn a_layer_pays_for_growing_each_shape_once() {
+        let (alike, unit) = layer_work(&hall(&|_| 50.0));
+        let (each, _) = layer_work(&hall(&|k| 50.0 + 0.5 * k as f64));
+        let more = each - alike;
+        assert!(
+            more >= 90 * unit && more <= 110 * unit,
+            "{more} units more, {unit} a shape"
+        );
+    }
+}
