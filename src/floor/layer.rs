@@ -286,27 +286,17 @@ pub fn piece_near(pieces: &[Polygon<f64>], p: Point<f64>, near_mm: f64) -> Optio
 mod tests {
     use super::*;
     use crate::floor::region::shrunk_room;
+    use crate::floor::test_boxes::grid_of_boxes;
     use crate::floor::Footprint;
-    use crate::scene::{BoxObstacle, Room};
-    use nalgebra::{Point3, Vector3};
+    use crate::scene::Room;
+    use nalgebra::Vector3;
 
     /// A 10 m hall with 100 posts 1 m apart, each `side(k)` mm square.
     fn hall(side: &dyn Fn(usize) -> f64) -> Room {
         Room {
             name: "hall".into(),
             size_mm: Vector3::new(10_000.0, 10_000.0, 2500.0),
-            boxes: (0..100)
-                .map(|k| BoxObstacle {
-                    name: format!("p{k}"),
-                    corner_mm: Point3::new(
-                        500.0 + 1000.0 * (k % 10) as f64,
-                        500.0 + 1000.0 * (k / 10) as f64,
-                        0.0,
-                    ),
-                    size_mm: Vector3::new(side(k), side(k), 900.0),
-                    yaw_rad: 0.0,
-                })
-                .collect(),
+            boxes: grid_of_boxes([500.0, 500.0], 1000.0, &|k| [side(k), side(k)]),
             meshes: Vec::new(),
             targets: Vec::new(),
             surfaces: Vec::new(),

@@ -17,6 +17,9 @@ mod routes;
 mod tiles;
 mod work;
 
+#[cfg(test)]
+mod test_boxes;
+
 pub use clear::{
     disc_centre, door_clear_width, knee_limited, route_width, t_space, FreeFloor, RouteFloor,
 };

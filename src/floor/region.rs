@@ -776,20 +776,10 @@ mod tests {
     /// charged once; boxes each of its own size are a hundred.
     #[test]
     fn a_piece_names_each_shape_it_grows_once() {
+        use crate::floor::test_boxes::grid_of_boxes;
         let shapes = |size: &dyn Fn(usize) -> f64| {
             let mut room = room_with_counter();
-            room.boxes = (0..100)
-                .map(|k| BoxObstacle {
-                    name: format!("b{k}"),
-                    corner_mm: Point3::new(
-                        1000.0 + 60.0 * (k % 10) as f64,
-                        500.0 + 60.0 * (k / 10) as f64,
-                        0.0,
-                    ),
-                    size_mm: Vector3::new(size(k), 20.0, 900.0),
-                    yaw_rad: 0.0,
-                })
-                .collect();
+            room.boxes = grid_of_boxes([1000.0, 500.0], 60.0, &|k| [size(k), 20.0]);
             let chair = Footprint::circle(300.0, 900.0);
             let turned = Turned::new(&chair, 0.0);
             let within = shrunk_room(&room, &turned, None).expect("the chair fits the room");
