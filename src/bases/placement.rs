@@ -400,9 +400,7 @@ impl Mobile {
             half_width_mm: self.footprint.half_width_mm(),
         }
     }
-}
 
-impl Mobile {
     /// What finding how much smaller the base would fit in `room` cost
     /// (0 where it fits, or it was not looked for).
     fn misfit_work(&self, room: &Room) -> u64 {
