@@ -14,6 +14,7 @@ use rayon::prelude::*;
 
 use super::obstacles::FloorObstacles;
 use super::region::{admissible_joined, Grown, Turned};
+use super::work::Looked;
 
 /// The side of a tile, for floors up to `MAX_TILES` of them.
 const TILE_MM: f64 = 2000.0;
@@ -116,7 +117,7 @@ impl Layer {
     ) -> Self {
         let grown = Grown::default();
         // The tiles in parallel (each on its own; in the grid's order).
-        type Worked = (Vec<Polygon<f64>>, u64, Vec<(u64, u64)>);
+        type Worked = (Vec<Polygon<f64>>, u64, Looked);
         let worked: Vec<Worked> = (0..grid.len())
             .into_par_iter()
             .map(|t| match within.and_then(|w| grid.rect(t, w)) {
@@ -124,16 +125,11 @@ impl Layer {
                     let (piece, work, shapes) = admissible_joined(rect, turned, obstacles, &grown);
                     (piece.0, work, shapes)
                 }
-                None => (Vec::new(), 0, Vec::new()),
+                None => (Vec::new(), 0, Looked::default()),
             })
             .collect();
         // Each shape is grown once for the layer, whichever tile first.
-        let mut shapes: Vec<(u64, u64)> = worked.iter().flat_map(|w| w.2.iter().copied()).collect();
-        shapes.sort_unstable();
-        shapes.dedup_by_key(|&mut (key, _)| key);
-        let growing = shapes
-            .iter()
-            .fold(0u64, |sum, &(_, u)| sum.saturating_add(u));
+        let growing = Looked::of(worked.iter().flat_map(|w| w.2.iter())).units();
         let work = (worked.iter()).fold(growing, |sum, (_, w, _)| sum.saturating_add(*w));
         let tiles: Vec<Vec<Polygon<f64>>> = worked.into_iter().map(|(p, _, _)| p).collect();
         let mut starts = Vec::with_capacity(tiles.len());
@@ -304,9 +300,9 @@ mod tests {
         }
     }
 
-    /// The work of a layer of `room` for a chair of two parts, and what
-    /// growing one of its shapes costs.
-    fn layer_work(room: &Room) -> (u64, u64) {
+    /// The work of a layer of `room` for a chair, and the shapes its
+    /// first tile grows.
+    fn layer_work(room: &Room) -> (u64, Looked) {
         let chair = Footprint::rectangle(600.0, 500.0, 660.0, 1400.0);
         let turned = Turned::new(&chair, 0.3);
         let obstacles = FloorObstacles::new(room, &chair);
@@ -315,7 +311,7 @@ mod tests {
         let layer = Layer::new(&grid, within, &turned, 0.3, &obstacles, 0);
         let tile = grid.rect(0, within.unwrap()).unwrap();
         let (_, _, shapes) = admissible_joined(tile, &turned, &obstacles, &Grown::default());
-        (layer.work, shapes[0].1)
+        (layer.work, shapes)
     }
 
     /// A layer grows each distinct shape once, whatever tiles meet it:
@@ -323,7 +319,9 @@ mod tests {
     /// alike, not one for every tile that meets each.
     #[test]
     fn a_layer_pays_for_growing_each_shape_once() {
-        let (alike, unit) = layer_work(&hall(&|_| 50.0));
+        let (alike, shapes) = layer_work(&hall(&|_| 50.0));
+        assert_eq!(shapes.iter().count(), 1, "the posts alike are one shape");
+        let unit = shapes.units();
         let (each, _) = layer_work(&hall(&|k| 50.0 + 0.5 * k as f64));
         let more = each - alike;
         assert!(

@@ -16,6 +16,7 @@ use std::sync::{Arc, Mutex};
 use geo::{BooleanOps, Coord, LineString, MultiPolygon, Polygon, Rect};
 
 use super::obstacles::{bounds, FloorObstacles};
+use super::work::Looked;
 use super::Footprint;
 use crate::kept::Kept;
 use crate::scene::hash_bits;
@@ -115,7 +116,7 @@ pub fn admissible_in(
             work: 0,
             key: 0,
             finding: 0,
-            shapes: Vec::new(),
+            shapes: Looked::default(),
         };
     }
     let mut h = DefaultHasher::new();
@@ -149,7 +150,7 @@ pub fn admissible_in(
         key,
         finding,
         shapes: if pairs <= JOIN_FROM {
-            Vec::new()
+            Looked::default()
         } else {
             shapes_grown(&met, turned)
         },
@@ -158,29 +159,20 @@ pub fn admissible_in(
 
 /// The distinct shapes among `met` that working out a piece from them
 /// grows (`Grown::outline`: each part's outline grown, then joined; once
-/// for each shape at each heading, kept), each by a key of its corners
-/// about its first and the parts at this heading, with what growing it
-/// costs: its crossings, as if each part's grown outline met each other's.
-fn shapes_grown(met: &[Met<'_>], turned: &Turned) -> Vec<(u64, u64)> {
-    let mut shapes: Vec<(u64, u64)> = (met.iter())
-        .map(|m| {
-            let mut h = DefaultHasher::new();
-            let origin = m.outline[0];
-            for c in m.outline {
-                // To the micrometre (`Grown::outline` keys to the nanometre).
-                ((c.x - origin.x) * 1e3).round().to_bits().hash(&mut h);
-                ((c.y - origin.y) * 1e3).round().to_bits().hash(&mut h);
-            }
-            m.parts.iter().for_each(|&k| turned.hashes[k].hash(&mut h));
-            let corners: usize = (m.parts.iter())
-                .map(|&k| m.outline.len() + turned.parts[k].len())
-                .sum();
-            (h.finish(), floor_work(corners * m.parts.len()))
-        })
-        .collect();
-    shapes.sort_unstable();
-    shapes.dedup_by_key(|&mut (key, _)| key);
-    shapes
+/// for each shape at each heading, kept), each by its key
+/// ([`Met::shape_key`]) and its parts at this heading, with what growing
+/// it costs: its crossings, as if each part's grown outline met each
+/// other's.
+fn shapes_grown(met: &[Met<'_>], turned: &Turned) -> Looked {
+    Looked::of(met.iter().map(|m| {
+        let mut h = DefaultHasher::new();
+        m.shape_key().hash(&mut h);
+        m.parts.iter().for_each(|&k| turned.hashes[k].hash(&mut h));
+        let corners: usize = (m.parts.iter())
+            .map(|&k| m.outline.len() + turned.parts[k].len())
+            .sum();
+        (h.finish(), floor_work(corners * m.parts.len()))
+    }))
 }
 
 /// Units of the meter finding what a piece depends on costs, for each
@@ -203,7 +195,7 @@ pub struct Piece {
     pub finding: u64,
     /// The shapes working it out grows, by key, and what growing each
     /// costs (`shapes_grown`): charged once for each region's search.
-    pub shapes: Vec<(u64, u64)>,
+    pub shapes: Looked,
 }
 
 /// Up to this many outlines grown part by part, a piece is worked out
@@ -273,6 +265,20 @@ struct Met<'a> {
     parts: Vec<usize>,
 }
 
+impl Met<'_> {
+    /// Its shape: the outline's corners about its first, to the
+    /// nanometre (a turned box's corners about its first differ in their
+    /// last bits from place to place), and the parts that meet it.
+    fn shape_key(&self) -> Vec<i64> {
+        let origin = self.outline[0];
+        let nm = |v: f64| (v * 1e6).round() as i64;
+        (self.outline.iter())
+            .flat_map(|&c| [nm(c.x - origin.x), nm(c.y - origin.y)])
+            .chain(self.parts.iter().map(|&k| k as i64))
+            .collect()
+    }
+}
+
 impl Grown {
     /// `met`'s outline grown by each of its parts (of `turned`), joined,
     /// where it stands.
@@ -280,13 +286,7 @@ impl Grown {
         use geo::Translate;
         let origin = met.outline[0];
         let relative: Vec<Coord<f64>> = met.outline.iter().map(|&c| c - origin).collect();
-        // Corners within a nanometre are one shape (a turned box's corners
-        // about its first differ in their last bits from place to place).
-        let nm = |v: f64| (v * 1e6).round() as i64;
-        let key: Vec<i64> = (relative.iter())
-            .flat_map(|c| [nm(c.x), nm(c.y)])
-            .chain(met.parts.iter().map(|&k| k as i64))
-            .collect();
+        let key = met.shape_key();
         let lock = || self.shapes.lock().unwrap_or_else(|e| e.into_inner());
         let kept = lock().get(&key).cloned();
         let shape = kept.unwrap_or_else(|| {
@@ -313,7 +313,7 @@ pub fn admissible_joined(
     turned: &Turned,
     obstacles: &FloorObstacles,
     grown: &Grown,
-) -> (MultiPolygon<f64>, u64, Vec<(u64, u64)>) {
+) -> (MultiPolygon<f64>, u64, Looked) {
     let met = obstacles_met(cut_of(within), turned, obstacles);
     let (free, crossings) = free_of_met(within, &met, turned, grown);
     let shapes = shapes_grown(&met, turned);
@@ -787,10 +787,10 @@ mod tests {
             admissible_in(within, &turned, &obstacles, &Grown::default()).shapes
         };
         let alike = shapes(&|_| 20.0);
-        assert_eq!(alike.len(), 1);
+        assert_eq!(alike.iter().count(), 1);
         let each = shapes(&|k| 10.0 + 0.25 * k as f64);
-        assert_eq!(each.len(), 100);
-        assert!(each.iter().all(|&(_, units)| units == alike[0].1));
+        assert_eq!(each.iter().count(), 100);
+        assert!(each.iter().all(|(_, units)| units == alike.units()));
     }
 
     #[test]

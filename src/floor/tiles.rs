@@ -51,7 +51,7 @@ struct Tile {
     again: u64,
     /// The shapes working its piece out grows, and what each costs
     /// (`region::Piece`).
-    shapes: Vec<(u64, u64)>,
+    shapes: Looked,
 }
 
 /// Whether a region is empty, and what finding out cost (every tile its
@@ -170,7 +170,7 @@ impl Region {
                 .map(|r| admissible_in(r, &self.turned, &self.obstacles, &self.grown));
             let (piece, work, key, finding, shapes) = match piece {
                 Some(p) => (p.free, p.work, p.key, p.finding, p.shapes),
-                None => (MultiPolygon::new(Vec::new()), 0, 0, 0, Vec::new()),
+                None => (MultiPolygon::new(Vec::new()), 0, 0, 0, Looked::default()),
             };
             let piece = match &self.zone {
                 Some(zone) => zone.cut(piece),
@@ -393,8 +393,8 @@ impl Region {
                     let units = match fresh {
                         Some(fresh) if !(fresh.piece)(tile.key) => tile.again,
                         Some(fresh) => (tile.shapes.iter())
-                            .filter(|&&(shape, _)| (fresh.shape)(shape))
-                            .fold(tile.work, |sum, &(_, units)| sum.saturating_add(units)),
+                            .filter(|&(shape, _)| (fresh.shape)(shape))
+                            .fold(tile.work, |sum, (_, units)| sum.saturating_add(units)),
                         None => tile.work,
                     };
                     work.add_piece(tile.key, units)?;

@@ -73,9 +73,9 @@ impl<'a> Work<'a> {
 }
 
 /// The pieces of floor a search looked at (by the key they are kept by,
-/// `region::Piece`), with what each costs: a search that looks at them
-/// again is charged for looking, not for working them out. Each piece
-/// once, by key, once settled.
+/// `region::Piece`), or the shapes it grew, with what each costs: a
+/// search that looks at them again is charged for looking, not for
+/// working them out. Each once, by key, once settled.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Looked(Vec<(u64, u64)>);
 
@@ -95,9 +95,28 @@ impl Looked {
         self
     }
 
+    /// Each of `keyed` (a key and what it costs) once.
+    pub fn of(keyed: impl IntoIterator<Item = (u64, u64)>) -> Looked {
+        let mut all = Looked::default();
+        keyed
+            .into_iter()
+            .for_each(|(key, units)| all.add(key, units));
+        all.settled()
+    }
+
     /// Whether piece `key` was looked at.
     pub fn contains(&self, key: u64) -> bool {
         self.0.binary_search_by_key(&key, |&(k, _)| k).is_ok()
+    }
+
+    /// Each key and what it costs, by key.
+    pub fn iter(&self) -> impl Iterator<Item = (u64, u64)> + '_ {
+        self.0.iter().copied()
+    }
+
+    /// What all of them cost.
+    pub fn units(&self) -> u64 {
+        (self.0.iter()).fold(0, |sum: u64, &(_, units)| sum.saturating_add(units))
     }
 }
 
@@ -129,6 +148,8 @@ mod tests {
         let looked = work.looked();
         assert_eq!(looked, Looked(vec![(1, 10), (2, 20)]));
         assert!(looked.contains(2) && !looked.contains(0) && !looked.contains(4));
+        assert_eq!(Looked::of([(2, 20), (1, 10), (2, 20), (3, 0)]), looked);
+        assert_eq!(looked.units(), 30);
         assert_eq!(Work::new(&unbounded).looked(), Looked::default());
     }
 }
