@@ -43,6 +43,8 @@ pub fn cleaned(vertices: &[Point3<f64>], triangles: &[[u32; 3]]) -> (Vec<[u32; 3
         }
     }
     let encloses = every_piece_closed && !kept.is_empty();
+    // Kept for the mesh's life: no spare capacity from the filter's growth.
+    kept.shrink_to_fit();
     (kept, encloses)
 }
 

@@ -126,19 +126,32 @@ impl MeshObstacle {
                 });
             }
         }
-        let mut order: Vec<usize> = (0..self.triangles.len()).collect();
-        let centroids: Vec<Point3<f64>> = (self.triangles.iter())
-            .map(|t| {
-                Point3::from(
-                    t.iter()
-                        .map(|&i| self.vertices_mm[i as usize].coords)
-                        .sum::<nalgebra::Vector3<f64>>()
-                        / 3.0,
-                )
-            })
-            .collect();
-        let mut parts = Vec::new();
-        for part in split_near(&mut order, &centroids, PART_TRIANGLES) {
+        // Triangle indices in the order of the parts, and each part's
+        // length; the centroids that ordered them are dropped before any
+        // tree is built, so they never add to the trees' peak.
+        let (order, lengths) = {
+            let mut order: Vec<u32> = (0..self.triangles.len() as u32).collect();
+            let centroids: Vec<Point3<f64>> = (self.triangles.iter())
+                .map(|t| {
+                    Point3::from(
+                        t.iter()
+                            .map(|&i| self.vertices_mm[i as usize].coords)
+                            .sum::<nalgebra::Vector3<f64>>()
+                            / 3.0,
+                    )
+                })
+                .collect();
+            let lengths: Vec<usize> = split_near(&mut order, &centroids, PART_TRIANGLES)
+                .iter()
+                .map(|part| part.len())
+                .collect();
+            (order, lengths)
+        };
+        let mut parts = Vec::with_capacity(lengths.len());
+        let mut rest = &order[..];
+        for length in lengths {
+            let (part, after) = rest.split_at(length);
+            rest = after;
             let (vertices, triangles) = self.part(part);
             parts.push(MeshPart::new(
                 SharedShape::trimesh(vertices, triangles).ok()?,
@@ -151,13 +164,14 @@ impl MeshObstacle {
     }
 
     /// The triangles `part` (indices of triangles) with their own vertices.
-    fn part(&self, part: &[usize]) -> (Vec<Point3<f64>>, Vec<[u32; 3]>) {
+    /// Both exactly as long as they need be: parry keeps them.
+    fn part(&self, part: &[u32]) -> (Vec<Point3<f64>>, Vec<[u32; 3]>) {
         let mut index_of = std::collections::HashMap::new();
         let mut vertices = Vec::new();
-        let triangles = part
+        let triangles: Vec<[u32; 3]> = part
             .iter()
             .map(|&t| {
-                self.triangles[t].map(|v| {
+                self.triangles[t as usize].map(|v| {
                     *index_of.entry(v).or_insert_with(|| {
                         vertices.push(self.vertices_mm[v as usize]);
                         (vertices.len() - 1) as u32
@@ -165,6 +179,7 @@ impl MeshObstacle {
                 })
             })
             .collect();
+        vertices.shrink_to_fit();
         (vertices, triangles)
     }
 }
@@ -173,10 +188,10 @@ impl MeshObstacle {
 /// of points near each other: halved at the median of the longest side of
 /// their bounds until small enough. Deterministic.
 fn split_near<'a>(
-    order: &'a mut [usize],
+    order: &'a mut [u32],
     centroids: &[Point3<f64>],
     most: usize,
-) -> Vec<&'a mut [usize]> {
+) -> Vec<&'a mut [u32]> {
     if order.len() <= most {
         return vec![order];
     }
@@ -185,14 +200,14 @@ fn split_near<'a>(
         Point3::from([f64::NEG_INFINITY; 3]),
     );
     for &i in order.iter() {
-        lo = lo.inf(&centroids[i]);
-        hi = hi.sup(&centroids[i]);
+        lo = lo.inf(&centroids[i as usize]);
+        hi = hi.sup(&centroids[i as usize]);
     }
     let axis = (hi - lo).imax();
     let middle = order.len() / 2;
     order.select_nth_unstable_by(middle, |&a, &b| {
-        centroids[a][axis]
-            .total_cmp(&centroids[b][axis])
+        centroids[a as usize][axis]
+            .total_cmp(&centroids[b as usize][axis])
             .then(a.cmp(&b))
     });
     let (first, second) = order.split_at_mut(middle);
