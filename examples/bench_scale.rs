@@ -2,9 +2,10 @@
 //! holds as the room grows. Each row is generated (boxes in shelving
 //! units; a scanned kitchen as one open mesh of small triangles; a map of
 //! a counter's front; posts in a hall entered by a door, so that the
-//! routes from the door cross the whole hall), then checked and run in a child process of this
-//! program, which reports its time and its peak resident memory (Linux:
-//! `VmHWM`). Prints one table row per size and the growth exponent
+//! routes from the door cross the whole hall) and written to files by
+//! this program, then checked and run in a child process of it, which
+//! reports its time and its peak resident memory (Linux: `VmHWM`, in MiB),
+//! so the generating does not count towards the run's memory. Prints one table row per size and the growth exponent
 //! between the two largest sizes of each kind.
 //!
 //! `cargo run --release --example bench_scale` (all rows), or with a kind
@@ -28,20 +29,23 @@ const ROWS: [(&str, [usize; 2]); 4] = [
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    if args.len() == 4 && args[1] == "--child" {
-        child(&args[2], args[3].parse().expect("a size"));
+    if args.len() == 3 && args[1] == "--child" {
+        child(Path::new(&args[2]));
         return;
     }
     let only = args.get(1).cloned();
-    println!("| work | size | time (s) | peak memory (MB) |\n|---|---|---|---|");
+    println!("| work | size | time (s) | peak memory (MiB) |\n|---|---|---|---|");
     for (kind, sizes) in ROWS {
         if only.as_deref().is_some_and(|o| o != kind) {
             continue;
         }
         let mut figures = Vec::new();
         for size in sizes {
+            let dir = tempfile::tempdir().expect("a temporary directory");
+            let path = write_room(kind, size, dir.path());
             let out = Command::new(&args[0])
-                .args(["--child", kind, &size.to_string()])
+                .arg("--child")
+                .arg(&path)
                 .output()
                 .expect("the child runs");
             let text = String::from_utf8_lossy(&out.stdout);
@@ -72,22 +76,27 @@ fn describe(kind: &str) -> &'static str {
     }
 }
 
-/// Writes the scenario, checks and runs it, prints seconds and peak MB.
-fn child(kind: &str, size: usize) {
-    let dir = tempfile::tempdir().expect("a temporary directory");
+/// Writes the scenario of `size` of `kind` (and its mesh) into `dir`;
+/// the scenario's path.
+fn write_room(kind: &str, size: usize, dir: &Path) -> std::path::PathBuf {
     let text = match kind {
         "boxes" => boxes(size),
         "mesh" => {
-            std::fs::write(dir.path().join("scan.obj"), scan(size)).expect("written");
+            std::fs::write(dir.join("scan.obj"), scan(size)).expect("written");
             mesh_room()
         }
         "doors" => hall(size),
         _ => map(size),
     };
-    let path = dir.path().join("scale.reach");
+    let path = dir.join("scale.reach");
     std::fs::write(&path, text).expect("written");
+    path
+}
+
+/// Checks and runs the scenario at `path`, prints seconds and peak MiB.
+fn child(path: &Path) {
     let start = Instant::now();
-    let json = run(&path);
+    let json = run(path);
     let seconds = start.elapsed().as_secs_f64();
     assert!(json.len() > 100);
     println!("{seconds} {}", peak_mb());
@@ -103,7 +112,7 @@ fn run(path: &Path) -> String {
     json.render(&report, &scenario.format_scene())
 }
 
-/// Peak resident memory of this process, in MB (Linux), or NaN.
+/// Peak resident memory of this process, in MiB (Linux), or NaN.
 fn peak_mb() -> f64 {
     let status = std::fs::read_to_string("/proc/self/status").unwrap_or_default();
     status
