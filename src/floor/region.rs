@@ -131,16 +131,17 @@ pub fn admissible_in(
         m.parts.iter().for_each(|&k| turned.hashes[k].hash(&mut h));
     }
     let pairs: usize = met.iter().map(|m| m.parts.len()).sum();
+    let joined_first = pairs > JOIN_FROM;
     let key = h.finish();
     let finding = (met.iter())
         .map(|m| (m.outline.len() * m.parts.len()) as u64)
         .sum::<u64>()
         .saturating_mul(UNITS_PER_MET_CORNER);
     let kept = PIECES.get_or(key, || {
-        Arc::new(if pairs <= JOIN_FROM {
-            free_of_parts(within, &met, turned)
-        } else {
+        Arc::new(if joined_first {
             free_of_met(within, &met, turned, grown)
+        } else {
+            free_of_parts(within, &met, turned)
         })
     });
     let (free, crossings) = kept.as_ref();
@@ -149,10 +150,10 @@ pub fn admissible_in(
         work: floor_work(*crossings),
         key,
         finding,
-        shapes: if pairs <= JOIN_FROM {
-            Looked::default()
-        } else {
+        shapes: if joined_first {
             shapes_grown(&met, turned)
+        } else {
+            Looked::default()
         },
     }
 }
