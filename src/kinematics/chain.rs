@@ -171,6 +171,13 @@ impl Chain {
         self.joints.len()
     }
 
+    /// The most solids a posture of the chain has (`Chain::volumes`): a
+    /// link for each joint and the effector, and the spheres it carries.
+    /// What the meter counts a check of a posture by, without posing it.
+    pub fn solids_at_most(&self) -> usize {
+        self.joints.len() + 1 + self.riders.len()
+    }
+
     /// The pose of the last frame in the base frame: `DH_0,n`.
     pub fn end_frame(&self, q: &[f64]) -> IsometryMatrix3<f64> {
         // From the first link's own pose rather than the identity times it

@@ -41,7 +41,7 @@ impl IkProblem<'_> {
     pub fn check_units(&self) -> u64 {
         self.obstacles
             .as_ref()
-            .map_or(0, PlacedObstacles::check_units)
+            .map_or(0, |o| o.check_units(self.chain))
     }
 
     /// [`IkProblem::collision`], the check told to the meter at once (for

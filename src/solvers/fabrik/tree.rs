@@ -233,7 +233,11 @@ impl Tree<'_> {
         // Each look at the posture checks every branch.
         let checks = (self.problem.obstacles)
             .filter(|_| s.avoid_obstacles)
-            .map_or(0, |o| o.check_units() * self.passes.len() as u64);
+            .map_or(0, |o| {
+                (self.passes.iter())
+                    .map(|p| o.check_units(p.problem.chain))
+                    .sum::<u64>()
+            });
         while iterations < s.max_iterations {
             let work: u64 = self
                 .passes
