@@ -1067,3 +1067,104 @@ fn meshes_count_towards_the_most_boxes_a_room_may_have() {
     let (code, _, err) = check(&path, &["--max-boxes", "5"]);
     assert_eq!(code, Some(0), "{err}");
 }
+
+/// A counter and `targets` targets on it, reached by a population of
+/// `people` manual wheelchair users.
+fn population_at_counter(people: usize, targets: usize) -> String {
+    let mut text = String::from(
+        "units mm deg\nuse std::populations\nroom kitchen {\n  size 3600 x 3000 x 2500\n  box counter at (0, 0, 0) size (600, 3000, 900)\n",
+    );
+    let names: Vec<String> = (0..targets).map(|k| format!("t{k}")).collect();
+    for (k, name) in names.iter().enumerate() {
+        text.push_str(&format!(
+            "  target {name} at (300, {}, 960)\n",
+            1200 + 100 * k
+        ));
+    }
+    text.push_str(&format!(
+        "}}\npopulation folk = manual_wheelchair_users {{ size {people} seed 3 }}\nreach {} by folk\n",
+        names.join(", ")
+    ));
+    text
+}
+
+/// Each member of a population has a capability map of their own, built
+/// when their first task runs (8,192 postures drawn: most of a member's
+/// time where the reach itself is quick); it counts towards the bound, once
+/// a member however many tasks they have (10,000 people ran 79 s and were
+/// never stopped, since the maps were not counted; about 8 s now, stopped
+/// with the limit named).
+#[test]
+fn each_members_capability_map_counts_towards_the_bound_once() {
+    let bound = Limits::default().solver_work;
+    let run = |people, targets| {
+        metered_run(&population_at_counter(people, targets), bound, 2).expect("within the bound")
+    };
+    let (few, more) = (run(6, 1), run(12, 1));
+    // 8,192 postures of a chain of ten joints or so, a unit a joint and four.
+    let per_member = (more - few) / 6;
+    assert!(per_member >= 8_192 * 10, "{per_member} a member");
+    let two_targets = run(12, 2);
+    assert!(
+        two_targets - more < 12 * 8_192,
+        "a second task pays no member's map again: {two_targets} against {more}"
+    );
+    runs_at_its_work_and_stops_one_unit_under(&population_at_counter(6, 2), run(6, 2));
+}
+
+/// A chain of `joints` short thin links, its effector inside a cage of
+/// six boards.
+fn caged_chain(joints: usize) -> String {
+    let mut text = String::from("units mm deg\nroom r {\n size 20000 x 20000 x 5000\n");
+    let (x, y, z, c) = (10000 + joints * 5, 10000, 1000, 60);
+    for (k, (at, size)) in [
+        ((x - c, y - c, z - c), (2 * c, 2 * c, 5)),
+        ((x - c, y - c, z + c), (2 * c, 2 * c, 5)),
+        ((x - c, y - c, z - c), (5, 2 * c, 2 * c)),
+        ((x + c, y - c, z - c), (5, 2 * c, 2 * c)),
+        ((x - c, y - c, z - c), (2 * c, 5, 2 * c)),
+        ((x - c, y + c, z - c), (2 * c, 5, 2 * c + 5)),
+    ]
+    .iter()
+    .enumerate()
+    {
+        text.push_str(&format!(
+            " box c{k} at ({}, {}, {}) size ({}, {}, {})\n",
+            at.0, at.1, at.2, size.0, size.1, size.2
+        ));
+    }
+    text.push_str(&format!(
+        " target t at ({x}, {y}, {z})\n}}\nmannequin chain {{\n"
+    ));
+    for i in 0..joints {
+        let alpha = if i % 2 == 0 { 90 } else { -90 };
+        text.push_str(&format!(
+            " joint j{i} dh(alpha {alpha}deg, a 10) limits(-20deg, 20deg) link l{i} radius 2\n"
+        ));
+    }
+    text.push_str(" effector tip at (5, 0, 0) link tip radius 2\n}\n");
+    text.push_str("person p { mannequin chain base fixed { at (10000, 10000, 1000) heading 0deg } }\nreach t by p\n");
+    text
+}
+
+/// A check of a long chain's posture looks at every pair of its links,
+/// the square of their number, and is counted so: a chain of 600 links
+/// ran more than two minutes within the default bound, counted as eight
+/// solids a check; now it is stopped with the limit named. At 40 links
+/// a check counts 40 solids and their 780 pairs.
+#[test]
+fn a_long_chains_checks_count_every_pair_of_its_links() {
+    let short = metered_run(&caged_chain(30), u64::MAX / 2, 2).expect("within the bound");
+    let long = metered_run(&caged_chain(60), u64::MAX / 2, 2).expect("within the bound");
+    // Twice the joints, and past the stdlib's longest chain: each check
+    // of 62 solids counts them and their 1,891 pairs, where 31 solids
+    // count 8 (counted as 8 at 60 too, the long chain's run was 3.2 times
+    // the short one's).
+    assert!(long > 10 * short, "{long} against {short}");
+    let past = metered_run(&caged_chain(600), Limits::default().solver_work, 2)
+        .expect_err("past the bound");
+    assert!(
+        matches!(past.kind(), ErrorKind::TooMuchWork { .. }),
+        "{past}"
+    );
+}

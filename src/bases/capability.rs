@@ -104,6 +104,13 @@ impl Capability {
         }
     }
 
+    /// What building the map of `chain` costs the meter: for each sample,
+    /// a posture drawn within the couplings, its effector and its
+    /// discomfort, and the sorting, a unit a joint and four more.
+    pub fn build_work(chain: &Chain) -> u64 {
+        SAMPLES as u64 * (4 + chain.dof() as u64)
+    }
+
     /// The map of `chain` and `own`, built once per process.
     pub fn of(chain: &Chain, own: &OwnBody) -> Arc<Capability> {
         static MAPS: OnceLock<Mutex<Maps>> = OnceLock::new();

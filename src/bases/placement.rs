@@ -413,6 +413,11 @@ impl Base for Mobile {
         &self.own
     }
 
+    /// The person's capability map ([`Capability::build_work`]).
+    fn prepare_work(&self, chain: &Chain) -> u64 {
+        Capability::build_work(chain)
+    }
+
     /// Its floor, and the face a target is on (`face.rs`).
     fn reads_room_through_floor(&self) -> bool {
         true

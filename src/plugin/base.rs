@@ -210,6 +210,13 @@ pub trait Base: Send + Sync {
     fn outside(&self, _room: &Room) -> bool {
         false
     }
+    /// What getting ready for reaches with `chain` costs beyond where the
+    /// base fits ([`Base::floor_work`]), in units of the meter: a mobile
+    /// base's capability map of the person. The run charges it to the
+    /// first task by the person with those effectors.
+    fn prepare_work(&self, _chain: &Chain) -> u64 {
+        0
+    }
     /// Get ready for reaches in `room` with `chain` (caching what does not
     /// depend on the target, such as where the base fits).
     fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a>;

@@ -38,16 +38,29 @@ enum Job {
     Member { population: usize, person: usize },
 }
 
-/// Which tasks are charged their person's floor ([`Scenario::floor_charges`]).
+/// Which tasks are charged their person's floor and their base's getting
+/// ready ([`Scenario::floor_charges`]).
 struct FloorCharges {
-    first: HashMap<usize, bool>,
+    first: HashMap<usize, Charges>,
+}
+
+/// What a task is charged besides its own work.
+#[derive(Clone, Copy)]
+struct Charges {
+    /// Its person's floor in its room ([`Base::floor_work`]).
+    floor: bool,
+    /// Its base's getting ready for its effectors ([`Base::prepare_work`]).
+    prepare: bool,
 }
 
 impl FloorCharges {
-    /// Whether `task` is charged its person's floor.
-    fn of(&self, task: &TaskSpec) -> bool {
+    /// What `task` is charged (a task not of the scenario: everything).
+    fn of(&self, task: &TaskSpec) -> Charges {
         let address = std::ptr::from_ref(task) as usize;
-        self.first.get(&address).copied().unwrap_or(true)
+        (self.first.get(&address).copied()).unwrap_or(Charges {
+            floor: true,
+            prepare: true,
+        })
     }
 }
 
@@ -296,7 +309,7 @@ impl Scenario {
         person: usize,
         progress: &dyn Progress,
         run: &Arc<RunWork>,
-        charges: bool,
+        charges: Charges,
     ) -> (TaskReport, u64) {
         let spec = TaskSpec {
             person,
@@ -315,14 +328,20 @@ impl Scenario {
     /// ([`Base::floor_work`]): the first task of the scenario in that room
     /// by the same person (or population), whichever runs first and
     /// whichever answers a watch reuses, so that every task's work is the
-    /// same on every run. A task not of the scenario is charged it.
+    /// same on every run; and whether it is charged its base's getting
+    /// ready for its effectors ([`Base::prepare_work`]): the first task by
+    /// the same person (or population) with those effectors, in any room.
+    /// A task not of the scenario is charged both.
     fn floor_charges(&self) -> FloorCharges {
-        let mut seen = HashSet::new();
+        let (mut floors, mut prepared) = (HashSet::new(), HashSet::new());
         let first = (self.tasks.iter())
             .map(|t| {
                 let person = t.population.is_none().then_some(t.person);
-                let first = seen.insert((t.room, t.population, person));
-                (std::ptr::from_ref(t) as usize, first)
+                let charges = Charges {
+                    floor: floors.insert((t.room, t.population, person)),
+                    prepare: prepared.insert((t.population, person, t.effectors.clone())),
+                };
+                (std::ptr::from_ref(t) as usize, charges)
             })
             .collect();
         FloorCharges { first }
@@ -339,7 +358,7 @@ impl Scenario {
         verdict_only: bool,
         record: bool,
         run: &Arc<RunWork>,
-        charges_floor: bool,
+        charges: Charges,
     ) -> (TaskReport, Option<TouchedSet>, u64) {
         let room = &self.rooms[task.room];
         let touched = (record && task.task.records_touches())
@@ -362,7 +381,7 @@ impl Scenario {
         let (subject, person) = (input.subject.name(), &input.person.name);
         let (base, room) = (&input.person.base.name, &input.room.name);
         let fit = input.base.fit(input.room, &meter);
-        if charges_floor {
+        if charges.floor {
             meter.charge(input.base.floor_work(input.room));
         }
         let report = match fit {
@@ -371,6 +390,11 @@ impl Scenario {
             }
             Fit::Shut(shut) => NotPlacedReport::shut(label, subject, person, base, room, &shut),
             Fit::Fits | Fit::Outside => {
+                if charges.prepare {
+                    let body = &input.person.body;
+                    (input.effectors.iter())
+                        .for_each(|&e| _ = meter.charge(input.base.prepare_work(&body.chain(e))));
+                }
                 let report = task.task.run(&input);
                 return (report, touched.map(|t| t.set()), meter.spent());
             }
