@@ -120,12 +120,22 @@ impl Capability {
                 .get_or_init(Mutex::default)
                 .lock()
                 .unwrap_or_else(|e| e.into_inner());
-            if maps.len() >= MAPS_KEPT {
-                maps.clear();
+            let bytes = Capability::bytes(chain);
+            if maps.built.len() >= MAPS_KEPT || maps.bytes + bytes > MAPS_KEPT_BYTES {
+                *maps = Maps::default();
             }
-            Arc::clone(maps.entry(key).or_default())
+            if !maps.built.contains_key(&key) {
+                maps.bytes += bytes;
+            }
+            Arc::clone(maps.built.entry(key).or_default())
         };
         Arc::clone(cell.get_or_init(|| Arc::new(Capability::build(chain, own, SAMPLES))))
+    }
+
+    /// About the memory a map of `chain` takes: its samples and their
+    /// joint values.
+    fn bytes(chain: &Chain) -> usize {
+        SAMPLES * (std::mem::size_of::<Sample>() + chain.dof() * std::mem::size_of::<f64>())
     }
 
     /// The samples whose effector is between `below_mm` under height
@@ -171,14 +181,24 @@ impl Capability {
     }
 }
 
-/// The maps built, by what they depend on, each built once.
-type Maps = HashMap<String, Arc<OnceLock<Arc<Capability>>>>;
+/// The maps built, by what they depend on, each built once, and about the
+/// memory they take.
+#[derive(Default)]
+struct Maps {
+    built: HashMap<String, Arc<OnceLock<Arc<Capability>>>>,
+    bytes: usize,
+}
 
 /// How many maps the process keeps before it starts again (about 1 MB
 /// each): enough for the people of a scenario and their effectors; the
 /// members of a population each have their own, used by one thread while
 /// it runs that person's tasks.
 const MAPS_KEPT: usize = 64;
+
+/// The most memory the maps kept may take before the process starts
+/// again: a chain of 700 joints makes a map of 46 MB, and 64 of them
+/// took 3 GB.
+const MAPS_KEPT_BYTES: usize = 256 << 20;
 
 /// Whether posture `q` keeps the chain out of the person's own body and
 /// base and out of itself (the hand, which may rest on what it reaches, is
