@@ -1168,3 +1168,38 @@ fn a_long_chains_checks_count_every_pair_of_its_links() {
         "{past}"
     );
 }
+
+/// A hall of counters and `elements` targets on them, checked against
+/// ada2010 and asked nothing else.
+fn counters_checked(elements: usize) -> String {
+    let mut text = String::from("units mm deg\nroom hall {\n  size 10000 x 10000 x 3000\n");
+    for k in 0..20 {
+        let (x, y) = (800 + 1800 * (k % 5), 800 + 2000 * (k / 5));
+        text.push_str(&format!(
+            "  box c{k} at ({x}, {y}, 0) size (600, 600, 900)\n"
+        ));
+    }
+    for e in 0..elements {
+        let k = e % 20;
+        let (x, y) = (
+            800 + 1800 * (k % 5) + 300,
+            800 + 2000 * (k / 5) + 100 + 20 * (e / 20),
+        );
+        text.push_str(&format!("  target e{e} at ({x}, {y}, 950)\n"));
+    }
+    text + "}\nstandard ada2010 in hall\n"
+}
+
+/// Each element's clear floor space is slid along it in 10 mm steps, each
+/// step a look at the room's free floor that costs as its corners do:
+/// the looks count towards the bound (1,000 elements among 50 counters
+/// took 66 s unmetered; now stopped with the limit named after about 7 s).
+#[test]
+fn a_standards_looks_at_the_floor_count_towards_the_bound() {
+    let ten = metered_run(&counters_checked(10), u64::MAX / 2, 2).expect("within the bound");
+    let twenty = metered_run(&counters_checked(20), u64::MAX / 2, 2).expect("within the bound");
+    // Ten elements more, each looked at from 8 approaches at least once,
+    // each look at least 12 units for each of 80 corners.
+    assert!(twenty - ten >= 10 * 8 * 12 * 80, "{twenty} against {ten}");
+    runs_at_its_work_and_stops_one_unit_under(&counters_checked(10), ten);
+}

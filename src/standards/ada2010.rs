@@ -288,8 +288,8 @@ impl Usage {
 /// of fails).
 struct Measure<'r> {
     room: &'r Room,
-    floor: &'r FreeFloor,
-    routes: Option<&'r RouteFloor>,
+    floor: &'r FreeFloor<'r>,
+    routes: Option<&'r RouteFloor<'r>>,
     meshes: Vec<BoxObstacle>,
     /// What the floors worked out are charged to.
     meter: &'r Meter,
@@ -571,7 +571,7 @@ fn side(m: &Measure<'_>, at: &Point3<f64>, a: &Approached) -> Usage {
 /// element).
 #[allow(clippy::too_many_arguments)]
 fn clear_floor(
-    floor: &FreeFloor,
+    floor: &FreeFloor<'_>,
     at: &Point3<f64>,
     toward: Vector2<f64>,
     near_mm: f64,
