@@ -147,7 +147,9 @@ pub fn admissible_in(
     let (free, crossings) = kept.as_ref();
     Piece {
         free: free.clone(),
-        work: floor_work(*crossings),
+        // The crossings measure crowded outlines, the corners many that
+        // touch without crossing (a scan's floor cells).
+        work: floor_work(*crossings).max(route_tile_work(&met, turned)),
         key,
         finding,
         shapes: if joined_first {
