@@ -24,16 +24,6 @@ const TILE_MM: f64 = 1000.0;
 const MAX_TILES: f64 = 4096.0;
 /// How far each tile's piece reaches beyond the tile.
 const OVERLAP_MM: f64 = 1.0;
-/// A search for the nearest admissible point is charged the tiles it
-/// looks at this many steps or more from the point's own: every one,
-/// those around the target too (each task pays for them the first time it
-/// looks, though the process works each out once). Counting from the
-/// second ring, as before, left the floor round each target uncounted,
-/// and 500 targets among 5,000 thin posts ran 14 s counted as 33 million
-/// units (and 150 at 64 headings 79 s); they are now stopped after 3 and
-/// 6 s.
-const CHARGED_FROM_RING: usize = 0;
-
 /// Which pieces of floor, and which shapes grown for them, a search is
 /// charged in full for: those not worked out for it before.
 struct Fresh<'a> {
@@ -299,7 +289,7 @@ impl Region {
                     None => true,
                     Some(free) => {
                         let centre = Point::from(free.center());
-                        let counted = self.nearest_counted(centre, 0, Some(&fresh), &mut own);
+                        let counted = self.nearest_counted(centre, Some(&fresh), &mut own);
                         counted
                             .map_err(|cut| work.cut_short_with(cut.work))?
                             .is_none()
@@ -323,12 +313,11 @@ impl Region {
     /// tile by tile outwards from `p`'s, none if the region is empty.
     pub fn nearest(&self, p: Point<f64>) -> Option<Point<f64>> {
         let mut work = Work::new(&unbounded);
-        self.nearest_counted(p, usize::MAX, None, &mut work)
-            .unwrap_or(None)
+        self.nearest_counted(p, None, &mut work).unwrap_or(None)
     }
 
-    /// Like `nearest`, `meter` charged the tiles looked at
-    /// ([`CHARGED_FROM_RING`]: all of them); none once the run is past its
+    /// Like `nearest`, `meter` charged every tile looked at (`nearest_counted`);
+    /// none once the run is past its
     /// limit. A tile's piece is charged what working it out costs (and
     /// each shape it grows, the first time the task grows it) the first
     /// time the task looks at it, and only what looking again costs after
@@ -348,7 +337,7 @@ impl Region {
             piece: &fresh,
             shape: &grows,
         };
-        let found = self.nearest_counted(p, CHARGED_FROM_RING, Some(&fresh), &mut work);
+        let found = self.nearest_counted(p, Some(&fresh), &mut work);
         match found {
             Ok(found) => {
                 meter.charge(work.done);
@@ -361,14 +350,16 @@ impl Region {
         }
     }
 
-    /// `nearest`, `work` charged each tile looked at `from_ring` steps or
-    /// more from `p`'s: where its piece is `fresh` (all are, if none is
-    /// given), what working it out costs, and growing each shape it grows
-    /// that is fresh too; what looking at it again costs otherwise.
+    /// `nearest`, `work` charged each tile looked at, those round `p`
+    /// too (each task pays for them the first time it looks, though the
+    /// process works each out once: left uncounted, 500 targets among
+    /// 5,000 thin posts ran 14 s counted as 33 million units): where its
+    /// piece is `fresh` (all are, if none is given), what working it out
+    /// costs, and growing each shape it grows that is fresh too; what
+    /// looking at it again costs otherwise.
     fn nearest_counted(
         &self,
         p: Point<f64>,
-        from_ring: usize,
         fresh: Option<&Fresh<'_>>,
         work: &mut Work<'_>,
     ) -> Result<Option<Point<f64>>, CutShort> {
@@ -391,16 +382,14 @@ impl Region {
             }
             for (i, j) in ring_tiles(ci, cj, ring, self.nx, self.ny) {
                 let tile = self.tile(i, j);
-                if ring >= from_ring {
-                    let units = match fresh {
-                        Some(fresh) if !(fresh.piece)(tile.key) => tile.again,
-                        Some(fresh) => (tile.shapes.iter())
-                            .filter(|&(shape, _)| (fresh.shape)(shape))
-                            .fold(tile.work, |sum, (_, units)| sum.saturating_add(units)),
-                        None => tile.work,
-                    };
-                    work.add_piece(tile.key, units)?;
-                }
+                let units = match fresh {
+                    Some(fresh) if !(fresh.piece)(tile.key) => tile.again,
+                    Some(fresh) => (tile.shapes.iter())
+                        .filter(|&(shape, _)| (fresh.shape)(shape))
+                        .fold(tile.work, |sum, (_, units)| sum.saturating_add(units)),
+                    None => tile.work,
+                };
+                work.add_piece(tile.key, units)?;
                 // A piece whose bounds are no nearer than the best cannot
                 // be nearer (nor, by a tie, replace it).
                 let Some(near_mm) = tile.inside.bounds_distance_mm(p) else {
