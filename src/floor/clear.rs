@@ -78,10 +78,7 @@ impl<'m> FreeFloor<'m> {
 /// What one look at `region` (whether it holds or meets a polygon) costs
 /// the meter: its corners.
 fn look_units(region: &MultiPolygon<f64>) -> u64 {
-    let corners: usize = (region.0.iter())
-        .map(|p| p.exterior().0.len() + p.interiors().iter().map(|r| r.0.len()).sum::<usize>())
-        .sum();
-    1 + corners as u64 * UNITS_PER_CORNER
+    1 + geo::CoordsIter::coords_count(region) as u64 * UNITS_PER_CORNER
 }
 
 /// A footprint part of `outline` from the floor to `below_mm`.
