@@ -9,7 +9,7 @@
 //! meet it are joined first, once per shape (`Grown`).
 
 use std::collections::hash_map::DefaultHasher;
-use std::collections::{BTreeMap, HashMap};
+use std::collections::HashMap;
 use std::hash::{Hash, Hasher};
 use std::sync::{Arc, Mutex};
 
@@ -222,7 +222,7 @@ fn free_of_parts(
     let mut grown: Vec<Polygon<f64>> = (met.iter())
         .flat_map(|m| grown_part_by_part(m, turned, cut))
         .collect();
-    grown.sort_by(canonical);
+    sort_canonically(&mut grown);
     free_of(MultiPolygon::new(vec![within.to_polygon()]), grown)
 }
 
@@ -402,7 +402,7 @@ fn free_of_met(
     // In an order of their own (neighbours first, so that each union of
     // `union` joins outlines near each other), not the order the R-tree
     // of this room happens to give them in.
-    outlines.sort_by(canonical);
+    sort_canonically(&mut outlines);
     free_of(free, outlines)
 }
 
@@ -434,21 +434,35 @@ fn obstacles_met<'a>(
     turned: &Turned,
     obstacles: &'a FloorObstacles,
 ) -> Vec<Met<'a>> {
-    let mut met: BTreeMap<Vec<u64>, Met<'a>> = BTreeMap::new();
+    let mut found: Vec<(&'a [Coord<f64>], usize)> = Vec::new();
     for k in 0..turned.parts.len() {
         let (lo, hi) = turned.reach[k];
-        for outline in obstacles.near(k, cut.min() + lo, cut.max() + hi) {
-            let key: Vec<u64> = (outline.iter())
-                .flat_map(|c| [c.x.to_bits(), c.y.to_bits()])
-                .collect();
-            let entry = met.entry(key).or_insert(Met {
+        let near = obstacles.near(k, cut.min() + lo, cut.max() + hi);
+        found.extend(near.into_iter().map(|outline| (outline, k)));
+    }
+    // By corners, then part: the same outline in two parts' lists is one.
+    found.sort_by(|(a, ka), (b, kb)| corner_bits_order(a, b).then(ka.cmp(kb)));
+    let mut met: Vec<Met<'a>> = Vec::new();
+    for (outline, k) in found {
+        match met.last_mut() {
+            Some(last) if corner_bits_order(last.outline, outline).is_eq() => last.parts.push(k),
+            _ => met.push(Met {
                 outline,
-                parts: Vec::new(),
-            });
-            entry.parts.push(k);
+                parts: vec![k],
+            }),
         }
     }
-    met.into_values().collect()
+    met
+}
+
+/// Outlines ordered by their corners' bits, x then y, corner by corner;
+/// where one's corners begin the other's, the one with fewer first.
+fn corner_bits_order(a: &[Coord<f64>], b: &[Coord<f64>]) -> std::cmp::Ordering {
+    let bits = |c: &Coord<f64>| (c.x.to_bits(), c.y.to_bits());
+    (a.iter().zip(b))
+        .map(|(ca, cb)| bits(ca).cmp(&bits(cb)))
+        .find(|o| o.is_ne())
+        .unwrap_or(a.len().cmp(&b.len()))
 }
 
 /// The region grown part by part, each part's outline on its own (what
@@ -505,26 +519,32 @@ fn covered_by_a_few(
     false
 }
 
-/// The least x of a polygon's corners.
-/// Outlines ordered by their leftmost x, then corner by corner.
-fn canonical(a: &Polygon<f64>, b: &Polygon<f64>) -> std::cmp::Ordering {
-    let corners = |p: &Polygon<f64>| {
-        p.exterior()
-            .0
-            .iter()
-            .flat_map(|c| [c.x, c.y])
-            .collect::<Vec<f64>>()
-    };
-    left_of(a).total_cmp(&left_of(b)).then_with(|| {
-        let (ca, cb) = (corners(a), corners(b));
-        ca.iter()
-            .zip(&cb)
-            .map(|(x, y)| x.total_cmp(y))
-            .find(|o| o.is_ne())
-            .unwrap_or(ca.len().cmp(&cb.len()))
-    })
+/// `polygons` ordered by their leftmost x, then corner by corner (a
+/// stable sort: equal outlines keep their order). Each polygon's leftmost
+/// x is found once, not at every comparison.
+fn sort_canonically(polygons: &mut Vec<Polygon<f64>>) {
+    let mut keyed: Vec<(f64, Polygon<f64>)> =
+        polygons.drain(..).map(|p| (left_of(&p), p)).collect();
+    keyed.sort_by(|(la, a), (lb, b)| la.total_cmp(lb).then_with(|| corner_by_corner(a, b)));
+    polygons.extend(keyed.into_iter().map(|(_, p)| p));
 }
 
+/// Two outlines' corners compared in turn, x then y; where one's corners
+/// begin the other's, the one with fewer first.
+fn corner_by_corner(a: &Polygon<f64>, b: &Polygon<f64>) -> std::cmp::Ordering {
+    let (ca, cb) = (&a.exterior().0, &b.exterior().0);
+    (flat(ca).zip(flat(cb)))
+        .map(|(x, y)| x.total_cmp(&y))
+        .find(|o| o.is_ne())
+        .unwrap_or(ca.len().cmp(&cb.len()))
+}
+
+/// Corners' coordinates in turn, x then y.
+fn flat(corners: &[Coord<f64>]) -> impl Iterator<Item = f64> + '_ {
+    corners.iter().flat_map(|c| [c.x, c.y])
+}
+
+/// The least x of a polygon's corners.
 fn left_of(p: &Polygon<f64>) -> f64 {
     p.exterior()
         .0
