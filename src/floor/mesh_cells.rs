@@ -17,6 +17,8 @@
 //! exact where the mesh follows the cells, conservative by at most two
 //! cells elsewhere.
 
+use std::collections::HashMap;
+
 use geo::Coord;
 use nalgebra::{Point3, Vector3};
 
@@ -56,9 +58,7 @@ impl MeshCells {
         if meshes.is_empty() || footprint.parts.is_empty() {
             return None;
         }
-        let cell_mm = CELL_MM.max((size_mm[0] * size_mm[1] / MAX_CELLS).sqrt());
-        let nx = ((size_mm[0] / cell_mm).ceil() as usize).max(1);
-        let ny = ((size_mm[1] / cell_mm).ceil() as usize).max(1);
+        let (cell_mm, nx, ny) = grid(size_mm);
         let mut cells = MeshCells {
             cell_mm,
             nx,
@@ -83,6 +83,11 @@ impl MeshCells {
         }
         cells.fill_solids(crossings);
         Some(cells)
+    }
+
+    /// How many cells it has.
+    pub fn len(&self) -> usize {
+        self.masks.len()
     }
 
     /// Where triangle `v`, not vertical, passes over cell centres: the
@@ -258,10 +263,14 @@ impl MeshCells {
         for j in 0..self.ny {
             let row = &self.masks[j * self.nx..(j + 1) * self.nx];
             let mut next: Vec<Rectangle> = Vec::new();
+            // The previous row's rectangles, like its runs, by first cell.
+            let mut above = open.into_iter().peekable();
             for (i0, i1) in runs(row, mask) {
-                match open.iter().position(|r| r.x == [i0, i1]) {
-                    Some(k) => {
-                        let mut r = open.swap_remove(k);
+                while let Some(ended) = above.next_if(|r| r.x[0] < i0) {
+                    done.push(ended);
+                }
+                match above.next_if(|r| r.x == [i0, i1]) {
+                    Some(mut r) => {
                         r.y[1] = j;
                         r.cells += i1 - i0 + 1;
                         next.push(r);
@@ -269,13 +278,21 @@ impl MeshCells {
                     None => next.push(Rectangle::new([i0, i1], j)),
                 }
             }
-            done.append(&mut open);
+            done.extend(above);
             open = next;
         }
         done.append(&mut open);
         done.sort_by_key(|r| (r.y[0], r.x[0]));
         done
     }
+}
+
+/// The side of a floor's cells and how many there are along x and y.
+fn grid(size_mm: [f64; 2]) -> (f64, usize, usize) {
+    let cell_mm = CELL_MM.max((size_mm[0] * size_mm[1] / MAX_CELLS).sqrt());
+    let nx = ((size_mm[0] / cell_mm).ceil() as usize).max(1);
+    let ny = ((size_mm[1] / cell_mm).ceil() as usize).max(1);
+    (cell_mm, nx, ny)
 }
 
 /// Cells a merge of two rectangles may cover that neither does.
@@ -289,13 +306,34 @@ const MAX_ADDED_CELLS: usize = 2;
 fn merge_ragged(exact: Vec<Rectangle>) -> Vec<Rectangle> {
     let mut done: Vec<Rectangle> = Vec::new();
     let mut open: Vec<Rectangle> = Vec::new();
+    // Where `exact`'s current row begins, and the open rectangles ending
+    // in the row below it by their first cell (their places in `open`,
+    // rising: a row's stacking neither removes nor reorders any).
+    let mut row = None;
+    let mut below: HashMap<usize, Vec<usize>> = HashMap::new();
     for e in exact {
-        let (ended, still): (Vec<Rectangle>, Vec<Rectangle>) =
-            open.into_iter().partition(|r| r.y[1] + 1 < e.y[0]);
-        done.extend(ended);
-        open = still;
-        let joins = |r: &Rectangle| r.y[1] + 1 == e.y[0] && r.takes(&e);
-        match open.iter().position(joins) {
+        if row != Some(e.y[0]) {
+            row = Some(e.y[0]);
+            let (ended, still): (Vec<Rectangle>, Vec<Rectangle>) =
+                open.into_iter().partition(|r| r.y[1] + 1 < e.y[0]);
+            done.extend(ended);
+            open = still;
+            below.clear();
+            for (k, r) in open.iter().enumerate() {
+                if r.y[1] + 1 == e.y[0] {
+                    below.entry(r.first[0]).or_default().push(k);
+                }
+            }
+        }
+        // `takes` asks for a first cell within one of e's.
+        let mut near: Vec<usize> = (e.x[0].saturating_sub(1)..=e.x[0] + 1)
+            .filter_map(|x| below.get(&x))
+            .flatten()
+            .copied()
+            .collect();
+        near.sort_unstable();
+        let joins = |&k: &usize| open[k].y[1] + 1 == e.y[0] && open[k].takes(&e);
+        match near.into_iter().find(joins) {
             Some(k) => open[k].stack(&e),
             None => open.push(e),
         }
@@ -329,6 +367,7 @@ fn height_in(v: &[Point3<f64>; 3], x: f64, y: f64) -> Option<f64> {
 
 /// Cells `[x0, x1]` over rows `[y0, y1]`, inclusive; `first` is the run it
 /// began with, `cells` how many of its cells are blocked.
+#[derive(Debug, PartialEq)]
 struct Rectangle {
     first: [usize; 2],
     x: [usize; 2],
@@ -617,5 +656,102 @@ mod tests {
         let rects = cells.rectangles([0.0, 1400.0]);
         assert_eq!(rects.len(), 1);
         assert_eq!(rects[0][2], Coord { x: 605.0, y: 200.0 });
+    }
+}
+
+/// The rectangles as first written (each run matched by a scan of the row
+/// above, every open rectangle looked at for each one stacked): quadratic
+/// in a row's runs, which a cluttered scan has thousands of, and kept here
+/// as the reference the sweeps must agree with rectangle for rectangle.
+#[cfg(test)]
+mod reference {
+    use super::{runs, MeshCells, Rectangle};
+
+    pub fn exact_rectangles(cells: &MeshCells, mask: u64) -> Vec<Rectangle> {
+        let mut done: Vec<Rectangle> = Vec::new();
+        let mut open: Vec<Rectangle> = Vec::new();
+        for j in 0..cells.ny {
+            let row = &cells.masks[j * cells.nx..(j + 1) * cells.nx];
+            let mut next: Vec<Rectangle> = Vec::new();
+            for (i0, i1) in runs(row, mask) {
+                match open.iter().position(|r| r.x == [i0, i1]) {
+                    Some(k) => {
+                        let mut r = open.swap_remove(k);
+                        r.y[1] = j;
+                        r.cells += i1 - i0 + 1;
+                        next.push(r);
+                    }
+                    None => next.push(Rectangle::new([i0, i1], j)),
+                }
+            }
+            done.append(&mut open);
+            open = next;
+        }
+        done.append(&mut open);
+        done.sort_by_key(|r| (r.y[0], r.x[0]));
+        done
+    }
+
+    pub fn merge_ragged(exact: Vec<Rectangle>) -> Vec<Rectangle> {
+        let mut done: Vec<Rectangle> = Vec::new();
+        let mut open: Vec<Rectangle> = Vec::new();
+        for e in exact {
+            let (ended, still): (Vec<Rectangle>, Vec<Rectangle>) =
+                open.into_iter().partition(|r| r.y[1] + 1 < e.y[0]);
+            done.extend(ended);
+            open = still;
+            let joins = |r: &Rectangle| r.y[1] + 1 == e.y[0] && r.takes(&e);
+            match open.iter().position(joins) {
+                Some(k) => open[k].stack(&e),
+                None => open.push(e),
+            }
+        }
+        done.extend(open);
+        done.sort_by_key(|r| (r.y[0], r.x[0]));
+        done
+    }
+}
+
+#[cfg(test)]
+mod sweeps {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn cells(nx: usize, ny: usize, masks: Vec<u64>) -> MeshCells {
+        MeshCells {
+            cell_mm: CELL_MM,
+            nx,
+            ny,
+            bounds_mm: vec![0.0, 100.0],
+            masks,
+        }
+    }
+
+    proptest! {
+        /// Ragged, noisy rasters (each cell blocked with the odds given,
+        /// rows often repeating the one below) give the same rectangles,
+        /// exact and merged, as the reference.
+        #[test]
+        fn the_sweeps_give_the_rectangles_the_reference_gives(
+            nx in 1usize..40,
+            rows in proptest::collection::vec((proptest::collection::vec(0u8..4, 40), any::<bool>()), 1..40),
+        ) {
+            let mut masks: Vec<u64> = Vec::new();
+            for (j, (row, repeat)) in rows.iter().enumerate() {
+                if *repeat && j > 0 {
+                    let above = masks[(j - 1) * nx..j * nx].to_vec();
+                    masks.extend(above);
+                } else {
+                    masks.extend(row[..nx].iter().map(|&b| u64::from(b == 0) | (u64::from(b == 1) << 2)));
+                }
+            }
+            let cells = cells(nx, rows.len(), masks);
+            for mask in [1, 4, 5] {
+                let exact = cells.exact_rectangles(mask);
+                let expected = reference::exact_rectangles(&cells, mask);
+                prop_assert_eq!(&exact, &expected);
+                prop_assert_eq!(merge_ragged(exact), reference::merge_ragged(expected));
+            }
+        }
     }
 }
