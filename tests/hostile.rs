@@ -943,14 +943,19 @@ fn hall_of_posts(size_mm: u32, columns: u32) -> String {
 /// The run of `text` within `limit` units of solver work, on `threads`
 /// threads: the work, or the error.
 fn metered_run(text: &str, limit: u64, threads: usize) -> Result<u64, reach::Error> {
+    let input = Input::Text {
+        name: "metered.reach",
+        text,
+    };
+    metered_run_of(input, limit, threads)
+}
+
+/// Like `metered_run`, of `input`.
+fn metered_run_of(input: Input<'_>, limit: u64, threads: usize) -> Result<u64, reach::Error> {
     let registry = Registry::builtin();
     let limits = Limits {
         solver_work: limit,
         ..Limits::default()
-    };
-    let input = Input::Text {
-        name: "metered.reach",
-        text,
     };
     let scenario = reach::check_within(input, &registry, &limits)
         .1
@@ -1246,4 +1251,88 @@ fn the_floor_round_each_target_counts_towards_the_bound() {
     assert!(one > 2_000_000, "{one}");
     assert!(three - one > 2 * 2_000_000, "{three} against {one}");
     runs_at_its_work_and_stops_one_unit_under(&ringed_tables(1), one);
+}
+
+/// `count` cubes of 20 mm, 60 mm apart in rows of 30 from (4000, 4000),
+/// as one OBJ.
+fn cubes_obj(count: usize) -> String {
+    let mut text = String::new();
+    for k in 0..count {
+        let min = [
+            4000.0 + 60.0 * (k % 30) as f64,
+            4000.0 + 60.0 * (k / 30) as f64,
+            0.0,
+        ];
+        let cube = crate::watch::cube_obj(min, 20.0);
+        for line in cube.lines() {
+            match line.strip_prefix("f ") {
+                Some(face) => {
+                    let shifted: Vec<String> = (face.split(' '))
+                        .map(|i| (i.parse::<usize>().unwrap() + 8 * k).to_string())
+                        .collect();
+                    text += &format!("f {}\n", shifted.join(" "));
+                }
+                None => text += &format!("{line}\n"),
+            }
+        }
+    }
+    text
+}
+
+/// A 6 x 6 m room with 600 small cubes loaded from OBJ in its far corner,
+/// a cup in the open far from them, and `people` wheelchair users of
+/// different seat heights (each a footprint of their own, so a floor of
+/// their own), as a file with its mesh beside it.
+fn cluttered_corner_for(people: usize) -> (tempfile::TempDir, std::path::PathBuf) {
+    let persons: String = (0..people)
+        .map(|k| {
+            format!(
+                "person p{k} {{ mannequin man_50th_seated base wheelchair {{ seat_height {}mm }} }}\n",
+                450 + 5 * k
+            )
+        })
+        .collect();
+    let names: Vec<String> = (0..people).map(|k| format!("p{k}")).collect();
+    let text = format!(
+        "units mm deg\nuse std::people\nroom r {{\n  size 6000 x 6000 x 2500\n  \
+         mesh clutter from \"clutter.obj\"\n  target cup at (1500, 1500, 800)\n}}\n\
+         {persons}reach cup by {}\n",
+        names.join(", ")
+    );
+    let (dir, path) = scenario_file(&text);
+    std::fs::write(dir.path().join("clutter.obj"), cubes_obj(600)).unwrap();
+    (dir, path)
+}
+
+/// Each person's floor among a room's meshes marks every triangle in the
+/// floor's cells (5 mm squares), looks at every cell for each band of
+/// heights the person's footprint stands at, and puts each rectangle of
+/// blocked cells in an R-tree: that counts towards the bound, for each
+/// footprint, wherever the placement's search looks (a mesh of 200,000
+/// small triangles took 1.6 s a person, uncounted: ten people ran 17 s
+/// before the bound stopped them; 11 s now).
+#[test]
+fn a_meshs_cells_count_towards_the_bound_for_each_footprint() {
+    let work = |people| {
+        let (_dir, path) = cluttered_corner_for(people);
+        metered_run_of(Input::Path(&path), u64::MAX / 2, 2).expect("within the bound")
+    };
+    let (one, three) = (work(1), work(3));
+    // 600 cubes' 7,200 triangles at 40 units, each cube an outline in each
+    // band (24 units each), and 1,440,000 cells a sixteenth of a unit a
+    // band: 0.29 M before the bands.
+    let per_person = (three - one) / 2;
+    assert!(per_person >= 7_200 * 40 + 600 * 24, "{per_person} a person");
+    let (_dir, path) = cluttered_corner_for(1);
+    for threads in [1, 3] {
+        assert_eq!(
+            metered_run_of(Input::Path(&path), one, threads).ok(),
+            Some(one)
+        );
+        let past = metered_run_of(Input::Path(&path), one - 1, threads).expect_err("past");
+        assert!(
+            matches!(past.kind(), ErrorKind::TooMuchWork { .. }),
+            "{past}"
+        );
+    }
 }

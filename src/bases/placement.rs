@@ -280,7 +280,10 @@ impl Mobile {
     ) -> Result<Floor, CutShort> {
         let zone = self.placing.zone.as_ref();
         let headings = &self.placing.headings;
+        let within = |units: u64| meter.would_stay_within(units);
+        let mut work = Work::new(&within);
         let obstacles = Arc::new(FloorObstacles::new(room, &self.footprint));
+        work.add(obstacles.work())?;
         let region = |k: usize, h: f64| {
             let obstacles = Arc::clone(&obstacles);
             let region = Region::new(room, &self.footprint, h, zone, obstacles);
@@ -294,8 +297,6 @@ impl Mobile {
             let one = region(0, 0.0);
             headings.iter().map(|&h| (h, Arc::clone(&one))).collect()
         };
-        let within = |units: u64| meter.would_stay_within(units);
-        let mut work = Work::new(&within);
         let fits = any_fits(&regions, &mut work)?;
         let routes = if fits {
             let left = |units: u64| work.allows(units);

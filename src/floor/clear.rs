@@ -126,7 +126,7 @@ fn worked_out(room: &Room, footprint: &Footprint, heading_rad: f64) -> (MultiPol
         Some(within) => {
             let obstacles = FloorObstacles::new(room, footprint);
             let piece = admissible_in(within, &turned, &obstacles, &Grown::default());
-            (piece.free, piece.work)
+            (piece.free, piece.work.saturating_add(obstacles.work()))
         }
         None => (MultiPolygon::new(Vec::new()), 0),
     }
@@ -162,6 +162,7 @@ pub fn disc_centre(
     let footprint = disc(radius_mm, below_mm);
     let region = on_route(whole(room, &footprint, 0.0, meter), on);
     let obstacles = FloorObstacles::new(room, &footprint);
+    meter.charge(obstacles.work());
     let clear = |c: Point<f64>| {
         let (x, y) = (c.x(), c.y());
         let walls = [x, y, room.size_mm.x - x, room.size_mm.y - y];

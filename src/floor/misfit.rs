@@ -51,6 +51,7 @@ impl Misfit {
         let mut fits = |scale: f64| -> Result<bool, CutShort> {
             let scaled = footprint.scaled(scale);
             let obstacles = Arc::new(FloorObstacles::new(room, &scaled));
+            work.add(obstacles.work())?;
             for &h in headings {
                 let region = Region::new(room, &scaled, h, zone, Arc::clone(&obstacles));
                 if !region.emptiness(work)? {

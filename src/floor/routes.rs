@@ -155,10 +155,11 @@ impl Routes {
         // boolean operations of one tile may keep a channel of no width
         // open that those of another close).
         let footprint = &given.grown(HAIR_MM);
+        let mut work = Work::new(within);
         let space = Space::new(room, footprint);
+        work.add(space.obstacles.work())?;
         let grid = Grid::over(space.floor);
         let followed = followed_headings(footprint, headings, room);
-        let mut work = Work::new(within);
         let mut layers: Vec<Layer> = Vec::with_capacity(followed.len());
         for &h in &followed {
             let first = layers.last().map_or(0, Layer::end);
