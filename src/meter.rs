@@ -18,8 +18,8 @@
 //! passes a limit whatever order its terms come in). Once past, solves
 //! stop early and the run's answers are thrown away.
 
-use std::collections::BTreeSet;
-use std::sync::atomic::{AtomicU64, Ordering};
+use std::collections::{BTreeMap, BTreeSet};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 
 /// How many solids a posture check counts (an arm's links and hand).
@@ -68,11 +68,16 @@ const SELF_PAIRS_PER_UNIT: u64 = 32;
 /// at the shared counter.
 const BATCH: u64 = 4_096;
 
-/// The work a whole run has spent, against its limit.
+/// The work a whole run has spent, against its limit, and the work of
+/// what is being worked out for it now and charged once done ([`Flight`]).
 #[derive(Debug)]
 pub struct RunWork {
     spent: AtomicU64,
     limit: u64,
+    /// By key, the most work any computation of that key has done so far.
+    flights: Mutex<BTreeMap<u64, u64>>,
+    /// Set where a flight was cut short: the run is past its limit.
+    stopped: AtomicBool,
 }
 
 impl RunWork {
@@ -81,6 +86,8 @@ impl RunWork {
         Arc::new(RunWork {
             spent: AtomicU64::new(0),
             limit,
+            flights: Mutex::default(),
+            stopped: AtomicBool::new(false),
         })
     }
 
@@ -89,9 +96,14 @@ impl RunWork {
         self.spent.load(Ordering::Relaxed)
     }
 
-    /// Whether the run has spent more than its limit.
+    /// Whether the run has spent more than its limit (or a flight found
+    /// that it will).
     pub fn exceeded(&self) -> bool {
-        self.spent() > self.limit
+        self.spent() > self.limit || self.stopped.load(Ordering::Relaxed)
+    }
+
+    fn flights(&self) -> std::sync::MutexGuard<'_, BTreeMap<u64, u64>> {
+        self.flights.lock().unwrap_or_else(|e| e.into_inner())
     }
 
     /// Add `units`; whether the run is still within its limit.
@@ -161,6 +173,13 @@ impl Meter {
             .is_none_or(|run| run.spent().saturating_add(units) <= run.limit)
     }
 
+    /// A computation of `key` the run will be charged for once it is done
+    /// (a person's floor), whose work so far counts against the limit
+    /// with every other in flight ([`Flight::within`]).
+    pub fn flight(&self, key: u64) -> Flight<'_> {
+        Flight { meter: self, key }
+    }
+
     /// Whether the run has spent more than its limit (a solve stops).
     pub fn exceeded(&self) -> bool {
         self.run.as_ref().is_some_and(|run| run.exceeded())
@@ -177,6 +196,52 @@ impl Meter {
             meter: self,
             pending: 0,
             within: !self.exceeded(),
+        }
+    }
+}
+
+/// A computation the run will be charged for once it is done, by a key
+/// that names what it works out (two threads working out the same thing
+/// count once). Work charged only once done would let several such
+/// computations at once each run up to the whole limit, as if alone (ten
+/// people's floors in a cluttered room, two at a time: twice the time
+/// before the run stopped). Counting what each has done so far with what
+/// the run has spent stops it as soon as the sum passes the limit, and
+/// that stop is the answer every thread count gives: each flight's work is
+/// charged in full once done, so the run's sum would pass the limit
+/// anyway. A flight dropped leaves the count (its work then charged, or
+/// the run stopped).
+pub struct Flight<'m> {
+    meter: &'m Meter,
+    key: u64,
+}
+
+impl Flight<'_> {
+    /// Whether the run stays within its limit with this computation at
+    /// `units` and every other in flight at what it has done. Where it
+    /// does not, the run is stopped: the caller cuts its work short.
+    pub fn within(&self, units: u64) -> bool {
+        let Some(run) = &self.meter.run else {
+            return true;
+        };
+        let flying: u64 = {
+            let mut flights = run.flights();
+            let mine = flights.entry(self.key).or_default();
+            *mine = (*mine).max(units);
+            flights.values().fold(0, |sum, &w| sum.saturating_add(w))
+        };
+        let within = run.spent().saturating_add(flying) <= run.limit;
+        if !within {
+            run.stopped.store(true, Ordering::Relaxed);
+        }
+        within
+    }
+}
+
+impl Drop for Flight<'_> {
+    fn drop(&mut self) {
+        if let Some(run) = &self.meter.run {
+            run.flights().remove(&self.key);
         }
     }
 }
@@ -217,6 +282,28 @@ impl Drop for Tally<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn work_in_flight_counts_with_what_is_spent_and_once_for_each_key() {
+        let run = RunWork::new(100);
+        let (a, b) = (Meter::of(&run), Meter::of(&run));
+        assert!(a.charge(20));
+        let floor = a.flight(1);
+        assert!(floor.within(50));
+        // The same floor worked out by another thread counts once.
+        let again = b.flight(1);
+        assert!(again.within(60));
+        drop(again);
+        // Another person's floor: 20 spent, 50 and 30 in flight.
+        let other = b.flight(2);
+        assert!(other.within(30));
+        assert!(!run.exceeded());
+        drop(floor);
+        assert!(other.within(70), "a flight done leaves the count");
+        assert!(!other.within(81));
+        assert!(run.exceeded(), "a flight past the limit stops the run");
+        assert!(Meter::unmetered().flight(1).within(u64::MAX));
+    }
 
     #[test]
     fn a_run_past_its_limit_stops_every_task_and_each_task_keeps_its_own_sum() {

@@ -164,6 +164,10 @@ impl<T> ByRoom<T> {
 /// of a scenario; a population's members each have their own.
 static FLOORS: Kept<Floor> = Kept::new(64);
 
+/// What a misfit's flight is keyed by, with its floor's key (the two
+/// are worked out apart, and charged apart).
+const MISFIT: u64 = 0x6d69_7366_6974;
+
 /// The most candidates a reach takes from the capability map, and the most
 /// placements it looks at to find them.
 pub const SEEDED: usize = 16;
@@ -235,7 +239,7 @@ impl Mobile {
             });
             let hint = hint.as_ref().and_then(|c| c.get());
             let floor = FLOORS
-                .get_or_try(key, || self.compute_floor(room, hint, meter))
+                .get_or_try(key, || self.compute_floor(room, hint, key, meter))
                 .unwrap_or_else(|cut| {
                     // Past the run's limit: the run stops.
                     meter.charge(cut.work);
@@ -276,11 +280,14 @@ impl Mobile {
         &self,
         room: &Room,
         hint: Option<&Floor>,
+        key: u64,
         meter: &Meter,
     ) -> Result<Floor, CutShort> {
         let zone = self.placing.zone.as_ref();
         let headings = &self.placing.headings;
-        let within = |units: u64| meter.would_stay_within(units);
+        // Charged once done: in flight, counted with the others.
+        let flight = meter.flight(key);
+        let within = |units: u64| flight.within(units);
         let mut work = Work::new(&within);
         let obstacles = Arc::new(FloorObstacles::new(room, &self.footprint));
         work.add(obstacles.work())?;
@@ -364,7 +371,8 @@ impl Mobile {
         }
         let cell = self.misfits.cell(room);
         if cell.get().is_none() {
-            let within = |units: u64| meter.would_stay_within(units);
+            let flight = meter.flight(hash_pair(self.floor_key(room), MISFIT));
+            let within = |units: u64| flight.within(units);
             let mut work = Work::new(&within);
             let (headings, zone) = (&self.placing.headings, self.placing.zone.as_ref());
             match Misfit::counted(room, &self.footprint, headings, zone, &mut work) {
