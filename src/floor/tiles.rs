@@ -380,7 +380,16 @@ impl Region {
             if best.is_some_and(|(d, _)| d <= bound) {
                 break;
             }
-            for (i, j) in ring_tiles(ci, cj, ring, self.nx, self.ny) {
+            let tiles: Vec<(usize, usize)> = ring_tiles(ci, cj, ring, self.nx, self.ny).collect();
+            // Worked out a few at once (four a thread: fewer left the
+            // cores idle; 16 worked out too many past where the run's
+            // limit cuts the search short), then charged and looked at in
+            // turn as before: the same work, the same answer.
+            let at_once = TILES_A_THREAD * rayon::current_num_threads().max(1);
+            for (k, &(i, j)) in tiles.iter().enumerate() {
+                if k % at_once == 0 {
+                    self.work_out(&tiles[k..tiles.len().min(k + at_once)]);
+                }
                 let tile = self.tile(i, j);
                 let units = match fresh {
                     Some(fresh) if !(fresh.piece)(tile.key) => tile.again,
@@ -410,6 +419,15 @@ impl Region {
         Ok(best.map(|(_, q)| q))
     }
 
+    /// Work out `tiles` (those not yet), in parallel: the search looks at
+    /// each in turn, charging it as before, but need not wait for each.
+    fn work_out(&self, tiles: &[(usize, usize)]) {
+        use rayon::prelude::*;
+        if tiles.len() > 1 {
+            tiles.par_iter().for_each(|&(i, j)| _ = self.tile(i, j));
+        }
+    }
+
     /// The whole region, every tile worked out and the pieces (which
     /// overlap by `OVERLAP_MM`) united (for pictures and tests).
     pub fn whole(&self) -> MultiPolygon<f64> {
@@ -422,6 +440,10 @@ impl Region {
         geo::unary_union(&pieces)
     }
 }
+
+/// How many tiles of a ring, for each thread, a search works out at once
+/// before it looks at them.
+const TILES_A_THREAD: usize = 4;
 
 /// The tiles `ring` steps (in the larger of x and y) from `(ci, cj)`, in
 /// rows, within `nx` by `ny`.
