@@ -49,6 +49,8 @@ pub struct MeshCells {
     /// Per cell, row by row: bit `2k` for slab `k`, bit `2k - 1` for the
     /// plane `bounds_mm[k]` between slabs `k - 1` and `k`.
     masks: Vec<u64>,
+    /// The rows and cells marking the triangles looked at (what it cost).
+    visits: u64,
 }
 
 impl MeshCells {
@@ -65,6 +67,7 @@ impl MeshCells {
             ny,
             bounds_mm: slab_bounds(footprint),
             masks: vec![0; nx * ny],
+            visits: 0,
         };
         let mut crossings: Vec<Crossing> = Vec::new();
         for m in meshes {
@@ -90,9 +93,19 @@ impl MeshCells {
         self.masks.len()
     }
 
+    /// How many rows and cells marking the triangles looked at, each
+    /// triangle in each slab it crosses and at the cell centres under it.
+    pub fn visits(&self) -> u64 {
+        self.visits
+    }
+
     /// Where triangle `v`, not vertical, passes over cell centres: the
-    /// height there, and whether it faces up (`up`).
-    fn cross_centres(&self, v: &[Point3<f64>; 3], up: bool, out: &mut Vec<Crossing>) {
+    /// height there, and whether it faces up (`up`). Row by row, only the
+    /// centres within the triangle's cross-section at the row's sample
+    /// line are tried (widened by `CROSS_SECTION_MARGIN_MM`, each tried
+    /// exactly as before): a long thin triangle across the room tries its
+    /// rows and the few centres under it, not every cell of its bounds.
+    fn cross_centres(&mut self, v: &[Point3<f64>; 3], up: bool, out: &mut Vec<Crossing>) {
         let c = self.cell_mm;
         let (x_lo, x_hi) = min_max(v.iter().map(|p| p.x));
         let (y_lo, y_hi) = min_max(v.iter().map(|p| p.y));
@@ -102,12 +115,27 @@ impl MeshCells {
         if i1 < 0.0 || j1 < 0.0 {
             return;
         }
+        let seen = project(v);
         for j in first(y_lo)..=j1 as usize {
-            for i in first(x_lo)..=i1 as usize {
+            let y = (j as f64 + SAMPLE.1) * c;
+            self.visits += 1;
+            let Some((row_lo, row_hi)) = x_range_in_band(&seen, y, y) else {
+                continue;
+            };
+            let (row_lo, row_hi) = (
+                row_lo - CROSS_SECTION_MARGIN_MM,
+                row_hi + CROSS_SECTION_MARGIN_MM,
+            );
+            let row_last = last(row_hi.min(x_hi), self.nx).min(i1);
+            if row_last < 0.0 {
+                continue;
+            }
+            for i in first(row_lo.max(x_lo))..=row_last as usize {
+                self.visits += 1;
                 // Off the centre by a hair no round coordinate shares, so
                 // that an edge between two faces never passes through it
                 // (which would count it twice).
-                let (x, y) = ((i as f64 + SAMPLE.0) * c, (j as f64 + SAMPLE.1) * c);
+                let x = (i as f64 + SAMPLE.0) * c;
                 // The plane's height at (x, y), if (x, y) is in the triangle.
                 if let Some(z_mm) = height_in(v, x, y) {
                     out.push(Crossing {
@@ -235,6 +263,7 @@ impl MeshCells {
                 continue;
             };
             let row = &mut self.masks[j * self.nx..(j + 1) * self.nx];
+            self.visits += 1 + (i1 - i0 + 1) as u64;
             for m in &mut row[i0..=i1] {
                 *m |= bit;
             }
@@ -342,6 +371,11 @@ fn merge_ragged(exact: Vec<Rectangle>) -> Vec<Rectangle> {
     done.sort_by_key(|r| (r.y[0], r.x[0]));
     done
 }
+/// How far beyond a triangle's cross-section at a row's sample line a
+/// cell centre is still tried (the exact test decides): far more than
+/// the rounding of either.
+const CROSS_SECTION_MARGIN_MM: f64 = 0.01;
+
 /// Where in a cell (in cells from its corner) faces are sampled.
 const SAMPLE: (f64, f64) = (0.500_000_314_159, 0.500_000_271_828);
 
@@ -724,10 +758,53 @@ mod sweeps {
             ny,
             bounds_mm: vec![0.0, 100.0],
             masks,
+            visits: 0,
         }
     }
 
+    /// The centres `cross_centres` finds, tried over every cell of the
+    /// triangle's bounds (as first written).
+    fn crossings_over_bounds(cells: &MeshCells, v: &[Point3<f64>; 3]) -> Vec<(u32, u64)> {
+        let c = cells.cell_mm;
+        let (x_lo, x_hi) = min_max(v.iter().map(|p| p.x));
+        let (y_lo, y_hi) = min_max(v.iter().map(|p| p.y));
+        let first = |lo: f64| (lo / c - SAMPLE.0).ceil().max(0.0) as usize;
+        let last = |hi: f64, n: usize| ((hi / c - SAMPLE.0).floor()).min(n as f64 - 1.0);
+        let (i1, j1) = (last(x_hi, cells.nx), last(y_hi, cells.ny));
+        let mut out = Vec::new();
+        if i1 < 0.0 || j1 < 0.0 {
+            return out;
+        }
+        for j in first(y_lo)..=j1 as usize {
+            for i in first(x_lo)..=i1 as usize {
+                let (x, y) = ((i as f64 + SAMPLE.0) * c, (j as f64 + SAMPLE.1) * c);
+                if let Some(z) = height_in(v, x, y) {
+                    out.push(((j * cells.nx + i) as u32, z.to_bits()));
+                }
+            }
+        }
+        out
+    }
+
     proptest! {
+        /// Triangles of every shape over a small floor (long thin slivers,
+        /// nearly on edge, corners off the floor) cross the same cell
+        /// centres at the same heights as a search of their whole bounds.
+        #[test]
+        fn a_triangle_crosses_the_centres_a_search_of_its_bounds_finds(
+            corners in proptest::array::uniform3((-20.0..220.0f64, -20.0..220.0f64, 0.0..100.0f64)),
+            thin in 0.0..1.0f64,
+        ) {
+            let mut v = corners.map(|(x, y, z)| Point3::new(x, y, z));
+            // Pull the third corner towards the first edge: slivers.
+            v[2] = v[0] + (v[1] - v[0]) * 0.5 + (v[2] - v[0] - (v[1] - v[0]) * 0.5) * (1.0 - thin).powi(8);
+            let mut grid = cells(40, 40, vec![0; 1600]);
+            let mut found = Vec::new();
+            grid.cross_centres(&v, true, &mut found);
+            let found: Vec<(u32, u64)> = found.iter().map(|x| (x.cell, x.z_mm.to_bits())).collect();
+            prop_assert_eq!(found, crossings_over_bounds(&grid, &v));
+        }
+
         /// Ragged, noisy rasters (each cell blocked with the odds given,
         /// rows often repeating the one below) give the same rectangles,
         /// exact and merged, as the reference.
