@@ -242,8 +242,10 @@ impl Obstacles {
             .enumerate()
             .filter_map(move |(i, (_, cuboid, bounds))| {
                 self.note(i, bounds, segment, &asked);
-                (reach(bounds) && touches(cuboid.distance_to_segment(&capsule.a, &capsule.b)))
-                    .then_some(Blocker::Obstacle(i))
+                (reach(bounds)
+                    && segment_meets_box(&capsule.a, &capsule.b, bounds, r)
+                    && touches(cuboid.distance_to_segment(&capsule.a, &capsule.b)))
+                .then_some(Blocker::Obstacle(i))
             });
         let meshes = self.meshes.iter().filter_map(move |m| {
             self.note(m.index, &m.bounds, segment, &asked);
@@ -387,6 +389,43 @@ fn mesh_touches(m: &Mesh, c: &Capsule, r: f64, reach: impl Fn(&[Point3<f64>; 2])
         .any(|p| query::intersection_test(&at, &swept, &at, p.shape.as_ref()).unwrap_or(true))
 }
 
+/// Whether the segment `a`-`b` passes through the box `bounds` grown by
+/// `r_mm` on every side (a slab test): where it does not, it comes no
+/// nearer than `r_mm` to anything inside `bounds`, and a capsule of radius
+/// `r_mm` about it touches none of it. The exact distance is measured only
+/// where it does: a long link (the eyes' look, metres long) has bounds
+/// that take in thousands of small boxes it passes far from.
+fn segment_meets_box(
+    a: &Point3<f64>,
+    b: &Point3<f64>,
+    bounds: &[Point3<f64>; 2],
+    r_mm: f64,
+) -> bool {
+    let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
+    for i in 0..3 {
+        let grown = r_mm + SLAB_MARGIN_MM;
+        let (lo, hi) = (bounds[0][i] - grown, bounds[1][i] + grown);
+        let d = b[i] - a[i];
+        if d == 0.0 {
+            if a[i] < lo || a[i] > hi {
+                return false;
+            }
+            continue;
+        }
+        let (ta, tb) = ((lo - a[i]) / d, (hi - a[i]) / d);
+        t0 = t0.max(ta.min(tb));
+        t1 = t1.min(ta.max(tb));
+        if t0 > t1 {
+            return false;
+        }
+    }
+    true
+}
+
+/// How much more than the radius the slab test grows a box by: far more
+/// than the rounding of the test, far less than anything measured.
+const SLAB_MARGIN_MM: f64 = 1e-6;
+
 /// Obstacles before walls, and by index, where two are met at once.
 fn rank(b: &Blocker) -> (u8, usize) {
     match b {
@@ -420,6 +459,29 @@ fn entry_along(cuboid: &Cuboid, a: &Point3<f64>, b: &Point3<f64>) -> Option<f64>
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    proptest::proptest! {
+        /// The slab test passes over no box a capsule touches: wherever the
+        /// segment comes within the radius of a box, it passes through
+        /// the box grown by the radius.
+        #[test]
+        fn the_slab_test_keeps_every_box_a_capsule_touches(
+            a in proptest::array::uniform3(-500.0..500.0f64),
+            b in proptest::array::uniform3(-500.0..500.0f64),
+            half in proptest::array::uniform3(1.0..200.0f64),
+            r_mm in 0.0..100.0f64,
+        ) {
+            let cuboid = Cuboid {
+                centre: Point3::origin(),
+                half_mm: Vector3::from(half),
+                yaw_rad: 0.0,
+            };
+            let (a, b) = (Point3::from(a), Point3::from(b));
+            if cuboid.distance_to_segment(&a, &b) < r_mm {
+                proptest::prop_assert!(segment_meets_box(&a, &b, &cuboid.bounds(), r_mm));
+            }
+        }
+    }
     use crate::scene::BoxObstacle;
 
     /// The obstacle a line (a capsule of no radius) meets, by index; the
