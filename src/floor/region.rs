@@ -459,8 +459,18 @@ fn obstacles_met<'a>(
 /// where one's corners begin the other's, the one with fewer first.
 fn corner_bits_order(a: &[Coord<f64>], b: &[Coord<f64>]) -> std::cmp::Ordering {
     let bits = |c: &Coord<f64>| (c.x.to_bits(), c.y.to_bits());
+    corner_by_corner(a, b, |p, q| bits(p).cmp(&bits(q)))
+}
+
+/// Two lists of corners compared in turn by `by`; where one's corners
+/// begin the other's, the one with fewer first.
+fn corner_by_corner(
+    a: &[Coord<f64>],
+    b: &[Coord<f64>],
+    by: impl Fn(&Coord<f64>, &Coord<f64>) -> std::cmp::Ordering,
+) -> std::cmp::Ordering {
     (a.iter().zip(b))
-        .map(|(ca, cb)| bits(ca).cmp(&bits(cb)))
+        .map(|(p, q)| by(p, q))
         .find(|o| o.is_ne())
         .unwrap_or(a.len().cmp(&b.len()))
 }
@@ -525,23 +535,12 @@ fn covered_by_a_few(
 fn sort_canonically(polygons: &mut Vec<Polygon<f64>>) {
     let mut keyed: Vec<(f64, Polygon<f64>)> =
         polygons.drain(..).map(|p| (left_of(&p), p)).collect();
-    keyed.sort_by(|(la, a), (lb, b)| la.total_cmp(lb).then_with(|| corner_by_corner(a, b)));
+    let x_then_y = |p: &Coord<f64>, q: &Coord<f64>| p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y));
+    keyed.sort_by(|(la, a), (lb, b)| {
+        let corners = || corner_by_corner(&a.exterior().0, &b.exterior().0, x_then_y);
+        la.total_cmp(lb).then_with(corners)
+    });
     polygons.extend(keyed.into_iter().map(|(_, p)| p));
-}
-
-/// Two outlines' corners compared in turn, x then y; where one's corners
-/// begin the other's, the one with fewer first.
-fn corner_by_corner(a: &Polygon<f64>, b: &Polygon<f64>) -> std::cmp::Ordering {
-    let (ca, cb) = (&a.exterior().0, &b.exterior().0);
-    (flat(ca).zip(flat(cb)))
-        .map(|(x, y)| x.total_cmp(&y))
-        .find(|o| o.is_ne())
-        .unwrap_or(ca.len().cmp(&cb.len()))
-}
-
-/// Corners' coordinates in turn, x then y.
-fn flat(corners: &[Coord<f64>]) -> impl Iterator<Item = f64> + '_ {
-    corners.iter().flat_map(|c| [c.x, c.y])
 }
 
 /// The least x of a polygon's corners.
