@@ -21,7 +21,7 @@
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
 
-use nalgebra::Vector3;
+use nalgebra::{Vector2, Vector3};
 use rand_chacha::rand_core::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
@@ -54,6 +54,13 @@ pub struct Capability {
     /// body and base.
     chain: Chain,
     own: OwnBody,
+    /// Where the hand is on average over the chain's postures, relative to
+    /// the hip point, seen from above: where a placement would rather have
+    /// a target.
+    pub centre_mm: Vector2<f64>,
+    /// Where the hand is in the neutral posture, relative to the hip
+    /// point: in front of the reaching shoulder.
+    pub at_rest_mm: Vector2<f64>,
 }
 
 /// How many postures are drawn for one map.
@@ -95,12 +102,15 @@ impl Capability {
         for slice in &mut slices {
             slice.sort_by(|a, b| a.discomfort.total_cmp(&b.discomfort));
         }
+        let at_rest = chain.effector(&chain.neutral());
         Capability {
             bottom_mm,
             slices,
             qs,
             chain: chain.clone(),
             own: own.clone(),
+            centre_mm: workspace_centre(chain),
+            at_rest_mm: Vector2::new(at_rest.x, at_rest.y),
         }
     }
 
@@ -212,4 +222,16 @@ fn clear_of_body(chain: &Chain, own: &OwnBody, q: &[f64]) -> bool {
         .zip(&v.owners)
         .any(|(c, &owner)| owner != end && own.hit(c).is_some());
     !into_own && v.self_hit().is_none()
+}
+
+/// Where the hand is on average over 64 postures drawn within the
+/// chain's limits, seen from above.
+fn workspace_centre(chain: &Chain) -> Vector2<f64> {
+    let mut rng = ChaCha8Rng::seed_from_u64(0x5eed);
+    let n = 64;
+    let sum = (0..n).fold(Vector2::zeros(), |acc, _| {
+        let p = chain.effector(&random_posture(chain, &mut rng));
+        acc + Vector2::new(p.x, p.y)
+    });
+    sum / f64::from(n)
 }

@@ -25,8 +25,6 @@ use std::sync::{Arc, Mutex, OnceLock, Weak};
 
 use geo::{MultiPolygon, Point};
 use nalgebra::{Point3, Rotation2, Vector2};
-use rand_chacha::rand_core::SeedableRng;
-use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
 
 use super::capability::Capability;
@@ -45,7 +43,6 @@ use crate::plugin::{
     Base, BasePose, Fit, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Solver, Tries,
 };
 use crate::scene::{column_solid, hash_bits, Blocked, OwnBody, Physique, Room};
-use crate::solvers::random_posture;
 
 /// The admissible region at each heading searched (one region for every
 /// heading when turning changes nothing).
@@ -433,11 +430,6 @@ impl Mobile {
             chain,
             floor: self.floor(room, Meter::unmetered()),
             capability: self.capability_of(chain),
-            hint: workspace_centre(chain),
-            at_rest: {
-                let p = chain.effector(&chain.neutral());
-                Vector2::new(p.x, p.y)
-            },
             half_width_mm: self.footprint.half_width_mm(),
         }
     }
@@ -547,11 +539,9 @@ pub struct PreparedMobile<'a> {
     room: &'a Room,
     chain: &'a Chain,
     floor: Arc<OnceLock<Floor>>,
+    /// The chain's map, with where it would rather have a target
+    /// ([`Capability::centre_mm`]) and its hand at rest.
     capability: Arc<Capability>,
-    hint: Vector2<f64>,
-    /// Where the hand is, relative to the hip, in the neutral posture:
-    /// in front of the reaching shoulder.
-    at_rest: Vector2<f64>,
     /// The lines of the footprint's sides, either side of the hip point
     /// (what the approach measures).
     half_width_mm: f64,
@@ -588,7 +578,13 @@ impl PreparedMobile<'_> {
         let near_too = Rc::clone(&near);
         let nearest = move || {
             near_too
-                .get_or_init(|| self.nearest(&query.target_room_mm, self.hint, query.meter))
+                .get_or_init(|| {
+                    self.nearest(
+                        &query.target_room_mm,
+                        self.capability.centre_mm,
+                        query.meter,
+                    )
+                })
                 .clone()
         };
         // Last, where the hand at rest would be at the target: the
@@ -599,9 +595,18 @@ impl PreparedMobile<'_> {
             if !query.from_rest {
                 return Vec::new();
             }
-            let near =
-                near.get_or_init(|| self.nearest(&query.target_room_mm, self.hint, query.meter));
-            let mut rest = self.nearest(&query.target_room_mm, self.at_rest, query.meter);
+            let near = near.get_or_init(|| {
+                self.nearest(
+                    &query.target_room_mm,
+                    self.capability.centre_mm,
+                    query.meter,
+                )
+            });
+            let mut rest = self.nearest(
+                &query.target_room_mm,
+                self.capability.at_rest_mm,
+                query.meter,
+            );
             rest.retain(|p| !near.iter().any(|n| same_place(n, p)));
             rest
         });
@@ -820,8 +825,8 @@ impl PreparedBase for PreparedMobile<'_> {
             + NEAR_HEIGHT_MM[NEAR_HEIGHT_MM.len() - 1][1];
         // Watch mode's key, worked out before the run (not metered).
         let unmetered = Meter::unmetered();
-        let mut poses = self.nearest(target_room_mm, self.hint, unmetered);
-        poses.extend(self.nearest(target_room_mm, self.at_rest, unmetered));
+        let mut poses = self.nearest(target_room_mm, self.capability.centre_mm, unmetered);
+        poses.extend(self.nearest(target_room_mm, self.capability.at_rest_mm, unmetered));
         Hips {
             poses,
             around: Some((*target_room_mm, radius_mm)),
@@ -844,18 +849,6 @@ impl PreparedBase for PreparedMobile<'_> {
             heading_rad: pose.heading_rad,
         })
     }
-}
-
-/// The average horizontal position of the effector over 64 fixed random
-/// postures: where, relative to the hip, the arm works best.
-fn workspace_centre(chain: &Chain) -> Vector2<f64> {
-    let mut rng = ChaCha8Rng::seed_from_u64(0x5eed);
-    let n = 64;
-    let sum = (0..n).fold(Vector2::zeros(), |acc, _| {
-        let p = chain.effector(&random_posture(chain, &mut rng));
-        acc + Vector2::new(p.x, p.y)
-    });
-    sum / f64::from(n)
 }
 
 /// What is reported when no candidate placement is left (a task whose
