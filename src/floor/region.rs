@@ -355,11 +355,13 @@ fn route_tile_work(met: &[Met<'_>], turned: &Turned) -> u64 {
 /// crowded round one target, where the outlines' corners alone went from
 /// 2.3 to 17 a microsecond (the boolean operations meet every crossing of
 /// edges, and crowded outlines cross pairwise). At three units for two,
-/// the crowded floor does about 37,000 units a millisecond on two cores
-/// and posts about 66,000 (the solvers do 20,000 to 40,000): a room at the
-/// bound stops within about 10 s however its obstacles crowd, and one of
-/// posts sooner than it need.
-const UNITS_PER_TWO_CROSSINGS: u64 = 3;
+/// the crowded floor did about 37,000 units a millisecond on two cores
+/// and posts about 66,000 (the solvers do 20,000 to 40,000), but 4,990
+/// thin posts turned at random, ringing 100 targets and searched at 64
+/// headings, only 24,000: stopped after 10.6-10.9 s. At four for two,
+/// 8.4 s: a room at the bound stops within about 10 s however its
+/// obstacles crowd, and one of posts sooner than it need.
+const UNITS_PER_TWO_CROSSINGS: u64 = 4;
 
 /// The work of a tile whose outlines made `crossings`.
 fn floor_work(crossings: usize) -> u64 {
