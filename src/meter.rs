@@ -20,7 +20,7 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, LazyLock, Mutex};
 
 /// How many solids a posture check counts (an arm's links and hand).
 pub const POSTURE_CAPSULES: u64 = 8;
@@ -122,7 +122,7 @@ impl RunWork {
 /// run's work as well.
 #[derive(Debug)]
 pub struct Meter {
-    own: AtomicU64,
+    own: Arc<AtomicU64>,
     run: Option<Arc<RunWork>>,
     /// The pieces of floor this task has been charged for working out
     /// (by the key the process keeps them by): looked at again, they are
@@ -131,17 +131,17 @@ pub struct Meter {
 }
 
 /// A meter of no run, which never stops a solve.
-static UNMETERED: Meter = Meter {
-    own: AtomicU64::new(0),
+static UNMETERED: LazyLock<Meter> = LazyLock::new(|| Meter {
+    own: Arc::default(),
     run: None,
     pieces: Mutex::new(BTreeSet::new()),
-};
+});
 
 impl Meter {
     /// A meter of a task of the run `run`.
     pub fn of(run: &Arc<RunWork>) -> Self {
         Meter {
-            own: AtomicU64::new(0),
+            own: Arc::default(),
             run: Some(Arc::clone(run)),
             pieces: Mutex::default(),
         }
@@ -168,6 +168,15 @@ impl Meter {
     pub fn charge(&self, units: u64) -> bool {
         self.own.fetch_add(units, Ordering::Relaxed);
         self.run.as_ref().is_none_or(|run| run.charge(units))
+    }
+
+    /// What may charge this meter from where it cannot be lent (the
+    /// obstacles a task's checks are put to, [`Account`]).
+    pub fn account(&self) -> Account {
+        Account {
+            own: Arc::clone(&self.own),
+            run: self.run.clone(),
+        }
     }
 
     /// Whether the run would still be within its limit were `units` more
@@ -267,12 +276,39 @@ impl Tally<'_> {
         if self.pending >= BATCH {
             self.within = self.meter.charge(std::mem::take(&mut self.pending));
         }
-        self.within
+        self.within()
     }
 
-    /// Whether the solve may go on.
+    /// Whether the solve may go on: within the limit as far as the last
+    /// batch told, and the run not stopped since (work charged to the
+    /// meter directly, [`Account`], may have passed it).
     pub fn within(&self) -> bool {
-        self.within
+        self.within && !self.meter.exceeded()
+    }
+}
+
+/// A meter's counts, shared: work charged where it is done, by what has
+/// no meter to hand (a mesh check, by the triangles it tested). What a
+/// task's account is charged is the task's, whichever thread does it.
+#[derive(Clone, Debug)]
+pub struct Account {
+    own: Arc<AtomicU64>,
+    run: Option<Arc<RunWork>>,
+}
+
+impl Account {
+    /// Whether the task's run has passed its limit (its answers will be
+    /// thrown away).
+    pub fn exceeded(&self) -> bool {
+        self.run.as_ref().is_some_and(|run| run.exceeded())
+    }
+
+    /// Add `units` to the task's work and its run's.
+    pub fn charge(&self, units: u64) {
+        self.own.fetch_add(units, Ordering::Relaxed);
+        if let Some(run) = &self.run {
+            run.charge(units);
+        }
     }
 }
 

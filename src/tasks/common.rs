@@ -183,11 +183,14 @@ impl Reaching {
     }
 
     /// The room's obstacles when the task checks collisions, recording
-    /// what the questions touch where `input` asks for that.
+    /// what the questions touch where `input` asks for that, charging the
+    /// task's meter for the triangles of meshes tested.
     pub fn obstacles(&self, input: &TaskInput<'_>) -> Option<Obstacles> {
-        self.common
-            .collisions
-            .then(|| Obstacles::new(input.room, self.common.clearance_mm).recording(input.touched))
+        self.common.collisions.then(|| {
+            Obstacles::new(input.room, self.common.clearance_mm)
+                .recording(input.touched)
+                .charging(input.meter)
+        })
     }
 
     /// A reach of `target_room_mm` keeping the person out of `obstacles`

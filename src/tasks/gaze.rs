@@ -285,7 +285,9 @@ impl<'a> GazeObstacles<'a> {
     /// base, recording what the questions touch where `input` asks.
     pub fn new(input: &TaskInput<'a>, reaching: &Reaching) -> Self {
         GazeObstacles {
-            sight: Obstacles::new(input.room, 0.0).recording(input.touched),
+            sight: Obstacles::new(input.room, 0.0)
+                .recording(input.touched)
+                .charging(input.meter),
             body: reaching.obstacles(input),
             room: input.room,
             own: input.base.own_body(),
