@@ -293,7 +293,10 @@ impl Mobile {
         let flight = meter.flight(key);
         let within = |units: u64| flight.within(units);
         let mut work = Work::new(&within);
-        let obstacles = Arc::new(FloorObstacles::new(room, &self.footprint));
+        let allows = |units: u64| work.allows(units);
+        let obstacles = FloorObstacles::with(room, &self.footprint, &[], &allows)
+            .map_err(|cut| work.cut_short_with(cut.work))?;
+        let obstacles = Arc::new(obstacles);
         work.add(obstacles.work())?;
         let region = |k: usize, h: f64| {
             let obstacles = Arc::clone(&obstacles);

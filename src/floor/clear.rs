@@ -21,6 +21,7 @@ use std::sync::Arc;
 
 use super::obstacles::FloorObstacles;
 use super::region::{admissible_in, shrunk_room, Grown, Turned};
+use super::work::CutShort;
 use super::{FloorPart, Footprint};
 use crate::kept::Kept;
 use crate::meter::Meter;
@@ -104,12 +105,22 @@ fn whole(
     let mut h = DefaultHasher::new();
     footprint.hash_with_floor(room, &mut h);
     heading_rad.to_bits().hash(&mut h);
-    let (region, work) = WHOLE.get_or(h.finish(), || {
-        let (region, work) = worked_out(room, footprint, heading_rad);
-        (Arc::new(region), work)
+    let allows = |units: u64| meter.would_stay_within(units);
+    let found = WHOLE.get_or_try(h.finish(), || {
+        let (region, work) = worked_out(room, footprint, heading_rad, &allows)?;
+        Ok::<_, CutShort>((Arc::new(region), work))
     });
-    meter.charge(work);
-    region
+    match found {
+        Ok((region, work)) => {
+            meter.charge(work);
+            region
+        }
+        // What it would have cost passes the limit: charged, the run stops.
+        Err(cut) => {
+            meter.charge(cut.work);
+            Arc::new(MultiPolygon::new(Vec::new()))
+        }
+    }
 }
 
 /// The regions [`whole`] worked out in this process: watch mode checks a
@@ -119,17 +130,23 @@ fn whole(
 static WHOLE: Kept<(Arc<MultiPolygon<f64>>, u64)> = Kept::new(512);
 
 /// Where `footprint`, turned to `heading_rad`, fits in `room`, worked out,
-/// and what that cost.
-fn worked_out(room: &Room, footprint: &Footprint, heading_rad: f64) -> (MultiPolygon<f64>, u64) {
+/// and what that cost; cut short where its obstacles would cost more than
+/// `allows` allows.
+fn worked_out(
+    room: &Room,
+    footprint: &Footprint,
+    heading_rad: f64,
+    allows: &dyn Fn(u64) -> bool,
+) -> Result<(MultiPolygon<f64>, u64), CutShort> {
     let turned = Turned::new(footprint, heading_rad);
-    match shrunk_room(room, &turned, None) {
+    Ok(match shrunk_room(room, &turned, None) {
         Some(within) => {
-            let obstacles = FloorObstacles::new(room, footprint);
+            let obstacles = FloorObstacles::with(room, footprint, &[], allows)?;
             let piece = admissible_in(within, &turned, &obstacles, &Grown::default());
             (piece.free, piece.work.saturating_add(obstacles.work()))
         }
         None => (MultiPolygon::new(Vec::new()), 0),
-    }
+    })
 }
 
 /// A disc of `radius_mm` from the floor to `below_mm`, as the polygon
@@ -161,7 +178,16 @@ pub fn disc_centre(
 ) -> Option<Point<f64>> {
     let footprint = disc(radius_mm, below_mm);
     let region = on_route(whole(room, &footprint, 0.0, meter), on);
-    let obstacles = FloorObstacles::new(room, &footprint);
+    let allows = |units: u64| meter.would_stay_within(units);
+    // Cut short, what it would have cost passes the limit: charged, the
+    // run stops.
+    let obstacles = match FloorObstacles::with(room, &footprint, &[], &allows) {
+        Ok(obstacles) => obstacles,
+        Err(cut) => {
+            meter.charge(cut.work);
+            return None;
+        }
+    };
     meter.charge(obstacles.work());
     let clear = |c: Point<f64>| {
         let (x, y) = (c.x(), c.y());

@@ -53,12 +53,26 @@ pub struct MeshCells {
     visits: u64,
 }
 
+/// How many triangles are marked between two asks whether marking may go
+/// on ([`MeshCells::new`]): a thin one across a room visits a few thousand
+/// rows and cells, so 64 of them take a few milliseconds.
+const TRIANGLES_BETWEEN_ASKS: usize = 64;
+
 impl MeshCells {
     /// The cells of `meshes` over a floor of `size_mm` for the parts of
-    /// `footprint`; none when there are no meshes.
-    pub fn new(meshes: &[MeshObstacle], size_mm: [f64; 2], footprint: &Footprint) -> Option<Self> {
+    /// `footprint`; none when there are no meshes. Every
+    /// [`TRIANGLES_BETWEEN_ASKS`] triangles, `go_on` is asked whether
+    /// marking may go on, given the triangles marked and the rows and
+    /// cells visited so far; where it says no, marking stops with its
+    /// answer.
+    pub fn new<E>(
+        meshes: &[MeshObstacle],
+        size_mm: [f64; 2],
+        footprint: &Footprint,
+        go_on: &dyn Fn(usize, u64) -> Result<(), E>,
+    ) -> Result<Option<Self>, E> {
         if meshes.is_empty() || footprint.parts.is_empty() {
-            return None;
+            return Ok(None);
         }
         let (cell_mm, nx, ny) = grid(size_mm);
         let mut cells = MeshCells {
@@ -70,8 +84,13 @@ impl MeshCells {
             visits: 0,
         };
         let mut crossings: Vec<Crossing> = Vec::new();
+        let mut marked = 0_usize;
         for m in meshes {
             for t in &m.triangles {
+                marked += 1;
+                if marked.is_multiple_of(TRIANGLES_BETWEEN_ASKS) {
+                    go_on(marked, cells.visits)?;
+                }
                 let v = t.map(|i| m.vertices_mm[i as usize]);
                 if v.iter().all(|p| p.z <= FLOOR_TOLERANCE_MM) {
                     continue;
@@ -85,7 +104,7 @@ impl MeshCells {
             }
         }
         cells.fill_solids(crossings);
-        Some(cells)
+        Ok(Some(cells))
     }
 
     /// How many cells it has.
@@ -573,6 +592,12 @@ fn clip_to_slab(v: &[Point3<f64>; 3], z0: f64, z1: f64) -> Vec<Coord<f64>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The cells, however long marking them takes.
+    fn all_cells(meshes: &[MeshObstacle], size_mm: [f64; 2], f: &Footprint) -> MeshCells {
+        let go_on = |_: usize, _: u64| Ok::<(), ()>(());
+        MeshCells::new(meshes, size_mm, f, &go_on).unwrap().unwrap()
+    }
     use geo::{Area, BooleanOps, LineString, MultiPolygon, Polygon};
 
     fn mesh(quads: &[[[f64; 3]; 4]]) -> MeshObstacle {
@@ -585,6 +610,39 @@ mod tests {
             triangles.push([base, base + 2, base + 3]);
         }
         MeshObstacle::new("m".into(), vertices, &triangles)
+    }
+
+    #[test]
+    fn marking_stops_once_told_to_and_is_asked_as_it_goes() {
+        // 1,000 thin triangles across a 6 m room, 1 m up: thousands of rows
+        // and cells each.
+        let mut vertices = Vec::new();
+        let mut triangles = Vec::new();
+        for k in 0..1000_u32 {
+            let y = 10.0 + 5.0 * f64::from(k);
+            vertices.extend([
+                Point3::new(10.0, y, 1000.0),
+                Point3::new(5990.0, y + 700.0, 1000.0),
+                Point3::new(5990.0, y + 701.0, 1000.0),
+            ]);
+            triangles.push([3 * k, 3 * k + 1, 3 * k + 2]);
+        }
+        let slivers = MeshObstacle::new("slivers".into(), vertices, &triangles);
+        let f = Footprint::circle(300.0, 1400.0);
+        let whole = all_cells(std::slice::from_ref(&slivers), [6000.0, 6000.0], &f);
+        let asked = std::cell::Cell::new(0_usize);
+        let until = |marked: usize, visits: u64| {
+            asked.set(asked.get() + 1);
+            if visits > whole.visits() / 4 {
+                Err(marked)
+            } else {
+                Ok(())
+            }
+        };
+        let stopped = MeshCells::new(&[slivers], [6000.0, 6000.0], &f, &until);
+        let marked = stopped.expect_err("marking stops once told to");
+        assert!(marked < 500, "stopped after {marked} of 1,000 triangles");
+        assert_eq!(asked.get(), marked / TRIANGLES_BETWEEN_ASKS);
     }
 
     fn top(x0: f64, y0: f64, x1: f64, y1: f64, z: f64) -> [[f64; 3]; 4] {
@@ -614,7 +672,7 @@ mod tests {
             part.z_mm = z_mm;
             f.parts.push(part);
         }
-        let cells = MeshCells::new(&[m], [4000.0, 3000.0], &f).unwrap();
+        let cells = all_cells(&[m], [4000.0, 3000.0], &f);
         let blocked = area(&cells.rectangles([0.0, 1400.0]));
         let l = 3000.0 * 600.0 + 600.0 * 1400.0;
         assert!((blocked - l).abs() < 1.0, "{blocked} against {l}");
@@ -634,7 +692,7 @@ mod tests {
         ];
         let floor = top(0.0, 0.0, 4000.0, 3000.0, 8.0);
         let f = Footprint::circle(300.0, 1400.0);
-        let cells = MeshCells::new(&[mesh(&[wall, floor])], [4000.0, 3000.0], &f).unwrap();
+        let cells = all_cells(&[mesh(&[wall, floor])], [4000.0, 3000.0], &f);
         let rects = cells.rectangles([0.0, 1400.0]);
         let blocked = area(&rects);
         assert!((blocked - 2000.0 * CELL_MM).abs() < 1.0, "{blocked}");
@@ -655,7 +713,7 @@ mod tests {
         f.parts
             .push(Footprint::circle(300.0, 1400.0).parts.remove(0));
         f.parts[1].z_mm = [500.0, 1400.0];
-        let cells = MeshCells::new(&[mesh(&[ramp])], [4000.0, 3000.0], &f).unwrap();
+        let cells = all_cells(&[mesh(&[ramp])], [4000.0, 3000.0], &f);
         let low = area(&cells.rectangles([0.0, 500.0]));
         assert!((low - 1000.0 * 1000.0).abs() < 1.0, "{low}");
         let high = area(&cells.rectangles([500.0, 1400.0]));
@@ -671,7 +729,7 @@ mod tests {
             top(1415.0, 735.0, 1465.0, 1605.0, 20.0),
         ];
         let f = Footprint::circle(250.0, 300.0);
-        let cells = MeshCells::new(&[mesh(&quads)], [4000.0, 3200.0], &f).unwrap();
+        let cells = all_cells(&[mesh(&quads)], [4000.0, 3200.0], &f);
         let rects = cells.rectangles([0.0, 300.0]);
         let union = 755.0 * 580.0 + 50.0 * 870.0 - 45.0 * 5.0;
         assert!((area(&rects) - union).abs() < 1.0, "{}", area(&rects));
@@ -686,7 +744,7 @@ mod tests {
             quads.push(top(0.0, y, 600.0 + wobble, y + CELL_MM, 900.0));
         }
         let f = Footprint::circle(300.0, 1400.0);
-        let cells = MeshCells::new(&[mesh(&quads)], [4000.0, 3000.0], &f).unwrap();
+        let cells = all_cells(&[mesh(&quads)], [4000.0, 3000.0], &f);
         let rects = cells.rectangles([0.0, 1400.0]);
         assert_eq!(rects.len(), 1);
         assert_eq!(rects[0][2], Coord { x: 605.0, y: 200.0 });

@@ -50,7 +50,10 @@ impl Misfit {
     ) -> Result<Self, CutShort> {
         let mut fits = |scale: f64| -> Result<bool, CutShort> {
             let scaled = footprint.scaled(scale);
-            let obstacles = Arc::new(FloorObstacles::new(room, &scaled));
+            let allows = |units: u64| work.allows(units);
+            let obstacles = FloorObstacles::with(room, &scaled, &[], &allows)
+                .map_err(|cut| work.cut_short_with(cut.work))?;
+            let obstacles = Arc::new(obstacles);
             work.add(obstacles.work())?;
             for &h in headings {
                 let region = Region::new(room, &scaled, h, zone, Arc::clone(&obstacles));

@@ -14,6 +14,7 @@ use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{RTree, AABB};
 
 use super::mesh_cells::MeshCells;
+use super::work::{unbounded, CutShort};
 use super::Footprint;
 use crate::scene::{BoxObstacle, Room};
 
@@ -35,16 +36,36 @@ pub struct FloorObstacles {
 }
 
 impl FloorObstacles {
+    /// The room's obstacles, however much marking its meshes' cells
+    /// costs (tests, and where the work is charged after).
     pub fn new(room: &Room, footprint: &Footprint) -> Self {
-        Self::with(room, footprint, &[])
+        Self::with(room, footprint, &[], &unbounded)
+            .unwrap_or_else(|_| unreachable!("nothing cuts short obstacles allowed any work"))
     }
 
     /// The room's obstacles and `extra` boxes (the walls round a room's
     /// doorways, where a route search lets a base come in from outside).
     /// Parts at the same heights meet the same outlines, found once and
-    /// shared; the heights' outlines are found in parallel.
-    pub fn with(room: &Room, footprint: &Footprint, extra: &[BoxObstacle]) -> Self {
-        let cells = MeshCells::new(&room.meshes, [room.size_mm.x, room.size_mm.y], footprint);
+    /// shared; the heights' outlines are found in parallel. Cut short
+    /// where marking the meshes' cells would cost more than `allows`
+    /// allows (thousands of thin triangles across a room: seconds).
+    pub fn with(
+        room: &Room,
+        footprint: &Footprint,
+        extra: &[BoxObstacle],
+        allows: &dyn Fn(u64) -> bool,
+    ) -> Result<Self, CutShort> {
+        let marking = |triangles: usize, visits: u64| {
+            let units = (triangles as u64).saturating_mul(UNITS_PER_TRIANGLE);
+            let units = units.saturating_add(visits / VISITS_PER_UNIT);
+            if allows(units) {
+                Ok(())
+            } else {
+                Err(CutShort { work: units })
+            }
+        };
+        let size = [room.size_mm.x, room.size_mm.y];
+        let cells = MeshCells::new(&room.meshes, size, footprint, &marking)?;
         let bands = distinct_bands(footprint);
         let found: Vec<Arc<PartObstacles>> = (bands.par_iter())
             .map(|&z_mm| {
@@ -84,7 +105,7 @@ impl FloorObstacles {
             }
             None => 0,
         };
-        FloorObstacles { parts, work }
+        Ok(FloorObstacles { parts, work })
     }
 
     /// What building them cost, in units of the meter ([`crate::meter`]):

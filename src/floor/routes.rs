@@ -156,7 +156,9 @@ impl Routes {
         // open that those of another close).
         let footprint = &given.grown(HAIR_MM);
         let mut work = Work::new(within);
-        let space = Space::new(room, footprint);
+        let allows = |units: u64| work.allows(units);
+        let space =
+            Space::new(room, footprint, &allows).map_err(|cut| work.cut_short_with(cut.work))?;
         work.add(space.obstacles.work())?;
         let grid = Grid::over(space.floor);
         let followed = followed_headings(footprint, headings, room);
@@ -349,7 +351,12 @@ struct Space {
 }
 
 impl Space {
-    fn new(room: &Room, footprint: &Footprint) -> Self {
+    /// Cut short where its obstacles would cost more than `allows` allows.
+    fn new(
+        room: &Room,
+        footprint: &Footprint,
+        allows: &dyn Fn(u64) -> bool,
+    ) -> Result<Self, CutShort> {
         let reach = footprint.extent_mm();
         let depth = 2.0 * reach + SPARE_MM;
         let (sx, sy) = (room.size_mm.x, room.size_mm.y);
@@ -379,11 +386,11 @@ impl Space {
                 Rect::new(Coord { x: x0, y: y0 }, Coord { x: x1, y: y1 })
             })
             .collect();
-        Space {
+        Ok(Space {
             floor,
-            obstacles: FloorObstacles::with(room, footprint, &walls),
+            obstacles: FloorObstacles::with(room, footprint, &walls, allows)?,
             outside,
-        }
+        })
     }
 
     /// Where `footprint` fits on this floor at `heading_rad`, tile by
