@@ -26,7 +26,7 @@ use parry3d_f64::query::{self, Ray, RayCast};
 use parry3d_f64::shape::{Capsule as ParryCapsule, Shape};
 
 use crate::geometry::{Capsule, Cuboid};
-use crate::meter::{Account, Meter};
+use crate::meter::{capsule_check, Account, Meter};
 use crate::scene::{Blocker, MeshObstacle, MeshPart, MeshShape, Room, Wall};
 
 /// A mesh obstacle as parry holds it, and its name for reports.
@@ -329,12 +329,22 @@ impl Obstacles {
     /// where along it (0 at the eye, 1 at the target; 0 for a box that holds
     /// the eye). The last `end_gap_mm` before the target is not checked, so
     /// that an object resting on a shelf is not hidden by the shelf.
+    /// Charged as a solid's check is ([`capsule_check`]), and the
+    /// triangles of meshes tested besides; once the run is past its limit,
+    /// nothing is looked at (the answers are thrown away).
     pub fn first_on_sight_line(
         &self,
         eye: &Point3<f64>,
         target: &Point3<f64>,
         end_gap_mm: f64,
     ) -> Option<(Blocker, f64)> {
+        if let Some(account) = &self.account {
+            // Past the limit, the answers are thrown away.
+            if account.exceeded() {
+                return None;
+            }
+            account.charge(capsule_check(self.charged));
+        }
         let length = (target - eye).norm();
         if length <= end_gap_mm {
             return None;
@@ -421,12 +431,8 @@ impl Obstacles {
 impl Obstacles {
     /// Where along `ray` (within `max`) it first meets mesh `m`'s surface:
     /// the first of each part's hits, as parry casts a ray on a mesh. The
-    /// triangles tested are charged ([`RAY_TRIANGLES_PER_UNIT`]); once the
-    /// run is past its limit, none is tested and the ray is blocked at once.
+    /// triangles tested are charged ([`RAY_TRIANGLES_PER_UNIT`]).
     fn mesh_ray(&self, m: &Mesh, ray: &Ray, max: f64) -> Option<f64> {
-        if self.account.as_ref().is_some_and(Account::exceeded) {
-            return Some(0.0);
-        }
         let tested = Cell::new(0_u64);
         let toi = (m.parts.iter())
             .filter_map(|p| part_ray(p, ray, max, &tested))
@@ -809,7 +815,8 @@ mod tests {
             Point3::new(1500.0, 500.0, 1200.0),
         );
         assert_eq!(o.first_on_sight_line(&eye, &target, 0.0), None);
-        assert_eq!(meter.spent(), 100 / RAY_TRIANGLES_PER_UNIT);
+        let line = capsule_check(1);
+        assert_eq!(meter.spent(), line + 100 / RAY_TRIANGLES_PER_UNIT);
         // Up through the slivers themselves: met at the first, as uncharged.
         let (low, high) = (
             Point3::new(1000.0, 1000.2, 50.0),
@@ -818,12 +825,11 @@ mod tests {
         let uncharged = Obstacles::new(&room, 0.0).first_on_sight_line(&low, &high, 0.0);
         assert!(uncharged.is_some());
         assert_eq!(o.first_on_sight_line(&low, &high, 0.0), uncharged);
-        // Past the limit, a sight line through a mesh's bounds is blocked.
+        // Past the limit, nothing is looked at or charged.
         run.charge(10_000);
-        assert_eq!(
-            o.first_on_sight_line(&eye, &target, 0.0),
-            Some((Blocker::Obstacle(0), 0.0))
-        );
+        let spent = meter.spent();
+        assert_eq!(o.first_on_sight_line(&low, &high, 0.0), None);
+        assert_eq!(meter.spent(), spent);
     }
 
     #[test]
