@@ -191,6 +191,10 @@ struct LimitArgs {
     /// Most people one population may draw
     #[arg(long, value_name = "N", default_value_t = DEFAULTS.people as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.people as u64))]
     max_people: u64,
+    /// Most triangles all the meshes of a scenario may hold (a glTF's
+    /// instances placed)
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.triangles as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.triangles as u64))]
+    max_triangles: u64,
     /// Also read used files, meshes and URDFs from DIR (by default only
     /// from the scenario's own directory and below); may be repeated
     #[arg(long, value_name = "DIR")]
@@ -211,6 +215,7 @@ impl LimitArgs {
             solver_starts: self.max_solver_starts,
             solver_work: self.max_solver_work,
             people: self.max_people as usize,
+            triangles: self.max_triangles as usize,
         }
     }
 }

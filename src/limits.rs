@@ -40,6 +40,11 @@ pub struct Limits {
     pub solver_work: u64,
     /// Most people one population may draw.
     pub people: usize,
+    /// Most triangles all the meshes of a scenario may hold, each mesh
+    /// declared counted, a glTF's instances placed (a small file may place
+    /// one mesh millions of times; a triangle takes about 230 bytes once
+    /// its tree is built).
+    pub triangles: usize,
 }
 
 /// The limits unless told otherwise: far beyond any real scenario.
@@ -55,6 +60,7 @@ pub const DEFAULTS: Limits = Limits {
     solver_starts: 20_000_000,
     solver_work: 250_000_000,
     people: 10_000,
+    triangles: 2_000_000,
 };
 
 impl Default for Limits {
@@ -79,4 +85,5 @@ pub const CEILINGS: Limits = Limits {
     solver_starts: 1_000_000_000_000,
     solver_work: 1_000_000_000_000_000,
     people: 1_000_000,
+    triangles: 50_000_000,
 };

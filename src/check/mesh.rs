@@ -12,8 +12,8 @@ use std::path::{Path, PathBuf};
 use nalgebra::{Point3, Rotation3, Vector3};
 
 use super::Checker;
-use crate::error::{Error, ErrorKind};
-use crate::meshfile::{self, MeshFormat, RawMesh, UpAxis};
+use crate::error::{thousands, Error, ErrorKind};
+use crate::meshfile::{self, MeshFileError, MeshFormat, RawMesh, UpAxis};
 use crate::read::{self, FileKind};
 use crate::scene::MeshObstacle;
 use crate::source::Origin;
@@ -175,11 +175,24 @@ impl Checker<'_> {
             buffers.push(buffer.clone());
             read::read(&buffer, FileKind::MeshBuffer, allowed, limit).map_err(|e| e.to_string())
         };
-        let max_triangles = usize::try_from(limit / MIN_BYTES_PER_TRIANGLE).unwrap_or(usize::MAX);
-        let parsed = meshfile::parse(format, &bytes, max_triangles, &mut related);
+        let in_file = usize::try_from(limit / MIN_BYTES_PER_TRIANGLE).unwrap_or(usize::MAX);
+        let left = self.limits.triangles.saturating_sub(self.triangles_read);
+        let parsed = meshfile::parse(format, &bytes, in_file.min(left), &mut related);
         self.data_files.extend(buffers);
         match parsed {
-            Ok(mesh) => Some(mesh),
+            Ok(mesh) => {
+                self.triangles_read += mesh.triangles.len();
+                Some(mesh)
+            }
+            Err(MeshFileError::TooManyTriangles { .. }) if left < in_file => {
+                let most = thousands(self.limits.triangles as u64);
+                let kind = ErrorKind::TooLarge {
+                    what: "the count of triangles in this mesh and the meshes before it".into(),
+                    limit: format!("{most} in a scenario (--max-triangles)"),
+                };
+                self.error(Error::new(kind, d.path.span));
+                None
+            }
             Err(e) => {
                 self.bad_mesh(d, e.to_string());
                 None

@@ -98,6 +98,8 @@ struct Checker<'a> {
     limits: Limits,
     /// The data files (meshes, URDFs) the scenario names.
     data_files: Vec<PathBuf>,
+    /// The triangles of the meshes read so far (`Limits::triangles`).
+    triangles_read: usize,
     sources: &'a Sources,
     errors: Vec<Error>,
     defaults_of: HashMap<FileId, UnitDefaults>,
@@ -132,6 +134,7 @@ impl<'a> Checker<'a> {
             registry,
             limits,
             data_files: Vec::new(),
+            triangles_read: 0,
             sources,
             errors: Vec::new(),
             defaults_of: HashMap::new(),
