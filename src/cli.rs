@@ -195,6 +195,9 @@ struct LimitArgs {
     /// instances placed)
     #[arg(long, value_name = "N", default_value_t = DEFAULTS.triangles as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.triangles as u64))]
     max_triangles: u64,
+    /// Most joints in one mannequin (declared, or a URDF's chain)
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.joints as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.joints as u64))]
+    max_joints: u64,
     /// Also read used files, meshes and URDFs from DIR (by default only
     /// from the scenario's own directory and below); may be repeated
     #[arg(long, value_name = "DIR")]
@@ -216,6 +219,7 @@ impl LimitArgs {
             solver_work: self.max_solver_work,
             people: self.max_people as usize,
             triangles: self.max_triangles as usize,
+            joints: self.max_joints as usize,
         }
     }
 }

@@ -45,6 +45,10 @@ pub struct Limits {
     /// one mesh millions of times; a triangle takes about 230 bytes once
     /// its tree is built).
     pub triangles: usize,
+    /// Most joints in one mannequin, declared in the scenario or the chain
+    /// of a URDF from root to tip (each posture check pairs a chain's
+    /// solids with each other: quadratic in the joints).
+    pub joints: usize,
 }
 
 /// The limits unless told otherwise: far beyond any real scenario.
@@ -61,6 +65,7 @@ pub const DEFAULTS: Limits = Limits {
     solver_work: 250_000_000,
     people: 10_000,
     triangles: 2_000_000,
+    joints: 2_000,
 };
 
 impl Default for Limits {
@@ -86,4 +91,5 @@ pub const CEILINGS: Limits = Limits {
     solver_work: 1_000_000_000_000_000,
     people: 1_000_000,
     triangles: 50_000_000,
+    joints: 100_000,
 };

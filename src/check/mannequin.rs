@@ -2,11 +2,13 @@
 //! comfort weights, joined in a tree (`after`), and their effectors; the
 //! solids of their links and spheres, their legs and posture (`legs.rs`).
 
+use std::collections::HashMap;
+
 use nalgebra::Vector3;
 
 use super::eval::fmt_num;
 use super::Checker;
-use crate::error::{Error, ErrorKind};
+use crate::error::{thousands, Error, ErrorKind};
 use crate::kinematics::{Body, Coupling, Dh, Effector, Joint, JointKind, Link, Posture, Sphere};
 use crate::span::Span;
 use crate::span::{FileId, Name};
@@ -151,12 +153,18 @@ impl Checker<'_> {
                 decl.name.span,
             ));
         }
+        if !self.within_joints(decl.joints.len(), decl.name.span) {
+            return None;
+        }
         let mut joints = Vec::new();
         let mut parents = Vec::new();
         let mut names: Vec<&crate::span::Name> = Vec::new();
+        let mut first_named: HashMap<&str, Span> = HashMap::new();
         for (i, j) in decl.joints.iter().enumerate() {
-            if let Some(first) = names.iter().find(|n| n.value == j.name.value) {
-                self.error(Error::duplicate("joint", &j.name, first.span));
+            if let Some(first) = first_named.get(j.name.value.as_str()) {
+                self.error(Error::duplicate("joint", &j.name, *first));
+            } else {
+                first_named.insert(&j.name.value, j.name.span);
             }
             parents.push(match &j.after {
                 None => Some(i.checked_sub(1)),
@@ -185,6 +193,21 @@ impl Checker<'_> {
             couplings: couplings?,
         };
         Some(self.with_posture(body, decl))
+    }
+
+    /// Whether a mannequin of `joints` joints is within `--max-joints`;
+    /// where it is not, an error at `at`.
+    pub(super) fn within_joints(&mut self, joints: usize, at: Span) -> bool {
+        let most = self.limits.joints;
+        if joints <= most {
+            return true;
+        }
+        let kind = ErrorKind::TooLarge {
+            what: format!("a mannequin of {} joints", thousands(joints as u64)),
+            limit: format!("{} (--max-joints)", thousands(most as u64)),
+        };
+        self.error(Error::new(kind, at));
+        false
     }
 
     /// `body` with the posture `decl` says (its first; an error on others).

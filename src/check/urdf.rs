@@ -50,6 +50,9 @@ impl Checker<'_> {
         };
         match chain_from_urdf(&robot, &source.root.value, &source.tip.value) {
             Ok(mut chain) => {
+                if !self.within_joints(chain.joints.len(), source.tip.span) {
+                    return None;
+                }
                 if let Some(r) = radius_mm {
                     chain.joints.iter_mut().for_each(|j| j.link.radius_mm = r);
                     chain.effector_link.radius_mm = r;
