@@ -188,7 +188,8 @@ struct LimitArgs {
     /// a unit), counted as they work, with the routes from the doors
     #[arg(long, value_name = "UNITS", default_value_t = DEFAULTS.solver_work, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.solver_work))]
     max_solver_work: u64,
-    /// Most people one population may draw
+    /// Most people one population may draw, and most persons a scenario
+    /// declares
     #[arg(long, value_name = "N", default_value_t = DEFAULTS.people as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.people as u64))]
     max_people: u64,
     /// Most triangles all the meshes of a scenario may hold (a glTF's

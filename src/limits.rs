@@ -38,7 +38,8 @@ pub struct Limits {
     /// the rooms' doors: counted as they work, and the run stopped with a
     /// diagnostic once past it.
     pub solver_work: u64,
-    /// Most people one population may draw.
+    /// Most people one population may draw, and most `person`s a
+    /// scenario declares (each is built, about 16 KB, before any task).
     pub people: usize,
     /// Most triangles all the meshes of a scenario may hold, each mesh
     /// declared counted, a glTF's instances placed (a small file may place

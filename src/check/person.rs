@@ -4,7 +4,7 @@
 use std::sync::Arc;
 
 use super::Checker;
-use crate::error::{Error, ErrorKind};
+use crate::error::{thousands, Error, ErrorKind};
 use crate::kinematics::{Body, Joint, JointKind};
 use crate::names::suggest;
 use crate::options::{Options, PluginConfig, PluginKind, Settings};
@@ -18,7 +18,16 @@ use crate::syntax::ast::{
 impl Checker<'_> {
     /// The persons, each with their base built.
     pub(super) fn persons(&mut self) -> Vec<(Person, Arc<dyn Base>)> {
-        let decls: Vec<_> = self.persons.iter().map(|(_, d, f)| (d, f)).collect();
+        let mut decls: Vec<_> = self.persons.iter().map(|(_, d, f)| (d, f)).collect();
+        let most = self.limits.people;
+        if let Some(&(first_beyond, f)) = decls.get(most) {
+            let kind = ErrorKind::TooLarge {
+                what: format!("{} people declared", thousands(decls.len() as u64)),
+                limit: format!("{} (--max-people)", thousands(most as u64)),
+            };
+            self.in_file(f, |c| c.error(Error::new(kind, first_beyond.name.span)));
+            decls.truncate(most);
+        }
         decls
             .into_iter()
             .filter_map(|(d, f)| self.in_file(f, |c| c.person(d)))
