@@ -1152,6 +1152,37 @@ fn a_scenario_declares_at_most_max_people_persons() {
     assert_eq!(code, Some(0), "{err}");
 }
 
+/// A population whose people pass through themselves at rest is refused
+/// as a person who does is (1,000 such people ran the solvers at every
+/// posture to no answer, 10-19 s before the bound stopped them).
+#[test]
+fn a_population_of_bodies_through_themselves_is_refused_as_a_person_is() {
+    let scenario = |radius: &str| {
+        format!(
+            "units mm deg\nuse std::populations\nroom kitchen {{\n  size 6000 x 6000 x 2500\n  \
+             box counter at (0, 0, 0) size (600, 6000, 900)\n  target k0 at (300, 500, 960)\n}}\n\
+             population folk = adult_women {{ size 20 mannequin upper_body(stature stature, \
+             forearm_radius {radius}, upper_arm_radius {radius}) }}\nreach k0 by folk\n"
+        )
+    };
+    let (_dir, path) = scenario_file(&scenario("150mm"));
+    let (code, _, err) = check(&path, &[]);
+    assert_eq!(code, Some(1), "{err}");
+    let err = flat(&err);
+    assert!(
+        err.contains("`upper_body` passes through itself at rest"),
+        "{err}"
+    );
+    assert_eq!(
+        err.matches("passes through itself").count(),
+        1,
+        "one error: {err}"
+    );
+    let (_dir, path) = scenario_file(&scenario("40mm"));
+    let (code, _, err) = check(&path, &[]);
+    assert_eq!(code, Some(0), "{err}");
+}
+
 /// A counter and `targets` targets on it, reached by a population of
 /// `people` manual wheelchair users.
 fn population_at_counter(people: usize, targets: usize) -> String {

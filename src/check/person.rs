@@ -224,7 +224,7 @@ impl Checker<'_> {
     /// Whether each of `body`'s chains keeps its solids apart in the
     /// neutral posture (else a diagnostic at the mannequin, naming the two
     /// that meet): once per person, a look at every pair of solids.
-    fn apart_at_rest(&mut self, body: &Body, mannequin: &MannequinRef) -> bool {
+    pub(super) fn apart_at_rest(&mut self, body: &Body, mannequin: &MannequinRef) -> bool {
         for e in 0..body.effectors.len() {
             let chain = body.chain(e);
             let v = chain.volumes(&chain.neutral());

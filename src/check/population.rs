@@ -557,6 +557,12 @@ impl<'a> Checker<'a> {
         for j in &mut body.joints {
             j.neutral = j.neutral.clamp(j.min, j.max);
         }
+        // As for a person: a body through itself at rest is no one (a
+        // population of such bodies ran the solvers at every posture to
+        // no answer).
+        if ok {
+            ok = self.in_file(m_file, |c| c.apart_at_rest(&body, &m.mannequin));
+        }
         let config = self.in_file(b_file, |c| c.base_config(b))?;
         let base = self.in_file(b_file, |c| {
             c.build_base(name, b, &config, &Physique::of(&body))
