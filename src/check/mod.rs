@@ -100,6 +100,9 @@ struct Checker<'a> {
     data_files: Vec<PathBuf>,
     /// The triangles of the meshes read so far (`Limits::triangles`).
     triangles_read: usize,
+    /// The joints of the people built so far, and whether they passed
+    /// their bound (`Checker::within_people_joints`).
+    people_joints: (usize, bool),
     sources: &'a Sources,
     errors: Vec<Error>,
     defaults_of: HashMap<FileId, UnitDefaults>,
@@ -135,6 +138,7 @@ impl<'a> Checker<'a> {
             limits,
             data_files: Vec::new(),
             triangles_read: 0,
+            people_joints: (0, false),
             sources,
             errors: Vec::new(),
             defaults_of: HashMap::new(),

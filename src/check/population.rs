@@ -108,6 +108,10 @@ impl<'a> Checker<'a> {
                 let built = self.member(&member, &items, drawn, &plan.quantities[i], name.span);
                 match built {
                     Some((person, base)) => {
+                        let joints = person.body.joints.len();
+                        if !self.within_people_joints(joints, name.span) {
+                            break;
+                        }
                         persons.push(person);
                         bases.push(base);
                     }
