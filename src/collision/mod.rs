@@ -426,19 +426,17 @@ impl Obstacles {
         }
         touches
     }
-}
 
-impl Obstacles {
     /// Where along `ray` (within `max`) it first meets mesh `m`'s surface:
     /// the first of each part's hits, as parry casts a ray on a mesh. The
-    /// triangles tested are charged ([`RAY_TRIANGLES_PER_UNIT`]).
+    /// triangles tested are charged ([`UNITS_PER_RAY_TRIANGLE`]).
     fn mesh_ray(&self, m: &Mesh, ray: &Ray, max: f64) -> Option<f64> {
         let tested = Cell::new(0_u64);
         let toi = (m.parts.iter())
             .filter_map(|p| part_ray(p, ray, max, &tested))
             .min_by(f64::total_cmp);
         if let (Some(account), 1..) = (&self.account, tested.get()) {
-            account.charge(tested.get().div_ceil(RAY_TRIANGLES_PER_UNIT));
+            account.charge(tested.get().saturating_mul(UNITS_PER_RAY_TRIANGLE));
         }
         toi
     }
@@ -458,10 +456,10 @@ fn part_ray(p: &MeshPart, ray: &Ray, max: f64, tested: &Cell<u64>) -> Option<f64
     (hit.1 < max).then_some(hit.1)
 }
 
-/// How many of a mesh's triangles a ray is tested against in the time of
-/// a unit of the meter: parry's ray and triangle test, a few tens of
+/// What testing a ray against one of a mesh's triangles costs, in units
+/// of the meter: parry's ray and triangle test, a few tens of
 /// nanoseconds, with its tree's walk.
-const RAY_TRIANGLES_PER_UNIT: u64 = 1;
+const UNITS_PER_RAY_TRIANGLE: u64 = 1;
 
 /// What testing a capsule against one of a mesh's triangles costs, in
 /// units of the meter ([`Obstacles::charging`]): parry's test (GJK) takes
@@ -816,7 +814,7 @@ mod tests {
         );
         assert_eq!(o.first_on_sight_line(&eye, &target, 0.0), None);
         let line = capsule_check(1);
-        assert_eq!(meter.spent(), line + 100 / RAY_TRIANGLES_PER_UNIT);
+        assert_eq!(meter.spent(), line + 100 * UNITS_PER_RAY_TRIANGLE);
         // Up through the slivers themselves: met at the first, as uncharged.
         let (low, high) = (
             Point3::new(1000.0, 1000.2, 50.0),
