@@ -103,6 +103,10 @@ struct Checker<'a> {
     /// The joints of the people built so far, and whether they passed
     /// their bound (`Checker::within_people_joints`).
     people_joints: (usize, bool),
+    /// The bytes of mannequins' declarations evaluated to build people so
+    /// far, and whether they passed their bound
+    /// (`Checker::within_evaluated_text`).
+    evaluated_text: (u64, bool),
     sources: &'a Sources,
     errors: Vec<Error>,
     defaults_of: HashMap<FileId, UnitDefaults>,
@@ -139,6 +143,7 @@ impl<'a> Checker<'a> {
             data_files: Vec::new(),
             triangles_read: 0,
             people_joints: (0, false),
+            evaluated_text: (0, false),
             sources,
             errors: Vec::new(),
             defaults_of: HashMap::new(),

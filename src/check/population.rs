@@ -101,6 +101,9 @@ impl<'a> Checker<'a> {
             let Some(plan) = self.draw_people(&name.value, &items) else {
                 continue;
             };
+            if !self.within_evaluated(plan.drawn.len(), &items, name.span) {
+                continue;
+            }
             let start = persons.len();
             for (i, drawn) in plan.drawn.iter().enumerate() {
                 let member = format!("{}#{}", plan.name, i + 1);
@@ -499,6 +502,17 @@ impl<'a> Checker<'a> {
             d.span,
         ));
         None
+    }
+
+    /// Whether building `people` people of `items`' mannequin keeps the
+    /// scenario's evaluated text within its bound
+    /// ([`Checker::within_evaluated_text`]).
+    fn within_evaluated(&mut self, people: usize, items: &Items<'a>, at: Span) -> bool {
+        let Some((m, _)) = items.mannequin else {
+            return true;
+        };
+        let bytes = self.mannequin_bytes(&m.mannequin.name);
+        self.within_evaluated_text(bytes.saturating_mul(people as u64), at)
     }
 
     /// One person of a population: their mannequin with the population's
