@@ -72,8 +72,31 @@ impl<'m> FreeFloor<'m> {
     /// Whether all of `polygon` is free floor (charged to the meter; none
     /// is, once the run is past its limit).
     pub fn holds(&self, polygon: &Polygon<f64>) -> bool {
-        self.meter.charge(self.look_units) && self.region.contains(polygon)
+        self.meter.charge(self.look_units) && holds_within(&self.region, polygon)
     }
+}
+
+/// Whether `region` contains `polygon`, each piece of it asked with only
+/// the holes near `polygon`: the pieces are apart, so a connected polygon
+/// lies within one of them, and a hole whose bounds miss the polygon's
+/// cannot meet it. The same answer as asking the whole region, whose
+/// test builds a tree of all its edges at every look (a 30 m room of
+/// 4,990 slats: 0.13 s a look, 13 s for one element's clear floor space).
+fn holds_within(region: &MultiPolygon<f64>, polygon: &Polygon<f64>) -> bool {
+    let Some(bounds) = polygon.bounding_rect() else {
+        return region.contains(polygon);
+    };
+    region.0.iter().any(|piece| {
+        let outer = piece.exterior().bounding_rect();
+        if !outer.is_some_and(|o| o.intersects(&bounds)) {
+            return false;
+        }
+        let near = (piece.interiors().iter())
+            .filter(|hole| hole.bounding_rect().is_some_and(|h| h.intersects(&bounds)))
+            .cloned()
+            .collect();
+        Polygon::new(piece.exterior().clone(), near).contains(polygon)
+    })
 }
 
 /// What one look at `region` (whether it holds or meets a polygon) costs
@@ -458,6 +481,40 @@ mod tests {
     use crate::scene::BoxObstacle;
     use geo::LineString;
     use nalgebra::{Point3, Vector3};
+
+    fn square(x: f64, y: f64, side: f64) -> Polygon<f64> {
+        Rect::new(
+            Coord { x, y },
+            Coord {
+                x: x + side,
+                y: y + side,
+            },
+        )
+        .to_polygon()
+    }
+
+    proptest::proptest! {
+        /// Asking each piece with only the holes near the polygon answers
+        /// as asking the whole region (fails with the holes' bounds
+        /// shrunk: a hole just touching the polygon is then left out).
+        #[test]
+        fn a_region_holds_a_polygon_as_its_nearby_holes_say(
+            posts in proptest::collection::vec((0.0..2900.0f64, 0.0..2900.0f64, 5.0..300.0f64), 1..40),
+            split in 0.0..3000.0f64,
+            rects in proptest::collection::vec((0.0..2800.0f64, 0.0..2800.0f64, 10.0..600.0f64), 1..20),
+        ) {
+            let floor = MultiPolygon::new(vec![square(0.0, 0.0, 3000.0)]);
+            let wall = Rect::new(Coord { x: split, y: -1.0 }, Coord { x: split + 20.0, y: 3001.0 });
+            let mut region = floor.difference(&MultiPolygon::new(vec![wall.to_polygon()]));
+            for (x, y, side) in posts {
+                region = region.difference(&MultiPolygon::new(vec![square(x, y, side)]));
+            }
+            for (x, y, side) in rects {
+                let r = square(x, y, side);
+                proptest::prop_assert_eq!(holds_within(&region, &r), region.contains(&r));
+            }
+        }
+    }
 
     fn block(name: &str, corner: [f64; 3], size: [f64; 3]) -> BoxObstacle {
         BoxObstacle {
