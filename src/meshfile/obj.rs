@@ -4,6 +4,7 @@
 use super::{point, MeshFileError, RawMesh};
 
 pub(super) fn parse(bytes: &[u8]) -> Result<RawMesh, MeshFileError> {
+    indices_small_enough(bytes)?;
     let options = tobj::LoadOptions {
         triangulate: true,
         single_index: true,
@@ -32,4 +33,45 @@ pub(super) fn parse(bytes: &[u8]) -> Result<RawMesh, MeshFileError> {
         );
     }
     Ok(mesh)
+}
+
+/// Every index a face gives (of a position, a texture coordinate or a
+/// normal) is small enough for `tobj` to multiply by three: it multiplies
+/// them unchecked (a texture index of 2^62 overflowed, a panic where
+/// overflow is checked, found by fuzzing). Smaller indices past the
+/// file's vertices are `tobj`'s to refuse, in its words.
+fn indices_small_enough(bytes: &[u8]) -> Result<(), MeshFileError> {
+    let text = String::from_utf8_lossy(bytes);
+    let faces = text
+        .lines()
+        .filter_map(|l| l.trim_start().strip_prefix("f "));
+    let indices = faces
+        .flat_map(str::split_whitespace)
+        .flat_map(|corner| corner.split('/'))
+        .filter_map(|k| k.parse::<i128>().ok());
+    for k in indices {
+        if k.abs() > LARGEST_INDEX {
+            return Err(MeshFileError::Invalid {
+                format: "OBJ",
+                reason: format!("a face gives index {k}, too large to be one"),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// The largest index a face may give: far more than any file within the
+/// limits holds, and three times it (and two more) still fits in 64 bits.
+const LARGEST_INDEX: i128 = 1 << 60;
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn a_face_index_too_large_to_multiply_is_refused_before_it_is_used() {
+        let obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/4611686018427387904 2/1 3/1\n";
+        let err = super::parse(obj.as_bytes()).unwrap_err().to_string();
+        assert!(err.contains("too large to be one"), "{err}");
+        let fine = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 -1/1\n";
+        assert_eq!(super::parse(fine.as_bytes()).unwrap().triangles.len(), 1);
+    }
 }
