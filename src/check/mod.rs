@@ -102,7 +102,7 @@ struct Checker<'a> {
     triangles_read: usize,
     /// The joints of the people built so far, and whether they passed
     /// their bound (`Checker::within_people_joints`).
-    people_joints: (usize, bool),
+    people_joints: (u64, bool),
     /// The bytes of mannequins' declarations evaluated to build people so
     /// far, and whether they passed their bound
     /// (`Checker::within_evaluated_text`).

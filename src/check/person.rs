@@ -18,12 +18,23 @@ use crate::syntax::ast::{
 /// How many times `--max-joints` the bodies of all a scenario's people
 /// may hold together: 1,000,000 joints by default (a thousand people of
 /// the stdlib hold about 25,000).
-const PEOPLE_JOINTS_PER_MAX_JOINTS: usize = 500;
+const PEOPLE_JOINTS_PER_MAX_JOINTS: u64 = 500;
 
 /// How many bytes of mannequins' declarations building the people may
 /// evaluate, for each of `--max-people`: 1 GB by default, about 8 s (a
 /// thousand people of the stdlib evaluate about 5 MB).
 const TEXT_PER_PERSON_LIMIT: u64 = 100_000;
+
+/// Adds `more` to `running`, a total kept as the people are built and
+/// whether passing its bound was reported: none while the total is within
+/// `most`; past it, whether this is the first time (the error to report).
+fn passed(running: &mut (u64, bool), more: u64, most: u64) -> Option<bool> {
+    running.0 = running.0.saturating_add(more);
+    if running.0 <= most {
+        return None;
+    }
+    Some(!std::mem::replace(&mut running.1, true))
+}
 
 impl Checker<'_> {
     /// The persons, each with their base built.
@@ -84,13 +95,10 @@ impl Checker<'_> {
     /// where they do not, an error at `at`, the first time.
     pub(super) fn within_evaluated_text(&mut self, bytes: u64, at: Span) -> bool {
         let most = (self.limits.people as u64).saturating_mul(TEXT_PER_PERSON_LIMIT);
-        let (total, reported) = self.evaluated_text;
-        let total = total.saturating_add(bytes);
-        self.evaluated_text = (total, reported);
-        if total <= most {
+        let Some(first) = passed(&mut self.evaluated_text, bytes, most) else {
             return true;
-        }
-        if !reported {
+        };
+        if first {
             let kind = ErrorKind::TooLarge {
                 what: "the mannequins' text evaluated to build the people".into(),
                 limit: format!(
@@ -100,7 +108,6 @@ impl Checker<'_> {
                 ),
             };
             self.error(Error::new(kind, at));
-            self.evaluated_text.1 = true;
         }
         false
     }
@@ -111,26 +118,19 @@ impl Checker<'_> {
     /// joint: 10,000 people of 2,000 joints took 6.5 GB); where they do
     /// not, an error at `at`, the first time.
     pub(super) fn within_people_joints(&mut self, joints: usize, at: Span) -> bool {
-        let most = self
-            .limits
-            .joints
-            .saturating_mul(PEOPLE_JOINTS_PER_MAX_JOINTS);
-        let (total, reported) = self.people_joints;
-        let total = total.saturating_add(joints);
-        self.people_joints = (total, reported);
-        if total <= most {
+        let most = (self.limits.joints as u64).saturating_mul(PEOPLE_JOINTS_PER_MAX_JOINTS);
+        let Some(first) = passed(&mut self.people_joints, joints as u64, most) else {
             return true;
-        }
-        if !reported {
+        };
+        if first {
             let kind = ErrorKind::TooLarge {
                 what: "the joints of the people, each body counted,".into(),
                 limit: format!(
                     "{} ({PEOPLE_JOINTS_PER_MAX_JOINTS} times --max-joints)",
-                    thousands(most as u64)
+                    thousands(most)
                 ),
             };
             self.error(Error::new(kind, at));
-            self.people_joints.1 = true;
         }
         false
     }
