@@ -91,6 +91,7 @@ fn main() {
                 from_rest: true,
                 descents: None,
                 meter: reach::meter::Meter::unmetered(),
+                solves: None,
             };
             let start = Instant::now();
             let placement = prepared.reach(&query, &solver);

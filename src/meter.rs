@@ -17,7 +17,12 @@
 //! machine and thread count, or passes it on each (a sum that only grows
 //! passes a limit whatever order its terms come in). Once past, solves
 //! stop early and the run's answers are thrown away.
+//!
+//! What one solve charges can be counted on its own thread
+//! ([`counting_one`]), so that a solve watch mode keeps from an earlier
+//! run is charged what it cost when it ran (`plugin::KeptSolves`).
 
+use std::cell::Cell;
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Arc, LazyLock, Mutex};
@@ -170,6 +175,7 @@ impl Meter {
 
     /// Add `units`; whether the run is still within its limit.
     pub fn charge(&self, units: u64) -> bool {
+        count_on_thread(units);
         self.own.fetch_add(units, Ordering::Relaxed);
         self.run.as_ref().is_none_or(|run| run.charge(units))
     }
@@ -215,6 +221,32 @@ impl Meter {
             pending: 0,
             within: !self.exceeded(),
         }
+    }
+}
+
+thread_local! {
+    /// What the solve running on this thread has charged, where it is
+    /// being counted ([`counting_one`]).
+    static COUNTED: Cell<Option<u64>> = const { Cell::new(None) };
+}
+
+/// `work` run on this thread, counting what it charges any meter or
+/// account (all of it, whether told at once or in batches, must be told
+/// before it returns, as a solve's tally is when dropped): its result and
+/// that count. A count already being made on this thread is set aside
+/// while `work` runs, and takes its count too.
+pub fn counting_one<R>(work: impl FnOnce() -> R) -> (R, u64) {
+    let outer = COUNTED.replace(Some(0));
+    let result = work();
+    let units = COUNTED.replace(outer).unwrap_or(0);
+    count_on_thread(units);
+    (result, units)
+}
+
+/// `units` added to the count being made on this thread, if any.
+fn count_on_thread(units: u64) {
+    if let Some(sum) = COUNTED.get() {
+        COUNTED.set(Some(sum.saturating_add(units)));
     }
 }
 
@@ -309,6 +341,7 @@ impl Account {
 
     /// Add `units` to the task's work and its run's.
     pub fn charge(&self, units: u64) {
+        count_on_thread(units);
         self.own.fetch_add(units, Ordering::Relaxed);
         if let Some(run) = &self.run {
             run.charge(units);

@@ -71,6 +71,7 @@ fn query<'a>(
         from_rest: false,
         descents: None,
         meter: Meter::unmetered(),
+        solves: None,
     }
 }
 

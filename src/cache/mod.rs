@@ -16,8 +16,10 @@ mod reach;
 mod touched;
 
 use std::collections::HashMap;
+use std::sync::Arc;
 
 use crate::error::Error;
+use crate::plugin::Earlier;
 use crate::progress::Progress;
 use crate::report::{Report, TaskReport};
 use crate::scenario::{Scenario, TaskSpec};
@@ -61,13 +63,18 @@ impl TaskCache {
         let held: Vec<Option<(TaskReport, u64)>> = (scenario.tasks.iter().zip(&keys))
             .map(|(task, k)| self.held(k, &seen[task.room]))
             .collect();
-        let stale: Vec<&TaskSpec> = (scenario.tasks.iter().zip(&held))
+        let stale: Vec<(&TaskSpec, &key::TaskKey)> = (scenario.tasks.iter().zip(&keys).zip(&held))
             .filter(|(_, h)| h.is_none())
-            .map(|(task, _)| task)
+            .map(|(task_key, _)| task_key)
             .collect();
+        let earlier: Vec<Option<Earlier>> = stale
+            .iter()
+            .map(|(task, k)| self.earlier(k, &seen[task.room]))
+            .collect();
+        let stale: Vec<&TaskSpec> = stale.into_iter().map(|(task, _)| task).collect();
         let reused_work = held.iter().flatten().map(|(_, w)| *w).sum();
         let mut ran_now = scenario
-            .run_tasks_recording(&stale, progress, reused_work)?
+            .run_tasks_recording(&stale, progress, reused_work, &earlier)?
             .into_iter();
         let mut kept = HashMap::new();
         let mut results = HashMap::new();
@@ -87,7 +94,9 @@ impl TaskCache {
                     let ranked = ran.touched.as_ref().is_some_and(|s| s.ranked());
                     if let (Some(l), Some(set)) = (k.loose, ran.touched) {
                         let room = seen[task.room].clone();
-                        kept.insert(l, touched::Kept::new(answer.clone(), set, room, k.points));
+                        let solves = Arc::new(ran.solves.unwrap_or_default());
+                        let entry = touched::Kept::new(answer.clone(), set, room, k.points, solves);
+                        kept.insert(l, entry);
                     }
                     (answer, !ranked)
                 }
@@ -108,6 +117,13 @@ impl TaskCache {
             work: work + standards,
         };
         Ok((report, stats))
+    }
+
+    /// The solves kept from the last run of a task of keys `k` (its key of
+    /// all but the obstacles the same) that its run in a room whose
+    /// obstacles are `seen` may take (`plugin::KeptSolves`).
+    fn earlier(&self, k: &key::TaskKey, seen: &[touched::Seen]) -> Option<Earlier> {
+        self.kept.get(&k.loose?)?.earlier(seen)
     }
 
     /// The result kept for a task of keys `k` in a room whose obstacles

@@ -11,11 +11,13 @@
 
 use std::collections::hash_map::DefaultHasher;
 use std::hash::Hasher;
+use std::sync::Arc;
 
 use nalgebra::Point3;
 
 use crate::bases::ON_FACE_MM;
 use crate::collision::{bounds_meet, bounds_within, obstacle_bounds, TouchedSet, TOUCH_MARGIN_MM};
+use crate::plugin::{Earlier, SolveMap};
 use crate::report::TaskReport;
 use crate::scene::Room;
 
@@ -55,6 +57,9 @@ pub(super) struct Kept {
     touched: TouchedSet,
     /// The room's obstacles as they were when it was found.
     seen: Vec<Seen>,
+    /// Its run's solves, for a run of the task after an edit
+    /// (`plugin::KeptSolves`).
+    solves: Arc<SolveMap>,
 }
 
 impl Kept {
@@ -66,6 +71,7 @@ impl Kept {
         mut touched: TouchedSet,
         seen: Vec<Seen>,
         points_bounds: Option<[Point3<f64>; 2]>,
+        solves: Arc<SolveMap>,
     ) -> Self {
         // A box within this of a point may hold the face an approach is
         // measured against (a hand's lift from a map's surface included).
@@ -84,6 +90,7 @@ impl Kept {
             work,
             touched,
             seen,
+            solves,
         }
     }
 
@@ -97,14 +104,36 @@ impl Kept {
     pub fn holds(&self, now: &[Seen]) -> bool {
         self.seen.len() == now.len()
             && (self.seen.iter().zip(now).enumerate()).all(|(i, (was, is))| {
-                was.value == is.value
-                    || (!self.touched.contains(i)
-                        && match (was.bounds, is.bounds) {
-                            (Some(a), Some(b)) => bounds_within(&b, &a, TOUCH_MARGIN_MM),
-                            (None, None) => true,
-                            _ => false,
-                        })
+                was.value == is.value || (!self.touched.contains(i) && stays_near(was, is))
             })
+    }
+
+    /// The solves of its run that a run of the task in a room (of the
+    /// same key) whose obstacles are `now` may take: each where the
+    /// obstacles it touched are as they were. None where an obstacle
+    /// changed beyond its old bounds grown by the margin, which a solve
+    /// that did not touch it may now meet, or where obstacles were added
+    /// or taken away.
+    pub fn earlier(&self, now: &[Seen]) -> Option<Earlier> {
+        if self.seen.len() != now.len() || self.solves.is_empty() {
+            return None;
+        }
+        let changed: Vec<usize> = (self.seen.iter().zip(now).enumerate())
+            .filter(|(_, (was, is))| was.value != is.value)
+            .map(|(i, _)| i)
+            .collect();
+        let near = changed.iter().all(|&i| stays_near(&self.seen[i], &now[i]));
+        near.then(|| Earlier::new(Arc::clone(&self.solves), changed))
+    }
+}
+
+/// Whether an obstacle that was as `was` is now within those bounds
+/// grown by the margin.
+fn stays_near(was: &Seen, is: &Seen) -> bool {
+    match (was.bounds, is.bounds) {
+        (Some(a), Some(b)) => bounds_within(&b, &a, TOUCH_MARGIN_MM),
+        (None, None) => true,
+        _ => false,
     }
 }
 

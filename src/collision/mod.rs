@@ -15,7 +15,9 @@ mod touched;
 pub use beyond::{OutOfReach, Verdict};
 pub use kept_proofs::KeptProofs;
 pub use placed::PlacedObstacles;
-pub use touched::{bounds_meet, bounds_within, Touched, TouchedSet, TOUCH_MARGIN_MM};
+pub use touched::{
+    bounds_meet, bounds_within, recording_one, Touched, TouchedSet, TOUCH_MARGIN_MM,
+};
 
 use std::cell::Cell;
 use std::sync::Arc;

@@ -15,7 +15,13 @@
 //! obstacles by their distance (finding why) says so: its answer depends
 //! on obstacles however far, which a key of the obstacles within reach
 //! does not hold.
+//!
+//! One solve's own record ([`recording_one`]) is kept beside the task's
+//! while it runs on its thread: watch mode keeps the solve's answer with
+//! it (`plugin::KeptSolves`), for a run of the task after an edit that
+//! changed none of the obstacles that solve touched.
 
+use std::cell::RefCell;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
 use nalgebra::Point3;
@@ -59,6 +65,7 @@ impl Touched {
 
     /// Obstacle `index` was touched.
     pub fn mark(&self, index: usize) {
+        mark_in_scope(index);
         let bit = 1u64 << (index % 64);
         match self.words.get(index / 64) {
             // Read first: the threads of one task mark the same few
@@ -72,9 +79,15 @@ impl Touched {
         }
     }
 
-    /// Whether obstacle `index` is touched already (then a question need
-    /// not work out whether it comes near it).
+    /// Whether obstacle `index` is touched already, in the task's record
+    /// and in the record of the solve running on this thread, if any
+    /// (then a question need not work out whether it comes near it).
     pub fn is_marked(&self, index: usize) -> bool {
+        scope_marked(index) && self.marked_for_task(index)
+    }
+
+    /// Whether obstacle `index` is touched already in the task's record.
+    fn marked_for_task(&self, index: usize) -> bool {
         self.all.load(Ordering::Relaxed)
             || self
                 .words
@@ -128,6 +141,60 @@ impl TouchedSet {
             words[index / 64] |= 1u64 << (index % 64);
         }
     }
+}
+
+thread_local! {
+    /// The obstacles touched by the solve running on this thread, by
+    /// index, where one is being recorded ([`recording_one`]).
+    static SCOPE: RefCell<Option<Vec<u64>>> = const { RefCell::new(None) };
+}
+
+/// `work` run on this thread with a record of its own of the obstacles
+/// its questions touch (the task's record is kept as well): its result,
+/// and the indices of those obstacles, in order. `work` must not hand
+/// work to other threads (a solve does not). A record already being made
+/// on this thread is set aside while `work` runs, and takes its marks
+/// too.
+pub fn recording_one<R>(work: impl FnOnce() -> R) -> (R, Vec<u32>) {
+    let outer = SCOPE.with(|s| s.borrow_mut().replace(Vec::new()));
+    let result = work();
+    let words = SCOPE.with(|s| std::mem::replace(&mut *s.borrow_mut(), outer));
+    let indices: Vec<u32> = (words.into_iter().flatten().enumerate())
+        .flat_map(|(w, word)| {
+            (0..64u32)
+                .filter(move |b| word & (1u64 << b) != 0)
+                .map(move |b| w as u32 * 64 + b)
+        })
+        .collect();
+    for &i in &indices {
+        mark_in_scope(i as usize);
+    }
+    (result, indices)
+}
+
+/// Obstacle `index` marked in the record of the solve running on this
+/// thread, if one is being made.
+fn mark_in_scope(index: usize) {
+    SCOPE.with(|s| {
+        if let Some(words) = s.borrow_mut().as_mut() {
+            if words.len() <= index / 64 {
+                words.resize(index / 64 + 1, 0);
+            }
+            words[index / 64] |= 1u64 << (index % 64);
+        }
+    });
+}
+
+/// Whether obstacle `index` is marked in this thread's solve's record
+/// (true where none is being made).
+fn scope_marked(index: usize) -> bool {
+    SCOPE.with(|s| {
+        s.borrow().as_ref().is_none_or(|words| {
+            words
+                .get(index / 64)
+                .is_some_and(|w| w & (1u64 << (index % 64)) != 0)
+        })
+    })
 }
 
 /// Whether the bounds `a` and `b` meet once `a` is grown by `grow_mm` on

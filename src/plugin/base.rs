@@ -4,10 +4,11 @@
 
 use std::cell::RefCell;
 use std::fmt;
+use std::hash::{Hash, Hasher};
 
 use nalgebra::{Point3, Vector2};
 
-use super::{Descents, IkProblem, Options, Plugin, SettingsError, Solver};
+use super::{Descents, IkProblem, KeptSolves, Options, Plugin, SettingsError, Solver};
 use crate::collision::{KeptProofs, Obstacles, PlacedObstacles};
 use geo::MultiPolygon;
 
@@ -56,6 +57,32 @@ pub struct ReachQuery<'a> {
     pub descents: Option<&'a RefCell<Descents>>,
     /// What the solves tell their work to.
     pub meter: &'a Meter,
+    /// Where the solves are kept for the task's next run, and taken from
+    /// its last (watch mode; a map's solves, of one chain and own body).
+    pub solves: Option<&'a KeptSolves>,
+}
+
+/// The key a solve of `problem` at `pose` by `solver` from `start` (none:
+/// the solver's own starts), searching as `search`, is kept by
+/// ([`KeptSolves`]): none for a solver with no fingerprint.
+fn solve_key(
+    problem: &IkProblem<'_>,
+    pose: BasePose,
+    search: Search,
+    solver: &dyn Solver,
+    start: Option<&[f64]>,
+) -> Option<u64> {
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    solver.fingerprint()?.hash(&mut h);
+    (search == Search::FirstReaching).hash(&mut h);
+    problem.seed.hash(&mut h);
+    let target = problem.target_mm.coords.iter();
+    let position = pose.position_mm.coords.iter();
+    let numbers = [problem.tolerance_mm, pose.heading_rad];
+    crate::scene::hash_bits(target.chain(position).chain(&numbers), &mut h);
+    start.map(<[f64]>::len).hash(&mut h);
+    crate::scene::hash_bits(start.into_iter().flatten(), &mut h);
+    Some(h.finish())
 }
 
 /// A second try where the task's solver reaches from no placement (used
@@ -127,10 +154,21 @@ impl<'a> ReachQuery<'a> {
         solver: &dyn Solver,
         start: Option<Vec<f64>>,
     ) -> Placement {
-        let mut solution = match (start, self.search) {
+        let kept = self.solves.and_then(|solves| {
+            Some((
+                solves,
+                solve_key(problem, pose, self.search, solver, start.as_deref())?,
+            ))
+        });
+        let search = self.search;
+        let solve = move || match (start, search) {
             (Some(start), _) => solver.solve_from(problem, start),
             (None, Search::MostComfortable) => solver.solve(problem),
             (None, Search::FirstReaching) => solver.solve_until_reached(problem),
+        };
+        let mut solution = match kept {
+            Some((solves, key)) => solves.solve(key, problem.meter, solve),
+            None => solve(),
         };
         solution.collision = problem.collision_charged(&solution.q);
         Placement {

@@ -8,6 +8,7 @@
 mod base;
 mod descents;
 mod format;
+mod kept_solves;
 mod registry;
 mod solver;
 mod standard;
@@ -18,8 +19,9 @@ pub use base::{
 };
 pub use descents::Descents;
 pub use format::{FormatPlugin, FormatScene, TaskPlace};
+pub use kept_solves::{Earlier, KeptSolves, SolveMap};
 pub use registry::Registry;
-pub use solver::{work_ratio, IkProblem, Solver, SolverPlugin};
+pub use solver::{fingerprint_of, work_ratio, IkProblem, Solver, SolverPlugin};
 pub use standard::{Standard, StandardPlugin};
 pub use task::{Dependence, EffectorNeed, Subject, SubjectKind, Task, TaskInput, TaskPlugin};
 // The data the traits speak of, so that a plugin needs one `use`.

@@ -120,6 +120,34 @@ pub trait Solver: Send + Sync {
     fn seeded(&self) -> bool {
         true
     }
+    /// A hash of everything that decides this solver's answers besides
+    /// the problem (its kind and settings), where it has one: watch mode
+    /// keeps the solves of such a solver for the task's next run
+    /// (`plugin::KeptSolves`). None: its solves are not kept.
+    fn fingerprint(&self) -> Option<u64> {
+        None
+    }
+}
+
+/// The fingerprint of a solver of `kind` with `settings`
+/// ([`Solver::fingerprint`]): a hash of their `Debug` text, which writes
+/// every field, each float exactly, so that a setting added later is
+/// taken in without being named here.
+pub fn fingerprint_of(kind: &str, settings: &impl std::fmt::Debug) -> u64 {
+    use std::fmt::Write;
+    use std::hash::Hasher;
+    /// Text written straight into a hasher.
+    struct Hashing(std::collections::hash_map::DefaultHasher);
+    impl Write for Hashing {
+        fn write_str(&mut self, text: &str) -> std::fmt::Result {
+            self.0.write(text.as_bytes());
+            Ok(())
+        }
+    }
+    let mut h = Hashing(std::collections::hash_map::DefaultHasher::new());
+    // Writing into a hasher cannot fail.
+    let _ = write!(h, "{kind}\u{0}{settings:?}");
+    h.0.finish()
 }
 
 pub trait SolverPlugin: Plugin {

@@ -8,7 +8,7 @@ use std::sync::Arc;
 
 use nalgebra::Point3;
 
-use super::{Base, Options, Plugin, Registry, SettingsError, Tries};
+use super::{Base, KeptSolves, Options, Plugin, Registry, SettingsError, Tries};
 use crate::collision::Touched;
 use crate::error::ErrorKind;
 use crate::kinematics::Chain;
@@ -75,6 +75,9 @@ pub struct TaskInput<'a> {
     /// What the task's solves tell their work to ([`crate::meter`]): a
     /// task whose run passes the limit is thrown away with the run.
     pub meter: &'a Meter,
+    /// Where a map's solves are kept for the task's next run, and taken
+    /// from its last (watch mode's cache): given with [`TaskInput::touched`].
+    pub solves: Option<&'a KeptSolves>,
 }
 
 impl<'a> TaskInput<'a> {

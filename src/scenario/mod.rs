@@ -194,6 +194,7 @@ impl Scenario {
             verdict_only: false,
             touched: None,
             meter: Meter::unmetered(),
+            solves: None,
         }
     }
 }

@@ -13,7 +13,7 @@ use super::{Scenario, TaskSpec};
 use crate::collision::{Touched, TouchedSet};
 use crate::error::Error;
 use crate::meter::{Meter, RunWork};
-use crate::plugin::{Fit, TaskInput};
+use crate::plugin::{Earlier, Fit, KeptSolves, SolveMap, TaskInput};
 use crate::progress::Progress;
 use crate::report::{
     NotPlacedReport, PersonAnswer, PopulationReport, Report, TaskReport, SCHEMA_VERSION,
@@ -25,6 +25,15 @@ pub struct Ran {
     pub report: TaskReport,
     pub touched: Option<TouchedSet>,
     pub work: u64,
+    /// Its solves, kept for its next run (where it records its touches).
+    pub solves: Option<SolveMap>,
+}
+
+/// That a task's run records what it touched (watch mode), with the
+/// solves of its last run that it may take.
+#[derive(Clone, Copy)]
+struct Recording<'e> {
+    earlier: Option<&'e Earlier>,
 }
 
 /// One piece of parallel work.
@@ -83,7 +92,7 @@ impl Scenario {
         tasks: &[&TaskSpec],
         progress: &dyn Progress,
     ) -> Result<Vec<Ran>, Error> {
-        self.run_jobs(tasks, progress, false, &RunWork::new(self.work.limit))
+        self.run_jobs(tasks, progress, None, &RunWork::new(self.work.limit))
     }
 
     /// As [`Scenario::run_tasks`], with what each task's questions touched
@@ -92,26 +101,30 @@ impl Scenario {
     /// tasks not run (`also_spent`, kept from before) is counted against
     /// the bound as well, so that a run that reuses answers stops where a
     /// fresh run would.
+    /// Each task may take the solves of its last run that hold
+    /// (`earlier`, by position; `plugin::KeptSolves`).
     pub fn run_tasks_recording(
         &self,
         tasks: &[&TaskSpec],
         progress: &dyn Progress,
         also_spent: u64,
+        earlier: &[Option<Earlier>],
     ) -> Result<Vec<Ran>, Error> {
         let run = RunWork::new(self.work.limit);
         if !run.charge(also_spent) {
             return Err(self.work.exceeded());
         }
-        self.run_jobs(tasks, progress, true, &run)
+        self.run_jobs(tasks, progress, Some(earlier), &run)
     }
 
-    /// `tasks` run in parallel, recording what they touch if `record`,
-    /// their work told to `run`.
+    /// `tasks` run in parallel, recording what they touch where `record`
+    /// holds the solves of their last runs (by position), their work told
+    /// to `run`.
     fn run_jobs(
         &self,
         tasks: &[&TaskSpec],
         progress: &dyn Progress,
-        record: bool,
+        record: Option<&[Option<Earlier>]>,
         run: &Arc<RunWork>,
     ) -> Result<Vec<Ran>, Error> {
         // The positions of the tasks by each population.
@@ -145,16 +158,22 @@ impl Scenario {
         // Each job's answers (a task's alone, or a member's in the order
         // of their population's tasks) and the work of each; none once the
         // run is past its bound (no job starts then).
-        type Found = (Vec<(TaskReport, u64)>, Option<TouchedSet>);
+        type Found = (
+            Vec<(TaskReport, u64)>,
+            Option<(TouchedSet, Option<SolveMap>)>,
+        );
         let found: Vec<Option<Found>> = jobs
             .par_iter()
             .map(|job| {
                 (!run.exceeded()).then(|| match *job {
                     Job::Alone(k) => {
                         let charges = floor_charges.of(tasks[k]);
-                        let (report, touched, work) =
-                            self.run_one(tasks[k], progress, false, record, run, charges);
-                        (vec![(report, work)], touched)
+                        let recording = record.map(|earlier| Recording {
+                            earlier: earlier.get(k).and_then(Option::as_ref),
+                        });
+                        let ran = self.run_one(tasks[k], progress, false, recording, run, charges);
+                        let touched = ran.touched.map(|t| (t, ran.solves));
+                        (vec![(ran.report, ran.work)], touched)
                     }
                     Job::Member { population, person } => {
                         let each = by_population[&population]
@@ -173,7 +192,8 @@ impl Scenario {
             Some(found) if !run.exceeded() => found,
             _ => return Err(self.work.exceeded()),
         };
-        let mut touched: Vec<Option<TouchedSet>> = vec![None; tasks.len()];
+        let mut touched: Vec<Option<(TouchedSet, Option<SolveMap>)>> =
+            (0..tasks.len()).map(|_| None).collect();
         let mut work = vec![0u64; tasks.len()];
         let mut answers = Vec::with_capacity(found.len());
         for (job, (each, set)) in jobs.iter().zip(found) {
@@ -192,10 +212,14 @@ impl Scenario {
             .into_iter()
             .zip(touched)
             .zip(work)
-            .map(|((report, touched), work)| Ran {
-                report,
-                touched,
-                work,
+            .map(|((report, touched), work)| {
+                let (touched, solves) = touched.unzip();
+                Ran {
+                    report,
+                    touched,
+                    work,
+                    solves: solves.flatten(),
+                }
             })
             .collect())
     }
@@ -316,7 +340,8 @@ impl Scenario {
             population: None,
             ..task.clone()
         };
-        let (answer, _, work) = self.run_one(&spec, progress, true, false, run, charges);
+        let ran = self.run_one(&spec, progress, true, None, run, charges);
+        let (answer, work) = (ran.report, ran.work);
         if self.one_point(task) {
             progress.advance(1);
         }
@@ -356,18 +381,23 @@ impl Scenario {
         task: &TaskSpec,
         progress: &dyn Progress,
         verdict_only: bool,
-        record: bool,
+        record: Option<Recording<'_>>,
         run: &Arc<RunWork>,
         charges: Charges,
-    ) -> (TaskReport, Option<TouchedSet>, u64) {
+    ) -> Ran {
         let room = &self.rooms[task.room];
-        let touched = (record && task.task.records_touches())
-            .then(|| Arc::new(Touched::new(room.boxes.len() + room.meshes.len())));
+        let recording = record.filter(|_| task.task.records_touches());
+        let touched =
+            recording.map(|_| Arc::new(Touched::new(room.boxes.len() + room.meshes.len())));
+        let solves = recording
+            .zip(touched.as_ref())
+            .map(|(r, touched)| KeptSolves::new(Arc::clone(touched), r.earlier.cloned()));
         let meter = Meter::of(run);
         let input = TaskInput {
             verdict_only,
             touched: touched.as_ref(),
             meter: &meter,
+            solves: solves.as_ref(),
             ..self.input(task, progress)
         };
         let label = match task.kind.as_str() {
@@ -396,10 +426,19 @@ impl Scenario {
                         .for_each(|&e| _ = meter.charge(input.base.prepare_work(&body.chain(e))));
                 }
                 let report = task.task.run(&input);
-                return (report, touched.map(|t| t.set()), meter.spent());
+                return Ran {
+                    report,
+                    touched: touched.map(|t| t.set()),
+                    work: meter.spent(),
+                    solves: solves.map(KeptSolves::into_map),
+                };
             }
         };
-        let touched = touched.map(|t| t.set());
-        (TaskReport::NotPlaced(report), touched, meter.spent())
+        Ran {
+            report: TaskReport::NotPlaced(report),
+            touched: touched.map(|t| t.set()),
+            work: meter.spent(),
+            solves: solves.map(KeptSolves::into_map),
+        }
     }
 }

@@ -9,8 +9,8 @@ use nalgebra::{Matrix3, Point3, Vector3};
 use super::starts::{neutral_start, Starts};
 use crate::kinematics::{Chain, JointKind};
 use crate::plugin::{
-    work_ratio, IkProblem, IkSolution, Options, ParamSpec, Params, Plugin, Settings, SettingsError,
-    Solver, SolverPlugin,
+    fingerprint_of, work_ratio, IkProblem, IkSolution, Options, ParamSpec, Params, Plugin,
+    Settings, SettingsError, Solver, SolverPlugin,
 };
 
 /// The plugin `dls`.
@@ -79,6 +79,10 @@ impl SolverPlugin for Dls {
 }
 
 impl Solver for DlsSolver {
+    fn fingerprint(&self) -> Option<u64> {
+        Some(fingerprint_of("dls", self))
+    }
+
     fn solve(&self, problem: &IkProblem<'_>) -> IkSolution {
         let starts = Starts::new(problem.chain, problem.seed, self.neutral_start);
         let mut best: Option<IkSolution> = None;

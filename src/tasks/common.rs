@@ -223,6 +223,7 @@ impl Reaching {
             from_rest: true,
             descents: None,
             meter,
+            solves: None,
         }
     }
 

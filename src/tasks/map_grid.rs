@@ -234,6 +234,7 @@ impl<'a> GridRun<'a> {
         ReachQuery {
             last_resort: neighbour.and_then(|n| self.carried(n, &target_room_mm)),
             from_rest: false,
+            solves: self.input.solves,
             ..reaching
                 .query(
                     target_room_mm,

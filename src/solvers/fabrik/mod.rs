@@ -19,8 +19,8 @@ use rand_chacha::rand_core::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
 use crate::plugin::{
-    work_ratio, IkProblem, IkSolution, Options, ParamSpec, Params, Plugin, Settings, SettingsError,
-    Solver, SolverPlugin,
+    fingerprint_of, work_ratio, IkProblem, IkSolution, Options, ParamSpec, Params, Plugin,
+    Settings, SettingsError, Solver, SolverPlugin,
 };
 use crate::scene::Preferred;
 use crate::solvers::starts::{neutral_start, Starts};
@@ -153,6 +153,10 @@ pub struct FabrikSolver {
 }
 
 impl Solver for FabrikSolver {
+    fn fingerprint(&self) -> Option<u64> {
+        Some(fingerprint_of("fabrik", &self.settings))
+    }
+
     fn solve(&self, problem: &IkProblem<'_>) -> IkSolution {
         let bones = bones(problem.chain);
         let starts = Starts::new(problem.chain, problem.seed, self.settings.neutral_start);

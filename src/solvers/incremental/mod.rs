@@ -25,8 +25,8 @@
 mod descent;
 
 use crate::plugin::{
-    work_ratio, IkProblem, IkSolution, Options, ParamSpec, Params, Plugin, Settings, SettingsError,
-    Solver, SolverPlugin,
+    fingerprint_of, work_ratio, IkProblem, IkSolution, Options, ParamSpec, Params, Plugin,
+    Settings, SettingsError, Solver, SolverPlugin,
 };
 use crate::scene::Preferred;
 use crate::solvers::starts::{neutral_start, Starts};
@@ -257,5 +257,9 @@ impl Solver for IncrementalSolver {
     /// One start, the neutral posture: no seed is drawn from.
     fn seeded(&self) -> bool {
         self.settings.starts > 1 || !self.settings.neutral_start
+    }
+
+    fn fingerprint(&self) -> Option<u64> {
+        Some(fingerprint_of("incremental", &self.settings))
     }
 }
