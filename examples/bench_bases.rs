@@ -36,12 +36,10 @@ fn main() {
     let room = &scenario.rooms[0];
     let chain = reach::stdlib::chain("arm", "right_arm").expect("std::arm");
     let targets = targets(room, n);
-    let solver = IncrementalSolver {
-        settings: IncrementalSettings {
-            starts: 1,
-            ..IncrementalSettings::with_defaults()
-        },
-    };
+    let solver = IncrementalSolver::new(IncrementalSettings {
+        starts: 1,
+        ..IncrementalSettings::with_defaults()
+    });
 
     // The paper's bases are outlines on the floor as tall as the person
     // (1.4 m seated, 2 m standing), with no body of their own.

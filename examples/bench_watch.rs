@@ -12,7 +12,8 @@
 //! room not seen before at every save). Prints each save's time and
 //! summary, then the least, median and greatest. EDIT `each_box` moves
 //! each box of the kitchen up 1 mm in turn (SAVES saves each, the edit
-//! made and undone) and prints each box's median.
+//! made and undone) and prints each box's median; `each_box SAVES NAME`
+//! moves only box NAME.
 
 use std::io::{BufRead, BufReader};
 use std::path::PathBuf;
@@ -48,7 +49,7 @@ fn main() {
     let edit = args.get(1).map_or("target", String::as_str);
     let saves: usize = args.get(2).map_or(10, |s| s.parse().expect("a count"));
     if edit == "each_box" {
-        return each_box(saves);
+        return each_box(saves, args.get(3).map(String::as_str));
     }
     let onward = edit == "shelf_on";
     let named = if onward { "shelf" } else { edit };
@@ -78,15 +79,17 @@ fn main() {
     );
 }
 
-/// Each box of the kitchen moved up 1 mm and back, `saves` saves each:
-/// each box's median, and how many boxes are within 100 ms.
-fn each_box(saves: usize) {
+/// Each box of the kitchen (or only the box `only`) moved up 1 mm and
+/// back, `saves` saves each: each box's median, and how many boxes are
+/// within 100 ms.
+fn each_box(saves: usize, only: Option<&str>) {
     let original = kitchen();
     let watched = Watched::start(&original);
     let mut within = 0;
     let boxes: Vec<(String, String)> = original
         .lines()
         .filter_map(|line| raised(line).map(|up| (line.to_string(), up)))
+        .filter(|(line, _)| only.is_none_or(|name| line.split_whitespace().nth(1) == Some(name)))
         .collect();
     for (line, up) in &boxes {
         let moved = original.replacen(line.as_str(), up, 1);

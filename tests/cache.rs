@@ -418,14 +418,19 @@ fn answers_kept_across_many_more_obstacles_count_a_fresh_runs_work() {
     }
 }
 
-/// A table with a board hung over part of it, and a seated person at a
-/// fixed place before it, mapping the table's top: the board at a height
-/// where nudging it by a few millimetres changes which points the hand
-/// reaches under it.
-fn hung_board(board: [i32; 3], depth: i32) -> String {
+/// A table with a board hung over part of it, and a person mapping the
+/// table's top, at a fixed place before it or in a wheelchair (whose
+/// placements are sampled from its capability map and kept too): the
+/// board at a height where nudging it by a few millimetres changes which
+/// points the hand reaches under it.
+fn hung_board(board: [i32; 3], depth: i32, wheelchair: bool) -> String {
     let [x, y, z] = board;
+    let base = match wheelchair {
+        true => "wheelchair",
+        false => "fixed { at (1400, 1900, 930) heading 270deg }",
+    };
     format!(
-        "use std::arm\nroom r {{\n  size 3000 x 3000 x 2500\n  box table at (1000, 1000, 0) size (800, 600, 900)\n  box board at ({x}, {y}, {z}) size (800, {depth}, 20)\n}}\nperson ann {{ mannequin right_arm base fixed {{ at (1400, 1900, 930) heading 270deg }} }}\nmap table.top by ann {{ step 100mm solver incremental {{ starts 1 }} }}\n"
+        "use std::arm\nroom r {{\n  size 3000 x 3000 x 2500\n  box table at (1000, 1000, 0) size (800, 600, 900)\n  box board at ({x}, {y}, {z}) size (800, {depth}, 20)\n}}\nperson ann {{ mannequin right_arm base {base} }}\nmap table.top by ann {{ step 100mm solver incremental {{ starts 1 }} }}\n"
     )
 }
 
@@ -440,9 +445,10 @@ proptest! {
     /// beyond the margin.)
     #[test]
     fn a_map_after_a_nudge_answers_as_a_fresh_run(
-        z in 925..1090i32,
+        z in 925..1150i32,
         x in 900..1100i32,
         depth in 200..400i32,
+        wheelchair in any::<bool>(),
         nudges in prop::collection::vec(prop_oneof![
             3 => (-7..=7i32, -7..=7i32, -7..=7i32),
             1 => (-60..=60i32, -60..=60i32, -60..=60i32),
@@ -450,11 +456,11 @@ proptest! {
     ) {
         let mut board = [x, 1000, z];
         let mut cache = TaskCache::default();
-        let first = checked(&hung_board(board, depth)).expect("the room checks");
+        let first = checked(&hung_board(board, depth, wheelchair)).expect("the room checks");
         cache.run(&first, &NoProgress).expect("within the bound on solver work");
         for (dx, dy, dz) in nudges {
             board = [board[0] + dx, board[1] + dy, board[2] + dz];
-            let s = checked(&hung_board(board, depth)).expect("the room checks");
+            let s = checked(&hung_board(board, depth, wheelchair)).expect("the room checks");
             let (cached, stats) = cache.run(&s, &NoProgress).expect("within the bound on solver work");
             let (fresh, work) = reach::run_counting(&s, &NoProgress).expect("within the bound on solver work");
             prop_assert_eq!(json(&cached), json(&fresh), "board at {:?}", board);

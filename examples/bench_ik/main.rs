@@ -169,7 +169,7 @@ fn our_solvers(overrides: &[(String, String)]) -> Vec<(String, Box<dyn Solver>)>
         stall: 1_000_000,
         ..paper
     };
-    let incremental = |settings| Box::new(IncrementalSolver { settings }) as Box<dyn Solver>;
+    let incremental = |settings| Box::new(IncrementalSolver::new(settings)) as Box<dyn Solver>;
     vec![
         ("A", variant(false, false)),
         ("B", variant(true, false)),

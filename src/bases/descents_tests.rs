@@ -93,9 +93,9 @@ fn a_descent_is_made_once_and_judged_at_each_pose() {
     let obstacles = Obstacles::new(&room, 0.0);
     let own = OwnBody::default();
     let solver = Counted {
-        solver: IncrementalSolver {
-            settings: IncrementalSettings::defaults().expect("defaults are valid"),
-        },
+        solver: IncrementalSolver::new(
+            IncrementalSettings::defaults().expect("defaults are valid"),
+        ),
         descents: AtomicUsize::new(0),
         targets_mm: Mutex::new(Vec::new()),
     };
@@ -179,9 +179,7 @@ fn a_solve_from_its_own_starts_is_kept_only_where_no_seed_is_drawn() {
     for (starts, solves) in [(1, 1), (6, 2)] {
         let defaults = IncrementalSettings::defaults().expect("defaults are valid");
         let solver = Counted {
-            solver: IncrementalSolver {
-                settings: IncrementalSettings { starts, ..defaults },
-            },
+            solver: IncrementalSolver::new(IncrementalSettings { starts, ..defaults }),
             descents: AtomicUsize::new(0),
             targets_mm: Mutex::new(Vec::new()),
         };
@@ -223,12 +221,10 @@ proptest! {
         let obstacles = Obstacles::new(&room, 0.0);
         let own = OwnBody::default();
         let solver = Counted {
-            solver: IncrementalSolver {
-                settings: IncrementalSettings {
-                    starts: 1,
-                    ..IncrementalSettings::defaults().expect("defaults are valid")
-                },
-            },
+            solver: IncrementalSolver::new(IncrementalSettings {
+                starts: 1,
+                ..IncrementalSettings::defaults().expect("defaults are valid")
+            }),
             descents: AtomicUsize::new(0),
             targets_mm: Mutex::new(Vec::new()),
         };

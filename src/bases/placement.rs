@@ -622,8 +622,36 @@ impl PreparedMobile<'_> {
 
     /// Up to `SEEDED` placements from the capability map whose posture is
     /// clear of the room (where the query checks it), of the first
-    /// `SCANNED` that the region and the approach admit.
+    /// `SCANNED` that the region and the approach admit; kept for the
+    /// task's next run where the query keeps its solves.
     fn sampled(&self, query: &ReachQuery<'_>) -> Vec<Candidate> {
+        let Some(solves) = query.solves else {
+            return self.sampled_here(query);
+        };
+        let face = self.face(&query.target_room_mm);
+        let mut h = DefaultHasher::new();
+        "sampled".hash(&mut h);
+        query.obstacles.is_some().hash(&mut h);
+        let target = query.target_room_mm.coords.iter();
+        hash_bits(target.chain(face.iter().flat_map(|f| f.iter())), &mut h);
+        face.is_some().hash(&mut h);
+        let sample = || {
+            let found = self.sampled_here(query).into_iter();
+            found
+                .map(|c| (c.pose, c.start.unwrap_or_default()))
+                .collect()
+        };
+        let placements = solves.placements(h.finish(), query.meter, sample);
+        (placements.into_iter())
+            .map(|(pose, q)| Candidate {
+                start: Some(q),
+                ..Candidate::at(pose)
+            })
+            .collect()
+    }
+
+    /// [`PreparedMobile::sampled`], sampled here.
+    fn sampled_here(&self, query: &ReachQuery<'_>) -> Vec<Candidate> {
         let target = &query.target_room_mm;
         let z_mm = target.z - self.mobile.hip_height_mm;
         let capability = &self.capability;

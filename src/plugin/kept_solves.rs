@@ -17,6 +17,11 @@
 //! would have charged and marked them, so the run's work and record are a
 //! fresh run's, and so is every answer.
 //!
+//! The placements a mobile base samples for a point (from its capability
+//! map, each posture checked against the room) are kept the same way: they
+//! depend on the point, the face it is on and the obstacles the checks
+//! touched, the floor being part of the task's key.
+//!
 //! The solves of one task are of one chain and one own body (a map's),
 //! which the key therefore leaves out.
 
@@ -25,18 +30,30 @@ use std::sync::{Arc, Mutex};
 
 use crate::collision::{recording_one, Touched};
 use crate::meter::{counting_one, Meter};
-use crate::scene::IkSolution;
+use crate::scene::{BasePose, IkSolution};
 
 /// The most solves kept for one task (about 300 bytes each): past it, no
 /// more are kept.
 const KEPT_MOST: usize = 1 << 17;
 
-/// One solve's answer, with what it touched and charged.
+/// What a kept computation found.
+#[derive(Debug)]
+enum Found {
+    /// A solve's posture (its collision is checked again where it is used).
+    Solve {
+        q: Vec<f64>,
+        distance_mm: f64,
+        iterations: u64,
+    },
+    /// The placements sampled for a point, each with its posture.
+    Placements(Vec<(BasePose, Vec<f64>)>),
+}
+
+/// One solve's answer (or one point's sampled placements), with what it
+/// touched and charged.
 #[derive(Debug)]
 pub struct KeptSolve {
-    q: Vec<f64>,
-    distance_mm: f64,
-    iterations: u64,
+    found: Found,
     /// The work it charged.
     units: u64,
     /// The obstacles its questions touched, by index.
@@ -114,34 +131,77 @@ impl KeptSolves {
     /// work charged to `meter`, its touches marked), else `solve` run
     /// here, recorded, and kept unless the run passed its limit.
     pub fn solve(&self, key: u64, meter: &Meter, solve: impl FnOnce() -> IkSolution) -> IkSolution {
+        let keep = |s: &IkSolution| Found::Solve {
+            q: s.q.clone(),
+            distance_mm: s.distance_mm,
+            iterations: s.iterations,
+        };
+        let take = |found: &Found| match found {
+            Found::Solve {
+                q,
+                distance_mm,
+                iterations,
+            } => Some(IkSolution {
+                q: q.clone(),
+                distance_mm: *distance_mm,
+                iterations: *iterations,
+                collision: None,
+            }),
+            Found::Placements(_) => None,
+        };
+        self.kept_or_made(key, meter, solve, keep, take)
+    }
+
+    /// The placements sampled for a point, by `key`: kept from the last
+    /// run where they hold, else sampled here by `sample`, as
+    /// [`KeptSolves::solve`].
+    pub fn placements(
+        &self,
+        key: u64,
+        meter: &Meter,
+        sample: impl FnOnce() -> Vec<(BasePose, Vec<f64>)>,
+    ) -> Vec<(BasePose, Vec<f64>)> {
+        let keep = |p: &Vec<(BasePose, Vec<f64>)>| Found::Placements(p.clone());
+        let take = |found: &Found| match found {
+            Found::Placements(p) => Some(p.clone()),
+            Found::Solve { .. } => None,
+        };
+        self.kept_or_made(key, meter, sample, keep, take)
+    }
+
+    /// What `make` makes, kept under `key` from the last run where that
+    /// holds (`take` reading it back), its work charged to `meter` and its
+    /// touches marked; else made here and kept (as `keep` writes it)
+    /// unless the run has passed its limit.
+    fn kept_or_made<T>(
+        &self,
+        key: u64,
+        meter: &Meter,
+        make: impl FnOnce() -> T,
+        keep: impl FnOnce(&T) -> Found,
+        take: impl FnOnce(&Found) -> Option<T>,
+    ) -> T {
         let held = self.earlier.as_ref().and_then(|e| e.holding(key));
         if let Some(kept) = held.filter(|_| !meter.exceeded()) {
-            meter.charge(kept.units);
-            for &i in kept.touched.iter() {
-                self.touched.mark(i as usize);
+            if let Some(made) = take(&kept.found) {
+                meter.charge(kept.units);
+                for &i in kept.touched.iter() {
+                    self.touched.mark(i as usize);
+                }
+                self.keep(key, Arc::clone(kept));
+                return made;
             }
-            let kept = Arc::clone(kept);
-            let solution = IkSolution {
-                q: kept.q.clone(),
-                distance_mm: kept.distance_mm,
-                iterations: kept.iterations,
-                collision: None,
-            };
-            self.keep(key, kept);
-            return solution;
         }
-        let ((solution, touched), units) = counting_one(|| recording_one(solve));
+        let ((made, touched), units) = counting_one(|| recording_one(make));
         if !meter.exceeded() {
             let kept = KeptSolve {
-                q: solution.q.clone(),
-                distance_mm: solution.distance_mm,
-                iterations: solution.iterations,
+                found: keep(&made),
                 units,
                 touched: touched.into_boxed_slice(),
             };
             self.keep(key, Arc::new(kept));
         }
-        solution
+        made
     }
 
     /// `kept` kept under `key` for the next run, while there is room.

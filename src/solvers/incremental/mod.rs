@@ -190,15 +190,27 @@ impl Plugin for Incremental {
 
 impl SolverPlugin for Incremental {
     fn build(&self, options: &Options) -> Result<Box<dyn Solver>, SettingsError> {
-        Ok(Box::new(IncrementalSolver {
-            settings: IncrementalSettings::from_options(options)?,
-        }))
+        Ok(Box::new(IncrementalSolver::new(
+            IncrementalSettings::from_options(options)?,
+        )))
     }
 }
 
 /// The configured solver.
 pub struct IncrementalSolver {
     pub settings: IncrementalSettings,
+    /// [`Solver::fingerprint`], worked out once.
+    fingerprint: u64,
+}
+
+impl IncrementalSolver {
+    /// The solver of `settings`.
+    pub fn new(settings: IncrementalSettings) -> Self {
+        IncrementalSolver {
+            settings,
+            fingerprint: fingerprint_of("incremental", &settings),
+        }
+    }
 }
 
 impl IncrementalSolver {
@@ -260,6 +272,6 @@ impl Solver for IncrementalSolver {
     }
 
     fn fingerprint(&self) -> Option<u64> {
-        Some(fingerprint_of("incremental", &self.settings))
+        Some(self.fingerprint)
     }
 }
