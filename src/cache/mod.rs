@@ -9,13 +9,17 @@
 //! obstacles its questions came near keeps its result, too, while the
 //! obstacles it touched stay as they were and the others move only a
 //! little (`touched.rs`): a shelf raised by a millimetre re-runs only the
-//! tasks whose arms came near it.
+//! tasks whose arms came near it. A task run again keeps, one by one, the
+//! solves of its last run that the change did not touch
+//! (`plugin::KeptSolves`). The results of the last few runs are kept by
+//! their full key too, so that an edit undone (a shelf tried higher, then
+//! put back) takes the answers from before it.
 
 mod key;
 mod reach;
 mod touched;
 
-use std::collections::HashMap;
+use std::collections::{HashMap, VecDeque};
 use std::sync::Arc;
 
 use crate::error::Error;
@@ -31,6 +35,9 @@ pub struct TaskCache {
     /// room's obstacles by distance (finding why), which may name an
     /// obstacle beyond the reach the key holds.
     results: HashMap<u64, (TaskReport, u64)>,
+    /// The results of the runs before the last, newest first (at most
+    /// [`GENERATIONS`]), by their full key.
+    older: VecDeque<HashMap<u64, (TaskReport, u64)>>,
     /// Results by the key of all but the obstacles, with what their
     /// questions touched.
     kept: HashMap<u64, touched::Kept>,
@@ -38,6 +45,10 @@ pub struct TaskCache {
     /// the person stay as they are.
     placements: key::Placements,
 }
+
+/// How many runs before the last keep their results by full key: an edit
+/// undone after up to this many saves takes its answers from before it.
+const GENERATIONS: usize = 3;
 
 /// How many tasks a cached run reused and how many it ran, and the work
 /// of all of them (the solver work a fresh run would count).
@@ -50,7 +61,8 @@ pub struct CacheStats {
 
 impl TaskCache {
     /// Run the scenario, reusing the results of tasks whose inputs have not
-    /// changed; afterwards the cache holds exactly this run's results. The
+    /// changed; afterwards the cache holds this run's results, and by full
+    /// key those of the [`GENERATIONS`] runs before it. The
     /// work of the results reused counts against the scenario's bound as
     /// if they had run: an error where a fresh run would stop too.
     pub fn run(
@@ -109,7 +121,11 @@ impl TaskCache {
         }
         let ran = stale.len();
         self.kept = kept;
-        self.results = results;
+        let last = std::mem::replace(&mut self.results, results);
+        if !last.is_empty() {
+            self.older.push_front(last);
+            self.older.truncate(GENERATIONS);
+        }
         let (report, standards) = scenario.report(tasks, work)?;
         let stats = CacheStats {
             reused: keys.len() - ran,
@@ -130,7 +146,8 @@ impl TaskCache {
     /// are `seen`, and its work: under its full key, or under the key of all but the
     /// obstacles where those it touched are as they were.
     fn held(&self, k: &key::TaskKey, seen: &[touched::Seen]) -> Option<(TaskReport, u64)> {
-        if let Some(answer) = self.results.get(&k.strict) {
+        let by_strict_key = std::iter::once(&self.results).chain(&self.older);
+        if let Some(answer) = by_strict_key.filter_map(|r| r.get(&k.strict)).next() {
             return Some(answer.clone());
         }
         let kept = self.kept.get(&k.loose?)?;
