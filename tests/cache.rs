@@ -363,6 +363,16 @@ fn a_why_that_names_a_far_obstacle_is_not_kept_when_it_is_renamed() {
         )
     };
     cached_equals_fresh(&[], &room("far_box"), &room("far_box2"));
+    // Named back, the answer from before the rename is taken (the whole
+    // room is as it was then), and names it as it was.
+    let mut cache = TaskCache::default();
+    for (name, runs) in [("far_box", 1), ("far_box2", 1), ("far_box", 0)] {
+        let scenario = checked(&room(name)).unwrap();
+        let (cached, stats) = cache.run(&scenario, &NoProgress).unwrap();
+        assert_eq!(stats.ran, runs, "named {name}");
+        let fresh = reach::run(&scenario).unwrap();
+        assert_eq!(json(&cached), json(&fresh), "named {name}");
+    }
 }
 
 /// A mesh whose triangle beside the target has no area (left out of its

@@ -19,7 +19,9 @@ mod key;
 mod reach;
 mod touched;
 
+use std::collections::hash_map::DefaultHasher;
 use std::collections::{HashMap, VecDeque};
+use std::hash::Hasher;
 use std::sync::Arc;
 
 use crate::error::Error;
@@ -31,20 +33,35 @@ use crate::scenario::{Scenario, TaskSpec};
 /// Results of earlier runs, by key.
 #[derive(Default)]
 pub struct TaskCache {
-    /// Results by their full key: all but those whose run ranked the
-    /// room's obstacles by distance (finding why), which may name an
-    /// obstacle beyond the reach the key holds.
-    results: HashMap<u64, (TaskReport, u64)>,
+    /// The last run's results.
+    last: Generation,
     /// The results of the runs before the last, newest first (at most
-    /// [`GENERATIONS`]), by their full key.
-    older: VecDeque<HashMap<u64, (TaskReport, u64)>>,
-    /// Results by the key of all but the obstacles, with what their
-    /// questions touched.
-    kept: HashMap<u64, touched::Kept>,
+    /// [`GENERATIONS`]).
+    older: VecDeque<Generation>,
     /// The placements each task's base may try, kept while the room and
     /// the person stay as they are.
     placements: key::Placements,
+    /// Those of the runs before the last, newest first (at most
+    /// [`GENERATIONS`]): an edit undone finds them again.
+    older_placements: VecDeque<key::Placements>,
 }
+
+/// The results of one run.
+#[derive(Default)]
+struct Generation {
+    /// Results by their full key; those whose run ranked the room's
+    /// obstacles by distance (finding why), which may name an obstacle
+    /// beyond the reach the key holds, by their full key and all of the
+    /// room's obstacles (`TaskKey::whole`).
+    results: HashMap<u64, (TaskReport, u64)>,
+    /// Results by the key of all but the obstacles, with what their
+    /// questions touched and their solves.
+    kept: HashMap<u64, Arc<touched::Kept>>,
+}
+
+/// A result kept, and its entry by the key of all but the obstacles (of
+/// the run that found it).
+type Held = ((TaskReport, u64), Option<Arc<touched::Kept>>);
 
 /// How many runs before the last keep their results by full key: an edit
 /// undone after up to this many saves takes its answers from before it.
@@ -70,10 +87,28 @@ impl TaskCache {
         scenario: &Scenario,
         progress: &dyn Progress,
     ) -> Result<(Report, CacheStats), Error> {
-        let keys = key::keys(scenario, &mut self.placements);
+        let mut known = self.placements.clone();
+        for older in &self.older_placements {
+            for (k, tried) in older {
+                known.entry(*k).or_insert_with(|| Arc::clone(tried));
+            }
+        }
+        let keys = key::keys(scenario, &mut known);
+        let previous = std::mem::replace(&mut self.placements, known);
+        self.older_placements.push_front(previous);
+        self.older_placements.truncate(GENERATIONS);
         let seen: Vec<Vec<touched::Seen>> = scenario.rooms.iter().map(touched::seen).collect();
-        let held: Vec<Option<(TaskReport, u64)>> = (scenario.tasks.iter().zip(&keys))
-            .map(|(task, k)| self.held(k, &seen[task.room]))
+        let rooms: Vec<u64> = seen.iter().map(|s| touched::hash_seen(s)).collect();
+        let whole: Vec<u64> = (scenario.tasks.iter().zip(&keys))
+            .map(|(task, k)| {
+                let mut h = DefaultHasher::new();
+                h.write_u64(k.strict);
+                h.write_u64(rooms[task.room]);
+                h.finish()
+            })
+            .collect();
+        let held: Vec<Option<Held>> = (scenario.tasks.iter().zip(&keys).zip(&whole))
+            .map(|((task, k), &whole)| self.held(k, whole, &seen[task.room]))
             .collect();
         let stale: Vec<(&TaskSpec, &key::TaskKey)> = (scenario.tasks.iter().zip(&keys).zip(&held))
             .filter(|(_, h)| h.is_none())
@@ -84,7 +119,7 @@ impl TaskCache {
             .map(|(task, k)| self.earlier(k, &seen[task.room]))
             .collect();
         let stale: Vec<&TaskSpec> = stale.into_iter().map(|(task, _)| task).collect();
-        let reused_work = held.iter().flatten().map(|(_, w)| *w).sum();
+        let reused_work = held.iter().flatten().map(|((_, w), _)| *w).sum();
         let mut ran_now = scenario
             .run_tasks_recording(&stale, progress, reused_work, &earlier)?
             .into_iter();
@@ -92,12 +127,13 @@ impl TaskCache {
         let mut results = HashMap::new();
         let mut tasks = Vec::with_capacity(keys.len());
         let mut work = 0;
-        for ((task, k), held) in scenario.tasks.iter().zip(&keys).zip(held) {
+        for (((task, k), held), &whole) in scenario.tasks.iter().zip(&keys).zip(held).zip(&whole) {
             let (answer, by_strict_key) = match held {
-                Some(answer) => {
-                    let old = k.loose.and_then(|l| self.kept.remove(&l).map(|e| (l, e)));
-                    let ranked = old.as_ref().is_some_and(|(_, e)| e.ranked());
-                    kept.extend(old);
+                Some((answer, entry)) => {
+                    let ranked = entry.as_ref().is_some_and(|e| e.ranked());
+                    if let (Some(l), Some(entry)) = (k.loose, entry) {
+                        kept.insert(l, entry);
+                    }
                     (answer, !ranked)
                 }
                 None => {
@@ -108,21 +144,19 @@ impl TaskCache {
                         let room = seen[task.room].clone();
                         let solves = Arc::new(ran.solves.unwrap_or_default());
                         let entry = touched::Kept::new(answer.clone(), set, room, k.points, solves);
-                        kept.insert(l, entry);
+                        kept.insert(l, Arc::new(entry));
                     }
                     (answer, !ranked)
                 }
             };
-            if by_strict_key {
-                results.insert(k.strict, answer.clone());
-            }
+            let key = if by_strict_key { k.strict } else { whole };
+            results.insert(key, answer.clone());
             work += answer.1;
             tasks.push(answer.0);
         }
         let ran = stale.len();
-        self.kept = kept;
-        let last = std::mem::replace(&mut self.results, results);
-        if !last.is_empty() {
+        let last = std::mem::replace(&mut self.last, Generation { results, kept });
+        if !last.results.is_empty() || !last.kept.is_empty() {
             self.older.push_front(last);
             self.older.truncate(GENERATIONS);
         }
@@ -139,18 +173,26 @@ impl TaskCache {
     /// all but the obstacles the same) that its run in a room whose
     /// obstacles are `seen` may take (`plugin::KeptSolves`).
     fn earlier(&self, k: &key::TaskKey, seen: &[touched::Seen]) -> Option<Earlier> {
-        self.kept.get(&k.loose?)?.earlier(seen)
+        self.last.kept.get(&k.loose?)?.earlier(seen)
     }
 
     /// The result kept for a task of keys `k` in a room whose obstacles
-    /// are `seen`, and its work: under its full key, or under the key of all but the
-    /// obstacles where those it touched are as they were.
-    fn held(&self, k: &key::TaskKey, seen: &[touched::Seen]) -> Option<(TaskReport, u64)> {
-        let by_strict_key = std::iter::once(&self.results).chain(&self.older);
-        if let Some(answer) = by_strict_key.filter_map(|r| r.get(&k.strict)).next() {
-            return Some(answer.clone());
+    /// are `seen`, and its work, with its entry by the key of all but the
+    /// obstacles: under its full key (or that and the whole room's
+    /// obstacles, `whole`) in the last run or one before it (with that
+    /// run's entry), or under the key of all but the obstacles where those
+    /// it touched are as they were.
+    fn held(&self, k: &key::TaskKey, whole: u64, seen: &[touched::Seen]) -> Option<Held> {
+        for generation in std::iter::once(&self.last).chain(&self.older) {
+            let found =
+                (generation.results.get(&k.strict)).or_else(|| generation.results.get(&whole));
+            if let Some(answer) = found {
+                let entry = k.loose.and_then(|l| generation.kept.get(&l).cloned());
+                return Some((answer.clone(), entry));
+            }
         }
-        let kept = self.kept.get(&k.loose?)?;
-        kept.holds(seen).then(|| (kept.report.clone(), kept.work))
+        let kept = self.last.kept.get(&k.loose?)?;
+        let answer = || (kept.report.clone(), kept.work);
+        kept.holds(seen).then(|| (answer(), Some(Arc::clone(kept))))
     }
 }

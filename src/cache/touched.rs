@@ -17,7 +17,7 @@ use nalgebra::Point3;
 
 use crate::bases::ON_FACE_MM;
 use crate::collision::{bounds_meet, bounds_within, obstacle_bounds, TouchedSet, TOUCH_MARGIN_MM};
-use crate::plugin::{Earlier, SolveMap};
+use crate::plugin::{Changed, Earlier, SolveMap};
 use crate::report::TaskReport;
 use crate::scene::Room;
 
@@ -29,6 +29,17 @@ pub(super) struct Seen {
     bounds: Option<[Point3<f64>; 2]>,
     /// A hash of it by value, name included.
     value: u64,
+}
+
+/// A hash of the room's obstacles as `seen`, each by value, names
+/// included.
+pub(super) fn hash_seen(seen: &[Seen]) -> u64 {
+    let mut h = DefaultHasher::new();
+    for s in seen {
+        h.write_u64(s.value);
+    }
+    h.write_usize(seen.len());
+    h.finish()
 }
 
 /// The room's obstacles (the boxes, then the meshes) as seen now.
@@ -109,21 +120,22 @@ impl Kept {
     }
 
     /// The solves of its run that a run of the task in a room (of the
-    /// same key) whose obstacles are `now` may take: each where the
-    /// obstacles it touched are as they were. None where an obstacle
-    /// changed beyond its old bounds grown by the margin, which a solve
-    /// that did not touch it may now meet, or where obstacles were added
-    /// or taken away.
+    /// same key) whose obstacles are `now` may take, with the obstacles
+    /// changed since (`plugin::KeptSolves` works out which solves hold).
+    /// None where obstacles were added or taken away.
     pub fn earlier(&self, now: &[Seen]) -> Option<Earlier> {
         if self.seen.len() != now.len() || self.solves.is_empty() {
             return None;
         }
-        let changed: Vec<usize> = (self.seen.iter().zip(now).enumerate())
+        let changed = (self.seen.iter().zip(now).enumerate())
             .filter(|(_, (was, is))| was.value != is.value)
-            .map(|(i, _)| i)
+            .map(|(index, (was, is))| Changed {
+                index,
+                bounds_mm: is.bounds,
+                near: stays_near(was, is),
+            })
             .collect();
-        let near = changed.iter().all(|&i| stays_near(&self.seen[i], &now[i]));
-        near.then(|| Earlier::new(Arc::clone(&self.solves), changed))
+        Some(Earlier::new(Arc::clone(&self.solves), changed))
     }
 }
 

@@ -16,7 +16,7 @@ pub use beyond::{OutOfReach, Verdict};
 pub use kept_proofs::KeptProofs;
 pub use placed::PlacedObstacles;
 pub use touched::{
-    bounds_meet, bounds_within, recording_one, Touched, TouchedSet, TOUCH_MARGIN_MM,
+    bounds_meet, bounds_within, recording_one, OneRecord, Touched, TouchedSet, TOUCH_MARGIN_MM,
 };
 
 use std::cell::Cell;
@@ -168,7 +168,7 @@ impl Obstacles {
         let Some(touched) = &self.touched else {
             return;
         };
-        if touched.is_marked(index) || !bounds_meet(bounds, asked, TOUCH_MARGIN_MM) {
+        if !touched.needs(index, asked) || !bounds_meet(bounds, asked, TOUCH_MARGIN_MM) {
             return;
         }
         let (a, b, r_mm) = segment;

@@ -79,15 +79,23 @@ impl Touched {
         }
     }
 
-    /// Whether obstacle `index` is touched already, in the task's record
-    /// and in the record of the solve running on this thread, if any
-    /// (then a question need not work out whether it comes near it).
-    pub fn is_marked(&self, index: usize) -> bool {
-        scope_marked(index) && self.marked_for_task(index)
+    /// Whether a question whose bounds are `asked_mm` must work out
+    /// whether it comes near obstacle `index`: the obstacle is not marked
+    /// yet in the task's record, or in the record of the solve running on
+    /// this thread, if one is being made (which takes in `asked_mm`).
+    pub fn needs(&self, index: usize, asked_mm: &[Point3<f64>; 2]) -> bool {
+        let solve_lacks = SCOPE.with(|s| match s.borrow_mut().as_mut() {
+            Some(scope) => {
+                scope.take_asked(asked_mm);
+                !scope.has(index)
+            }
+            None => false,
+        });
+        solve_lacks || !self.is_marked(index)
     }
 
     /// Whether obstacle `index` is touched already in the task's record.
-    fn marked_for_task(&self, index: usize) -> bool {
+    pub fn is_marked(&self, index: usize) -> bool {
         self.all.load(Ordering::Relaxed)
             || self
                 .words
@@ -143,58 +151,90 @@ impl TouchedSet {
     }
 }
 
+/// What one solve's questions came to ([`recording_one`]).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct OneRecord {
+    /// The obstacles they touched, by index, in order.
+    pub touched: Vec<u32>,
+    /// The bounds of every question put to an obstacle, together (none:
+    /// no question was): an obstacle whose bounds grown by the margin miss
+    /// them was touched by none of the questions, wherever it is.
+    pub asked_mm: Option<[Point3<f64>; 2]>,
+}
+
+/// The record being made of the solve running on a thread.
+#[derive(Default)]
+struct Scope {
+    words: Vec<u64>,
+    asked_mm: Option<[Point3<f64>; 2]>,
+}
+
+impl Scope {
+    fn mark(&mut self, index: usize) {
+        if self.words.len() <= index / 64 {
+            self.words.resize(index / 64 + 1, 0);
+        }
+        self.words[index / 64] |= 1u64 << (index % 64);
+    }
+
+    fn has(&self, index: usize) -> bool {
+        (self.words.get(index / 64)).is_some_and(|w| w & (1u64 << (index % 64)) != 0)
+    }
+
+    fn take_asked(&mut self, asked: &[Point3<f64>; 2]) {
+        self.asked_mm = Some(match self.asked_mm {
+            Some([lo, hi]) => [lo.inf(&asked[0]), hi.sup(&asked[1])],
+            None => *asked,
+        });
+    }
+}
+
 thread_local! {
-    /// The obstacles touched by the solve running on this thread, by
-    /// index, where one is being recorded ([`recording_one`]).
-    static SCOPE: RefCell<Option<Vec<u64>>> = const { RefCell::new(None) };
+    /// The record of the solve running on this thread, where one is
+    /// being made ([`recording_one`]).
+    static SCOPE: RefCell<Option<Scope>> = const { RefCell::new(None) };
 }
 
 /// `work` run on this thread with a record of its own of the obstacles
-/// its questions touch (the task's record is kept as well): its result,
-/// and the indices of those obstacles, in order. `work` must not hand
-/// work to other threads (a solve does not). A record already being made
-/// on this thread is set aside while `work` runs, and takes its marks
-/// too.
-pub fn recording_one<R>(work: impl FnOnce() -> R) -> (R, Vec<u32>) {
-    let outer = SCOPE.with(|s| s.borrow_mut().replace(Vec::new()));
+/// its questions touch and of where they asked (the task's record is kept
+/// as well): its result and that record. `work` must not hand work to
+/// other threads (a solve does not). A record already being made on this
+/// thread is set aside while `work` runs, and takes this one in too.
+pub fn recording_one<R>(work: impl FnOnce() -> R) -> (R, OneRecord) {
+    let outer = SCOPE.with(|s| s.borrow_mut().replace(Scope::default()));
     let result = work();
-    let words = SCOPE.with(|s| std::mem::replace(&mut *s.borrow_mut(), outer));
-    let indices: Vec<u32> = (words.into_iter().flatten().enumerate())
-        .flat_map(|(w, word)| {
+    let scope = SCOPE.with(|s| std::mem::replace(&mut *s.borrow_mut(), outer));
+    let scope = scope.unwrap_or_default();
+    let touched: Vec<u32> = (scope.words.iter().enumerate())
+        .flat_map(|(w, &word)| {
             (0..64u32)
                 .filter(move |b| word & (1u64 << b) != 0)
                 .map(move |b| w as u32 * 64 + b)
         })
         .collect();
-    for &i in &indices {
-        mark_in_scope(i as usize);
-    }
-    (result, indices)
+    let record = OneRecord {
+        touched,
+        asked_mm: scope.asked_mm,
+    };
+    SCOPE.with(|s| {
+        if let Some(outer) = s.borrow_mut().as_mut() {
+            record.touched.iter().for_each(|&i| outer.mark(i as usize));
+            if let Some(asked) = &record.asked_mm {
+                outer.take_asked(asked);
+            }
+        }
+    });
+    (result, record)
 }
 
 /// Obstacle `index` marked in the record of the solve running on this
 /// thread, if one is being made.
 fn mark_in_scope(index: usize) {
     SCOPE.with(|s| {
-        if let Some(words) = s.borrow_mut().as_mut() {
-            if words.len() <= index / 64 {
-                words.resize(index / 64 + 1, 0);
-            }
-            words[index / 64] |= 1u64 << (index % 64);
+        if let Some(scope) = s.borrow_mut().as_mut() {
+            scope.mark(index);
         }
     });
-}
-
-/// Whether obstacle `index` is marked in this thread's solve's record
-/// (true where none is being made).
-fn scope_marked(index: usize) -> bool {
-    SCOPE.with(|s| {
-        s.borrow().as_ref().is_none_or(|words| {
-            words
-                .get(index / 64)
-                .is_some_and(|w| w & (1u64 << (index % 64)) != 0)
-        })
-    })
 }
 
 /// Whether the bounds `a` and `b` meet once `a` is grown by `grow_mm` on

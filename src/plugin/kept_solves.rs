@@ -10,12 +10,16 @@
 //! The task's next run, after an edit that left its key of all but the
 //! obstacles as it was but moved an obstacle it touched (`cache`), takes a
 //! kept solve's answer where none of the obstacles that solve touched
-//! changed, and every obstacle that changed stays within its old bounds
-//! grown by the margin (the caller gives no earlier solves otherwise):
-//! every question the solve put then gets the answer it got, so it is the
-//! same solve. Its work is charged and its touches marked as the solve
-//! would have charged and marked them, so the run's work and record are a
-//! fresh run's, and so is every answer.
+//! changed, and each obstacle that changed either stays within its old
+//! bounds grown by the margin or, grown by the margin, misses the bounds
+//! of all the solve's questions together: every question the solve put
+//! then gets the answer it got, so it is the same solve. Its work is
+//! charged and its touches marked as the solve would have charged them,
+//! so the run's work is a fresh run's, and so is every answer. A changed
+//! obstacle that stayed near and meets those bounds may now be within the
+//! margin of a question: the solve, kept again, counts it as touched (and
+//! so does the task's record), so that it is not taken again once that
+//! obstacle moves on.
 //!
 //! The placements a mobile base samples for a point (from its capability
 //! map, each posture checked against the room) are kept the same way: they
@@ -28,7 +32,9 @@
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
-use crate::collision::{recording_one, Touched};
+use nalgebra::Point3;
+
+use crate::collision::{bounds_meet, recording_one, Touched, TOUCH_MARGIN_MM};
 use crate::meter::{counting_one, Meter};
 use crate::scene::{BasePose, IkSolution};
 
@@ -51,54 +57,78 @@ enum Found {
 
 /// One solve's answer (or one point's sampled placements), with what it
 /// touched and charged.
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub struct KeptSolve {
-    found: Found,
+    found: Arc<Found>,
     /// The work it charged.
     units: u64,
-    /// The obstacles its questions touched, by index.
+    /// The obstacles its questions touched, by index, in order.
     touched: Box<[u32]>,
+    /// The bounds of all its questions together (none: it put none).
+    asked_mm: Option<[Point3<f64>; 2]>,
 }
 
 /// Kept solves by their key.
-pub type SolveMap = HashMap<u64, Arc<KeptSolve>>;
+pub type SolveMap = HashMap<u64, KeptSolve>;
 
-/// The solves of a task's last run, and which of the room's obstacles
-/// have changed since.
+/// One of the room's obstacles that changed since a task's last run.
+#[derive(Clone, Debug)]
+pub struct Changed {
+    pub index: usize,
+    /// Its bounds now, as the collision checks hold them (none: a mesh
+    /// with no solid).
+    pub bounds_mm: Option<[Point3<f64>; 2]>,
+    /// Whether it stays within its old bounds grown by the margin.
+    pub near: bool,
+}
+
+/// The solves of a task's last run, and the room's obstacles that have
+/// changed since.
 #[derive(Clone)]
 pub struct Earlier {
     solves: Arc<SolveMap>,
-    /// The obstacles changed, as bits by index.
-    changed: Vec<u64>,
+    changed: Vec<Changed>,
 }
 
 impl Earlier {
-    /// `solves`, in a room whose obstacles `changed` (by index) changed
-    /// since, each staying within its old bounds grown by the margin.
-    pub fn new(solves: Arc<SolveMap>, changed: impl IntoIterator<Item = usize>) -> Self {
-        let mut bits = Vec::new();
-        for i in changed {
-            if bits.len() <= i / 64 {
-                bits.resize(i / 64 + 1, 0u64);
-            }
-            bits[i / 64] |= 1u64 << (i % 64);
-        }
-        Earlier {
-            solves,
-            changed: bits,
-        }
+    /// `solves`, in a room whose obstacles `changed` since.
+    pub fn new(solves: Arc<SolveMap>, changed: Vec<Changed>) -> Self {
+        Earlier { solves, changed }
     }
 
-    /// The kept solve of `key`, if none of what it touched changed.
-    fn holding(&self, key: u64) -> Option<&Arc<KeptSolve>> {
+    /// The kept solve of `key` where it holds, with the obstacles it now
+    /// counts as touched: none of those it touched changed, and each that
+    /// changed misses its questions' bounds or stayed near (then it counts
+    /// as touched).
+    fn holding(&self, key: u64) -> Option<KeptSolve> {
         let kept = self.solves.get(&key)?;
-        let changed = |i: u32| {
-            let i = i as usize;
-            self.changed
-                .get(i / 64)
-                .is_some_and(|w| w & (1u64 << (i % 64)) != 0)
-        };
-        (!kept.touched.iter().any(|&i| changed(i))).then_some(kept)
+        let mut near_now = Vec::new();
+        for c in &self.changed {
+            if kept.touched.contains(&(c.index as u32)) {
+                return None;
+            }
+            let meets = match (&c.bounds_mm, &kept.asked_mm) {
+                (_, None) => false,
+                (None, Some(_)) => true,
+                (Some(b), Some(a)) => bounds_meet(b, a, TOUCH_MARGIN_MM),
+            };
+            match (meets, c.near) {
+                (false, _) => {}
+                (true, true) => near_now.push(c.index as u32),
+                (true, false) => return None,
+            }
+        }
+        if near_now.is_empty() {
+            return Some(kept.clone());
+        }
+        let mut touched = kept.touched.to_vec();
+        touched.extend(near_now);
+        touched.sort_unstable();
+        touched.dedup();
+        Some(KeptSolve {
+            touched: touched.into_boxed_slice(),
+            ..kept.clone()
+        })
     }
 }
 
@@ -188,24 +218,25 @@ impl KeptSolves {
                 for &i in kept.touched.iter() {
                     self.touched.mark(i as usize);
                 }
-                self.keep(key, Arc::clone(kept));
+                self.keep(key, kept);
                 return made;
             }
         }
-        let ((made, touched), units) = counting_one(|| recording_one(make));
+        let ((made, record), units) = counting_one(|| recording_one(make));
         if !meter.exceeded() {
             let kept = KeptSolve {
-                found: keep(&made),
+                found: Arc::new(keep(&made)),
                 units,
-                touched: touched.into_boxed_slice(),
+                touched: record.touched.into_boxed_slice(),
+                asked_mm: record.asked_mm,
             };
-            self.keep(key, Arc::new(kept));
+            self.keep(key, kept);
         }
         made
     }
 
     /// `kept` kept under `key` for the next run, while there is room.
-    fn keep(&self, key: u64, kept: Arc<KeptSolve>) {
+    fn keep(&self, key: u64, kept: KeptSolve) {
         let mut now = self.now.lock().unwrap_or_else(|e| e.into_inner());
         if now.len() < KEPT_MOST {
             now.insert(key, kept);
