@@ -157,6 +157,16 @@ impl Obstacles {
         }
     }
 
+    /// A question whose bounds are `asked` is put to the obstacles (where
+    /// the questions are recorded, the record of the solve being made
+    /// takes them in: `touched.rs`).
+    #[inline]
+    fn ask(&self, asked: &[Point3<f64>; 2]) {
+        if let Some(touched) = &self.touched {
+            touched.asked(asked);
+        }
+    }
+
     /// [`Obstacles::note`] where the questions are recorded.
     fn note_recorded(
         &self,
@@ -168,7 +178,7 @@ impl Obstacles {
         let Some(touched) = &self.touched else {
             return;
         };
-        if !touched.needs(index, asked) || !bounds_meet(bounds, asked, TOUCH_MARGIN_MM) {
+        if !bounds_meet(bounds, asked, TOUCH_MARGIN_MM) || !touched.needs(index) {
             return;
         }
         let (a, b, r_mm) = segment;
@@ -254,6 +264,7 @@ impl Obstacles {
                 .all(|i| chi[i] + self.clearance_mm >= lo[i] && clo[i] - self.clearance_mm <= hi[i])
         };
         let touches = |d: f64| d < r.max(1e-9);
+        self.ask(&asked);
         for (i, (_, cuboid, bounds)) in self.boxes.iter().enumerate() {
             self.note(i, bounds, segment, &asked);
             if reach(bounds)
@@ -285,6 +296,7 @@ impl Obstacles {
                 .all(|i| chi[i] + self.clearance_mm >= lo[i] && clo[i] - self.clearance_mm <= hi[i])
         };
         let touches = move |d: f64| d < r.max(1e-9);
+        self.ask(&asked);
         let boxes = self
             .boxes
             .iter()
@@ -354,6 +366,7 @@ impl Obstacles {
         let max = 1.0 - end_gap_mm / length;
         let end = eye + (target - eye) * max;
         let asked = [eye.inf(&end), eye.sup(&end)];
+        self.ask(&asked);
         // A segment whose bounds miss an obstacle's cannot meet it.
         let near = |i: usize, bounds: &[Point3<f64>; 2]| {
             self.note(i, bounds, (eye, &end, 0.0), &asked);

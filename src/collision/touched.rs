@@ -79,18 +79,23 @@ impl Touched {
         }
     }
 
-    /// Whether a question whose bounds are `asked_mm` must work out
-    /// whether it comes near obstacle `index`: the obstacle is not marked
-    /// yet in the task's record, or in the record of the solve running on
-    /// this thread, if one is being made (which takes in `asked_mm`).
-    pub fn needs(&self, index: usize, asked_mm: &[Point3<f64>; 2]) -> bool {
-        let solve_lacks = SCOPE.with(|s| match s.borrow_mut().as_mut() {
-            Some(scope) => {
+    /// A question whose bounds are `asked_mm` is put to the obstacles:
+    /// the record of the solve running on this thread, if one is being
+    /// made, takes them in.
+    pub fn asked(&self, asked_mm: &[Point3<f64>; 2]) {
+        SCOPE.with(|s| {
+            if let Some(scope) = s.borrow_mut().as_mut() {
                 scope.take_asked(asked_mm);
-                !scope.has(index)
             }
-            None => false,
         });
+    }
+
+    /// Whether a question must work out whether it comes near obstacle
+    /// `index`: the obstacle is not marked yet in the task's record, or in
+    /// the record of the solve running on this thread, if one is being
+    /// made.
+    pub fn needs(&self, index: usize) -> bool {
+        let solve_lacks = SCOPE.with(|s| s.borrow().as_ref().is_some_and(|s| !s.has(index)));
         solve_lacks || !self.is_marked(index)
     }
 
