@@ -362,6 +362,31 @@ mod tests {
     use super::*;
 
     #[test]
+    fn one_solve_counts_what_it_charges_and_the_count_around_it_takes_it_in() {
+        let run = RunWork::new(u64::MAX);
+        let meter = Meter::of(&run);
+        let account = meter.account();
+        meter.charge(5);
+        let ((_, inner), outer) = counting_one(|| {
+            meter.charge(3);
+            counting_one(|| {
+                account.charge(7);
+                let mut tally = meter.tally();
+                tally.add(11);
+            })
+        });
+        assert_eq!(
+            inner, 18,
+            "the account's charge and the tally's, told when dropped"
+        );
+        assert_eq!(outer, 21);
+        assert_eq!(meter.spent(), 26);
+        // Charges on another thread are not this thread's solve's.
+        let (_, none) = counting_one(|| std::thread::scope(|s| _ = s.spawn(|| meter.charge(2))));
+        assert_eq!(none, 0);
+    }
+
+    #[test]
     fn work_in_flight_counts_with_what_is_spent_and_once_for_each_key() {
         let run = RunWork::new(100);
         let (a, b) = (Meter::of(&run), Meter::of(&run));

@@ -270,6 +270,32 @@ mod tests {
     }
 
     #[test]
+    fn one_solve_keeps_its_own_record_and_the_record_around_it_takes_it_in() {
+        let touched = Touched::new(200);
+        touched.mark(3);
+        let at = |x: f64| [Point3::new(x, 0.0, 0.0), Point3::new(x + 1.0, 1.0, 1.0)];
+        let ((_, inner), outer) = recording_one(|| {
+            // Marked for the task already, but not for this solve.
+            assert!(touched.needs(3));
+            touched.mark(3);
+            assert!(!touched.needs(3));
+            touched.asked(&at(0.0));
+            recording_one(|| {
+                touched.mark(130);
+                touched.asked(&at(10.0));
+            })
+        });
+        assert_eq!(inner.touched, vec![130]);
+        assert_eq!(inner.asked_mm, Some(at(10.0)));
+        assert_eq!(outer.touched, vec![3, 130]);
+        let [lo, hi] = outer.asked_mm.unwrap();
+        assert_eq!((lo.x, hi.x), (0.0, 11.0));
+        assert!(touched.set().contains(130));
+        // Outside a solve's record only the task's counts.
+        assert!(!touched.needs(3) && touched.needs(4));
+    }
+
+    #[test]
     fn grown_bounds_meet_and_hold() {
         let b = [Point3::new(0.0, 0.0, 0.0), Point3::new(10.0, 10.0, 10.0)];
         let near = [Point3::new(13.0, 0.0, 0.0), Point3::new(20.0, 5.0, 5.0)];

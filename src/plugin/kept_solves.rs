@@ -243,3 +243,55 @@ impl KeptSolves {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cube(x: f64) -> [Point3<f64>; 2] {
+        [
+            Point3::new(x, 0.0, 0.0),
+            Point3::new(x + 100.0, 100.0, 100.0),
+        ]
+    }
+
+    /// A solve that touched obstacle 0 and asked within the cube at 0.
+    fn kept() -> Arc<SolveMap> {
+        let solve = KeptSolve {
+            found: Arc::new(Found::Placements(Vec::new())),
+            units: 9,
+            touched: vec![0].into_boxed_slice(),
+            asked_mm: Some(cube(0.0)),
+        };
+        Arc::new(HashMap::from([(1, solve)]))
+    }
+
+    fn changed(index: usize, x: f64, near: bool) -> Changed {
+        Changed {
+            index,
+            bounds_mm: Some(cube(x)),
+            near,
+        }
+    }
+
+    #[test]
+    fn a_solve_holds_while_what_changed_missed_its_questions() {
+        let holding = |c: Vec<Changed>| Earlier::new(kept(), c).holding(1).map(|k| k.touched);
+        // What it touched changed.
+        assert_eq!(holding(vec![changed(0, 0.0, true)]), None);
+        // Far from where it asked, however far it moved.
+        assert_eq!(
+            holding(vec![changed(1, 500.0, false)]),
+            Some(vec![0].into())
+        );
+        // Moved far into where it asked.
+        assert_eq!(holding(vec![changed(1, 50.0, false)]), None);
+        // Moved a little where it asked: it holds, and counts as touched.
+        assert_eq!(
+            holding(vec![changed(1, 50.0, true)]),
+            Some(vec![0, 1].into())
+        );
+        // Another key.
+        assert!(Earlier::new(kept(), Vec::new()).holding(2).is_none());
+    }
+}
