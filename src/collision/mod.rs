@@ -214,6 +214,24 @@ impl Obstacles {
         rest
     }
 
+    /// Which of the room's obstacles and sides these are, hashed (not
+    /// where they are: what a kept solve depends on of them is recorded
+    /// as it asks, `touched.rs`): the room's all, or some left out
+    /// ([`Obstacles::without`], [`Obstacles::none_of`]), and the
+    /// clearance asked.
+    pub fn variant(&self) -> u64 {
+        use std::hash::{Hash, Hasher};
+        let mut h = std::collections::hash_map::DefaultHasher::new();
+        let removed = (self.boxes.iter().enumerate()).filter(|(_, (_, _, [lo, hi]))| lo.x > hi.x);
+        removed.for_each(|(i, _)| i.hash(&mut h));
+        self.boxes.len().hash(&mut h);
+        self.meshes.iter().for_each(|m| m.index.hash(&mut h));
+        self.meshes.len().hash(&mut h);
+        self.walls.hash(&mut h);
+        self.clearance_mm.to_bits().hash(&mut h);
+        h.finish()
+    }
+
     /// None of the room's obstacles or sides, in a room of this size.
     pub fn none_of(&self) -> Obstacles {
         Obstacles {

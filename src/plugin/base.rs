@@ -8,7 +8,7 @@ use std::hash::{Hash, Hasher};
 
 use nalgebra::{Point3, Vector2};
 
-use super::{Descents, IkProblem, KeptSolves, Options, Plugin, SettingsError, Solver};
+use super::{Descents, IkProblem, Options, Plugin, SettingsError, Solver, SolvesFor};
 use crate::collision::{KeptProofs, Obstacles, PlacedObstacles};
 use geo::MultiPolygon;
 
@@ -58,8 +58,9 @@ pub struct ReachQuery<'a> {
     /// What the solves tell their work to.
     pub meter: &'a Meter,
     /// Where the solves are kept for the task's next run, and taken from
-    /// its last (watch mode; a map's solves, of one chain and own body).
-    pub solves: Option<&'a KeptSolves>,
+    /// its last (watch mode), as this search's chain, obstacles and own
+    /// body ask for them ([`crate::plugin::KeptSolves::of`]).
+    pub solves: Option<SolvesFor<'a>>,
 }
 
 /// The key a solve of `problem` at `pose` by `solver` from `start` (none:

@@ -26,16 +26,20 @@
 //! depend on the point, the face it is on and the obstacles the checks
 //! touched, the floor being part of the task's key.
 //!
-//! The solves of one task are of one chain and one own body (a map's),
-//! which the key therefore leaves out.
+//! A task's searches may differ in their chain, obstacles and own body
+//! (finding why searches again with limits widened, without an obstacle
+//! or a part of the body): each search asks through [`SolvesFor`], whose
+//! variant, a hash of those three, is part of every key.
 
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};
 
 use nalgebra::Point3;
 
-use crate::collision::{bounds_meet, recording_one, Touched, TOUCH_MARGIN_MM};
+use crate::collision::{bounds_meet, recording_one, Obstacles, Touched, TOUCH_MARGIN_MM};
+use crate::kinematics::Chain;
 use crate::meter::{counting_one, Meter};
+use crate::scene::OwnBody;
 use crate::scene::{BasePose, IkSolution};
 
 /// The most solves kept for one task (about 300 bytes each): past it, no
@@ -132,6 +136,55 @@ impl Earlier {
     }
 }
 
+/// A task run's kept solves, as one of its searches asks for them: by
+/// its chain, obstacles and own body (`variant`).
+#[derive(Clone, Copy)]
+pub struct SolvesFor<'a> {
+    kept: &'a KeptSolves,
+    variant: u64,
+    /// Whether the placements a mobile base samples are kept too (for the
+    /// base as the task prepares it; not where a search prepares it in
+    /// another room or without its zone).
+    placements: bool,
+}
+
+impl SolvesFor<'_> {
+    /// The same, but the sampled placements are not kept: the search
+    /// prepares the base otherwise than the task.
+    pub fn without_placements(self) -> Self {
+        SolvesFor {
+            placements: false,
+            ..self
+        }
+    }
+
+    /// [`KeptSolves::solve`] for this variant.
+    pub fn solve(&self, key: u64, meter: &Meter, solve: impl FnOnce() -> IkSolution) -> IkSolution {
+        self.kept.solve(self.key(key), meter, solve)
+    }
+
+    /// [`KeptSolves::placements`] for this variant, where placements are
+    /// kept; else sampled here.
+    pub fn placements(
+        &self,
+        key: u64,
+        meter: &Meter,
+        sample: impl FnOnce() -> Vec<(BasePose, Vec<f64>)>,
+    ) -> Vec<(BasePose, Vec<f64>)> {
+        match self.placements {
+            true => self.kept.placements(self.key(key), meter, sample),
+            false => sample(),
+        }
+    }
+
+    fn key(&self, key: u64) -> u64 {
+        let mut h = std::collections::hash_map::DefaultHasher::new();
+        std::hash::Hasher::write_u64(&mut h, key);
+        std::hash::Hasher::write_u64(&mut h, self.variant);
+        std::hash::Hasher::finish(&h)
+    }
+}
+
 /// One task run's solves: those it may take from its last run, and those
 /// it makes (or takes), kept for the next.
 pub struct KeptSolves {
@@ -152,6 +205,20 @@ impl KeptSolves {
         }
     }
 
+    /// These solves as a search by `chain` among `obstacles` (none: not
+    /// checked) with `own` asks for them.
+    pub fn of(&self, chain: &Chain, obstacles: Option<&Obstacles>, own: &OwnBody) -> SolvesFor<'_> {
+        let variant = crate::plugin::fingerprint_of(
+            "search",
+            &(chain, obstacles.map(Obstacles::variant), own),
+        );
+        SolvesFor {
+            kept: self,
+            variant,
+            placements: true,
+        }
+    }
+
     /// The solves of this run, for the next.
     pub fn into_map(self) -> SolveMap {
         self.now.into_inner().unwrap_or_else(|e| e.into_inner())
@@ -160,7 +227,7 @@ impl KeptSolves {
     /// The solve of `key`: kept from the last run where it holds (its
     /// work charged to `meter`, its touches marked), else `solve` run
     /// here, recorded, and kept unless the run passed its limit.
-    pub fn solve(&self, key: u64, meter: &Meter, solve: impl FnOnce() -> IkSolution) -> IkSolution {
+    fn solve(&self, key: u64, meter: &Meter, solve: impl FnOnce() -> IkSolution) -> IkSolution {
         let keep = |s: &IkSolution| Found::Solve {
             q: s.q.clone(),
             distance_mm: s.distance_mm,
@@ -185,7 +252,7 @@ impl KeptSolves {
     /// The placements sampled for a point, by `key`: kept from the last
     /// run where they hold, else sampled here by `sample`, as
     /// [`KeptSolves::solve`].
-    pub fn placements(
+    fn placements(
         &self,
         key: u64,
         meter: &Meter,

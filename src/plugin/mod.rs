@@ -19,7 +19,7 @@ pub use base::{
 };
 pub use descents::Descents;
 pub use format::{FormatPlugin, FormatScene, TaskPlace};
-pub use kept_solves::{Changed, Earlier, KeptSolves, SolveMap};
+pub use kept_solves::{Changed, Earlier, KeptSolves, SolveMap, SolvesFor};
 pub use registry::Registry;
 pub use solver::{fingerprint_of, work_ratio, IkProblem, Solver, SolverPlugin};
 pub use standard::{Standard, StandardPlugin};

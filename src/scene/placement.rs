@@ -95,7 +95,7 @@ pub enum Blocker {
 }
 
 /// The room's six sides.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Wall {
     Floor,
     Ceiling,

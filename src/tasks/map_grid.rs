@@ -27,7 +27,8 @@ use crate::bases::retry;
 use crate::collision::{KeptProofs, Obstacles};
 use crate::kinematics::Chain;
 use crate::plugin::{
-    BasePose, Descents, Placement, PreparedBase, ReachQuery, Retry, Search, Subject, TaskInput,
+    BasePose, Descents, Placement, PreparedBase, ReachQuery, Retry, Search, SolvesFor, Subject,
+    TaskInput,
 };
 use crate::report::{MapCell, MapReport, TaskReport};
 use crate::scene::{Blocked, Blocker, Grid, GridCell, IkSolution, Surface};
@@ -128,6 +129,8 @@ struct GridRun<'a> {
     judge: &'a Judge<'a>,
     prepared: Box<dyn PreparedBase + 'a>,
     proofs: KeptProofs<'a>,
+    /// Where the map's solves are kept (watch mode).
+    solves: Option<SolvesFor<'a>>,
 }
 
 /// The map of `surface`: each point of its grid solved as `asked`,
@@ -146,6 +149,7 @@ fn map_report(
         judge,
         prepared: input.base.prepare(input.room, asked.chain),
         proofs: KeptProofs::new(asked.chain, input.base.own_body(), input.meter),
+        solves: (input.solves).map(|s| s.of(asked.chain, asked.obstacles, input.base.own_body())),
     };
     let mut solved = run.first_pass(&grid);
     run.proofs.settle();
@@ -234,7 +238,7 @@ impl<'a> GridRun<'a> {
         ReachQuery {
             last_resort: neighbour.and_then(|n| self.carried(n, &target_room_mm)),
             from_rest: false,
-            solves: self.input.solves,
+            solves: self.solves,
             ..reaching
                 .query(
                     target_room_mm,

@@ -5,8 +5,8 @@ use super::common::{
 };
 use super::why::{Failed, Found};
 use crate::plugin::{
-    Dependence, EffectorNeed, Options, ParamSpec, Params, Plugin, Registry, Search, Settings,
-    SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
+    Dependence, EffectorNeed, Options, ParamSpec, Params, Plugin, ReachQuery, Registry, Search,
+    Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
 };
 use crate::report::{ReachReport, TaskReport};
 
@@ -102,14 +102,18 @@ impl Task for ReachTask {
         } else {
             Search::MostComfortable
         };
-        let query = reaching.query(
-            target.position_mm,
-            seed,
-            search,
-            obstacles.as_ref(),
-            input.base.own_body(),
-            input.meter,
-        );
+        let own = input.base.own_body();
+        let query = ReachQuery {
+            solves: (input.solves).map(|s| s.of(&chain, obstacles.as_ref(), own)),
+            ..reaching.query(
+                target.position_mm,
+                seed,
+                search,
+                obstacles.as_ref(),
+                own,
+                input.meter,
+            )
+        };
         let mut placement = input
             .base
             .prepare(input.room, &chain)

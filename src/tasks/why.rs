@@ -25,7 +25,7 @@ use super::common::Reaching;
 use crate::collision::{obstacle_bounds, Obstacles, PlacedObstacles, TOUCH_MARGIN_MM};
 use crate::kinematics::{Chain, JointKind};
 use crate::meter::Meter;
-use crate::plugin::{Base, Placement, Search, TaskInput};
+use crate::plugin::{Base, Placement, ReachQuery, Search, TaskInput};
 use crate::report::{Why, WIDENED_DEG};
 use crate::scene::{Blocker, OwnBody, Room};
 
@@ -152,14 +152,7 @@ impl Failed<'_> {
         let Some(free) = self.input.base.unzoned() else {
             return false;
         };
-        let query = self.reaching.query(
-            self.target_mm,
-            self.seed,
-            Search::MostComfortable,
-            self.obstacles,
-            own,
-            self.input.meter,
-        );
+        let query = self.query(self.chain, self.obstacles, own);
         charge_floor(free.as_ref(), self.input.room, None, self.input.meter);
         let placed = free
             .prepare(self.input.room, self.chain)
@@ -398,14 +391,7 @@ impl Failed<'_> {
         obstacles: Option<&Obstacles>,
         own: &OwnBody,
     ) -> Placement {
-        let query = self.reaching.query(
-            self.target_mm,
-            self.seed,
-            Search::MostComfortable,
-            obstacles,
-            own,
-            self.input.meter,
-        );
+        let query = self.query(chain, obstacles, own);
         charge_floor(
             self.input.base,
             room,
@@ -416,6 +402,30 @@ impl Failed<'_> {
             .base
             .prepare(room, chain)
             .reach(&query, self.reaching.solver.as_ref())
+    }
+
+    /// The task's search again, with `chain`, `obstacles` and `own`: its
+    /// solves kept for the task's next run as those ask for them, but not
+    /// the placements sampled (the base may be prepared otherwise: in the
+    /// room without doors or furniture, or without its zone).
+    fn query<'q>(
+        &'q self,
+        chain: &Chain,
+        obstacles: Option<&'q Obstacles>,
+        own: &'q OwnBody,
+    ) -> ReachQuery<'q> {
+        let solves = (self.input.solves).map(|s| s.of(chain, obstacles, own).without_placements());
+        ReachQuery {
+            solves,
+            ..self.reaching.query(
+                self.target_mm,
+                self.seed,
+                Search::MostComfortable,
+                obstacles,
+                own,
+                self.input.meter,
+            )
+        }
     }
 
     fn tolerance(&self) -> f64 {
