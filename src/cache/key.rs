@@ -37,6 +37,21 @@ pub(super) struct TaskKey {
     pub points: Option<[Point3<f64>; 2]>,
 }
 
+impl TaskKey {
+    /// The keys of a task charged its person's floor and its base's
+    /// getting ready as `charges` says (`Scenario::first_charges`).
+    pub fn charged(&mut self, charges: (bool, bool)) {
+        fn mix(key: u64, charges: (bool, bool)) -> u64 {
+            let mut h = DefaultHasher::new();
+            key.hash(&mut h);
+            charges.hash(&mut h);
+            h.finish()
+        }
+        self.strict = mix(self.strict, charges);
+        self.loose = self.loose.map(|loose| mix(loose, charges));
+    }
+}
+
 /// The keys of the scenario's tasks, in order; `placements` holds, after,
 /// the placements of this scenario's tasks (reused from it where nothing
 /// they depend on changed).

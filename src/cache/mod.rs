@@ -93,7 +93,12 @@ impl TaskCache {
                 known.entry(*k).or_insert_with(|| Arc::clone(tried));
             }
         }
-        let keys = key::keys(scenario, &mut known);
+        let mut keys = key::keys(scenario, &mut known);
+        // A task's work holds its person's floor where it is the first to
+        // place them (`Scenario::first_charges`): so does its key.
+        for (k, charges) in keys.iter_mut().zip(scenario.first_charges()) {
+            k.charged(charges);
+        }
         let previous = std::mem::replace(&mut self.placements, known);
         self.older_placements.push_front(previous);
         self.older_placements.truncate(GENERATIONS);

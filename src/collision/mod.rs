@@ -167,6 +167,20 @@ impl Obstacles {
         }
     }
 
+    /// Record mesh `index`, whose bounds are `bounds`, as touched if they,
+    /// grown by the margin, meet the question's bounds `asked`: the
+    /// triangles a question tests (and is charged for) are those whose
+    /// bounds meet its own, so the work, not only the answer, depends on
+    /// where a mesh is once its bounds come that near.
+    #[inline]
+    fn note_mesh(&self, index: usize, bounds: &[Point3<f64>; 2], asked: &[Point3<f64>; 2]) {
+        if let Some(touched) = &self.touched {
+            if bounds_meet(bounds, asked, TOUCH_MARGIN_MM) && touched.needs(index) {
+                touched.mark(index);
+            }
+        }
+    }
+
     /// [`Obstacles::note`] where the questions are recorded.
     fn note_recorded(
         &self,
@@ -293,7 +307,7 @@ impl Obstacles {
             }
         }
         for m in &self.meshes {
-            self.note(m.index, &m.bounds, segment, &asked);
+            self.note_mesh(m.index, &m.bounds, &asked);
             if reach(&m.bounds) && self.mesh_touches(m, capsule, r.max(1e-9), reach) {
                 return Some(Blocker::Obstacle(m.index));
             }
@@ -327,7 +341,7 @@ impl Obstacles {
                 .then_some(Blocker::Obstacle(i))
             });
         let meshes = self.meshes.iter().filter_map(move |m| {
-            self.note(m.index, &m.bounds, segment, &asked);
+            self.note_mesh(m.index, &m.bounds, &asked);
             (reach(&m.bounds) && self.mesh_touches(m, capsule, r.max(1e-9), reach))
                 .then_some(Blocker::Obstacle(m.index))
         });
@@ -405,7 +419,10 @@ impl Obstacles {
         let meshes = self
             .meshes
             .iter()
-            .filter(|m| near(m.index, &m.bounds))
+            .filter(|m| {
+                self.note_mesh(m.index, &m.bounds, &asked);
+                bounds_meet(&m.bounds, &asked, 0.0)
+            })
             .filter_map(|m| {
                 let toi = if m.closed && m.parts[0].shape.contains_point(&at, eye) {
                     Some(0.0)

@@ -357,6 +357,20 @@ impl Scenario {
     /// ready for its effectors ([`Base::prepare_work`]): the first task by
     /// the same person (or population) with those effectors, in any room.
     /// A task not of the scenario is charged both.
+    /// For each task, in order, whether it is charged its person's floor
+    /// and its base's getting ready ([`Scenario::floor_charges`]): part of
+    /// its work, so part of the key watch mode keeps its answer by (a task
+    /// added or taken away before it moves them).
+    pub fn first_charges(&self) -> Vec<(bool, bool)> {
+        let charges = self.floor_charges();
+        (self.tasks.iter())
+            .map(|t| {
+                let c = charges.of(t);
+                (c.floor, c.prepare)
+            })
+            .collect()
+    }
+
     fn floor_charges(&self) -> FloorCharges {
         let (mut floors, mut prepared) = (HashSet::new(), HashSet::new());
         let first = (self.tasks.iter())
