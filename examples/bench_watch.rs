@@ -74,12 +74,18 @@ fn main() {
         };
         times.push(watched.save(&text, true));
     }
+    summary(edit, times);
+}
+
+/// The least, median and greatest of `times` (ms), printed after `what`.
+fn summary(what: &str, mut times: Vec<f64>) {
     times.sort_by(f64::total_cmp);
     println!(
-        "{edit}: least {:.0} ms, median {:.0} ms, greatest {:.0} ms over {saves} saves",
+        "{what}: least {:.0} ms, median {:.0} ms, greatest {:.0} ms over {} saves",
         times[0],
         times[times.len() / 2],
-        times[times.len() - 1]
+        times[times.len() - 1],
+        times.len()
     );
 }
 
@@ -117,19 +123,13 @@ fn box_on(saves: usize, name: &str) {
         .find(|l| l.trim_start().starts_with(&format!("box {name} ")))
         .expect("a box of the kitchen");
     let watched = Watched::start(&original);
-    let mut times: Vec<f64> = (1..=saves)
+    let times: Vec<f64> = (1..=saves)
         .map(|i| {
             let up = raised_by(line, i).expect("a box line");
             watched.save(&original.replacen(line, &up, 1), true)
         })
         .collect();
-    times.sort_by(f64::total_cmp);
-    println!(
-        "{name} on: least {:.0} ms, median {:.0} ms, greatest {:.0} ms over {saves} saves",
-        times[0],
-        times[times.len() / 2],
-        times[times.len() - 1]
-    );
+    summary(&format!("{name} on"), times);
 }
 
 /// A `box NAME at (x, y, z) ...` line with its z raised by 1 mm.
