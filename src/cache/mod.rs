@@ -160,7 +160,14 @@ impl TaskCache {
             tasks.push(answer.0);
         }
         let ran = stale.len();
-        let last = std::mem::replace(&mut self.last, Generation { results, kept });
+        let mut last = std::mem::replace(&mut self.last, Generation { results, kept });
+        // Entries this run took over keep their solves; the others are
+        // kept without them.
+        for entry in last.kept.values_mut() {
+            if let Some(entry) = Arc::get_mut(entry) {
+                entry.drop_solves();
+            }
+        }
         if !last.results.is_empty() || !last.kept.is_empty() {
             self.older.push_front(last);
             self.older.truncate(GENERATIONS);

@@ -105,6 +105,13 @@ impl Kept {
         }
     }
 
+    /// Its run's solves let go (it is kept only for an edit undone, whose
+    /// next run then solves afresh): only the last run's entries hold
+    /// theirs, so that the memory stays that of one run's solves.
+    pub fn drop_solves(&mut self) {
+        self.solves = Arc::default();
+    }
+
     /// Whether its run ranked the room's obstacles by distance.
     pub fn ranked(&self) -> bool {
         self.touched.ranked()
