@@ -95,21 +95,15 @@ impl Checker<'_> {
     /// where they do not, an error at `at`, the first time.
     pub(super) fn within_evaluated_text(&mut self, bytes: u64, at: Span) -> bool {
         let most = (self.limits.people as u64).saturating_mul(TEXT_PER_PERSON_LIMIT);
-        let Some(first) = passed(&mut self.evaluated_text, bytes, most) else {
-            return true;
-        };
-        if first {
-            let kind = ErrorKind::TooLarge {
-                what: "the mannequins' text evaluated to build the people".into(),
-                limit: format!(
-                    "{} bytes ({} times --max-people)",
-                    thousands(most),
-                    thousands(TEXT_PER_PERSON_LIMIT)
-                ),
-            };
-            self.error(Error::new(kind, at));
-        }
-        false
+        let past = passed(&mut self.evaluated_text, bytes, most);
+        self.within_or_reported(past, at, || ErrorKind::TooLarge {
+            what: "the mannequins' text evaluated to build the people".into(),
+            limit: format!(
+                "{} bytes ({} times --max-people)",
+                thousands(most),
+                thousands(TEXT_PER_PERSON_LIMIT)
+            ),
+        })
     }
 
     /// Whether the people built so far, with one more of `joints` joints,
@@ -119,20 +113,29 @@ impl Checker<'_> {
     /// not, an error at `at`, the first time.
     pub(super) fn within_people_joints(&mut self, joints: usize, at: Span) -> bool {
         let most = (self.limits.joints as u64).saturating_mul(PEOPLE_JOINTS_PER_MAX_JOINTS);
-        let Some(first) = passed(&mut self.people_joints, joints as u64, most) else {
-            return true;
-        };
-        if first {
-            let kind = ErrorKind::TooLarge {
-                what: "the joints of the people, each body counted,".into(),
-                limit: format!(
-                    "{} ({PEOPLE_JOINTS_PER_MAX_JOINTS} times --max-joints)",
-                    thousands(most)
-                ),
-            };
-            self.error(Error::new(kind, at));
+        let past = passed(&mut self.people_joints, joints as u64, most);
+        self.within_or_reported(past, at, || ErrorKind::TooLarge {
+            what: "the joints of the people, each body counted,".into(),
+            limit: format!(
+                "{} ({PEOPLE_JOINTS_PER_MAX_JOINTS} times --max-joints)",
+                thousands(most)
+            ),
+        })
+    }
+
+    /// Whether a running total is within its bound, `past` saying how
+    /// [`passed`] found it; past it the first time, the error `kind` at
+    /// `at`.
+    fn within_or_reported(
+        &mut self,
+        past: Option<bool>,
+        at: Span,
+        kind: impl FnOnce() -> ErrorKind,
+    ) -> bool {
+        if past == Some(true) {
+            self.error(Error::new(kind(), at));
         }
-        false
+        past.is_none()
     }
 
     fn person(&mut self, decl: &PersonDecl) -> Option<(Person, Arc<dyn Base>)> {

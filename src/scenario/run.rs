@@ -429,27 +429,23 @@ impl Scenario {
             meter.charge(input.base.floor_work(input.room));
         }
         let report = match fit {
-            Fit::Nowhere(misfit) => {
-                NotPlacedReport::new(label, subject, person, base, room, &misfit)
-            }
-            Fit::Shut(shut) => NotPlacedReport::shut(label, subject, person, base, room, &shut),
+            Fit::Nowhere(misfit) => TaskReport::NotPlaced(NotPlacedReport::new(
+                label, subject, person, base, room, &misfit,
+            )),
+            Fit::Shut(shut) => TaskReport::NotPlaced(NotPlacedReport::shut(
+                label, subject, person, base, room, &shut,
+            )),
             Fit::Fits | Fit::Outside => {
                 if charges.prepare {
                     let body = &input.person.body;
                     (input.effectors.iter())
                         .for_each(|&e| _ = meter.charge(input.base.prepare_work(&body.chain(e))));
                 }
-                let report = task.task.run(&input);
-                return Ran {
-                    report,
-                    touched: touched.map(|t| t.set()),
-                    work: meter.spent(),
-                    solves: solves.map(KeptSolves::into_map),
-                };
+                task.task.run(&input)
             }
         };
         Ran {
-            report: TaskReport::NotPlaced(report),
+            report,
             touched: touched.map(|t| t.set()),
             work: meter.spent(),
             solves: solves.map(KeptSolves::into_map),
