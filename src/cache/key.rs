@@ -41,14 +41,15 @@ impl TaskKey {
     /// The keys of a task charged its person's floor and its base's
     /// getting ready as `charges` says (`Scenario::first_charges`).
     pub fn charged(&mut self, charges: (bool, bool)) {
-        fn mix(key: u64, charges: (bool, bool)) -> u64 {
-            let mut h = DefaultHasher::new();
-            key.hash(&mut h);
-            charges.hash(&mut h);
-            h.finish()
-        }
-        self.strict = mix(self.strict, charges);
-        self.loose = self.loose.map(|loose| mix(loose, charges));
+        self.strict = hash_of(|h| (self.strict, charges).hash(h));
+        self.loose = (self.loose).map(|loose| hash_of(|h| (loose, charges).hash(h)));
+    }
+
+    /// The full key with every obstacle of the task's room (`room`, their
+    /// hash by value): what an answer whose why ranked the obstacles is
+    /// kept by.
+    pub fn whole(&self, room: u64) -> u64 {
+        hash_of(|h| (self.strict, room).hash(h))
     }
 }
 

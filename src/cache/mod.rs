@@ -19,9 +19,7 @@ mod key;
 mod reach;
 mod touched;
 
-use std::collections::hash_map::DefaultHasher;
 use std::collections::{HashMap, VecDeque};
-use std::hash::Hasher;
 use std::sync::Arc;
 
 use crate::error::Error;
@@ -105,12 +103,7 @@ impl TaskCache {
         let seen: Vec<Vec<touched::Seen>> = scenario.rooms.iter().map(touched::seen).collect();
         let rooms: Vec<u64> = seen.iter().map(|s| touched::hash_seen(s)).collect();
         let whole: Vec<u64> = (scenario.tasks.iter().zip(&keys))
-            .map(|(task, k)| {
-                let mut h = DefaultHasher::new();
-                h.write_u64(k.strict);
-                h.write_u64(rooms[task.room]);
-                h.finish()
-            })
+            .map(|(task, k)| k.whole(rooms[task.room]))
             .collect();
         let held: Vec<Option<Held>> = (scenario.tasks.iter().zip(&keys).zip(&whole))
             .map(|((task, k), &whole)| self.held(k, whole, &seen[task.room]))
@@ -160,9 +153,21 @@ impl TaskCache {
             tasks.push(answer.0);
         }
         let ran = stale.len();
-        let mut last = std::mem::replace(&mut self.last, Generation { results, kept });
-        // Entries this run took over keep their solves; the others are
-        // kept without them.
+        self.keep_last(Generation { results, kept });
+        let (report, standards) = scenario.report(tasks, work)?;
+        let stats = CacheStats {
+            reused: keys.len() - ran,
+            ran,
+            work: work + standards,
+        };
+        Ok((report, stats))
+    }
+
+    /// `next` kept as the last run's results, the last before it kept as
+    /// an older run's: its entries without their solves, but for those
+    /// `next` took over.
+    fn keep_last(&mut self, next: Generation) {
+        let mut last = std::mem::replace(&mut self.last, next);
         for entry in last.kept.values_mut() {
             if let Some(entry) = Arc::get_mut(entry) {
                 entry.drop_solves();
@@ -172,13 +177,6 @@ impl TaskCache {
             self.older.push_front(last);
             self.older.truncate(GENERATIONS);
         }
-        let (report, standards) = scenario.report(tasks, work)?;
-        let stats = CacheStats {
-            reused: keys.len() - ran,
-            ran,
-            work: work + standards,
-        };
-        Ok((report, stats))
     }
 
     /// The solves kept from the last run of a task of keys `k` (its key of

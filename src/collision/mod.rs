@@ -216,10 +216,7 @@ impl Obstacles {
         let mut rest = self.clone();
         for (i, (_, _, bounds)) in rest.boxes.iter_mut().enumerate() {
             if removed.contains(&Blocker::Obstacle(i)) {
-                *bounds = [
-                    Point3::from([f64::INFINITY; 3]),
-                    Point3::from([f64::NEG_INFINITY; 3]),
-                ];
+                *bounds = NO_EXTENT;
             }
         }
         rest.meshes
@@ -236,7 +233,7 @@ impl Obstacles {
     pub fn variant(&self) -> u64 {
         use std::hash::{Hash, Hasher};
         let mut h = std::collections::hash_map::DefaultHasher::new();
-        let removed = (self.boxes.iter().enumerate()).filter(|(_, (_, _, [lo, hi]))| lo.x > hi.x);
+        let removed = (self.boxes.iter().enumerate()).filter(|(_, (_, _, b))| !has_extent(b));
         removed.for_each(|(i, _)| i.hash(&mut h));
         self.boxes.len().hash(&mut h);
         self.meshes.iter().for_each(|m| m.index.hash(&mut h));
@@ -409,7 +406,7 @@ impl Obstacles {
             .iter()
             .enumerate()
             // A removed box has no extent (`without`).
-            .filter(|(_, (_, _, [lo, hi]))| lo.x <= hi.x)
+            .filter(|(_, (_, _, bounds))| has_extent(bounds))
             .filter(|(i, (_, _, bounds))| near(*i, bounds))
             .filter_map(|(i, (_, cuboid, _))| {
                 entry_along(cuboid, eye, &end).map(|t| (Blocker::Obstacle(i), t * max))
@@ -535,15 +532,24 @@ fn part_touches(p: &MeshPart, swept: &ParryCapsule, tested: &mut u64) -> bool {
     })
 }
 
+/// Bounds that hold nothing: a box left out (`Obstacles::without`), or
+/// where bounds are gathered from none.
+const NO_EXTENT: [Point3<f64>; 2] = [
+    Point3::new(f64::INFINITY, f64::INFINITY, f64::INFINITY),
+    Point3::new(f64::NEG_INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY),
+];
+
+/// Whether `bounds` hold anything (not [`NO_EXTENT`], nor gathered from
+/// nothing).
+fn has_extent([lo, hi]: &[Point3<f64>; 2]) -> bool {
+    lo.x <= hi.x
+}
+
 /// The bounds that hold a mesh's parts.
 fn parts_bounds(parts: &[MeshPart]) -> [Point3<f64>; 2] {
-    parts.iter().fold(
-        [
-            Point3::from([f64::INFINITY; 3]),
-            Point3::from([f64::NEG_INFINITY; 3]),
-        ],
-        |[lo, hi], p| [lo.inf(&p.bounds[0]), hi.sup(&p.bounds[1])],
-    )
+    (parts.iter()).fold(NO_EXTENT, |[lo, hi], p| {
+        [lo.inf(&p.bounds[0]), hi.sup(&p.bounds[1])]
+    })
 }
 
 /// The bounds of a mesh: of its solid's `parts` and of every vertex it
@@ -564,8 +570,8 @@ pub fn obstacle_bounds(room: &Room) -> Vec<Option<[Point3<f64>; 2]>> {
     let boxes = room.boxes.iter().map(|b| Some(b.cuboid().bounds()));
     let meshes = (room.meshes.iter()).map(|m| {
         let parts = m.shape().map_or(&[][..], |s| &s.parts[..]);
-        let [lo, hi] = mesh_bounds(m, parts);
-        (lo.x <= hi.x).then_some([lo, hi])
+        let bounds = mesh_bounds(m, parts);
+        has_extent(&bounds).then_some(bounds)
     });
     boxes.chain(meshes).collect()
 }

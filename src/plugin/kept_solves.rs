@@ -2,8 +2,9 @@
 //! solve's answer depends on its problem (the target in the base frame,
 //! the base's pose, the tolerance, the seed), its solver, where it starts,
 //! the task's chain and own body, and on the room's obstacles only through
-//! the questions it puts to them. Each solve of a map's run is kept by a
-//! key of all but the obstacles, with the obstacles its questions touched
+//! the questions it puts to them. Each solve of a task's searches (a
+//! map's points, a reach, the searches that find why) is kept by a key of
+//! all but the obstacles, with the obstacles its questions touched
 //! (`collision::recording_one`) and the work it charged
 //! (`meter::counting_one`).
 //!
@@ -39,8 +40,7 @@ use nalgebra::Point3;
 use crate::collision::{bounds_meet, recording_one, Obstacles, Touched, TOUCH_MARGIN_MM};
 use crate::kinematics::Chain;
 use crate::meter::{counting_one, Meter};
-use crate::scene::OwnBody;
-use crate::scene::{BasePose, IkSolution};
+use crate::scene::{BasePose, IkSolution, OwnBody};
 
 /// The most solves kept for one task (about 300 bytes each): past it, no
 /// more are kept.
