@@ -89,9 +89,10 @@ fn a_wheelchair_user_cannot_reach_what_a_standing_person_can() {
     let reach = |target: &str, person: &str| super::body::reach_of(&report, target, person);
     assert!(reach("cabinet_low", "ben").ok);
     assert!(reach("counter_front", "ann").ok);
-    // The wall cabinet's shelf: within the standing person's arm (though
-    // only through a board), far beyond the seated one's.
+    // The wall cabinet's shelf: within the standing person's reach (the
+    // hand walked in over the shelf's front edge, `tasks/walk_in.rs`), far
+    // beyond the seated one's.
     let (ben, ann) = (reach("cabinet_high", "ben"), reach("cabinet_high", "ann"));
-    assert!(ben.distance_mm <= ben.tolerance_mm, "{ben:?}");
+    assert!(ben.ok, "{ben:?}");
     assert!(ann.distance_mm > 100.0, "{ann:?}");
 }

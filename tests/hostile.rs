@@ -1312,8 +1312,9 @@ fn a_long_chains_checks_count_every_pair_of_its_links() {
     // Twice the joints, and past the stdlib's longest chain: each check
     // of 62 solids counts them and their 1,891 pairs, where 31 solids
     // count 8 (counted as 8 at 60 too, the long chain's run was 3.2 times
-    // the short one's).
-    assert!(long > 10 * short, "{long} against {short}");
+    // the short one's; counted by pairs, 9 to 11 times, as the blocked
+    // reach's retries and walk in mix plain and checked descents).
+    assert!(long > 6 * short, "{long} against {short}");
     let past = metered_run(&caged_chain(600), Limits::default().solver_work, 2)
         .expect_err("past the bound");
     assert!(

@@ -183,3 +183,62 @@ fn a_map_leaves_no_hole_that_more_search_fills() {
     }
     eprintln!("{looked} holes left, none that more search fills");
 }
+
+/// The wheelchair kitchen's room and people with `tasks`, and targets
+/// named `t0`, `t1`, ... at `points_mm`.
+fn kitchen_with_targets(points_mm: &[[f64; 3]], tasks: &str) -> Report {
+    let example = std::fs::read_to_string("examples/kitchen_wheelchair.reach").unwrap();
+    let room_and_people = &example[..example.find("reach counter_front").unwrap()];
+    let targets: String = points_mm
+        .iter()
+        .enumerate()
+        .map(|(i, p)| format!("  target t{i} at ({}, {}, {})\n", p[0], p[1], p[2]))
+        .collect();
+    let text = room_and_people.replacen("  door hall", &format!("{targets}  door hall"), 1);
+    run_text("kitchen_targets.reach", &format!("{text}\n{tasks}\n"))
+}
+
+/// A reach of a point on a shelf says what the map of the shelf says:
+/// where the map reaches a point from its front row, the reach, which
+/// once stopped at "blocked by the board", walks in from the open side
+/// (`tasks/walk_in.rs`). Every point ann's map of shelf_3 reaches (two of
+/// its second row were missed), and two at the back of shelf_1 that ben's
+/// map reaches under shelf_2.
+#[test]
+fn a_reach_walks_into_a_shelf_where_the_map_reaches() {
+    let map = match &kitchen_maps("shelf_3.top", "solver incremental { starts 1 }").tasks[1] {
+        TaskReport::Map(m) => m.clone(),
+        other => panic!("not a map: {other:?}"),
+    };
+    assert_eq!(
+        (map.name.as_str(), map.person.as_str()),
+        ("shelf_3.top", "ann")
+    );
+    // The hand touches a board with its side: its radius (28 mm) above it.
+    let lifted = |p: [f64; 3]| [p[0], p[1], p[2] + 28.0];
+    let mapped: Vec<[f64; 3]> = map
+        .cells
+        .iter()
+        .filter(|c| c.reachable)
+        .map(|c| lifted(c.point_mm))
+        .collect();
+    assert!(mapped.len() >= 18, "{} reached", mapped.len());
+    let names: Vec<String> = (0..mapped.len()).map(|i| format!("t{i}")).collect();
+    let report = kitchen_with_targets(&mapped, &format!("reach {} by ann", names.join(", ")));
+    for (i, point) in mapped.iter().enumerate() {
+        let r = reach_report(&report, i);
+        assert!(
+            r.ok,
+            "ann: the map reaches {point:?}, the reach does not: {r:?}"
+        );
+    }
+    let under_shelf_2 = [[1750.0, 3150.0, 448.0], [1850.0, 3150.0, 448.0]];
+    let report = kitchen_with_targets(&under_shelf_2, "reach t0, t1 by ben");
+    for (i, point) in under_shelf_2.iter().enumerate() {
+        let r = reach_report(&report, i);
+        assert!(
+            r.ok,
+            "ben: the map reaches {point:?}, the reach does not: {r:?}"
+        );
+    }
+}

@@ -3,7 +3,10 @@
 //! base, every start of the solver, every retry where obstacles block),
 //! against [`Limits::solver_starts`](crate::limits::Limits). A scenario
 //! beyond it is refused before it runs, at the task declaration that asks
-//! the most.
+//! the most. What a reach does only once its search has failed (walking a
+//! blocked target in, `tasks/walk_in.rs`; searching for why, `tasks/why.rs`)
+//! is not counted here: the bound on solver work, counted as the solvers
+//! work (`crate::meter`), bounds it.
 
 use std::collections::HashMap;
 use std::sync::Arc;

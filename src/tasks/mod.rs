@@ -10,6 +10,7 @@ mod map;
 mod map_grid;
 mod reach;
 mod reach_and_gaze;
+mod walk_in;
 mod why;
 
 pub use common::{mix_seed, Common};

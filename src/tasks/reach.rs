@@ -3,6 +3,7 @@
 use super::common::{
     chain_of, mix_seed, Common, CommonDecl, Reaching, INCREMENTAL, THOROUGH_RETRY,
 };
+use super::walk_in::reach_walking_in;
 use super::why::{Failed, Found};
 use crate::plugin::{
     Dependence, EffectorNeed, Options, ParamSpec, Params, Plugin, ReachQuery, Registry, Search,
@@ -114,10 +115,9 @@ impl Task for ReachTask {
                 input.meter,
             )
         };
-        let mut placement = input
-            .base
-            .prepare(input.room, &chain)
-            .reach(&query, reaching.solver.as_ref());
+        let prepared = input.base.prepare(input.room, &chain);
+        let solver = reaching.solver.as_ref();
+        let mut placement = reach_walking_in(prepared.as_ref(), &query, &chain, solver);
         let mut why = Vec::new();
         if !placement.solution.reaches(reaching.common.tolerance_mm) {
             let failed = Failed {

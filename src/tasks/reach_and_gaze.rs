@@ -10,6 +10,7 @@ use nalgebra::Point3;
 
 use super::common::{chain_of, mix_seed, Common, CommonDecl, Reaching, THOROUGH_RETRY};
 use super::gaze::{limit_look, needs_look_link, GazeObstacles, Looked, Looking};
+use super::walk_in::reach_walking_in;
 use super::why::{Failed, Found};
 use crate::collision::{Obstacles, PlacedObstacles};
 use crate::error::ErrorKind;
@@ -202,10 +203,9 @@ impl Task for ReachAndGazeTask {
             own,
             input.meter,
         );
-        let alone = input
-            .base
-            .prepare(input.room, &hand_chain)
-            .reach(&query, reaching.solver.as_ref());
+        let prepared = input.base.prepare(input.room, &hand_chain);
+        let solver = reaching.solver.as_ref();
+        let alone = reach_walking_in(prepared.as_ref(), &query, &hand_chain, solver);
         let pose = alone.pose;
         let goal = pose.to_base(&target.position_mm);
         let goals = [
