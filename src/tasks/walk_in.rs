@@ -25,7 +25,7 @@ use crate::plugin::{Placement, PreparedBase, ReachQuery, Search, Solver};
 /// How far apart the points of the walk are: half a map's usual step.
 const STEP_MM: f64 = 50.0;
 /// How many steps out the walk looks for a point reached, at most.
-const STEPS_OUT: usize = 8;
+const STEPS_OUT: usize = 4;
 /// Every how many steps out a point is searched for (the steps between
 /// are only walked back through).
 const SEARCHED_EVERY: usize = 2;
@@ -106,9 +106,14 @@ impl WalkIn<'_> {
         }
     }
 
-    /// The walk's point `k` steps out, searched for as the target was.
+    /// The walk's point `k` steps out, searched for as the target was but
+    /// without the retry: a point out in the open is reached at once, and
+    /// one that is not is no start for the walk.
     fn searched(&self, point_mm: Point3<f64>, k: usize) -> Option<Placement> {
-        let query = self.query_at(point_mm, k);
+        let query = ReachQuery {
+            retry: None,
+            ..self.query_at(point_mm, k)
+        };
         let placement = self.prepared.reach(&query, self.solver);
         self.reaches(&placement).then_some(placement)
     }
