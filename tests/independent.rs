@@ -299,36 +299,98 @@ mod random_rooms {
             let targets: Vec<[f64; 3]> = targets.into_iter().filter(|t| !inside(t)).collect();
             prop_assume!(!targets.is_empty());
             let text = scenario(person, &boxes, &targets);
-            let registry = Registry::builtin();
-            let (_, checked) = reach::check(Input::Text { name: "random.reach", text: &text }, &registry);
-            // A target inside a box is refused by the checker, and a room
-            // the base fits nowhere in answers "does not fit" (no posture):
-            // not this test's business.
-            let Ok(scenario) = checked else {
+            let Some(reached) = postures_checked(&text)? else {
                 RUN.with(|r| r.set(r.get() + (1 << 32)));
                 return Ok(());
             };
             RUN.with(|r| r.set(r.get() + 1));
-            let report = reach::run(&scenario).expect("within the bound on solver work");
-            let own = scenario.bases[0].own_body();
-            let body = &scenario.persons[0].body;
-            for task in &report.tasks {
-                let TaskReport::Reach(r) = task else { continue };
-                let chain = body.chain_named(Some(&r.effector)).unwrap();
-                let solids = parts(&chain, &r.posture, &r.base, r.tolerance_mm);
-                let room = &scenario.rooms[0];
-                if r.ok {
-                    REACHED.with(|c| c.set(c.get() + 1));
-                    let met = everything_met(&solids, room, own, &r.base, -ROUNDING_MM);
-                    prop_assert!(met.is_empty(), "{}: reachable through {met:?}\n{text}", r.name);
-                }
-                if let Some(blocker) = &r.collision {
-                    let met = everything_met(&solids, room, own, &r.base, ROUNDING_MM);
-                    let wall = ["the wall", "the floor", "the ceiling"].iter().any(|w| blocker.starts_with(w));
-                    let named = met.iter().any(|m| m.contains(blocker.as_str())) || wall && met.iter().any(|m| m == "a wall");
-                    prop_assert!(named, "{}: nothing meets {blocker}: {met:?}\n{text}", r.name);
-                }
+            REACHED.with(|c| c.set(c.get() + reached));
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+
+        /// Targets on a shelf under another board, where a reach walks in
+        /// from the open side (`tasks/walk_in.rs`): whatever it finds
+        /// passes through nothing.
+        #[test]
+        fn no_posture_walked_into_a_shelf_passes_through_anything(
+            person in 0usize..PEOPLE.len(),
+            (low_mm, gap_mm, depth_mm) in (300.0..1600.0f64, 150.0..350.0f64, 250.0..450.0f64),
+            (y_mm, width_mm) in (300.0..1500.0f64, 500.0..1200.0f64),
+            depths in prop::collection::vec(0.5..0.95f64, 3),
+        ) {
+            // An open cabinet against the wall x = 0: two boards and
+            // the two side panels between them.
+            let boards = [
+                [0.0, y_mm, low_mm, depth_mm, width_mm, 20.0],
+                [0.0, y_mm, low_mm + gap_mm, depth_mm, width_mm, 20.0],
+                [0.0, y_mm - 20.0, low_mm, depth_mm, 20.0, gap_mm + 20.0],
+                [0.0, y_mm + width_mm, low_mm, depth_mm, 20.0, gap_mm + 20.0],
+            ];
+            let on_top = low_mm + 20.0 + 28.0;
+            let targets: Vec<[f64; 3]> = depths
+                .iter()
+                .enumerate()
+                .map(|(k, f)| [f * depth_mm, y_mm + width_mm * (k as f64 + 0.5) / 3.0, on_top])
+                .collect();
+            let text = scenario(person, &boards, &targets);
+            postures_checked(&text)?;
+        }
+    }
+
+    /// Runs scenario `text` and checks every reach's posture: a reachable
+    /// one passes through nothing, and a collision it reports is real.
+    /// None where the checker refuses it (a target inside a box) or a run
+    /// past the bound; else how many targets were reached.
+    fn postures_checked(text: &str) -> Result<Option<u64>, TestCaseError> {
+        let registry = Registry::builtin();
+        let (_, checked) = reach::check(
+            Input::Text {
+                name: "random.reach",
+                text,
+            },
+            &registry,
+        );
+        // A target inside a box is refused by the checker, and a room
+        // the base fits nowhere in answers "does not fit" (no posture):
+        // not this test's business.
+        let Ok(scenario) = checked else {
+            return Ok(None);
+        };
+        let report = reach::run(&scenario).expect("within the bound on solver work");
+        let own = scenario.bases[0].own_body();
+        let body = &scenario.persons[0].body;
+        let mut reached = 0;
+        for task in &report.tasks {
+            let TaskReport::Reach(r) = task else { continue };
+            let chain = body.chain_named(Some(&r.effector)).unwrap();
+            let solids = parts(&chain, &r.posture, &r.base, r.tolerance_mm);
+            let room = &scenario.rooms[0];
+            if r.ok {
+                reached += 1;
+                let met = everything_met(&solids, room, own, &r.base, -ROUNDING_MM);
+                prop_assert!(
+                    met.is_empty(),
+                    "{}: reachable through {met:?}\n{text}",
+                    r.name
+                );
+            }
+            if let Some(blocker) = &r.collision {
+                let met = everything_met(&solids, room, own, &r.base, ROUNDING_MM);
+                let wall = ["the wall", "the floor", "the ceiling"]
+                    .iter()
+                    .any(|w| blocker.starts_with(w));
+                let named = met.iter().any(|m| m.contains(blocker.as_str()))
+                    || wall && met.iter().any(|m| m == "a wall");
+                prop_assert!(
+                    named,
+                    "{}: nothing meets {blocker}: {met:?}\n{text}",
+                    r.name
+                );
             }
         }
+        Ok(Some(reached))
     }
 }
