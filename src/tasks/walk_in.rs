@@ -3,14 +3,14 @@
 //! low shelf, the back of a deep one), points further out are searched
 //! for, every [`SEARCHED_EVERY`] steps of [`STEP_MM`] up to [`STEPS_OUT`]
 //! steps, along the floor towards where the base stood (then along the
-//! room's two axes, each way), until one is reached. From there the walk
-//! comes back in a step at a time: each point from the posture the step
-//! before reached, where its base stood and then moved with the point (a
-//! plain descent, then one steering clear), else searched as the target
-//! was with that placement as the last resort. It is how a map reaches
-//! into a shelf from its front row (`map_grid.rs`), done for one target:
-//! without it a reach called points NOT reachable that the map of the
-//! same shelf reaches.
+//! room's two axes and their diagonals, each way), until one is reached.
+//! From there the walk comes back in a step at a time: each point from
+//! the posture the step before reached, where its base stood and then
+//! moved with the point (a plain descent, then one steering clear), else
+//! searched as the target was with that placement as the last resort. It
+//! is how a map reaches into a shelf from its front row (`map_grid.rs`),
+//! done for one target: without it a reach called points NOT reachable
+//! that the map of the same shelf reaches.
 //!
 //! What it finds is a posture checked like any other (within the
 //! tolerance, clear of the room, the person's body and base): it can only
@@ -75,7 +75,18 @@ impl WalkIn<'_> {
         }
         let target = self.query.target_room_mm;
         let towards_base = (blocked.pose.position_mm - target).xy().try_normalize(1e-9);
-        let across = [Vector2::x(), -Vector2::x(), Vector2::y(), -Vector2::y()];
+        let d = std::f64::consts::FRAC_1_SQRT_2;
+        let across = [
+            (1.0, 0.0),
+            (-1.0, 0.0),
+            (0.0, 1.0),
+            (0.0, -1.0),
+            (d, d),
+            (d, -d),
+            (-d, d),
+            (-d, -d),
+        ]
+        .map(|(x, y)| Vector2::new(x, y));
         towards_base
             .into_iter()
             .chain(across)
