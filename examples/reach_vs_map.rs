@@ -78,7 +78,9 @@ fn reaches(file: &str, text: &str, person: &str, targets_mm: &[[f64; 3]]) -> Vec
         .map(|(i, p)| format!("  target agree_{i} at ({}, {}, {})\n", p[0], p[1], p[2]))
         .collect();
     let people = &text[close..tasks_at(text)];
-    let names: Vec<String> = (0..targets_mm.len()).map(|i| format!("agree_{i}")).collect();
+    let names: Vec<String> = (0..targets_mm.len())
+        .map(|i| format!("agree_{i}"))
+        .collect();
     let asked = format!(
         "{}\n{targets}{people}\nreach {} by {person}\n",
         &text[..close],
@@ -98,11 +100,17 @@ fn reaches(file: &str, text: &str, person: &str, targets_mm: &[[f64; 3]]) -> Vec
 /// Where the scenario's tasks start: its first task line after the rooms
 /// and people.
 fn tasks_at(text: &str) -> usize {
-    ["\nreach ", "\nmap ", "\ngaze ", "\ngaze_map ", "\nstandard "]
-        .iter()
-        .filter_map(|t| text.find(t))
-        .min()
-        .unwrap_or(text.len())
+    [
+        "\nreach ",
+        "\nmap ",
+        "\ngaze ",
+        "\ngaze_map ",
+        "\nstandard ",
+    ]
+    .iter()
+    .filter_map(|t| text.find(t))
+    .min()
+    .unwrap_or(text.len())
 }
 
 /// The report of scenario `text` (read as `file`, for its used files),

@@ -202,7 +202,7 @@ fn kitchen_with_targets(points_mm: &[[f64; 3]], tasks: &str) -> Report {
 /// where the map reaches a point from its front row, the reach, which
 /// once stopped at "blocked by the board", walks in from the open side
 /// (`tasks/walk_in.rs`). Every point ann's map of shelf_3 reaches (two of
-/// its second row were missed), and three at the back of shelf_1 that ben's
+/// its second row were missed), and two at the back of shelf_1 that ben's
 /// map reaches under shelf_2.
 #[test]
 fn a_reach_walks_into_a_shelf_where_the_map_reaches() {
@@ -232,12 +232,8 @@ fn a_reach_walks_into_a_shelf_where_the_map_reaches() {
             "ann: the map reaches {point:?}, the reach does not: {r:?}"
         );
     }
-    let under_shelf_2 = [
-        [1750.0, 3150.0, 448.0],
-        [1850.0, 3150.0, 448.0],
-        [1950.0, 3150.0, 448.0],
-    ];
-    let report = kitchen_with_targets(&under_shelf_2, "reach t0, t1, t2 by ben");
+    let under_shelf_2 = [[1750.0, 3150.0, 448.0], [1850.0, 3150.0, 448.0]];
+    let report = kitchen_with_targets(&under_shelf_2, "reach t0, t1 by ben");
     for (i, point) in under_shelf_2.iter().enumerate() {
         let r = reach_report(&report, i);
         assert!(

@@ -1,6 +1,6 @@
 //! A blocked reach walked in from the open side. Where a target's search
-//! came within the tolerance only through something (the board over a
-//! low shelf, the back of a deep one), points further out are searched
+//! came within the tolerance only through the room (the board over a
+//! low shelf, the back of a deep one, a wall), points further out are searched
 //! for, every [`SEARCHED_EVERY`] steps of [`STEP_MM`] up to [`STEPS_OUT`]
 //! steps, along the floor towards where the base stood (then along the
 //! room's two axes and their diagonals, each way), until one is reached.
@@ -10,17 +10,21 @@
 //! searched as the target was with that placement as the last resort. It
 //! is how a map reaches into a shelf from its front row (`map_grid.rs`),
 //! done for one target: without it a reach called points NOT reachable
-//! that the map of the same shelf reaches.
+//! that the map of the same shelf reaches. A walk makes at most
+//! [`MOST_SEARCHES`] searches.
 //!
 //! What it finds is a posture checked like any other (within the
 //! tolerance, clear of the room, the person's body and base): it can only
 //! turn a miss into a reach. The placement it keeps is the first that
 //! reaches, not the most comfortable of all.
 
+use std::cell::Cell;
+
 use nalgebra::{Point3, Vector2, Vector3};
 
 use crate::kinematics::Chain;
 use crate::plugin::{Placement, PreparedBase, ReachQuery, Search, Solver};
+use crate::scene::Blocker;
 
 /// How far apart the points of the walk are: half a map's usual step.
 const STEP_MM: f64 = 50.0;
@@ -29,6 +33,10 @@ const STEPS_OUT: usize = 4;
 /// Every how many steps out a point is searched for (the steps between
 /// are only walked back through).
 const SEARCHED_EVERY: usize = 2;
+/// The most searches one walk makes, over all its directions (the points
+/// out and the steps back that descents do not reach): a search costs as
+/// much as the target's own, where descents cost a few hundredths of it.
+const MOST_SEARCHES: usize = 12;
 
 /// `query` searched for from `prepared` by `solver` as a reach searches,
 /// and where the search is blocked, walked in ([`WalkIn`]); as the retry,
@@ -49,6 +57,7 @@ pub(super) fn reach_walking_in(
         chain,
         solver,
         query,
+        searches: Cell::new(0),
     };
     walk.reached(&placement).unwrap_or(placement)
 }
@@ -60,6 +69,8 @@ struct WalkIn<'a> {
     solver: &'a dyn Solver,
     /// The target's query, as its search was asked.
     query: &'a ReachQuery<'a>,
+    /// How many searches the walk has made.
+    searches: Cell<usize>,
 }
 
 impl WalkIn<'_> {
@@ -68,9 +79,13 @@ impl WalkIn<'_> {
     /// something), if the walk gets there.
     fn reached(&self, blocked: &Placement) -> Option<Placement> {
         let solution = &blocked.solution;
-        let was_blocked =
-            solution.collision.is_some() && solution.distance_mm <= self.query.tolerance_mm;
-        if !was_blocked {
+        // Only the room: a posture through the person's own thigh, chair
+        // or other arm is not in a shelf to be walked out of.
+        let by_the_room = solution
+            .collision
+            .as_ref()
+            .is_some_and(|c| matches!(c.blocker, Blocker::Obstacle(_) | Blocker::Wall(_)));
+        if !by_the_room || solution.distance_mm > self.query.tolerance_mm {
             return None;
         }
         let target = self.query.target_room_mm;
@@ -121,6 +136,7 @@ impl WalkIn<'_> {
     /// without the retry: a point out in the open is reached at once, and
     /// one that is not is no start for the walk.
     fn searched(&self, point_mm: Point3<f64>, k: usize) -> Option<Placement> {
+        self.may_search()?;
         let query = ReachQuery {
             retry: None,
             ..self.query_at(point_mm, k)
@@ -164,6 +180,7 @@ impl WalkIn<'_> {
             // Searched as the target was, the step before's base and
             // posture its last resort.
             let pose = admitted().last()?;
+            self.may_search()?;
             let query = ReachQuery {
                 last_resort: Some((pose, start.as_slice())),
                 ..query
@@ -171,6 +188,14 @@ impl WalkIn<'_> {
             let placement = self.prepared.reach(&query, self.solver);
             self.reaches(&placement).then_some(placement)
         })
+    }
+
+    /// Whether the walk may make one more search (counted), of
+    /// [`MOST_SEARCHES`].
+    fn may_search(&self) -> Option<()> {
+        let made = self.searches.get();
+        self.searches.set(made + 1);
+        (made < MOST_SEARCHES).then_some(())
     }
 
     fn reaches(&self, placement: &Placement) -> bool {
