@@ -75,8 +75,8 @@ struct WalkIn<'a> {
 
 impl WalkIn<'_> {
     /// The target reached by walking in from `blocked` (the failed
-    /// search's kept placement, which came within the tolerance through
-    /// something), if the walk gets there.
+    /// search's kept placement), if it came within the tolerance through
+    /// the room and the walk gets there.
     fn reached(&self, blocked: &Placement) -> Option<Placement> {
         let solution = &blocked.solution;
         // Only the room: a posture through the person's own thigh, chair
