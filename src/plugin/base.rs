@@ -146,6 +146,32 @@ impl<'a> ReachQuery<'a> {
         self.solve_problem(&self.problem(chain, pose), pose, solver, Some(start))
     }
 
+    /// From posture `start` at `pose` (where a neighbouring point was
+    /// reached): one descent of `solver` where `plain`, then, where
+    /// `steering` and the query has a retry, one of the retry's solver,
+    /// which steers clear (its placement marked retried); the first that
+    /// `counts` takes.
+    pub fn descended_from(
+        &self,
+        chain: &Chain,
+        pose: BasePose,
+        solver: &dyn Solver,
+        start: &[f64],
+        (plain, steering): (bool, bool),
+        counts: &dyn Fn(&Placement) -> bool,
+    ) -> Option<Placement> {
+        if plain {
+            let next = self.solve_from_at(chain, pose, solver, start.to_vec());
+            if counts(&next) {
+                return Some(next);
+            }
+        }
+        let retry = self.retry.filter(|_| steering)?;
+        let mut steered = self.solve_from_at(chain, pose, retry.solver, start.to_vec());
+        steered.retried = true;
+        counts(&steered).then_some(steered)
+    }
+
     /// `problem` (this query's at `pose`, or one like it) solved from
     /// `start`, else from the solver's own starts, the collision checked.
     pub fn solve_problem(

@@ -384,21 +384,16 @@ impl<'a> GridRun<'a> {
         counts: &dyn Fn(&Placement) -> bool,
         steer: Steer,
     ) -> Option<Placement> {
-        let chain = self.asked.chain;
-        if steer != Steer::Only {
-            let solver = self.asked.reaching.solver.as_ref();
-            let next = query.solve_from_at(chain, last.pose, solver, last.solution.q.clone());
-            if counts(&next) {
-                return Some(next);
-            }
-        }
-        let retry = query
-            .retry
-            .filter(|_| last.retried || steer != Steer::AsTheNeighbour)?;
-        let start = last.solution.q.clone();
-        let mut steered = query.solve_from_at(chain, last.pose, retry.solver, start);
-        steered.retried = true;
-        counts(&steered).then_some(steered)
+        let plain = steer != Steer::Only;
+        let steering = last.retried || steer != Steer::AsTheNeighbour;
+        query.descended_from(
+            self.asked.chain,
+            last.pose,
+            self.asked.reaching.solver.as_ref(),
+            &last.solution.q,
+            (plain, steering),
+            counts,
+        )
     }
 
     /// The neighbour's base moved along the floor as the point moved, and

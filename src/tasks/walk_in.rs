@@ -116,7 +116,7 @@ impl WalkIn<'_> {
             .step_by(SEARCHED_EVERY)
             .find_map(|k| self.searched(along(k), k).map(|p| (k, p)))?;
         for j in (0..k).rev() {
-            last = self.stepped(&last, along(j + 1), along(j))?;
+            last = self.stepped(&last, along(j + 1), (along(j), j))?;
         }
         Some(last)
     }
@@ -145,17 +145,16 @@ impl WalkIn<'_> {
         self.reaches(&placement).then_some(placement)
     }
 
-    /// The point `to_mm`, one step in from `from_mm` where `last` reached:
-    /// from `last`'s posture, where its base stood, then moved with the
-    /// point.
+    /// The walk's point `to_mm`, `k` steps out, one step in from `from_mm`
+    /// where `last` reached: from `last`'s posture, where its base stood,
+    /// then moved with the point.
     fn stepped(
         &self,
         last: &Placement,
         from_mm: Point3<f64>,
-        to_mm: Point3<f64>,
+        (to_mm, k): (Point3<f64>, usize),
     ) -> Option<Placement> {
-        let k = (nalgebra::distance(&to_mm, &self.query.target_room_mm) / STEP_MM).round();
-        let query = self.query_at(to_mm, k as usize);
+        let query = self.query_at(to_mm, k);
         let by_mm: Vector2<f64> = (to_mm - from_mm).xy();
         let moved = self.prepared.moved(&last.pose, by_mm);
         let start = &last.solution.q;
@@ -166,15 +165,9 @@ impl WalkIn<'_> {
                 .flatten()
                 .filter(|pose| self.prepared.admits(pose, &to_mm))
         };
+        let reaches = |p: &Placement| self.reaches(p);
         let descended = admitted().find_map(|pose| {
-            let plain = query.solve_from_at(self.chain, pose, self.solver, start.clone());
-            if self.reaches(&plain) {
-                return Some(plain);
-            }
-            let retry = query.retry?;
-            let mut steered = query.solve_from_at(self.chain, pose, retry.solver, start.clone());
-            steered.retried = true;
-            self.reaches(&steered).then_some(steered)
+            query.descended_from(self.chain, pose, self.solver, start, (true, true), &reaches)
         });
         descended.or_else(|| {
             // Searched as the target was, the step before's base and
