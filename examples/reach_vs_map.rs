@@ -1,7 +1,7 @@
 //! A reach and a map of the same point should agree: for each map of a
 //! top (plan view, of reach) in a scenario, every point of its grid is
 //! asked again as a `reach` target by the same person (lifted by the
-//! hand's radius, 28 mm for the standard arm, as the map lifts it), and
+//! radius of the hand, its effector's link, as the map lifts it), and
 //! the points where the two answers differ are counted and listed: "map
 //! only" (the map reaches it, the reach does not) and "reach only".
 //! Either is a search that missed (docs/language.md, "What an unreached
@@ -14,26 +14,27 @@
 
 use reach::limits::CEILINGS;
 use reach::plugin::Registry;
-use reach::report::{MapReport, Report, TaskReport};
+use reach::report::{MapReport, TaskReport};
+use reach::scenario::Scenario;
 use reach::{Input, Limits};
-
-/// How far the map lifts a point of a top for the standard arm's hand.
-const HAND_RADIUS_MM: f64 = 28.0;
 
 fn main() {
     let file = std::env::args()
         .nth(1)
         .unwrap_or_else(|| "examples/kitchen_wheelchair.reach".into());
     let text = std::fs::read_to_string(&file).expect("a readable scenario");
-    let report = run(&file, &text);
+    let scenario = checked(&file, &text);
+    let report = reach::run(&scenario).expect("within the ceiling on solver work");
     let (mut points, mut map_only, mut reach_only) = (0, 0, 0);
     println!("| map | person | points | map only | reach only |");
     println!("|---|---|---:|---:|---:|");
     for map in report.tasks.iter().filter_map(top_map) {
+        let person = scenario.person(&map.person).expect("the map's person");
+        let lift_mm = person.body.chain(0).effector_link.radius_mm;
         let targets: Vec<[f64; 3]> = map
             .cells
             .iter()
-            .map(|c| [c.point_mm[0], c.point_mm[1], c.point_mm[2] + HAND_RADIUS_MM])
+            .map(|c| [c.point_mm[0], c.point_mm[1], c.point_mm[2] + lift_mm])
             .collect();
         let reached = reaches(&file, &text, &map.person, &targets);
         let differ: Vec<(usize, bool)> = (0..targets.len())
@@ -86,7 +87,7 @@ fn reaches(file: &str, text: &str, person: &str, targets_mm: &[[f64; 3]]) -> Vec
         &text[..close],
         names.join(", ")
     );
-    let report = run(file, &asked);
+    let report = reach::run(&checked(file, &asked)).expect("within the ceiling on solver work");
     report
         .tasks
         .iter()
@@ -113,9 +114,9 @@ fn tasks_at(text: &str) -> usize {
     .unwrap_or(text.len())
 }
 
-/// The report of scenario `text` (read as `file`, for its used files),
+/// Scenario `text` (read as `file`, for its used files), checked with
 /// every limit on work at its ceiling: this measures, it does not refuse.
-fn run(file: &str, text: &str) -> Report {
+fn checked(file: &str, text: &str) -> Scenario {
     let limits = Limits {
         solver_starts: CEILINGS.solver_starts,
         solver_work: CEILINGS.solver_work,
@@ -124,6 +125,5 @@ fn run(file: &str, text: &str) -> Report {
     let registry = Registry::builtin();
     let input = Input::Text { name: file, text };
     let (_, checked) = reach::check_within(input, &registry, &limits);
-    let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(false)));
-    reach::run(&scenario).expect("within the ceiling on solver work")
+    checked.unwrap_or_else(|d| panic!("{}", d.render(false)))
 }

@@ -342,8 +342,8 @@ mod random_rooms {
 
     /// Runs scenario `text` and checks every reach's posture: a reachable
     /// one passes through nothing, and a collision it reports is real.
-    /// None where the checker refuses it (a target inside a box) or a run
-    /// past the bound; else how many targets were reached.
+    /// None where the checker refuses it (a target inside a box); else
+    /// how many targets were reached.
     fn postures_checked(text: &str) -> Result<Option<u64>, TestCaseError> {
         let registry = Registry::builtin();
         let (_, checked) = reach::check(

@@ -36,12 +36,18 @@ fn run_text(name: &str, text: &str) -> Report {
     reach::run(&scenario).expect("within the bound on solver work")
 }
 
+/// `examples/kitchen_wheelchair.reach` up to its first task: its room
+/// and its two people.
+fn kitchen_room_and_people() -> String {
+    let example = std::fs::read_to_string("examples/kitchen_wheelchair.reach").unwrap();
+    let tasks_at = example.find("reach counter_front").unwrap();
+    example[..tasks_at].to_string()
+}
+
 /// The wheelchair kitchen's room and people with `maps`, 100 mm apart,
 /// by ben and ann, with `options`.
 fn kitchen_maps(maps: &str, options: &str) -> Report {
-    let example = std::fs::read_to_string("examples/kitchen_wheelchair.reach").unwrap();
-    let tasks_at = example.find("reach counter_front").unwrap();
-    let room_and_people = &example[..tasks_at];
+    let room_and_people = kitchen_room_and_people();
     let text =
         format!("{room_and_people}\nmap {maps} by ben, ann {{\n  step 100mm\n  {options}\n}}\n");
     run_text("kitchen_maps.reach", &text)
@@ -187,8 +193,7 @@ fn a_map_leaves_no_hole_that_more_search_fills() {
 /// The wheelchair kitchen's room and people with `tasks`, and targets
 /// named `t0`, `t1`, ... at `points_mm`.
 fn kitchen_with_targets(points_mm: &[[f64; 3]], tasks: &str) -> Report {
-    let example = std::fs::read_to_string("examples/kitchen_wheelchair.reach").unwrap();
-    let room_and_people = &example[..example.find("reach counter_front").unwrap()];
+    let room_and_people = kitchen_room_and_people();
     let targets: String = points_mm
         .iter()
         .enumerate()
