@@ -19,17 +19,19 @@ pub const BASE: &str = "#7d8590";
 pub fn person(body: &Body, q: &[f64], pose: BasePose, own: &OwnBody) -> Vec<Item> {
     let mut items = Vec::new();
     let mut drawn = vec![false; body.joints.len()];
-    let mut riders_drawn = false;
-    for index in 0..body.effectors.len() {
+    let paths: Vec<Vec<usize>> = (0..body.effectors.len())
+        .map(|index| body.path(body.effectors[index].joint))
+        .collect();
+    for (index, path) in paths.iter().enumerate() {
         let chain = body.chain(index);
-        let path = body.path(body.effectors[index].joint);
         let chain_q: Vec<f64> = path.iter().map(|&j| q[j]).collect();
         let volumes = chain.volumes(&chain_q);
+        let riders = body.riders_on(path);
         for (capsule, &owner) in volumes.capsules.iter().zip(&volumes.owners) {
             let new = match owner {
                 Owner::Link(j) if j < path.len() => !std::mem::replace(&mut drawn[path[j]], true),
                 Owner::Link(_) => true,
-                Owner::Rider(_) => !riders_drawn,
+                Owner::Rider(k) => index == drawing_chain(&paths, riders[k].0),
             };
             if new && capsule.radius_mm > 0.0 {
                 items.push(Item {
@@ -40,7 +42,6 @@ pub fn person(body: &Body, q: &[f64], pose: BasePose, own: &OwnBody) -> Vec<Item
                 });
             }
         }
-        riders_drawn = true;
     }
     items.extend(own.solids.iter().map(|solid| Item {
         shape: shape_in_room(&solid.shape, pose),
@@ -50,6 +51,15 @@ pub fn person(body: &Body, q: &[f64], pose: BasePose, own: &OwnBody) -> Vec<Item
         label: solid.name.clone(),
     }));
     items
+}
+
+/// The chain that draws a carried solid sitting on body joint `joint`:
+/// the first whose joints include it (which poses it as the task moved
+/// it), else the first (which carries it at neutral, as no task moves it).
+fn drawing_chain(paths: &[Vec<usize>], joint: Option<usize>) -> usize {
+    joint
+        .and_then(|j| paths.iter().position(|path| path.contains(&j)))
+        .unwrap_or(0)
 }
 
 /// Whether a solid of the person's own body is a part of them (a thigh, a

@@ -2,7 +2,8 @@
 //! what they meet, by parry's intersection tests rather than the crate's
 //! own geometry: each link a capsule of its joint's radius (the effector's
 //! link ending its radius short of the effector and as much thinner as the
-//! tolerance), the head where its anchor frame puts it; against the room's boxes, its walls,
+//! tolerance), the head and neck where their anchor frame puts them;
+//! against the room's boxes, its walls,
 //! floor and ceiling, the person's legs and base (but for the pelvis, the
 //! part within `pelvis_mm` of the hip point), and the person's other
 //! moving parts (links two apart may not overlap; a neighbour may not run
@@ -13,7 +14,7 @@ use parry3d_f64::query::details::distance_segment_segment;
 use parry3d_f64::query::intersection_test;
 use parry3d_f64::shape::{Capsule as PCapsule, Cuboid as PCuboid};
 use reach::geometry::Shape;
-use reach::kinematics::{Chain, JointKind};
+use reach::kinematics::{Body, JointKind};
 use reach::report::{BaseReport, Posture};
 use reach::scene::{OwnBody, Room};
 
@@ -32,15 +33,15 @@ pub fn dh(theta: f64, d: f64, alpha: f64, a: f64) -> Matrix4<f64> {
 }
 
 /// One solid of the posture, in the room: a segment and a radius, its
-/// place along the chain (a link's count from the base; a sphere its
-/// anchor link's), and its name.
+/// place along the chain (a link's count from the base; a solid the chain
+/// carries, the head or the neck, its anchor link's), and its name.
 #[derive(Clone, Debug)]
 pub struct Part {
     pub a: Point3<f64>,
     pub b: Point3<f64>,
     pub radius_mm: f64,
     pub order: i64,
-    pub sphere: bool,
+    pub carried: bool,
     pub name: String,
 }
 
@@ -75,78 +76,143 @@ pub fn effector_link_end(
 
 /// The posture's solids, the effector's link ending its radius (or
 /// `allowance_mm`, a millimetre at least) short and `allowance_mm` thinner
-/// (none if nothing is left).
-pub fn parts(chain: &Chain, posture: &Posture, base: &BaseReport, allowance_mm: f64) -> Vec<Part> {
-    let mut frames = Vec::new();
-    let mut m = Matrix4::identity();
-    for (joint, (name, value)) in chain.joints.iter().zip(&posture.0) {
-        assert_eq!(&joint.name, name);
-        let (theta, d) = match joint.kind {
-            JointKind::Revolute => (joint.dh.theta_rad + value.to_radians(), joint.dh.d_mm),
-            JointKind::Prismatic => (joint.dh.theta_rad, joint.dh.d_mm + value),
-        };
-        m *= dh(theta, d, joint.dh.alpha_rad(), joint.dh.a_mm);
-        frames.push(m);
-    }
-    let point = |m: &Matrix4<f64>, v: &Vector3<f64>| {
-        let p = m * Vector4::new(v.x, v.y, v.z, 1.0);
-        Point3::new(p.x, p.y, p.z)
-    };
+/// (none if nothing is left). Built from the whole body, not from the
+/// chain the solver saw: the joints off the effector's path at their
+/// neutral values, and with the path's links and the effector's, the
+/// spheres (the head) and the links that hold them to the path (the
+/// neck). The other branches (the other arm) are not modelled.
+pub fn parts(
+    body: &Body,
+    effector: &str,
+    posture: &Posture,
+    base: &BaseReport,
+    allowance_mm: f64,
+) -> Vec<Part> {
+    let e = body
+        .effector_index(effector)
+        .expect("the report's effector");
+    let path = body.path(body.effectors[e].joint);
+    assert_eq!(path.len(), posture.0.len());
+    let frames = body_frames(body, &path, posture);
+    let origin =
+        |j: Option<usize>| j.map_or(Point3::origin(), |j| point(&frames[j], &Vector3::zeros()));
     let mut parts = Vec::new();
     let mut last = Point3::origin();
     let mut links = 0;
-    let mut order_at = Vec::new();
-    for (joint, frame) in chain.joints.iter().zip(&frames) {
-        let origin = point(frame, &Vector3::zeros());
-        if (origin - last).norm() > 1e-6 {
+    // The place along the path of the link ending at each path joint.
+    let mut order_at = vec![-1; body.joints.len()];
+    for &j in &path {
+        let joint = &body.joints[j];
+        let end = origin(Some(j));
+        if (end - last).norm() > 1e-6 {
             parts.push(Part {
                 a: last,
-                b: origin,
+                b: end,
                 radius_mm: joint.link.radius_mm,
                 order: links,
-                sphere: false,
+                carried: false,
                 name: joint.link.name.clone(),
             });
             links += 1;
-            last = origin;
+            last = end;
         }
-        order_at.push(links - 1);
+        order_at[j] = links - 1;
     }
-    let effector = point(
-        frames.last().unwrap_or(&Matrix4::identity()),
-        &chain.effector_mm,
-    );
+    let hand = &body.effectors[e];
+    let effector_at = hand.joint.map_or(Point3::from(hand.offset_mm), |j| {
+        point(&frames[j], &hand.offset_mm)
+    });
     if let Some((b, radius_mm)) =
-        effector_link_end(last, effector, chain.effector_link.radius_mm, allowance_mm)
+        effector_link_end(last, effector_at, hand.link.radius_mm, allowance_mm)
     {
         parts.push(Part {
             a: last,
             b,
             radius_mm,
             order: links,
-            sphere: false,
-            name: chain.effector_link.name.clone(),
+            carried: false,
+            name: hand.link.name.clone(),
         });
     }
-    for rider in &chain.riders {
-        let (centre, order) = match rider.anchor {
-            Some(a) => (point(&frames[a], &rider.centre_mm), order_at[a]),
-            None => (Point3::from(rider.centre_mm), -1),
-        };
+    // A carried solid takes the place of the last path joint it hangs from.
+    let place = |mut at: Option<usize>| loop {
+        match at {
+            None => break -1,
+            Some(j) if path.contains(&j) => break order_at[j],
+            Some(j) => at = body.parents[j],
+        }
+    };
+    for s in &body.spheres {
+        let centre = s.joint.map_or(Point3::from(s.centre_mm), |j| {
+            point(&frames[j], &s.centre_mm)
+        });
         parts.push(Part {
             a: centre,
             b: centre,
-            radius_mm: rider.radius_mm,
-            order,
-            sphere: true,
-            name: rider.name.clone(),
+            radius_mm: s.radius_mm,
+            order: place(s.joint),
+            carried: true,
+            name: s.name.clone(),
         });
+    }
+    let mut holding: Vec<usize> = body
+        .spheres
+        .iter()
+        .flat_map(|s| body.path(s.joint))
+        .filter(|j| !path.contains(j))
+        .collect();
+    holding.sort_unstable();
+    holding.dedup();
+    for j in holding {
+        let (a, b) = (origin(body.parents[j]), origin(Some(j)));
+        let link = &body.joints[j].link;
+        if link.radius_mm > 0.0 && (b - a).norm() > 1e-6 {
+            parts.push(Part {
+                a,
+                b,
+                radius_mm: link.radius_mm,
+                order: place(body.parents[j]),
+                carried: true,
+                name: link.name.clone(),
+            });
+        }
     }
     for p in &mut parts {
         p.a = to_room(base, &p.a);
         p.b = to_room(base, &p.b);
     }
     parts
+}
+
+/// Every joint's frame in the base frame, by eq. 3's matrices: the path's
+/// joints at the posture's values, the others at neutral.
+fn body_frames(body: &Body, path: &[usize], posture: &Posture) -> Vec<Matrix4<f64>> {
+    let mut frames: Vec<Matrix4<f64>> = Vec::with_capacity(body.joints.len());
+    for (j, joint) in body.joints.iter().enumerate() {
+        let value = match path.iter().position(|&p| p == j) {
+            Some(k) => {
+                let (name, value) = &posture.0[k];
+                assert_eq!(&joint.name, name);
+                match joint.kind {
+                    JointKind::Revolute => value.to_radians(),
+                    JointKind::Prismatic => *value,
+                }
+            }
+            None => joint.neutral,
+        };
+        let (theta, d) = match joint.kind {
+            JointKind::Revolute => (joint.dh.theta_rad + value, joint.dh.d_mm),
+            JointKind::Prismatic => (joint.dh.theta_rad, joint.dh.d_mm + value),
+        };
+        let parent = body.parents[j].map_or(Matrix4::identity(), |p| frames[p]);
+        frames.push(parent * dh(theta, d, joint.dh.alpha_rad(), joint.dh.a_mm));
+    }
+    frames
+}
+
+fn point(m: &Matrix4<f64>, v: &Vector3<f64>) -> Point3<f64> {
+    let p = m * Vector4::new(v.x, v.y, v.z, 1.0);
+    Point3::new(p.x, p.y, p.z)
 }
 
 fn capsule(a: &Point3<f64>, b: &Point3<f64>, radius_mm: f64) -> PCapsule {
@@ -271,11 +337,11 @@ pub fn self_met(parts: &[Part], grow_mm: f64) -> Vec<(String, String)> {
     let mut met = Vec::new();
     for (i, p) in parts.iter().enumerate() {
         for q in &parts[i + 1..] {
-            if p.radius_mm <= 0.0 || q.radius_mm <= 0.0 || (p.sphere && q.sphere) {
+            if p.radius_mm <= 0.0 || q.radius_mm <= 0.0 || (p.carried && q.carried) {
                 continue;
             }
             let apart = (p.order - q.order).abs();
-            let meets = if !p.sphere && !q.sphere && apart == 1 {
+            let meets = if !p.carried && !q.carried && apart == 1 {
                 // q starts at their joint, where p ends.
                 let reach = p.radius_mm + q.radius_mm;
                 let axis = Part {

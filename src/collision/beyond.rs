@@ -47,7 +47,8 @@ pub struct OutOfReach<'a> {
     pivot_mm: Point3<f64>,
     /// The farthest the effector can be from the pivot.
     arm_mm: f64,
-    /// The spheres the trunk carries (the head): index of the rider.
+    /// The solids the trunk carries (the head, the neck): index of the
+    /// rider.
     riders: Vec<usize>,
 }
 
@@ -362,7 +363,7 @@ impl<'a> OutOfReach<'a> {
 
     /// The trunk's solids in its posture, in the base frame, as the chain
     /// makes them: the link from the hip point to the last joint's origin
-    /// and the spheres it carries.
+    /// and the solids it carries.
     fn solids(&self, trunk: &Trunk) -> Vec<Capsule> {
         let last = self.trunk_joints - 1;
         let top = Point3::from(trunk.frame().translation.vector);
@@ -374,10 +375,7 @@ impl<'a> OutOfReach<'a> {
         for &k in &self.riders {
             let rider = &self.chain.riders[k];
             let frame = trunk.frames[rider.anchor.unwrap_or(last)];
-            solids.push(Capsule::sphere(
-                frame * Point3::from(rider.centre_mm),
-                rider.radius_mm,
-            ));
+            solids.push(rider.capsule_at(&frame));
         }
         solids
     }

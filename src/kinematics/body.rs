@@ -100,7 +100,8 @@ impl Body {
     }
 
     /// The chain from the base to effector `index`, carrying the body's
-    /// spheres.
+    /// spheres and the links off its path that hold them to it
+    /// ([`Body::holding_links`]).
     pub fn chain(&self, index: usize) -> Chain {
         let effector = &self.effectors[index];
         let path = self.path(effector.joint);
@@ -109,9 +110,38 @@ impl Body {
             effector_name: effector.name.clone(),
             effector_mm: effector.offset_mm,
             effector_link: effector.link.clone(),
-            riders: self.spheres.iter().map(|s| self.rider(s, &path)).collect(),
+            riders: self.riders_on(&path).into_iter().map(|(_, r)| r).collect(),
             couplings: self.couplings_on(&path),
         }
+    }
+
+    /// The solids a chain along `path` carries, in its order, each with
+    /// the body joint it sits on (`None`: the base): the spheres, then the
+    /// links that hold them to it.
+    pub fn riders_on(&self, path: &[usize]) -> Vec<(Option<usize>, Rider)> {
+        let spheres = self
+            .spheres
+            .iter()
+            .map(|s| (s.joint, self.sphere_rider(s, path)));
+        let links = self.holding_links(path).into_iter();
+        let links = links.filter_map(|j| Some((Some(j), self.link_rider(j, path)?)));
+        spheres.chain(links).collect()
+    }
+
+    /// The joints off `path` between it and a sphere (the neck's, under
+    /// the head), each once, in body order: a chain along `path` carries
+    /// their links, at their neutral values, with the spheres. Other
+    /// branches (the other arm) are not carried.
+    pub fn holding_links(&self, path: &[usize]) -> Vec<usize> {
+        let mut joints: Vec<usize> = self
+            .spheres
+            .iter()
+            .flat_map(|s| self.path(s.joint))
+            .filter(|j| !path.contains(j))
+            .collect();
+        joints.sort_unstable();
+        joints.dedup();
+        joints
     }
 
     /// The couplings whose joints all lie on `joints` (body indices, in
@@ -124,26 +154,52 @@ impl Body {
             .collect()
     }
 
-    /// Sphere `s` as a chain along `path` carries it: its centre in the
-    /// frame of the last joint of `path` among its joint's ancestors, the
-    /// joints between at their neutral values.
-    fn rider(&self, s: &Sphere, path: &[usize]) -> Rider {
-        let mut centre = Point3::from(s.centre_mm);
-        let mut at = s.joint;
+    /// Sphere `s` as a chain along `path` carries it.
+    fn sphere_rider(&self, s: &Sphere, path: &[usize]) -> Rider {
+        let (anchor, centre) = self.carried(Point3::from(s.centre_mm), s.joint, path);
+        Rider::sphere(&s.name, anchor, centre.coords, s.radius_mm)
+    }
+
+    /// The link of joint `j` (off `path`) as a chain along `path` carries
+    /// it: from its parent's frame origin to its own. None where it is not
+    /// a solid (no radius, or no length).
+    fn link_rider(&self, j: usize, path: &[usize]) -> Option<Rider> {
+        let joint = &self.joints[j];
+        let end = joint.transform(joint.neutral) * Point3::origin();
+        if joint.link.radius_mm <= 0.0 || end.coords.norm() <= 1e-6 {
+            return None;
+        }
+        let (anchor, from) = self.carried(Point3::origin(), self.parents[j], path);
+        let (_, to) = self.carried(end, self.parents[j], path);
+        Some(Rider {
+            name: joint.link.name.clone(),
+            anchor,
+            from_mm: from.coords,
+            to_mm: to.coords,
+            radius_mm: joint.link.radius_mm,
+        })
+    }
+
+    /// Point `p` in the frame of `joint` as a chain along `path` carries
+    /// it: in the frame of the last joint of `path` among `joint`'s
+    /// ancestors (its place on the chain), the joints between at their
+    /// neutral values.
+    fn carried(
+        &self,
+        mut p: Point3<f64>,
+        joint: Option<usize>,
+        path: &[usize],
+    ) -> (Option<usize>, Point3<f64>) {
+        let mut at = joint;
         while let Some(j) = at {
             if path.contains(&j) {
                 break;
             }
             let joint = &self.joints[j];
-            centre = joint.transform(joint.neutral) * centre;
+            p = joint.transform(joint.neutral) * p;
             at = self.parents[j];
         }
-        Rider {
-            name: s.name.clone(),
-            anchor: at.and_then(|j| path.iter().position(|&p| p == j)),
-            centre_mm: centre.coords,
-            radius_mm: s.radius_mm,
-        }
+        (at.and_then(|j| path.iter().position(|&q| q == j)), p)
     }
 
     /// The chain of the effector named, or of the first.
@@ -169,9 +225,9 @@ mod tests {
         }
     }
 
-    #[test]
-    fn two_effectors_share_the_spine() {
-        let body = Body {
+    /// A spine carrying an arm to the grip and a neck to the eyes.
+    fn spine_arm_neck() -> Body {
+        Body {
             joints: ["spine", "arm", "hand", "neck"].map(joint).to_vec(),
             parents: vec![None, Some(0), Some(1), Some(0)],
             effectors: vec![
@@ -192,7 +248,12 @@ mod tests {
             legs: None,
             posture: None,
             couplings: Vec::new(),
-        };
+        }
+    }
+
+    #[test]
+    fn two_effectors_share_the_spine() {
+        let body = spine_arm_neck();
         let names = |c: Chain| c.joints.into_iter().map(|j| j.name).collect::<Vec<_>>();
         assert_eq!(names(body.chain(0)), ["spine", "arm", "hand"]);
         assert_eq!(
@@ -200,5 +261,35 @@ mod tests {
             ["spine", "neck"]
         );
         assert!(body.chain_named(Some("feet")).is_none());
+    }
+
+    #[test]
+    fn a_hand_carries_the_head_and_the_neck_that_holds_it_but_not_the_other_arm() {
+        let mut body = spine_arm_neck();
+        body.joints.push(joint("other_arm"));
+        body.parents.push(Some(0));
+        body.spheres.push(Sphere {
+            name: "head".into(),
+            joint: Some(3),
+            centre_mm: Vector3::new(0.0, 0.0, 50.0),
+            radius_mm: 90.0,
+        });
+        let hand = body.chain(0);
+        let riders: Vec<&str> = hand.riders.iter().map(|r| r.name.as_str()).collect();
+        assert_eq!(riders, ["head", "neck"], "the other arm is not carried");
+        // The neck from the spine's end to its own, 100 mm on, in the
+        // spine's frame; the head at the neck's end, 50 mm up.
+        let neck = &hand.riders[1];
+        assert_eq!(neck.anchor, Some(0));
+        assert!(neck.from_mm.norm() < 1e-9);
+        assert!((neck.to_mm - Vector3::new(100.0, 0.0, 0.0)).norm() < 1e-9);
+        assert!((hand.riders[0].from_mm - Vector3::new(100.0, 0.0, 50.0)).norm() < 1e-9);
+        // The eyes' chain moves the neck itself: it carries the head only.
+        let eyes = body.chain(1);
+        let riders: Vec<&str> = eyes.riders.iter().map(|r| r.name.as_str()).collect();
+        assert_eq!(riders, ["head"]);
+        // A link that is no solid is not carried.
+        body.joints[3].link.radius_mm = 0.0;
+        assert_eq!(body.chain(0).riders.len(), 1);
     }
 }

@@ -6,6 +6,7 @@ use nalgebra::{IsometryMatrix3, Point3, Vector3};
 
 use super::coupling::{Coupling, Limited};
 use super::dh::Dh;
+use crate::geometry::Capsule;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum JointKind {
@@ -135,21 +136,58 @@ pub struct Chain {
     pub effector_mm: Vector3<f64>,
     /// The link from the last joint's frame origin to the effector.
     pub effector_link: Link,
-    /// Spheres of the body the chain carries (a head on the spine).
+    /// Solids of the body the chain carries (a head and neck on the
+    /// spine).
     pub riders: Vec<Rider>,
     /// Joints of the chain whose ranges are not independent.
     pub couplings: Vec<Coupling>,
 }
 
-/// A sphere of the body carried by a chain: its centre in the frame of the
+/// A solid of the body carried by a chain though no joint of the chain
+/// moves it on its own: a sphere (the head), or a link off the chain that
+/// holds a sphere to it (the neck). Its segment is in the frame of the
 /// chain's joint `anchor` (`None`: the base), the joints between that one
-/// and the sphere's own, off the chain, at their neutral values.
+/// and the solid's own, off the chain, at their neutral values; a sphere's
+/// two ends are one point.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Rider {
     pub name: String,
     pub anchor: Option<usize>,
-    pub centre_mm: Vector3<f64>,
+    pub from_mm: Vector3<f64>,
+    pub to_mm: Vector3<f64>,
     pub radius_mm: f64,
+}
+
+impl Rider {
+    /// A sphere of `radius_mm` about `centre_mm` in the frame of `anchor`.
+    pub fn sphere(
+        name: &str,
+        anchor: Option<usize>,
+        centre_mm: Vector3<f64>,
+        radius_mm: f64,
+    ) -> Self {
+        Rider {
+            name: name.to_string(),
+            anchor,
+            from_mm: centre_mm,
+            to_mm: centre_mm,
+            radius_mm,
+        }
+    }
+
+    /// The solid where the anchor's frame is `frame` (in the base frame).
+    pub fn capsule_at(&self, frame: &IsometryMatrix3<f64>) -> Capsule {
+        Capsule::new(
+            frame * Point3::from(self.from_mm),
+            frame * Point3::from(self.to_mm),
+            self.radius_mm,
+        )
+    }
+
+    /// The farthest its surface is from its anchor's origin.
+    pub fn extent_mm(&self) -> f64 {
+        self.from_mm.norm().max(self.to_mm.norm()) + self.radius_mm
+    }
 }
 
 impl Chain {
@@ -205,7 +243,7 @@ impl Chain {
             .map(|j| &j.link)
             .chain([&self.effector_link])
             .map(|l| l.radius_mm);
-        let riders = self.riders.iter().map(|r| r.centre_mm.norm() + r.radius_mm);
+        let riders = self.riders.iter().map(Rider::extent_mm);
         links.chain(riders).fold(0.0, f64::max)
     }
 

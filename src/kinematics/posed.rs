@@ -131,12 +131,12 @@ mod tests {
             Vector3::new(30.0, 0.0, 0.0),
         );
         for (anchor, z) in [(Some(1), 40.0), (None, 60.0), (Some(4), 10.0)] {
-            chain.riders.push(Rider {
-                name: "ball".into(),
+            chain.riders.push(Rider::sphere(
+                "ball",
                 anchor,
-                centre_mm: Vector3::new(0.0, 0.0, z),
-                radius_mm: 20.0,
-            });
+                Vector3::new(0.0, 0.0, z),
+                20.0,
+            ));
         }
         chain
     }

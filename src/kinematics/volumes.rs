@@ -1,7 +1,7 @@
 //! A posed chain's solids: each link that spans a distance is a capsule of
 //! its radius about the segment between the frame origins it joins (the
-//! last one, the effector's link, ends at the effector), and each sphere the
-//! chain carries (the head) goes where its anchor frame takes it.
+//! last one, the effector's link, ends at the effector), and each solid the
+//! chain carries (the head, the neck) goes where its anchor frame takes it.
 //!
 //! Which of them may not meet each other: links two or more apart along the
 //! chain (the hand and the trunk) may not overlap at all, nor a sphere and
@@ -231,13 +231,7 @@ impl Chain {
                 None if moved.is_some() => (IsometryMatrix3::identity(), -1, Motion::Still),
                 None => (IsometryMatrix3::identity(), -1, Motion::Moved),
             };
-            let centre = at * Point3::from(rider.centre_mm);
-            v.push(
-                Capsule::sphere(centre, rider.radius_mm),
-                Owner::Rider(k),
-                place,
-                motion,
-            );
+            v.push(rider.capsule_at(&at), Owner::Rider(k), place, motion);
         }
     }
 }
@@ -348,12 +342,12 @@ mod tests {
             "tip",
             Vector3::zeros(),
         );
-        chain.riders.push(Rider {
-            name: "ball".into(),
-            anchor: None,
-            centre_mm: Vector3::new(0.0, 0.0, 50.0),
-            radius_mm: 20.0,
-        });
+        chain.riders.push(Rider::sphere(
+            "ball",
+            None,
+            Vector3::new(0.0, 0.0, 50.0),
+            20.0,
+        ));
         chain
     }
 
