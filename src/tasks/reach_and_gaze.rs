@@ -6,20 +6,21 @@
 //! The report holds a reach report for the hand and a gaze report for the
 //! eyes, from the one posture.
 
-use nalgebra::Point3;
+use nalgebra::{Point3, Vector2};
 
 use super::common::{chain_of, mix_seed, Common, CommonDecl, Reaching, THOROUGH_RETRY};
-use super::gaze::{limit_look, needs_look_link, GazeObstacles, Looked, Looking};
+use super::gaze::{limit_look, needs_look_link, Eyes, GazeObstacles, Looked, Looking};
 use super::why::{Failed, Found};
 use crate::collision::{Obstacles, PlacedObstacles};
 use crate::error::ErrorKind;
 use crate::kinematics::{Body, Chain};
 use crate::plugin::{
     BasePose, Dependence, EffectorNeed, IkSolution, Options, ParamSpec, Params, Placement, Plugin,
-    ReachQuery, Registry, Search, Settings, SettingsError, Subject, SubjectKind, Task, TaskInput,
-    TaskPlugin, Tries,
+    PreparedBase, ReachQuery, Registry, Search, Settings, SettingsError, Subject, SubjectKind,
+    Task, TaskInput, TaskPlugin, Tries,
 };
 use crate::report::{Asked, GazeReport, ReachAndGazeReport, ReachReport, TaskReport, Why};
+use crate::scene::Target;
 use crate::solvers::fabrik::{solve_tree, TreeGoal, TreeProblem, TreeSolution};
 use crate::solvers::FabrikSettings;
 
@@ -205,61 +206,174 @@ impl Task for ReachAndGazeTask {
         // Not walked in (`walk_in.rs`): searched with the eyes' chain, a
         // seated person's reach and gaze at a shelf took 160 M units, and
         // walked in 830 M, past the bound on solver work.
-        let alone = input
-            .base
-            .prepare(input.room, &hand_chain)
-            .reach(&query, reaching.solver.as_ref());
-        let pose = alone.pose;
+        let prepared = input.base.prepare(input.room, &hand_chain);
+        let alone = prepared.reach(&query, reaching.solver.as_ref());
+        let solving = Solving {
+            task: self,
+            input,
+            body: &body,
+            hand,
+            eyes_index,
+            eyes: &eyes,
+            obstacles: &obstacles,
+            query: &query,
+            target,
+        };
+        let mut seen = solving.attempt(alone.pose, query.seed);
+        // The tree's posture may reach with the eyes on the target and yet
+        // the view be blocked (the sight line is checked after), or its
+        // starts miss: where the hand alone reaches, it is solved again
+        // from other starts, then with the base moved, before the answer
+        // is no.
+        if !seen.ok() && alone.solution.reaches(reaching.common.tolerance_mm) {
+            let poses = again_from(alone.pose, target.position_mm, prepared.as_ref());
+            for (k, pose) in poses.into_iter().enumerate() {
+                let seed = mix_seed(
+                    query.seed,
+                    "reach+gaze again",
+                    &Point3::new(k as f64, 0.0, 0.0),
+                );
+                let again = solving.attempt(pose, seed);
+                if again.ok() {
+                    seen = again;
+                    break;
+                }
+            }
+        }
+        let Seen { mut reach, gaze } = seen;
+        if !reach.ok {
+            reach.why = self.why_not(input, &hand_chain, &alone, &query, obstacles.body.as_ref());
+        }
+        TaskReport::ReachAndGaze(Box::new(ReachAndGazeReport {
+            name: target.name.clone(),
+            person: input.person.name.clone(),
+            ok: reach.ok && gaze.ok,
+            reach,
+            gaze,
+        }))
+    }
+}
+
+/// How many more times the tree is solved from the hand's placement, from
+/// other starts, where the hand alone reaches but the first solve did not
+/// see it there.
+const TREE_TRIES: usize = 4;
+/// Then from the placement moved along the floor by these distances, in
+/// eight directions (away from the target first).
+const MOVED_MM: [f64; 2] = [100.0, 200.0];
+
+/// The placements a reach and gaze is solved again from: `pose` (the
+/// hand's) [`TREE_TRIES`] times, then `pose` moved by each of
+/// [`MOVED_MM`] away from the target, to its sides, then the other
+/// directions, where the base may stand and reach from.
+fn again_from(pose: BasePose, target_mm: Point3<f64>, base: &dyn PreparedBase) -> Vec<BasePose> {
+    let away = (pose.position_mm - target_mm).xy();
+    let away = if away.norm() > 1e-9 {
+        away.normalize()
+    } else {
+        Vector2::x()
+    };
+    let turned = |deg: f64| nalgebra::Rotation2::new(deg.to_radians()) * away;
+    let directions = [0.0, 90.0, -90.0, 45.0, -45.0, 135.0, -135.0, 180.0].map(turned);
+    let moved = MOVED_MM
+        .iter()
+        .flat_map(|&d| directions.iter().map(move |u| u * d));
+    let moved = moved
+        .filter_map(|by| base.moved(&pose, by))
+        .filter(|p| base.admits(p, &target_mm));
+    std::iter::repeat_n(pose, TREE_TRIES).chain(moved).collect()
+}
+
+/// What one tree solve needs: the task, its person's body with the look
+/// link kept to the legible range, the effectors, the eyes and the
+/// obstacles.
+struct Solving<'s, 'a> {
+    task: &'s ReachAndGazeTask,
+    input: &'s TaskInput<'a>,
+    body: &'s Body,
+    hand: usize,
+    eyes_index: usize,
+    eyes: &'s Eyes,
+    obstacles: &'s GazeObstacles<'a>,
+    query: &'s ReachQuery<'s>,
+    target: &'s Target,
+}
+
+/// One tree solve's answer: the hand's and the eyes' reports.
+struct Seen {
+    reach: ReachReport,
+    gaze: GazeReport,
+}
+
+impl Seen {
+    fn ok(&self) -> bool {
+        self.reach.ok && self.gaze.ok
+    }
+}
+
+impl Solving<'_, '_> {
+    /// Hand and eyes solved together by the tree from the base at `pose`,
+    /// its starts drawn from `seed`, and what the posture reaches and sees.
+    fn attempt(&self, pose: BasePose, seed: u64) -> Seen {
+        let reaching = &self.task.reaching;
+        let target = self.target;
         let goal = pose.to_base(&target.position_mm);
         let goals = [
             TreeGoal {
-                effector: hand,
+                effector: self.hand,
                 target_mm: goal,
                 weight: 1.0,
             },
             TreeGoal {
-                effector: eyes_index,
+                effector: self.eyes_index,
                 target_mm: goal,
-                weight: self.gaze_weight,
+                weight: self.task.gaze_weight,
             },
         ];
+        let own = self.input.base.own_body();
         let tree = solve_tree(
-            &self.tree.unwrap_or_else(FabrikSettings::with_defaults),
+            &self.task.tree.unwrap_or_else(FabrikSettings::with_defaults),
             &TreeProblem {
-                body: &body,
+                body: self.body,
                 goals: &goals,
                 tolerance_mm: reaching.common.tolerance_mm,
-                seed: query.seed,
-                obstacles: obstacles.body.as_ref().map(|o| PlacedObstacles {
+                seed,
+                obstacles: self.obstacles.body.as_ref().map(|o| PlacedObstacles {
                     obstacles: o,
                     own,
                     base_pose: pose,
                 }),
-                meter: input.meter,
+                meter: self.input.meter,
             },
         );
         let asked = |chain| Asked {
             subject: &target.name,
-            person: input.person,
+            person: self.input.person,
             chain,
             solver: &reaching.common.solver.name,
             tolerance_mm: reaching.common.tolerance_mm,
-            room: input.room,
+            room: self.input.room,
             own,
         };
-        let hand_chain = body.chain(hand);
-        let mut hand_placement = placed(&body, hand, &hand_chain, &tree, pose, target.position_mm);
-        hand_placement.solution.collision = query
+        let body = self.body;
+        let hand_chain = body.chain(self.hand);
+        let mut hand_placement = placed(
+            body,
+            self.hand,
+            &hand_chain,
+            &tree,
+            pose,
+            target.position_mm,
+        );
+        hand_placement.solution.collision = self
+            .query
             .problem(&hand_chain, pose)
             .collision(&hand_placement.solution.q);
-        let mut reach = ReachReport::new(&asked(&hand_chain), &hand_placement, target.position_mm);
-        if !reach.ok {
-            reach.why = self.why_not(input, &hand_chain, &alone, &query, obstacles.body.as_ref());
-        }
-        let eyes_chain = body.chain(eyes_index);
+        let reach = ReachReport::new(&asked(&hand_chain), &hand_placement, target.position_mm);
+        let eyes_chain = body.chain(self.eyes_index);
         let eyes_placement = placed(
-            &body,
-            eyes_index,
+            body,
+            self.eyes_index,
             &eyes_chain,
             &tree,
             pose,
@@ -270,20 +384,14 @@ impl Task for ReachAndGazeTask {
             placement: &eyes_placement,
             target: target.position_mm,
         };
-        let sight = looked.see(&obstacles, reaching.common.tolerance_mm, &eyes);
+        let sight = looked.see(self.obstacles, reaching.common.tolerance_mm, self.eyes);
         let gaze = GazeReport::new(
             &asked(&eyes_chain),
             &eyes_placement,
             target.position_mm,
             sight,
         );
-        TaskReport::ReachAndGaze(Box::new(ReachAndGazeReport {
-            name: target.name.clone(),
-            person: input.person.name.clone(),
-            ok: reach.ok && gaze.ok,
-            reach,
-            gaze,
-        }))
+        Seen { reach, gaze }
     }
 }
 
