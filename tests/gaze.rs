@@ -203,3 +203,32 @@ reach a1 and gaze by rb { size 10mm seed 2 }
     // And the hand on it: within the tolerance.
     assert!(both.reach.ok && both.reach.distance_mm <= both.reach.tolerance_mm);
 }
+
+/// A board 50 mm in front of a sign with 200 mm letters, covering it, hides
+/// it, however large the letters (a helper's find: the line of sight
+/// stopped half the letters' size short of the sign, and passed the board
+/// by; 150 mm letters were hidden, 200 mm ones "visible").
+#[test]
+fn a_board_just_in_front_of_a_sign_hides_it_whatever_the_letters_size() {
+    for size in ["150mm", "200mm"] {
+        let text = format!(
+            "units mm deg
+use std::people
+room r {{
+  size 6000 x 4000 x 2500
+  box screen at (5900, 1800, 1400) size (40, 400, 500)
+  target sign at (5990, 2000, 1643)
+}}
+person m50s {{ mannequin man_50th base fixed {{ at (2000, 2000, 930) heading 0 }} }}
+gaze sign by m50s {{ size {size} }}
+"
+        );
+        let report = run(Input::Text {
+            name: "screen.reach",
+            text: &text,
+        });
+        let seen = gaze(&report, "sign", "m50s");
+        assert_eq!(seen.reason, Some("occluded"), "{size}: {seen:?}");
+        assert_eq!(seen.occluded_by.as_deref(), Some("screen"), "{size}");
+    }
+}

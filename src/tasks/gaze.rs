@@ -295,6 +295,13 @@ impl<'a> GazeObstacles<'a> {
     }
 }
 
+/// How far short of the target the line of sight stops: the surface the
+/// target lies on does not hide it, but a board in front of it does,
+/// however large the object (it stopped half the object's size short
+/// before, and a board 50 mm in front of a sign of 200 mm letters hid
+/// nothing).
+const SIGHT_END_GAP_MM: f64 = 1.0;
+
 /// A posture placed to look at `target`, with `chain` the eyes' chain.
 pub(super) struct Looked<'a> {
     pub chain: &'a Chain,
@@ -308,7 +315,7 @@ impl Looked<'_> {
     /// base, naming the first thing it meets; the body's parts when
     /// collisions are on.
     pub fn see(&self, obstacles: &GazeObstacles<'_>, tolerance_mm: f64, eyes: &Eyes) -> Sight {
-        let look = self.look(obstacles, eyes.size_mm);
+        let look = self.look(obstacles);
         let sight = Sight {
             reason: None,
             occluded_by: look.occluded_by,
@@ -334,7 +341,7 @@ impl Looked<'_> {
 
     /// Where the eyes are in the placed posture, and what lies between
     /// them and the target.
-    fn look(&self, obstacles: &GazeObstacles<'_>, size_mm: f64) -> Look {
+    fn look(&self, obstacles: &GazeObstacles<'_>) -> Look {
         let q = &self.placement.solution.q;
         let pose = &self.placement.pose;
         // The eyes: the frame before the look link, looking along its z axis.
@@ -343,7 +350,7 @@ impl Looked<'_> {
         let eyes_room = pose.to_room(&eyes_base);
         let look_room = pose.direction_to_room(&(eye_frame.rotation * Vector3::z()));
         let to_target = self.target - eyes_room;
-        let gap = size_mm / 2.0;
+        let gap = SIGHT_END_GAP_MM;
         let room_hit = obstacles
             .sight
             .first_on_sight_line(&eyes_room, &self.target, gap);
