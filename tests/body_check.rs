@@ -88,12 +88,26 @@ pub fn parts(
     base: &BaseReport,
     allowance_mm: f64,
 ) -> Vec<Part> {
+    parts_with(body, effector, posture, None, base, allowance_mm)
+}
+
+/// [`parts`], the joints off the effector's path at `others`' values
+/// where it names them (the eyes' posture of a reach and gaze, which
+/// turns the head), else at neutral.
+pub fn parts_with(
+    body: &Body,
+    effector: &str,
+    posture: &Posture,
+    others: Option<&Posture>,
+    base: &BaseReport,
+    allowance_mm: f64,
+) -> Vec<Part> {
     let e = body
         .effector_index(effector)
         .expect("the report's effector");
     let path = body.path(body.effectors[e].joint);
     assert_eq!(path.len(), posture.0.len());
-    let frames = body_frames(body, &path, posture);
+    let frames = body_frames(body, &path, posture, others);
     let origin =
         |j: Option<usize>| j.map_or(Point3::origin(), |j| point(&frames[j], &Vector3::zeros()));
     let mut parts = Vec::new();
@@ -185,20 +199,28 @@ pub fn parts(
 }
 
 /// Every joint's frame in the base frame, by eq. 3's matrices: the path's
-/// joints at the posture's values, the others at neutral.
-fn body_frames(body: &Body, path: &[usize], posture: &Posture) -> Vec<Matrix4<f64>> {
+/// joints at the posture's values, the others at `others`' where it names
+/// them, else at neutral.
+fn body_frames(
+    body: &Body,
+    path: &[usize],
+    posture: &Posture,
+    others: Option<&Posture>,
+) -> Vec<Matrix4<f64>> {
     let mut frames: Vec<Matrix4<f64>> = Vec::with_capacity(body.joints.len());
     for (j, joint) in body.joints.iter().enumerate() {
-        let value = match path.iter().position(|&p| p == j) {
+        let named = |p: &Posture| p.0.iter().find(|(n, _)| n == &joint.name).map(|(_, v)| *v);
+        let reported = match path.iter().position(|&p| p == j) {
             Some(k) => {
-                let (name, value) = &posture.0[k];
-                assert_eq!(&joint.name, name);
-                match joint.kind {
-                    JointKind::Revolute => value.to_radians(),
-                    JointKind::Prismatic => *value,
-                }
+                assert_eq!(joint.name, posture.0[k].0);
+                Some(posture.0[k].1)
             }
-            None => joint.neutral,
+            None => others.and_then(named),
+        };
+        let value = match (reported, joint.kind) {
+            (Some(v), JointKind::Revolute) => v.to_radians(),
+            (Some(v), JointKind::Prismatic) => v,
+            (None, _) => joint.neutral,
         };
         let (theta, d) = match joint.kind {
             JointKind::Revolute => (joint.dh.theta_rad + value, joint.dh.d_mm),

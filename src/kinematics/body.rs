@@ -101,8 +101,20 @@ impl Body {
 
     /// The chain from the base to effector `index`, carrying the body's
     /// spheres and the links off its path that hold them to it
-    /// ([`Body::holding_links`]).
+    /// ([`Body::holding_links`]), those joints at their neutral values.
     pub fn chain(&self, index: usize) -> Chain {
+        self.chain_at(index, None)
+    }
+
+    /// [`Body::chain`], carrying the solids off its path where `q` (a
+    /// value for each joint of the body) puts them: a hand's chain as it
+    /// is while another task's joints (the eyes', turning the head) hold
+    /// their own posture.
+    pub fn chain_posed(&self, index: usize, q: &[f64]) -> Chain {
+        self.chain_at(index, Some(q))
+    }
+
+    fn chain_at(&self, index: usize, q: Option<&[f64]>) -> Chain {
         let effector = &self.effectors[index];
         let path = self.path(effector.joint);
         Chain {
@@ -110,7 +122,11 @@ impl Body {
             effector_name: effector.name.clone(),
             effector_mm: effector.offset_mm,
             effector_link: effector.link.clone(),
-            riders: self.riders_on(&path).into_iter().map(|(_, r)| r).collect(),
+            riders: self
+                .riders_at(&path, q)
+                .into_iter()
+                .map(|(_, r)| r)
+                .collect(),
             couplings: self.couplings_on(&path),
         }
     }
@@ -119,12 +135,20 @@ impl Body {
     /// the body joint it sits on (`None`: the base): the spheres, then the
     /// links that hold them to it.
     pub fn riders_on(&self, path: &[usize]) -> Vec<(Option<usize>, Rider)> {
-        let spheres = self
-            .spheres
-            .iter()
-            .map(|s| (s.joint, self.sphere_rider(s, path)));
+        self.riders_at(path, None)
+    }
+
+    /// [`Body::riders_on`], the joints off `path` at `q`'s values (a value
+    /// for each joint of the body; none: neutral).
+    fn riders_at(&self, path: &[usize], q: Option<&[f64]>) -> Vec<(Option<usize>, Rider)> {
+        let carry = Carry {
+            body: self,
+            path,
+            q,
+        };
+        let spheres = self.spheres.iter().map(|s| (s.joint, carry.sphere(s)));
         let links = self.holding_links(path).into_iter();
-        let links = links.filter_map(|j| Some((Some(j), self.link_rider(j, path)?)));
+        let links = links.filter_map(|j| Some((Some(j), carry.link(j)?)));
         spheres.chain(links).collect()
     }
 
@@ -154,23 +178,44 @@ impl Body {
             .collect()
     }
 
-    /// Sphere `s` as a chain along `path` carries it.
-    fn sphere_rider(&self, s: &Sphere, path: &[usize]) -> Rider {
-        let (anchor, centre) = self.carried(Point3::from(s.centre_mm), s.joint, path);
+    /// The chain of the effector named, or of the first.
+    pub fn chain_named(&self, effector: Option<&str>) -> Option<Chain> {
+        let index = match effector {
+            Some(name) => self.effector_index(name)?,
+            None => 0,
+        };
+        Some(self.chain(index))
+    }
+}
+
+/// How a chain along `path` carries the body's solids off it: the joints
+/// between at `q`'s values (a value for each joint of the body), or at
+/// their neutral ones.
+struct Carry<'b> {
+    body: &'b Body,
+    path: &'b [usize],
+    q: Option<&'b [f64]>,
+}
+
+impl Carry<'_> {
+    /// Sphere `s` as the chain carries it.
+    fn sphere(&self, s: &Sphere) -> Rider {
+        let (anchor, centre) = self.carried(Point3::from(s.centre_mm), s.joint);
         Rider::sphere(&s.name, anchor, centre.coords, s.radius_mm)
     }
 
-    /// The link of joint `j` (off `path`) as a chain along `path` carries
-    /// it: from its parent's frame origin to its own. None where it is not
-    /// a solid (no radius, or no length).
-    fn link_rider(&self, j: usize, path: &[usize]) -> Option<Rider> {
-        let joint = &self.joints[j];
-        let end = joint.transform(joint.neutral) * Point3::origin();
+    /// The link of joint `j` (off the path) as the chain carries it: from
+    /// its parent's frame origin to its own. None where it is not a solid
+    /// (no radius, or no length).
+    fn link(&self, j: usize) -> Option<Rider> {
+        let body = self.body;
+        let joint = &body.joints[j];
+        let end = joint.transform(self.value(j)) * Point3::origin();
         if joint.link.radius_mm <= 0.0 || end.coords.norm() <= 1e-6 {
             return None;
         }
-        let (anchor, from) = self.carried(Point3::origin(), self.parents[j], path);
-        let (_, to) = self.carried(end, self.parents[j], path);
+        let (anchor, from) = self.carried(Point3::origin(), body.parents[j]);
+        let (_, to) = self.carried(end, body.parents[j]);
         Some(Rider {
             name: joint.link.name.clone(),
             anchor,
@@ -180,35 +225,23 @@ impl Body {
         })
     }
 
-    /// Point `p` in the frame of `joint` as a chain along `path` carries
-    /// it: in the frame of the last joint of `path` among `joint`'s
-    /// ancestors (its place on the chain), the joints between at their
-    /// neutral values.
-    fn carried(
-        &self,
-        mut p: Point3<f64>,
-        joint: Option<usize>,
-        path: &[usize],
-    ) -> (Option<usize>, Point3<f64>) {
-        let mut at = joint;
-        while let Some(j) = at {
-            if path.contains(&j) {
-                break;
-            }
-            let joint = &self.joints[j];
-            p = joint.transform(joint.neutral) * p;
-            at = self.parents[j];
-        }
-        (at.and_then(|j| path.iter().position(|&q| q == j)), p)
+    fn value(&self, j: usize) -> f64 {
+        self.q.map_or(self.body.joints[j].neutral, |q| q[j])
     }
 
-    /// The chain of the effector named, or of the first.
-    pub fn chain_named(&self, effector: Option<&str>) -> Option<Chain> {
-        let index = match effector {
-            Some(name) => self.effector_index(name)?,
-            None => 0,
-        };
-        Some(self.chain(index))
+    /// Point `p` in the frame of `joint` as the chain carries it: in the
+    /// frame of the last joint of the path among `joint`'s ancestors (its
+    /// place on the chain).
+    fn carried(&self, mut p: Point3<f64>, joint: Option<usize>) -> (Option<usize>, Point3<f64>) {
+        let mut at = joint;
+        while let Some(j) = at {
+            if self.path.contains(&j) {
+                break;
+            }
+            p = self.body.joints[j].transform(self.value(j)) * p;
+            at = self.body.parents[j];
+        }
+        (at.and_then(|j| self.path.iter().position(|&q| q == j)), p)
     }
 }
 
@@ -288,6 +321,12 @@ mod tests {
         let eyes = body.chain(1);
         let riders: Vec<&str> = eyes.riders.iter().map(|r| r.name.as_str()).collect();
         assert_eq!(riders, ["head"]);
+        // Posed: the neck turned a quarter turn carries its end round.
+        let mut q = vec![0.0; body.joints.len()];
+        q[3] = std::f64::consts::FRAC_PI_2;
+        let turned = body.chain_posed(0, &q);
+        assert!((turned.riders[1].to_mm - Vector3::new(0.0, 100.0, 0.0)).norm() < 1e-9);
+        assert!((turned.riders[0].from_mm - Vector3::new(0.0, 100.0, 50.0)).norm() < 1e-9);
         // A link that is no solid is not carried.
         body.joints[3].link.radius_mm = 0.0;
         assert_eq!(body.chain(0).riders.len(), 1);

@@ -356,7 +356,8 @@ impl Solving<'_, '_> {
             own,
         };
         let body = self.body;
-        let hand_chain = body.chain(self.hand);
+        // The head and neck where the eyes' joints turned them.
+        let hand_chain = body.chain_posed(self.hand, &tree.q);
         let mut hand_placement = placed(
             body,
             self.hand,

@@ -83,13 +83,31 @@ struct Branch {
 /// Solve from the settings' starts; the best posture (all reaching, then
 /// least weighted distance) is kept.
 pub fn solve_tree(settings: &FabrikSettings, problem: &TreeProblem<'_>) -> TreeSolution {
+    let body = problem.body;
+    let paths: Vec<Vec<usize>> = problem
+        .goals
+        .iter()
+        .map(|g| body.path(body.effectors[g.effector].joint))
+        .collect();
     let branches: Vec<Branch> = problem
         .goals
         .iter()
-        .map(|g| {
-            let chain = problem.body.chain(g.effector);
+        .zip(&paths)
+        .enumerate()
+        .map(|(b, (g, path))| {
+            let mut chain = body.chain(g.effector);
+            // A solid another branch moves (the head, which the eyes'
+            // branch turns) is that branch's to check, where it is: this
+            // one would carry it at neutral.
+            let others = |j: usize| (0..paths.len()).any(|o| o != b && paths[o].contains(&j));
+            let on: Vec<Option<usize>> = body.riders_on(path).into_iter().map(|(j, _)| j).collect();
+            let mut k = 0;
+            chain.riders.retain(|_| {
+                k += 1;
+                !on[k - 1].is_some_and(others)
+            });
             Branch {
-                path: problem.body.path(problem.body.effectors[g.effector].joint),
+                path: path.clone(),
                 bones: bones(&chain),
                 chain,
             }
