@@ -222,9 +222,15 @@ impl Task for ReachAndGazeTask {
         let mut seen = solving.attempt(alone.pose, query.seed);
         // The tree's posture may reach with the eyes on the target and yet
         // the view be blocked (the sight line is checked after), or its
-        // starts miss: where the hand alone reaches, it is solved again
-        // from other starts, then with the base moved, before the answer
-        // is no.
+        // starts miss: where the hand alone reaches, the eyes are solved
+        // with the hand held there, then the tree again from other starts,
+        // then with the base moved, before the answer is no.
+        if !seen.ok() && alone.solution.reaches(reaching.common.tolerance_mm) {
+            let held = solving.eyes_after_hand(alone.pose, &alone.solution.q, query.seed);
+            if held.ok() {
+                seen = held;
+            }
+        }
         if !seen.ok() && alone.solution.reaches(reaching.common.tolerance_mm) {
             let poses = again_from(alone.pose, target.position_mm, prepared.as_ref());
             for (k, pose) in poses.into_iter().enumerate() {
@@ -315,7 +321,6 @@ impl Solving<'_, '_> {
     /// Hand and eyes solved together by the tree from the base at `pose`,
     /// its starts drawn from `seed`, and what the posture reaches and sees.
     fn attempt(&self, pose: BasePose, seed: u64) -> Seen {
-        let reaching = &self.task.reaching;
         let target = self.target;
         let goal = pose.to_base(&target.position_mm);
         let goals = [
@@ -330,13 +335,45 @@ impl Solving<'_, '_> {
                 weight: self.task.gaze_weight,
             },
         ];
+        let tree = self.solve(self.body, &goals, pose, seed);
+        self.judge(pose, &tree)
+    }
+
+    /// The hand kept where the hand alone reached (`hand_q`, a value for
+    /// each joint of its chain) and only the eyes solved, every joint on
+    /// the hand's path held: where the hand's own posture leaves the head
+    /// free to look.
+    fn eyes_after_hand(&self, pose: BasePose, hand_q: &[f64], seed: u64) -> Seen {
+        let mut held = self.body.clone();
+        let path = held.path(held.effectors[self.hand].joint);
+        for (&j, &value) in path.iter().zip(hand_q) {
+            let joint = &mut held.joints[j];
+            (joint.min, joint.max, joint.neutral) = (value, value, value);
+        }
+        // The held values keep the couplings (the hand's posture did).
+        held.couplings
+            .retain(|c| !c.joints.iter().any(|j| path.contains(j)));
+        let goals = [TreeGoal {
+            effector: self.eyes_index,
+            target_mm: pose.to_base(&self.target.position_mm),
+            weight: 1.0,
+        }];
+        let mut tree = self.solve(&held, &goals, pose, seed);
+        for (&j, &value) in path.iter().zip(hand_q) {
+            tree.q[j] = value;
+        }
+        self.judge(pose, &tree)
+    }
+
+    /// `body`'s tree solve for `goals` from the base at `pose`.
+    fn solve(&self, body: &Body, goals: &[TreeGoal], pose: BasePose, seed: u64) -> TreeSolution {
         let own = self.input.base.own_body();
-        let tree = solve_tree(
+        solve_tree(
             &self.task.tree.unwrap_or_else(FabrikSettings::with_defaults),
             &TreeProblem {
-                body: self.body,
-                goals: &goals,
-                tolerance_mm: reaching.common.tolerance_mm,
+                body,
+                goals,
+                tolerance_mm: self.task.reaching.common.tolerance_mm,
                 seed,
                 obstacles: self.obstacles.body.as_ref().map(|o| PlacedObstacles {
                     obstacles: o,
@@ -345,7 +382,14 @@ impl Solving<'_, '_> {
                 }),
                 meter: self.input.meter,
             },
-        );
+        )
+    }
+
+    /// What the posture `tree` reaches and sees from the base at `pose`.
+    fn judge(&self, pose: BasePose, tree: &TreeSolution) -> Seen {
+        let reaching = &self.task.reaching;
+        let target = self.target;
+        let own = self.input.base.own_body();
         let asked = |chain| Asked {
             subject: &target.name,
             person: self.input.person,
@@ -358,14 +402,8 @@ impl Solving<'_, '_> {
         let body = self.body;
         // The head and neck where the eyes' joints turned them.
         let hand_chain = body.chain_posed(self.hand, &tree.q);
-        let mut hand_placement = placed(
-            body,
-            self.hand,
-            &hand_chain,
-            &tree,
-            pose,
-            target.position_mm,
-        );
+        let mut hand_placement =
+            placed(body, self.hand, &hand_chain, tree, pose, target.position_mm);
         hand_placement.solution.collision = self
             .query
             .problem(&hand_chain, pose)
@@ -376,7 +414,7 @@ impl Solving<'_, '_> {
             body,
             self.eyes_index,
             &eyes_chain,
-            &tree,
+            tree,
             pose,
             target.position_mm,
         );
