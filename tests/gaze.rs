@@ -157,6 +157,23 @@ fn segment_meets_box(a: [f64; 3], b: [f64; 3], lo: [f64; 3], size: [f64; 3]) -> 
     enter < leave
 }
 
+/// The reported line of sight, stopped a millimetre short of the target,
+/// misses every box of `size` at each of the `corners`.
+fn assert_line_of_sight_misses(gaze: &GazeReport, corners: &[[f64; 3]], size: [f64; 3]) {
+    let (eyes, target) = (gaze.eyes_mm, gaze.target_mm);
+    let length: f64 = (0..3)
+        .map(|k| (target[k] - eyes[k]).powi(2))
+        .sum::<f64>()
+        .sqrt();
+    let end = [0, 1, 2].map(|k| target[k] - (target[k] - eyes[k]) / length);
+    for &corner in corners {
+        assert!(
+            !segment_meets_box(eyes, end, corner, size),
+            "the box at {corner:?} is on the line of sight from {eyes:?}"
+        );
+    }
+}
+
 /// The big man with his rollator, reaching a pot on the bottom shelf
 /// while looking at it (seed 2): the first tree solve put the hand on it
 /// with the view blocked by the shelf above, and the answer was "NOT
@@ -186,20 +203,9 @@ reach a1 and gaze by rb { size 10mm seed 2 }
         panic!("a reach and gaze")
     };
     assert!(both.ok, "{:?}", both.gaze.reason);
-    let (eyes, target) = (both.gaze.eyes_mm, both.gaze.target_mm);
-    let length: f64 = (0..3)
-        .map(|k| (target[k] - eyes[k]).powi(2))
-        .sum::<f64>()
-        .sqrt();
-    // Stopped a millimetre short of the target (on the pot, 60 mm above
-    // shelf_1).
-    let end = [0, 1, 2].map(|k| target[k] - (target[k] - eyes[k]) / length);
-    for z in [400.0, 900.0, 1400.0, 1900.0] {
-        assert!(
-            !segment_meets_box(eyes, end, [1500.0, 2900.0, z], [800.0, 300.0, 20.0]),
-            "the shelf at {z} mm is on the line of sight from {eyes:?}"
-        );
-    }
+    // On the pot, 60 mm above shelf_1.
+    let shelves = [400.0, 900.0, 1400.0, 1900.0].map(|z| [1500.0, 2900.0, z]);
+    assert_line_of_sight_misses(&both.gaze, &shelves, [800.0, 300.0, 20.0]);
     // And the hand on it: within the tolerance.
     assert!(both.reach.ok && both.reach.distance_mm <= both.reach.tolerance_mm);
 }
@@ -264,16 +270,6 @@ reach s5_front and gaze by rm { size 10mm seed 2 }
         panic!("a reach and gaze")
     };
     assert!(both.ok, "{:?} {:?}", both.reach.why, both.gaze.reason);
-    let (eyes, target) = (both.gaze.eyes_mm, both.gaze.target_mm);
-    let length: f64 = (0..3)
-        .map(|k| (target[k] - eyes[k]).powi(2))
-        .sum::<f64>()
-        .sqrt();
-    let end = [0, 1, 2].map(|k| target[k] - (target[k] - eyes[k]) / length);
-    for z in [1300.0, 1600.0, 1900.0] {
-        assert!(
-            !segment_meets_box(eyes, end, [1020.0, 0.0, z], [800.0, 300.0, 20.0]),
-            "the board at {z} mm is on the line of sight from {eyes:?}"
-        );
-    }
+    let boards = [1300.0, 1600.0, 1900.0].map(|z| [1020.0, 0.0, z]);
+    assert_line_of_sight_misses(&both.gaze, &boards, [800.0, 300.0, 20.0]);
 }

@@ -226,24 +226,16 @@ impl Task for ReachAndGazeTask {
         // with the hand held there, then the tree again from other starts,
         // then with the base moved, before the answer is no.
         if !seen.ok() && alone.solution.reaches(reaching.common.tolerance_mm) {
-            let held = solving.eyes_after_hand(alone.pose, &alone.solution.q, query.seed);
-            if held.ok() {
-                seen = held;
-            }
-        }
-        if !seen.ok() && alone.solution.reaches(reaching.common.tolerance_mm) {
+            let held = std::iter::once_with(|| {
+                solving.eyes_after_hand(alone.pose, &alone.solution.q, query.seed)
+            });
             let poses = again_from(alone.pose, target.position_mm, prepared.as_ref());
-            for (k, pose) in poses.into_iter().enumerate() {
-                let seed = mix_seed(
-                    query.seed,
-                    "reach+gaze again",
-                    &Point3::new(k as f64, 0.0, 0.0),
-                );
-                let again = solving.attempt(pose, seed);
-                if again.ok() {
-                    seen = again;
-                    break;
-                }
+            let tries = poses.into_iter().enumerate().map(|(k, pose)| {
+                let at = Point3::new(k as f64, 0.0, 0.0);
+                solving.attempt(pose, mix_seed(query.seed, "reach+gaze again", &at))
+            });
+            if let Some(found) = held.chain(tries).find(Seen::ok) {
+                seen = found;
             }
         }
         let Seen { mut reach, gaze } = seen;

@@ -100,12 +100,12 @@ pub fn solve_tree(settings: &FabrikSettings, problem: &TreeProblem<'_>) -> TreeS
             // branch turns) is that branch's to check, where it is: this
             // one would carry it at neutral.
             let others = |j: usize| (0..paths.len()).any(|o| o != b && paths[o].contains(&j));
-            let on: Vec<Option<usize>> = body.riders_on(path).into_iter().map(|(j, _)| j).collect();
-            let mut k = 0;
-            chain.riders.retain(|_| {
-                k += 1;
-                !on[k - 1].is_some_and(others)
-            });
+            chain.riders = body
+                .riders_on(path)
+                .into_iter()
+                .filter(|(on, _)| !on.is_some_and(others))
+                .map(|(_, rider)| rider)
+                .collect();
             Branch {
                 path: path.clone(),
                 bones: bones(&chain),
