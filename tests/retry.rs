@@ -247,3 +247,41 @@ fn a_reach_walks_into_a_shelf_where_the_map_reaches() {
         );
     }
 }
+
+/// Along a counter that is the same from end to end, the points of one row
+/// of its front are one problem moved along the wall: each gets the same
+/// share of a population. The 100 manual wheelchair users of
+/// `examples/population.reach` sit flush against the counter to reach its
+/// lowest rows, on the edge of the floor their chair may stand on; a
+/// point tried from its neighbour's placement moved along that edge was
+/// refused (the edge is not inside the floor), and their shares along the
+/// lowest row went 50, 51, 52, 52, 51, 52, 52, 50, 50, 50 %.
+#[test]
+fn a_map_along_a_counter_the_same_from_end_to_end_gives_each_row_one_share() {
+    let text = std::fs::read_to_string("examples/population.reach").unwrap();
+    let tasks_at = text.find("reach kettle").unwrap();
+    let text = format!(
+        "{}map counter_front by chair_users {{ step 100mm }}\n",
+        &text[..tasks_at]
+    );
+    let report = run_text("population.reach", &text);
+    let TaskReport::Population(map) = &report.tasks[0] else {
+        panic!("a population's map: {:?}", report.tasks[0]);
+    };
+    let cells = map.cells.as_ref().expect("a map's cells");
+    // The counter runs 3 m along the wall, the surface its middle metre:
+    // every point is 1 m from its ends.
+    let rows = map.grid.as_ref().expect("a map's grid").rows;
+    assert!(rows >= 10, "{rows} rows");
+    for row in 0..rows {
+        let shares: Vec<usize> = cells
+            .iter()
+            .filter(|c| c.row == row)
+            .map(|c| c.reached)
+            .collect();
+        assert!(
+            shares.iter().all(|&s| s == shares[0]),
+            "row {row}: people reaching each point {shares:?}"
+        );
+    }
+}

@@ -875,11 +875,27 @@ impl PreparedBase for PreparedMobile<'_> {
             .regions()
             .find(|(heading, _)| *heading == pose.heading_rad)?;
         let to = pose.position_mm + by_mm.push(0.0);
-        region.contains(to.x, to.y).then_some(BasePose {
+        on_floor(region, to.x, to.y).then_some(BasePose {
             position_mm: to,
             heading_rad: pose.heading_rad,
         })
     }
+}
+
+/// How far outside `region` a base moved along the floor may be and still
+/// stand on it: rounding. A placement nearest the preferred point lies on
+/// the region's edge (a wheelchair's side against the shelves it reaches
+/// into); moved along that edge, as a map's next point is tried from it, it
+/// stays on the edge, where the base stands as well as it did.
+const ON_EDGE_MM: f64 = 1e-6;
+
+/// Whether a base may stand at `(x, y)` of `region`: inside it, or on its
+/// edge (within [`ON_EDGE_MM`]).
+fn on_floor(region: &Region, x: f64, y: f64) -> bool {
+    region.contains(x, y)
+        || region
+            .nearest(Point::new(x, y))
+            .is_some_and(|n| (n.x() - x).hypot(n.y() - y) <= ON_EDGE_MM)
 }
 
 /// What is reported when no candidate placement is left (a task whose
