@@ -273,3 +273,38 @@ proptest! {
         }
     }
 }
+
+/// Beside a wheelchair in an empty room, a line of low targets 10 mm
+/// apart has no hole. The 5th-percentile woman reached (2000, 2000, 300)
+/// and 360, but not 320 and 340: the search kept a placement with the
+/// target over the chair's right wheel, and retried only from there. A
+/// reach blocked by the chair or the person's own legs is now walked in
+/// from a little higher or lower, where the hand clears them
+/// (`tasks/walk_in.rs`).
+#[test]
+fn a_line_of_low_targets_beside_a_wheelchair_has_no_hole() {
+    let points: Vec<[f64; 3]> = (0..13)
+        .map(|k| [2000.0, 2000.0, 280.0 + 10.0 * f64::from(k)])
+        .collect();
+    let targets = targets(&points);
+    let mut text =
+        String::from("units mm deg\nuse std::people\nroom r {\n  size 4000 x 4000 x 2500\n");
+    for (name, [x, y, z]) in &targets {
+        text += &format!("  target {name} at ({x}, {y}, {z})\n");
+    }
+    let names: Vec<&str> = targets.iter().map(|(n, _)| n.as_str()).collect();
+    text += &format!(
+        "}}\nperson w5 {{ mannequin woman_5th_seated base manual_wheelchair }}\nreach {} by w5\n",
+        names.join(", ")
+    );
+    let found = line(&run(&text));
+    assert!(
+        holes(&found).is_empty(),
+        "{found}: holes at {:?}",
+        holes(&found)
+    );
+    assert!(
+        found.starts_with('#'),
+        "{found}: 280 mm, reached before, is not"
+    );
+}

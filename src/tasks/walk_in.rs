@@ -10,8 +10,11 @@
 //! searched as the target was with that placement as the last resort. It
 //! is how a map reaches into a shelf from its front row (`map_grid.rs`),
 //! done for one target: without it a reach called points NOT reachable
-//! that the map of the same shelf reaches. A walk makes at most
-//! [`MOST_SEARCHES`] searches.
+//! that the map of the same shelf reaches. Where it came within the
+//! tolerance only through the chair or the person's own legs (a hand
+//! through the wheel beside it), the walk goes up and then down instead:
+//! a little higher the hand clears the wheel, and comes down beside it.
+//! A walk makes at most [`MOST_SEARCHES`] searches.
 //!
 //! What it finds is a posture checked like any other (within the
 //! tolerance, clear of the room, the person's body and base): it can only
@@ -79,16 +82,23 @@ impl WalkIn<'_> {
     /// the room and the walk gets there.
     fn reached(&self, blocked: &Placement) -> Option<Placement> {
         let solution = &blocked.solution;
-        // Only the room: a posture through the person's own thigh, chair
-        // or other arm is not in a shelf to be walked out of.
-        let by_the_room = solution
-            .collision
-            .as_ref()
-            .is_some_and(|c| matches!(c.blocker, Blocker::Obstacle(_) | Blocker::Wall(_)));
-        if !by_the_room || solution.distance_mm > self.query.tolerance_mm {
+        if solution.distance_mm > self.query.tolerance_mm {
             return None;
         }
         let target = self.query.target_room_mm;
+        match solution.collision.as_ref().map(|c| c.blocker) {
+            Some(Blocker::Obstacle(_) | Blocker::Wall(_)) => {}
+            // Through the chair or the person's own legs: the hand beside
+            // a wheel or under the knees, a little higher or lower, where
+            // it goes round them.
+            Some(Blocker::Own(_)) => {
+                let vertical = [Vector3::z(), -Vector3::z()];
+                return vertical
+                    .into_iter()
+                    .find_map(|out| self.walked_along(target, out));
+            }
+            _ => return None,
+        }
         let towards_base = (blocked.pose.position_mm - target).xy().try_normalize(1e-9);
         let d = std::f64::consts::FRAC_1_SQRT_2;
         let across = [
@@ -105,13 +115,13 @@ impl WalkIn<'_> {
         towards_base
             .into_iter()
             .chain(across)
-            .find_map(|out| self.walked_along(target, out))
+            .find_map(|out| self.walked_along(target, Vector3::new(out.x, out.y, 0.0)))
     }
 
-    /// The target reached by walking in along `out` (a unit vector on the
-    /// floor), if the walk gets there.
-    fn walked_along(&self, target: Point3<f64>, out: Vector2<f64>) -> Option<Placement> {
-        let along = |k: usize| target + Vector3::new(out.x, out.y, 0.0) * (k as f64 * STEP_MM);
+    /// The target reached by walking in along `out` (a unit vector), if
+    /// the walk gets there.
+    fn walked_along(&self, target: Point3<f64>, out: Vector3<f64>) -> Option<Placement> {
+        let along = |k: usize| target + out * (k as f64 * STEP_MM);
         let (k, mut last) = (SEARCHED_EVERY..=STEPS_OUT)
             .step_by(SEARCHED_EVERY)
             .find_map(|k| self.searched(along(k), k).map(|p| (k, p)))?;
