@@ -273,3 +273,43 @@ reach s5_front and gaze by rm { size 10mm seed 2 }
     let boards = [1300.0, 1600.0, 1900.0].map(|z| [1020.0, 0.0, z]);
     assert_line_of_sight_misses(&both.gaze, &boards, [800.0, 300.0, 20.0]);
 }
+
+/// A sign of 20 mm letters 3.9 m away, seen through a slit in a wall half
+/// way: through a 2 mm slit the line to its centre passes, but a strip of
+/// the letters 4 mm high is all that shows, and it is not read; through a
+/// 30 mm one it is. A knob on a cabinet's front seen at a slant is not
+/// hidden by the front it is fixed to (`tasks/sight_rim.rs`).
+#[test]
+fn letters_seen_through_a_slit_narrower_than_them_are_not_read() {
+    for (slit_mm, seen) in [(2, false), (30, true)] {
+        let text = format!(
+            "units mm deg
+use std::people
+room r {{
+  size 6000 x 4000 x 2500
+  box left  at (4000, 0, 0) size (20, {below}, 2500)
+  box right at (4000, {above}, 0) size (20, {below}, 2500)
+  target sign at (5990, 2000, 1643)
+  box cabinet at (2600, 2600, 0) size (600, 600, 900)
+  target knob at (2900, 2600, 800)
+}}
+person m50s {{ mannequin man_50th base fixed {{ at (2000, 2000, 930) heading 0 }} }}
+gaze sign by m50s {{ size 20mm }}
+gaze knob by m50s {{ size 30mm }}
+",
+            below = 2000 - slit_mm / 2,
+            above = 2000 + slit_mm / 2,
+        );
+        let report = run(Input::Text {
+            name: "slit.reach",
+            text: &text,
+        });
+        let sign = gaze(&report, "sign", "m50s");
+        assert_eq!(sign.ok, seen, "{slit_mm} mm: {sign:?}");
+        if !seen {
+            assert_eq!(sign.reason, Some("occluded"), "{slit_mm} mm");
+        }
+        let knob = gaze(&report, "knob", "m50s");
+        assert!(knob.ok, "{slit_mm} mm: {knob:?}");
+    }
+}
