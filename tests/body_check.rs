@@ -5,7 +5,7 @@
 //! tolerance), the head and neck where their anchor frame puts them;
 //! against the room's boxes, its walls,
 //! floor and ceiling, the person's legs and base (but for the pelvis, the
-//! part within `pelvis_mm` of the hip point), and the person's other
+//! trunk's part within `pelvis_mm` of the hip point), and the person's other
 //! moving parts (links two apart may not overlap; a neighbour may not run
 //! its axis through a link's core beyond their joint's reach).
 
@@ -325,7 +325,10 @@ fn outside_ball(part: &Part, centre: &Point3<f64>, radius_mm: f64) -> Option<Par
 /// `part`, grown by `grow_mm`, meets outside the pelvis.
 pub fn own_met(part: &Part, own: &OwnBody, base: &BaseReport, grow_mm: f64) -> Vec<String> {
     let hip = to_room(base, &Point3::origin());
-    let Some(part) = (if own.pelvis_mm > 0.0 {
+    // Only a part that starts within the pelvis (the trunk, from the hip
+    // point) may press into the seat and thighs there.
+    let starts_inside = (part.a - hip).norm() < own.pelvis_mm;
+    let Some(part) = (if starts_inside {
         outside_ball(part, &hip, own.pelvis_mm)
     } else {
         Some(part.clone())

@@ -58,8 +58,8 @@ fn column(body: &Body) -> Option<[Point3<f64>; 2]> {
 
 /// The parts of a person and their base that no joint moves, in the base
 /// frame: the legs, the chair or the rollator. A link must stay out of
-/// them, but for its part within `pelvis_mm` of the hip point, where the
-/// trunk meets the seat and the thighs.
+/// them, but for the trunk's part within `pelvis_mm` of the hip point,
+/// where the trunk meets the seat and the thighs.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct OwnBody {
     pub solids: Vec<Solid>,
@@ -157,9 +157,17 @@ impl OwnBody {
             .min_by(|x, y| x.1.total_cmp(&y.1))
     }
 
-    /// `capsule` (in the base frame) without its part within the pelvis.
+    /// `capsule` (in the base frame, from its near end `a` to its far end
+    /// `b`) without its part within the pelvis, where it starts there: the
+    /// trunk, from the hip point, may press into the seat and thighs as
+    /// flesh gives. A solid that starts outside the pelvis is kept whole:
+    /// a forearm passing beside the hip may not go through the seat, a
+    /// wheel or a thigh, however near the hip point it passes (it did,
+    /// within 285 mm of the 95th-percentile man's, and reached into the
+    /// slot between his seat and wheel).
     pub fn outside_pelvis(&self, capsule: &Capsule) -> Option<Capsule> {
-        if self.pelvis_mm <= 0.0 {
+        let starts_inside = capsule.a.coords.norm() < self.pelvis_mm;
+        if !starts_inside {
             return Some(*capsule);
         }
         capsule.outside_ball(&Point3::origin(), self.pelvis_mm)
