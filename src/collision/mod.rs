@@ -381,56 +381,6 @@ impl Obstacles {
         target: &Point3<f64>,
         end_gap_mm: f64,
     ) -> Option<(Blocker, f64)> {
-        self.first_on_line_leaving(eye, target, end_gap_mm, &|_| false)
-    }
-
-    /// What the line of sight from `eye` to `end` meets first, as
-    /// [`Obstacles::first_on_sight_line`] with no gap, leaving out the
-    /// obstacles within `touching_mm` of `object`: the line to the rim
-    /// of an object lying on a board or fixed to a cabinet, which need
-    /// not hide the object's rim where it lies on it.
-    pub fn first_on_rim_line(
-        &self,
-        eye: &Point3<f64>,
-        end: &Point3<f64>,
-        object: &Point3<f64>,
-        touching_mm: f64,
-    ) -> Option<(Blocker, f64)> {
-        let under = self.holding(object, touching_mm);
-        self.first_on_line_leaving(eye, end, 0.0, &|i| under.contains(&i))
-    }
-
-    /// The obstacles (by index) within `touching_mm` of `object`.
-    fn holding(&self, object: &Point3<f64>, touching_mm: f64) -> Vec<usize> {
-        let at = Isometry3::identity();
-        let near =
-            |bounds: &[Point3<f64>; 2]| bounds_meet(bounds, &[*object, *object], touching_mm);
-        let boxes = (self.boxes.iter().enumerate())
-            .filter(|(_, (_, cuboid, bounds))| {
-                near(bounds) && cuboid.distance_to_segment(object, object) <= touching_mm
-            })
-            .map(|(i, _)| i);
-        let meshes = (self.meshes.iter())
-            .filter(|m| {
-                near(&m.bounds)
-                    && m.parts.iter().any(|p| {
-                        near(&p.bounds)
-                            && p.shape.distance_to_point(&at, object, true) <= touching_mm
-                    })
-            })
-            .map(|m| m.index);
-        boxes.chain(meshes).collect()
-    }
-
-    /// [`Obstacles::first_on_sight_line`], the obstacles `left_out` takes
-    /// (by index) left out.
-    fn first_on_line_leaving(
-        &self,
-        eye: &Point3<f64>,
-        target: &Point3<f64>,
-        end_gap_mm: f64,
-        left_out: &dyn Fn(usize) -> bool,
-    ) -> Option<(Blocker, f64)> {
         if let Some(account) = &self.account {
             // Past the limit, the answers are thrown away.
             if account.exceeded() {
@@ -457,7 +407,7 @@ impl Obstacles {
             .enumerate()
             // A removed box has no extent (`without`).
             .filter(|(_, (_, _, bounds))| has_extent(bounds))
-            .filter(|(i, (_, _, bounds))| near(*i, bounds) && !left_out(*i))
+            .filter(|(i, (_, _, bounds))| near(*i, bounds))
             .filter_map(|(i, (_, cuboid, _))| {
                 entry_along(cuboid, eye, &end).map(|t| (Blocker::Obstacle(i), t * max))
             });
@@ -468,7 +418,7 @@ impl Obstacles {
             .iter()
             .filter(|m| {
                 self.note_mesh(m.index, &m.bounds, &asked);
-                bounds_meet(&m.bounds, &asked, 0.0) && !left_out(m.index)
+                bounds_meet(&m.bounds, &asked, 0.0)
             })
             .filter_map(|m| {
                 let toi = if m.closed && m.parts[0].shape.contains_point(&at, eye) {

@@ -10,13 +10,12 @@
 use nalgebra::{Point3, Vector3};
 
 use super::common::{chain_of, mix_seed, Common, CommonDecl, Reaching, MAP_RETRY, THOROUGH_RETRY};
-use super::sight_rim;
 use crate::collision::{Obstacles, PlacedObstacles};
 use crate::error::ErrorKind;
 use crate::kinematics::{Chain, Joint, JointKind};
 use crate::plugin::{
-    BasePose, Dependence, EffectorNeed, Options, ParamSpec, Params, Placement, Plugin, Registry,
-    Search, Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
+    Dependence, EffectorNeed, Options, ParamSpec, Params, Placement, Plugin, Registry, Search,
+    Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
 };
 use crate::report::{GazeReport, Names, Sight, TaskReport};
 use crate::scene::{Blocker, OwnBody, Room, Vision};
@@ -316,7 +315,7 @@ impl Looked<'_> {
     /// base, naming the first thing it meets; the body's parts when
     /// collisions are on.
     pub fn see(&self, obstacles: &GazeObstacles<'_>, tolerance_mm: f64, eyes: &Eyes) -> Sight {
-        let look = self.look(obstacles, eyes.size_mm);
+        let look = self.look(obstacles);
         let sight = Sight {
             reason: None,
             occluded_by: look.occluded_by,
@@ -341,9 +340,8 @@ impl Looked<'_> {
     }
 
     /// Where the eyes are in the placed posture, and what lies between
-    /// them and the target (an object of `size_mm`), on the line to its
-    /// centre or to its rim.
-    fn look(&self, obstacles: &GazeObstacles<'_>, size_mm: f64) -> Look {
+    /// them and the target.
+    fn look(&self, obstacles: &GazeObstacles<'_>) -> Look {
         let q = &self.placement.solution.q;
         let pose = &self.placement.pose;
         // The eyes: the frame before the look link, looking along its z axis.
@@ -363,40 +361,13 @@ impl Looked<'_> {
         let first = room_hit
             .into_iter()
             .chain(own_hit)
-            .min_by(|a, b| a.1.total_cmp(&b.1))
-            .or_else(|| self.rim_hidden(obstacles, pose, &eyes_room, size_mm));
+            .min_by(|a, b| a.1.total_cmp(&b.1));
         Look {
             eyes_room_mm: eyes_room,
             distance_mm: to_target.norm(),
             off_axis_rad: look_room.angle(&to_target),
             occluded_by: first.map(|(b, _)| self.names(obstacles).blocker(b)),
         }
-    }
-
-    /// What hides the rim of an object of `size_mm` at the target from
-    /// eyes at `eyes_room` (`sight_rim.rs`): the first thing the first of
-    /// its lines meets that meets one.
-    fn rim_hidden(
-        &self,
-        obstacles: &GazeObstacles<'_>,
-        pose: &BasePose,
-        eyes_room: &Point3<f64>,
-        size_mm: f64,
-    ) -> Option<(Blocker, f64)> {
-        let holding = sight_rim::holding_mm(size_mm);
-        let eyes_base = pose.to_base(eyes_room);
-        sight_rim::rim_ends(eyes_room, &self.target, size_mm)
-            .iter()
-            .find_map(|end| {
-                let room =
-                    (obstacles.sight).first_on_rim_line(eyes_room, end, &self.target, holding);
-                let own = (obstacles.own)
-                    .first_on_line(&eyes_base, &pose.to_base(end), 0.0)
-                    .map(|(i, t)| (Blocker::Own(i), t));
-                room.into_iter()
-                    .chain(own)
-                    .min_by(|a, b| a.1.total_cmp(&b.1))
-            })
     }
 
     /// The first thing the body's parts (all but the look link) run into,

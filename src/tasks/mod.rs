@@ -10,7 +10,6 @@ mod map;
 mod map_grid;
 mod reach;
 mod reach_and_gaze;
-mod sight_rim;
 mod walk_in;
 mod why;
 
