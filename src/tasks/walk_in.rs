@@ -122,8 +122,10 @@ impl WalkIn<'_> {
     /// the walk gets there.
     fn walked_along(&self, target: Point3<f64>, out: Vector3<f64>) -> Option<Placement> {
         let along = |k: usize| target + out * (k as f64 * STEP_MM);
+        // Not under the floor (a low target walked down).
         let (k, mut last) = (SEARCHED_EVERY..=STEPS_OUT)
             .step_by(SEARCHED_EVERY)
+            .take_while(|&k| along(k).z >= 0.0)
             .find_map(|k| self.searched(along(k), k).map(|p| (k, p)))?;
         for j in (0..k).rev() {
             last = self.stepped(&last, along(j + 1), (along(j), j))?;
