@@ -3,7 +3,7 @@
 //! and the obstacle that blocks a line of sight named.
 
 use reach::plugin::Registry;
-use reach::report::{GazeReport, Report, TaskReport};
+use reach::report::{GazeReport, ReachAndGazeReport, Report, TaskReport};
 use reach::vision::{d_max_mm, d_min_mm, ARCMIN_RAD};
 use reach::Input;
 
@@ -174,6 +174,23 @@ fn assert_line_of_sight_misses(gaze: &GazeReport, corners: &[[f64; 3]], size: [f
     }
 }
 
+/// The wheelchair kitchen's four open shelves on its right-hand wall
+/// (`examples/kitchen_wheelchair.reach`), as a room's box lines.
+pub const RIGHT_SHELVES: &str = "  box shelf_1 at (1500, 2900, 400)  size (800, 300, 20)
+  box shelf_2 at (1500, 2900, 900)  size (800, 300, 20)
+  box shelf_3 at (1500, 2900, 1400) size (800, 300, 20)
+  box shelf_4 at (1500, 2900, 1900) size (800, 300, 20)
+";
+
+/// The report of scenario `text`, whose first task is a reach and gaze.
+fn first_reach_and_gaze(name: &str, text: &str) -> ReachAndGazeReport {
+    let mut report = run(Input::Text { name, text });
+    match report.tasks.swap_remove(0) {
+        TaskReport::ReachAndGaze(both) => *both,
+        other => panic!("not a reach and gaze: {other:?}"),
+    }
+}
+
 /// The big man with his rollator, reaching a pot on the bottom shelf
 /// while looking at it (seed 2): the first tree solve put the hand on it
 /// with the view blocked by the shelf above, and the answer was "NOT
@@ -182,26 +199,18 @@ fn assert_line_of_sight_misses(gaze: &GazeReport, corners: &[[f64; 3]], size: [f
 /// on the reported line of sight.
 #[test]
 fn a_reach_and_gaze_the_first_solve_misses_is_solved_again() {
-    let text = "units mm deg
+    let text = format!(
+        "units mm deg
 use std::people
-room r {
+room r {{
   size 4000 x 3200 x 2500
-  box shelf_1 at (1500, 2900, 400)  size (800, 300, 20)
-  box shelf_2 at (1500, 2900, 900)  size (800, 300, 20)
-  box shelf_3 at (1500, 2900, 1400) size (800, 300, 20)
-  box shelf_4 at (1500, 2900, 1900) size (800, 300, 20)
-  target a1 at (1700, 3150, 480)
-}
-person rb { mannequin man_95th base rollator }
-reach a1 and gaze by rb { size 10mm seed 2 }
-";
-    let report = run(Input::Text {
-        name: "shelves.reach",
-        text,
-    });
-    let TaskReport::ReachAndGaze(both) = &report.tasks[0] else {
-        panic!("a reach and gaze")
-    };
+{RIGHT_SHELVES}  target a1 at (1700, 3150, 480)
+}}
+person rb {{ mannequin man_95th base rollator }}
+reach a1 and gaze by rb {{ size 10mm seed 2 }}
+"
+    );
+    let both = first_reach_and_gaze("shelves.reach", &text);
     assert!(both.ok, "{:?}", both.gaze.reason);
     // On the pot, 60 mm above shelf_1.
     let shelves = [400.0, 900.0, 1400.0, 1900.0].map(|z| [1500.0, 2900.0, z]);
@@ -262,13 +271,7 @@ room r {
 person rm { mannequin man_50th base rollator }
 reach s5_front and gaze by rm { size 10mm seed 2 }
 ";
-    let report = run(Input::Text {
-        name: "bookcase.reach",
-        text,
-    });
-    let TaskReport::ReachAndGaze(both) = &report.tasks[0] else {
-        panic!("a reach and gaze")
-    };
+    let both = first_reach_and_gaze("bookcase.reach", text);
     assert!(both.ok, "{:?} {:?}", both.reach.why, both.gaze.reason);
     let boards = [1300.0, 1600.0, 1900.0].map(|z| [1020.0, 0.0, z]);
     assert_line_of_sight_misses(&both.gaze, &boards, [800.0, 300.0, 20.0]);

@@ -15,6 +15,7 @@ use reach::scene::{OwnBody, Room};
 use reach::Input;
 
 use super::body_check::{dh, everything_met, parts, parts_with, Part};
+use super::gaze::RIGHT_SHELVES;
 
 /// The hip, every joint frame's origin and the effector, in the room, for
 /// the report's posture and base pose; the effector is the last.
@@ -215,29 +216,27 @@ fn reaches_checked(input: Input, name: &str) -> (usize, usize) {
 /// nothing when reachable, and meet what they are said to be blocked by.
 #[test]
 fn a_reach_and_gaze_checks_the_head_where_the_eyes_turned_it() {
-    let text = "units mm deg
+    let text = format!(
+        "units mm deg
 use std::people
-room r {
+room r {{
   size 4000 x 3200 x 2500
-  box shelf_1 at (1500, 2900, 400)  size (800, 300, 20)
-  box shelf_2 at (1500, 2900, 900)  size (800, 300, 20)
-  box shelf_3 at (1500, 2900, 1400) size (800, 300, 20)
-  box shelf_4 at (1500, 2900, 1900) size (800, 300, 20)
-  box counter at (0, 0, 0) size (600, 3200, 900)
+{RIGHT_SHELVES}  box counter at (0, 0, 0) size (600, 3200, 900)
   box wc_bottom at (0, 800, 1400) size (350, 1400, 20)
   box wc_shelf  at (0, 800, 1720) size (350, 1400, 20)
   door d at (4000, 1600) width 900mm
   target a4 at (2100, 3050, 1980)
   target a5 at (1900, 3150, 1480)
-}
-person rf { mannequin woman_5th base rollator }
-reach a4, a5 and gaze by rf { size 10mm seed 2 }
-";
+}}
+person rf {{ mannequin woman_5th base rollator }}
+reach a4, a5 and gaze by rf {{ size 10mm seed 2 }}
+"
+    );
     let registry = Registry::builtin();
     let (_, scenario) = reach::check(
         Input::Text {
             name: "shelves.reach",
-            text,
+            text: &text,
         },
         &registry,
     );
