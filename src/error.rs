@@ -139,6 +139,8 @@ pub enum ErrorKind {
     },
     #[error("{what} is not supported yet")]
     Unsupported { what: String, help: String },
+    #[error("joint `{joint}` is fixed: it takes no {what}")]
+    FixedJoint { joint: String, what: String },
     #[error("{what} belong in the scenario file, not in a file it uses")]
     Misplaced { what: &'static str },
     #[error("an object of {size} is legible nowhere: its nearest distance {d_min} is beyond its farthest {d_max}")]
@@ -206,7 +208,7 @@ impl ErrorKind {
             | BadMesh { .. }
             | BadMeshSetting { .. }
             | BadUrdf { .. } => "reach::file",
-            MeetsItself { .. } => "reach::body",
+            MeetsItself { .. } | FixedJoint { .. } => "reach::body",
             ImportCycle { .. } | UnknownStdModule { .. } => "reach::use",
             UnknownName { .. } | AmbiguousSurface { .. } | Duplicate { .. } | LetCycle { .. } => {
                 "reach::name"
@@ -243,6 +245,7 @@ impl ErrorKind {
             BadMeshSetting { expected, .. } => format!("not {expected}"),
             BadUrdf { .. } => "here".into(),
             MeetsItself { .. } => "this mannequin".into(),
+            FixedJoint { .. } => "not for a fixed joint".into(),
             NotUtf8 { .. } => "the first byte that is not UTF-8".into(),
             ImportCycle { .. } => "this `use` closes the cycle".into(),
             UnknownStdModule { .. } => "no such module".into(),
@@ -312,6 +315,10 @@ impl ErrorKind {
             Operands { .. } => Some("both sides of + and - must have the same kind of unit".into()),
             MeetsItself { .. } => Some(
                 "a body that meets itself in its neutral posture meets itself in every posture near it, so no answer would mean anything: give its links smaller radii (`link NAME radius 20mm` on a joint; `radius 20mm` after a URDF mannequin's `tip`) or lengths that keep them apart"
+                    .into(),
+            ),
+            FixedJoint { .. } => Some(
+                "a fixed joint only turns the axes of the joints after it (`dh(theta .., alpha ..)`): give lengths, limits, solids and couplings to the joints that move"
                     .into(),
             ),
             TargetOutsideRoom { bounds, .. } => Some(format!("the room spans {bounds}")),

@@ -227,7 +227,10 @@ fn body_frames(
             JointKind::Prismatic => (joint.dh.theta_rad, joint.dh.d_mm + value),
         };
         let parent = body.parents[j].map_or(Matrix4::identity(), |p| frames[p]);
-        frames.push(parent * dh(theta, d, joint.dh.alpha_rad(), joint.dh.a_mm));
+        let pre = joint
+            .pre
+            .map_or(Matrix4::identity(), |p| p.to_homogeneous());
+        frames.push(parent * pre * dh(theta, d, joint.dh.alpha_rad(), joint.dh.a_mm));
     }
     frames
 }

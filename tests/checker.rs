@@ -96,6 +96,34 @@ fn errors_point_at_the_offending_text() {
             ],
         ),
         (
+            "mannequin m { joint j dh(a 1) limits(0, 1)\n joint f fixed dh(theta 90deg, d 5, alpha 90deg) limits(0, 1) link x }".into(),
+            vec![
+                ("joint `f` is fixed: it takes no length (d or a)", "5"),
+                ("joint `f` is fixed: it takes no limits", "limits(0, 1)"),
+                ("joint `f` is fixed: it takes no link", "x"),
+            ],
+        ),
+        (
+            "mannequin m { joint j dh(a 1) limits(0, 1)\n joint f fixed dh(alpha 90deg)\n joint k prismatic dh(d 1) limits(0, 5)\n couple j, f\n rhythm k with j, f from 30deg }".into(),
+            vec![
+                ("joint `f` is fixed: it takes no coupling", "f"),
+                ("joint `f` is fixed: it takes no coupling", "f"),
+            ],
+        ),
+        (
+            "mannequin m { joint j dh(a 1) limits(0, 1)\n joint i dh(a 1) limits(0, 1)\n joint k prismatic dh(d 1) limits(0, 5)\n rhythm j with k, i from 30deg\n rhythm k with j, jj from 30deg\n rhythm k with j, i from 180deg\n rhythm k with j, k from 0deg }".into(),
+            vec![
+                ("a joint that drives a `rhythm` must be a revolute joint, found prismatic `k`", "k"),
+                ("unknown joint of this mannequin `jj`", "jj"),
+                ("a rhythm's `from` must be from 0deg up to 180deg, found 180deg", "180deg"),
+                ("joint `k` in one `rhythm` is given more than once", "k"),
+            ],
+        ),
+        (
+            "mannequin m(l = 1mm) = n(a l)\nmannequin n(a = 1mm) { joint j dh(a a) limits(0, 1) }\nmannequin o = m(l 2mm, q 3mm)".into(),
+            vec![("unknown parameter of this mannequin `q`", "q")],
+        ),
+        (
             format!("{SCENE}person ann {{ mannequin arm {{ neutral elbow 160deg }} base fixed {{ at (0,0,0) }} }}"),
             vec![(
                 "the neutral value must be within the joint's limits, 0deg to 150deg, found 160deg",
@@ -222,6 +250,53 @@ fn a_person_gets_the_mannequin_with_their_own_limits() {
     assert_eq!(s.persons[0].base.name, "fixed");
     let base = FixedSettings::from_options(&s.persons[0].base.options).unwrap();
     assert!((base.heading_rad.to_degrees() - 90.0).abs() < 1e-9);
+}
+
+/// A `fixed` frame turns the axes of the joint after it as a joint held
+/// at zero would, and is no joint of the body; an alias with parameters
+/// of its own gives the mannequin it names values made of them; a
+/// `rhythm` couples its follower to its drivers by their body indices.
+#[test]
+fn fixed_frames_rhythms_and_aliases_with_parameters_build_the_body_meant() {
+    let mannequins = "
+mannequin held(arm = 300mm) {
+  joint up dh(alpha 90deg) limits(-90deg, 90deg)
+  joint turn dh(theta 90deg, alpha 90deg) limits(0deg, 0deg)
+  joint slide prismatic dh(d 0) limits(0, 50)
+  joint elbow dh(a arm) limits(0deg, 150deg)
+  effector hand at (200, 0, 0)
+}
+mannequin framed(arm = 300mm) {
+  joint up dh(alpha 90deg) limits(-90deg, 90deg)
+  joint turn fixed dh(theta 90deg, alpha 90deg)
+  joint slide prismatic dh(d 0) limits(0, 50)
+  joint elbow dh(a arm) limits(0deg, 150deg)
+  effector hand at (200, 0, 0)
+  rhythm slide with up, elbow from 30deg
+}
+mannequin long(forearm = 100mm) = framed(arm forearm + 250mm)
+";
+    let text = format!(
+        "{SCENE}{mannequins}person a {{ mannequin held base fixed {{ at (0, 0, 0) }} }}\n\
+         person b {{ mannequin long(forearm 50mm) base fixed {{ at (0, 0, 0) }} }}\n"
+    );
+    let s = ok(&text);
+    let (held, framed) = (s.persons[0].body.chain(0), s.persons[1].body.chain(0));
+    assert_eq!(framed.joints.len(), 3, "the fixed frame is no joint");
+    assert!(framed.joints[1].pre.is_some());
+    for (up, slide, elbow) in [(0.0, 0.0, 0.0), (0.5, 20.0, 1.0), (-1.2, 45.0, 0.3)] {
+        let want = held.effector(&[up, 0.0, slide, elbow]);
+        let got = framed.effector(&[up, slide, elbow]);
+        assert!((want - got).norm() < 1e-9, "{want} {got}");
+    }
+    assert!((framed.joints[2].dh.a_mm - 300.0).abs() < 1e-9);
+    match &framed.couplings[..] {
+        [reach::kinematics::Coupling::Rhythm(r)] => {
+            assert_eq!((r.follower, r.drivers), (1, [0, 2]));
+            assert!((r.from_rad.to_degrees() - 30.0).abs() < 1e-9);
+        }
+        other => panic!("{other:?}"),
+    }
 }
 
 #[test]

@@ -42,6 +42,9 @@ fn posture_points(chain: &Chain, posture: &Posture, base: &BaseReport) -> Vec<[f
             JointKind::Revolute => (joint.dh.theta_rad + value.to_radians(), joint.dh.d_mm),
             JointKind::Prismatic => (joint.dh.theta_rad, joint.dh.d_mm + value),
         };
+        m *= joint
+            .pre
+            .map_or(Matrix4::identity(), |p| p.to_homogeneous());
         m *= dh(theta, d, joint.dh.alpha_rad(), joint.dh.a_mm);
         points.push(to_room(m * Vector4::new(0.0, 0.0, 0.0, 1.0)));
     }

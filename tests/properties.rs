@@ -5,7 +5,7 @@
 use nalgebra::{Point3, Vector3};
 use proptest::prelude::*;
 use reach::collision::{Obstacles, PlacedObstacles};
-use reach::kinematics::{Chain, Coupling, Dh, IncrementalFk, Joint, JointKind, Link};
+use reach::kinematics::{Chain, Coupling, Dh, Ellipse, IncrementalFk, Joint, JointKind, Link};
 use reach::plugin::{BasePose, IkProblem, IkSolution, Options, Registry, Settings, Solver, Value};
 use reach::scene::{Blocker, BoxObstacle, OwnBody, Room};
 use reach::solvers::fabrik::{solve_tree, TreeGoal, TreeProblem};
@@ -42,6 +42,7 @@ fn joint() -> impl Strategy<Value = Joint> {
                     kind,
                     dh: Dh::new(theta_rad, d_mm, alpha_rad, a_mm),
                     fixed: None,
+                    pre: None,
                     min,
                     max,
                     neutral: (min + max) / 2.0,
@@ -69,7 +70,9 @@ fn chain() -> impl Strategy<Value = Chain> {
             // Two joints whose ranges are coupled, as the stdlib trunk's.
             if let Some((a, b)) = couple.filter(|_| n >= 2) {
                 let (a, b) = (a % n, (a + 1 + b % (n - 1)) % n);
-                chain.couplings.push(Coupling { joints: vec![a, b] });
+                chain
+                    .couplings
+                    .push(Coupling::Ellipse(Ellipse { joints: vec![a, b] }));
             }
             chain
         })

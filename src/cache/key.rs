@@ -271,9 +271,10 @@ fn hash_joint(j: &Joint, h: &mut DefaultHasher) {
     (&j.name, j.kind as u8).hash(h);
     let d = &j.dh;
     hash_bits(&[d.theta_rad, d.d_mm, d.alpha_rad(), d.a_mm], h);
-    if let Some(fixed) = &j.fixed {
-        hash_bits(fixed.rotation.matrix().iter(), h);
-        hash_bits(fixed.translation.vector.iter(), h);
+    (j.fixed.is_some(), j.pre.is_some()).hash(h);
+    for pose in [&j.fixed, &j.pre].into_iter().flatten() {
+        hash_bits(pose.rotation.matrix().iter(), h);
+        hash_bits(pose.translation.vector.iter(), h);
     }
     hash_bits(&[j.min, j.max, j.neutral, j.weight], h);
 }

@@ -9,11 +9,14 @@ use nalgebra::Vector3;
 use super::eval::fmt_num;
 use super::Checker;
 use crate::error::{thousands, Error, ErrorKind};
-use crate::kinematics::{Body, Coupling, Dh, Effector, Joint, JointKind, Link, Posture, Sphere};
+use crate::kinematics::{
+    Body, Coupling, Declared, Dh, Effector, Ellipse, Folded, Joint, JointKind, Link, Posture,
+    Rhythm, Sphere,
+};
 use crate::span::Span;
 use crate::span::{FileId, Name};
 use crate::syntax::ast::{
-    self, CoupleDecl, Expr, JointDecl, LimitsExpr, MannequinDecl, MannequinRef,
+    self, CoupleDecl, Expr, JointDecl, LimitsExpr, MannequinDecl, MannequinRef, RhythmDecl,
 };
 use crate::units::Quantity;
 
@@ -33,6 +36,9 @@ impl Checker<'_> {
             .collect();
         for (name, decl, file) in decls {
             let body = match (&decl.alias, &decl.urdf) {
+                (Some(_), _) if !decl.params.is_empty() => {
+                    self.alias_with(decl, file, &[], file, 0)
+                }
                 (Some(target), _) => self
                     .body_of(target, file, 0)
                     .map(|b| self.with_posture(b, decl)),
@@ -54,6 +60,9 @@ impl Checker<'_> {
             }
         };
         match &decl.alias {
+            Some(_) if !decl.params.is_empty() && depth < self.limits.alias_chain => {
+                self.alias_with(decl, decl_file, &r.args, file, depth)
+            }
             Some(target) if r.args.is_empty() && depth < self.limits.alias_chain => self
                 .body_of(target, decl_file, depth + 1)
                 .map(|b| self.with_posture(b, decl)),
@@ -85,6 +94,47 @@ impl Checker<'_> {
         }
     }
 
+    /// The body of alias `decl` (of `file`) that has parameters of its own,
+    /// with `args` (written in `args_file`) for them, the others at their
+    /// defaults: the mannequin it names, given what it says in terms of
+    /// them.
+    fn alias_with(
+        &mut self,
+        decl: &MannequinDecl,
+        file: FileId,
+        args: &[(Name, Expr)],
+        args_file: FileId,
+        depth: usize,
+    ) -> Option<Body> {
+        let target = decl.alias.as_ref()?;
+        let given = self.in_file(args_file, |c| c.mannequin_args(decl, args));
+        let body = self.in_file(file, |c| {
+            let outer = std::mem::take(&mut c.params);
+            c.push_params(decl, &given);
+            let body = c.body_of(target, file, depth + 1);
+            c.params = outer;
+            body
+        });
+        body.map(|b| self.with_posture(b, decl))
+    }
+
+    /// `decl`'s parameters, each as `given` has it or at its default (which
+    /// may use the ones before it), pushed onto the scope.
+    fn push_params(&mut self, decl: &MannequinDecl, given: &[(String, Option<Quantity>)]) {
+        let mut seen: Vec<&Name> = Vec::new();
+        for (name, default) in &decl.params {
+            if let Some(first) = seen.iter().find(|n| n.value == name.value) {
+                self.error(Error::duplicate("parameter", name, first.span));
+            }
+            seen.push(name);
+            let value = match given.iter().find(|(n, _)| n == &name.value) {
+                Some((_, v)) => *v,
+                None => self.eval(default),
+            };
+            self.params.push((name.value.clone(), value));
+        }
+    }
+
     /// Build `decl` (of `file`) with `args` (written in `args_file`) for
     /// its parameters, the others at their defaults.
     fn body_with(
@@ -96,21 +146,11 @@ impl Checker<'_> {
     ) -> Option<Body> {
         let given = self.in_file(args_file, |c| c.mannequin_args(decl, args));
         self.in_file(file, |c| {
-            let outer = c.params.len();
-            let mut seen: Vec<&Name> = Vec::new();
-            for (name, default) in &decl.params {
-                if let Some(first) = seen.iter().find(|n| n.value == name.value) {
-                    c.error(Error::duplicate("parameter", name, first.span));
-                }
-                seen.push(name);
-                let value = match given.iter().find(|(n, _)| n == &name.value) {
-                    Some((_, v)) => *v,
-                    None => c.eval(default),
-                };
-                c.params.push((name.value.clone(), value));
-            }
+            // Only its own parameters are in scope (not a caller's).
+            let outer = std::mem::take(&mut c.params);
+            c.push_params(decl, &given);
             let body = c.body(decl);
-            c.params.truncate(outer);
+            c.params = outer;
             body
         })
     }
@@ -156,7 +196,7 @@ impl Checker<'_> {
         if !self.within_joints(decl.joints.len(), decl.name.span) {
             return None;
         }
-        let mut joints = Vec::new();
+        let mut declared = Vec::new();
         let mut parents = Vec::new();
         let mut names: Vec<&crate::span::Name> = Vec::new();
         let mut first_named: HashMap<&str, Span> = HashMap::new();
@@ -171,21 +211,31 @@ impl Checker<'_> {
                 Some(after) => self.earlier_joint(&names, after).map(Some),
             });
             names.push(&j.name);
-            joints.push(self.joint(j));
+            declared.push(match j.kind {
+                ast::JointKind::Fixed => self.fixed_frame(j).map(Declared::Fixed),
+                _ => self.joint(j).map(|j| Declared::Moving(Box::new(j))),
+            });
         }
-        let effectors = self.effectors(decl, &names);
-        let spheres = self.spheres(decl, &names);
+        // Folded as far as it can be, so that the effectors, spheres and
+        // couplings are checked even where a joint is wrong.
+        let complete = declared.iter().all(Option::is_some) && parents.iter().all(Option::is_some);
+        let declared = declared
+            .into_iter()
+            .map(|d| d.unwrap_or_else(stand_in))
+            .collect();
+        let parents: Vec<Option<usize>> = parents.into_iter().map(Option::flatten).collect();
+        let folded = Folded::new(declared, &parents);
+        let effectors = self.effectors(decl, &names, &folded);
+        let spheres = self.spheres(decl, &names, &folded);
         let legs = self.legs(decl);
-        let couplings = self.couplings(decl, &names);
-        let joints: Option<Vec<Joint>> = joints.into_iter().collect();
-        let parents: Option<Vec<Option<usize>>> = parents.into_iter().collect();
-        let (joints, parents, effectors) = (joints?, parents?, effectors?);
-        if joints.is_empty() {
+        let couplings = self.couplings(decl, &names, &folded);
+        let effectors = effectors?;
+        if folded.joints.is_empty() || !complete {
             return None;
         }
         let body = Body {
-            joints,
-            parents,
+            joints: folded.joints,
+            parents: folded.parents,
             effectors,
             spheres: spheres?,
             legs: legs?,
@@ -262,7 +312,12 @@ impl Checker<'_> {
     }
 
     /// The spheres: on the last joint unless `after` says which.
-    fn spheres(&mut self, decl: &MannequinDecl, joints: &[&Name]) -> Option<Vec<Sphere>> {
+    fn spheres(
+        &mut self,
+        decl: &MannequinDecl,
+        joints: &[&Name],
+        folded: &Folded,
+    ) -> Option<Vec<Sphere>> {
         let last = joints.len().checked_sub(1);
         let mut spheres = Vec::new();
         let mut ok = true;
@@ -274,24 +329,37 @@ impl Checker<'_> {
             let centre = self.point(&s.at);
             let radius = self.radius(&s.radius);
             match (joint, centre, radius) {
-                (Some(joint), Some(centre_mm), Some(radius_mm)) => spheres.push(Sphere {
-                    name: part_name(&s.name.value),
-                    joint,
-                    centre_mm,
-                    radius_mm,
-                }),
+                (Some(joint), Some(centre_mm), Some(radius_mm)) => {
+                    let (joint, centre_mm) = folded.point_on(joint, centre_mm);
+                    spheres.push(Sphere {
+                        name: part_name(&s.name.value),
+                        joint,
+                        centre_mm,
+                        radius_mm,
+                    })
+                }
                 _ => ok = false,
             }
         }
         ok.then_some(spheres)
     }
 
-    /// The couplings: each of two or more distinct joints of the mannequin.
-    fn couplings(&mut self, decl: &MannequinDecl, joints: &[&Name]) -> Option<Vec<Coupling>> {
+    /// The couplings: each `couple` of two or more distinct joints of the
+    /// mannequin, and each `rhythm` (`rhythm.rs`), by moving joint.
+    fn couplings(
+        &mut self,
+        decl: &MannequinDecl,
+        joints: &[&Name],
+        folded: &Folded,
+    ) -> Option<Vec<Coupling>> {
         let mut ok = true;
         let mut couplings: Vec<Coupling> = Vec::new();
         for c in &decl.couples {
             let Some(indices) = self.coupled_joints(c, joints) else {
+                ok = false;
+                continue;
+            };
+            let Some(indices) = self.moving(&c.joints, &indices, folded) else {
                 ok = false;
                 continue;
             };
@@ -302,15 +370,44 @@ impl Checker<'_> {
             };
             if couplings
                 .iter()
-                .any(|k| sorted(&k.joints) == sorted(&indices))
+                .any(|k| matches!(k, Coupling::Ellipse(e) if sorted(&e.joints) == sorted(&indices)))
             {
                 self.repeated(std::iter::once(c.span), "this coupling");
                 ok = false;
                 continue;
             }
-            couplings.push(Coupling { joints: indices });
+            couplings.push(Coupling::Ellipse(Ellipse { joints: indices }));
+        }
+        for r in &decl.rhythms {
+            match self.rhythm(r, joints, folded) {
+                Some(rhythm) => couplings.push(Coupling::Rhythm(rhythm)),
+                None => ok = false,
+            }
         }
         ok.then_some(couplings)
+    }
+
+    /// The moving joints' indices of declared joints `indices` (`names`),
+    /// with an error at each fixed one.
+    fn moving(&mut self, names: &[Name], indices: &[usize], folded: &Folded) -> Option<Vec<usize>> {
+        let mut ok = true;
+        let mut moving = Vec::with_capacity(indices.len());
+        for (name, &i) in names.iter().zip(indices) {
+            match folded.moving_index(i) {
+                Some(k) => moving.push(k),
+                None => {
+                    self.error(Error::new(
+                        ErrorKind::FixedJoint {
+                            joint: name.value.clone(),
+                            what: "coupling".into(),
+                        },
+                        name.span,
+                    ));
+                    ok = false;
+                }
+            }
+        }
+        ok.then_some(moving)
     }
 
     /// The indices of a `couple`'s joints among the mannequin's `joints`:
@@ -351,6 +448,88 @@ impl Checker<'_> {
         ok.then_some(indices)
     }
 
+    /// A `rhythm`: its follower and two distinct revolute drivers, joints
+    /// that move, and `from` an angle from 0 up to (not including) 180 deg.
+    fn rhythm(&mut self, r: &RhythmDecl, joints: &[&Name], folded: &Folded) -> Option<Rhythm> {
+        let names = [&r.follower, &r.drivers[0], &r.drivers[1]];
+        let mut indices = Vec::with_capacity(3);
+        for (k, name) in names.iter().enumerate() {
+            if names[..k].iter().any(|n| n.value == name.value) {
+                let what = format!("joint `{}` in one `rhythm`", name.value);
+                self.repeated(std::iter::once(name.span), &what);
+                return None;
+            }
+            let Some(i) = joints.iter().position(|n| n.value == name.value) else {
+                self.error(Error::unknown(
+                    "joint of this mannequin",
+                    &name.value,
+                    name.span,
+                    joints.iter().map(|n| n.value.as_str()),
+                ));
+                return None;
+            };
+            indices.push(i);
+        }
+        let owned: Vec<Name> = names.iter().map(|n| (*n).clone()).collect();
+        let moving = self.moving(&owned, &indices, folded)?;
+        for (name, &k) in names.iter().zip(&moving).skip(1) {
+            if folded.joints[k].kind != JointKind::Revolute {
+                self.out_of_range(
+                    name.span,
+                    "a joint that drives a `rhythm`",
+                    "a revolute joint",
+                    &format!("prismatic `{}`", name.value),
+                );
+                return None;
+            }
+        }
+        let from_rad = self.angle(&r.from)?;
+        if !(0.0..std::f64::consts::PI).contains(&from_rad) {
+            self.out_of_range(
+                r.from.span,
+                "a rhythm's `from`",
+                "from 0deg up to 180deg",
+                &show(from_rad, ast::JointKind::Revolute),
+            );
+            return None;
+        }
+        Some(Rhythm {
+            follower: moving[0],
+            drivers: [moving[1], moving[2]],
+            from_rad,
+        })
+    }
+
+    /// A `fixed` joint's frame: its turn (`theta`, `alpha`) and nothing a
+    /// moving joint has (an error at each).
+    fn fixed_frame(&mut self, j: &JointDecl) -> Option<nalgebra::IsometryMatrix3<f64>> {
+        let mut ok = true;
+        let mut refuse = |c: &mut Self, span: Option<Span>, what: &str| {
+            if let Some(span) = span {
+                c.error(Error::new(
+                    ErrorKind::FixedJoint {
+                        joint: j.name.value.clone(),
+                        what: what.into(),
+                    },
+                    span,
+                ));
+                ok = false;
+            }
+        };
+        refuse(self, j.limits.first().map(|l| l.span), "limits");
+        refuse(self, j.neutral.first().map(|e| e.span), "neutral value");
+        refuse(self, j.weight.first().map(|e| e.span), "comfort weight");
+        let link = j.link.radius.first().map(|e| e.span);
+        refuse(self, link.or(j.link.name.first().map(|n| n.span)), "link");
+        for (key, expr) in &j.dh {
+            if (key.value == "d" || key.value == "a") && self.length(expr) != Some(0.0) {
+                refuse(self, Some(expr.span), "length (d or a)");
+            }
+        }
+        let dh = self.dh(j)?;
+        ok.then(|| dh.transform(dh.theta_rad, 0.0))
+    }
+
     /// The index of joint `name` among those declared before it.
     fn earlier_joint(
         &mut self,
@@ -375,13 +554,15 @@ impl Checker<'_> {
         &mut self,
         decl: &MannequinDecl,
         joints: &[&crate::span::Name],
+        folded: &Folded,
     ) -> Option<Vec<Effector>> {
         let last = joints.len().checked_sub(1);
         if decl.effectors.is_empty() {
+            let (joint, offset_mm) = folded.point_on(last, Vector3::zeros());
             return Some(vec![Effector {
                 name: "end".to_string(),
-                joint: last,
-                offset_mm: Vector3::zeros(),
+                joint,
+                offset_mm,
                 link: Link::named("the end"),
             }]);
         }
@@ -402,12 +583,15 @@ impl Checker<'_> {
             let offset = self.point(&e.at);
             let link = self.link(&e.link, &e.name.value);
             match (joint, offset, link) {
-                (Some(joint), Some(offset_mm), Some(link)) => effectors.push(Effector {
-                    name: e.name.value.clone(),
-                    joint,
-                    offset_mm,
-                    link,
-                }),
+                (Some(joint), Some(offset_mm), Some(link)) => {
+                    let (joint, offset_mm) = folded.point_on(joint, offset_mm);
+                    effectors.push(Effector {
+                        name: e.name.value.clone(),
+                        joint,
+                        offset_mm,
+                        link,
+                    })
+                }
                 _ => ok = false,
             }
         }
@@ -448,11 +632,12 @@ impl Checker<'_> {
         Some(Joint {
             name: j.name.value.clone(),
             kind: match j.kind {
-                ast::JointKind::Revolute => JointKind::Revolute,
                 ast::JointKind::Prismatic => JointKind::Prismatic,
+                ast::JointKind::Revolute | ast::JointKind::Fixed => JointKind::Revolute,
             },
             dh: dh?,
             fixed: None,
+            pre: None,
             min,
             max,
             neutral,
@@ -494,7 +679,7 @@ impl Checker<'_> {
     /// A joint value: an angle for revolute joints, a length for prismatic.
     fn joint_value(&mut self, e: &Expr, kind: ast::JointKind) -> Option<f64> {
         match kind {
-            ast::JointKind::Revolute => self.angle(e),
+            ast::JointKind::Revolute | ast::JointKind::Fixed => self.angle(e),
             ast::JointKind::Prismatic => self.length(e),
         }
     }
@@ -577,6 +762,23 @@ impl Checker<'_> {
     }
 }
 
+/// A joint in place of one with errors, so that the rest of its mannequin
+/// is still checked (the mannequin is not built).
+fn stand_in() -> Declared {
+    Declared::Moving(Box::new(Joint {
+        name: String::new(),
+        kind: JointKind::Revolute,
+        dh: Dh::new(0.0, 0.0, 0.0, 0.0),
+        fixed: None,
+        pre: None,
+        min: 0.0,
+        max: 0.0,
+        neutral: 0.0,
+        weight: 0.0,
+        link: Link::named(""),
+    }))
+}
+
 /// How a part's name reads in a report: `right_forearm` is "the right
 /// forearm".
 pub(super) fn part_name(name: &str) -> String {
@@ -586,7 +788,9 @@ pub(super) fn part_name(name: &str) -> String {
 /// A joint value in the unit a user reads: degrees or millimetres.
 pub(super) fn show(v: f64, kind: ast::JointKind) -> String {
     match kind {
-        ast::JointKind::Revolute => format!("{}deg", fmt_num(v.to_degrees())),
+        ast::JointKind::Revolute | ast::JointKind::Fixed => {
+            format!("{}deg", fmt_num(v.to_degrees()))
+        }
         ast::JointKind::Prismatic => format!("{}mm", fmt_num(v)),
     }
 }

@@ -379,7 +379,7 @@ impl Checker<'_> {
             }
             JointOverride::Neutral { value, .. } => {
                 let v = match kind {
-                    ast::JointKind::Revolute => self.angle(value)?,
+                    ast::JointKind::Revolute | ast::JointKind::Fixed => self.angle(value)?,
                     ast::JointKind::Prismatic => self.length(value)?,
                 };
                 joints[i].neutral = self.neutral_within(v, min, max, kind, value.span)?;

@@ -160,11 +160,16 @@ impl<'a> OutOfReach<'a> {
         }
         // The next joint moves its frame's origin about its own z axis
         // (or along it): the part along the axis is the pivot's.
-        let offset = shoulder.rest_offset_mm();
+        // (In the frame it moves in: after its `pre` frame, if it has one.)
+        let offset = shoulder.own_rest_offset_mm();
         let (pivot_mm, from_pivot_mm) = match shoulder.kind {
             JointKind::Revolute => (Point3::new(0.0, 0.0, offset.z), offset.x.hypot(offset.y)),
-            JointKind::Prismatic => (Point3::origin(), shoulder.longest_offset_mm()),
+            JointKind::Prismatic => (
+                Point3::origin(),
+                shoulder.longest_offset_mm() - shoulder.axis_frame().translation.vector.norm(),
+            ),
         };
+        let pivot_mm = shoulder.axis_frame() * pivot_mm;
         let beyond_mm: f64 = joints[trunk_joints + 1..]
             .iter()
             .map(|j| j.longest_offset_mm())
@@ -330,7 +335,7 @@ impl<'a> OutOfReach<'a> {
         };
         let mut frame = IsometryMatrix3::identity();
         for (i, (joint, &qj)) in self.chain.joints.iter().zip(q).enumerate() {
-            trunk.axes[i] = frame.rotation * Vector3::z();
+            trunk.axes[i] = (frame * joint.axis_frame()).rotation * Vector3::z();
             frame *= joint.transform(qj);
             trunk.frames[i] = frame;
         }

@@ -49,6 +49,10 @@ pub struct Joint {
     /// about (or slides along) the z axis of the previous frame, then this
     /// fixed pose follows; `dh` is then unused.
     pub fixed: Option<IsometryMatrix3<f64>>,
+    /// A fixed frame between the previous joint's frame and this joint's
+    /// motion (a mannequin's `fixed` joint folded in): the joint turns
+    /// about (or slides along) the z axis of that frame.
+    pub pre: Option<IsometryMatrix3<f64>>,
     pub min: f64,
     pub max: f64,
     pub neutral: f64,
@@ -60,6 +64,21 @@ pub struct Joint {
 impl Joint {
     /// The pose of this joint's frame in the previous one at value `q`.
     pub fn transform(&self, q: f64) -> IsometryMatrix3<f64> {
+        match &self.pre {
+            Some(pre) => pre * self.own_transform(q),
+            None => self.own_transform(q),
+        }
+    }
+
+    /// The pose of the frame the joint moves in (its axis is that frame's
+    /// z) in the previous joint's frame: the identity unless it has a
+    /// `pre` frame.
+    pub fn axis_frame(&self) -> IsometryMatrix3<f64> {
+        self.pre.unwrap_or_else(IsometryMatrix3::identity)
+    }
+
+    /// [`Joint::transform`] without the `pre` frame.
+    fn own_transform(&self, q: f64) -> IsometryMatrix3<f64> {
         if let Some(fixed) = &self.fixed {
             let motion = match self.kind {
                 JointKind::Revolute => IsometryMatrix3::rotation(Vector3::z() * q),
@@ -74,8 +93,17 @@ impl Joint {
     }
 
     /// Where this joint's frame origin is in the previous frame at value 0:
-    /// `(a cos theta, a sin theta, d)` for a DH joint.
+    /// `(a cos theta, a sin theta, d)` for a DH joint (carried by the
+    /// `pre` frame where there is one).
     pub fn rest_offset_mm(&self) -> Vector3<f64> {
+        match &self.pre {
+            Some(pre) => pre * self.own_rest_offset_mm() + pre.translation.vector,
+            None => self.own_rest_offset_mm(),
+        }
+    }
+
+    /// [`Joint::rest_offset_mm`] in the frame the joint moves in.
+    pub fn own_rest_offset_mm(&self) -> Vector3<f64> {
         match &self.fixed {
             Some(fixed) => fixed.translation.vector,
             None => {
@@ -92,6 +120,13 @@ impl Joint {
     /// The farthest this joint's frame origin can be from the previous
     /// frame's origin, at any value within the limits.
     pub fn longest_offset_mm(&self) -> f64 {
+        let pre_mm = self.pre.map_or(0.0, |p| p.translation.vector.norm());
+        pre_mm + self.own_longest_offset_mm()
+    }
+
+    /// [`Joint::longest_offset_mm`] from the origin of the frame the joint
+    /// moves in.
+    fn own_longest_offset_mm(&self) -> f64 {
         let slide_mm = match self.kind {
             JointKind::Revolute => 0.0,
             JointKind::Prismatic => self.min.abs().max(self.max.abs()),
@@ -316,7 +351,7 @@ impl Chain {
             .filter(|&i| q[i] < self.joints[i].min || q[i] > self.joints[i].max)
             .collect();
         for c in self.couplings.iter().filter(|c| !c.admits(&self.joints, q)) {
-            beyond.extend(&c.joints);
+            beyond.extend(c.joints());
         }
         beyond.sort_unstable();
         beyond.dedup();
@@ -343,6 +378,7 @@ pub(crate) fn revolute(name: &str, theta_rad: f64, d_mm: f64, alpha_rad: f64, a_
         kind: JointKind::Revolute,
         dh: Dh::new(theta_rad, d_mm, alpha_rad, a_mm),
         fixed: None,
+        pre: None,
         min: -3.0,
         max: 3.0,
         neutral: 0.0,

@@ -18,7 +18,9 @@
 //! A joint with a fixed pose (URDF) moves as `motion(q) F`, the same form
 //! with `F` in place of `Tx(a) Rx(alpha)` and theta and d zero, so such
 //! chains are followed the same way (a 1,000-joint URDF chain costs what
-//! the same DH chain does, not a product of 1,000 matrices per trial).
+//! the same DH chain does, not a product of 1,000 matrices per trial). A
+//! joint's `pre` frame (a mannequin's `fixed` joint) is carried by the
+//! joint before it, whose `F` it follows; the first joint's, by the base.
 
 use nalgebra::{IsometryMatrix3, Point3, Vector3};
 
@@ -37,6 +39,24 @@ enum Rest {
 }
 
 impl Rest {
+    /// This rest followed by `pre`, as one fixed pose.
+    fn then(&self, pre: &IsometryMatrix3<f64>) -> Rest {
+        let own = match self {
+            Rest::Dh {
+                a_mm,
+                cos_alpha,
+                sin_alpha,
+            } => IsometryMatrix3::from_parts(
+                nalgebra::Translation3::new(*a_mm, 0.0, 0.0),
+                nalgebra::Rotation3::from_matrix_unchecked(nalgebra::Matrix3::new(
+                    1.0, 0.0, 0.0, 0.0, *cos_alpha, -sin_alpha, 0.0, *sin_alpha, *cos_alpha,
+                )),
+            ),
+            Rest::Fixed(pose) => *pose,
+        };
+        Rest::Fixed(own * pre)
+    }
+
     /// `F p`: a point of frame k+1 in joint k's frame before its motion.
     #[inline]
     fn apply(&self, p: &Vector3<f64>) -> Vector3<f64> {
@@ -133,6 +153,8 @@ impl JointState {
 pub struct IncrementalFk {
     q: Vec<f64>,
     joints: Vec<JointState>,
+    /// The first joint's `pre` frame, between the base and its motion.
+    base_pre: Option<IsometryMatrix3<f64>>,
     target: Point3<f64>,
     /// `effector_out` of joints `k >= suffix_valid` is current (the last
     /// joint's never changes).
@@ -146,7 +168,10 @@ impl IncrementalFk {
         let n = chain.dof();
         assert_eq!(q.len(), n, "one value per joint");
         assert!(n > 0, "a chain has joints");
-        let joints = chain
+        let base_pre = chain.joints[0].pre;
+        let target_in =
+            base_pre.map_or(target.coords, |p| p.inverse_transform_point(&target).coords);
+        let mut joints: Vec<JointState> = chain
             .joints
             .iter()
             .zip(&q)
@@ -172,16 +197,22 @@ impl IncrementalFk {
                     cos: 1.0,
                     sin: 0.0,
                     d_total: 0.0,
-                    target_in: target.coords,
+                    target_in,
                     effector_out: chain.effector_mm,
                 };
                 state.store(qi);
                 state
             })
             .collect();
+        for (k, next) in chain.joints.iter().enumerate().skip(1) {
+            if let Some(pre) = &next.pre {
+                joints[k - 1].rest = joints[k - 1].rest.then(pre);
+            }
+        }
         IncrementalFk {
             q,
             joints,
+            base_pre,
             target,
             suffix_valid: n - 1,
             target_valid: 0,
@@ -200,7 +231,11 @@ impl IncrementalFk {
     pub fn effector(&mut self) -> Point3<f64> {
         self.refresh_suffix(0);
         let first = &self.joints[0];
-        Point3::from(first.forward(&first.effector_out))
+        let p = Point3::from(first.forward(&first.effector_out));
+        match &self.base_pre {
+            Some(pre) => pre * p,
+            None => p,
+        }
     }
 
     /// The squared distance from effector to target, current posture.
@@ -381,6 +416,7 @@ mod tests {
             kind,
             dh: Dh::new(theta, d, alpha, a),
             fixed: None,
+            pre: None,
             min: -2.0,
             max: 2.0,
             neutral: 0.0,
@@ -467,6 +503,36 @@ mod tests {
             let dir = if k % 2 == 0 { 1.0 } else { -1.0 };
             move_and_check(&mut fk, &chain, &mut q, i, &step, dir, &target);
             step = step.scaled(0.5);
+        }
+    }
+
+    /// Turned frames before the first joint's motion and a later one's
+    /// (a mannequin's `fixed` joints), on the DH chain and on one with
+    /// fixed poses.
+    #[test]
+    fn pre_frames_agree_with_the_full_product() {
+        let turn = |roll, pitch, yaw| {
+            IsometryMatrix3::from_parts(
+                nalgebra::Translation3::identity(),
+                nalgebra::Rotation3::from_euler_angles(roll, pitch, yaw),
+            )
+        };
+        for mut chain in [chain(), chain_with_fixed_poses()] {
+            chain.joints[0].pre = Some(turn(0.3, -0.8, 1.2));
+            chain.joints[2].pre = Some(turn(-1.1, 0.2, 0.5));
+            let target = Point3::new(-10.0, 25.0, 5.0);
+            let mut q = vec![0.4, -1.0, 0.2, -0.6];
+            let mut fk = IncrementalFk::new(&chain, q.clone(), target);
+            assert!((fk.effector() - chain.effector(&q)).norm() < 1e-9);
+            let mut step = Step::new(0.3);
+            for (k, i) in [0, 2, 1, 3, 2, 0, 3, 1].into_iter().enumerate() {
+                let qi = q[i] + 0.37;
+                let expected = (chain.effector(&moved(&q, i, qi)) - target).norm_squared();
+                assert!((fk.distance_sq_with(i, qi) - expected).abs() < 1e-9);
+                step = step.scaled(if k % 3 == 0 { 2.0 } else { 0.5 });
+                let dir = if k % 2 == 0 { 1.0 } else { -1.0 };
+                move_and_check(&mut fk, &chain, &mut q, i, &step, dir, &target);
+            }
         }
     }
 

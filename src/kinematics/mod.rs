@@ -1,6 +1,8 @@
 //! Kinematic chains: Denavit-Hartenberg parameters, joints with limits, and
 //! forward kinematics, full (`chain.rs`) and incremental (`incremental.rs`);
-//! joints whose ranges are coupled (`coupling.rs`);
+//! joints whose ranges are coupled (`coupling.rs`: an ellipse through
+//! their limits, `ellipse.rs`, or one following two others' elevation,
+//! `rhythm.rs`);
 //! bodies (`body.rs`): joints as a tree with several effectors; the legs
 //! no joint moves (`legs.rs`).
 
@@ -8,9 +10,13 @@ mod body;
 mod chain;
 mod coupling;
 mod dh;
+mod ellipse;
+mod frames;
 mod incremental;
 mod legs;
+mod limited;
 mod posed;
+mod rhythm;
 mod urdf;
 mod volumes;
 
@@ -18,8 +24,9 @@ pub use body::{Body, Effector, Sphere};
 #[cfg(test)]
 pub(crate) use chain::revolute;
 pub use chain::{Chain, Joint, JointKind, Link, Rider};
-pub use coupling::Coupling;
+pub use coupling::{Coupling, Ellipse, Rhythm};
 pub use dh::Dh;
+pub use frames::{Declared, Folded};
 pub use incremental::{IncrementalFk, Step};
 pub use legs::{Legs, Posture};
 pub use posed::Posed;

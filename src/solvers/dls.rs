@@ -170,7 +170,8 @@ fn effector_and_jacobian(chain: &Chain, q: &[f64], columns: &mut [Vector3<f64>])
     let mut frame = nalgebra::IsometryMatrix3::identity();
     let mut axes = Vec::with_capacity(chain.dof());
     for (joint, &qi) in chain.joints.iter().zip(q) {
-        axes.push((frame.translation.vector, frame.rotation * Vector3::z()));
+        let moving = frame * joint.axis_frame();
+        axes.push((moving.translation.vector, moving.rotation * Vector3::z()));
         frame *= joint.transform(qi);
     }
     let p = frame * Point3::from(chain.effector_mm);

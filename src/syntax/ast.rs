@@ -263,6 +263,9 @@ pub struct MannequinDecl {
     pub legs: Vec<LegsDecl>,
     /// `couple a, b`: joints whose ranges are coupled.
     pub couples: Vec<CoupleDecl>,
+    /// `rhythm g with a, b from x`: a joint that follows the elevation of
+    /// two others.
+    pub rhythms: Vec<RhythmDecl>,
     /// `seated` or `standing`, in the body or after an alias.
     pub postures: Vec<Spanned<Posture>>,
     pub span: Span,
@@ -305,10 +308,22 @@ pub struct CoupleDecl {
     pub span: Span,
 }
 
+/// `rhythm follower with a, b from from`: `follower` leaves its lower
+/// limit only as the elevation of `a` and `b` passes `from`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RhythmDecl {
+    pub follower: Name,
+    pub drivers: [Name; 2],
+    pub from: Expr,
+    pub span: Span,
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum JointKind {
     Revolute,
     Prismatic,
+    /// No motion: a frame that turns the axes of the joints after it.
+    Fixed,
 }
 
 #[derive(Clone, Debug, PartialEq)]

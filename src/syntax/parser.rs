@@ -443,6 +443,7 @@ impl Builder {
         let mut spheres = Vec::new();
         let mut legs = Vec::new();
         let mut couples = Vec::new();
+        let mut rhythms = Vec::new();
         let mut postures = Vec::new();
         let mut params = Vec::new();
         let mut alias = None;
@@ -460,6 +461,24 @@ impl Builder {
                     let span = self.span(&p);
                     let joints = p.into_inner().map(|q| self.name(q)).collect();
                     couples.push(CoupleDecl { joints, span });
+                }
+                Rule::rhythm_decl => {
+                    let span = self.span(&p);
+                    let mut parts = p
+                        .into_inner()
+                        .filter(|q| !matches!(q.as_rule(), Rule::with_kw | Rule::from_kw));
+                    let follower = self.name(parts.next().unwrap());
+                    let drivers = [
+                        self.name(parts.next().unwrap()),
+                        self.name(parts.next().unwrap()),
+                    ];
+                    let from = self.expr(parts.next().unwrap());
+                    rhythms.push(RhythmDecl {
+                        follower,
+                        drivers,
+                        from,
+                        span,
+                    });
                 }
                 Rule::posture => postures.push(self.posture(p)),
                 Rule::mannequin_urdf => {
@@ -518,6 +537,7 @@ impl Builder {
             spheres,
             legs,
             couples,
+            rhythms,
             postures,
             span,
         }
@@ -583,8 +603,13 @@ impl Builder {
         };
         for p in it {
             match p.as_rule() {
-                Rule::joint_kind if p.as_str() == "prismatic" => joint.kind = JointKind::Prismatic,
-                Rule::joint_kind => joint.kind = JointKind::Revolute,
+                Rule::joint_kind => {
+                    joint.kind = match p.as_str() {
+                        "prismatic" => JointKind::Prismatic,
+                        "fixed" => JointKind::Fixed,
+                        _ => JointKind::Revolute,
+                    }
+                }
                 Rule::after => joint.after = Some(self.name(p.into_inner().next().unwrap())),
                 Rule::dh => {
                     joint.dh_span = self.span(&p);

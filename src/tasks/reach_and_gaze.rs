@@ -344,7 +344,7 @@ impl Solving<'_, '_> {
         }
         // The held values keep the couplings (the hand's posture did).
         held.couplings
-            .retain(|c| !c.joints.iter().any(|j| path.contains(j)));
+            .retain(|c| !c.joints().iter().any(|j| path.contains(j)));
         let goals = [TreeGoal {
             effector: self.eyes_index,
             target_mm: pose.to_base(&self.target.position_mm),

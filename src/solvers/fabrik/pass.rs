@@ -235,8 +235,10 @@ impl<'a> Pass<'a> {
         let mut frame = *before;
         self.axes.clear();
         for j in bone.joints.clone() {
-            self.axes.push(frame.rotation * Vector3::z());
-            frame *= chain.joints[j].transform(self.q[j]);
+            let joint = &chain.joints[j];
+            self.axes
+                .push((frame * joint.axis_frame()).rotation * Vector3::z());
+            frame *= joint.transform(self.q[j]);
         }
         let end = bone.end_point(chain, &frame, &self.q);
         self.turn_group(k, end, self.goals[k + 1]);
@@ -303,8 +305,10 @@ impl<'a> Pass<'a> {
             let mut f = befores[k];
             self.axes.clear();
             for j in self.bones[k].joints.clone() {
-                self.axes.push(f.rotation * Vector3::z());
-                f *= chain.joints[j].transform(self.q[j]);
+                let joint = &chain.joints[j];
+                self.axes
+                    .push((f * joint.axis_frame()).rotation * Vector3::z());
+                f *= joint.transform(self.q[j]);
             }
             effector = self.turn_group(k, effector, target);
         }
