@@ -95,7 +95,7 @@ mod tests {
             v.sort_by(f64::total_cmp);
             v[v.len() / 2]
         };
-        // human-data.md: women 1626, men 1755 mm (50th percentile).
+        // docs/references.md: women 1626, men 1755 mm (50th percentile).
         assert!((median(true) - 1626.0).abs() <= 3.0, "{}", median(true));
         assert!((median(false) - 1755.0).abs() <= 3.0, "{}", median(false));
     }

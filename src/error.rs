@@ -139,6 +139,9 @@ pub enum ErrorKind {
     },
     #[error("{what} is not supported yet")]
     Unsupported { what: String, help: String },
+    /// A mannequin's `require` that its parameters break.
+    #[error("{message}")]
+    Implausible { message: String, shown: String },
     #[error("joint `{joint}` is fixed: it takes no {what}")]
     FixedJoint { joint: String, what: String },
     #[error("{what} belong in the scenario file, not in a file it uses")]
@@ -214,7 +217,7 @@ impl ErrorKind {
                 "reach::name"
             }
             Dimension { .. } | Operands { .. } | MixedDefaults => "reach::unit",
-            OutOfRange { .. } | LimitsReversed { .. } => "reach::range",
+            OutOfRange { .. } | LimitsReversed { .. } | Implausible { .. } => "reach::range",
             Missing { .. } | Repeated { .. } | TargetOutsideRoom { .. } => "reach::scene",
             TargetInsideBox { .. } => "reach::scene",
             Unsupported { .. } | Misplaced { .. } | NoLookLink { .. } => "reach::scene",
@@ -260,6 +263,7 @@ impl ErrorKind {
             NotFinite => "overflows".into(),
             OutOfRange { value, .. } => value.clone(),
             LimitsReversed { .. } => "min > max".into(),
+            Implausible { shown, .. } => shown.clone(),
             Missing { what, .. } => format!("no {what} given here"),
             Repeated { .. } => "given again here".into(),
             TargetOutsideRoom { .. } => "outside the room".into(),
@@ -315,6 +319,10 @@ impl ErrorKind {
             Operands { .. } => Some("both sides of + and - must have the same kind of unit".into()),
             MeetsItself { .. } => Some(
                 "a body that meets itself in its neutral posture meets itself in every posture near it, so no answer would mean anything: give its links smaller radii (`link NAME radius 20mm` on a joint; `radius 20mm` after a URDF mannequin's `tip`) or lengths that keep them apart"
+                    .into(),
+            ),
+            Implausible { .. } => Some(
+                "the mannequin requires it (a `require` in its declaration): check the measurements given, and that each is the one its parameter names"
                     .into(),
             ),
             FixedJoint { .. } => Some(

@@ -22,6 +22,7 @@ pub mod ansur;
 pub mod bases;
 mod builtin;
 pub mod cache;
+pub mod calibration;
 mod check;
 pub mod collision;
 pub mod error;

@@ -127,7 +127,11 @@ pub fn parts_with(
                 carried: false,
                 name: joint.link.name.clone(),
             });
-            links += 1;
+            // A bare segment (the girdle's slide) is no solid: the solids
+            // either side of it are neighbours.
+            if joint.link.radius_mm > 0.0 {
+                links += 1;
+            }
             last = end;
         }
         order_at[j] = links - 1;

@@ -120,6 +120,17 @@ fn errors_point_at_the_offending_text() {
             ],
         ),
         (
+            "mannequin n(a = 1mm, b = 2 * a) { joint j dh(a a) limits(0, 1)\n require b <= 3 * a, \"b too long\" }\nmannequin o = n(a 1mm, b 5mm)".into(),
+            vec![("b too long", "b 5mm")],
+        ),
+        (
+            "use std::people\nperson p { mannequin measured(stature 1500mm, forearm_hand 600mm) base manual_wheelchair }".into(),
+            vec![(
+                "the forearm-hand length is too long for the stature: measured adults have 0.306 of their stature or less (the back of the bent elbow to the middle fingertip)",
+                "forearm_hand 600mm",
+            )],
+        ),
+        (
             "mannequin m(l = 1mm) = n(a l)\nmannequin n(a = 1mm) { joint j dh(a a) limits(0, 1) }\nmannequin o = m(l 2mm, q 3mm)".into(),
             vec![("unknown parameter of this mannequin `q`", "q")],
         ),

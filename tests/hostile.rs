@@ -1257,10 +1257,12 @@ fn each_members_capability_map_counts_towards_the_bound_once() {
     // 8,192 postures of a chain of ten joints or so, a unit a joint and four.
     let per_member = (more - few) / 6;
     assert!(per_member >= 8_192 * 10, "{per_member} a member");
+    // Paying each member's map again would cost each member what their
+    // first task did; the second reach alone costs a small part of that.
     let two_targets = run(12, 2);
     assert!(
-        two_targets - more < 12 * 8_192,
-        "a second task pays no member's map again: {two_targets} against {more}"
+        two_targets - more < 12 * per_member / 2,
+        "a second task pays no member's map again: {two_targets} against {more} ({per_member} a member)"
     );
     runs_at_its_work_and_stops_one_unit_under(&population_at_counter(6, 2), run(6, 2));
 }

@@ -7,6 +7,7 @@ mod body;
 mod body_check;
 mod browser;
 mod cache;
+mod calibration;
 mod checker;
 mod cli;
 mod docs_picture;

@@ -24,7 +24,7 @@ fn kitchen(counters: &str) -> String {
     format!(
         "units mm deg\nuse std::arm\nroom kitchen {{\n  size 4000 x 3200 x 2500\n{counters}\n  \
          target mug at (1500, 450, 950)\n  target cup at (450, 1800, 950)\n  \
-         target corner at (300, 300, 950)\n}}\nperson ann {{\n  mannequin right_arm {{ limits \
+         target corner at (350, 350, 950)\n}}\nperson ann {{\n  mannequin right_arm {{ limits \
          trunk_flexion (-10deg, 40deg) }}\n  base wheelchair\n}}\nreach mug, cup, corner by ann\n"
     )
 }

@@ -22,13 +22,13 @@ fn population_reports(report: &Report) -> Vec<&PopulationReport> {
 }
 
 /// The manual wheelchair users' mannequin arguments of std::populations
-/// (as its text gives them), each value with the drawn person's
-/// measurements and drawn values written in as numbers.
+/// (`ansur_adult`'s, as its text gives them), each value with the drawn
+/// person's measurements and drawn values written in as numbers.
 fn arguments_of(scenario: &Scenario, person: usize) -> String {
     let text = reach::std_modules::module("populations").unwrap();
     let start = text.find("population manual_wheelchair_users").unwrap();
     let block = &text[start..];
-    let args_start = block.find("mannequin upper_body(").unwrap() + "mannequin upper_body(".len();
+    let args_start = block.find("mannequin ansur_adult(").unwrap() + "mannequin ansur_adult(".len();
     let args_end = block.find("\n  base ").unwrap();
     let args = block[args_start..args_end].trim().trim_end_matches(')');
     let drawn = &scenario.populations[0].drawn[person];
@@ -48,7 +48,7 @@ fn arguments_of(scenario: &Scenario, person: usize) -> String {
     );
     // Longest names first, so that none is replaced inside another.
     names.sort_by_key(|(n, _)| std::cmp::Reverse(n.len()));
-    args.split(",\n")
+    args.split(',')
         .map(|arg| {
             let arg = arg.trim();
             let (name, value) = arg.split_once(' ').unwrap();
@@ -103,7 +103,7 @@ fn a_population_of_one_is_the_person_it_draws() {
     assert_eq!(drawn.profiles, ["older_adult"]);
     let seat = drawn.values.iter().find(|(n, _)| n == "seat").unwrap().1;
     let person = format!(
-        "{ROOM}person p {{\n  mannequin upper_body(\n    {}) {{ profile older_adult }}\n  base manual_wheelchair {{ seat_height {seat:?}mm }}\n}}\n\
+        "{ROOM}person p {{\n  mannequin ansur_adult(\n    {}) {{ profile older_adult }}\n  base manual_wheelchair {{ seat_height {seat:?}mm }}\n}}\n\
          reach kettle, shelf by p\n",
         arguments_of(&scenario, 0)
     );
@@ -310,7 +310,7 @@ room kitchen {
             .map(|p| format!(" profile {p}"))
             .collect();
         let alone = format!(
-            "{room}person p {{\n  mannequin upper_body(\n    {}) {{{profiles} }}\n  base manual_wheelchair {{ seat_height {seat:?}mm }}\n}}\n\
+            "{room}person p {{\n  mannequin ansur_adult(\n    {}) {{{profiles} }}\n  base manual_wheelchair {{ seat_height {seat:?}mm }}\n}}\n\
              map front by p {{ step 150mm }}\n",
             arguments_of(&scenario, person)
         );

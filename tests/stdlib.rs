@@ -1,9 +1,17 @@
 //! The standard library's mannequins against positions worked out by hand
-//! from their sources (stature 1755 mm and Drillis & Contini's fractions).
+//! from their sources (stature 1755 mm; the joint-centre fractions of
+//! std::body, docs/calibration.md).
 
 use nalgebra::Point3;
 
 const H: f64 = 1755.0;
+/// std::arm's lengths as fractions of stature: hip point to the shoulder's
+/// centre, mid-trunk to the shoulder, upper arm, forearm, hand; the grip
+/// 40 % along the hand; the girdle's rise.
+const TRUNK: f64 = 0.2466;
+const SHOULDER: f64 = 0.1183;
+const ARM_TO_GRIP: f64 = 0.1629 + 0.1590 + 0.4 * 0.1101;
+const RISE: f64 = 0.0757;
 
 fn right_arm() -> reach::kinematics::Chain {
     reach::stdlib::chain("arm", "right_arm").expect("std::arm checks")
@@ -12,12 +20,9 @@ fn right_arm() -> reach::kinematics::Chain {
 #[test]
 fn right_arm_hangs_beside_the_hip_at_rest() {
     let chain = right_arm();
-    assert_eq!(chain.dof(), 10);
-    let q = vec![0.0; 10];
-    let shoulder_offset = 0.259 / 2.0 * H;
-    let trunk = (0.818 - 0.530) * H;
-    let arm = (0.186 + 0.146 + 0.6 * 0.108) * H;
-    let expected = Point3::new(0.0, -shoulder_offset, trunk - arm);
+    assert_eq!(chain.dof(), 11);
+    let q = vec![0.0; 11];
+    let expected = Point3::new(0.0, -SHOULDER * H, (TRUNK - ARM_TO_GRIP) * H);
     assert!(
         (chain.effector(&q) - expected).norm() < 1e-9,
         "{}",
@@ -29,24 +34,52 @@ fn right_arm_hangs_beside_the_hip_at_rest() {
 fn right_arm_joints_move_the_hand_the_anatomical_way() {
     let chain = right_arm();
     let index = |name: &str| chain.joints.iter().position(|j| j.name == name).unwrap();
-    let at = |joint: &str, deg: f64| {
-        let mut q = vec![0.0; 10];
-        q[index(joint)] = deg.to_radians();
-        chain.effector(&q)
+    let at = |moved: &[(&str, f64)]| {
+        let mut q = vec![0.0; 11];
+        for (joint, value) in moved {
+            q[index(joint)] = *value;
+        }
+        (chain.effector(&q), chain.within_limits(&q))
     };
-    let rest = at("elbow_flexion", 0.0);
+    let deg = f64::to_radians;
+    let (rest, _) = at(&[]);
     // Shoulder flexion 90 deg: the straight arm points forward at shoulder height.
-    let reach_forward = (0.186 + 0.146 + 0.6 * 0.108) * H;
-    let p = at("shoulder_flexion", 90.0);
+    let (p, _) = at(&[("shoulder_flexion", deg(90.0))]);
     assert!(
-        (p - Point3::new(reach_forward, rest.y, (0.818 - 0.530) * H)).norm() < 1e-9,
+        (p - Point3::new(ARM_TO_GRIP * H, rest.y, TRUNK * H)).norm() < 1e-9,
         "{p}"
     );
     // Elbow flexion moves the hand forward and up; abduction moves it out to the right.
-    assert!(at("elbow_flexion", 90.0).x > 300.0);
-    assert!(at("shoulder_abduction", 30.0).y < rest.y);
+    assert!(at(&[("elbow_flexion", deg(90.0))]).0.x > 300.0);
+    assert!(at(&[("shoulder_abduction", deg(30.0))]).0.y < rest.y);
     // Trunk flexion carries the shoulder forward (the hanging hand, below the hip, goes back).
-    assert!(at("trunk_flexion", 30.0).z > rest.z);
+    assert!(at(&[("trunk_flexion", deg(30.0))]).0.z > rest.z);
+    // The girdle slides the shoulder up the trunk, all its range with the
+    // arm straight up, none with it hanging (its rhythm).
+    let rise = RISE * H;
+    let (up, within) = at(&[
+        ("shoulder_flexion", deg(180.0)),
+        ("shoulder_elevation", rise),
+    ]);
+    assert!(within);
+    let top = Point3::new(0.0, -SHOULDER * H, (TRUNK + ARM_TO_GRIP + RISE) * H);
+    assert!((up - top).norm() < 1e-6, "{up}");
+    assert!(!at(&[("shoulder_elevation", 1.0)]).1);
+    let half = (105.0 - 30.0) / 150.0 * rise;
+    assert!(
+        at(&[
+            ("shoulder_flexion", deg(105.0)),
+            ("shoulder_elevation", half)
+        ])
+        .1
+    );
+    assert!(
+        !at(&[
+            ("shoulder_flexion", deg(105.0)),
+            ("shoulder_elevation", half + 1.0)
+        ])
+        .1
+    );
 }
 
 /// The grip's neutral position of a std::people mannequin, and where its
@@ -69,23 +102,19 @@ fn neutral_grip_and_eyes(name: &str) -> (Point3<f64>, Point3<f64>) {
     )
 }
 
+/// Standing or seated, the eyes are as high above the hip point as
+/// ANSUR II's sitting eye height (by their sex's median proportion to
+/// stature: 699.6, 804.6 and 857.3 mm above the seat) less the hip
+/// point's 100 mm above the seat.
 #[test]
-fn people_scale_with_stature_and_sit_by_the_seated_table() {
-    let eye_above_hip = |h: f64| (0.936 - 0.530) * h;
-    for (name, h) in [
-        ("woman_5th", 1520.0),
-        ("man_50th", 1755.0),
-        ("man_95th", 1870.0),
-    ] {
-        let (_, eyes) = neutral_grip_and_eyes(name);
-        assert!((eyes.z - eye_above_hip(h)).abs() < 1e-6, "{name}: {eyes}");
-    }
-    // Seated: the eyes as high above the seat as ANSUR II's sitting eye
-    // height (698, 804 and 860 mm), with the hip 100 mm above the seat.
+fn people_scale_with_stature_and_see_from_the_measured_sitting_eye_height() {
     for (name, above_seat) in [
-        ("woman_5th_seated", 698.0),
-        ("man_50th_seated", 804.0),
-        ("man_95th_seated", 860.0),
+        ("woman_5th", 699.6),
+        ("man_50th", 804.6),
+        ("man_95th", 857.3),
+        ("woman_5th_seated", 699.6),
+        ("man_50th_seated", 804.6),
+        ("man_95th_seated", 857.3),
     ] {
         let (_, eyes) = neutral_grip_and_eyes(name);
         assert!(
@@ -185,17 +214,17 @@ fn the_left_arm_mirrors_the_right() {
     assert!(left.effector(&left.neutral()).y > 100.0);
 }
 
-/// How FABRIK reads std::arm's chain as bones: the trunk; the shoulder's
-/// offset (turned by the trunk alone); the upper arm by flexion and
-/// abduction; the forearm by the humerus's rotation and the elbow; the hand
-/// by the forearm and wrist.
+/// How FABRIK reads std::arm's chain as bones: the trunk; the girdle's
+/// slide; the shoulder's offset (turned by the trunk alone); the upper arm
+/// by flexion and abduction; the forearm by the humerus's rotation and the
+/// elbow; the hand by the forearm and wrist.
 #[test]
 fn fabrik_reads_the_arm_as_trunk_shoulder_upper_arm_forearm_and_hand() {
     use reach::solvers::fabrik::{bones, End};
     let b = bones(&right_arm());
     let groups: Vec<_> = b.iter().map(|b| b.joints.clone()).collect();
-    assert_eq!(groups, [0..3, 3..3, 3..5, 5..7, 7..10]);
-    assert_eq!(b[4].end, End::Effector);
+    assert_eq!(groups, [0..3, 3..4, 4..4, 4..6, 6..8, 8..11]);
+    assert_eq!(b[5].end, End::Effector);
 }
 
 /// The eyes' look link is a bone of varying length for FABRIK.

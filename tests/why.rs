@@ -313,7 +313,7 @@ room kitchen {
   box wall_cabinet at (0, 0, 1400) size (350, 1600, 700)
   box shelf_4 at (0, 2000, 1500) size (300, 800, 20)
   box side_a  at (0, 1980, 0)    size (300, 20, 2000)
-  target knob at (380, 1450, 1650)
+  target knob at (380, 1450, 1600)
 }
 person pat { mannequin woman_5th_seated base manual_wheelchair }
 reach knob by pat

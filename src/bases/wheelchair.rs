@@ -6,7 +6,7 @@
 //! counter as far as its knee and toe clearance allow. The chair turns with
 //! the heading theta_0 (section 5.3.6 of the paper).
 //!
-//! Defaults from ../shared/reference/human-data.md and the sources it
+//! Defaults from docs/references.md and the sources it
 //! names: the 1991 ADA Accessibility Guidelines' large adult chair (figure
 //! A3: 660 mm wide, seat 485 mm, armrests 760 mm, footrests 455 mm across);
 //! the IDeA Center's measured manual seat height, 495 mm (2010); seat

@@ -37,13 +37,13 @@ impl Checker<'_> {
         for (name, decl, file) in decls {
             let body = match (&decl.alias, &decl.urdf) {
                 (Some(_), _) if !decl.params.is_empty() => {
-                    self.alias_with(decl, file, &[], file, 0)
+                    self.alias_with(decl, file, &[], decl.name.span, 0)
                 }
                 (Some(target), _) => self
                     .body_of(target, file, 0)
                     .map(|b| self.with_posture(b, decl)),
                 (None, Some(urdf)) => self.in_file(file, |c| c.urdf_body(urdf)),
-                (None, None) => self.body_with(decl, file, &[], file),
+                (None, None) => self.body_with(decl, file, &[], decl.name.span),
             };
             self.bodies.insert(name, body);
         }
@@ -61,7 +61,11 @@ impl Checker<'_> {
         };
         match &decl.alias {
             Some(_) if !decl.params.is_empty() && depth < self.limits.alias_chain => {
-                self.alias_with(decl, decl_file, &r.args, file, depth)
+                let at = Span {
+                    file,
+                    ..r.name.span
+                };
+                self.alias_with(decl, decl_file, &r.args, at, depth)
             }
             Some(target) if r.args.is_empty() && depth < self.limits.alias_chain => self
                 .body_of(target, decl_file, depth + 1)
@@ -90,7 +94,15 @@ impl Checker<'_> {
                 None
             }
             None if r.args.is_empty() => self.bodies.get(&r.name.value).cloned().flatten(),
-            None => self.body_with(decl, decl_file, &r.args, file),
+            None => self.body_with(
+                decl,
+                decl_file,
+                &r.args,
+                Span {
+                    file,
+                    ..r.name.span
+                },
+            ),
         }
     }
 
@@ -103,19 +115,70 @@ impl Checker<'_> {
         decl: &MannequinDecl,
         file: FileId,
         args: &[(Name, Expr)],
-        args_file: FileId,
+        at: Span,
         depth: usize,
     ) -> Option<Body> {
+        let args_file = at.file;
         let target = decl.alias.as_ref()?;
         let given = self.in_file(args_file, |c| c.mannequin_args(decl, args));
         let body = self.in_file(file, |c| {
             let outer = std::mem::take(&mut c.params);
             c.push_params(decl, &given);
-            let body = c.body_of(target, file, depth + 1);
+            let met = c.requirements(decl, args, at);
+            let body = c.body_of(target, file, depth + 1).filter(|_| met);
             c.params = outer;
             body
         });
         body.map(|b| self.with_posture(b, decl))
+    }
+
+    /// Whether `decl`'s parameters (in scope) meet its `require`s; each
+    /// one not met is an error at the first of `args` it names (else at
+    /// `at`, where the mannequin is named).
+    fn requirements(&mut self, decl: &MannequinDecl, args: &[(Name, Expr)], at: Span) -> bool {
+        let mut met = true;
+        for r in &decl.requires {
+            let (Some(value), Some(bound)) = (self.eval(&r.value), self.eval(&r.bound.value))
+            else {
+                met = false;
+                continue;
+            };
+            let comparison = r.bound.comparison.value;
+            let Ok(difference) = value.sum(bound, -1.0) else {
+                self.error(Error::new(
+                    ErrorKind::Dimension {
+                        expected: bound.describe(),
+                        found: value.describe(),
+                    },
+                    r.value.span,
+                ));
+                met = false;
+                continue;
+            };
+            if comparison.holds(difference.raw(), 0.0) {
+                continue;
+            }
+            met = false;
+            // The first name of the condition (the value's before the
+            // bound's) that an argument gives.
+            let named: Vec<&str> = [r.value.names(), r.bound.value.names()].concat();
+            let span = named
+                .iter()
+                .find_map(|name| args.iter().find(|(n, _)| n.value == *name))
+                .map_or(at, |(n, e)| Span {
+                    end: e.span.end,
+                    ..n.span
+                });
+            let shown = format!(
+                "{} {} {} does not hold",
+                shown_quantity(&value),
+                comparison.symbol(),
+                shown_quantity(&bound)
+            );
+            let message = r.message.clone();
+            self.error(Error::new(ErrorKind::Implausible { message, shown }, span));
+        }
+        met
     }
 
     /// `decl`'s parameters, each as `given` has it or at its default (which
@@ -135,21 +198,23 @@ impl Checker<'_> {
         }
     }
 
-    /// Build `decl` (of `file`) with `args` (written in `args_file`) for
-    /// its parameters, the others at their defaults.
+    /// Build `decl` (of `file`) with `args` (written where `at`, the
+    /// mannequin's name, is) for its parameters, the others at their
+    /// defaults.
     fn body_with(
         &mut self,
         decl: &MannequinDecl,
         file: FileId,
         args: &[(Name, Expr)],
-        args_file: FileId,
+        at: Span,
     ) -> Option<Body> {
-        let given = self.in_file(args_file, |c| c.mannequin_args(decl, args));
+        let given = self.in_file(at.file, |c| c.mannequin_args(decl, args));
         self.in_file(file, |c| {
             // Only its own parameters are in scope (not a caller's).
             let outer = std::mem::take(&mut c.params);
             c.push_params(decl, &given);
-            let body = c.body(decl);
+            let met = c.requirements(decl, args, at);
+            let body = c.body(decl).filter(|_| met);
             c.params = outer;
             body
         })
@@ -564,6 +629,7 @@ impl Checker<'_> {
                 joint,
                 offset_mm,
                 link: Link::named("the end"),
+                point: String::new(),
             }]);
         }
         let mut effectors = Vec::new();
@@ -582,6 +648,11 @@ impl Checker<'_> {
             };
             let offset = self.point(&e.at);
             let link = self.link(&e.link, &e.name.value);
+            self.repeated(e.point.iter().skip(1).map(|p| p.span), "`point`");
+            let point = e
+                .point
+                .first()
+                .map_or_else(String::new, |p| p.value.clone());
             match (joint, offset, link) {
                 (Some(joint), Some(offset_mm), Some(link)) => {
                     let (joint, offset_mm) = folded.point_on(joint, offset_mm);
@@ -590,6 +661,7 @@ impl Checker<'_> {
                         joint,
                         offset_mm,
                         link,
+                        point,
                     })
                 }
                 _ => ok = false,
@@ -759,6 +831,19 @@ impl Checker<'_> {
                 span,
             ));
         }
+    }
+}
+
+/// A value as a user reads it: `520mm`, `30deg`, or a bare number.
+fn shown_quantity(q: &Quantity) -> String {
+    match q.as_dim(crate::units::Dim::LENGTH) {
+        Some(mm) if !matches!(q, Quantity::Bare { .. }) => format!("{}mm", fmt_num(mm)),
+        _ => match q.as_dim(crate::units::Dim::ANGLE) {
+            Some(rad) if !matches!(q, Quantity::Bare { .. }) => {
+                format!("{}deg", fmt_num(rad.to_degrees()))
+            }
+            _ => fmt_num(q.raw()),
+        },
     }
 }
 

@@ -33,7 +33,7 @@ use std::collections::BinaryHeap;
 use nalgebra::{IsometryMatrix3, Point3, Vector3};
 
 use crate::geometry::Capsule;
-use crate::kinematics::{Chain, JointKind};
+use crate::kinematics::{Chain, Joint, JointKind};
 use crate::scene::OwnBody;
 
 /// The cut of a chain after its trunk, for one person's own body.
@@ -43,8 +43,11 @@ pub struct OutOfReach<'a> {
     /// How many joints the trunk has (the first ones of the chain).
     trunk_joints: usize,
     /// The shoulder's pivot in the frame of the trunk's last joint: a
-    /// point the next joint does not move.
+    /// point the next joint does not move; where the shoulder girdle
+    /// slides it, the line it slides along, from `pivot_mm` to
+    /// `pivot_end_mm` (the same point where nothing slides it).
     pivot_mm: Point3<f64>,
+    pivot_end_mm: Point3<f64>,
     /// The farthest the effector can be from the pivot.
     arm_mm: f64,
     /// The solids the trunk carries (the head, the neck): index of the
@@ -138,6 +141,49 @@ impl Trunk {
     }
 }
 
+/// The shoulder's pivot in the frame of the trunk's last joint (the ends
+/// of the line it slides along, or one point twice), how far the next
+/// joints may carry the arm's start from it, and the first joint beyond
+/// them. A revolute joint moves its frame's origin about its own z axis:
+/// the part along the axis is the pivot's (in the frame it moves in, after
+/// its `pre` frame). A slide first (the shoulder girdle rising with the
+/// arm) carries that pivot along a line.
+fn shoulder_pivot(joints: &[Joint], first: usize) -> ([Point3<f64>; 2], f64, usize) {
+    let turn = |j: &Joint| {
+        let offset = j.own_rest_offset_mm();
+        let pivot = j.axis_frame() * Point3::new(0.0, 0.0, offset.z);
+        (pivot, offset.x.hypot(offset.y))
+    };
+    let shoulder = &joints[first];
+    match (shoulder.kind, joints.get(first + 1)) {
+        (JointKind::Revolute, _) => {
+            let (pivot, from) = turn(shoulder);
+            ([pivot; 2], from, first + 1)
+        }
+        (JointKind::Prismatic, Some(next)) if next.kind == JointKind::Revolute => {
+            let (pivot, from) = turn(next);
+            let ends = [shoulder.min, shoulder.max].map(|q| shoulder.transform(q) * pivot);
+            (ends, from, first + 2)
+        }
+        (JointKind::Prismatic, _) => {
+            let pivot = shoulder.axis_frame() * Point3::origin();
+            let slide = shoulder.longest_offset_mm() - pivot.coords.norm();
+            ([pivot; 2], slide, first + 1)
+        }
+    }
+}
+
+/// The point of the line from `ends[0]` to `ends[1]` nearest `target`.
+fn nearest_on(ends: [Point3<f64>; 2], target: &Point3<f64>) -> Point3<f64> {
+    let along = ends[1] - ends[0];
+    let length_sq = along.norm_squared();
+    if length_sq == 0.0 {
+        return ends[0];
+    }
+    let t = ((target - ends[0]).dot(&along) / length_sq).clamp(0.0, 1.0);
+    ends[0] + along * t
+}
+
 impl<'a> OutOfReach<'a> {
     /// The cut of `chain` for a person whose own body and base are `own`;
     /// none where the chain has no trunk of this kind (joints that turn
@@ -154,26 +200,12 @@ impl<'a> OutOfReach<'a> {
             .iter()
             .all(|j| j.kind == JointKind::Revolute);
         let has_solid = joints[last].link.radius_mm > 0.0;
-        let shoulder = joints.get(trunk_joints)?;
+        joints.get(trunk_joints)?;
         if !turning || !has_solid || trunk_joints > MOST_TRUNK_JOINTS {
             return None;
         }
-        // The next joint moves its frame's origin about its own z axis
-        // (or along it): the part along the axis is the pivot's.
-        // (In the frame it moves in: after its `pre` frame, if it has one.)
-        let offset = shoulder.own_rest_offset_mm();
-        let (pivot_mm, from_pivot_mm) = match shoulder.kind {
-            JointKind::Revolute => (Point3::new(0.0, 0.0, offset.z), offset.x.hypot(offset.y)),
-            JointKind::Prismatic => (
-                Point3::origin(),
-                shoulder.longest_offset_mm() - shoulder.axis_frame().translation.vector.norm(),
-            ),
-        };
-        let pivot_mm = shoulder.axis_frame() * pivot_mm;
-        let beyond_mm: f64 = joints[trunk_joints + 1..]
-            .iter()
-            .map(|j| j.longest_offset_mm())
-            .sum();
+        let ([pivot_mm, pivot_end_mm], from_pivot_mm, next) = shoulder_pivot(joints, trunk_joints);
+        let beyond_mm: f64 = joints[next..].iter().map(|j| j.longest_offset_mm()).sum();
         let riders = (0..chain.riders.len())
             .filter(|&k| chain.riders[k].anchor.is_some_and(|a| a <= last))
             .collect();
@@ -182,6 +214,7 @@ impl<'a> OutOfReach<'a> {
             own,
             trunk_joints,
             pivot_mm,
+            pivot_end_mm,
             arm_mm: from_pivot_mm + beyond_mm + chain.effector_mm.norm(),
             riders,
         })
@@ -276,10 +309,27 @@ impl<'a> OutOfReach<'a> {
             }
             let (q, half) = (&q[..n], &half[..n]);
             let trunk = self.trunk_at(q);
-            let pivot = trunk.frame() * self.pivot_mm;
+            let ends = [self.pivot_mm, self.pivot_end_mm].map(|p| trunk.frame() * p);
+            let pivot = nearest_on(ends, target_mm);
             let to_target = pivot - target_mm;
             let centre_mm = to_target.norm();
-            let nearest_mm = centre_mm - self.pivot_gain_mm(&trunk, &pivot, &to_target, half);
+            // How near the pivot may come within the box: a point's move
+            // along the line to the target; where the pivot slides, the
+            // better of two bounds: the line's nearest point less the
+            // farthest either end moves (no point of the line moves
+            // farther), and its middle's move along the line to the target
+            // less half its length.
+            let middle = Point3::from((ends[0].coords + ends[1].coords) / 2.0);
+            let to_middle = middle - target_mm;
+            let by_middle = to_middle.norm()
+                - self.pivot_gain_mm(&trunk, &middle, &to_middle, half)
+                - (ends[1] - ends[0]).norm() / 2.0;
+            let nearest_mm = if ends[0] == ends[1] {
+                by_middle
+            } else {
+                let moves = ends.iter().map(|e| trunk.moves_mm(e, half));
+                by_middle.max(centre_mm - moves.fold(0.0, f64::max))
+            };
             if nearest_mm > reach_mm {
                 continue;
             }

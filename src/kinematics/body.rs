@@ -20,6 +20,9 @@ pub struct Effector {
     pub offset_mm: Vector3<f64>,
     /// The link from that joint's frame origin to the effector (the hand).
     pub link: Link,
+    /// What point of the body it is ("the centre of a power grasp"), as
+    /// its mannequin says; empty where it says nothing.
+    pub point: String,
 }
 
 /// A sphere on a joint of the body: the head.
@@ -62,6 +65,7 @@ impl Body {
                 joint: n.checked_sub(1),
                 offset_mm: chain.effector_mm,
                 link: chain.effector_link,
+                point: chain.effector_point,
             }],
             joints: chain.joints,
             spheres: Vec::new(),
@@ -122,6 +126,7 @@ impl Body {
             effector_name: effector.name.clone(),
             effector_mm: effector.offset_mm,
             effector_link: effector.link.clone(),
+            effector_point: effector.point.clone(),
             riders: self
                 .riders_at(&path, q)
                 .into_iter()
@@ -269,12 +274,14 @@ mod tests {
                     joint: Some(2),
                     offset_mm: Vector3::zeros(),
                     link: Link::named("hand"),
+                    point: String::new(),
                 },
                 Effector {
                     name: "eyes".into(),
                     joint: Some(3),
                     offset_mm: Vector3::zeros(),
                     link: Link::named("look"),
+                    point: String::new(),
                 },
             ],
             spheres: Vec::new(),

@@ -171,6 +171,9 @@ pub struct Chain {
     pub effector_mm: Vector3<f64>,
     /// The link from the last joint's frame origin to the effector.
     pub effector_link: Link,
+    /// What point of the body the effector is (its mannequin's `point`);
+    /// empty where it says nothing.
+    pub effector_point: String,
     /// Solids of the body the chain carries (a head and neck on the
     /// spine).
     pub riders: Vec<Rider>,
@@ -235,8 +238,19 @@ impl Chain {
             effector_name: name.to_string(),
             effector_mm,
             effector_link: Link::named(name),
+            effector_point: String::new(),
             riders: Vec::new(),
             couplings: Vec::new(),
+        }
+    }
+
+    /// What a reported distance is measured to: the effector's `point`,
+    /// or its name.
+    pub fn measured_to(&self) -> String {
+        if self.effector_point.is_empty() {
+            format!("the effector `{}`", self.effector_name)
+        } else {
+            self.effector_point.clone()
         }
     }
 

@@ -207,7 +207,11 @@ impl Chain {
                     mark.links,
                     motion(mark.start),
                 );
-                mark.links += 1;
+                // A bare segment (radius 0) is no solid: the solids either
+                // side of it are neighbours.
+                if joint.link.radius_mm > 0.0 {
+                    mark.links += 1;
+                }
                 mark.last = origin;
                 mark.start = j as i64;
             }

@@ -42,6 +42,9 @@ pub struct GazeReport {
     pub comfort: f64,
     pub solver: String,
     pub effector: String,
+    /// What point of the body that effector is ("the eyes"), as its
+    /// mannequin says; else "the effector `NAME`".
+    pub point: String,
     pub base: BaseReport,
     pub posture: Posture,
     pub eyes_mm: [f64; 3],
@@ -85,6 +88,7 @@ impl GazeReport {
             comfort: fixed(asked.chain.discomfort(q), 4),
             solver: asked.solver.to_string(),
             effector: asked.chain.effector_name.clone(),
+            point: asked.chain.measured_to(),
             base: BaseReport::new(&asked.person.base.name, &placement.pose),
             posture: Posture::new(asked.chain, q),
             eyes_mm: point(sight.eyes_room_mm),

@@ -34,6 +34,11 @@ pub struct MapReport {
     pub step_mm: f64,
     pub tolerance_mm: f64,
     pub solver: String,
+    /// The effector whose distance to each point counts (`grip`, `eyes`).
+    pub effector: String,
+    /// What point of the body that effector is ("the centre of a power
+    /// grasp"), as its mannequin says; else "the effector `NAME`".
+    pub point: String,
     /// Points that count only thanks to the task's `blocked_solver` (the
     /// solver reached them from no placement without going through an
     /// obstacle).
@@ -233,6 +238,8 @@ impl MapReport {
             step_mm: mm(step_mm),
             tolerance_mm: mm(tolerance_mm),
             solver: solver.to_string(),
+            effector: String::new(),
+            point: String::new(),
             retried: 0,
             base: person.base.name.clone(),
             view: if surface.is_horizontal() {

@@ -32,7 +32,12 @@ pub struct ReachReport {
     /// The comfort criterion C of the posture: 0 is the neutral posture.
     pub comfort: f64,
     pub solver: String,
+    /// The effector brought to the target (`grip`, `fingertip`).
     pub effector: String,
+    /// What point of the body that effector is, which `distance_mm` is
+    /// measured to ("the centre of a power grasp"), as its mannequin says;
+    /// else "the effector `NAME`".
+    pub point: String,
     pub base: BaseReport,
     pub posture: Posture,
     pub effector_mm: [f64; 3],
@@ -62,6 +67,7 @@ impl ReachReport {
             comfort: fixed(chain.discomfort(q), 4),
             solver: asked.solver.to_string(),
             effector: chain.effector_name.clone(),
+            point: chain.measured_to(),
             base: BaseReport::new(&asked.person.base.name, &placement.pose),
             posture: Posture::new(chain, q),
             effector_mm: point(effector_room),
@@ -116,6 +122,7 @@ impl ReportKind for ReachReport {
         if self.distance_mm.is_finite() {
             self.base.write_line(out, what);
             self.posture.write_line(out);
+            let _ = writeln!(out, "  distance to {} (`{}`)", self.point, self.effector);
         } else {
             // No place to approach the target from: no base was placed and
             // no posture looked for.

@@ -5,7 +5,7 @@
 use rand_chacha::rand_core::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
-use crate::kinematics::Chain;
+use crate::kinematics::{Chain, Coupling};
 use crate::options::Params;
 
 /// The option `neutral_start`, which every solver that draws starts has.
@@ -20,18 +20,40 @@ pub fn neutral_start(p: &mut Params<'_>) -> bool {
 
 /// A posture drawn at random within the joint limits: each joint uniformly
 /// within its limits, and a coupled joint within what the joints coupled
-/// to it, drawn before it, leave it (those after it at their centres).
+/// to it, drawn before it, leave it (those after it at their centres). A
+/// rhythm's follower (the shoulder girdle) is drawn after its drivers, so
+/// that it rises in the starts where the arm is raised.
 pub fn random_posture(chain: &Chain, rng: &mut ChaCha8Rng) -> Vec<f64> {
     let mut q: Vec<f64> = chain
         .joints
         .iter()
         .map(|j| 0.0_f64.clamp(j.min, j.max))
         .collect();
-    for i in 0..q.len() {
+    for i in drawing_order(chain) {
         let (lo, hi) = chain.interval(i, &q);
         q[i] = lo + unit_interval(rng) * (hi - lo);
     }
     q
+}
+
+/// The rhythms' followers of `chain` (the shoulder girdles).
+fn followers(chain: &Chain) -> Vec<usize> {
+    chain
+        .couplings
+        .iter()
+        .filter_map(|c| match c {
+            Coupling::Rhythm(r) => Some(r.follower),
+            Coupling::Ellipse(_) => None,
+        })
+        .collect()
+}
+
+/// The joints in the order they are drawn: the chain's, the rhythms'
+/// followers last.
+fn drawing_order(chain: &Chain) -> Vec<usize> {
+    let followers = followers(chain);
+    let leaders = (0..chain.dof()).filter(|i| !followers.contains(i));
+    leaders.chain(followers.iter().copied()).collect()
 }
 
 /// The starting postures of one solve, in order: the neutral posture first
@@ -100,10 +122,16 @@ impl Iterator for Kicks<'_> {
         if self.given.is_multiple_of(4) {
             return Some(random_posture(self.chain, &mut self.rng));
         }
+        // The followers kicked last, from their lower limits meanwhile, so
+        // that a raised girdle does not keep the arm from being kicked down.
         let mut kicked = self.around.to_vec();
-        for (i, j) in self.chain.joints.iter().enumerate() {
+        for f in followers(self.chain) {
+            kicked[f] = self.chain.joints[f].min;
+        }
+        for i in drawing_order(self.chain) {
+            let j = &self.chain.joints[i];
             let kick = (2.0 * unit_interval(&mut self.rng) - 1.0) * self.spread * j.range();
-            kicked[i] = self.chain.clamp_joint(i, kicked[i] + kick, &kicked);
+            kicked[i] = self.chain.clamp_joint(i, self.around[i] + kick, &kicked);
         }
         Some(kicked)
     }

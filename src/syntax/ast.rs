@@ -156,6 +156,19 @@ pub enum ExprKind {
     Call(Function, Vec<Expr>),
 }
 
+impl Expr {
+    /// The names it uses, in order, each as often as it is written.
+    pub fn names(&self) -> Vec<&str> {
+        match &self.kind {
+            ExprKind::Number { .. } => Vec::new(),
+            ExprKind::Name(n) => vec![n.as_str()],
+            ExprKind::Neg(e) => e.names(),
+            ExprKind::Binary(_, a, b) => [a.names(), b.names()].concat(),
+            ExprKind::Call(_, args) => args.iter().flat_map(Expr::names).collect(),
+        }
+    }
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Function {
     Min,
@@ -266,6 +279,8 @@ pub struct MannequinDecl {
     /// `rhythm g with a, b from x`: a joint that follows the elevation of
     /// two others.
     pub rhythms: Vec<RhythmDecl>,
+    /// `require a <= b, "why"`: what the parameters must satisfy.
+    pub requires: Vec<RequireDecl>,
     /// `seated` or `standing`, in the body or after an alias.
     pub postures: Vec<Spanned<Posture>>,
     pub span: Span,
@@ -305,6 +320,16 @@ pub struct LegsDecl {
 #[derive(Clone, Debug, PartialEq)]
 pub struct CoupleDecl {
     pub joints: Vec<Name>,
+    pub span: Span,
+}
+
+/// `require value COMPARISON bound, "message"`: a condition on a
+/// mannequin's parameters.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RequireDecl {
+    pub value: Expr,
+    pub bound: Bound,
+    pub message: String,
     pub span: Span,
 }
 
@@ -355,6 +380,9 @@ pub struct EffectorDecl {
     pub after: Option<Name>,
     pub at: Vec3Expr,
     pub link: LinkDecl,
+    /// `point "..."`: what point of the body it is, each given once at
+    /// most (the checker says so).
+    pub point: Vec<Spanned<String>>,
 }
 
 #[derive(Clone, Debug, PartialEq)]

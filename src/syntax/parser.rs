@@ -444,6 +444,7 @@ impl Builder {
         let mut legs = Vec::new();
         let mut couples = Vec::new();
         let mut rhythms = Vec::new();
+        let mut requires = Vec::new();
         let mut postures = Vec::new();
         let mut params = Vec::new();
         let mut alias = None;
@@ -502,8 +503,14 @@ impl Builder {
                 Rule::mannequin_alias => {
                     let mut parts = p.into_inner();
                     alias = Some(self.mannequin_ref(parts.next().unwrap()));
-                    postures.extend(parts.map(|q| self.posture(q)));
+                    for q in parts {
+                        match q.as_rule() {
+                            Rule::require_decl => requires.push(self.require(q)),
+                            _ => postures.push(self.posture(q)),
+                        }
+                    }
                 }
+                Rule::require_decl => requires.push(self.require(p)),
                 Rule::mannequin_params => {
                     for param in p.into_inner() {
                         let mut kv = param.into_inner();
@@ -515,14 +522,24 @@ impl Builder {
                     let mut e = p.into_inner().peekable();
                     let (name, after, at) = self.placed(&mut e);
                     let mut link = LinkDecl::default();
+                    let mut point = Vec::new();
                     for q in e {
-                        self.link_prop(q, &mut link);
+                        match q.as_rule() {
+                            Rule::effector_point => {
+                                let s = q.into_inner().next().unwrap();
+                                let span = self.span(&s);
+                                let text = s.into_inner().next().unwrap().as_str();
+                                point.push(Spanned::new(unescape(text), span));
+                            }
+                            _ => self.link_prop(q, &mut link),
+                        }
                     }
                     effectors.push(EffectorDecl {
                         name,
                         after,
                         at,
                         link,
+                        point,
                     });
                 }
             }
@@ -538,7 +555,23 @@ impl Builder {
             legs,
             couples,
             rhythms,
+            requires,
             postures,
+            span,
+        }
+    }
+
+    /// `require value COMPARISON bound, "message"`.
+    fn require(&mut self, p: Pair<Rule>) -> RequireDecl {
+        let span = self.span(&p);
+        let mut it = p.into_inner();
+        let value = self.expr(it.next().unwrap());
+        let bound = self.bound(it.next().unwrap());
+        let message = unescape(it.next().unwrap().into_inner().next().unwrap().as_str());
+        RequireDecl {
+            value,
+            bound,
+            message,
             span,
         }
     }

@@ -188,6 +188,8 @@ fn map_report(
     );
     report.of = asked.of;
     report.retried = retried;
+    report.effector = asked.chain.effector_name.clone();
+    report.point = asked.chain.measured_to();
     report
 }
 
