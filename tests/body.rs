@@ -262,32 +262,14 @@ fn an_arm_through_the_chest_is_refused() {
     let body = reach::stdlib::body("arm", "right_arm").unwrap();
     let chain = body.chain(0);
     let d = f64::to_radians;
-    let through = [
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        d(90.0),
-        0.0,
-        d(-70.0),
-        d(150.0),
-        0.0,
-        0.0,
-        0.0,
-    ];
-    let beside = [
-        0.0,
-        0.0,
-        0.0,
-        0.0,
-        d(90.0),
-        0.0,
-        d(0.0),
-        d(150.0),
-        0.0,
-        0.0,
-        0.0,
-    ];
+    // The arm forward, the elbow bent fully, the humerus turned in (the
+    // forearm across the chest) or not.
+    let bent = |rotation: f64| {
+        let mut q = [0.0; 11];
+        (q[4], q[6], q[7]) = (d(90.0), d(rotation), d(150.0));
+        q
+    };
+    let (through, beside) = (bent(-70.0), bent(0.0));
     let room = Room {
         name: "r".into(),
         size_mm: nalgebra::Vector3::repeat(4000.0),

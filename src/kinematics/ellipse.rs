@@ -107,15 +107,8 @@ impl Ellipse {
 
 #[cfg(test)]
 mod tests {
+    use super::super::limited::Range;
     use super::*;
-
-    struct Range(f64, f64);
-
-    impl Limited for Range {
-        fn limits(&self) -> (f64, f64) {
-            (self.0, self.1)
-        }
-    }
 
     fn joints() -> Vec<Range> {
         vec![Range(-0.5, 0.5), Range(-0.6, 0.3)]

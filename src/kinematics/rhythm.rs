@@ -222,15 +222,8 @@ fn holding(lo: f64, hi: f64, x: f64, feasible: impl Fn(f64) -> bool, cuts: Vec<f
 
 #[cfg(test)]
 mod tests {
+    use super::super::limited::Range;
     use super::*;
-
-    struct Range(f64, f64);
-
-    impl Limited for Range {
-        fn limits(&self) -> (f64, f64) {
-            (self.0, self.1)
-        }
-    }
 
     /// A girdle of 0-120 mm, flexion -60..180 deg, abduction -30..180 deg.
     fn joints() -> Vec<Range> {
