@@ -471,6 +471,15 @@ impl Error {
         Error::new(kind, span)
     }
 
+    /// This error at `span` instead, without its notes: where a caller's
+    /// arguments made a mannequin of another file wrong, the error belongs
+    /// at the call, which the user can change.
+    pub fn moved_to(mut self, span: Span) -> Self {
+        self.0.span = Some(span);
+        self.0.notes.clear();
+        self
+    }
+
     pub fn with_note(mut self, span: Span, text: impl Into<String>) -> Self {
         self.0.notes.push((span, text.into()));
         self

@@ -80,13 +80,21 @@ fn summary(name: &str, text: &str) -> String {
 /// `name`, `name(p1, p2)` or `name = other(args)`.
 fn mannequin_entry(m: &crate::syntax::ast::MannequinDecl) -> String {
     let name = &m.name.value;
+    let params: Vec<&str> = m.params.iter().map(|(n, _)| n.value.as_str()).collect();
+    if let (Some(alias), false) = (&m.alias, params.is_empty()) {
+        // Its own parameters are what a user gives.
+        return format!(
+            "{name}({}) (= {}(...))",
+            params.join(", "),
+            alias.name.value
+        );
+    }
     if let Some(alias) = &m.alias {
         let args: Vec<&str> = alias.args.iter().map(|(n, _)| n.value.as_str()).collect();
         return format!("{name} (= {}({}))", alias.name.value, args.join(", "));
     }
-    if m.params.is_empty() {
+    if params.is_empty() {
         return name.clone();
     }
-    let params: Vec<&str> = m.params.iter().map(|(n, _)| n.value.as_str()).collect();
     format!("{name}({})", params.join(", "))
 }

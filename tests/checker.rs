@@ -120,6 +120,18 @@ fn errors_point_at_the_offending_text() {
             ],
         ),
         (
+            "mannequin f { joint fx fixed dh(theta 90deg)\n effector stub after fx at (200, 0, 0)\n joint sh dh(a 10) limits(0, 1) }".into(),
+            vec![("mannequin `f` has no joint that moves before each effector", "f")],
+        ),
+        (
+            "mannequin m { joint j dh(a 1) limits(0, 1)\n joint i dh(a 1) limits(0, 1)\n joint k prismatic dh(d 1) limits(0, 5)\n rhythm k with j, i from 30deg\n rhythm k with i, j from 60deg }".into(),
+            vec![("a `rhythm` of `k` is given more than once", "k")],
+        ),
+        (
+            "mannequin f { joint fx fixed dh(theta 90deg) }".into(),
+            vec![("mannequin `f` has no joint that moves before each effector", "f")],
+        ),
+        (
             "mannequin n(a = 1mm, b = 2 * a) { joint j dh(a a) limits(0, 1)\n require b <= 3 * a, \"b too long\" }\nmannequin o = n(a 1mm, b 5mm)".into(),
             vec![("b too long", "b 5mm")],
         ),

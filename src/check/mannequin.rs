@@ -65,7 +65,7 @@ impl Checker<'_> {
                     file,
                     ..r.name.span
                 };
-                self.alias_with(decl, decl_file, &r.args, at, depth)
+                self.at_the_call(at, |c| c.alias_with(decl, decl_file, &r.args, at, depth))
             }
             Some(target) if r.args.is_empty() && depth < self.limits.alias_chain => self
                 .body_of(target, decl_file, depth + 1)
@@ -94,16 +94,33 @@ impl Checker<'_> {
                 None
             }
             None if r.args.is_empty() => self.bodies.get(&r.name.value).cloned().flatten(),
-            None => self.body_with(
-                decl,
-                decl_file,
-                &r.args,
-                Span {
+            None => {
+                let at = Span {
                     file,
                     ..r.name.span
-                },
-            ),
+                };
+                self.at_the_call(at, |c| c.body_with(decl, decl_file, &r.args, at))
+            }
         }
+    }
+
+    /// `build`, a mannequin built with the arguments of a call at `at`:
+    /// the errors it finds in other files (a standard library mannequin
+    /// the arguments make wrong: a negative radius, an angle for a length)
+    /// are moved to the call, where the user can mend them.
+    fn at_the_call(
+        &mut self,
+        at: Span,
+        build: impl FnOnce(&mut Self) -> Option<Body>,
+    ) -> Option<Body> {
+        let before = self.errors.len();
+        let body = build(self);
+        for e in &mut self.errors[before..] {
+            if e.span().is_some_and(|s| s.file != at.file) {
+                *e = e.clone().moved_to(at);
+            }
+        }
+        body
     }
 
     /// The body of alias `decl` (of `file`) that has parameters of its own,
@@ -191,10 +208,29 @@ impl Checker<'_> {
             }
             seen.push(name);
             let value = match given.iter().find(|(n, _)| n == &name.value) {
+                Some((_, Some(v @ Quantity::Bare { .. }))) => Some(self.as_default_is(*v, default)),
                 Some((_, v)) => *v,
                 None => self.eval(default),
             };
             self.params.push((name.value.clone(), value));
+        }
+    }
+
+    /// A bare number given for a parameter whose default is a length or an
+    /// angle: that, in the default unit of the file it was written in
+    /// (`sitting_height 85` in a `units cm` file is 85 cm).
+    fn as_default_is(&mut self, given: Quantity, default: &Expr) -> Quantity {
+        let before = self.errors.len();
+        let kind = self.eval(default);
+        // The default is only looked at, not used: its errors are not the
+        // user's.
+        self.errors.truncate(before);
+        match kind {
+            Some(Quantity::Dimensioned { dim, .. }) => match given.as_dim(dim) {
+                Some(value) => Quantity::dimensioned(value, dim),
+                None => given,
+            },
+            _ => given,
         }
     }
 
@@ -295,7 +331,22 @@ impl Checker<'_> {
         let legs = self.legs(decl);
         let couplings = self.couplings(decl, &names, &folded);
         let effectors = effectors?;
-        if folded.joints.is_empty() || !complete {
+        if !complete {
+            return None;
+        }
+        if decl.joints.is_empty() {
+            return None;
+        }
+        if folded.joints.is_empty() || effectors.iter().any(|e| e.joint.is_none()) {
+            // Fixed frames only (or an effector on one before any joint
+            // that moves): nothing a solver could move.
+            self.error(Error::new(
+                ErrorKind::Missing {
+                    owner: format!("mannequin `{}`", decl.name.value),
+                    what: "joint that moves before each effector",
+                },
+                decl.name.span,
+            ));
             return None;
         }
         let body = Body {
@@ -445,6 +496,15 @@ impl Checker<'_> {
         }
         for r in &decl.rhythms {
             match self.rhythm(r, joints, folded) {
+                Some(rhythm)
+                    if couplings.iter().any(
+                        |c| matches!(c, Coupling::Rhythm(k) if k.follower == rhythm.follower),
+                    ) =>
+                {
+                    let what = format!("a `rhythm` of `{}`", r.follower.value);
+                    self.repeated(std::iter::once(r.follower.span), &what);
+                    ok = false;
+                }
                 Some(rhythm) => couplings.push(Coupling::Rhythm(rhythm)),
                 None => ok = false,
             }

@@ -307,6 +307,9 @@ impl ReportKind for MapReport {
             self.rows,
             self.step_mm
         );
+        if !self.point.is_empty() {
+            let _ = writeln!(out, "  distance to {} (`{}`)", self.point, self.effector);
+        }
         let through = self.cells.iter().filter(|c| c.through().is_some()).count();
         if through > 0 {
             let _ = writeln!(

@@ -143,7 +143,7 @@ impl Why {
                 joints,
                 coupled: true,
             } => format!(
-                "at the joints' coupled limits: with each widened {WIDENED_DEG} deg and coupled joints freed of their coupling (`couple`) the hand reaches, with {} beyond the range they have together",
+                "at the joints' coupled limits: with each widened {WIDENED_DEG} deg and coupled joints freed of their coupling (`couple`, `rhythm`) the hand reaches, with {} beyond the range they have together",
                 joints.join(", ")
             ),
             Why::Zone => "kept to its zone: the base stays in its `zone` (or between `zone_from` and `zone_to`); anywhere else it fits, the hand reaches".into(),
