@@ -128,6 +128,12 @@ fn errors_point_at_the_offending_text() {
             vec![("a `rhythm` of `k` is given more than once", "k")],
         ),
         (
+            // A bare number is in the file's unit (85 cm); a chest depth
+            // that makes std::body's trunk radius negative is shown here.
+            "units cm deg\nuse std::people\nperson p { mannequin measured(sitting_height 85, chest_depth -10) base manual_wheelchair }".into(),
+            vec![("a radius must be zero or more, found -50mm", "measured")],
+        ),
+        (
             "mannequin f { joint fx fixed dh(theta 90deg) }".into(),
             vec![("mannequin `f` has no joint that moves before each effector", "f")],
         ),
