@@ -89,6 +89,12 @@ pub enum ErrorKind {
         bound: String,
         value: String,
     },
+    #[error("the limits of `{joint}`, {limits}, go beyond its anatomical range, {anatomical}")]
+    BeyondAnatomical {
+        joint: String,
+        limits: String,
+        anatomical: String,
+    },
     #[error("lower limit {min} is above upper limit {max}")]
     LimitsReversed { min: String, max: String },
     #[error("{owner} has no {what}")]
@@ -217,7 +223,10 @@ impl ErrorKind {
                 "reach::name"
             }
             Dimension { .. } | Operands { .. } | MixedDefaults => "reach::unit",
-            OutOfRange { .. } | LimitsReversed { .. } | Implausible { .. } => "reach::range",
+            OutOfRange { .. }
+            | LimitsReversed { .. }
+            | Implausible { .. }
+            | BeyondAnatomical { .. } => "reach::range",
             Missing { .. } | Repeated { .. } | TargetOutsideRoom { .. } => "reach::scene",
             TargetInsideBox { .. } => "reach::scene",
             Unsupported { .. } | Misplaced { .. } | NoLookLink { .. } => "reach::scene",
@@ -263,6 +272,7 @@ impl ErrorKind {
             NotFinite => "overflows".into(),
             OutOfRange { value, .. } => value.clone(),
             LimitsReversed { .. } => "min > max".into(),
+            BeyondAnatomical { .. } => "beyond every published normal range".into(),
             Implausible { shown, .. } => shown.clone(),
             Missing { what, .. } => format!("no {what} given here"),
             Repeated { .. } => "given again here".into(),
@@ -319,6 +329,10 @@ impl ErrorKind {
             Operands { .. } => Some("both sides of + and - must have the same kind of unit".into()),
             MeetsItself { .. } => Some(
                 "a body that meets itself in its neutral posture meets itself in every posture near it, so no answer would mean anything: give its links smaller radii (`link NAME radius 20mm` on a joint; `radius 20mm` after a URDF mannequin's `tip`) or lengths that keep them apart"
+                    .into(),
+            ),
+            BeyondAnatomical { .. } => Some(
+                "a joint's anatomical range (its mannequin's `anatomical`; std::body's are the widest of the published normal ranges, docs/references.md) is what no measured range goes beyond: check the value and its sign (std::body's signs are in stdlib/body.reach); for a person known to move further, give the mannequin a wider `anatomical` range"
                     .into(),
             ),
             Implausible { .. } => Some(

@@ -134,6 +134,17 @@ fn errors_point_at_the_offending_text() {
             vec![("a radius must be zero or more, found -50mm", "measured")],
         ),
         (
+            "use std::people\nperson p { mannequin man_50th_seated { limits shoulder_flexion (-60deg, 200deg) limits elbow_flexion (-20deg, 140deg) } base manual_wheelchair }".into(),
+            vec![
+                ("the limits of `shoulder_flexion`, -60deg to 200deg, go beyond its anatomical range, -60deg to 180deg", "limits shoulder_flexion (-60deg, 200deg)"),
+                ("the limits of `elbow_flexion`, -20deg to 140deg, go beyond its anatomical range, 0deg to 150deg", "limits elbow_flexion (-20deg, 140deg)"),
+            ],
+        ),
+        (
+            "mannequin m { joint j dh(a 1) limits(-1, 1) anatomical(-0.5, 2) }".into(),
+            vec![("the limits of `j`, -1deg to 1deg, go beyond its anatomical range, -0.5deg to 2deg", "anatomical(-0.5, 2)")],
+        ),
+        (
             "mannequin f { joint fx fixed dh(theta 90deg) }".into(),
             vec![("mannequin `f` has no joint that moves before each effector", "f")],
         ),

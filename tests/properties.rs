@@ -45,6 +45,7 @@ fn joint() -> impl Strategy<Value = Joint> {
                     pre: None,
                     min,
                     max,
+                    anatomical: None,
                     neutral: (min + max) / 2.0,
                     weight: 1.0,
                     link: Link {

@@ -642,6 +642,11 @@ impl Checker<'_> {
             }
         };
         refuse(self, j.limits.first().map(|l| l.span), "limits");
+        refuse(
+            self,
+            j.anatomical.first().map(|l| l.span),
+            "anatomical range",
+        );
         refuse(self, j.neutral.first().map(|e| e.span), "neutral value");
         refuse(self, j.weight.first().map(|e| e.span), "comfort weight");
         let link = j.link.radius.first().map(|e| e.span);
@@ -756,7 +761,17 @@ impl Checker<'_> {
             None => Some(1.0),
         };
         let link = self.link(&j.link, &j.name.value);
+        let anatomical = match j.anatomical.as_slice() {
+            [] => None,
+            [a, rest @ ..] => {
+                self.repeated(rest.iter().map(|r| r.span), "`anatomical`");
+                Some((self.limits(a, j.kind)?, a.span))
+            }
+        };
         let (min, max) = limits?;
+        if let Some(((lo, hi), span)) = anatomical {
+            self.within_anatomical(&j.name.value, (min, max), (lo, hi), j.kind, span)?;
+        }
         let neutral = match neutral {
             None => 0.0_f64.clamp(min, max),
             Some((value, span)) => self.neutral_within(value?, min, max, j.kind, span)?,
@@ -772,10 +787,36 @@ impl Checker<'_> {
             pre: None,
             min,
             max,
+            anatomical: anatomical.map(|(range, _)| range),
             neutral,
             weight: weight?,
             link: link?,
         })
+    }
+
+    /// Whether limits `(min, max)` of joint `joint` lie within its
+    /// anatomical range `(lo, hi)` (else an error at `span`).
+    pub(super) fn within_anatomical(
+        &mut self,
+        joint: &str,
+        (min, max): (f64, f64),
+        (lo, hi): (f64, f64),
+        kind: ast::JointKind,
+        span: Span,
+    ) -> Option<()> {
+        let slack = 1e-9;
+        if min >= lo - slack && max <= hi + slack {
+            return Some(());
+        }
+        self.error(Error::new(
+            ErrorKind::BeyondAnatomical {
+                joint: joint.to_string(),
+                limits: format!("{} to {}", show(min, kind), show(max, kind)),
+                anatomical: format!("{} to {}", show(lo, kind), show(hi, kind)),
+            },
+            span,
+        ));
+        None
     }
 
     fn dh(&mut self, j: &JointDecl) -> Option<Dh> {
@@ -918,6 +959,7 @@ fn stand_in() -> Declared {
         pre: None,
         min: 0.0,
         max: 0.0,
+        anatomical: None,
         neutral: 0.0,
         weight: 0.0,
         link: Link::named(""),

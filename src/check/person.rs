@@ -374,6 +374,9 @@ impl Checker<'_> {
         match o {
             JointOverride::Limits { limits, .. } => {
                 let (min, max) = self.limits(limits, kind)?;
+                if let Some(range) = joints[i].anatomical {
+                    self.within_anatomical(&joints[i].name, (min, max), range, kind, limits.span)?;
+                }
                 joints[i].min = min;
                 joints[i].max = max;
             }

@@ -55,6 +55,9 @@ pub struct Joint {
     pub pre: Option<IsometryMatrix3<f64>>,
     pub min: f64,
     pub max: f64,
+    /// The range no person's own limits may go beyond (the mannequin's
+    /// `anatomical`); `None`: not said.
+    pub anatomical: Option<(f64, f64)>,
     pub neutral: f64,
     pub weight: f64,
     /// The link from the previous joint's frame origin to this one's.
@@ -395,6 +398,7 @@ pub(crate) fn revolute(name: &str, theta_rad: f64, d_mm: f64, alpha_rad: f64, a_
         pre: None,
         min: -3.0,
         max: 3.0,
+        anatomical: None,
         neutral: 0.0,
         weight: 1.0,
         link: Link::named(name),

@@ -419,6 +419,7 @@ mod tests {
             pre: None,
             min: -2.0,
             max: 2.0,
+            anatomical: None,
             neutral: 0.0,
             weight: 1.0,
             link: crate::kinematics::Link::named(name),

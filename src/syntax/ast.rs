@@ -361,6 +361,8 @@ pub struct JointDecl {
     pub dh: Vec<(Name, Expr)>,
     pub dh_span: Span,
     pub limits: Vec<LimitsExpr>,
+    /// `anatomical(min, max)`: the range no person's limits may leave.
+    pub anatomical: Vec<LimitsExpr>,
     pub neutral: Vec<Expr>,
     pub weight: Vec<Expr>,
     pub link: LinkDecl,

@@ -50,6 +50,7 @@ fn describe(rule: Rule) -> Option<&'static str> {
         dh => "`dh(...)`",
         dh_param => "a DH parameter (theta, d, alpha, a)",
         limits => "`limits(min, max)`",
+        anatomical => "`anatomical(min, max)`",
         neutral => "`neutral`",
         weight => "`weight`",
         effector_decl => "`effector`",

@@ -630,6 +630,7 @@ impl Builder {
             dh: Vec::new(),
             dh_span: Span::default(),
             limits: Vec::new(),
+            anatomical: Vec::new(),
             neutral: Vec::new(),
             weight: Vec::new(),
             link: LinkDecl::default(),
@@ -654,6 +655,7 @@ impl Builder {
                     }
                 }
                 Rule::limits => joint.limits.push(self.limits(p)),
+                Rule::anatomical => joint.anatomical.push(self.limits(p)),
                 Rule::neutral => joint
                     .neutral
                     .push(self.expr(p.into_inner().next().unwrap())),
