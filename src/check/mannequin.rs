@@ -951,19 +951,10 @@ fn shown_quantity(q: &Quantity) -> String {
 /// A joint in place of one with errors, so that the rest of its mannequin
 /// is still checked (the mannequin is not built).
 fn stand_in() -> Declared {
-    Declared::Moving(Box::new(Joint {
-        name: String::new(),
-        kind: JointKind::Revolute,
-        dh: Dh::new(0.0, 0.0, 0.0, 0.0),
-        fixed: None,
-        pre: None,
-        min: 0.0,
-        max: 0.0,
-        anatomical: None,
-        neutral: 0.0,
-        weight: 0.0,
-        link: Link::named(""),
-    }))
+    Declared::Moving(Box::new(Joint::locked(
+        "",
+        nalgebra::IsometryMatrix3::identity(),
+    )))
 }
 
 /// How a part's name reads in a report: `right_forearm` is "the right

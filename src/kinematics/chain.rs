@@ -65,6 +65,23 @@ pub struct Joint {
 }
 
 impl Joint {
+    /// A joint that cannot move: a fixed pose in a chain of joints.
+    pub fn locked(name: &str, pose: IsometryMatrix3<f64>) -> Joint {
+        Joint {
+            name: name.to_string(),
+            kind: JointKind::Revolute,
+            dh: Dh::default(),
+            fixed: Some(pose),
+            pre: None,
+            min: 0.0,
+            max: 0.0,
+            anatomical: None,
+            neutral: 0.0,
+            weight: 0.0,
+            link: Link::named(name),
+        }
+    }
+
     /// The pose of this joint's frame in the previous one at value `q`.
     pub fn transform(&self, q: f64) -> IsometryMatrix3<f64> {
         match &self.pre {

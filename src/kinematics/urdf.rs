@@ -123,7 +123,7 @@ pub fn chain_from_urdf(robot: &urdf_rs::Robot, root: &str, tip: &str) -> Result<
         match joints.len().checked_sub(1) {
             Some(k) => joints[k].fixed = Some(pre(first_index, k, &first_pre) * before),
             None if along_z(&before) => first_pre = before,
-            None => joints.push(locked(&format!("{}_base", shown(&j.name)), before)),
+            None => joints.push(Joint::locked(&format!("{}_base", shown(&j.name)), before)),
         }
         first_index.get_or_insert(joints.len());
         joints.push(moving(j, kind)?);
@@ -284,23 +284,6 @@ fn limits(j: &urdf_rs::Joint, largest: f64, unit: &str) -> Result<(f64, f64), Ur
 /// a line of a report or reorder it on a terminal.
 fn shown(name: &str) -> String {
     escaped(name).into_owned()
-}
-
-/// A joint that cannot move: a fixed pose in a chain of joints.
-fn locked(name: &str, pose: IsometryMatrix3<f64>) -> Joint {
-    Joint {
-        name: name.to_string(),
-        kind: JointKind::Revolute,
-        dh: Dh::default(),
-        fixed: Some(pose),
-        pre: None,
-        min: 0.0,
-        max: 0.0,
-        anatomical: None,
-        neutral: 0.0,
-        weight: 0.0,
-        link: Link::named(name),
-    }
 }
 
 #[cfg(test)]
