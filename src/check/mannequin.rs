@@ -124,7 +124,7 @@ impl Checker<'_> {
     }
 
     /// The body of alias `decl` (of `file`) that has parameters of its own,
-    /// with `args` (written in `args_file`) for them, the others at their
+    /// with `args` (written where `at`, the call, is) for them, the others at their
     /// defaults: the mannequin it names, given what it says in terms of
     /// them.
     fn alias_with(
@@ -135,18 +135,33 @@ impl Checker<'_> {
         at: Span,
         depth: usize,
     ) -> Option<Body> {
-        let args_file = at.file;
         let target = decl.alias.as_ref()?;
-        let given = self.in_file(args_file, |c| c.mannequin_args(decl, args));
-        let body = self.in_file(file, |c| {
+        let body =
+            self.with_own_params(decl, file, args, at, |c| c.body_of(target, file, depth + 1));
+        body.map(|b| self.with_posture(b, decl))
+    }
+
+    /// `build` in `decl`'s file with `decl`'s parameters in scope, and only
+    /// them (not a caller's): `args` (written where `at`, the mannequin's
+    /// name, is) for some, the others at their defaults; nothing where a
+    /// `require` is not met.
+    fn with_own_params(
+        &mut self,
+        decl: &MannequinDecl,
+        file: FileId,
+        args: &[(Name, Expr)],
+        at: Span,
+        build: impl FnOnce(&mut Self) -> Option<Body>,
+    ) -> Option<Body> {
+        let given = self.in_file(at.file, |c| c.mannequin_args(decl, args));
+        self.in_file(file, |c| {
             let outer = std::mem::take(&mut c.params);
             c.push_params(decl, &given);
             let met = c.requirements(decl, args, at);
-            let body = c.body_of(target, file, depth + 1).filter(|_| met);
+            let body = build(c).filter(|_| met);
             c.params = outer;
             body
-        });
-        body.map(|b| self.with_posture(b, decl))
+        })
     }
 
     /// Whether `decl`'s parameters (in scope) meet its `require`s; each
@@ -244,16 +259,7 @@ impl Checker<'_> {
         args: &[(Name, Expr)],
         at: Span,
     ) -> Option<Body> {
-        let given = self.in_file(at.file, |c| c.mannequin_args(decl, args));
-        self.in_file(file, |c| {
-            // Only its own parameters are in scope (not a caller's).
-            let outer = std::mem::take(&mut c.params);
-            c.push_params(decl, &given);
-            let met = c.requirements(decl, args, at);
-            let body = c.body(decl).filter(|_| met);
-            c.params = outer;
-            body
-        })
+        self.with_own_params(decl, file, args, at, |c| c.body(decl))
     }
 
     /// The values of `args`, each checked to name a parameter of `decl`.
@@ -548,11 +554,23 @@ impl Checker<'_> {
             ));
             return None;
         }
+        self.named_joints(&c.joints, "couple", joints)
+    }
+
+    /// The indices of `names` (of one `couple` or `rhythm`, the
+    /// `keyword`) among the mannequin's `joints`: each once, each known
+    /// (else its diagnostics).
+    fn named_joints(
+        &mut self,
+        names: &[Name],
+        keyword: &str,
+        joints: &[&Name],
+    ) -> Option<Vec<usize>> {
         let mut ok = true;
         let mut indices = Vec::new();
-        for (k, name) in c.joints.iter().enumerate() {
-            if c.joints[..k].iter().any(|n| n.value == name.value) {
-                let what = format!("joint `{}` in one `couple`", name.value);
+        for (k, name) in names.iter().enumerate() {
+            if names[..k].iter().any(|n| n.value == name.value) {
+                let what = format!("joint `{}` in one `{keyword}`", name.value);
                 self.repeated(std::iter::once(name.span), &what);
                 ok = false;
                 continue;
@@ -576,27 +594,13 @@ impl Checker<'_> {
     /// A `rhythm`: its follower and two distinct revolute drivers, joints
     /// that move, and `from` an angle from 0 up to (not including) 180 deg.
     fn rhythm(&mut self, r: &RhythmDecl, joints: &[&Name], folded: &Folded) -> Option<Rhythm> {
-        let names = [&r.follower, &r.drivers[0], &r.drivers[1]];
-        let mut indices = Vec::with_capacity(3);
-        for (k, name) in names.iter().enumerate() {
-            if names[..k].iter().any(|n| n.value == name.value) {
-                let what = format!("joint `{}` in one `rhythm`", name.value);
-                self.repeated(std::iter::once(name.span), &what);
-                return None;
-            }
-            let Some(i) = joints.iter().position(|n| n.value == name.value) else {
-                self.error(Error::unknown(
-                    "joint of this mannequin",
-                    &name.value,
-                    name.span,
-                    joints.iter().map(|n| n.value.as_str()),
-                ));
-                return None;
-            };
-            indices.push(i);
-        }
-        let owned: Vec<Name> = names.iter().map(|n| (*n).clone()).collect();
-        let moving = self.moving(&owned, &indices, folded)?;
+        let names = [
+            r.follower.clone(),
+            r.drivers[0].clone(),
+            r.drivers[1].clone(),
+        ];
+        let indices = self.named_joints(&names, "rhythm", joints)?;
+        let moving = self.moving(&names, &indices, folded)?;
         for (name, &k) in names.iter().zip(&moving).skip(1) {
             if folded.joints[k].kind != JointKind::Revolute {
                 self.out_of_range(
@@ -937,14 +941,15 @@ impl Checker<'_> {
 
 /// A value as a user reads it: `520mm`, `30deg`, or a bare number.
 fn shown_quantity(q: &Quantity) -> String {
-    match q.as_dim(crate::units::Dim::LENGTH) {
-        Some(mm) if !matches!(q, Quantity::Bare { .. }) => format!("{}mm", fmt_num(mm)),
-        _ => match q.as_dim(crate::units::Dim::ANGLE) {
-            Some(rad) if !matches!(q, Quantity::Bare { .. }) => {
-                format!("{}deg", fmt_num(rad.to_degrees()))
-            }
-            _ => fmt_num(q.raw()),
-        },
+    use crate::units::Dim;
+    match *q {
+        Quantity::Dimensioned { value, dim } if dim == Dim::LENGTH => {
+            show(value, ast::JointKind::Prismatic)
+        }
+        Quantity::Dimensioned { value, dim } if dim == Dim::ANGLE => {
+            show(value, ast::JointKind::Revolute)
+        }
+        _ => fmt_num(q.raw()),
     }
 }
 
