@@ -150,7 +150,7 @@ impl Trunk {
 /// arm) carries that pivot along a line.
 fn shoulder_pivot(joints: &[Joint], first: usize) -> ([Point3<f64>; 2], f64, usize) {
     let turn = |j: &Joint| {
-        let offset = j.own_rest_offset_mm();
+        let offset = j.rest_offset_mm();
         let pivot = j.axis_frame() * Point3::new(0.0, 0.0, offset.z);
         (pivot, offset.x.hypot(offset.y))
     };

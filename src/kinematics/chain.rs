@@ -112,18 +112,10 @@ impl Joint {
         }
     }
 
-    /// Where this joint's frame origin is in the previous frame at value 0:
-    /// `(a cos theta, a sin theta, d)` for a DH joint (carried by the
-    /// `pre` frame where there is one).
+    /// Where this joint's frame origin is at value 0 in the frame the joint
+    /// moves in (the previous frame, after its `pre` frame if it has one):
+    /// `(a cos theta, a sin theta, d)` for a DH joint.
     pub fn rest_offset_mm(&self) -> Vector3<f64> {
-        match &self.pre {
-            Some(pre) => pre * self.own_rest_offset_mm() + pre.translation.vector,
-            None => self.own_rest_offset_mm(),
-        }
-    }
-
-    /// [`Joint::rest_offset_mm`] in the frame the joint moves in.
-    pub fn own_rest_offset_mm(&self) -> Vector3<f64> {
         match &self.fixed {
             Some(fixed) => fixed.translation.vector,
             None => {

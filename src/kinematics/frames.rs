@@ -64,7 +64,7 @@ impl Folded {
 
     /// The moving joint a point on declared joint `parent`'s frame rides on
     /// (`None`: the base), and that frame's pose in the moving joint's.
-    pub fn anchor_of(&self, parent: Option<usize>) -> (Option<usize>, IsometryMatrix3<f64>) {
+    fn anchor_of(&self, parent: Option<usize>) -> (Option<usize>, IsometryMatrix3<f64>) {
         match parent {
             None => (None, IsometryMatrix3::identity()),
             Some(p) => self.anchors[p],

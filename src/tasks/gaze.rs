@@ -423,8 +423,8 @@ pub(super) fn with_look_range(chain: &Chain, legible_mm: [f64; 2]) -> Chain {
 /// Keep look link `look` (its end) within `[d_min, d_max]` (the range
 /// `Eyes::aimed_mm` gives), its neutral value moved inside.
 pub(super) fn limit_look(look: &mut Joint, [d_min, d_max]: [f64; 2]) {
-    look.min = d_min - look.own_rest_offset_mm().z;
-    look.max = d_max - look.own_rest_offset_mm().z;
+    look.min = d_min - look.rest_offset_mm().z;
+    look.max = d_max - look.rest_offset_mm().z;
     look.neutral = look.neutral.clamp(look.min, look.max);
 }
 

@@ -63,7 +63,7 @@ pub fn bones(chain: &Chain) -> Vec<Bone> {
     let mut start = 0;
     for (j, joint) in chain.joints.iter().enumerate() {
         // In the frame the joint moves in (a `pre` frame only turns it).
-        let offset = joint.own_rest_offset_mm();
+        let offset = joint.rest_offset_mm();
         let prismatic = joint.kind == JointKind::Prismatic;
         if !prismatic && offset.norm() < 1e-9 {
             continue;
