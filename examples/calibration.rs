@@ -11,7 +11,9 @@
 
 use nalgebra::{DMatrix, DVector};
 use reach::ansur::survey;
-use reach::calibration::{bodies, percentile, reaches, Reaches, COLUMNS};
+use reach::calibration::{
+    bodies, of_sex, percentile, reaches, standard_deviation, Reaches, COLUMNS, PERCENTILE_PEOPLE,
+};
 use reach::stdlib;
 
 fn main() {
@@ -72,38 +74,21 @@ fn main() {
     println!("\nstd::people against their sex's percentile of ANSUR II (all rows), mm\n");
     println!("| person | thumb-tip: model | measured (SD) | overhead: model | measured (SD) |");
     println!("|---|---:|---:|---:|---:|");
-    for (name, female, p) in [
-        ("woman_5th", true, 5.0),
-        ("man_50th", false, 50.0),
-        ("man_95th", false, 95.0),
-    ] {
+    for (name, female, p) in PERCENTILE_PEOPLE {
         let body = stdlib::body("people", name).unwrap_or_else(|d| panic!("{}", d.render(false)));
         let r = reaches(&body).expect("a std::body person");
-        let of_sex = |measure: usize| -> Vec<f64> {
-            rows.rows
-                .iter()
-                .filter(|m| m.female == female)
-                .map(|m| m.lengths_mm[measure])
-                .collect()
-        };
-        let (t, o) = (of_sex(thumb), of_sex(overhead));
+        let t = of_sex("thumbtipreach", female);
+        let o = of_sex("overheadfingertipreachsitting", female);
         println!(
             "| {name} | {:.0} | {:.0} ({:.0}) | {:.0} | {:.0} ({:.0}) |",
             r.thumb_tip_mm,
             percentile(&t, p),
-            sd(&t),
+            standard_deviation(&t),
             r.overhead_mm,
             percentile(&o, p),
-            sd(&o)
+            standard_deviation(&o)
         );
     }
-}
-
-/// The standard deviation of `values`.
-fn sd(values: &[f64]) -> f64 {
-    let n = values.len() as f64;
-    let mean = values.iter().sum::<f64>() / n;
-    (values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / n).sqrt()
 }
 
 /// The least-squares fit of column `measure` on the measurements

@@ -148,6 +148,35 @@ pub fn bodies(rows: &[usize]) -> Result<Vec<Body>, Diagnostics> {
     checked.map(|s| s.persons.into_iter().map(|p| p.body).collect())
 }
 
+/// std::people's percentile people: name, whether a woman, and the
+/// percentile of their sex they stand for.
+pub const PERCENTILE_PEOPLE: [(&str, bool, f64); 3] = [
+    ("woman_5th", true, 5.0),
+    ("man_50th", false, 50.0),
+    ("man_95th", false, 95.0),
+];
+
+/// Survey column `column` of the women (or the men).
+pub fn of_sex(column: &str, female: bool) -> Vec<f64> {
+    let rows = survey();
+    let Some(i) = rows.columns.iter().position(|c| c == column) else {
+        return Vec::new();
+    };
+    rows.rows
+        .iter()
+        .filter(|m| m.female == female)
+        .map(|m| m.lengths_mm[i])
+        .collect()
+}
+
+/// The standard deviation of `values` (of the values themselves, not an
+/// estimate for a population they are drawn from).
+pub fn standard_deviation(values: &[f64]) -> f64 {
+    let n = values.len() as f64;
+    let mean = values.iter().sum::<f64>() / n;
+    (values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / n).sqrt()
+}
+
 /// The `p`-th percentile (0-100) of `values`, by the nearest rank of the
 /// sorted values (NaN where there are none).
 pub fn percentile(values: &[f64], p: f64) -> f64 {
@@ -172,5 +201,9 @@ mod tests {
         assert_eq!(percentile(&v, 100.0), 5.0);
         assert_eq!(percentile(&v, 90.0), 5.0);
         assert!(percentile(&[], 50.0).is_nan());
+        assert_eq!(
+            standard_deviation(&[2.0, 4.0, 4.0, 4.0, 5.0, 5.0, 7.0, 9.0]),
+            2.0
+        );
     }
 }

@@ -7,7 +7,9 @@
 //! fingertip, the `fingertip` effector).
 
 use reach::ansur::survey;
-use reach::calibration::{bodies, percentile, reaches, Reaches};
+use reach::calibration::{
+    bodies, of_sex, percentile, reaches, standard_deviation, Reaches, PERCENTILE_PEOPLE,
+};
 
 /// Every 10th odd row (the even rows fitted the method's two constants).
 fn sample() -> Vec<usize> {
@@ -72,29 +74,17 @@ fn people_built_from_their_measurements_reach_as_far_as_they_were_measured_to() 
 /// of their sex's percentile of the survey, on both reaches.
 #[test]
 fn the_percentile_people_reach_as_far_as_their_percentile_of_measured_people() {
-    let survey = survey();
-    for (name, female, p) in [
-        ("woman_5th", true, 5.0),
-        ("man_50th", false, 50.0),
-        ("man_95th", false, 95.0),
-    ] {
+    for (name, female, p) in PERCENTILE_PEOPLE {
         let body = reach::stdlib::body("people", name).unwrap();
         let model = reaches(&body).unwrap();
         for (measure, got) in [
             ("thumbtipreach", model.thumb_tip_mm),
             ("overheadfingertipreachsitting", model.overhead_mm),
         ] {
-            let i = column(measure);
-            let of_sex: Vec<f64> = survey
-                .rows
-                .iter()
-                .filter(|m| m.female == female)
-                .map(|m| m.lengths_mm[i])
-                .collect();
-            let n = of_sex.len() as f64;
-            let mean = of_sex.iter().sum::<f64>() / n;
-            let sd = (of_sex.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / n).sqrt();
-            let want = percentile(&of_sex, p);
+            let measured = of_sex(measure, female);
+            assert!(measured.len() > 1000, "{measure}");
+            let sd = standard_deviation(&measured);
+            let want = percentile(&measured, p);
             assert!(
                 (got - want).abs() <= sd,
                 "{name}'s {measure}: {got:.0} mm, the measured percentile {want:.0} mm (SD {sd:.0})"
