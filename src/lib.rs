@@ -18,6 +18,7 @@
 //! }
 //! ```
 
+pub mod allowance;
 pub mod ansur;
 pub mod bases;
 mod builtin;

@@ -27,6 +27,8 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Arc, LazyLock, Mutex};
 
+pub use crate::allowance::Allowance;
+
 /// How many solids a posture check counts (an arm's links and hand).
 pub const POSTURE_CAPSULES: u64 = 8;
 
@@ -75,12 +77,6 @@ pub const PLAIN_SOLIDS: usize = 24;
 /// until stop 51, when a helper measured pairs to take about 2.5 times as
 /// long (chains of 30,000 joints ran 21 s before the bound stopped them).
 const SELF_PAIRS_PER_UNIT: u64 = 12;
-
-/// Units a solve spends before it tells its meter (and learns whether the
-/// run is still within its limit): few enough that a run past it stops
-/// within a millisecond or so, many enough that the threads seldom meet
-/// at the shared counter.
-const BATCH: u64 = 4_096;
 
 /// The work a whole run has spent, against its limit, and the work of
 /// what is being worked out for it now and charged once done ([`Flight`]).
@@ -137,6 +133,15 @@ pub struct Meter {
     /// (by the key the process keeps them by): looked at again, they are
     /// charged for looking alone (`floor/tiles.rs`).
     pieces: Mutex<BTreeSet<u64>>,
+}
+
+impl Allowance for Meter {
+    fn spend(&self, units: u64) -> bool {
+        self.charge(units)
+    }
+    fn exhausted(&self) -> bool {
+        self.exceeded()
+    }
 }
 
 /// A meter of no run, which never stops a solve.
@@ -213,15 +218,6 @@ impl Meter {
     pub fn spent(&self) -> u64 {
         self.own.load(Ordering::Relaxed)
     }
-
-    /// A tally for one solve, which tells this meter in batches.
-    pub fn tally(&self) -> Tally<'_> {
-        Tally {
-            meter: self,
-            pending: 0,
-            within: !self.exceeded(),
-        }
-    }
 }
 
 thread_local! {
@@ -296,33 +292,6 @@ impl Drop for Flight<'_> {
     }
 }
 
-/// The work of one solve, told to its meter every [`BATCH`] units and
-/// when it is dropped.
-pub struct Tally<'m> {
-    meter: &'m Meter,
-    pending: u64,
-    within: bool,
-}
-
-impl Tally<'_> {
-    /// Add `units`; whether the solve may go on (the run is within its
-    /// limit, as far as the last batch told).
-    pub fn add(&mut self, units: u64) -> bool {
-        self.pending = self.pending.saturating_add(units);
-        if self.pending >= BATCH {
-            self.within = self.meter.charge(std::mem::take(&mut self.pending));
-        }
-        self.within()
-    }
-
-    /// Whether the solve may go on: within the limit as far as the last
-    /// batch told, and the run not stopped since (work charged to the
-    /// meter directly, [`Account`], may have passed it).
-    pub fn within(&self) -> bool {
-        self.within && !self.meter.exceeded()
-    }
-}
-
 /// A meter's counts, shared: work charged where it is done, by what has
 /// no meter to hand (a mesh check, by the triangles it tested). What a
 /// task's account is charged is the task's, whichever thread does it.
@@ -349,17 +318,10 @@ impl Account {
     }
 }
 
-impl Drop for Tally<'_> {
-    fn drop(&mut self) {
-        if self.pending > 0 {
-            self.meter.charge(self.pending);
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::allowance::Tally;
 
     #[test]
     fn one_solve_counts_what_it_charges_and_the_count_around_it_takes_it_in() {
@@ -371,7 +333,7 @@ mod tests {
             meter.charge(3);
             counting_one(|| {
                 account.charge(7);
-                let mut tally = meter.tally();
+                let mut tally = Tally::new(&meter);
                 tally.add(11);
             })
         });
@@ -413,7 +375,7 @@ mod tests {
         let run = RunWork::new(10_000);
         let (a, b) = (Meter::of(&run), Meter::of(&run));
         {
-            let mut tally = a.tally();
+            let mut tally = Tally::new(&a);
             assert!(tally.add(6_000));
         }
         assert!(b.charge(4_000));
@@ -421,7 +383,7 @@ mod tests {
         assert!(!b.charge(1));
         assert!(run.exceeded() && a.exceeded());
         assert_eq!((a.spent(), b.spent(), run.spent()), (6_000, 4_001, 10_001));
-        assert!(!a.tally().within());
+        assert!(!Tally::new(&a).within());
     }
 
     #[test]
@@ -451,6 +413,6 @@ mod tests {
     #[test]
     fn the_unmetered_meter_never_stops() {
         assert!(Meter::unmetered().charge(u64::MAX));
-        assert!(Meter::unmetered().tally().add(u64::MAX));
+        assert!(Tally::new(Meter::unmetered()).add(u64::MAX));
     }
 }

@@ -154,7 +154,7 @@ fn solve(solver: &dyn Solver, chain: &Chain, target: Point3<f64>, seed: u64) -> 
         tolerance_mm: 5.0,
         seed,
         obstacles: None,
-        meter: reach::meter::Meter::unmetered(),
+        allowance: &reach::allowance::Unbounded,
     })
 }
 
@@ -254,7 +254,7 @@ proptest! {
         let obstacles = Obstacles::new(&room, 0.0);
         let own = OwnBody::default();
         let placed = PlacedObstacles { obstacles: &obstacles, own: &own, base_pose: BasePose { position_mm: Point3::from(middle), heading_rad: 0.0 } };
-        let problem = IkProblem { chain: &chain, target_mm: target, tolerance_mm: 5.0, seed, obstacles: Some(placed), meter: reach::meter::Meter::unmetered() };
+        let problem = IkProblem { chain: &chain, target_mm: target, tolerance_mm: 5.0, seed, obstacles: Some(placed), allowance: &reach::allowance::Unbounded };
         let s = solver("fabrik", &[("starts", Value::Integer(2))]).solve(&problem);
         prop_assert!(chain.within_limits(&s.q), "{:?} outside limits", s.q);
         let met = links_meet_box(&chain, &s.q, 5.0, &box_in_base);
@@ -287,7 +287,7 @@ proptest! {
             starts: 1, max_iterations: 50, samples: 5, kicks: 3,
             ..FabrikSettings::with_defaults()
         };
-        let s = solve_tree(&settings, &TreeProblem { body: &body, goals: &goals, tolerance_mm: 5.0, seed, obstacles: None, meter: reach::meter::Meter::unmetered() });
+        let s = solve_tree(&settings, &TreeProblem { body: &body, goals: &goals, tolerance_mm: 5.0, seed, obstacles: None, allowance: &reach::allowance::Unbounded });
         prop_assert!(whole.within_limits(&s.q));
         for (e, g) in goals.iter().enumerate() {
             let path = body.path(body.effectors[g.effector].joint);

@@ -99,7 +99,7 @@ fn main() {
                 tolerance_mm: TOLERANCE_MM,
                 seed: i as u64,
                 obstacles: None,
-                meter: reach::meter::Meter::unmetered(),
+                allowance: &reach::allowance::Unbounded,
             });
             (s.distance_mm, Some(s.iterations as f64))
         }));

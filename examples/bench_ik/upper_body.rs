@@ -136,7 +136,7 @@ pub fn rows(solves: usize) -> Vec<Row> {
                     tolerance_mm: TOLERANCE_MM,
                     seed: i as u64,
                     obstacles: placed,
-                    meter: reach::meter::Meter::unmetered(),
+                    allowance: &reach::allowance::Unbounded,
                 },
             );
             // A solve counts when both effectors reach and no link

@@ -22,9 +22,14 @@ pub struct PlacedObstacles<'a> {
 
 impl PlacedObstacles<'_> {
     /// What one check of a posture of `chain` against these (and against
-    /// itself) costs the meter ([`crate::meter`]).
+    /// itself) costs, in units of the meter ([`crate::meter`]).
     pub fn check_units(&self, chain: &Chain) -> u64 {
         crate::meter::posture_check(self.obstacles.count(), chain.solids_at_most())
+    }
+
+    /// What checking one solid against the room costs, in the same units.
+    pub fn capsule_units(&self) -> u64 {
+        crate::meter::capsule_check(self.obstacles.count())
     }
 
     /// What one solid of the person, in the base frame, overlaps first:

@@ -123,7 +123,7 @@ impl<'a> ReachQuery<'a> {
                 own: self.own,
                 base_pose: pose,
             }),
-            meter: self.meter,
+            allowance: self.meter,
         }
     }
 
@@ -194,7 +194,7 @@ impl<'a> ReachQuery<'a> {
             (None, Search::FirstReaching) => solver.solve_until_reached(problem),
         };
         let mut solution = match kept {
-            Some((solves, key)) => solves.solve(key, problem.meter, solve),
+            Some((solves, key)) => solves.solve(key, problem.allowance, solve),
             None => solve(),
         };
         solution.collision = problem.collision_charged(&solution.q);

@@ -37,9 +37,10 @@ use std::sync::{Arc, Mutex};
 
 use nalgebra::Point3;
 
+use crate::allowance::Allowance;
 use crate::collision::{bounds_meet, recording_one, Obstacles, Touched, TOUCH_MARGIN_MM};
 use crate::kinematics::Chain;
-use crate::meter::{counting_one, Meter};
+use crate::meter::counting_one;
 use crate::scene::{BasePose, IkSolution, OwnBody};
 
 /// The most solves kept for one task (about 300 bytes each): past it, no
@@ -159,8 +160,13 @@ impl SolvesFor<'_> {
     }
 
     /// [`KeptSolves::solve`] for this variant.
-    pub fn solve(&self, key: u64, meter: &Meter, solve: impl FnOnce() -> IkSolution) -> IkSolution {
-        self.kept.solve(self.key(key), meter, solve)
+    pub fn solve(
+        &self,
+        key: u64,
+        allowance: &dyn Allowance,
+        solve: impl FnOnce() -> IkSolution,
+    ) -> IkSolution {
+        self.kept.solve(self.key(key), allowance, solve)
     }
 
     /// [`KeptSolves::placements`] for this variant, where placements are
@@ -168,11 +174,11 @@ impl SolvesFor<'_> {
     pub fn placements(
         &self,
         key: u64,
-        meter: &Meter,
+        allowance: &dyn Allowance,
         sample: impl FnOnce() -> Vec<(BasePose, Vec<f64>)>,
     ) -> Vec<(BasePose, Vec<f64>)> {
         match self.placements {
-            true => self.kept.placements(self.key(key), meter, sample),
+            true => self.kept.placements(self.key(key), allowance, sample),
             false => sample(),
         }
     }
@@ -225,9 +231,14 @@ impl KeptSolves {
     }
 
     /// The solve of `key`: kept from the last run where it holds (its
-    /// work charged to `meter`, its touches marked), else `solve` run
+    /// work told to `allowance`, its touches marked), else `solve` run
     /// here, recorded, and kept unless the run passed its limit.
-    fn solve(&self, key: u64, meter: &Meter, solve: impl FnOnce() -> IkSolution) -> IkSolution {
+    fn solve(
+        &self,
+        key: u64,
+        allowance: &dyn Allowance,
+        solve: impl FnOnce() -> IkSolution,
+    ) -> IkSolution {
         let keep = |s: &IkSolution| Found::Solve {
             q: s.q.clone(),
             distance_mm: s.distance_mm,
@@ -246,7 +257,7 @@ impl KeptSolves {
             }),
             Found::Placements(_) => None,
         };
-        self.kept_or_made(key, meter, solve, keep, take)
+        self.kept_or_made(key, allowance, solve, keep, take)
     }
 
     /// The placements sampled for a point, by `key`: kept from the last
@@ -255,7 +266,7 @@ impl KeptSolves {
     fn placements(
         &self,
         key: u64,
-        meter: &Meter,
+        allowance: &dyn Allowance,
         sample: impl FnOnce() -> Vec<(BasePose, Vec<f64>)>,
     ) -> Vec<(BasePose, Vec<f64>)> {
         let keep = |p: &Vec<(BasePose, Vec<f64>)>| Found::Placements(p.clone());
@@ -263,25 +274,25 @@ impl KeptSolves {
             Found::Placements(p) => Some(p.clone()),
             Found::Solve { .. } => None,
         };
-        self.kept_or_made(key, meter, sample, keep, take)
+        self.kept_or_made(key, allowance, sample, keep, take)
     }
 
     /// What `make` makes, kept under `key` from the last run where that
-    /// holds (`take` reading it back), its work charged to `meter` and its
+    /// holds (`take` reading it back), its work told to `allowance` and its
     /// touches marked; else made here and kept (as `keep` writes it)
     /// unless the run has passed its limit.
     fn kept_or_made<T>(
         &self,
         key: u64,
-        meter: &Meter,
+        allowance: &dyn Allowance,
         make: impl FnOnce() -> T,
         keep: impl FnOnce(&T) -> Found,
         take: impl FnOnce(&Found) -> Option<T>,
     ) -> T {
         let held = self.earlier.as_ref().and_then(|e| e.holding(key));
-        if let Some(kept) = held.filter(|_| !meter.exceeded()) {
+        if let Some(kept) = held.filter(|_| !allowance.exhausted()) {
             if let Some(made) = take(&kept.found) {
-                meter.charge(kept.units);
+                allowance.spend(kept.units);
                 for &i in kept.touched.iter() {
                     self.touched.mark(i as usize);
                 }
@@ -290,7 +301,7 @@ impl KeptSolves {
             }
         }
         let ((made, record), units) = counting_one(|| recording_one(make));
-        if !meter.exceeded() {
+        if !allowance.exhausted() {
             let kept = KeptSolve {
                 found: Arc::new(keep(&made)),
                 units,

@@ -21,6 +21,8 @@ pub use descents::Descents;
 pub use format::{FormatPlugin, FormatScene, TaskPlace};
 pub use kept_solves::{Changed, Earlier, KeptSolves, SolveMap, SolvesFor};
 pub use registry::Registry;
+// What a solve tells its work to (`crate::allowance`).
+pub use crate::allowance::{Allowance, Tally, Unbounded};
 pub use solver::{fingerprint_of, work_ratio, IkProblem, Solver, SolverPlugin};
 pub use standard::{Standard, StandardPlugin};
 pub use task::{Dependence, EffectorNeed, Subject, SubjectKind, Task, TaskInput, TaskPlugin};

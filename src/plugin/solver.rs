@@ -4,9 +4,9 @@
 use nalgebra::Point3;
 
 use super::{Options, Plugin, SettingsError};
+use crate::allowance::Allowance;
 use crate::collision::PlacedObstacles;
 use crate::kinematics::{Chain, Volumes};
-use crate::meter::Meter;
 use crate::scene::{Collision, IkSolution};
 
 /// An inverse kinematics problem: bring the chain's effector to a point
@@ -22,9 +22,9 @@ pub struct IkProblem<'a> {
     /// must stay out of them.
     pub obstacles: Option<PlacedObstacles<'a>>,
     /// What the solve's work is told to: a solve counts its steps and its
-    /// checks against the room ([`crate::meter`]) and stops early once
-    /// the run is past its limit (its answer is then thrown away).
-    pub meter: &'a Meter,
+    /// checks against the room ([`crate::allowance`]) and stops early once
+    /// the allowance is exhausted (its answer is then thrown away).
+    pub allowance: &'a dyn Allowance,
 }
 
 impl IkProblem<'_> {
@@ -36,7 +36,7 @@ impl IkProblem<'_> {
         obstacles.posture_hit(self.chain, q, self.tolerance_mm)
     }
 
-    /// What one check of a posture costs the meter ([`crate::meter`]):
+    /// What one check of a posture costs ([`crate::allowance`]'s units):
     /// nothing where obstacles are not checked.
     pub fn check_units(&self) -> u64 {
         self.obstacles
@@ -44,10 +44,10 @@ impl IkProblem<'_> {
             .map_or(0, |o| o.check_units(self.chain))
     }
 
-    /// [`IkProblem::collision`], the check told to the meter at once (for
+    /// [`IkProblem::collision`], the check told to the allowance at once (for
     /// a check outside a solve's tally: a placement's, a start's).
     pub fn collision_charged(&self, q: &[f64]) -> Option<Collision> {
-        self.meter.charge(self.check_units());
+        self.allowance.spend(self.check_units());
         self.collision(q)
     }
 
@@ -58,11 +58,11 @@ impl IkProblem<'_> {
         obstacles.volumes_hit(self.chain, v, self.tolerance_mm)
     }
 
-    /// [`IkProblem::collision_of`], the check told to the meter at once, as
+    /// [`IkProblem::collision_of`], the check told to the allowance at once, as
     /// [`IkProblem::collision_charged`] tells it: for the solids of one
     /// posture checked at several base poses.
     pub fn collision_of_charged(&self, v: &Volumes) -> Option<Collision> {
-        self.meter.charge(self.check_units());
+        self.allowance.spend(self.check_units());
         self.collision_of(v)
     }
 }
@@ -71,10 +71,10 @@ impl IkProblem<'_> {
 /// the problem it is given ([`IkProblem::collision`], or the problem's
 /// obstacles' questions) and keeps nothing from one solve to the next:
 /// watch mode keeps a task's answer by what those questions came near
-/// (`collision::Touched`). It tells the problem's meter the work it does
-/// (`Meter::tally`: a unit a joint moved, [`IkProblem::check_units`]
-/// a posture checked) and stops once the meter says the run is past its
-/// limit; the work must not depend on anything but the problem.
+/// (`collision::Touched`). It tells the problem's allowance the work it
+/// does (`allowance::Tally`: a unit a joint moved, [`IkProblem::check_units`]
+/// a posture checked) and stops once the allowance is exhausted; the work
+/// must not depend on anything but the problem.
 pub trait Solver: Send + Sync {
     fn solve(&self, problem: &IkProblem<'_>) -> IkSolution;
     /// A solve that may stop at the first start whose posture reaches the

@@ -10,7 +10,7 @@ use super::starts::{neutral_start, Starts};
 use crate::kinematics::{Chain, JointKind};
 use crate::plugin::{
     fingerprint_of, work_ratio, IkProblem, IkSolution, Options, ParamSpec, Params, Plugin,
-    Settings, SettingsError, Solver, SolverPlugin,
+    Settings, SettingsError, Solver, SolverPlugin, Tally,
 };
 
 /// The plugin `dls`.
@@ -127,7 +127,7 @@ impl DlsSolver {
         let mut columns = vec![Vector3::zeros(); chain.dof()];
         let mut iterations = 0;
         let mut p = effector_and_jacobian(chain, &q, &mut columns);
-        let mut tally = problem.meter.tally();
+        let mut tally = Tally::new(problem.allowance);
         // An iteration moves every joint and works out its column.
         let per_iteration = 3 * chain.dof() as u64;
         while (problem.target_mm - p).norm() > problem.tolerance_mm
@@ -154,7 +154,7 @@ impl DlsSolver {
             }
             p = effector_and_jacobian(chain, &q, &mut columns);
         }
-        tally.add(problem.check_units());
+        tally.count(problem.check_units());
         IkSolution {
             distance_mm: (problem.target_mm - p).norm(),
             collision: problem.collision(&q),

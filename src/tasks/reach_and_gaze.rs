@@ -372,7 +372,7 @@ impl Solving<'_, '_> {
                     own,
                     base_pose: pose,
                 }),
-                meter: self.input.meter,
+                allowance: self.input.meter,
             },
         )
     }

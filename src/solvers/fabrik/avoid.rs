@@ -14,7 +14,6 @@ use super::bones::Bone;
 use crate::collision::PlacedObstacles;
 use crate::geometry::Capsule;
 use crate::kinematics::Chain;
-use crate::meter::capsule_check;
 
 /// How many of a group's joints are sampled (the first ones); the others
 /// keep their values.
@@ -40,7 +39,7 @@ impl Bend<'_> {
     /// A posture that moves bone `k` (its group starting from frame
     /// `before`) out of the obstacles, if it passes through one and some
     /// sample is clear (`None` leaves the posture as it is); and the work
-    /// that took, in the meter's units.
+    /// that took, in the allowance's units.
     pub fn clear_posture(
         &self,
         k: usize,
@@ -48,7 +47,7 @@ impl Bend<'_> {
     ) -> (Option<Vec<f64>>, u64) {
         let root = self.points[k];
         let joints = self.bones[k].joints.len() as u64 + 1;
-        let check = capsule_check(self.obstacles.obstacles.count());
+        let check = self.obstacles.capsule_units();
         if self.clear(root, self.end_with(k, before, self.q), k) {
             return (None, joints + check);
         }

@@ -22,7 +22,7 @@ use super::bones::Bone;
 use super::stall::{Next, Stalls};
 use super::FabrikSettings;
 use crate::kinematics::{Chain, JointKind};
-use crate::plugin::{IkProblem, IkSolution};
+use crate::plugin::{IkProblem, IkSolution, Tally};
 
 /// The working state of one solve.
 pub(super) struct Pass<'a> {
@@ -36,8 +36,8 @@ pub(super) struct Pass<'a> {
     pub goals: Vec<Point3<f64>>,
     /// Joint axes of the group being aligned (scratch).
     axes: Vec<Vector3<f64>>,
-    /// Work done since the meter was last told, in its units
-    /// ([`crate::meter`]): a joint moved or carried, a bone placed.
+    /// Work done since the allowance was last told, in its units
+    /// ([`crate::allowance`]): a joint moved or carried, a bone placed.
     pub work: u64,
 }
 
@@ -79,7 +79,7 @@ impl<'a> Pass<'a> {
         let mut best: Option<(bool, f64, Vec<f64>)> = None;
         let mut stalls = Stalls::new();
         let mut iterations = 0;
-        let mut tally = self.problem.meter.tally();
+        let mut tally = Tally::new(self.problem.allowance);
         let check = if avoiding {
             self.problem.check_units()
         } else {
@@ -116,7 +116,7 @@ impl<'a> Pass<'a> {
             }
         }
         let (_, _, q) = best.expect("at least one posture seen");
-        tally.add(std::mem::take(&mut self.work) + check);
+        tally.count(std::mem::take(&mut self.work) + check);
         let chain = self.chain();
         IkSolution {
             distance_mm: (chain.effector(&q) - self.problem.target_mm).norm(),

@@ -17,8 +17,7 @@ use super::stall::{Next, Stalls};
 use super::FabrikSettings;
 use crate::collision::PlacedObstacles;
 use crate::kinematics::{Body, Chain};
-use crate::meter::Meter;
-use crate::plugin::IkProblem;
+use crate::plugin::{Allowance, IkProblem, Tally};
 use crate::solvers::starts::Starts;
 
 /// One effector's target and priority.
@@ -41,8 +40,8 @@ pub struct TreeProblem<'a> {
     pub tolerance_mm: f64,
     pub seed: u64,
     pub obstacles: Option<PlacedObstacles<'a>>,
-    /// What the solve's work is told to (`IkProblem::meter`).
-    pub meter: &'a Meter,
+    /// What the solve's work is told to (`IkProblem::allowance`).
+    pub allowance: &'a dyn Allowance,
 }
 
 /// The posture found, in the body's joint order, and each goal's distance.
@@ -122,7 +121,7 @@ pub fn solve_tree(settings: &FabrikSettings, problem: &TreeProblem<'_>) -> TreeS
             tolerance_mm: problem.tolerance_mm,
             seed: problem.seed,
             obstacles: problem.obstacles,
-            meter: problem.meter,
+            allowance: problem.allowance,
         })
         .collect();
     let shared = shared_bones(&branches);
@@ -247,7 +246,7 @@ impl Tree<'_> {
         let mut best = self.solution(0);
         let mut stalls = Stalls::new();
         let mut iterations = 0;
-        let mut tally = self.problem.meter.tally();
+        let mut tally = Tally::new(self.problem.allowance);
         // Each look at the posture checks every branch.
         let checks = (self.problem.obstacles)
             .filter(|_| s.avoid_obstacles)

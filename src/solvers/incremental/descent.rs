@@ -13,7 +13,7 @@ use nalgebra::{Point3, Vector3};
 
 use super::IncrementalSettings;
 use crate::kinematics::{Chain, IncrementalFk, Posed, Step};
-use crate::plugin::{IkProblem, IkSolution};
+use crate::plugin::{IkProblem, IkSolution, Tally};
 
 /// One descent from `q`.
 pub(super) fn descend(s: &IncrementalSettings, problem: &IkProblem<'_>, q: Vec<f64>) -> IkSolution {
@@ -115,7 +115,7 @@ struct Guard<'p, 'a> {
     problem: &'p IkProblem<'a>,
     clear: bool,
     posed: Posed<'a>,
-    /// Postures checked since the meter was last told.
+    /// Postures checked since the allowance was last told.
     checks: u64,
 }
 
@@ -153,7 +153,7 @@ impl<'p, 'a> Guard<'p, 'a> {
         }
     }
 
-    /// The work of the checks since the last call, in meter units.
+    /// The work of the checks since the last call, in the allowance's units.
     fn take_work(&mut self) -> u64 {
         std::mem::take(&mut self.checks) * self.problem.check_units()
     }
@@ -183,7 +183,7 @@ fn descend_with(
         .collect();
     let mut sweeps = 0u64;
     let mut stalled = 0u32;
-    let mut tally = problem.meter.tally();
+    let mut tally = Tally::new(problem.allowance);
     let joints = chain.dof() as u64;
     while d_sq > tolerance_sq && sweeps < u64::from(s.max_sweeps) && tally.within() {
         sweeps += 1;
@@ -205,7 +205,9 @@ fn descend_with(
                 guard.as_mut(),
             );
             let factor = if kept { s.grow } else { s.shrink };
-            tally.add(guard.as_mut().map_or(0, |g| g.take_work()));
+            if let Some(g) = guard.as_mut() {
+                tally.count(g.take_work());
+            }
             if factor != 1.0 {
                 let scaled = steps[i].scaled(factor);
                 steps[i] = if scaled.delta > joint.range() {
@@ -215,7 +217,7 @@ fn descend_with(
                 };
             }
         }
-        tally.add(joints);
+        tally.count(joints);
         if steps
             .iter()
             .zip(&min_steps)
@@ -252,7 +254,7 @@ fn descend_with(
     // whatever the descent computed on the way.
     let q = fk.into_q();
     if s.avoid_obstacles {
-        tally.add(problem.check_units());
+        tally.count(problem.check_units());
     }
     IkSolution {
         distance_mm: (chain.effector(&q) - problem.target_mm).norm(),
