@@ -69,6 +69,10 @@ pub enum ErrorKind {
     Duplicate { what: &'static str, name: String },
     #[error("`{name}` is defined in terms of itself")]
     LetCycle { name: String },
+    #[error(
+        "base preset `{name}` has the name of a base plugin, which would be used in its place"
+    )]
+    PresetNamesPlugin { name: String },
 
     // ------------------------------------------------------------ values
     #[error("expected {expected}, found {found}")]
@@ -219,9 +223,11 @@ impl ErrorKind {
             | BadUrdf { .. } => "reach::file",
             MeetsItself { .. } | FixedJoint { .. } => "reach::body",
             ImportCycle { .. } | UnknownStdModule { .. } => "reach::use",
-            UnknownName { .. } | AmbiguousSurface { .. } | Duplicate { .. } | LetCycle { .. } => {
-                "reach::name"
-            }
+            UnknownName { .. }
+            | AmbiguousSurface { .. }
+            | Duplicate { .. }
+            | LetCycle { .. }
+            | PresetNamesPlugin { .. } => "reach::name",
             Dimension { .. } | Operands { .. } | MixedDefaults => "reach::unit",
             OutOfRange { .. }
             | LimitsReversed { .. }
@@ -266,6 +272,7 @@ impl ErrorKind {
             AmbiguousSurface { .. } => "which room's?".into(),
             Duplicate { .. } => "defined again here".into(),
             LetCycle { .. } => "used in its own definition".into(),
+            PresetNamesPlugin { .. } => "a base plugin's name".into(),
             Dimension { found, .. } => format!("this is {found}"),
             Operands { .. } => "incompatible units".into(),
             DivisionByZero => "this is zero".into(),
@@ -327,6 +334,9 @@ impl ErrorKind {
                 None => format!("write {expected}"),
             }),
             Operands { .. } => Some("both sides of + and - must have the same kind of unit".into()),
+            PresetNamesPlugin { name } => Some(format!(
+                "give the preset another name (`reach plugins` lists the plugins'); a person's `base {name}` means the plugin"
+            )),
             MeetsItself { .. } => Some(
                 "a body that meets itself in its neutral posture meets itself in every posture near it, so no answer would mean anything: give its links smaller radii (`link NAME radius 20mm` on a joint; `radius 20mm` after a URDF mannequin's `tip`) or lengths that keep them apart"
                     .into(),

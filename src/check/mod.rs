@@ -220,7 +220,14 @@ impl<'a> Checker<'a> {
                 Item::Room(d) => self.rooms.insert(&d.name, d, f.id),
                 Item::Mannequin(d) => self.mannequins.insert(&d.name, d, f.id),
                 Item::Profile(d) => self.profiles.insert(&d.name, d, f.id),
-                Item::BasePreset(d) => self.base_presets.insert(&d.name, d, f.id),
+                Item::BasePreset(d) => {
+                    if self.registry.base(&d.name.value).is_some() {
+                        let name = d.name.value.clone();
+                        let kind = ErrorKind::PresetNamesPlugin { name };
+                        self.error(Error::new(kind, d.name.span));
+                    }
+                    self.base_presets.insert(&d.name, d, f.id)
+                }
                 Item::VisionPreset(d) => self.vision_presets.insert(&d.name, d, f.id),
                 Item::Person(d) => self.persons.insert(&d.name, d, f.id),
                 Item::Population(d) => self.populations.insert(&d.name, d, f.id),
