@@ -4,7 +4,7 @@
 
 use crate::geometry::{Capsule, Cuboid, Shape, Solid};
 use crate::kinematics::{Body, Owner};
-use crate::picture::Item;
+use crate::picture::Painted;
 use crate::scene::{BasePose, OwnBody};
 
 /// Colours: skin for the moving body, a darker skin for the legs, grey
@@ -16,7 +16,7 @@ pub const BASE: &str = "#7d8590";
 /// The body in posture `q` (a value per joint of `body`, in its order),
 /// standing at `pose`, with its legs and base `own`: each solid once, in
 /// the room frame.
-pub fn person(body: &Body, q: &[f64], pose: BasePose, own: &OwnBody) -> Vec<Item> {
+pub fn person(body: &Body, q: &[f64], pose: BasePose, own: &OwnBody) -> Vec<Painted> {
     let mut items = Vec::new();
     let mut drawn = vec![false; body.joints.len()];
     let paths: Vec<Vec<usize>> = (0..body.effectors.len())
@@ -34,7 +34,7 @@ pub fn person(body: &Body, q: &[f64], pose: BasePose, own: &OwnBody) -> Vec<Item
                 Owner::Rider(k) => index == drawing_chain(&paths, riders[k].0),
             };
             if new && capsule.radius_mm > 0.0 {
-                items.push(Item {
+                items.push(Painted {
                     shape: Shape::Capsule(capsule_in_room(capsule, pose)),
                     fill: SKIN.into(),
                     opacity: 0.9,
@@ -43,7 +43,7 @@ pub fn person(body: &Body, q: &[f64], pose: BasePose, own: &OwnBody) -> Vec<Item
             }
         }
     }
-    items.extend(own.solids.iter().map(|solid| Item {
+    items.extend(own.solids.iter().map(|solid| Painted {
         shape: shape_in_room(&solid.shape, pose),
         fill: if is_leg(solid) { LEGS } else { BASE }.into(),
         // The base's parts let the body behind them show through.

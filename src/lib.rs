@@ -26,6 +26,7 @@ pub mod cache;
 pub mod calibration;
 mod check;
 pub mod collision;
+pub mod engine;
 pub mod error;
 pub mod escape;
 mod excerpt;

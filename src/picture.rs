@@ -36,7 +36,7 @@ impl View {
 
 /// A shape and how it is painted.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Item {
+pub struct Painted {
     pub shape: Shape,
     /// An SVG colour.
     pub fill: String,
@@ -51,7 +51,7 @@ pub struct Item {
 pub struct Panel {
     pub title: String,
     pub view: View,
-    pub items: Vec<Item>,
+    pub items: Vec<Painted>,
     /// Horizontal lines across the panel (the floor, a seat height), with
     /// their labels, in millimetres up the page.
     pub levels_mm: Vec<(f64, String)>,
@@ -157,7 +157,7 @@ fn draw_panel(s: &mut String, panel: &Panel, frame: &Frame, left: f64, top: f64)
             markup(label)
         );
     }
-    let mut shapes: Vec<(f64, Vec<Point2<f64>>, &Item)> = panel
+    let mut shapes: Vec<(f64, Vec<Point2<f64>>, &Painted)> = panel
         .items
         .iter()
         .map(|item| {
@@ -270,7 +270,7 @@ mod tests {
 
     #[test]
     fn the_nearer_solid_is_painted_last() {
-        let capsule = |y: f64, fill: &str| Item {
+        let capsule = |y: f64, fill: &str| Painted {
             shape: Shape::Capsule(Capsule::new(
                 Point3::new(0.0, y, 0.0),
                 Point3::new(0.0, y, 100.0),

@@ -11,7 +11,8 @@
 
 use nalgebra::{Point3, Vector3};
 use proptest::prelude::*;
-use reach::collision::{KeptProofs, OutOfReach, Verdict};
+use reach::collision::{OutOfReach, Verdict};
+use reach::engine::KeptProofs;
 use reach::kinematics::{Chain, Owner};
 use reach::plugin::Registry;
 use reach::scene::OwnBody;

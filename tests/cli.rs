@@ -115,21 +115,34 @@ fn json_is_byte_identical_across_runs_and_thread_counts() {
     }
 }
 
+/// `example` run four times, at once (the runs share the machine's cores,
+/// so the four take about the time of two in a row): twice on one thread,
+/// on two and on four; every run's JSON the same bytes.
 fn identical_across_threads(example: &str) {
-    let run = |threads: &str| {
-        let o = Command::new(env!("CARGO_BIN_EXE_reach"))
-            .args(["run", example, "--format", "json"])
-            .current_dir(env!("CARGO_MANIFEST_DIR"))
-            .env("RAYON_NUM_THREADS", threads)
-            .output()
-            .unwrap();
-        assert_eq!(o.status.code(), Some(0));
-        o.stdout
-    };
-    let first = run("1");
-    assert_eq!(first, run("1"));
-    assert_eq!(first, run("2"));
-    assert_eq!(first, run("4"));
+    let runs: Vec<std::process::Child> = ["1", "1", "2", "4"]
+        .iter()
+        .map(|threads| {
+            Command::new(env!("CARGO_BIN_EXE_reach"))
+                .args(["run", example, "--format", "json"])
+                .current_dir(env!("CARGO_MANIFEST_DIR"))
+                .env("RAYON_NUM_THREADS", threads)
+                .stdout(std::process::Stdio::piped())
+                .stderr(std::process::Stdio::null())
+                .spawn()
+                .unwrap()
+        })
+        .collect();
+    let outputs: Vec<std::process::Output> = runs
+        .into_iter()
+        .map(|run| run.wait_with_output().unwrap())
+        .collect();
+    for (threads, o) in ["1", "1", "2", "4"].iter().zip(&outputs) {
+        assert_eq!(o.status.code(), Some(0), "{example} on {threads} threads");
+        assert!(
+            o.stdout == outputs[0].stdout,
+            "{example}: the JSON on {threads} threads differs from the first run's"
+        );
+    }
 }
 
 /// Every file of an `--out` set (the page, the glTF scene, the maps' SVG

@@ -408,3 +408,120 @@ fn cycles(edges: &BTreeSet<(String, String)>) -> Vec<Vec<String>> {
     }
     found
 }
+
+/// ARCHITECTURE.md, "Invariants": a solver answers "from these starts,
+/// reach this target on this chain" through the plugin SDK; it names no
+/// meter, cache, engine, task, base or scenario.
+#[test]
+fn solvers_name_the_plugin_sdk_and_geometry_only() {
+    const ALLOWED: [&str; 8] = [
+        "solvers",
+        "plugin",
+        "allowance",
+        "kinematics",
+        "geometry",
+        "collision",
+        "scene",
+        "options",
+    ];
+    let files = source_files();
+    let problems: Vec<String> = file_edges(&files)
+        .iter()
+        .filter(|(from, _)| from.starts_with("solvers/"))
+        .filter(|(_, to)| !ALLOWED.contains(&files[to].module[0].as_str()))
+        .map(|(from, to)| format!("{from} uses {to}"))
+        .collect();
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+/// ARCHITECTURE.md, "Invariants": every `static` and `thread_local!` of
+/// the library, each with what it holds. A new one is listed here, with
+/// why it may not be owned by a run or a watch session instead.
+#[test]
+fn every_static_is_listed_with_what_it_holds() {
+    const LISTED: [(&str, &str, &str); 14] = [
+        ("ansur.rs", "SURVEY", "immutable: the survey's rows"),
+        ("syntax/parser.rs", "PRATT", "immutable: the operator table"),
+        (
+            "syntax/parser.rs",
+            "ERROR_DETAIL",
+            "a lock around pest's process-wide setting",
+        ),
+        ("meter.rs", "UNMETERED", "immutable: the meter of no run"),
+        (
+            "output/files.rs",
+            "WRITING",
+            "a lock: one --out set written at a time",
+        ),
+        (
+            "bases/capability.rs",
+            "MAPS",
+            "process cache: capability maps by chain and body",
+        ),
+        (
+            "bases/placement.rs",
+            "FLOORS",
+            "process cache: a base's floor by room",
+        ),
+        (
+            "floor/region.rs",
+            "PIECES",
+            "process cache: floor pieces by outline",
+        ),
+        (
+            "floor/routes.rs",
+            "KEPT",
+            "process cache: routes from the doors",
+        ),
+        (
+            "floor/clear.rs",
+            "WHOLE",
+            "process cache: a standard's free floor",
+        ),
+        (
+            "meter.rs",
+            "COUNTED",
+            "thread: the work of the solve running on it",
+        ),
+        (
+            "collision/touched.rs",
+            "SCOPE",
+            "thread: the obstacles its task touched",
+        ),
+        (
+            "names.rs",
+            "LEFT",
+            "thread: the suggestions one check may still make",
+        ),
+        (
+            "report/map.rs",
+            "CELLS_APART",
+            "thread: a map's cells written apart",
+        ),
+    ];
+    let files = source_files();
+    let mut found = BTreeSet::new();
+    // Unit tests' files (`*_tests.rs`) may keep what they like.
+    let lib = files.values().filter(|f| f.krate == Crate::Lib);
+    for file in lib.filter(|f| !f.rel.ends_with("_tests.rs")) {
+        for (k, _) in file.code.match_indices("static ") {
+            let name: String = file.code[k + 7..]
+                .chars()
+                .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                .collect();
+            if !name.is_empty() && name.chars().all(|c| !c.is_ascii_lowercase()) {
+                found.insert((file.rel.clone(), name));
+            }
+        }
+    }
+    let listed: BTreeSet<(String, String)> = LISTED
+        .iter()
+        .map(|(file, name, _)| (file.to_string(), name.to_string()))
+        .collect();
+    let new: Vec<_> = found.difference(&listed).collect();
+    let gone: Vec<_> = listed.difference(&found).collect();
+    assert!(
+        new.is_empty() && gone.is_empty(),
+        "statics not listed: {new:?}; listed but gone: {gone:?}"
+    );
+}

@@ -3,7 +3,7 @@
 use nalgebra::{Point3, Vector3};
 
 use super::search::{search, search_retrying_later, Candidate};
-use crate::kinematics::{Chain, Posture};
+use crate::kinematics::{Chain, Stance};
 use crate::meter::Meter;
 use crate::plugin::{
     Base, BaseError, BasePlugin, BasePose, Fit, Hips, Options, ParamSpec, Params, Placement,
@@ -62,7 +62,7 @@ impl BasePlugin for Fixed {
     fn build(&self, options: &Options, person: &Physique) -> Result<Box<dyn Base>, BaseError> {
         let s = FixedSettings::from_options(options)?;
         let legs = person.legs.as_ref().map(|l| match person.posture {
-            Some(Posture::Seated) => l.seated(20f64.to_radians()),
+            Some(Stance::Seated) => l.seated(20f64.to_radians()),
             _ => l.standing(),
         });
         let pelvis = person.legs.as_ref().map_or(0.0, |l| l.pelvis_mm);

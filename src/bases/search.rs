@@ -17,7 +17,7 @@
 //! (`collision::KeptProofs`) is skipped, and the answer must be the same
 //! whether or not the proof was made.
 
-use crate::collision::KeptProofs;
+use crate::engine::KeptProofs;
 use crate::kinematics::Chain;
 
 use crate::plugin::{BasePose, Descents, IkProblem, Placement, ReachQuery, Retry, Search, Solver};

@@ -16,7 +16,7 @@ use nalgebra::Point3;
 use super::placement::Mobile;
 use super::PlacingSettings;
 use crate::geometry::{Cuboid, Shape, Solid};
-use crate::kinematics::Posture;
+use crate::kinematics::Stance;
 use crate::plugin::{Base, BaseError, BasePlugin, Options, ParamSpec, Params, Plugin, Settings};
 use crate::scene::Physique;
 
@@ -101,8 +101,8 @@ const WRIST_OVER_HIP: f64 = 0.485 / 0.530;
 impl BasePlugin for Trolley {
     fn build(&self, options: &Options, person: &Physique) -> Result<Box<dyn Base>, BaseError> {
         let s = TrolleySettings::from_options(options)?;
-        if let Some(declared @ Posture::Seated) = person.posture {
-            return Err(BaseError::posture("trolley", declared, Posture::Standing));
+        if let Some(declared @ Stance::Seated) = person.posture {
+            return Err(BaseError::posture("trolley", declared, Stance::Standing));
         }
         let hip_height_mm = s
             .hip_height_mm

@@ -23,7 +23,7 @@ use nalgebra::Point3;
 use super::placement::Mobile;
 use super::PlacingSettings;
 use crate::geometry::{Cuboid, Shape, Solid};
-use crate::kinematics::{Legs, Posture};
+use crate::kinematics::{Legs, Stance};
 use crate::plugin::{
     Base, BaseError, BasePlugin, Options, ParamSpec, Params, Plugin, Settings, SettingsError,
 };
@@ -140,8 +140,8 @@ impl BasePlugin for Wheelchair {
                 ),
             )));
         }
-        if let Some(declared @ Posture::Standing) = person.posture {
-            return Err(BaseError::posture("wheelchair", declared, Posture::Seated));
+        if let Some(declared @ Stance::Standing) = person.posture {
+            return Err(BaseError::posture("wheelchair", declared, Stance::Seated));
         }
         let chair = Chair::new(&s, person);
         let hip_height_mm = s.seat_height_mm + chair.above_seat_mm;

@@ -22,8 +22,8 @@ mod touched;
 use std::collections::{HashMap, VecDeque};
 use std::sync::Arc;
 
+use crate::engine::Earlier;
 use crate::error::Error;
-use crate::plugin::Earlier;
 use crate::progress::Progress;
 use crate::report::{Report, TaskReport};
 use crate::scenario::{Scenario, TaskSpec};

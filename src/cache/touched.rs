@@ -17,7 +17,7 @@ use nalgebra::Point3;
 
 use crate::bases::ON_FACE_MM;
 use crate::collision::{bounds_meet, bounds_within, obstacle_bounds, TouchedSet, TOUCH_MARGIN_MM};
-use crate::plugin::{Changed, Earlier, SolveMap};
+use crate::engine::{Changed, Earlier, SolveMap};
 use crate::report::TaskReport;
 use crate::scene::Room;
 

@@ -10,8 +10,8 @@ use super::eval::fmt_num;
 use super::Checker;
 use crate::error::{thousands, Error, ErrorKind};
 use crate::kinematics::{
-    Body, Coupling, Declared, Dh, Effector, Ellipse, Folded, Joint, JointKind, Link, Posture,
-    Rhythm, Sphere,
+    Body, Coupling, Declared, Dh, Effector, Ellipse, Folded, Joint, JointKind, Link, Rhythm,
+    Sphere, Stance,
 };
 use crate::span::Span;
 use crate::span::{FileId, Name};
@@ -390,8 +390,8 @@ impl Checker<'_> {
         );
         if let Some(p) = decl.postures.first() {
             body.posture = Some(match p.value {
-                ast::Posture::Seated => Posture::Seated,
-                ast::Posture::Standing => Posture::Standing,
+                ast::Stance::Seated => Stance::Seated,
+                ast::Stance::Standing => Stance::Standing,
             });
         }
         body

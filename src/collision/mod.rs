@@ -6,14 +6,12 @@
 //! `placed.rs` asks it of a whole posture, with the person's own body.
 
 mod beyond;
-mod kept_proofs;
 mod placed;
 #[cfg(test)]
 mod split_mesh_tests;
 mod touched;
 
-pub use beyond::{OutOfReach, Verdict};
-pub use kept_proofs::KeptProofs;
+pub use beyond::{OutOfReach, Verdict, BOXES};
 pub use placed::PlacedObstacles;
 pub use touched::{
     bounds_meet, bounds_within, recording_one, OneRecord, Touched, TouchedSet, TOUCH_MARGIN_MM,

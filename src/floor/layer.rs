@@ -30,19 +30,19 @@ const SEAM_NEAR_MM: f64 = 0.01;
 const NEAR_MM: f64 = 1.0;
 
 /// The tiles a floor is cut into: the same for every heading.
-pub struct Grid {
+pub struct Tiling {
     origin: Coord<f64>,
     tile_mm: f64,
     nx: usize,
     ny: usize,
 }
 
-impl Grid {
+impl Tiling {
     /// Tiles over `floor`, about `TILE_MM` square.
     pub fn over(floor: Rect<f64>) -> Self {
         let (w, h) = (floor.width(), floor.height());
         let tile_mm = TILE_MM.max((w * h / MAX_TILES).sqrt());
-        Grid {
+        Tiling {
             origin: floor.min(),
             tile_mm,
             nx: (w / tile_mm).ceil().max(1.0) as usize,
@@ -108,7 +108,7 @@ impl Layer {
     /// `obstacles` with its hip point within `within`, tile by tile on
     /// `grid`, its pieces numbered from `first`.
     pub fn new(
-        grid: &Grid,
+        grid: &Tiling,
         within: Option<Rect<f64>>,
         turned: &Turned,
         heading_rad: f64,
@@ -160,7 +160,7 @@ impl Layer {
 
     /// The number of the piece holding `p`, or of the nearest within
     /// `NEAR_MM`.
-    pub fn piece_at(&self, grid: &Grid, p: Point<f64>) -> Option<usize> {
+    pub fn piece_at(&self, grid: &Tiling, p: Point<f64>) -> Option<usize> {
         self.within?;
         let t = grid.of(p);
         piece_near(&self.tiles[t], p, NEAR_MM).map(|k| self.starts[t] + k)
@@ -168,7 +168,7 @@ impl Layer {
 
     /// The pairs of pieces of neighbouring tiles that overlap: the same
     /// piece of the region, cut by the tiles' edge.
-    pub fn seams(&self, grid: &Grid) -> Vec<(usize, usize)> {
+    pub fn seams(&self, grid: &Tiling) -> Vec<(usize, usize)> {
         let Some(within) = self.within else {
             return Vec::new();
         };
@@ -307,7 +307,7 @@ mod tests {
         let turned = Turned::new(&chair, 0.3);
         let obstacles = FloorObstacles::new(room, &chair);
         let within = shrunk_room(room, &turned, None);
-        let grid = Grid::over(within.expect("the chair fits the hall"));
+        let grid = Tiling::over(within.expect("the chair fits the hall"));
         let layer = Layer::new(&grid, within, &turned, 0.3, &obstacles, 0);
         let tile = grid.rect(0, within.unwrap()).unwrap();
         let (_, _, shapes) = admissible_joined(tile, &turned, &obstacles, &Grown::default());

@@ -30,7 +30,7 @@ use geo::{ConvexHull, Distance, Euclidean, InteriorPoint, Intersects, LineString
 use geo::{Coord, Point, Polygon, Rect};
 use nalgebra::{Point3, Vector3};
 
-use super::layer::{Grid, Layer};
+use super::layer::{Layer, Tiling};
 use super::obstacles::{box_outline, FloorObstacles};
 use super::region::{shrunk, shrunk_room, Turned};
 use super::work::{unbounded, CutShort, Work};
@@ -58,7 +58,7 @@ const SPARE_MM: f64 = 100.0;
 
 /// Where a base can get to in one room.
 pub struct Routes {
-    grid: Grid,
+    grid: Tiling,
     /// The headings followed, ascending in [0, 2 pi), each with the
     /// extended floor's admissible region tile by tile.
     layers: Vec<Layer>,
@@ -160,7 +160,7 @@ impl Routes {
         let space =
             Space::new(room, footprint, &allows).map_err(|cut| work.cut_short_with(cut.work))?;
         work.add(space.obstacles.work())?;
-        let grid = Grid::over(space.floor);
+        let grid = Tiling::over(space.floor);
         let followed = followed_headings(footprint, headings, room);
         let mut layers: Vec<Layer> = Vec::with_capacity(followed.len());
         for &h in &followed {
@@ -395,7 +395,7 @@ impl Space {
 
     /// Where `footprint` fits on this floor at `heading_rad`, tile by
     /// tile on `grid`, its pieces numbered from `first`.
-    fn layer(&self, grid: &Grid, footprint: &Footprint, heading_rad: f64, first: usize) -> Layer {
+    fn layer(&self, grid: &Tiling, footprint: &Footprint, heading_rad: f64, first: usize) -> Layer {
         let turned = Turned::new(footprint, heading_rad);
         let within = shrunk(self.floor, &turned, None);
         Layer::new(grid, within, &turned, heading_rad, &self.obstacles, first)
@@ -491,7 +491,7 @@ fn normalized(heading_rad: f64) -> f64 {
 /// sweeps turning from the one to the other.
 fn join_turns(
     space: &Space,
-    grid: &Grid,
+    grid: &Tiling,
     footprint: &Footprint,
     layers: &[Layer],
     joined: &mut Joined,

@@ -8,7 +8,7 @@ use nalgebra::{Point3, Vector3};
 
 use super::chain::{Chain, Joint, Link, Rider};
 use super::coupling::Coupling;
-use super::legs::{Legs, Posture};
+use super::legs::{Legs, Stance};
 
 /// One end of the body: a hand's grip point, or the eyes' look point.
 #[derive(Clone, Debug, PartialEq)]
@@ -49,7 +49,7 @@ pub struct Body {
     /// standing). `None`: the mannequin declares none.
     pub legs: Option<Legs>,
     /// Whether the mannequin sits or stands (`None`: as its base has it).
-    pub posture: Option<Posture>,
+    pub posture: Option<Stance>,
     /// Joints whose ranges are coupled, by body index.
     pub couplings: Vec<Coupling>,
 }

@@ -9,16 +9,16 @@ use crate::geometry::{Capsule, Shape, Solid};
 
 /// Whether a mannequin sits or stands.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Posture {
+pub enum Stance {
     Seated,
     Standing,
 }
 
-impl Posture {
+impl Stance {
     pub fn word(self) -> &'static str {
         match self {
-            Posture::Seated => "seated",
-            Posture::Standing => "standing",
+            Stance::Seated => "seated",
+            Stance::Standing => "standing",
         }
     }
 }

@@ -28,7 +28,7 @@ pub use coupling::{Coupling, Ellipse, Rhythm};
 pub use dh::Dh;
 pub use frames::{Declared, Folded};
 pub use incremental::{IncrementalFk, Step};
-pub use legs::{Legs, Posture};
+pub use legs::{Legs, Stance};
 pub use posed::Posed;
 pub use urdf::{chain_from_urdf, UrdfError};
 pub use volumes::{Contact, Motion, Owner, Volumes};

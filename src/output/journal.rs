@@ -17,7 +17,7 @@ const JOURNAL: &str = ".reach-journal-";
 
 /// One step of placing a set, on files of one directory.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Step {
+pub enum SetStep {
     /// A temporary renamed over its final path.
     Rename(PathBuf, PathBuf),
     /// A file removed once every rename is made.
@@ -27,17 +27,17 @@ pub enum Step {
 /// Write down that `steps` (on files in `dir`) are about to be made;
 /// returns the journal's path. A line a step: `R`, the temporary's name
 /// and the final name; or `D` and the name removed; tab-separated.
-pub fn begin(dir: &Path, steps: &[Step]) -> std::io::Result<PathBuf> {
+pub fn begin(dir: &Path, steps: &[SetStep]) -> std::io::Result<PathBuf> {
     let name = |p: &Path| p.file_name().map(|n| n.to_string_lossy().into_owned());
     let mut text = String::new();
     for step in steps {
         match step {
-            Step::Rename(temporary, path) => {
+            SetStep::Rename(temporary, path) => {
                 if let (Some(from), Some(to)) = (name(temporary), name(path)) {
                     text.push_str(&format!("R\t{from}\t{to}\n"));
                 }
             }
-            Step::Remove(path) => {
+            SetStep::Remove(path) => {
                 if let Some(gone) = name(path) {
                     text.push_str(&format!("D\t{gone}\n"));
                 }

@@ -10,7 +10,7 @@
 
 use std::path::{Path, PathBuf};
 
-use super::journal::{self, Step};
+use super::journal::{self, SetStep};
 
 /// A backup's name starts with this (a temporary's prefix, so that a
 /// killed run's backups are swept like its temporaries), then the
@@ -38,16 +38,16 @@ pub fn place(
             return Err(e);
         }
     };
-    let mut steps: Vec<Step> = renames
+    let mut steps: Vec<SetStep> = renames
         .iter()
-        .map(|(from, to)| Step::Rename(from.clone(), to.clone()))
+        .map(|(from, to)| SetStep::Rename(from.clone(), to.clone()))
         .collect();
     steps.extend(
         leftovers
             .iter()
             .chain(backups.iter().flatten())
             .cloned()
-            .map(Step::Remove),
+            .map(SetStep::Remove),
     );
     let log = match journal::begin(dir, &steps) {
         Ok(log) => log,

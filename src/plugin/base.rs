@@ -8,12 +8,13 @@ use std::hash::{Hash, Hasher};
 
 use nalgebra::{Point3, Vector2};
 
-use super::{Descents, IkProblem, Options, Plugin, SettingsError, Solver, SolvesFor};
-use crate::collision::{KeptProofs, Obstacles, PlacedObstacles};
+use super::{Descents, IkProblem, Options, Plugin, SettingsError, Solver};
+use crate::collision::{Obstacles, PlacedObstacles};
+use crate::engine::{KeptProofs, SolvesFor};
 use geo::MultiPolygon;
 
 use crate::floor::{Footprint, Misfit, Shut};
-use crate::kinematics::{Chain, Posture};
+use crate::kinematics::{Chain, Stance};
 use crate::meter::Meter;
 use crate::scene::{BasePose, Blocked, OwnBody, Physique, Placement, Room};
 
@@ -59,7 +60,7 @@ pub struct ReachQuery<'a> {
     pub meter: &'a Meter,
     /// Where the solves are kept for the task's next run, and taken from
     /// its last (watch mode), as this search's chain, obstacles and own
-    /// body ask for them ([`crate::plugin::KeptSolves::of`]).
+    /// body ask for them ([`crate::engine::KeptSolves::of`]).
     pub solves: Option<SolvesFor<'a>>,
 }
 
@@ -424,7 +425,7 @@ impl From<SettingsError> for BaseError {
 
 impl BaseError {
     /// The error for a mannequin whose declared posture is not the base's.
-    pub fn posture(base: &str, declared: Posture, needed: Posture) -> Self {
+    pub fn posture(base: &str, declared: Stance, needed: Stance) -> Self {
         BaseError::Unfit(format!(
             "the mannequin is {}, and a {base} needs one {}: give the person a mannequin declared `{}`, or a base for a {} person",
             declared.word(),

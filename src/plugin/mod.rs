@@ -8,7 +8,6 @@
 mod base;
 mod descents;
 mod format;
-mod kept_solves;
 mod registry;
 mod solver;
 mod standard;
@@ -19,11 +18,12 @@ pub use base::{
 };
 pub use descents::Descents;
 pub use format::{FormatPlugin, FormatScene, TaskPlace};
-pub use kept_solves::{Changed, Earlier, KeptSolves, SolveMap, SolvesFor};
 pub use registry::Registry;
 // What a solve tells its work to (`crate::allowance`).
 pub use crate::allowance::{Allowance, Tally, Unbounded};
-pub use solver::{fingerprint_of, work_ratio, IkProblem, Solver, SolverPlugin};
+pub use solver::{work_ratio, IkProblem, Solver, SolverPlugin};
+// A solver's fingerprint, by which watch mode keeps its solves.
+pub use crate::engine::fingerprint_of;
 pub use standard::{Standard, StandardPlugin};
 pub use task::{Dependence, EffectorNeed, Subject, SubjectKind, Task, TaskInput, TaskPlugin};
 // The data the traits speak of, so that a plugin needs one `use`.

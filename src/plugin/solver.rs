@@ -129,27 +129,6 @@ pub trait Solver: Send + Sync {
     }
 }
 
-/// The fingerprint of a solver of `kind` with `settings`
-/// ([`Solver::fingerprint`]): a hash of their `Debug` text, which writes
-/// every field, each float exactly, so that a setting added later is
-/// taken in without being named here.
-pub fn fingerprint_of(kind: &str, settings: &impl std::fmt::Debug) -> u64 {
-    use std::fmt::Write;
-    use std::hash::Hasher;
-    /// Text written straight into a hasher.
-    struct Hashing(std::collections::hash_map::DefaultHasher);
-    impl Write for Hashing {
-        fn write_str(&mut self, text: &str) -> std::fmt::Result {
-            self.0.write(text.as_bytes());
-            Ok(())
-        }
-    }
-    let mut h = Hashing(std::collections::hash_map::DefaultHasher::new());
-    // Writing into a hasher cannot fail.
-    let _ = write!(h, "{kind}\u{0}{settings:?}");
-    h.0.finish()
-}
-
 pub trait SolverPlugin: Plugin {
     /// The solver that validated `options` configure.
     fn build(&self, options: &Options) -> Result<Box<dyn Solver>, SettingsError>;

@@ -8,8 +8,9 @@ use std::sync::Arc;
 
 use nalgebra::Point3;
 
-use super::{Base, KeptSolves, Options, Plugin, Registry, SettingsError, Tries};
+use super::{Base, Options, Plugin, Registry, SettingsError, Tries};
 use crate::collision::Touched;
+use crate::engine::KeptSolves;
 use crate::error::ErrorKind;
 use crate::kinematics::Chain;
 use crate::meter::Meter;

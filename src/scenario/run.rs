@@ -11,9 +11,10 @@ use rayon::prelude::*;
 
 use super::{Scenario, TaskSpec};
 use crate::collision::{Touched, TouchedSet};
+use crate::engine::{Earlier, KeptSolves, SolveMap};
 use crate::error::Error;
 use crate::meter::{Meter, RunWork};
-use crate::plugin::{Earlier, Fit, KeptSolves, SolveMap, TaskInput};
+use crate::plugin::{Fit, TaskInput};
 use crate::progress::Progress;
 use crate::report::{
     NotPlacedReport, PersonAnswer, PopulationReport, Report, TaskReport, SCHEMA_VERSION,

@@ -7,14 +7,14 @@
 use nalgebra::Point3;
 
 use crate::geometry::{Capsule, Cuboid, Shape, Solid};
-use crate::kinematics::{Body, Legs, Owner, Posture};
+use crate::kinematics::{Body, Legs, Owner, Stance};
 
 /// What a base needs to know of the person on it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Physique {
     pub legs: Option<Legs>,
     /// As the mannequin declares it (`None`: as the base has it).
-    pub posture: Option<Posture>,
+    pub posture: Option<Stance>,
     /// The upright trunk, head and shoulders: least and greatest corners
     /// in the base frame, at the neutral posture.
     pub column_mm: Option<[Point3<f64>; 2]>,

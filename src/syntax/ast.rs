@@ -282,13 +282,13 @@ pub struct MannequinDecl {
     /// `require a <= b, "why"`: what the parameters must satisfy.
     pub requires: Vec<RequireDecl>,
     /// `seated` or `standing`, in the body or after an alias.
-    pub postures: Vec<Spanned<Posture>>,
+    pub postures: Vec<Spanned<Stance>>,
     pub span: Span,
 }
 
 /// Whether a mannequin sits or stands.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Posture {
+pub enum Stance {
     Seated,
     Standing,
 }

@@ -576,11 +576,11 @@ impl Builder {
         }
     }
 
-    fn posture(&mut self, p: Pair<Rule>) -> Spanned<Posture> {
+    fn posture(&mut self, p: Pair<Rule>) -> Spanned<Stance> {
         let span = self.span(&p);
         let posture = match p.as_str() {
-            "seated" => Posture::Seated,
-            _ => Posture::Standing,
+            "seated" => Stance::Seated,
+            _ => Stance::Standing,
         };
         Spanned::new(posture, span)
     }

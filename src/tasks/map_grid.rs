@@ -24,11 +24,11 @@ use super::common::{mix_seed, Reaching};
 use super::grid_settings::GridSettings;
 use super::why::{Failed, Found};
 use crate::bases::retry;
-use crate::collision::{KeptProofs, Obstacles};
+use crate::collision::Obstacles;
+use crate::engine::{KeptProofs, SolvesFor};
 use crate::kinematics::Chain;
 use crate::plugin::{
-    BasePose, Descents, Placement, PreparedBase, ReachQuery, Retry, Search, SolvesFor, Subject,
-    TaskInput,
+    BasePose, Descents, Placement, PreparedBase, ReachQuery, Retry, Search, Subject, TaskInput,
 };
 use crate::report::{MapCell, MapReport, TaskReport};
 use crate::scene::{Blocked, Blocker, Grid, GridCell, IkSolution, Surface};

@@ -214,10 +214,7 @@ impl KeptSolves {
     /// These solves as a search by `chain` among `obstacles` (none: not
     /// checked) with `own` asks for them.
     pub fn of(&self, chain: &Chain, obstacles: Option<&Obstacles>, own: &OwnBody) -> SolvesFor<'_> {
-        let variant = crate::plugin::fingerprint_of(
-            "search",
-            &(chain, obstacles.map(Obstacles::variant), own),
-        );
+        let variant = fingerprint_of("search", &(chain, obstacles.map(Obstacles::variant), own));
         SolvesFor {
             kept: self,
             variant,
@@ -320,6 +317,27 @@ impl KeptSolves {
             now.insert(key, kept);
         }
     }
+}
+
+/// The fingerprint of a solver of `kind` with `settings`
+/// ([`Solver::fingerprint`]): a hash of their `Debug` text, which writes
+/// every field, each float exactly, so that a setting added later is
+/// taken in without being named here.
+pub fn fingerprint_of(kind: &str, settings: &impl std::fmt::Debug) -> u64 {
+    use std::fmt::Write;
+    use std::hash::Hasher;
+    /// Text written straight into a hasher.
+    struct Hashing(std::collections::hash_map::DefaultHasher);
+    impl Write for Hashing {
+        fn write_str(&mut self, text: &str) -> std::fmt::Result {
+            self.0.write(text.as_bytes());
+            Ok(())
+        }
+    }
+    let mut h = Hashing(std::collections::hash_map::DefaultHasher::new());
+    // Writing into a hasher cannot fail.
+    let _ = write!(h, "{kind}\u{0}{settings:?}");
+    h.0.finish()
 }
 
 #[cfg(test)]

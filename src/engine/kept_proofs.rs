@@ -28,8 +28,7 @@ use std::sync::Mutex;
 use nalgebra::Point3;
 use rayon::prelude::*;
 
-use super::beyond::{Verdict, BOXES};
-use super::OutOfReach;
+use crate::collision::{OutOfReach, Verdict, BOXES};
 use crate::kinematics::Chain;
 use crate::meter::Meter;
 use crate::scene::OwnBody;
