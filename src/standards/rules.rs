@@ -368,7 +368,7 @@ fn forward(m: &Measure<'_>, at: &Point3<f64>, a: &Approached) -> Usage {
         at,
         a,
         f.floor_length_mm,
-        m.figures.sections.forward_reach,
+        f.sections.forward_reach,
         "forward reach",
     );
     let reach = if let Some(blocked) = blocked {
@@ -469,7 +469,7 @@ fn side(m: &Measure<'_>, at: &Point3<f64>, a: &Approached) -> Usage {
         at,
         a,
         f.floor_width_mm,
-        m.figures.sections.side_reach,
+        f.sections.side_reach,
         "side reach",
     );
     let reach = if let Some(blocked) = blocked {
