@@ -68,14 +68,13 @@ fn main() {
             solver_work: 10 * reach::Limits::default().solver_work,
             ..reach::Limits::default()
         };
-        let (_, checked) = reach::check_within(
-            Input::Text {
-                name: "bench_population.reach",
-                text: &text,
-            },
-            &registry,
-            &limits,
-        );
+        let input = Input::Text {
+            name: "bench_population.reach",
+            text: &text,
+        };
+        let (_, checked) = reach::Session::default()
+            .limits(limits)
+            .check(input, &registry);
         let scenario = match checked {
             Ok(s) => s,
             Err(d) => {

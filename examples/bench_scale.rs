@@ -105,7 +105,9 @@ fn child(path: &Path) {
 fn run(path: &Path) -> String {
     let registry = Registry::builtin();
     let limits = reach::limits::Limits::default();
-    let (_, checked) = reach::check_within(Input::Path(path), &registry, &limits);
+    let (_, checked) = reach::Session::default()
+        .limits(limits)
+        .check(Input::Path(path), &registry);
     let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(false)));
     let report = reach::run(&scenario).expect("within the bound on solver work");
     let json = registry.format("json").expect("the json format");

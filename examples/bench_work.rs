@@ -35,13 +35,17 @@ fn main() {
     println!("| scenario | work (units) | seconds | units per ms |");
     println!("|---|---|---|---|");
     for file in files {
-        let (_, checked) = reach::check_within(Input::Path(&file), &registry, &limits);
+        let (_, checked) = reach::Session::default()
+            .limits(limits)
+            .check(Input::Path(&file), &registry);
         let Ok(scenario) = checked else {
             println!("| {} | does not check | | |", file.display());
             continue;
         };
         let started = Instant::now();
-        let ran = reach::run_counting(&scenario, &reach::progress::NoProgress);
+        let ran = reach::Session::default()
+            .run(&scenario)
+            .map(|ran| (ran.report, ran.work));
         let seconds = started.elapsed().as_secs_f64();
         let work = ran.map(|(_, w)| w).unwrap_or_default();
         println!(

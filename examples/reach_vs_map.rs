@@ -124,6 +124,8 @@ fn checked(file: &str, text: &str) -> Scenario {
     };
     let registry = Registry::builtin();
     let input = Input::Text { name: file, text };
-    let (_, checked) = reach::check_within(input, &registry, &limits);
+    let (_, checked) = reach::Session::default()
+        .limits(limits)
+        .check(input, &registry);
     checked.unwrap_or_else(|d| panic!("{}", d.render(false)))
 }

@@ -22,7 +22,7 @@ use nalgebra::Point3;
 use crate::ansur::survey;
 use crate::kinematics::{Body, Chain};
 use crate::plugin::Registry;
-use crate::{Diagnostics, Input, Limits};
+use crate::{Diagnostics, Input};
 
 /// The two reaches of a body, in millimetres.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -144,7 +144,7 @@ pub fn bodies(rows: &[usize]) -> Result<Vec<Body>, Diagnostics> {
         name: "calibration.reach",
         text: &text,
     };
-    let (_, checked) = crate::check_within(input, &Registry::builtin(), &Limits::default());
+    let (_, checked) = crate::check(input, &Registry::builtin());
     checked.map(|s| s.persons.into_iter().map(|p| p.body).collect())
 }
 

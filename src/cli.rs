@@ -401,14 +401,14 @@ fn run(registry: &Registry, e: &Evaluate, shown: &Shown) -> i32 {
     };
     let limits = e.limits.limits();
     let allowed = &e.limits.allow_path;
-    let (sources, checked) =
-        reach::check_allowing(Input::Path(&e.file), registry, &limits, allowed);
+    let session = reach::Session::default().limits(limits).allowing(allowed);
+    let (sources, checked) = session.check(Input::Path(&e.file), registry);
     let scenario = match checked {
         Ok(s) => s,
         Err(d) => return shown.diagnostics(&d),
     };
     let bar = crate::bar::Bar::new(!shown.quiet);
-    let ran = reach::run_with_progress(&scenario, &bar);
+    let ran = session.progress(&bar).run(&scenario).map(|ran| ran.report);
     bar.clear();
     let report = match ran {
         Ok(report) => report,
@@ -490,8 +490,10 @@ fn unknown_format(registry: &Registry, format: &str) -> i32 {
 
 fn check(registry: &Registry, args: &LimitArgs, file: &Path, shown: &Shown) -> i32 {
     let limits = args.limits();
-    let (_, checked) =
-        reach::check_allowing(Input::Path(file), registry, &limits, &args.allow_path);
+    let session = reach::Session::default()
+        .limits(limits)
+        .allowing(&args.allow_path);
+    let (_, checked) = session.check(Input::Path(file), registry);
     match checked {
         Ok(_) if shown.quiet => 0,
         Ok(s) => {

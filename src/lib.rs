@@ -6,6 +6,8 @@
 //! validates plugin options against the plugins of a [`plugin::Registry`]
 //! and configures them into a [`scenario::Scenario`]; [`run`] runs its
 //! tasks into a [`report::Report`], which an output format renders.
+//! [`Session`] checks and runs with limits, progress and a number of
+//! threads of its own.
 //!
 //! ```no_run
 //! let registry = reach::plugin::Registry::builtin();
@@ -72,67 +74,135 @@ use report::Report;
 use scenario::Scenario;
 use source::Sources;
 
-/// Load and check a scenario within the default [`Limits`]. The sources
-/// come back either way, so that a
-/// caller can show or watch the files; the diagnostics are ready to render.
-pub fn check(input: Input<'_>, registry: &Registry) -> (Sources, Result<Scenario, Diagnostics>) {
-    check_within(input, registry, &Limits::default())
+/// How scenarios are checked and run: the limits, the directories files
+/// may be read from besides each root's own (`--allow-path`; see
+/// [`read`]), what long tasks (maps) tell their progress to, and how many
+/// threads run the tasks. `Session::default()` has the defaults:
+/// [`Limits::default`], no other directory, no progress, rayon's global
+/// pool.
+///
+/// ```no_run
+/// let registry = reach::plugin::Registry::builtin();
+/// let session = reach::Session::default().threads(2);
+/// let (_sources, checked) = session.check(reach::Input::Path("kitchen.reach".as_ref()), &registry);
+/// if let Ok(scenario) = checked {
+///     let ran = session.run(&scenario).expect("within the bound on solver work");
+///     println!("{} answers, {} units of work", ran.report.tasks.len(), ran.work);
+/// }
+/// ```
+#[derive(Clone, Copy)]
+pub struct Session<'a> {
+    limits: Limits,
+    also_allowed: &'a [std::path::PathBuf],
+    progress: &'a dyn progress::Progress,
+    threads: Option<usize>,
 }
 
-/// [`check`] against `limits` instead of the default ones.
-pub fn check_within(
-    input: Input<'_>,
-    registry: &Registry,
-    limits: &Limits,
-) -> (Sources, Result<Scenario, Diagnostics>) {
-    check_allowing(input, registry, limits, &[])
-}
-
-/// [`check_within`], reading files from the directories in `also_allowed`
-/// as well as the root's own (`--allow-path`; see [`read`]).
-pub fn check_allowing(
-    input: Input<'_>,
-    registry: &Registry,
-    limits: &Limits,
-    also_allowed: &[std::path::PathBuf],
-) -> (Sources, Result<Scenario, Diagnostics>) {
-    let _suggestions = names::fresh_budget();
-    let (mut sources, loaded) = loader::load(input, limits, also_allowed);
-    let result = loaded.and_then(|files| {
-        let (data_files, checked) = check::check(&sources, &files, registry, limits);
-        sources.add_data_files(data_files);
-        checked
-    });
-    let result = result.map_err(|d| d.attach(&sources));
-    (sources, result)
-}
-
-/// Run every task of a checked scenario, in parallel; the report lists them
-/// in the order of the file whatever the number of threads. An error where
-/// the solvers needed more work than the scenario's bound
-/// ([`Limits::solver_work`]; no answer is given, since some were cut short).
-pub fn run(scenario: &Scenario) -> Result<Report, Error> {
-    run_with_progress(scenario, &progress::NoProgress)
-}
-
-/// [`run`], telling `progress` how long tasks (maps) advance.
-pub fn run_with_progress(
-    scenario: &Scenario,
-    progress: &dyn progress::Progress,
-) -> Result<Report, Error> {
-    run_counting(scenario, progress).map(|(report, _)| report)
-}
-
-/// [`run_with_progress`], and the work its solvers did, in the units of
+/// A run's report and the work its solvers did, in the units of
 /// [`meter`]: the same on every run and thread count.
-pub fn run_counting(
-    scenario: &Scenario,
-    progress: &dyn progress::Progress,
-) -> Result<(Report, u64), Error> {
+#[derive(Clone, Debug)]
+pub struct Ran {
+    pub report: Report,
+    pub work: u64,
+}
+
+impl Default for Session<'_> {
+    fn default() -> Self {
+        Session {
+            limits: Limits::default(),
+            also_allowed: &[],
+            progress: &progress::NoProgress,
+            threads: None,
+        }
+    }
+}
+
+impl<'a> Session<'a> {
+    /// Checking and running within `limits`.
+    pub fn limits(self, limits: Limits) -> Self {
+        Session { limits, ..self }
+    }
+
+    /// Reading files from the directories in `also_allowed` as well as
+    /// each root's own.
+    pub fn allowing(self, also_allowed: &'a [std::path::PathBuf]) -> Self {
+        Session {
+            also_allowed,
+            ..self
+        }
+    }
+
+    /// Telling `progress` how long tasks advance.
+    pub fn progress(self, progress: &'a dyn progress::Progress) -> Self {
+        Session { progress, ..self }
+    }
+
+    /// Running the tasks on a pool of `threads` threads (at least 1) of
+    /// their own; the answers are the same on every number.
+    pub fn threads(self, threads: usize) -> Self {
+        Session {
+            threads: Some(threads.max(1)),
+            ..self
+        }
+    }
+
+    /// Load and check a scenario against `registry`'s plugins. The sources
+    /// come back either way, so that a caller can show or watch the files;
+    /// the diagnostics are ready to render.
+    pub fn check(
+        &self,
+        input: Input<'_>,
+        registry: &Registry,
+    ) -> (Sources, Result<Scenario, Diagnostics>) {
+        let _suggestions = names::fresh_budget();
+        let (mut sources, loaded) = loader::load(input, &self.limits, self.also_allowed);
+        let result = loaded.and_then(|files| {
+            let checked = check::check(&sources, &files, registry, &self.limits);
+            let (data_files, checked) = checked;
+            sources.add_data_files(data_files);
+            checked
+        });
+        let result = result.map_err(|d| d.attach(&sources));
+        (sources, result)
+    }
+
+    /// Run every task of a checked scenario, in parallel; the report lists
+    /// them in the order of the file whatever the number of threads. An
+    /// error where the solvers needed more work than the scenario's bound
+    /// ([`Limits::solver_work`]; no answer is given, since some were cut
+    /// short).
+    pub fn run(&self, scenario: &Scenario) -> Result<Ran, Error> {
+        let pool = self
+            .threads
+            .and_then(|n| rayon::ThreadPoolBuilder::new().num_threads(n).build().ok());
+        match pool {
+            Some(pool) => pool.install(|| run_on_this_pool(scenario, self.progress)),
+            // Without a pool of its own (none asked for, or the system
+            // gave none), on rayon's global one: the same answers.
+            None => run_on_this_pool(scenario, self.progress),
+        }
+    }
+}
+
+/// Load and check a scenario with `registry`'s plugins and the defaults
+/// ([`Session`] for other limits and directories).
+pub fn check(input: Input<'_>, registry: &Registry) -> (Sources, Result<Scenario, Diagnostics>) {
+    Session::default().check(input, registry)
+}
+
+/// Run every task of a checked scenario with the defaults ([`Session::run`]).
+pub fn run(scenario: &Scenario) -> Result<Report, Error> {
+    run_on_this_pool(scenario, &progress::NoProgress).map(|ran| ran.report)
+}
+
+fn run_on_this_pool(scenario: &Scenario, progress: &dyn progress::Progress) -> Result<Ran, Error> {
     let all: Vec<&scenario::TaskSpec> = scenario.tasks.iter().collect();
     let ran = scenario.run_tasks(&all, progress)?;
     let work: u64 = ran.iter().map(|r| r.work).sum();
     let tasks = ran.into_iter().map(|r| r.report).collect();
     let (report, standards) = scenario.report(tasks, work)?;
-    Ok((report, work + standards))
+    Ok(Ran {
+        report,
+        work: work + standards,
+    })
 }

@@ -77,7 +77,7 @@ impl Default for Limits {
 
 /// The largest value each limit may be raised to: the command line parses
 /// on a 64 MiB stack, and tests/cli.rs checks input at every ceiling there
-/// (a program calling [`crate::check_within`] on a smaller stack should
+/// (a program calling [`crate::Session`] on a smaller stack should
 /// keep to the defaults).
 pub const CEILINGS: Limits = Limits {
     file_bytes: 1 << 30,

@@ -131,12 +131,10 @@ impl State {
     ) -> (Vec<PathBuf>, String) {
         let started = Instant::now();
         self.evaluations += 1;
-        let (sources, checked) = reach::check_allowing(
-            Input::Path(file),
-            registry,
-            &self.limits,
-            &self.also_allowed,
-        );
+        let session = reach::Session::default()
+            .limits(self.limits)
+            .allowing(&self.also_allowed);
+        let (sources, checked) = session.check(Input::Path(file), registry);
         let mut screen = String::new();
         // A run past the bound on solver work is an error like the others.
         let ran = checked.and_then(|scenario| {

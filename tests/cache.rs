@@ -177,7 +177,7 @@ proptest! {
             room.apply(e);
             let Some(s) = checked(&room.text()) else { continue };
             let (cached, stats) = cache.run(&s, &NoProgress).expect("within the bound on solver work");
-            let (fresh, work) = reach::run_counting(&s, &NoProgress).expect("within the bound on solver work");
+            let (fresh, work) = reach::Session::default().run(&s).map(|ran| (ran.report, ran.work)).expect("within the bound on solver work");
             prop_assert_eq!(json(&cached), json(&fresh), "after {:?}", e);
             // Its work too, which the bound on solver work counts.
             prop_assert_eq!(stats.work, work, "after {:?}", e);
@@ -414,11 +414,16 @@ fn answers_reused_count_their_work_against_the_bound() {
             name: "cache.reach",
             text,
         };
-        reach::check_within(input, &Registry::builtin(), &limits)
+        reach::Session::default()
+            .limits(limits)
+            .check(input, &Registry::builtin())
             .1
             .expect("the scenario checks")
     };
-    let (_, work) = reach::run_counting(&within(u64::MAX / 2), &NoProgress).unwrap();
+    let (_, work) = reach::Session::default()
+        .run(&within(u64::MAX / 2))
+        .map(|ran| (ran.report, ran.work))
+        .unwrap();
     let mut cache = TaskCache::default();
     let (_, stats) = cache.run(&within(work), &NoProgress).unwrap();
     assert_eq!((stats.ran, stats.work), (2, work));
@@ -451,7 +456,10 @@ fn answers_kept_across_many_more_obstacles_count_a_fresh_runs_work() {
     for far_boxes in [10, 20, 300, 10] {
         let s = checked(&text(far_boxes)).unwrap();
         let (_, stats) = cache.run(&s, &NoProgress).unwrap();
-        let (_, work) = reach::run_counting(&s, &NoProgress).unwrap();
+        let (_, work) = reach::Session::default()
+            .run(&s)
+            .map(|ran| (ran.report, ran.work))
+            .unwrap();
         assert_eq!(stats.work, work, "{far_boxes} far boxes");
     }
 }
@@ -507,7 +515,7 @@ proptest! {
             board = [board[0] + dx, board[1] + dy, board[2] + dz];
             let Some(s) = checked(&hung_board(board, depth, wheelchair)) else { continue };
             let (cached, stats) = cache.run(&s, &NoProgress).expect("within the bound on solver work");
-            let (fresh, work) = reach::run_counting(&s, &NoProgress).expect("within the bound on solver work");
+            let (fresh, work) = reach::Session::default().run(&s).map(|ran| (ran.report, ran.work)).expect("within the bound on solver work");
             prop_assert_eq!(json(&cached), json(&fresh), "board at {:?}", board);
             prop_assert_eq!(stats.work, work, "board at {:?}", board);
         }
@@ -529,7 +537,10 @@ fn each_cached_is_fresh(files: &[(&str, &str)], texts: &[String]) -> Result<(), 
         let (_, checked) = reach::check(Input::Path(&path), &Registry::builtin());
         let Ok(scenario) = checked else { continue };
         let (cached, stats) = cache.run(&scenario, &NoProgress).expect("within the bound");
-        let (fresh, work) = reach::run_counting(&scenario, &NoProgress).expect("within the bound");
+        let (fresh, work) = reach::Session::default()
+            .run(&scenario)
+            .map(|ran| (ran.report, ran.work))
+            .expect("within the bound");
         prop_assert_eq!(json(&cached), json(&fresh), "{}", text);
         prop_assert_eq!(stats.work, work, "{}", text);
     }

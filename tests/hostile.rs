@@ -168,7 +168,7 @@ proptest! {
         // gazes included; beyond it a case is refused, which is tested too.
         let limits = Limits { solver_starts: 2_000, ..Limits::default() };
         let input = Input::Text { name: "mutated.reach", text: &text };
-        let (sources, checked) = reach::check_within(input, &registry, &limits);
+        let (sources, checked) = reach::Session::default().limits(limits).check(input, &registry);
         match checked {
             Err(diagnostics) => {
                 for e in &diagnostics.errors {
@@ -967,15 +967,12 @@ fn metered_run_of(input: Input<'_>, limit: u64, threads: usize) -> Result<u64, r
         solver_work: limit,
         ..Limits::default()
     };
-    let scenario = reach::check_within(input, &registry, &limits)
+    let session = reach::Session::default().limits(limits).threads(threads);
+    let scenario = session
+        .check(input, &registry)
         .1
         .expect("the scenario checks");
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(threads)
-        .build()
-        .expect("a pool");
-    pool.install(|| reach::run_counting(&scenario, &reach::progress::NoProgress))
-        .map(|(_, work)| work)
+    session.run(&scenario).map(|ran| ran.work)
 }
 
 /// The work of a run is a sum that does not depend on the threads, so a
@@ -1051,10 +1048,10 @@ fn routes_from_a_door_count_towards_the_bound_and_a_run_cut_short_keeps_nothing(
         name: "door.reach",
         text: &text,
     };
-    let scenario = reach::check_within(input, &registry, &Limits::default())
+    let scenario = reach::check(input, &registry)
         .1
         .expect("the scenario checks");
-    let (report, _) = reach::run_counting(&scenario, &reach::progress::NoProgress).expect("runs");
+    let report = reach::run(&scenario).expect("runs");
     let json = serde_json::to_value(&report).expect("a report is JSON");
     assert_eq!(json["tasks"][0]["ok"], true, "{json}");
 }

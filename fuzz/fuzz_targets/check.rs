@@ -13,8 +13,8 @@ fuzz_target!(|data: &[u8]| {
     let Ok(text) = std::str::from_utf8(data) else { return };
     let registry = Registry::builtin();
     let limits = Limits { solver_starts: 2_000, ..Limits::default() };
-    let (sources, checked) =
-        reach::check_within(Input::Text { name: "fuzz.reach", text }, &registry, &limits);
+    let input = Input::Text { name: "fuzz.reach", text };
+    let (sources, checked) = reach::Session::default().limits(limits).check(input, &registry);
     match checked {
         Err(diagnostics) => {
             for e in &diagnostics.errors {

@@ -18,7 +18,7 @@ pub fn check_with(file: &str, data: &[u8], name: &str, scenario: &str) {
         ..Limits::default()
     };
     let input = Input::Text { name, text: scenario };
-    let (_, checked) = reach::check_within(input, &registry, &limits);
+    let (_, checked) = reach::Session::default().limits(limits).check(input, &registry);
     match checked {
         Err(diagnostics) => {
             let _ = diagnostics.render(true);

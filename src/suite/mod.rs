@@ -159,12 +159,10 @@ fn run_one(
         expectations: Vec::new(),
         golden: Golden::Absent,
     };
-    let (sources, checked) = crate::check_allowing(
-        Input::Path(path),
-        registry,
-        &options.limits,
-        &options.allowed,
-    );
+    let session = crate::Session::default()
+        .limits(options.limits)
+        .allowing(&options.allowed);
+    let (sources, checked) = session.check(Input::Path(path), registry);
     let used = sources.disk_paths();
     let scenario = match checked {
         Ok(s) => s,
