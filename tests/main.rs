@@ -11,6 +11,7 @@ mod calibration;
 mod checker;
 mod cli;
 mod docs_picture;
+mod docs_tables;
 mod ecosystem;
 mod gaze;
 mod golden;

@@ -130,4 +130,37 @@ impl Registry {
     pub fn names(&self, kind: PluginKind) -> Vec<&'static str> {
         self.of_kind(kind).into_iter().map(|p| p.name()).collect()
     }
+
+    /// Every plugin as a row of a Markdown table (kind, name, what it
+    /// does, its options with their defaults), from the plugins' own
+    /// declarations: the table of docs/language.md.
+    pub fn markdown_table(&self) -> String {
+        let mut out = String::from("| kind | name | what | options |\n|---|---|---|---|\n");
+        for kind in PluginKind::ALL {
+            for p in self.of_kind(kind) {
+                let options: Vec<String> = p.params().iter().map(option_words).collect();
+                let options = match options.is_empty() {
+                    true => "none".to_string(),
+                    false => options.join(", "),
+                };
+                let doc = p.doc().replace('|', "\\|");
+                out.push_str(&format!(
+                    "| {} | `{}` | {doc} | {options} |\n",
+                    kind.noun(),
+                    p.name()
+                ));
+            }
+        }
+        out
+    }
+}
+
+/// An option in a table's words: `` `tolerance` 10mm ``, `` `at` (required) ``.
+fn option_words(param: &ParamSpec) -> String {
+    let value = match &param.default {
+        Some(v) => v.display(),
+        None if param.optional => "(optional)".to_string(),
+        None => "(required)".to_string(),
+    };
+    format!("`{}` {}", param.name, value.replace('|', "\\|"))
 }
