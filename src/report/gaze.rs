@@ -6,9 +6,11 @@ use std::fmt::Write;
 use nalgebra::Point3;
 use serde::Serialize;
 
+use super::entry_kind::{ok_words, placed_answer_changes, Asks, EntryKind, Tolerance};
 use super::parts::{point, COMFORT_TOLERANCE, DISTANCE_TOLERANCE_MM};
 use super::{deg, fixed, mm, Answer, Asked, BaseReport, Figure, Posture, ReportKind};
 use crate::scene::Placement;
+use serde_json::Value;
 
 /// Whether the person sees a target well enough to use it, and if not,
 /// why.
@@ -157,5 +159,24 @@ impl ReportKind for GazeReport {
             let _ = writeln!(out, "  the line of sight meets `{obstacle}`");
         }
         self.posture.write_line(out);
+    }
+}
+
+impl EntryKind for GazeReport {
+    fn asks(entry: &Value) -> Asks {
+        Asks::by_name("gaze", entry, "person")
+    }
+    fn verdict_words(entry: &Value) -> String {
+        ok_words(entry, "visible")
+    }
+    fn changes(
+        old: &Value,
+        new: &Value,
+        answer: &Answer,
+        who: &str,
+        tol: Tolerance,
+    ) -> Vec<String> {
+        let words = Self::verdict_words(old);
+        placed_answer_changes((old, new), answer, who, &words, tol)
     }
 }

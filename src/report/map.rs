@@ -6,10 +6,12 @@ use std::fmt::Write;
 use nalgebra::Vector3;
 use serde::Serialize;
 
+use super::entry_kind::{text, Asks, EntryKind, Tolerance};
 use super::parts::point;
 use super::{deg, fixed, mm, Answer, Figure, ReportKind, Why};
 use crate::kinematics::Chain;
 use crate::scene::{Grid, GridCell, Person, Placement, Surface};
+use serde_json::Value;
 
 /// How much a map's share may move (percentage points) before its answer
 /// counts as changed.
@@ -327,6 +329,16 @@ impl ReportKind for MapReport {
             let _ = writeln!(out, "  not reached: {}", listed.join("; "));
         }
     }
+
+    fn coverage(&self) -> Option<(f64, String)> {
+        let words = format!(
+            "covers {:.1} % ({} of {} points)",
+            self.fraction * 100.0,
+            self.reachable,
+            self.points
+        );
+        Some((self.fraction, words))
+    }
 }
 
 impl MapReport {
@@ -351,4 +363,84 @@ fn points(n: usize) -> String {
     } else {
         format!("{n} points")
     }
+}
+
+impl EntryKind for MapReport {
+    /// A gaze map's task is `gaze_map`.
+    fn asks(entry: &Value) -> Asks {
+        let task = if text(entry, "of") == "gaze" {
+            "gaze_map"
+        } else {
+            "map"
+        };
+        Asks::by_name(task, entry, "person")
+    }
+    fn verdict_words(entry: &Value) -> String {
+        format!("{:.1} %", entry["fraction"].as_f64().unwrap_or(0.0) * 100.0)
+    }
+    /// The points that flipped.
+    fn changes(old: &Value, new: &Value, _: &Answer, who: &str, _: Tolerance) -> Vec<String> {
+        let (was, now) = (reached_cells(old), reached_cells(new));
+        if was.len() != now.len() {
+            return vec![format!(
+                "{who}: the map has {} points, was {}",
+                now.len(),
+                was.len()
+            )];
+        }
+        let lost: Vec<&str> = (was.iter().zip(&now))
+            .filter(|(w, n)| w.1 && !n.1)
+            .map(|(w, _)| w.0.as_str())
+            .collect();
+        let gained: Vec<&str> = (was.iter().zip(&now))
+            .filter(|(w, n)| !w.1 && n.1)
+            .map(|(w, _)| w.0.as_str())
+            .collect();
+        let mut changes = Vec::new();
+        for (points, word) in [(&lost, "no longer reached"), (&gained, "newly reached")] {
+            if !points.is_empty() {
+                changes.push(format!(
+                    "{who}: {} {word}: {}{}",
+                    match points.len() {
+                        1 => "1 point".to_string(),
+                        n => format!("{n} points"),
+                    },
+                    points
+                        .iter()
+                        .take(4)
+                        .cloned()
+                        .collect::<Vec<_>>()
+                        .join(", "),
+                    if points.len() > 4 { ", ..." } else { "" }
+                ));
+            }
+        }
+        changes
+    }
+}
+
+/// A map entry's points in words, each with whether it was reached.
+fn reached_cells(entry: &Value) -> Vec<(String, bool)> {
+    entry["cells"]
+        .as_array()
+        .map(|cells| {
+            cells
+                .iter()
+                .map(|c| {
+                    (
+                        point_words(&c["point_mm"]),
+                        c["reachable"].as_bool() == Some(true),
+                    )
+                })
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+/// A map point's JSON `[x, y, z]` as "(x, y, z) mm".
+fn point_words(point: &Value) -> String {
+    let xyz: Vec<String> = (point.as_array().into_iter().flatten())
+        .map(|c| format!("{:.0}", c.as_f64().unwrap_or(f64::NAN)))
+        .collect();
+    format!("({}) mm", xyz.join(", "))
 }

@@ -11,6 +11,7 @@
 //! writes, tagged by kind.
 
 mod answer;
+mod entry_kind;
 mod expectation;
 mod gaze;
 mod map;
@@ -24,6 +25,7 @@ mod standard;
 mod why;
 
 pub use answer::{Answer, Figure};
+pub use entry_kind::{Asks, EntryKind, Kind, Tolerance};
 pub use expectation::ExpectationReport;
 pub use gaze::{GazeReport, Sight};
 pub use map::{cells_apart, MapCell, MapReport};
@@ -97,6 +99,26 @@ pub trait ReportKind {
     fn answer(&self) -> Answer;
     /// The lines the text report prints after its table.
     fn details(&self, out: &mut String);
+    /// The answer `expect ... reaches` measures (`sees`: `expect ...
+    /// sees`): the entry's own, or a part of it.
+    fn answer_of(&self, sees: bool) -> Answer {
+        let _ = sees;
+        self.answer()
+    }
+    /// How much of its points the entry covers (0 to 1), in words, for
+    /// `expect ... covers`: none where it has no points.
+    fn coverage(&self) -> Option<(f64, String)> {
+        None
+    }
+    /// The share of a population it accommodates, for `expect ... share`.
+    fn share(&self) -> Option<f64> {
+        None
+    }
+    /// Whether every rule holds, and in words which fail, for `expect ...
+    /// meets`: none where it checks no rules.
+    fn rules_met(&self) -> Option<(bool, String)> {
+        None
+    }
 }
 
 impl TaskReport {
@@ -118,6 +140,26 @@ impl TaskReport {
 
     pub fn details(&self, out: &mut String) {
         self.kind_report().details(out)
+    }
+
+    /// [`ReportKind::answer_of`].
+    pub fn answer_of(&self, sees: bool) -> Answer {
+        self.kind_report().answer_of(sees)
+    }
+
+    /// [`ReportKind::coverage`].
+    pub fn coverage(&self) -> Option<(f64, String)> {
+        self.kind_report().coverage()
+    }
+
+    /// [`ReportKind::share`].
+    pub fn share(&self) -> Option<f64> {
+        self.kind_report().share()
+    }
+
+    /// [`ReportKind::rules_met`].
+    pub fn rules_met(&self) -> Option<(bool, String)> {
+        self.kind_report().rules_met()
     }
 
     /// The map, for a map or a gaze map (its points have files of their own).

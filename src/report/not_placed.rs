@@ -9,9 +9,11 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
+use super::entry_kind::{text, Asks, EntryKind, Tolerance};
 use super::reach::quoted;
 use super::{fixed, mm, Answer, Figure, ReportKind};
 use crate::floor::{Entry, Misfit, Shut};
+use serde_json::Value;
 
 /// A task not tried because the person's base fits nowhere.
 #[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
@@ -218,5 +220,20 @@ impl NotPlacedReport {
             };
             let _ = writeln!(out, "  door {}: {how}", quoted(&d.name));
         }
+    }
+}
+
+impl EntryKind for NotPlacedReport {
+    fn asks(entry: &Value) -> Asks {
+        Asks::by_name(text(entry, "task"), entry, "person")
+    }
+    fn verdict_words(_: &Value) -> String {
+        "does NOT fit (or cannot get in)".into()
+    }
+    fn changes(old: &Value, new: &Value, answer: &Answer, who: &str, _: Tolerance) -> Vec<String> {
+        if old["fits_at"] != new["fits_at"] || old["doors"] != new["doors"] {
+            return vec![format!("{who}: {}", answer.verdict)];
+        }
+        Vec::new()
     }
 }

@@ -8,8 +8,10 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
+use super::entry_kind::{text, Asks, EntryKind, Tolerance};
 use super::{fixed, mm, Answer, Figure, MapReport, ReportKind, TaskReport};
 use crate::scene::{Drawn, Population};
+use serde_json::Value;
 
 /// One task by a population.
 #[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
@@ -337,6 +339,64 @@ impl ReportKind for PopulationReport {
                 self.excluded.len() - SHOWN
             );
         }
+    }
+
+    /// The mean of its map's points' shares (none: 0).
+    fn coverage(&self) -> Option<(f64, String)> {
+        let cells = self.cells.as_deref().unwrap_or_default();
+        let mean = cells.iter().map(|c| c.share).sum::<f64>() / cells.len().max(1) as f64;
+        let mean = fixed(mean, 4);
+        let words = format!(
+            "covers {:.1} % (the mean of its points' shares)",
+            mean * 100.0
+        );
+        Some((mean, words))
+    }
+
+    fn share(&self) -> Option<f64> {
+        Some(self.share)
+    }
+}
+
+impl EntryKind for PopulationReport {
+    fn asks(entry: &Value) -> Asks {
+        Asks::by_name(text(entry, "task"), entry, "population")
+    }
+    fn verdict_words(entry: &Value) -> String {
+        format!("{:.1} %", entry["share"].as_f64().unwrap_or(0.0) * 100.0)
+    }
+    /// Its share, its map's shares, and who it leaves out.
+    fn changes(old: &Value, new: &Value, _: &Answer, who: &str, _: Tolerance) -> Vec<String> {
+        let mut changes = Vec::new();
+        if old["accommodated"] != new["accommodated"] || old["people"] != new["people"] {
+            changes.push(format!(
+                "{who}: accommodates {} of {} (was {} of {})",
+                new["accommodated"], new["people"], old["accommodated"], old["people"]
+            ));
+        }
+        let out = |v: &Value| -> Vec<String> {
+            v["excluded"]
+                .as_array()
+                .map(|e| e.iter().map(|x| text(x, "person")).collect())
+                .unwrap_or_default()
+        };
+        if changes.is_empty() && out(old) != out(new) {
+            changes.push(format!("{who}: leaves out other people"));
+        }
+        let shares = |v: &Value| -> Vec<Value> {
+            v["cells"]
+                .as_array()
+                .map(|c| c.iter().map(|x| x["reached"].clone()).collect())
+                .unwrap_or_default()
+        };
+        let (was, now) = (shares(old), shares(new));
+        let flipped = was.iter().zip(&now).filter(|(a, b)| a != b).count();
+        if flipped > 0 || was.len() != now.len() {
+            changes.push(format!(
+                "{who}: {flipped} of the map's points reached by another number of people"
+            ));
+        }
+        changes
     }
 }
 

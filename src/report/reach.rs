@@ -6,9 +6,11 @@ use std::fmt::Write;
 use nalgebra::Point3;
 use serde::Serialize;
 
+use super::entry_kind::{ok_words, placed_answer_changes, Asks, EntryKind, Tolerance};
 use super::parts::{point, COMFORT_TOLERANCE, DISTANCE_TOLERANCE_MM};
 use super::{fixed, mm, Answer, Asked, BaseReport, Figure, Posture, ReportKind, Why};
 use crate::scene::Placement;
+use serde_json::Value;
 
 #[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct ReachReport {
@@ -145,5 +147,24 @@ pub fn quoted(what: &str) -> String {
         what.to_string()
     } else {
         format!("`{what}`")
+    }
+}
+
+impl EntryKind for ReachReport {
+    fn asks(entry: &Value) -> Asks {
+        Asks::by_name("reach", entry, "person")
+    }
+    fn verdict_words(entry: &Value) -> String {
+        ok_words(entry, "reachable")
+    }
+    fn changes(
+        old: &Value,
+        new: &Value,
+        answer: &Answer,
+        who: &str,
+        tol: Tolerance,
+    ) -> Vec<String> {
+        let words = Self::verdict_words(old);
+        placed_answer_changes((old, new), answer, who, &words, tol)
     }
 }

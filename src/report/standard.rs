@@ -8,8 +8,10 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
+use super::entry_kind::{text, Asks, EntryKind, Tolerance};
 use super::reach::quoted;
 use super::{Answer, Figure, ReportKind};
+use serde_json::Value;
 
 /// A room checked against a standard.
 #[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
@@ -158,4 +160,97 @@ impl ReportKind for StandardReport {
             }
         }
     }
+
+    /// The first three failing rules, and how many more.
+    fn rules_met(&self) -> Option<(bool, String)> {
+        if self.ok {
+            return Some((true, self.answer().verdict));
+        }
+        let failing: Vec<String> = (self.room_rules.iter().map(|r| (r, None)))
+            .chain(
+                (self.elements.iter())
+                    .flat_map(|e| e.rules.iter().map(move |r| (r, Some(e.name.as_str())))),
+            )
+            .filter(|(r, _)| !r.ok)
+            .map(|(r, element)| match element {
+                Some(e) => format!("{} {} at `{e}`", r.section, r.rule),
+                None => format!("{} {}", r.section, r.rule),
+            })
+            .collect();
+        let shown = failing
+            .iter()
+            .take(3)
+            .cloned()
+            .collect::<Vec<_>>()
+            .join("; ");
+        let more = match failing.len() {
+            n if n > 3 => format!("; and {} more", n - 3),
+            _ => String::new(),
+        };
+        let words = format!(
+            "{} of {} checks FAIL: {shown}{more}",
+            self.failed, self.checks
+        );
+        Some((false, words))
+    }
+}
+
+impl EntryKind for StandardReport {
+    fn asks(entry: &Value) -> Asks {
+        Asks {
+            task: "standard".into(),
+            subject: text(entry, "standard"),
+            who: text(entry, "room"),
+        }
+    }
+    fn verdict_words(entry: &Value) -> String {
+        let ok = entry["ok"].as_bool().unwrap_or(false);
+        if ok { "every rule holds" } else { "rules FAIL" }.into()
+    }
+    /// The rules that flipped, and those newly checked.
+    fn changes(old: &Value, new: &Value, _: &Answer, who: &str, _: Tolerance) -> Vec<String> {
+        let (was, now) = (rules_of(old), rules_of(new));
+        let mut changes = Vec::new();
+        for (rule, ok) in &now {
+            match was.iter().find(|(r, _)| r == rule) {
+                Some((_, was_ok)) if was_ok != ok => changes.push(format!(
+                    "{who}: {rule} {} -> {}",
+                    if *was_ok { "holds" } else { "FAILS" },
+                    if *ok { "holds" } else { "FAILS" }
+                )),
+                None => changes.push(format!("{who}: {rule} newly checked")),
+                _ => {}
+            }
+        }
+        changes
+    }
+}
+
+/// A standard entry's rules in words, each with whether it holds.
+fn rules_of(entry: &Value) -> Vec<(String, bool)> {
+    let room = entry["room_rules"].as_array().cloned().unwrap_or_default();
+    let elements = entry["elements"].as_array().cloned().unwrap_or_default();
+    let of_elements = elements.iter().flat_map(|e| {
+        let name = text(e, "name");
+        e["rules"]
+            .as_array()
+            .cloned()
+            .unwrap_or_default()
+            .into_iter()
+            .map(move |r| {
+                (
+                    format!("{} at `{name}`", text(&r, "section")),
+                    r["ok"] == true,
+                )
+            })
+    });
+    room.iter()
+        .map(|r| {
+            (
+                format!("{} {}", text(r, "section"), text(r, "rule")),
+                r["ok"] == true,
+            )
+        })
+        .chain(of_elements)
+        .collect()
 }

@@ -2,7 +2,7 @@
 //! entries they are about, and judged against a run's answers.
 
 use super::Scenario;
-use crate::report::{fixed, ExpectationReport, Figure, ReportKind, TaskReport};
+use crate::report::{ExpectationReport, Figure, TaskReport};
 use crate::syntax::ast::Comparison;
 
 /// One `expect`, resolved.
@@ -72,10 +72,7 @@ impl ExpectSpec {
                 comparison,
                 bound,
             } => all(entries, reports, |r| {
-                let value = match r {
-                    TaskReport::Population(p) => p.share,
-                    _ => 0.0,
-                };
+                let value = r.share().unwrap_or(0.0);
                 (comparison.holds(value, *bound), r.answer().verdict)
             }),
             ExpectCheck::Meets { entries } => all(entries, reports, meets),
@@ -113,11 +110,7 @@ fn all(
 /// Whether `report` reaches (or sees) its target as `wanted`, and its
 /// verdict with the distance left.
 fn answered(report: &TaskReport, sees: bool, wanted: bool) -> (bool, String) {
-    let answer = match (report, sees) {
-        (TaskReport::ReachAndGaze(rg), false) => rg.reach.answer(),
-        (TaskReport::ReachAndGaze(rg), true) => rg.gaze.answer(),
-        _ => report.answer(),
-    };
+    let answer = report.answer_of(sees);
     // How far short, where it is not reached (or seen).
     let words = match answer.figure("distance") {
         Some(Figure { value, .. }) if !answer.ok && value.is_finite() => {
@@ -128,69 +121,18 @@ fn answered(report: &TaskReport, sees: bool, wanted: bool) -> (bool, String) {
     (answer.ok == wanted, words)
 }
 
-/// How much a map covers (0 to 1), in words.
+/// How much a map covers (0 to 1), in words (an entry with no points:
+/// nothing, and its verdict).
 fn covers(report: &TaskReport) -> (f64, String) {
-    match report {
-        TaskReport::Map(m) => (
-            m.fraction,
-            format!(
-                "covers {:.1} % ({} of {} points)",
-                m.fraction * 100.0,
-                m.reachable,
-                m.points
-            ),
-        ),
-        TaskReport::Population(p) => {
-            let cells = p.cells.as_deref().unwrap_or_default();
-            let mean = cells.iter().map(|c| c.share).sum::<f64>() / cells.len().max(1) as f64;
-            let mean = fixed(mean, 4);
-            (
-                mean,
-                format!(
-                    "covers {:.1} % (the mean of its points' shares)",
-                    mean * 100.0
-                ),
-            )
-        }
-        other => (0.0, other.answer().verdict),
-    }
+    report
+        .coverage()
+        .unwrap_or_else(|| (0.0, report.answer().verdict))
 }
 
-/// Whether a standard's rules all hold, and which fail.
+/// Whether a standard's rules all hold, and which fail (an entry with no
+/// rules: not, and its verdict).
 fn meets(report: &TaskReport) -> (bool, String) {
-    let TaskReport::Standard(s) = report else {
-        return (false, report.answer().verdict);
-    };
-    if s.ok {
-        return (true, s.answer().verdict);
-    }
-    let failing: Vec<String> = s
-        .room_rules
-        .iter()
-        .map(|r| (r, None))
-        .chain(
-            s.elements
-                .iter()
-                .flat_map(|e| e.rules.iter().map(move |r| (r, Some(e.name.as_str())))),
-        )
-        .filter(|(r, _)| !r.ok)
-        .map(|(r, element)| match element {
-            Some(e) => format!("{} {} at `{e}`", r.section, r.rule),
-            None => format!("{} {}", r.section, r.rule),
-        })
-        .collect();
-    let shown = failing
-        .iter()
-        .take(3)
-        .cloned()
-        .collect::<Vec<_>>()
-        .join("; ");
-    let more = match failing.len() {
-        n if n > 3 => format!("; and {} more", n - 3),
-        _ => String::new(),
-    };
-    (
-        false,
-        format!("{} of {} checks FAIL: {shown}{more}", s.failed, s.checks),
-    )
+    report
+        .rules_met()
+        .unwrap_or_else(|| (false, report.answer().verdict))
 }
