@@ -112,6 +112,7 @@ fn run(path: &Path) -> String {
     let report = reach::run(&scenario).expect("within the bound on solver work");
     let json = registry.format("json").expect("the json format");
     json.render(&report, &scenario.format_scene())
+        .expect("json prints")
 }
 
 /// Peak resident memory of this process, in MiB (Linux), or NaN.

@@ -141,6 +141,7 @@ fn main() {
     let text = Registry::builtin()
         .format("text")
         .expect("built in")
-        .render(&report, &scenario.format_scene());
+        .render(&report, &scenario.format_scene())
+        .expect("the text format prints");
     print!("{text}");
 }

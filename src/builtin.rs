@@ -22,6 +22,8 @@ impl Registry {
         r.register_format(crate::output::Text);
         r.register_format(crate::output::Json);
         r.register_format(crate::output::Html);
+        r.register_format(crate::output::GlbFile);
+        r.register_format(crate::output::Maps);
         r.register_standard(crate::standards::Ada2010);
         r
     }

@@ -238,6 +238,9 @@ pub fn main() -> i32 {
             let Some(formatter) = registry.format(&e.format).cloned() else {
                 return unknown_format(&registry, &e.format);
             };
+            if !formatter.prints() {
+                return unprintable_format(&registry, &e.format);
+            }
             let limits = e.limits.limits();
             crate::watch::watch(
                 &registry,
@@ -399,6 +402,9 @@ fn run(registry: &Registry, e: &Evaluate, shown: &Shown) -> i32 {
     let Some(formatter) = registry.format(&e.format) else {
         return unknown_format(registry, &e.format);
     };
+    if !formatter.prints() {
+        return unprintable_format(registry, &e.format);
+    }
     let limits = e.limits.limits();
     let allowed = &e.limits.allow_path;
     let session = reach::Session::default().limits(limits).allowing(allowed);
@@ -415,9 +421,9 @@ fn run(registry: &Registry, e: &Evaluate, shown: &Shown) -> i32 {
         Err(error) => return shown.diagnostics(&Diagnostics::single(error).attach(&sources)),
     };
     if let Some(dir) = &e.out {
-        if let Err(error) =
-            crate::signals::whole(|| reach::output::write_outputs(&report, &scenario, dir))
-        {
+        if let Err(error) = crate::signals::whole(|| {
+            reach::output::write_outputs(&report, &scenario, registry.formats(), dir)
+        }) {
             return shown.diagnostics(&Diagnostics::single(error));
         }
     }
@@ -426,6 +432,7 @@ fn run(registry: &Registry, e: &Evaluate, shown: &Shown) -> i32 {
         let _ = stdout.write_all(
             formatter
                 .render(&report, &scenario.format_scene())
+                .unwrap_or_default()
                 .as_bytes(),
         );
     }
@@ -478,6 +485,21 @@ fn run(registry: &Registry, e: &Evaluate, shown: &Shown) -> i32 {
 /// (`--strict`) a person's base fits nowhere or cannot get in: not 1,
 /// which says the input is wrong.
 const NOT_AS_EXPECTED: i32 = 3;
+
+/// A format with no text for standard output (`glb`, `maps`): a usage
+/// error, with the formats that have one.
+fn unprintable_format(registry: &Registry, format: &str) -> i32 {
+    let printing: Vec<&str> = (registry.formats().iter())
+        .filter(|f| f.prints())
+        .map(|f| f.name())
+        .collect();
+    eprintln!(
+        "error: format `{}` writes files only: `--out DIR` writes them with every other format's (formats for standard output: {})",
+        escaped(format),
+        printing.join(", ")
+    );
+    2
+}
 
 fn unknown_format(registry: &Registry, format: &str) -> i32 {
     eprintln!(

@@ -145,10 +145,11 @@ impl State {
         });
         let summary = match ran {
             Ok((scenario, (report, stats))) => {
-                screen.push_str(&formatter.render(&report, &scenario.format_scene()));
+                let text = formatter.render(&report, &scenario.format_scene());
+                screen.push_str(&text.unwrap_or_default());
                 if let Some(dir) = out {
                     let written = crate::signals::whole(|| {
-                        reach::output::write_outputs(&report, &scenario, dir)
+                        reach::output::write_outputs(&report, &scenario, registry.formats(), dir)
                     });
                     if let Err(e) = written {
                         screen.push_str(&reach::Diagnostics::single(e).render(!self.colour));

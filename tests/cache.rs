@@ -161,6 +161,7 @@ fn json(report: &reach::report::Report) -> String {
     let registry = Registry::builtin();
     let json = registry.format("json").unwrap();
     json.render(report, &reach::plugin::FormatScene::empty())
+        .expect("json prints")
 }
 
 proptest! {

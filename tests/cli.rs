@@ -205,10 +205,14 @@ fn out_dir_gets_report_json_and_nothing_half_written() {
             "report-stamp.js",
             "report.html",
             "report.json",
+            "report.txt",
             "scene.glb"
         ],
         "no temporary file is left behind"
     );
+    let text = std::fs::read(out.join("report.txt")).unwrap();
+    let printed = reach(&["run", "examples/kitchen.reach", "--format", "text"]);
+    assert_eq!(text, printed.stdout, "the text written is the text printed");
     let html = std::fs::read_to_string(out.join("report.html")).unwrap();
     let page = reach(&["run", "examples/kitchen.reach", "--format", "html"]);
     assert!(html.starts_with("<!DOCTYPE html>") && html.contains("\"live\":true"));
@@ -243,8 +247,8 @@ fn out_dir_gets_a_csv_and_an_svg_per_map() {
     let files = std::fs::read_dir(dir.path()).unwrap().count();
     assert_eq!(
         files,
-        5 + 2 * 18,
-        "report.json, report.html, its stamp, scene.glb, the list of the set and two files for each of eighteen maps"
+        6 + 2 * 18,
+        "report.txt, report.json, report.html, its stamp, scene.glb, the list of the set and two files for each of eighteen maps"
     );
 }
 
@@ -615,5 +619,21 @@ fn map_pictures_show_context_and_readable_ticks() {
                 "{step}"
             );
         }
+    }
+}
+
+/// A format with no text for standard output (`glb`, `maps`) is a usage
+/// error under `--format`, naming the formats that print, before any run.
+#[test]
+fn a_format_of_files_only_is_refused_for_standard_output() {
+    for format in ["glb", "maps"] {
+        let o = reach(&["run", "examples/kitchen.reach", "--format", format]);
+        assert_eq!(o.status.code(), Some(2), "{format}");
+        let err = stderr(&o);
+        assert!(
+            err.contains("writes files only") && err.contains("text, json, html"),
+            "{err}"
+        );
+        assert!(o.stdout.is_empty());
     }
 }

@@ -32,6 +32,7 @@ fn json_report(path: &Path) -> String {
         .format("json")
         .unwrap()
         .render(&report, &scenario.format_scene())
+        .expect("json prints")
 }
 
 fn diagnostics(path: &Path) -> String {

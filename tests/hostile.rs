@@ -660,6 +660,7 @@ fn an_output_set_has_a_file_per_map_and_is_written_whole_or_not_at_all() {
             "report-stamp.js",
             "report.html",
             "report.json",
+            "report.txt",
             "scene.glb"
         ]
     );

@@ -87,7 +87,12 @@ fn every_plugin_builds_from_its_declared_defaults() {
             tasks: Vec::new(),
             expectations: Vec::new(),
         };
-        p.render(&empty, &reach::plugin::FormatScene::empty());
+        let scene = reach::plugin::FormatScene::empty();
+        let text = p.render(&empty, &scene);
+        assert_eq!(text.is_some(), p.prints(), "format `{name}`");
+        // A format that prints writes a file of any report too.
+        let files = p.files(&empty, &scene);
+        assert!(!p.prints() || !files.is_empty(), "format `{name}`");
     }
 }
 

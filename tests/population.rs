@@ -331,7 +331,13 @@ room kitchen {
     );
     // The files: a CSV of the shares and an SVG coloured by them.
     let dir = tempfile::tempdir().unwrap();
-    reach::output::write_outputs(&report, &scenario, dir.path()).unwrap();
+    reach::output::write_outputs(
+        &report,
+        &scenario,
+        reach::plugin::Registry::builtin().formats(),
+        dir.path(),
+    )
+    .unwrap();
     let csv = std::fs::read_to_string(dir.path().join("map-front-few.csv")).unwrap();
     let mut lines = csv.lines();
     assert_eq!(

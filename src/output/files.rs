@@ -1,6 +1,7 @@
-//! What `--out DIR` writes: `DIR/report.json`, `DIR/report.html` (the 3D
-//! view, `html/`) with the stamp it polls, and, for each map, its CSV and
-//! SVG (`map_files.rs`), as one set. Every file is rendered first,
+//! What `--out DIR` writes: every format's files as one set (with the
+//! built-in formats `DIR/report.txt`, `DIR/report.json`, `DIR/report.html`
+//! (the 3D view, `html/`) with the stamp it polls, `DIR/scene.glb` and,
+//! for each map, its CSV and SVG (`maps.rs`)). Every file is rendered first,
 //! then written as a temporary beside its place (with the user's umask),
 //! and only once all are written are they put in place (`placing.rs`:
 //! renamed, undone from backups if a rename fails, journalled so that a
@@ -17,16 +18,14 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, SystemTime};
 
-use super::glb;
+use std::sync::Arc;
+
 use super::html;
 use super::journal;
-use super::map_files;
 use super::placing;
-use super::view::view_data;
-use super::Json;
 use crate::error::{Error, ErrorKind};
 use crate::plugin::FormatPlugin;
-use crate::report::{Report, TaskReport};
+use crate::report::Report;
 use crate::scenario::Scenario;
 
 /// Temporaries start with this, then the process id and the file's name.
@@ -36,70 +35,37 @@ pub const MANIFEST: &str = ".reach-set";
 /// A temporary older than this is a killed run's, and is swept.
 const STALE: Duration = Duration::from_secs(60);
 
-/// The set's files, by name, in the order they are written.
-pub fn output_set(report: &Report, scenario: &Scenario) -> Vec<(String, Vec<u8>)> {
+/// The set's files, by name, in the order they are written: every
+/// format's, in the order they are registered, and the page's stamp last
+/// (a page that sees it new finds itself new too).
+pub fn output_set(
+    report: &Report,
+    scenario: &Scenario,
+    formats: &[Arc<dyn FormatPlugin>],
+) -> Vec<(String, Vec<u8>)> {
     let scene = scenario.format_scene();
-    let view = view_data(report, &scene);
-    let page = html::PageData::of(&view);
-    // The stamp last: a page that sees it new finds itself new too.
-    let mut files = vec![
-        (
-            "report.json".to_string(),
-            Json.render(report, &scene).into_bytes(),
-        ),
-        ("scene.glb".to_string(), glb::glb(&view)),
-        ("report.html".to_string(), page.page(true).into_bytes()),
-        (
-            html::STAMP_FILE.to_string(),
-            page.stamp_script().into_bytes(),
-        ),
-    ];
-    let mut stems: Vec<String> = Vec::new();
-    for (index, task) in report.tasks.iter().enumerate() {
-        let Some((base, csv, picture)) = map_file_parts(task) else {
-            continue;
-        };
-        // Two maps of one surface by one person (a reach and a gaze map,
-        // or two option sets) get distinct names, in the order of tasks.
-        let taken = stems.iter().filter(|s| s.as_str() == base).count();
-        stems.push(base.clone());
-        let stem = match taken {
-            0 => base,
-            n => format!("{base}-{}", n + 1),
-        };
-        files.push((format!("{stem}.csv"), csv.into_bytes()));
-        let room = scene.tasks.get(index).and_then(|t| view.rooms.get(t.room));
-        let svg = map_files::picture_svg(&picture, room);
-        files.push((format!("{stem}.svg"), svg.into_bytes()));
-    }
-    files
+    let mut files: Vec<(String, Vec<u8>)> = formats
+        .iter()
+        .flat_map(|format| format.files(report, &scene))
+        .collect();
+    let (mut set, stamp): (Vec<_>, Vec<_>) = files
+        .drain(..)
+        .partition(|(name, _)| name != html::STAMP_FILE);
+    set.extend(stamp);
+    set
 }
 
-/// A map's file stem, CSV and picture: a person's map, or a population's
-/// (by the share of its people who reach each point).
-fn map_file_parts(task: &TaskReport) -> Option<(String, String, map_files::Picture)> {
-    if let Some(m) = task.map() {
-        return Some((
-            map_files::file_stem(m),
-            map_files::csv(m),
-            map_files::Picture::of_map(m),
-        ));
-    }
-    let TaskReport::Population(p) = task else {
-        return None;
-    };
-    let (grid, cells) = (p.grid.as_ref()?, p.cells.as_ref()?);
-    Some((
-        map_files::population_stem(p, grid),
-        map_files::population_csv(p, cells),
-        map_files::Picture::of_population(p, grid, cells),
-    ))
-}
-
-/// `DIR/report.json`, `DIR/report.html`, and a CSV and an SVG for each
-/// map, as one set.
-pub fn write_outputs(report: &Report, scenario: &Scenario, dir: &Path) -> Result<(), Error> {
-    let mut files = output_set(report, scenario);
+/// Every format's files of `report`, with the set's list, as one set in
+/// `dir`: `report.txt`, `report.json`, `report.html` and its stamp,
+/// `scene.glb`, and a CSV and an SVG for each map with the built-in
+/// formats.
+pub fn write_outputs(
+    report: &Report,
+    scenario: &Scenario,
+    formats: &[Arc<dyn FormatPlugin>],
+    dir: &Path,
+) -> Result<(), Error> {
+    let mut files = output_set(report, scenario, formats);
     let names: String = files.iter().map(|(name, _)| format!("{name}\n")).collect();
     files.push((MANIFEST.to_string(), names.into_bytes()));
     let leftovers = previous_set(dir)

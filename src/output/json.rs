@@ -20,17 +20,18 @@ impl Plugin for Json {
 }
 
 impl FormatPlugin for Json {
-    fn render(&self, report: &Report, _: &FormatScene<'_>) -> String {
+    fn files(&self, report: &Report, scene: &FormatScene<'_>) -> Vec<(String, Vec<u8>)> {
+        let json = self.render(report, scene).unwrap_or_default();
+        vec![("report.json".into(), json.into_bytes())]
+    }
+
+    fn render(&self, report: &Report, _: &FormatScene<'_>) -> Option<String> {
         let head = cells_apart(|| serde_json::to_value(report).expect("reports serialize"));
         let cells: Vec<Option<&[MapCell]>> = report
             .tasks
             .iter()
             .map(|t| t.map().map(|m| m.cells.as_slice()))
             .collect();
-        super::json_layout::report_to_string(&head, &cells)
-    }
-
-    fn extension(&self) -> &'static str {
-        "json"
+        Some(super::json_layout::report_to_string(&head, &cells))
     }
 }

@@ -1,18 +1,23 @@
-//! Output formats, each a plugin, and the files `--out DIR` writes.
+//! Output formats, each a plugin that makes its files of a report, and
+//! the set of all of them that `--out DIR` writes.
 
 pub mod colours;
 mod files;
 pub mod glb;
+mod glb_file;
 pub mod html;
 mod journal;
 mod json;
 pub mod json_layout;
 pub mod map_files;
+mod maps;
 mod placing;
 mod text;
 pub mod view;
 
-pub use files::{write_outputs, write_set};
+pub use files::{output_set, write_outputs, write_set};
+pub use glb_file::GlbFile;
 pub use html::Html;
 pub use json::Json;
+pub use maps::Maps;
 pub use text::Text;

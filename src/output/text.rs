@@ -25,7 +25,12 @@ impl Plugin for Text {
 }
 
 impl FormatPlugin for Text {
-    fn render(&self, report: &Report, _: &FormatScene<'_>) -> String {
+    fn files(&self, report: &Report, scene: &FormatScene<'_>) -> Vec<(String, Vec<u8>)> {
+        let text = self.render(report, scene).unwrap_or_default();
+        vec![("report.txt".into(), text.into_bytes())]
+    }
+
+    fn render(&self, report: &Report, _: &FormatScene<'_>) -> Option<String> {
         let answers = report.answers();
         let mut out = String::new();
         let ok = answers.iter().filter(|a| a.ok).count();
@@ -44,11 +49,7 @@ impl FormatPlugin for Text {
         expectations(report, &mut out);
         // Names are escaped where they come from (files, URDFs); this
         // keeps the terminal safe whatever a report carries.
-        escaped_keeping(&out, |c| c == '\n').into_owned()
-    }
-
-    fn extension(&self) -> &'static str {
-        "txt"
+        Some(escaped_keeping(&out, |c| c == '\n').into_owned())
     }
 }
 

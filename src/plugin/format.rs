@@ -1,5 +1,7 @@
-//! Output formats: a report rendered as text, with the scene it answers
-//! about for the formats that draw it.
+//! Output formats: a report made into named files (what `--out DIR`
+//! writes, every format's files as one set) and, for a format that has
+//! one, a text for standard output (`--format NAME`), with the scene it
+//! answers about for the formats that draw it.
 
 use std::sync::Arc;
 
@@ -8,11 +10,18 @@ use crate::report::Report;
 use crate::scene::{Person, Room};
 
 pub trait FormatPlugin: Plugin {
-    /// `report` in this format; `scene` is what the report answers about
-    /// (the text and JSON formats read only the report).
-    fn render(&self, report: &Report, scene: &FormatScene<'_>) -> String;
-    /// The file extension when written with `--out`.
-    fn extension(&self) -> &'static str;
+    /// The files of `report` in this format, by name, in the order they
+    /// are written; `scene` is what the report answers about (the text and
+    /// JSON formats read only the report).
+    fn files(&self, report: &Report, scene: &FormatScene<'_>) -> Vec<(String, Vec<u8>)>;
+    /// `report` in this format as one text for standard output, where the
+    /// format has one ([`FormatPlugin::prints`]).
+    fn render(&self, report: &Report, scene: &FormatScene<'_>) -> Option<String>;
+    /// Whether the format has a text for standard output (`--format`):
+    /// not one of a binary file, or of a file for each map.
+    fn prints(&self) -> bool {
+        true
+    }
 }
 
 /// The scene a report answers about: its rooms, its people with their

@@ -72,6 +72,11 @@ impl Registry {
         find(&self.formats, name)
     }
 
+    /// Every format, in registration order: what `--out` writes.
+    pub fn formats(&self) -> &[Arc<dyn FormatPlugin>] {
+        &self.formats
+    }
+
     /// The solver `config` names, built from its options (those it leaves
     /// out at their defaults); `option` is the option that names it (where
     /// an error points).

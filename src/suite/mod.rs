@@ -197,10 +197,9 @@ fn run_one(
                 Some(Compared::Unreadable(why)) => vec![why.clone()],
                 _ => Vec::new(),
             };
-            let json = match registry.format("json") {
-                Some(f) => f.render(&report, &scenario.format_scene()),
-                None => String::new(),
-            };
+            let json = (registry.format("json"))
+                .and_then(|f| f.render(&report, &scenario.format_scene()))
+                .unwrap_or_default();
             match write_whole(&golden_path, json.as_bytes()) {
                 Ok(()) => Golden::Written {
                     path: golden_path,

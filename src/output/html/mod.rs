@@ -45,12 +45,19 @@ impl Plugin for Html {
 }
 
 impl FormatPlugin for Html {
-    fn render(&self, report: &Report, scene: &FormatScene<'_>) -> String {
-        PageData::of(&view_data(report, scene)).page(false)
+    /// The page, which polls the stamp beside it, and the stamp.
+    fn files(&self, report: &Report, scene: &FormatScene<'_>) -> Vec<(String, Vec<u8>)> {
+        let view = view_data(report, scene);
+        let page = PageData::of(&view);
+        vec![
+            ("report.html".into(), page.page(true).into_bytes()),
+            (STAMP_FILE.into(), page.stamp_script().into_bytes()),
+        ]
     }
 
-    fn extension(&self) -> &'static str {
-        "html"
+    /// The page alone, which polls nothing.
+    fn render(&self, report: &Report, scene: &FormatScene<'_>) -> Option<String> {
+        Some(PageData::of(&view_data(report, scene)).page(false))
     }
 }
 
