@@ -77,10 +77,17 @@ fn cells_left_out(_: &[MapCell]) -> bool {
 /// go and the cells one at a time, so that a map of 100,000 points is
 /// never held as one tree of values.
 pub fn cells_apart<T>(f: impl FnOnce() -> T) -> T {
+    /// Sets the flag back when dropped: also when `f` panics (a watch
+    /// session that goes on must not write its next maps without cells).
+    struct Apart;
+    impl Drop for Apart {
+        fn drop(&mut self) {
+            CELLS_APART.with(|c| c.set(false));
+        }
+    }
     CELLS_APART.with(|c| c.set(true));
-    let result = f();
-    CELLS_APART.with(|c| c.set(false));
-    result
+    let _apart = Apart;
+    f()
 }
 
 /// One point of a map.
@@ -443,4 +450,24 @@ fn point_words(point: &Value) -> String {
         .map(|c| format!("{:.0}", c.as_f64().unwrap_or(f64::NAN)))
         .collect();
     format!("({}) mm", xyz.join(", "))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cells_are_written_again_after_a_writer_that_left_them_out_panicked() {
+        let panicked = std::panic::catch_unwind(|| {
+            cells_apart(|| {
+                assert!(cells_left_out(&[]));
+                panic!("a writer failed");
+            })
+        });
+        assert!(panicked.is_err());
+        assert!(
+            !cells_left_out(&[]),
+            "the next report on this thread keeps its cells"
+        );
+    }
 }
