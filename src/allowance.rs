@@ -1,8 +1,9 @@
 //! What a solver knows of the run it is part of: an [`Allowance`] it tells
 //! the work it does to, in units of about the cost of moving one joint
 //! once, and that says whether it may go on. How work is bounded, shared
-//! between threads, kept for watch mode or counted per solve is the
-//! engine's (`crate::meter`), not the solver's.
+//! between threads and counted per solve is the meter's (`crate::meter`),
+//! and what is kept for watch mode the engine's (`crate::engine`), not the
+//! solver's.
 
 /// What a computation tells its work to.
 pub trait Allowance: Sync {

@@ -1,5 +1,5 @@
-//! The registry of built-in plugins: every solver, base, task and output
-//! format the crate has, by name. It sits above the plugins it names (the
+//! The registry of built-in plugins: every solver, base, task, output
+//! format and standard the crate has, by name. It sits above the plugins it names (the
 //! plugin layer itself knows none of them).
 
 use crate::plugin::Registry;

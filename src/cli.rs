@@ -7,12 +7,13 @@
 
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use clap::{ArgMatches, Args, ColorChoice, CommandFactory, FromArgMatches, Parser, Subcommand};
 use reach::escape::escaped;
 use reach::limits::{CEILINGS, DEFAULTS};
 use reach::machine_diagnostics::Finding;
-use reach::plugin::{PluginKind, Registry};
+use reach::plugin::{FormatPlugin, PluginKind, Registry};
 use reach::report::TaskReport;
 use reach::{DiagnosticStyle, Diagnostics, Input, Limits};
 
@@ -133,12 +134,13 @@ enum Command {
 struct Evaluate {
     /// The .reach scenario file.
     file: PathBuf,
-    /// Output format: text, json or html (the format plugins of `reach
-    /// plugins`).
+    /// Output format for standard output: text, json or html (glb and maps
+    /// are written by --out only).
     #[arg(long, default_value = "text")]
     format: String,
-    /// Also write DIR/report.json, report.html and scene.glb, and a CSV and
-    /// an SVG heat map per map, as one set.
+    /// Also write every format's files as one set: DIR/report.txt,
+    /// report.json, report.html, scene.glb, and a CSV and an SVG heat map
+    /// per map.
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
     /// Exit 3 (after the report) if a person's base fits nowhere in a
@@ -494,7 +496,7 @@ fn unprintable_format(registry: &Registry, format: &str) -> i32 {
         .map(|f| f.name())
         .collect();
     eprintln!(
-        "error: format `{}` writes files only: `--out DIR` writes them with every other format's (formats for standard output: {})",
+        "error: format `{}` writes files only, which `--out DIR` writes with every other format's; `--format` picks what standard output shows: {}",
         escaped(format),
         printing.join(", ")
     );
@@ -502,10 +504,20 @@ fn unprintable_format(registry: &Registry, format: &str) -> i32 {
 }
 
 fn unknown_format(registry: &Registry, format: &str) -> i32 {
+    let (printing, files_only): (Vec<_>, Vec<_>) =
+        registry.formats().iter().partition(|f| f.prints());
+    let names = |formats: &[&Arc<dyn FormatPlugin>]| {
+        formats
+            .iter()
+            .map(|f| f.name())
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
     eprintln!(
-        "error: unknown format `{}` (formats: {})",
+        "error: unknown format `{}` (formats: {}; written by --out only: {})",
         escaped(format),
-        registry.names(PluginKind::Format).join(", ")
+        names(&printing),
+        names(&files_only)
     );
     2
 }

@@ -1,8 +1,8 @@
 //! reach: can this person reach and see the things in this room?
 //!
 //! The pipeline, from text to report (ARCHITECTURE.md has the map):
-//! [`load`] reads the scenario file and everything it `use`s and parses
-//! each; [`check`] resolves names, evaluates expressions with units and
+//! [`check`] reads the scenario file and everything it `use`s, parses
+//! each, resolves names, evaluates expressions with units and
 //! validates plugin options against the plugins of a [`plugin::Registry`]
 //! and configures them into a [`scenario::Scenario`]; [`run`] runs its
 //! tasks into a [`report::Report`], which an output format renders.

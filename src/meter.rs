@@ -20,7 +20,7 @@
 //!
 //! What one solve charges can be counted on its own thread
 //! ([`counting_one`]), so that a solve watch mode keeps from an earlier
-//! run is charged what it cost when it ran (`plugin::KeptSolves`).
+//! run is charged what it cost when it ran (`engine::KeptSolves`).
 
 use std::cell::Cell;
 use std::collections::{BTreeMap, BTreeSet};

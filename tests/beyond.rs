@@ -6,7 +6,7 @@
 //! a random direction while every solid but the hand stays clear of the
 //! person's legs and base; the point a little further on (within the
 //! tolerance) is asked of the proof, and of the proofs a map keeps
-//! (`collision::KeptProofs`), which look longer at a point asked again.
+//! (`engine::KeptProofs`), which look longer at a point asked again.
 //! And it must rule out what a seated person plainly cannot reach.
 
 use nalgebra::{Point3, Vector3};

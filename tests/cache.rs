@@ -112,7 +112,7 @@ impl Room {
     /// The scenario: three people (fixed, trolley, wheelchair), a reach of
     /// every target, a gaze at the first, a small map of the first box's
     /// top from the fixed base and from the wheelchair (a map's solves are
-    /// kept one by one, `plugin::KeptSolves`).
+    /// kept one by one, `engine::KeptSolves`).
     fn text(&self) -> String {
         let mut t =
             String::from("use std::arm\nuse std::body\nroom r {\n  size 3600 x 2800 x 2500\n");

@@ -14,7 +14,7 @@
 //! the way round is usually a small change of it) and, one start in four,
 //! anywhere. A retry that does not reach changes nothing (the answer shows
 //! the first search's closest): a placement proved hopeless
-//! (`collision::KeptProofs`) is skipped, and the answer must be the same
+//! (`engine::KeptProofs`) is skipped, and the answer must be the same
 //! whether or not the proof was made.
 
 use crate::engine::KeptProofs;

@@ -11,7 +11,7 @@
 //! little (`touched.rs`): a shelf raised by a millimetre re-runs only the
 //! tasks whose arms came near it. A task run again keeps, one by one, the
 //! solves of its last run that the change did not touch
-//! (`plugin::KeptSolves`). The results of the last few runs are kept by
+//! (`engine::KeptSolves`). The results of the last few runs are kept by
 //! their full key too, so that an edit undone (a shelf tried higher, then
 //! put back) takes the answers from before it.
 
@@ -181,7 +181,7 @@ impl TaskCache {
 
     /// The solves kept from the last run of a task of keys `k` (its key of
     /// all but the obstacles the same) that its run in a room whose
-    /// obstacles are `seen` may take (`plugin::KeptSolves`).
+    /// obstacles are `seen` may take (`engine::KeptSolves`).
     fn earlier(&self, k: &key::TaskKey, seen: &[touched::Seen]) -> Option<Earlier> {
         self.last.kept.get(&k.loose?)?.earlier(seen)
     }

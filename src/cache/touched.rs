@@ -69,7 +69,7 @@ pub(super) struct Kept {
     /// The room's obstacles as they were when it was found.
     seen: Vec<Seen>,
     /// Its run's solves, for a run of the task after an edit
-    /// (`plugin::KeptSolves`).
+    /// (`engine::KeptSolves`).
     solves: Arc<SolveMap>,
 }
 
@@ -128,7 +128,7 @@ impl Kept {
 
     /// The solves of its run that a run of the task in a room (of the
     /// same key) whose obstacles are `now` may take, with the obstacles
-    /// changed since (`plugin::KeptSolves` works out which solves hold).
+    /// changed since (`engine::KeptSolves` works out which solves hold).
     /// None where obstacles were added or taken away.
     pub fn earlier(&self, now: &[Seen]) -> Option<Earlier> {
         if self.seen.len() != now.len() || self.solves.is_empty() {

@@ -18,7 +18,7 @@
 //!
 //! One solve's own record ([`recording_one`]) is kept beside the task's
 //! while it runs on its thread: watch mode keeps the solve's answer with
-//! it (`plugin::KeptSolves`), for a run of the task after an edit that
+//! it (`engine::KeptSolves`), for a run of the task after an edit that
 //! changed none of the obstacles that solve touched.
 
 use std::cell::RefCell;

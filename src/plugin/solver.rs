@@ -123,7 +123,7 @@ pub trait Solver: Send + Sync {
     /// A hash of everything that decides this solver's answers besides
     /// the problem (its kind and settings), where it has one: watch mode
     /// keeps the solves of such a solver for the task's next run
-    /// (`plugin::KeptSolves`). None: its solves are not kept.
+    /// (`engine::KeptSolves`). None: its solves are not kept.
     fn fingerprint(&self) -> Option<u64> {
         None
     }

@@ -103,7 +103,7 @@ impl Scenario {
     /// the bound as well, so that a run that reuses answers stops where a
     /// fresh run would.
     /// Each task may take the solves of its last run that hold
-    /// (`earlier`, by position; `plugin::KeptSolves`).
+    /// (`earlier`, by position; `engine::KeptSolves`).
     pub fn run_tasks_recording(
         &self,
         tasks: &[&TaskSpec],

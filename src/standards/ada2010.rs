@@ -60,7 +60,7 @@ impl Plugin for Ada2010 {
     }
 
     fn doc(&self) -> &'static str {
-        "the 2010 ADA Standards: turning space (304), reach ranges (308), clear floor space (305), knee clearance (306), route widths (403.5.1)"
+        "the 2010 ADA Standards: turning space (304), reach ranges (308), clear floor space (305), knee clearance (306), route widths (403.5.1), door widths (404.2.3)"
     }
 
     fn params(&self) -> Vec<ParamSpec> {
