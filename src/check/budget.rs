@@ -49,13 +49,13 @@ impl Checker<'_> {
             .fold(0u64, |sum, (_, s)| sum.saturating_add(*s));
         // The first of those that ask the most.
         let &(span, decl_starts) = by_decl.iter().rev().max_by_key(|(_, s)| *s)?;
-        if total <= self.limits.solver_starts {
+        if total <= self.cx.limits.solver_starts {
             return Some(span);
         }
         self.error(Error::new(
             ErrorKind::TooManyStarts {
                 total,
-                limit: self.limits.solver_starts,
+                limit: self.cx.limits.solver_starts,
                 decl_starts,
             },
             span,

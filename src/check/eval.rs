@@ -14,7 +14,7 @@ impl Checker<'_> {
     /// Evaluate every `let` once, so that an error in a definition is
     /// reported there, once, whether or not it is used.
     pub(super) fn evaluate_lets(&mut self) {
-        let names: Vec<String> = self.lets.names().map(str::to_string).collect();
+        let names: Vec<String> = self.decls.lets.names().map(str::to_string).collect();
         for name in names {
             self.let_value(&name, None);
         }
@@ -22,11 +22,11 @@ impl Checker<'_> {
 
     /// The value of constant `name`; `use_span` is where it is used.
     fn let_value(&mut self, name: &str, use_span: Option<Span>) -> Option<Quantity> {
-        if let Some(v) = self.let_values.get(name) {
+        if let Some(v) = self.built.let_values.get(name) {
             return *v;
         }
-        let (decl, file) = self.lets.get(name)?;
-        if self.let_stack.iter().any(|n| n == name) {
+        let (decl, file) = self.decls.lets.get(name)?;
+        if self.built.let_stack.iter().any(|n| n == name) {
             let span = use_span.unwrap_or(decl.name.span);
             self.error(Error::new(
                 ErrorKind::LetCycle {
@@ -36,14 +36,15 @@ impl Checker<'_> {
             ));
             return None;
         }
-        if self.let_stack.len() >= self.limits.constant_chain {
+        if self.built.let_stack.len() >= self.cx.limits.constant_chain {
             let span = use_span.unwrap_or(decl.name.span);
             // One report is enough; the rest of the chain fails silently.
             let reported = self
+                .cx
                 .errors
                 .iter()
                 .any(|e| matches!(e.kind(), ErrorKind::TooLarge { .. }));
-            self.let_values.insert(name.to_string(), None);
+            self.built.let_values.insert(name.to_string(), None);
             if reported {
                 return None;
             }
@@ -52,19 +53,22 @@ impl Checker<'_> {
                     what: format!("the chain of constants leading to `{name}`"),
                     limit: format!(
                         "{} constants (--max-constant-chain)",
-                        self.limits.constant_chain
+                        self.cx.limits.constant_chain
                     ),
                 },
                 span,
             ));
             return None;
         }
-        self.let_stack.push(name.to_string());
+        self.built.let_stack.push(name.to_string());
         let value = self.in_file(file, |c| c.eval(&decl.value));
-        self.let_stack.pop();
+        self.built.let_stack.pop();
         // A cycle may already have recorded the value as failed.
-        self.let_values.entry(name.to_string()).or_insert(value);
-        self.let_values[name]
+        self.built
+            .let_values
+            .entry(name.to_string())
+            .or_insert(value);
+        self.built.let_values[name]
     }
 
     /// Evaluate an expression; errors are recorded and give `None`.
@@ -74,7 +78,7 @@ impl Checker<'_> {
                 Some(u) => Quantity::dimensioned(value * u.to_internal(), u.dim()),
                 None => Quantity::Bare {
                     value: *value,
-                    defaults: self.defaults,
+                    defaults: self.cx.defaults,
                 },
             },
             ExprKind::Name(name) => return self.name_value(name, e.span),
@@ -146,15 +150,15 @@ impl Checker<'_> {
     }
 
     fn name_value(&mut self, name: &str, span: Span) -> Option<Quantity> {
-        if let Some((_, value)) = self.params.iter().rev().find(|(n, _)| n == name) {
+        if let Some((_, value)) = self.built.params.iter().rev().find(|(n, _)| n == name) {
             // A parameter that failed to evaluate has reported its error.
             return *value;
         }
-        if self.lets.get(name).is_some() {
+        if self.decls.lets.get(name).is_some() {
             return self.let_value(name, Some(span));
         }
-        let params = self.params.iter().map(|(n, _)| n.as_str());
-        let known = self.lets.names().chain(params);
+        let params = self.built.params.iter().map(|(n, _)| n.as_str());
+        let known = self.decls.lets.names().chain(params);
         self.error(Error::unknown("constant", name, span, known));
         None
     }

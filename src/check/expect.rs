@@ -22,7 +22,7 @@ pub(super) struct Answered<'s> {
 
 impl Checker<'_> {
     pub(super) fn expectations(&mut self, answered: &Answered<'_>) -> Vec<ExpectSpec> {
-        let decls = std::mem::take(&mut self.expects);
+        let decls = std::mem::take(&mut self.decls.expects);
         let mut out = Vec::new();
         for (decl, file) in decls {
             if let Some(spec) = self.in_file(file, |c| c.expectation(decl, answered)) {
@@ -49,7 +49,7 @@ impl Checker<'_> {
             } => self.share_claim(decl, population, subject, task.as_ref(), bound, a)?,
             Claim::Meets { room, standard } => self.meets_claim(decl, room, standard, a)?,
         };
-        let source = self.sources.get(decl.span.file);
+        let source = self.cx.sources.get(decl.span.file);
         let line = source
             .line_starts()
             .partition_point(|&start| start <= decl.span.start as usize);
@@ -78,8 +78,8 @@ impl Checker<'_> {
             .position(|p| p.name == who.value && population.is_none());
         // A person or population that failed to check has reported its
         // own errors.
-        let declared =
-            self.persons.get(&who.value).is_some() || self.populations.get(&who.value).is_some();
+        let declared = self.decls.persons.get(&who.value).is_some()
+            || self.decls.populations.get(&who.value).is_some();
         if person.is_none() && population.is_none() && declared {
             return None;
         }
@@ -187,7 +187,7 @@ impl Checker<'_> {
             .iter()
             .position(|x| x.name == population.value)
         else {
-            if self.populations.get(&population.value).is_some() {
+            if self.decls.populations.get(&population.value).is_some() {
                 return None;
             }
             if a.persons.iter().any(|x| x.name == population.value) {
@@ -275,6 +275,7 @@ impl Checker<'_> {
     ) -> Option<ExpectCheck> {
         let Some(r) = a.rooms.iter().position(|x| x.name == room.value) else {
             if self
+                .decls
                 .rooms
                 .iter()
                 .any(|(_, d, _)| d.name.value == room.value)
@@ -322,7 +323,7 @@ impl Checker<'_> {
         }
         // A target or surface of a room that failed to check: that room
         // has reported its own errors.
-        let failed_room_declares = (self.rooms.iter())
+        let failed_room_declares = (self.decls.rooms.iter())
             .filter(|(_, d, _)| a.rooms.iter().all(|r| r.name != d.name.value))
             .any(|(_, d, _)| d.items.iter().any(|i| declares(i, &name)));
         if failed_room_declares {

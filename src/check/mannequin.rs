@@ -30,6 +30,7 @@ impl Checker<'_> {
     /// or an alias's), so its errors are reported once.
     pub(super) fn build_mannequins(&mut self) {
         let decls: Vec<_> = self
+            .decls
             .mannequins
             .iter()
             .map(|(n, d, f)| (n.to_string(), d, f))
@@ -45,14 +46,14 @@ impl Checker<'_> {
                 (None, Some(urdf)) => self.in_file(file, |c| c.urdf_body(urdf)),
                 (None, None) => self.body_with(decl, file, &[], decl.name.span),
             };
-            self.bodies.insert(name, body);
+            self.built.bodies.insert(name, body);
         }
     }
 
     /// The body of mannequin reference `r` (written in `file`): the named
     /// mannequin with the parameters `r` gives.
     pub(super) fn body_of(&mut self, r: &MannequinRef, file: FileId, depth: usize) -> Option<Body> {
-        let (decl, decl_file) = match self.mannequins.resolve(&r.name) {
+        let (decl, decl_file) = match self.decls.mannequins.resolve(&r.name) {
             Ok(found) => found,
             Err(e) => {
                 self.error(e);
@@ -60,23 +61,23 @@ impl Checker<'_> {
             }
         };
         match &decl.alias {
-            Some(_) if !decl.params.is_empty() && depth < self.limits.alias_chain => {
+            Some(_) if !decl.params.is_empty() && depth < self.cx.limits.alias_chain => {
                 let at = Span {
                     file,
                     ..r.name.span
                 };
                 self.at_the_call(at, |c| c.alias_with(decl, decl_file, &r.args, at, depth))
             }
-            Some(target) if r.args.is_empty() && depth < self.limits.alias_chain => self
+            Some(target) if r.args.is_empty() && depth < self.cx.limits.alias_chain => self
                 .body_of(target, decl_file, depth + 1)
                 .map(|b| self.with_posture(b, decl)),
-            Some(_) if depth >= self.limits.alias_chain => {
+            Some(_) if depth >= self.cx.limits.alias_chain => {
                 self.error(Error::new(
                     ErrorKind::TooLarge {
                         what: "a chain of mannequin aliases".into(),
                         limit: format!(
                             "{} (or it loops; --max-alias-chain)",
-                            self.limits.alias_chain
+                            self.cx.limits.alias_chain
                         ),
                     },
                     r.name.span,
@@ -93,7 +94,7 @@ impl Checker<'_> {
                 ));
                 None
             }
-            None if r.args.is_empty() => self.bodies.get(&r.name.value).cloned().flatten(),
+            None if r.args.is_empty() => self.built.bodies.get(&r.name.value).cloned().flatten(),
             None => {
                 let at = Span {
                     file,
@@ -113,9 +114,9 @@ impl Checker<'_> {
         at: Span,
         build: impl FnOnce(&mut Self) -> Option<Body>,
     ) -> Option<Body> {
-        let before = self.errors.len();
+        let before = self.cx.errors.len();
         let body = build(self);
-        for e in &mut self.errors[before..] {
+        for e in &mut self.cx.errors[before..] {
             if e.span().is_some_and(|s| s.file != at.file) {
                 *e = e.clone().moved_to(at);
             }
@@ -155,11 +156,11 @@ impl Checker<'_> {
     ) -> Option<Body> {
         let given = self.in_file(at.file, |c| c.mannequin_args(decl, args));
         self.in_file(file, |c| {
-            let outer = std::mem::take(&mut c.params);
+            let outer = std::mem::take(&mut c.built.params);
             c.push_params(decl, &given);
             let met = c.requirements(decl, args, at);
             let body = build(c).filter(|_| met);
-            c.params = outer;
+            c.built.params = outer;
             body
         })
     }
@@ -227,7 +228,7 @@ impl Checker<'_> {
                 Some((_, v)) => *v,
                 None => self.eval(default),
             };
-            self.params.push((name.value.clone(), value));
+            self.built.params.push((name.value.clone(), value));
         }
     }
 
@@ -235,11 +236,11 @@ impl Checker<'_> {
     /// angle: that, in the default unit of the file it was written in
     /// (`sitting_height 85` in a `units cm` file is 85 cm).
     fn as_default_is(&mut self, given: Quantity, default: &Expr) -> Quantity {
-        let before = self.errors.len();
+        let before = self.cx.errors.len();
         let kind = self.eval(default);
         // The default is only looked at, not used: its errors are not the
         // user's.
-        self.errors.truncate(before);
+        self.cx.errors.truncate(before);
         match kind {
             Some(Quantity::Dimensioned { dim, .. }) => match given.as_dim(dim) {
                 Some(value) => Quantity::dimensioned(value, dim),
@@ -370,7 +371,7 @@ impl Checker<'_> {
     /// Whether a mannequin of `joints` joints is within `--max-joints`;
     /// where it is not, an error at `at`.
     pub(super) fn within_joints(&mut self, joints: usize, at: Span) -> bool {
-        let most = self.limits.joints;
+        let most = self.cx.limits.joints;
         if joints <= most {
             return true;
         }

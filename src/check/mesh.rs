@@ -114,7 +114,7 @@ impl Checker<'_> {
                 }
             },
             None if format.is_some_and(MeshFormat::in_metres) => Some(Unit::M.to_internal()),
-            None => Some(self.defaults.length.to_internal()),
+            None => Some(self.cx.defaults.length.to_internal()),
         }
     }
 
@@ -156,9 +156,9 @@ impl Checker<'_> {
         path: PathBuf,
         format: Option<MeshFormat>,
     ) -> Option<RawMesh> {
-        self.data_files.push(path.clone());
-        let limit = self.limits.file_bytes;
-        let bytes = match read::read(&path, FileKind::Mesh, &self.sources.allowed, limit) {
+        self.cx.data_files.push(path.clone());
+        let limit = self.cx.limits.file_bytes;
+        let bytes = match read::read(&path, FileKind::Mesh, &self.cx.sources.allowed, limit) {
             Ok(bytes) => bytes,
             Err(e) => {
                 self.bad_mesh(d, e.to_string());
@@ -169,23 +169,27 @@ impl Checker<'_> {
         let format = format?;
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         let mut buffers = Vec::new();
-        let allowed = &self.sources.allowed;
+        let allowed = &self.cx.sources.allowed;
         let mut related = |uri: &str| {
             let buffer = dir.join(uri);
             buffers.push(buffer.clone());
             read::read(&buffer, FileKind::MeshBuffer, allowed, limit).map_err(|e| e.to_string())
         };
         let in_file = usize::try_from(limit / MIN_BYTES_PER_TRIANGLE).unwrap_or(usize::MAX);
-        let left = self.limits.triangles.saturating_sub(self.triangles_read);
+        let left = self
+            .cx
+            .limits
+            .triangles
+            .saturating_sub(self.cx.triangles_read);
         let parsed = meshfile::parse(format, &bytes, in_file.min(left), &mut related);
-        self.data_files.extend(buffers);
+        self.cx.data_files.extend(buffers);
         match parsed {
             Ok(mesh) => {
-                self.triangles_read += mesh.triangles.len();
+                self.cx.triangles_read += mesh.triangles.len();
                 Some(mesh)
             }
             Err(MeshFileError::TooManyTriangles { .. }) if left < in_file => {
-                let most = thousands(self.limits.triangles as u64);
+                let most = thousands(self.cx.limits.triangles as u64);
                 let kind = ErrorKind::TooLarge {
                     what: "the count of triangles in this mesh and the meshes before it".into(),
                     limit: format!("{most} in a scenario (--max-triangles)"),
@@ -209,7 +213,7 @@ impl Checker<'_> {
     /// `relative` against the directory of the file being checked (the
     /// working directory for text not read from disk).
     pub(super) fn relative_to_file(&self, relative: &str) -> PathBuf {
-        let dir = match &self.sources.get(self.file).origin {
+        let dir = match &self.cx.sources.get(self.cx.file).origin {
             Origin::Path(p) => p.parent().map(Path::to_path_buf).unwrap_or_default(),
             _ => PathBuf::new(),
         };

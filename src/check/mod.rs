@@ -47,7 +47,7 @@ pub fn check(
     let mut c = Checker::new(registry, sources, *limits);
     for f in files {
         let defaults = c.file_defaults(&f.ast.items);
-        c.defaults_of.insert(f.id, defaults);
+        c.cx.defaults_of.insert(f.id, defaults);
         c.collect(f, f.id == root);
     }
     c.evaluate_lets();
@@ -65,12 +65,12 @@ pub fn check(
         tasks: &tasks,
         standards: &standards,
     });
-    let costliest = if c.errors.is_empty() {
+    let costliest = if c.cx.errors.is_empty() {
         c.check_budget(&tasks, &rooms, &bases, &populations)
     } else {
         None
     };
-    let result = if c.errors.is_empty() {
+    let result = if c.cx.errors.is_empty() {
         Ok(Scenario {
             file: sources.get(root).name.clone(),
             rooms,
@@ -81,19 +81,22 @@ pub fn check(
             standards,
             expectations,
             work: WorkBound {
-                limit: c.limits.solver_work,
+                limit: c.cx.limits.solver_work,
                 costliest,
             },
         })
     } else {
-        Err(Diagnostics { errors: c.errors })
+        Err(Diagnostics {
+            errors: c.cx.errors,
+        })
     };
-    (c.data_files, result)
+    (c.cx.data_files, result)
 }
 
-/// The state of the pass: declarations by name, evaluated constants, and
-/// the errors found so far.
-struct Checker<'a> {
+/// What every phase of the pass shares: the plugins, the limits, the
+/// sources, the errors found so far, the data files named, the counts
+/// the limits bound, and the default units of the file being evaluated.
+struct Context<'a> {
     registry: &'a Registry,
     limits: Limits,
     /// The data files (meshes, URDFs) the scenario names.
@@ -114,71 +117,94 @@ struct Checker<'a> {
     defaults: UnitDefaults,
     /// That file.
     file: FileId,
+}
+
+/// The declarations of every file by name (the first phase's output,
+/// which the others read), and the tasks, standards and expectations of
+/// the root file in order.
+struct Declarations<'a> {
     lets: Table<'a, LetDecl>,
-    let_values: HashMap<String, Option<Quantity>>,
-    let_stack: Vec<String>,
     rooms: Table<'a, crate::syntax::ast::RoomDecl>,
     mannequins: Table<'a, crate::syntax::ast::MannequinDecl>,
-    bodies: HashMap<String, Option<Body>>,
     profiles: Table<'a, crate::syntax::ast::ProfileDecl>,
     base_presets: Table<'a, crate::syntax::ast::BasePreset>,
     vision_presets: Table<'a, crate::syntax::ast::VisionPreset>,
-    /// Mannequin parameters in scope while a mannequin is built, innermost
-    /// last; they hide constants of the same name.
-    params: Vec<(String, Option<Quantity>)>,
     persons: Table<'a, crate::syntax::ast::PersonDecl>,
     populations: Table<'a, crate::syntax::ast::PopulationDecl>,
     tasks: Vec<(&'a crate::syntax::ast::TaskDecl, FileId)>,
     standards: Vec<(&'a crate::syntax::ast::StandardDecl, FileId)>,
     expects: Vec<(&'a crate::syntax::ast::ExpectDecl, FileId)>,
+}
+
+/// What the phases have built that later ones look up: constants'
+/// values, mannequins' bodies, the parameters in scope, the targets.
+#[derive(Default)]
+struct Built {
+    let_values: HashMap<String, Option<Quantity>>,
+    let_stack: Vec<String>,
+    bodies: HashMap<String, Option<Body>>,
+    /// Mannequin parameters in scope while a mannequin is built, innermost
+    /// last; they hide constants of the same name.
+    params: Vec<(String, Option<Quantity>)>,
     /// Each target's room and place in it, by name, for the tasks.
     target_index: HashMap<String, (usize, usize)>,
+}
+
+/// The pass, in phases (`check` runs them in order: declarations, the
+/// constants, rooms, bodies, persons, populations, tasks, standards,
+/// expectations, the budget), each a method group in its own file that
+/// takes its inputs and returns its output, sharing the context, the
+/// declarations and what earlier phases built.
+struct Checker<'a> {
+    cx: Context<'a>,
+    decls: Declarations<'a>,
+    built: Built,
 }
 
 impl<'a> Checker<'a> {
     fn new(registry: &'a Registry, sources: &'a Sources, limits: Limits) -> Self {
         Checker {
-            registry,
-            limits,
-            data_files: Vec::new(),
-            triangles_read: 0,
-            people_joints: (0, false),
-            evaluated_text: (0, false),
-            sources,
-            errors: Vec::new(),
-            defaults_of: HashMap::new(),
-            defaults: UnitDefaults::default(),
-            file: FileId::default(),
-            lets: Table::new("constant"),
-            let_values: HashMap::new(),
-            let_stack: Vec::new(),
-            rooms: Table::new("room"),
-            mannequins: Table::new("mannequin"),
-            bodies: HashMap::new(),
-            profiles: Table::new("profile"),
-            base_presets: Table::new("base preset"),
-            vision_presets: Table::new("vision"),
-            params: Vec::new(),
-            persons: Table::new("person"),
-            populations: Table::new("population"),
-            tasks: Vec::new(),
-            standards: Vec::new(),
-            expects: Vec::new(),
-            target_index: HashMap::new(),
+            cx: Context {
+                registry,
+                limits,
+                data_files: Vec::new(),
+                triangles_read: 0,
+                people_joints: (0, false),
+                evaluated_text: (0, false),
+                sources,
+                errors: Vec::new(),
+                defaults_of: HashMap::new(),
+                defaults: UnitDefaults::default(),
+                file: FileId::default(),
+            },
+            decls: Declarations {
+                lets: Table::new("constant"),
+                rooms: Table::new("room"),
+                mannequins: Table::new("mannequin"),
+                profiles: Table::new("profile"),
+                base_presets: Table::new("base preset"),
+                vision_presets: Table::new("vision"),
+                persons: Table::new("person"),
+                populations: Table::new("population"),
+                tasks: Vec::new(),
+                standards: Vec::new(),
+                expects: Vec::new(),
+            },
+            built: Built::default(),
         }
     }
 
     fn error(&mut self, e: Error) {
-        self.errors.push(e);
+        self.cx.errors.push(e);
     }
 
     /// Run `f` with the default units of `file`.
     fn in_file<T>(&mut self, file: FileId, f: impl FnOnce(&mut Self) -> T) -> T {
-        let saved = (self.defaults, self.file);
-        self.defaults = self.defaults_of.get(&file).copied().unwrap_or_default();
-        self.file = file;
+        let saved = (self.cx.defaults, self.cx.file);
+        self.cx.defaults = self.cx.defaults_of.get(&file).copied().unwrap_or_default();
+        self.cx.file = file;
         let out = f(self);
-        (self.defaults, self.file) = saved;
+        (self.cx.defaults, self.cx.file) = saved;
         out
     }
 
@@ -216,28 +242,28 @@ impl<'a> Checker<'a> {
     fn collect(&mut self, f: &'a LoadedFile, is_root: bool) {
         for item in &f.ast.items {
             let dup = match item {
-                Item::Let(d) => self.lets.insert(&d.name, d, f.id),
-                Item::Room(d) => self.rooms.insert(&d.name, d, f.id),
-                Item::Mannequin(d) => self.mannequins.insert(&d.name, d, f.id),
-                Item::Profile(d) => self.profiles.insert(&d.name, d, f.id),
+                Item::Let(d) => self.decls.lets.insert(&d.name, d, f.id),
+                Item::Room(d) => self.decls.rooms.insert(&d.name, d, f.id),
+                Item::Mannequin(d) => self.decls.mannequins.insert(&d.name, d, f.id),
+                Item::Profile(d) => self.decls.profiles.insert(&d.name, d, f.id),
                 Item::BasePreset(d) => {
-                    if self.registry.base(&d.name.value).is_some() {
+                    if self.cx.registry.base(&d.name.value).is_some() {
                         let name = d.name.value.clone();
                         let kind = ErrorKind::PresetNamesPlugin { name };
                         self.error(Error::new(kind, d.name.span));
                     }
-                    self.base_presets.insert(&d.name, d, f.id)
+                    self.decls.base_presets.insert(&d.name, d, f.id)
                 }
-                Item::VisionPreset(d) => self.vision_presets.insert(&d.name, d, f.id),
-                Item::Person(d) => self.persons.insert(&d.name, d, f.id),
-                Item::Population(d) => self.populations.insert(&d.name, d, f.id),
+                Item::VisionPreset(d) => self.decls.vision_presets.insert(&d.name, d, f.id),
+                Item::Person(d) => self.decls.persons.insert(&d.name, d, f.id),
+                Item::Population(d) => self.decls.populations.insert(&d.name, d, f.id),
                 Item::Task(d) if is_root => {
-                    self.tasks.push((d, f.id));
+                    self.decls.tasks.push((d, f.id));
                     None
                 }
                 Item::Task(d) => Some(Error::new(ErrorKind::Misplaced { what: "tasks" }, d.span)),
                 Item::Standard(d) if is_root => {
-                    self.standards.push((d, f.id));
+                    self.decls.standards.push((d, f.id));
                     None
                 }
                 Item::Standard(d) => Some(Error::new(
@@ -245,7 +271,7 @@ impl<'a> Checker<'a> {
                     d.span,
                 )),
                 Item::Expect(d) if is_root => {
-                    self.expects.push((d, f.id));
+                    self.decls.expects.push((d, f.id));
                     None
                 }
                 Item::Expect(d) => Some(Error::new(

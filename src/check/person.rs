@@ -39,8 +39,8 @@ fn passed(running: &mut (u64, bool), more: u64, most: u64) -> Option<bool> {
 impl Checker<'_> {
     /// The persons, each with their base built.
     pub(super) fn persons(&mut self) -> Vec<(Person, Arc<dyn Base>)> {
-        let mut decls: Vec<_> = self.persons.iter().map(|(_, d, f)| (d, f)).collect();
-        let most = self.limits.people;
+        let mut decls: Vec<_> = self.decls.persons.iter().map(|(_, d, f)| (d, f)).collect();
+        let most = self.cx.limits.people;
         if let Some(&(first_beyond, f)) = decls.get(most) {
             let kind = ErrorKind::TooLarge {
                 what: format!("{} people declared", thousands(decls.len() as u64)),
@@ -75,8 +75,8 @@ impl Checker<'_> {
     pub(super) fn mannequin_bytes(&self, name: &Name) -> u64 {
         let mut bytes = 0_u64;
         let mut name = name.clone();
-        for _ in 0..=self.limits.alias_chain {
-            let Ok((decl, _)) = self.mannequins.resolve(&name) else {
+        for _ in 0..=self.cx.limits.alias_chain {
+            let Ok((decl, _)) = self.decls.mannequins.resolve(&name) else {
                 break;
             };
             bytes += u64::from(decl.span.end.saturating_sub(decl.span.start));
@@ -94,8 +94,8 @@ impl Checker<'_> {
     /// evaluated again: 300 people of a mannequin of 6.6 MB took 16 s);
     /// where they do not, an error at `at`, the first time.
     pub(super) fn within_evaluated_text(&mut self, bytes: u64, at: Span) -> bool {
-        let most = (self.limits.people as u64).saturating_mul(TEXT_PER_PERSON_LIMIT);
-        let past = passed(&mut self.evaluated_text, bytes, most);
+        let most = (self.cx.limits.people as u64).saturating_mul(TEXT_PER_PERSON_LIMIT);
+        let past = passed(&mut self.cx.evaluated_text, bytes, most);
         self.within_or_reported(past, at, || ErrorKind::TooLarge {
             what: "the mannequins' text evaluated to build the people".into(),
             limit: format!(
@@ -112,8 +112,8 @@ impl Checker<'_> {
     /// joint: 10,000 people of 2,000 joints took 6.5 GB); where they do
     /// not, an error at `at`, the first time.
     pub(super) fn within_people_joints(&mut self, joints: usize, at: Span) -> bool {
-        let most = (self.limits.joints as u64).saturating_mul(PEOPLE_JOINTS_PER_MAX_JOINTS);
-        let past = passed(&mut self.people_joints, joints as u64, most);
+        let most = (self.cx.limits.joints as u64).saturating_mul(PEOPLE_JOINTS_PER_MAX_JOINTS);
+        let past = passed(&mut self.cx.people_joints, joints as u64, most);
         self.within_or_reported(past, at, || ErrorKind::TooLarge {
             what: "the joints of the people, each body counted,".into(),
             limit: format!(
@@ -170,8 +170,8 @@ impl Checker<'_> {
     /// A base plugin, or a base preset (`base power_chair = wheelchair
     /// {...}`) with the person's own options over the preset's.
     pub(super) fn base_config(&mut self, b: &ast::PluginUse) -> Option<PluginConfig> {
-        let preset = self.base_presets.get(&b.name.value);
-        let (Some((preset, file)), None) = (preset, self.registry.base(&b.name.value)) else {
+        let preset = self.decls.base_presets.get(&b.name.value);
+        let (Some((preset, file)), None) = (preset, self.cx.registry.base(&b.name.value)) else {
             return self.plugin_config(PluginKind::Base, b);
         };
         let mut config =
@@ -203,7 +203,7 @@ impl Checker<'_> {
         config: &PluginConfig,
         physique: &Physique,
     ) -> Option<Arc<dyn Base>> {
-        let plugin = self.registry.base(&config.name)?.clone();
+        let plugin = self.cx.registry.base(&config.name)?.clone();
         match plugin.build(&config.options, physique) {
             Ok(base) => Some(Arc::from(base)),
             Err(BaseError::Unfit(reason)) => {
@@ -220,7 +220,7 @@ impl Checker<'_> {
             Err(BaseError::Settings(e)) => {
                 let label = format!("base `{}`", config.name);
                 let given = b.options.iter().any(|o| o.name.value == e.option);
-                match self.base_presets.get(&b.name.value) {
+                match self.decls.base_presets.get(&b.name.value) {
                     Some((preset, file)) if !given => {
                         let options = preset.plugin.options.clone();
                         let span = preset.plugin.span;
@@ -244,7 +244,7 @@ impl Checker<'_> {
         let params = Vision::params();
         let mut preset_vision = Vision::default();
         if let Some(name) = &vision.preset {
-            let (preset, file) = match self.vision_presets.resolve(name) {
+            let (preset, file) = match self.decls.vision_presets.resolve(name) {
                 Ok(found) => found,
                 Err(e) => {
                     self.error(e);
@@ -308,7 +308,7 @@ impl Checker<'_> {
     }
 
     fn person_body(&mut self, m: &PersonMannequin) -> Option<Body> {
-        let file = self.file;
+        let file = self.cx.file;
         // A mannequin that failed to build has reported its own errors.
         let mut body = self.body_of(&m.mannequin, file, 0)?;
         let mut ok = true;
@@ -342,7 +342,7 @@ impl Checker<'_> {
                     mannequin.name.span,
                 );
                 // Where the radii are given: the declaration.
-                if let Ok((decl, _)) = self.mannequins.resolve(&mannequin.name) {
+                if let Ok((decl, _)) = self.decls.mannequins.resolve(&mannequin.name) {
                     error = match decl.urdf {
                         Some(_) => {
                             error.with_note(decl.span, "declared here: `radius` goes after `tip`")
@@ -395,7 +395,7 @@ impl Checker<'_> {
 
     /// Every override of profile `name`, in its own file's units.
     pub(super) fn apply_profile(&mut self, joints: &mut [Joint], name: &Name) -> Option<()> {
-        let (profile, file) = match self.profiles.resolve(name) {
+        let (profile, file) = match self.decls.profiles.resolve(name) {
             Ok(found) => found,
             Err(e) => {
                 self.error(e);
@@ -430,8 +430,8 @@ impl Checker<'_> {
         kind: PluginKind,
         use_: &ast::PluginUse,
     ) -> Option<PluginConfig> {
-        let Some(params) = self.registry.params(kind, &use_.name.value) else {
-            let names = self.registry.names(kind);
+        let Some(params) = self.cx.registry.params(kind, &use_.name.value) else {
+            let names = self.cx.registry.names(kind);
             self.error(Error::new(
                 ErrorKind::UnknownPlugin {
                     kind: kind.noun(),

@@ -71,12 +71,12 @@ impl<'a> Checker<'a> {
     /// once, in the order first named.
     pub(super) fn populations_named(&self, persons: &[Person]) -> Vec<Name> {
         let mut named: Vec<Name> = Vec::new();
-        for (decl, _) in &self.tasks {
+        for (decl, _) in &self.decls.tasks {
             for who in &decl.persons {
                 let is_person = persons.iter().any(|p| p.name == who.value)
-                    || self.persons.get(&who.value).is_some();
+                    || self.decls.persons.get(&who.value).is_some();
                 let known = named.iter().any(|n| n.value == who.value);
-                if !is_person && !known && self.populations.get(&who.value).is_some() {
+                if !is_person && !known && self.decls.populations.get(&who.value).is_some() {
                     named.push(who.clone());
                 }
             }
@@ -107,7 +107,7 @@ impl<'a> Checker<'a> {
             let start = persons.len();
             for (i, drawn) in plan.drawn.iter().enumerate() {
                 let member = format!("{}#{}", plan.name, i + 1);
-                let errors = self.errors.len();
+                let errors = self.cx.errors.len();
                 let built = self.member(&member, &items, drawn, &plan.quantities[i], name.span);
                 match built {
                     Some((person, base)) => {
@@ -120,7 +120,7 @@ impl<'a> Checker<'a> {
                     }
                     None => {
                         // One person's errors say it for all of them.
-                        self.errors.truncate(errors + 1);
+                        self.cx.errors.truncate(errors + 1);
                         break;
                     }
                 }
@@ -142,20 +142,20 @@ impl<'a> Checker<'a> {
         let mut chain: Vec<(&'a PopulationDecl, FileId)> = Vec::new();
         let mut at = name.clone();
         loop {
-            let found = match self.populations.resolve(&at) {
+            let found = match self.decls.populations.resolve(&at) {
                 Ok(found) => found,
                 Err(e) => {
                     self.error(e);
                     return None;
                 }
             };
-            if chain.len() >= self.limits.alias_chain {
+            if chain.len() >= self.cx.limits.alias_chain {
                 self.error(Error::new(
                     ErrorKind::TooLarge {
                         what: "a chain of populations".into(),
                         limit: format!(
                             "{} (or it loops; --max-alias-chain)",
-                            self.limits.alias_chain
+                            self.cx.limits.alias_chain
                         ),
                     },
                     at.span,
@@ -318,7 +318,7 @@ impl<'a> Checker<'a> {
     /// Whether a profile of this name is declared (else a diagnostic at
     /// the name, with the nearest names).
     fn known_profile(&mut self, name: &Name) -> Option<()> {
-        match self.profiles.resolve(name) {
+        match self.decls.profiles.resolve(name) {
             Ok(_) => Some(()),
             Err(e) => {
                 self.error(e);
@@ -351,9 +351,9 @@ impl<'a> Checker<'a> {
 
     fn population_size(&mut self, items: &Items<'a>) -> Option<usize> {
         let Some((e, file)) = items.size else {
-            return Some(1000.min(self.limits.people));
+            return Some(1000.min(self.cx.limits.people));
         };
-        let most = self.limits.people;
+        let most = self.cx.limits.people;
         let size = self.in_file(file, |c| c.whole(e, "a population's size", 1.0, f64::MAX))?;
         if size > most as f64 {
             self.error(Error::new(
@@ -540,10 +540,10 @@ impl<'a> Checker<'a> {
             ));
             return None;
         };
-        let outer = self.params.len();
+        let outer = self.built.params.len();
         self.bind_measurements(drawn, quantities);
         let built = self.member_with_names(name, drawn, m, m_file, b, b_file, items.vision);
-        self.params.truncate(outer);
+        self.built.params.truncate(outer);
         built
     }
 
@@ -608,12 +608,12 @@ impl<'a> Checker<'a> {
         let measured = &rows.rows[drawn.row];
         for (column, value) in rows.columns.iter().zip(&measured.lengths_mm) {
             let q = Quantity::dimensioned(*value, Dim::LENGTH);
-            self.params.push((column.clone(), Some(q)));
+            self.built.params.push((column.clone(), Some(q)));
         }
         let age = Quantity::dimensioned(drawn.age_years, Dim::NONE);
-        self.params.push(("age".into(), Some(age)));
+        self.built.params.push(("age".into(), Some(age)));
         for ((name, _), q) in drawn.values.iter().zip(quantities) {
-            self.params.push((name.clone(), Some(*q)));
+            self.built.params.push((name.clone(), Some(*q)));
         }
     }
 }

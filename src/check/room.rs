@@ -15,7 +15,7 @@ use crate::syntax::ast::{BoxDecl, DoorDecl, RoomDecl, RoomItem, SurfaceDecl};
 
 impl Checker<'_> {
     pub(super) fn rooms(&mut self) -> Vec<Room> {
-        let decls: Vec<_> = self.rooms.iter().map(|(_, d, f)| (d, f)).collect();
+        let decls: Vec<_> = self.decls.rooms.iter().map(|(_, d, f)| (d, f)).collect();
         let mut rooms = Vec::new();
         // Names to where they were first declared: one lookup per name.
         let mut target_names: HashMap<&str, Span> = HashMap::new();
@@ -67,7 +67,7 @@ impl Checker<'_> {
             .iter()
             .filter(|i| matches!(i, RoomItem::Box(_) | RoomItem::Mesh(_)))
             .count();
-        if box_count > self.limits.boxes {
+        if box_count > self.cx.limits.boxes {
             self.error(Error::new(
                 ErrorKind::TooLarge {
                     what: format!(
@@ -77,7 +77,7 @@ impl Checker<'_> {
                     ),
                     limit: format!(
                         "{} boxes and meshes in one room (--max-boxes)",
-                        thousands(self.limits.boxes as u64)
+                        thousands(self.cx.limits.boxes as u64)
                     ),
                 },
                 decl.name.span,

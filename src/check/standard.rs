@@ -15,7 +15,7 @@ use crate::syntax::ast::StandardDecl;
 
 impl Checker<'_> {
     pub(super) fn standards(&mut self, rooms: &[Room]) -> Vec<StandardSpec> {
-        let decls = std::mem::take(&mut self.standards);
+        let decls = std::mem::take(&mut self.decls.standards);
         let mut out = Vec::new();
         for (decl, file) in decls {
             if let Some(specs) = self.in_file(file, |c| c.standard(decl, rooms)) {
@@ -27,8 +27,8 @@ impl Checker<'_> {
 
     fn standard(&mut self, decl: &StandardDecl, rooms: &[Room]) -> Option<Vec<StandardSpec>> {
         let name = &decl.name;
-        let Some(plugin) = self.registry.standard(&name.value).cloned() else {
-            let names = self.registry.names(PluginKind::Standard);
+        let Some(plugin) = self.cx.registry.standard(&name.value).cloned() else {
+            let names = self.cx.registry.names(PluginKind::Standard);
             self.error(Error::new(
                 ErrorKind::UnknownPlugin {
                     kind: "standard",

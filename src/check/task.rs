@@ -38,8 +38,8 @@ impl Checker<'_> {
         bases: &[Arc<dyn Base>],
         populations: &[Population],
     ) -> Vec<TaskSpec> {
-        let decls = std::mem::take(&mut self.tasks);
-        self.target_index = rooms
+        let decls = std::mem::take(&mut self.decls.tasks);
+        self.built.target_index = rooms
             .iter()
             .enumerate()
             .flat_map(|(r, room)| {
@@ -66,8 +66,8 @@ impl Checker<'_> {
     fn task(&mut self, decl: &TaskDecl, rooms: &[Room], by: &People) -> Option<Vec<TaskSpec>> {
         let (persons, bases) = (by.persons, by.bases);
         let kind = &decl.kind;
-        let Some(plugin) = self.registry.task(&kind.value).cloned() else {
-            let names = self.registry.names(PluginKind::Task);
+        let Some(plugin) = self.cx.registry.task(&kind.value).cloned() else {
+            let names = self.cx.registry.names(PluginKind::Task);
             self.error(Error::new(
                 ErrorKind::UnknownPlugin {
                     kind: "task",
@@ -97,7 +97,7 @@ impl Checker<'_> {
         // A population's first person stands for all of them here: they
         // share a body's shape and a base.
         let people: Vec<usize> = who.iter().map(|w| w.person).collect();
-        let task: Arc<dyn Task> = match plugin.configure(&options, self.registry) {
+        let task: Arc<dyn Task> = match plugin.configure(&options, self.cx.registry) {
             Ok(task) => Arc::from(task),
             Err(e) => {
                 self.settings_error(&label, &e, &decl.options, decl.span);
@@ -235,17 +235,19 @@ impl Checker<'_> {
 
     fn target_subject(&mut self, s: &Spanned<Vec<String>>, rooms: &[Room]) -> Option<Resolved> {
         let name = s.value.join(".");
-        if let Some(&(r, t)) = self.target_index.get(&name) {
+        if let Some(&(r, t)) = self.built.target_index.get(&name) {
             return Some((r, SubjectRef::Target(t)));
         }
         let targets = rooms
             .iter()
             .flat_map(|r| r.targets.iter().map(|t| t.name.as_str()));
         // A target whose room failed to check has reported its own errors.
-        let declared =
-            self.rooms.iter().flat_map(|(_, d, _)| d.items.iter()).any(
-                |i| matches!(i, crate::syntax::ast::RoomItem::Target(t) if t.name.value == name),
-            );
+        let declared = self
+            .decls
+            .rooms
+            .iter()
+            .flat_map(|(_, d, _)| d.items.iter())
+            .any(|i| matches!(i, crate::syntax::ast::RoomItem::Target(t) if t.name.value == name));
         if !declared {
             self.error(Error::unknown("target", &name, s.span, targets));
         }
@@ -342,18 +344,22 @@ impl Checker<'_> {
             });
         }
         // A population that failed to build has reported its own errors.
-        let declared =
-            self.persons.get(&name.value).is_some() || self.populations.get(&name.value).is_some();
+        let declared = self.decls.persons.get(&name.value).is_some()
+            || self.decls.populations.get(&name.value).is_some();
         if declared {
             return None;
         }
-        if self.populations.names().next().is_none() {
-            if let Err(e) = self.persons.resolve(name) {
+        if self.decls.populations.names().next().is_none() {
+            if let Err(e) = self.decls.persons.resolve(name) {
                 self.error(e);
             }
             return None;
         }
-        let known = self.persons.names().chain(self.populations.names());
+        let known = self
+            .decls
+            .persons
+            .names()
+            .chain(self.decls.populations.names());
         self.error(Error::unknown(
             "person or population",
             &name.value,

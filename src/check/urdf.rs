@@ -13,7 +13,7 @@ use crate::syntax::ast::UrdfSource;
 impl Checker<'_> {
     pub(super) fn urdf_body(&mut self, source: &UrdfSource) -> Option<Body> {
         let path = self.relative_to_file(&source.path.value);
-        self.data_files.push(path.clone());
+        self.cx.data_files.push(path.clone());
         let shown = path.display().to_string();
         let fail = |c: &mut Self, reason: String, suggestion: Option<String>, span| {
             let kind = ErrorKind::BadUrdf {
@@ -24,8 +24,8 @@ impl Checker<'_> {
             c.error(Error::new(kind, span));
             None
         };
-        let limit = self.limits.file_bytes;
-        let text = match read::read(&path, FileKind::Urdf, &self.sources.allowed, limit) {
+        let limit = self.cx.limits.file_bytes;
+        let text = match read::read(&path, FileKind::Urdf, &self.cx.sources.allowed, limit) {
             Ok(bytes) => String::from_utf8(bytes).map_err(|_| "it is not UTF-8 text".to_string()),
             Err(e) => Err(e.to_string()),
         };
@@ -33,10 +33,10 @@ impl Checker<'_> {
             Ok(t) => t,
             Err(reason) => return fail(self, reason, None, source.path.span),
         };
-        if let Some(depth) = xml_too_deep(&text, self.limits.nesting) {
+        if let Some(depth) = xml_too_deep(&text, self.cx.limits.nesting) {
             let reason = format!(
                 "its elements nest {depth} deep, beyond the limit of {} levels (--max-nesting)",
-                self.limits.nesting
+                self.cx.limits.nesting
             );
             return fail(self, reason, None, source.path.span);
         }
