@@ -480,17 +480,18 @@ impl Error {
     }
 
     /// An unknown name: `name`, a `what` ("target", "room"), at `span`,
-    /// with the nearest of the `known` names as a suggestion.
+    /// with the nearest of the `known` names as a suggestion (while the
+    /// check's `suggestions` last).
     pub fn unknown<'a>(
         what: &'static str,
-        name: &str,
-        span: Span,
+        (name, span): (&str, Span),
         known: impl IntoIterator<Item = &'a str>,
+        suggestions: &crate::names::Suggestions,
     ) -> Self {
         let kind = ErrorKind::UnknownName {
             what,
             name: name.to_string(),
-            suggestion: crate::names::suggest(name, known),
+            suggestion: suggestions.suggest(name, known),
         };
         Error::new(kind, span)
     }

@@ -154,10 +154,12 @@ impl<'a> Session<'a> {
         input: Input<'_>,
         registry: &Registry,
     ) -> (Sources, Result<Scenario, Diagnostics>) {
-        let _suggestions = names::fresh_budget();
-        let (mut sources, loaded) = loader::load(input, &self.limits, self.also_allowed);
+        // One budget of did-you-mean suggestions for the whole check.
+        let suggestions = names::Suggestions::default();
+        let (mut sources, loaded) =
+            loader::load(input, &self.limits, self.also_allowed, &suggestions);
         let result = loaded.and_then(|files| {
-            let checked = check::check(&sources, &files, registry, &self.limits);
+            let checked = check::check(&sources, &files, registry, &self.limits, &suggestions);
             let (data_files, checked) = checked;
             sources.add_data_files(data_files);
             checked

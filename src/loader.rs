@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 
 use crate::error::{Diagnostics, Error, ErrorKind};
 use crate::limits::Limits;
-use crate::names::suggest;
+use crate::names::Suggestions;
 use crate::read::{self, Allowed, FileKind, ReadError};
 use crate::source::{Origin, Sources};
 use crate::span::{FileId, Span};
@@ -42,10 +42,15 @@ pub fn load(
     input: Input<'_>,
     limits: &Limits,
     also_allowed: &[PathBuf],
+    suggestions: &Suggestions,
 ) -> (Sources, Result<Vec<LoadedFile>, Diagnostics>) {
     let mut loader = Loader {
         limits: *limits,
-        ..Loader::default()
+        suggestions,
+        loaded: Loaded::default(),
+        errors: Vec::new(),
+        done: HashMap::new(),
+        stack: Vec::new(),
     };
     let root = match input {
         Input::Path(path) => Some(path),
@@ -82,8 +87,9 @@ enum Key {
     Memory,
 }
 
-#[derive(Default)]
-struct Loader {
+struct Loader<'s> {
+    /// The did-you-mean suggestions the check may still make.
+    suggestions: &'s Suggestions,
     loaded: Loaded,
     errors: Vec<Error>,
     /// Files fully loaded, by identity.
@@ -117,7 +123,7 @@ fn canonical(path: &Path) -> PathBuf {
     path.canonicalize().unwrap_or_else(|_| path.to_path_buf())
 }
 
-impl Loader {
+impl Loader<'_> {
     fn load_disk(&mut self, path: &Path, key: Key, used_at: Option<Span>) {
         let shown = path.display().to_string();
         let limit = self.limits.file_bytes.min(self.limits.scenario_bytes);
@@ -247,7 +253,7 @@ impl Loader {
             self.errors.push(Error::new(
                 ErrorKind::UnknownStdModule {
                     name: name.to_string(),
-                    suggestion: suggest(name, names.iter().copied()),
+                    suggestion: self.suggestions.suggest(name, names.iter().copied()),
                     available: names.join(", "),
                 },
                 span,

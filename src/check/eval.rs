@@ -159,7 +159,7 @@ impl Checker<'_> {
         }
         let params = self.built.params.iter().map(|(n, _)| n.as_str());
         let known = self.decls.lets.names().chain(params);
-        self.error(Error::unknown("constant", name, span, known));
+        self.error(self.unknown("constant", name, span, known));
         None
     }
 

@@ -89,12 +89,7 @@ impl Checker<'_> {
                 .iter()
                 .map(|p| p.name.as_str())
                 .chain(a.populations.iter().map(|p| p.name.as_str()));
-            self.error(Error::unknown(
-                "person or population",
-                &who.value,
-                who.span,
-                names,
-            ));
+            self.error(self.unknown("person or population", &who.value, who.span, names));
             return None;
         }
         self.known_subject(subject, a)?;
@@ -208,12 +203,7 @@ impl Checker<'_> {
                 return None;
             }
             let names = a.populations.iter().map(|x| x.name.as_str());
-            self.error(Error::unknown(
-                "population",
-                &population.value,
-                population.span,
-                names,
-            ));
+            self.error(self.unknown("population", &population.value, population.span, names));
             return None;
         };
         self.known_subject(subject, a)?;
@@ -283,7 +273,7 @@ impl Checker<'_> {
                 return None;
             }
             let names = a.rooms.iter().map(|x| x.name.as_str());
-            self.error(Error::unknown("room", &room.value, room.span, names));
+            self.error(self.unknown("room", &room.value, room.span, names));
             return None;
         };
         let entries: Vec<usize> = (a.standards.iter().enumerate())
@@ -329,7 +319,7 @@ impl Checker<'_> {
         if failed_room_declares {
             return None;
         }
-        self.error(Error::unknown(
+        self.error(self.unknown(
             "target or surface",
             &name,
             subject.span,

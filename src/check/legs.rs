@@ -32,12 +32,7 @@ impl Checker<'_> {
         let mut ok = true;
         for (name, expr) in &legs.args {
             let Some(i) = LEG_PARAMS.iter().position(|p| *p == name.value) else {
-                self.error(Error::unknown(
-                    "leg dimension",
-                    &name.value,
-                    name.span,
-                    LEG_PARAMS,
-                ));
+                self.error(self.unknown("leg dimension", &name.value, name.span, LEG_PARAMS));
                 ok = false;
                 continue;
             };

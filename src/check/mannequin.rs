@@ -53,7 +53,7 @@ impl Checker<'_> {
     /// The body of mannequin reference `r` (written in `file`): the named
     /// mannequin with the parameters `r` gives.
     pub(super) fn body_of(&mut self, r: &MannequinRef, file: FileId, depth: usize) -> Option<Body> {
-        let (decl, decl_file) = match self.decls.mannequins.resolve(&r.name) {
+        let (decl, decl_file) = match self.decls.mannequins.resolve(&r.name, self.cx.suggestions) {
             Ok(found) => found,
             Err(e) => {
                 self.error(e);
@@ -273,7 +273,7 @@ impl Checker<'_> {
         for (name, expr) in args {
             if !decl.params.iter().any(|(p, _)| p.value == name.value) {
                 let names = decl.params.iter().map(|(p, _)| p.value.as_str());
-                self.error(Error::unknown(
+                self.error(self.unknown(
                     "parameter of this mannequin",
                     &name.value,
                     name.span,
@@ -579,7 +579,7 @@ impl Checker<'_> {
             match joints.iter().position(|n| n.value == name.value) {
                 Some(i) => indices.push(i),
                 None => {
-                    self.error(Error::unknown(
+                    self.error(self.unknown(
                         "joint of this mannequin",
                         &name.value,
                         name.span,
@@ -673,7 +673,7 @@ impl Checker<'_> {
     ) -> Option<usize> {
         let found = earlier.iter().position(|n| n.value == name.value);
         if found.is_none() {
-            self.error(Error::unknown(
+            self.error(self.unknown(
                 "joint declared before this one",
                 &name.value,
                 name.span,
@@ -830,12 +830,7 @@ impl Checker<'_> {
         let mut ok = true;
         for (key, expr) in &j.dh {
             let Some(i) = DH_PARAMS.iter().position(|p| *p == key.value) else {
-                self.error(Error::unknown(
-                    "DH parameter",
-                    &key.value,
-                    key.span,
-                    DH_PARAMS,
-                ));
+                self.error(self.unknown("DH parameter", &key.value, key.span, DH_PARAMS));
                 ok = false;
                 continue;
             };

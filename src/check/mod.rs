@@ -26,6 +26,7 @@ use crate::error::{Diagnostics, Error, ErrorKind};
 use crate::kinematics::Body;
 use crate::limits::Limits;
 use crate::loader::LoadedFile;
+use crate::names::Suggestions;
 use crate::plugin::Registry;
 use crate::scenario::{Scenario, WorkBound};
 use crate::source::Sources;
@@ -42,9 +43,10 @@ pub fn check(
     files: &[LoadedFile],
     registry: &Registry,
     limits: &Limits,
+    suggestions: &Suggestions,
 ) -> (Vec<PathBuf>, Result<Scenario, Diagnostics>) {
     let root = files.last().map(|f| f.id).unwrap_or_default();
-    let mut c = Checker::new(registry, sources, *limits);
+    let mut c = Checker::new(registry, sources, *limits, suggestions);
     for f in files {
         let defaults = c.file_defaults(&f.ast.items);
         c.cx.defaults_of.insert(f.id, defaults);
@@ -112,6 +114,8 @@ struct Context<'a> {
     evaluated_text: (u64, bool),
     sources: &'a Sources,
     errors: Vec<Error>,
+    /// The did-you-mean suggestions the check may still make.
+    suggestions: &'a Suggestions,
     defaults_of: HashMap<FileId, UnitDefaults>,
     /// The default units of the file whose text is being evaluated.
     defaults: UnitDefaults,
@@ -162,7 +166,12 @@ struct Checker<'a> {
 }
 
 impl<'a> Checker<'a> {
-    fn new(registry: &'a Registry, sources: &'a Sources, limits: Limits) -> Self {
+    fn new(
+        registry: &'a Registry,
+        sources: &'a Sources,
+        limits: Limits,
+        suggestions: &'a Suggestions,
+    ) -> Self {
         Checker {
             cx: Context {
                 registry,
@@ -173,6 +182,7 @@ impl<'a> Checker<'a> {
                 evaluated_text: (0, false),
                 sources,
                 errors: Vec::new(),
+                suggestions,
                 defaults_of: HashMap::new(),
                 defaults: UnitDefaults::default(),
                 file: FileId::default(),
@@ -196,6 +206,18 @@ impl<'a> Checker<'a> {
 
     fn error(&mut self, e: Error) {
         self.cx.errors.push(e);
+    }
+
+    /// An unknown name (`Error::unknown`), with a suggestion while the
+    /// check's budget lasts.
+    fn unknown<'k>(
+        &self,
+        what: &'static str,
+        name: &str,
+        span: crate::span::Span,
+        known: impl IntoIterator<Item = &'k str>,
+    ) -> Error {
+        Error::unknown(what, (name, span), known, self.cx.suggestions)
     }
 
     /// Run `f` with the default units of `file`.

@@ -4,7 +4,6 @@
 use super::eval::fmt_num;
 use super::Checker;
 use crate::error::{Error, ErrorKind};
-use crate::names::suggest;
 use crate::options::{Options, ParamKind, ParamSpec, SettingsError, Value};
 use crate::span::Span;
 use crate::syntax::ast::{Expr, ExprKind, OptionDecl, OptionValue, PluginUse};
@@ -32,7 +31,10 @@ impl Checker<'_> {
                     ErrorKind::UnknownOption {
                         plugin: label.to_string(),
                         name: opt.name.value.clone(),
-                        suggestion: suggest(&opt.name.value, names.iter().copied()),
+                        suggestion: self
+                            .cx
+                            .suggestions
+                            .suggest(&opt.name.value, names.iter().copied()),
                         available: if names.is_empty() {
                             "none".into()
                         } else {

@@ -6,7 +6,6 @@ use std::sync::Arc;
 use super::Checker;
 use crate::error::{thousands, Error, ErrorKind};
 use crate::kinematics::{Body, Joint, JointKind};
-use crate::names::suggest;
 use crate::options::{Options, PluginConfig, PluginKind, Settings};
 use crate::plugin::{Base, BaseError};
 use crate::scene::{Person, Physique, Vision};
@@ -76,7 +75,7 @@ impl Checker<'_> {
         let mut bytes = 0_u64;
         let mut name = name.clone();
         for _ in 0..=self.cx.limits.alias_chain {
-            let Ok((decl, _)) = self.decls.mannequins.resolve(&name) else {
+            let Ok((decl, _)) = self.decls.mannequins.resolve(&name, self.cx.suggestions) else {
                 break;
             };
             bytes += u64::from(decl.span.end.saturating_sub(decl.span.start));
@@ -244,7 +243,8 @@ impl Checker<'_> {
         let params = Vision::params();
         let mut preset_vision = Vision::default();
         if let Some(name) = &vision.preset {
-            let (preset, file) = match self.decls.vision_presets.resolve(name) {
+            let (preset, file) = match self.decls.vision_presets.resolve(name, self.cx.suggestions)
+            {
                 Ok(found) => found,
                 Err(e) => {
                     self.error(e);
@@ -342,7 +342,11 @@ impl Checker<'_> {
                     mannequin.name.span,
                 );
                 // Where the radii are given: the declaration.
-                if let Ok((decl, _)) = self.decls.mannequins.resolve(&mannequin.name) {
+                if let Ok((decl, _)) = self
+                    .decls
+                    .mannequins
+                    .resolve(&mannequin.name, self.cx.suggestions)
+                {
                     error = match decl.urdf {
                         Some(_) => {
                             error.with_note(decl.span, "declared here: `radius` goes after `tip`")
@@ -395,7 +399,7 @@ impl Checker<'_> {
 
     /// Every override of profile `name`, in its own file's units.
     pub(super) fn apply_profile(&mut self, joints: &mut [Joint], name: &Name) -> Option<()> {
-        let (profile, file) = match self.decls.profiles.resolve(name) {
+        let (profile, file) = match self.decls.profiles.resolve(name, self.cx.suggestions) {
             Ok(found) => found,
             Err(e) => {
                 self.error(e);
@@ -414,7 +418,7 @@ impl Checker<'_> {
     fn joint_index(&mut self, joints: &[Joint], joint: &Name) -> Option<usize> {
         let found = joints.iter().position(|j| j.name == joint.value);
         if found.is_none() {
-            self.error(Error::unknown(
+            self.error(self.unknown(
                 "joint",
                 &joint.value,
                 joint.span,
@@ -436,7 +440,10 @@ impl Checker<'_> {
                 ErrorKind::UnknownPlugin {
                     kind: kind.noun(),
                     name: use_.name.value.clone(),
-                    suggestion: suggest(&use_.name.value, names.iter().copied()),
+                    suggestion: self
+                        .cx
+                        .suggestions
+                        .suggest(&use_.name.value, names.iter().copied()),
                     available: names.join(", "),
                 },
                 use_.name.span,

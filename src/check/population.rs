@@ -142,7 +142,7 @@ impl<'a> Checker<'a> {
         let mut chain: Vec<(&'a PopulationDecl, FileId)> = Vec::new();
         let mut at = name.clone();
         loop {
-            let found = match self.decls.populations.resolve(&at) {
+            let found = match self.decls.populations.resolve(&at, self.cx.suggestions) {
                 Ok(found) => found,
                 Err(e) => {
                     self.error(e);
@@ -318,7 +318,7 @@ impl<'a> Checker<'a> {
     /// Whether a profile of this name is declared (else a diagnostic at
     /// the name, with the nearest names).
     fn known_profile(&mut self, name: &Name) -> Option<()> {
-        match self.decls.profiles.resolve(name) {
+        match self.decls.profiles.resolve(name, self.cx.suggestions) {
             Ok(_) => Some(()),
             Err(e) => {
                 self.error(e);

@@ -7,7 +7,6 @@ use std::sync::Arc;
 
 use super::Checker;
 use crate::error::{Error, ErrorKind};
-use crate::names::suggest;
 use crate::plugin::{PluginKind, Standard};
 use crate::scenario::StandardSpec;
 use crate::scene::Room;
@@ -33,7 +32,10 @@ impl Checker<'_> {
                 ErrorKind::UnknownPlugin {
                     kind: "standard",
                     name: name.value.clone(),
-                    suggestion: suggest(&name.value, names.iter().copied()),
+                    suggestion: self
+                        .cx
+                        .suggestions
+                        .suggest(&name.value, names.iter().copied()),
                     available: names.join(", "),
                 },
                 name.span,
@@ -47,7 +49,7 @@ impl Checker<'_> {
                 Some(i) => vec![i],
                 None => {
                     let names = rooms.iter().map(|r| r.name.as_str());
-                    self.error(Error::unknown("room", &room.value, room.span, names));
+                    self.error(self.unknown("room", &room.value, room.span, names));
                     return None;
                 }
             },

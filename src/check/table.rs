@@ -4,6 +4,7 @@
 use std::collections::HashMap;
 
 use crate::error::Error;
+use crate::names::Suggestions;
 use crate::span::{FileId, Name, Span};
 
 pub struct Table<'a, T> {
@@ -41,9 +42,19 @@ impl<'a, T> Table<'a, T> {
     }
 
     /// Look up `name`, or the error for an unknown name with a suggestion.
-    pub fn resolve(&self, name: &Name) -> Result<(&'a T, FileId), Error> {
-        self.get(&name.value)
-            .ok_or_else(|| Error::unknown(self.what, &name.value, name.span, self.names()))
+    pub fn resolve(
+        &self,
+        name: &Name,
+        suggestions: &Suggestions,
+    ) -> Result<(&'a T, FileId), Error> {
+        self.get(&name.value).ok_or_else(|| {
+            Error::unknown(
+                self.what,
+                (&name.value, name.span),
+                self.names(),
+                suggestions,
+            )
+        })
     }
 
     pub fn names(&self) -> impl Iterator<Item = &str> {

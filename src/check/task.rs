@@ -6,7 +6,6 @@ use std::sync::Arc;
 
 use super::Checker;
 use crate::error::{Error, ErrorKind};
-use crate::names::suggest;
 use crate::plugin::{Base, PluginKind, SubjectKind, Task};
 use crate::scenario::{SubjectRef, TaskSpec};
 use crate::scene::{Person, Population, Room, FACES};
@@ -72,7 +71,10 @@ impl Checker<'_> {
                 ErrorKind::UnknownPlugin {
                     kind: "task",
                     name: kind.value.clone(),
-                    suggestion: suggest(&kind.value, names.iter().copied()),
+                    suggestion: self
+                        .cx
+                        .suggestions
+                        .suggest(&kind.value, names.iter().copied()),
                     available: names.join(", "),
                 },
                 kind.span,
@@ -249,7 +251,7 @@ impl Checker<'_> {
             .flat_map(|(_, d, _)| d.items.iter())
             .any(|i| matches!(i, crate::syntax::ast::RoomItem::Target(t) if t.name.value == name));
         if !declared {
-            self.error(Error::unknown("target", &name, s.span, targets));
+            self.error(self.unknown("target", &name, s.span, targets));
         }
         None
     }
@@ -316,12 +318,7 @@ impl Checker<'_> {
             }
             [] => return None,
         };
-        self.error(Error::unknown(
-            what,
-            wrong,
-            s.span,
-            candidates.iter().map(String::as_str),
-        ));
+        self.error(self.unknown(what, wrong, s.span, candidates.iter().map(String::as_str)));
         None
     }
 
@@ -350,7 +347,7 @@ impl Checker<'_> {
             return None;
         }
         if self.decls.populations.names().next().is_none() {
-            if let Err(e) = self.decls.persons.resolve(name) {
+            if let Err(e) = self.decls.persons.resolve(name, self.cx.suggestions) {
                 self.error(e);
             }
             return None;
@@ -360,12 +357,7 @@ impl Checker<'_> {
             .persons
             .names()
             .chain(self.decls.populations.names());
-        self.error(Error::unknown(
-            "person or population",
-            &name.value,
-            name.span,
-            known,
-        ));
+        self.error(self.unknown("person or population", &name.value, name.span, known));
         None
     }
 }

@@ -6,7 +6,6 @@
 use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::kinematics::{chain_from_urdf, Body, UrdfError};
-use crate::names::suggest;
 use crate::read::{self, FileKind};
 use crate::syntax::ast::UrdfSource;
 
@@ -65,7 +64,10 @@ impl Checker<'_> {
                 } else {
                     source.tip.span
                 };
-                let suggestion = suggest(&link, available.iter().map(String::as_str));
+                let suggestion = self
+                    .cx
+                    .suggestions
+                    .suggest(&link, available.iter().map(String::as_str));
                 fail(
                     self,
                     UrdfError::UnknownLink { link, available }.to_string(),
