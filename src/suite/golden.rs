@@ -39,17 +39,13 @@ pub enum Compared {
     Unreadable(String),
 }
 
-/// One entry of the run: its kind, its JSON and its answer.
+/// One entry of the run: its kind, its JSON, its answer and what it
+/// asks (worked out once, for every golden entry it is matched against).
 struct Entry {
     kind: Kind,
     value: Value,
     answer: Answer,
-}
-
-impl Entry {
-    fn asks(&self) -> Asks {
-        self.kind.asks(&self.value)
-    }
+    asks: Asks,
 }
 
 /// `new` (the run's entries and their JSON) against `golden` (the text of a
@@ -68,10 +64,15 @@ pub fn compare(golden: &str, new: &[TaskReport], tolerance: Tolerance) -> Compar
     };
     let entries: Vec<Entry> = new
         .iter()
-        .map(|t| Entry {
-            kind: Kind::of_report(t),
-            value: serde_json::to_value(t).unwrap_or(Value::Null),
-            answer: t.answer(),
+        .map(|t| {
+            let kind = Kind::of_report(t);
+            let value = serde_json::to_value(t).unwrap_or(Value::Null);
+            Entry {
+                asks: kind.asks(&value),
+                kind,
+                value,
+                answer: t.answer(),
+            }
         })
         .collect();
     let mut changes = Vec::new();
@@ -85,7 +86,7 @@ pub fn compare(golden: &str, new: &[TaskReport], tolerance: Tolerance) -> Compar
             continue;
         };
         let asks = old_kind.asks(old);
-        let found = (entries.iter().enumerate()).find(|(k, e)| !matched[*k] && e.asks() == asks);
+        let found = (entries.iter().enumerate()).find(|(k, e)| !matched[*k] && e.asks == asks);
         match found {
             Some((k, entry)) => {
                 matched[k] = true;
@@ -101,7 +102,7 @@ pub fn compare(golden: &str, new: &[TaskReport], tolerance: Tolerance) -> Compar
         if !matched[k] {
             changes.push(format!(
                 "{}: not in the golden report (`reach test --update` signs it off)",
-                entry.asks().words()
+                entry.asks.words()
             ));
         }
     }
@@ -116,8 +117,7 @@ pub fn compare(golden: &str, new: &[TaskReport], tolerance: Tolerance) -> Compar
 /// verdict that flipped (or an entry of another kind), else what the
 /// kind counts as a change.
 fn entry_changes((old_kind, old): (Kind, &Value), new: &Entry, tol: Tolerance) -> Vec<String> {
-    let asks = new.asks();
-    let who = format!("{}: {}", asks.subject, asks.who);
+    let who = format!("{}: {}", new.asks.subject, new.asks.who);
     let old_ok = old["ok"].as_bool().unwrap_or(false);
     if old_ok != new.answer.ok || old_kind != new.kind {
         let was = old_kind.verdict_words(old);
