@@ -20,7 +20,6 @@ use std::time::{Duration, SystemTime};
 
 use std::sync::Arc;
 
-use super::html;
 use super::journal;
 use super::placing;
 use crate::error::{Error, ErrorKind};
@@ -36,23 +35,19 @@ pub const MANIFEST: &str = ".reach-set";
 const STALE: Duration = Duration::from_secs(60);
 
 /// The set's files, by name, in the order they are written: every
-/// format's, in the order they are registered, and the page's stamp last
-/// (a page that sees it new finds itself new too).
+/// format's, in the order they are registered, each format's in its own
+/// order (the page before the stamp it polls: a page that sees the stamp
+/// new finds itself new too).
 pub fn output_set(
     report: &Report,
     scenario: &Scenario,
     formats: &[Arc<dyn FormatPlugin>],
 ) -> Vec<(String, Vec<u8>)> {
     let scene = scenario.format_scene();
-    let mut files: Vec<(String, Vec<u8>)> = formats
+    formats
         .iter()
         .flat_map(|format| format.files(report, &scene))
-        .collect();
-    let (mut set, stamp): (Vec<_>, Vec<_>) = files
-        .drain(..)
-        .partition(|(name, _)| name != html::STAMP_FILE);
-    set.extend(stamp);
-    set
+        .collect()
 }
 
 /// Every format's files of `report`, with the set's list, as one set in

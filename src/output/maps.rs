@@ -4,7 +4,7 @@
 //! map: nothing for standard output).
 
 use super::map_files::{self, Picture};
-use super::view::view_data;
+use super::view::room_views;
 use crate::plugin::{FormatPlugin, FormatScene, ParamSpec, Plugin};
 use crate::report::{Report, TaskReport};
 
@@ -31,7 +31,8 @@ impl FormatPlugin for Maps {
         if !report.tasks.iter().any(|t| map_file_parts(t).is_some()) {
             return files;
         }
-        let view = view_data(report, scene);
+        // The rooms as the page draws them, for the furniture beside a map.
+        let rooms = room_views(scene.rooms);
         let mut stems: Vec<String> = Vec::new();
         for (index, task) in report.tasks.iter().enumerate() {
             let Some((base, csv, picture)) = map_file_parts(task) else {
@@ -47,7 +48,7 @@ impl FormatPlugin for Maps {
                 n => format!("{base}-{}", n + 1),
             };
             files.push((format!("{stem}.csv"), csv.into_bytes()));
-            let room = scene.tasks.get(index).and_then(|t| view.rooms.get(t.room));
+            let room = scene.tasks.get(index).and_then(|t| rooms.get(t.room));
             let svg = map_files::picture_svg(&picture, room);
             files.push((format!("{stem}.svg"), svg.into_bytes()));
         }

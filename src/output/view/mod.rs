@@ -202,10 +202,9 @@ pub struct CellsView {
 
 /// The view's data for `report` over `scene`.
 pub fn view_data(report: &Report, scene: &FormatScene<'_>) -> ViewData {
-    let budget = mesh_budget(scene.rooms);
     ViewData {
         title: report.file.clone(),
-        rooms: scene.rooms.iter().map(|r| room_view(r, budget)).collect(),
+        rooms: room_views(scene.rooms),
         tasks: report
             .tasks
             .iter()
@@ -219,6 +218,12 @@ pub fn view_data(report: &Report, scene: &FormatScene<'_>) -> ViewData {
             .collect(),
         expectations: report.expectations.clone(),
     }
+}
+
+/// The rooms as drawn, their large meshes simplified for the picture.
+pub fn room_views(rooms: &[Room]) -> Vec<RoomView> {
+    let budget = mesh_budget(rooms);
+    rooms.iter().map(|r| room_view(r, budget)).collect()
 }
 
 /// Triangles per mesh when all of them would exceed the budget.
