@@ -7,13 +7,12 @@
 
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
 
 use clap::{ArgMatches, Args, ColorChoice, CommandFactory, FromArgMatches, Parser, Subcommand};
 use reach::escape::escaped;
 use reach::limits::{CEILINGS, DEFAULTS};
 use reach::machine_diagnostics::Finding;
-use reach::plugin::{FormatPlugin, PluginKind, Registry};
+use reach::plugin::{PluginKind, Registry};
 use reach::report::TaskReport;
 use reach::{DiagnosticStyle, Diagnostics, Input, Limits};
 
@@ -491,35 +490,32 @@ const NOT_AS_EXPECTED: i32 = 3;
 /// A format with no text for standard output (`glb`, `maps`): a usage
 /// error, with the formats that have one.
 fn unprintable_format(registry: &Registry, format: &str) -> i32 {
-    let printing: Vec<&str> = (registry.formats().iter())
-        .filter(|f| f.prints())
-        .map(|f| f.name())
-        .collect();
     eprintln!(
         "error: format `{}` writes files only, which `--out DIR` writes with every other format's; `--format` picks what standard output shows: {}",
         escaped(format),
-        printing.join(", ")
+        format_names(registry, true)
     );
     2
 }
 
 fn unknown_format(registry: &Registry, format: &str) -> i32 {
-    let (printing, files_only): (Vec<_>, Vec<_>) =
-        registry.formats().iter().partition(|f| f.prints());
-    let names = |formats: &[&Arc<dyn FormatPlugin>]| {
-        formats
-            .iter()
-            .map(|f| f.name())
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
     eprintln!(
         "error: unknown format `{}` (formats: {}; written by --out only: {})",
         escaped(format),
-        names(&printing),
-        names(&files_only)
+        format_names(registry, true),
+        format_names(registry, false)
     );
     2
+}
+
+/// The names of the formats that print to standard output (`prints`), or
+/// of those that only write files.
+fn format_names(registry: &Registry, prints: bool) -> String {
+    (registry.formats().iter())
+        .filter(|f| f.prints() == prints)
+        .map(|f| f.name())
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 fn check(registry: &Registry, args: &LimitArgs, file: &Path, shown: &Shown) -> i32 {

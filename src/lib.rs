@@ -159,8 +159,8 @@ impl<'a> Session<'a> {
         let (mut sources, loaded) =
             loader::load(input, &self.limits, self.also_allowed, &suggestions);
         let result = loaded.and_then(|files| {
-            let checked = check::check(&sources, &files, registry, &self.limits, &suggestions);
-            let (data_files, checked) = checked;
+            let (data_files, checked) =
+                check::check(&sources, &files, registry, &self.limits, &suggestions);
             sources.add_data_files(data_files);
             checked
         });
@@ -194,7 +194,7 @@ pub fn check(input: Input<'_>, registry: &Registry) -> (Sources, Result<Scenario
 
 /// Run every task of a checked scenario with the defaults ([`Session::run`]).
 pub fn run(scenario: &Scenario) -> Result<Report, Error> {
-    run_on_this_pool(scenario, &progress::NoProgress).map(|ran| ran.report)
+    Session::default().run(scenario).map(|ran| ran.report)
 }
 
 fn run_on_this_pool(scenario: &Scenario, progress: &dyn progress::Progress) -> Result<Ran, Error> {
