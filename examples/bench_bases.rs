@@ -88,7 +88,7 @@ fn main() {
                 last_resort: None,
                 from_rest: true,
                 descents: None,
-                meter: reach::meter::Meter::unmetered(),
+                allowance: &reach::allowance::Unbounded,
                 solves: None,
             };
             let start = Instant::now();

@@ -1,17 +1,87 @@
-//! What a solver knows of the run it is part of: an [`Allowance`] it tells
-//! the work it does to, in units of about the cost of moving one joint
-//! once, and that says whether it may go on. How work is bounded, shared
+//! What a solver, a base or a standard knows of the run it is part of: an
+//! [`Allowance`] it tells the work it does to, in units of about the cost
+//! of moving one joint once, and that says whether it may go on. How work is bounded, shared
 //! between threads and counted per solve is the meter's (`crate::meter`),
 //! and what is kept for watch mode the engine's (`crate::engine`), not the
 //! solver's.
 
-/// What a computation tells its work to.
+use std::sync::Arc;
+
+/// What a computation tells its work to. A solver needs only
+/// [`Allowance::spend`] and [`Allowance::exhausted`]; the rest is for the
+/// long computations of bases and standards (a room's floor), whose
+/// defaults are those of an allowance that never runs out.
 pub trait Allowance: Sync {
     /// Add `units`; whether the computation may go on.
     fn spend(&self, units: u64) -> bool;
     /// Whether the computation must stop: the run it is part of has
     /// passed its bound (its answers will be thrown away).
     fn exhausted(&self) -> bool;
+    /// Whether the run would still be within its bound were `units` more
+    /// spent (nothing is spent).
+    fn would_stay_within(&self, _units: u64) -> bool {
+        true
+    }
+    /// Whether this task looks at the piece of work `key` (a piece of
+    /// floor) for the first time: it is paid for in full only then.
+    fn first_look(&self, _key: u64) -> bool {
+        true
+    }
+    /// Whether the run stays within its bound with the computation `key`
+    /// at `units` and every other in flight at what it has done
+    /// ([`Flight`]). Where it does not, the run is stopped.
+    fn flight_within(&self, _key: u64, _units: u64) -> bool {
+        true
+    }
+    /// The computation `key` is done (or given up): it no longer counts
+    /// as in flight.
+    fn flight_landed(&self, _key: u64) {}
+    /// The same allowance, to be kept by what cannot borrow it (the
+    /// obstacles a task's checks are put to, which charge the triangles
+    /// of meshes they test).
+    fn shared(&self) -> Arc<dyn Allowance + Send>;
+}
+
+impl dyn Allowance + '_ {
+    /// A computation of `key` the run will be charged for once it is
+    /// done (a person's floor), whose work so far counts against the
+    /// bound with every other in flight.
+    pub fn flight(&self, key: u64) -> Flight<'_> {
+        Flight {
+            allowance: self,
+            key,
+        }
+    }
+}
+
+/// A computation the run will be charged for once it is done, by a key
+/// that names what it works out (two threads working out the same thing
+/// count once), landed when dropped. Work charged only once done would
+/// let several such computations at once each run up to the whole bound,
+/// as if alone (ten people's floors in a cluttered room, two at a time:
+/// twice the time before the run stopped). Counting what each has done so
+/// far with what the run has spent stops it as soon as the sum passes the
+/// bound, and that stop is the answer every thread count gives: each
+/// flight's work is charged in full once done, so the run's sum would
+/// pass the bound anyway. A flight dropped leaves the count (its work
+/// then charged, or the run stopped).
+pub struct Flight<'a> {
+    allowance: &'a dyn Allowance,
+    key: u64,
+}
+
+impl Flight<'_> {
+    /// Whether the run stays within its bound with this computation at
+    /// `units`; where it does not, the caller cuts its work short.
+    pub fn within(&self, units: u64) -> bool {
+        self.allowance.flight_within(self.key, units)
+    }
+}
+
+impl Drop for Flight<'_> {
+    fn drop(&mut self) {
+        self.allowance.flight_landed(self.key);
+    }
 }
 
 /// An allowance that never runs out and keeps no count (benchmarks of one
@@ -24,6 +94,9 @@ impl Allowance for Unbounded {
     }
     fn exhausted(&self) -> bool {
         false
+    }
+    fn shared(&self) -> Arc<dyn Allowance + Send> {
+        Arc::new(Unbounded)
     }
 }
 

@@ -79,7 +79,8 @@ pub const PLAIN_SOLIDS: usize = 24;
 const SELF_PAIRS_PER_UNIT: u64 = 12;
 
 /// The work a whole run has spent, against its limit, and the work of
-/// what is being worked out for it now and charged once done ([`Flight`]).
+/// what is being worked out for it now and charged once done
+/// ([`crate::allowance::Flight`]).
 #[derive(Debug)]
 pub struct RunWork {
     spent: AtomicU64,
@@ -142,6 +143,42 @@ impl Allowance for Meter {
     fn exhausted(&self) -> bool {
         self.exceeded()
     }
+    fn would_stay_within(&self, units: u64) -> bool {
+        self.run
+            .as_ref()
+            .is_none_or(|run| run.spent().saturating_add(units) <= run.limit)
+    }
+    fn first_look(&self, key: u64) -> bool {
+        if self.run.is_none() {
+            return true;
+        }
+        let mut pieces = self.pieces.lock().unwrap_or_else(|e| e.into_inner());
+        pieces.insert(key)
+    }
+    fn flight_within(&self, key: u64, units: u64) -> bool {
+        let Some(run) = &self.run else {
+            return true;
+        };
+        let flying: u64 = {
+            let mut flights = run.flights();
+            let mine = flights.entry(key).or_default();
+            *mine = (*mine).max(units);
+            flights.values().fold(0, |sum, &w| sum.saturating_add(w))
+        };
+        let within = run.spent().saturating_add(flying) <= run.limit;
+        if !within {
+            run.stopped.store(true, Ordering::Relaxed);
+        }
+        within
+    }
+    fn flight_landed(&self, key: u64) {
+        if let Some(run) = &self.run {
+            run.flights().remove(&key);
+        }
+    }
+    fn shared(&self) -> Arc<dyn Allowance + Send> {
+        Arc::new(self.account())
+    }
 }
 
 /// A meter of no run, which never stops a solve.
@@ -159,17 +196,6 @@ impl Meter {
             run: Some(Arc::clone(run)),
             pieces: Mutex::default(),
         }
-    }
-
-    /// Whether this task looks at piece of floor `key` for the first time
-    /// (it is written down; a meter of no run writes nothing down). Which
-    /// of two threads of one task comes first does not change the sum.
-    pub fn first_look(&self, key: u64) -> bool {
-        if self.run.is_none() {
-            return true;
-        }
-        let mut pieces = self.pieces.lock().unwrap_or_else(|e| e.into_inner());
-        pieces.insert(key)
     }
 
     /// A meter that never stops anything (benchmarks of one solver, tests
@@ -192,21 +218,6 @@ impl Meter {
             own: Arc::clone(&self.own),
             run: self.run.clone(),
         }
-    }
-
-    /// Whether the run would still be within its limit were `units` more
-    /// spent (nothing is charged).
-    pub fn would_stay_within(&self, units: u64) -> bool {
-        self.run
-            .as_ref()
-            .is_none_or(|run| run.spent().saturating_add(units) <= run.limit)
-    }
-
-    /// A computation of `key` the run will be charged for once it is done
-    /// (a person's floor), whose work so far counts against the limit
-    /// with every other in flight ([`Flight::within`]).
-    pub fn flight(&self, key: u64) -> Flight<'_> {
-        Flight { meter: self, key }
     }
 
     /// Whether the run has spent more than its limit (a solve stops).
@@ -246,52 +257,6 @@ fn count_on_thread(units: u64) {
     }
 }
 
-/// A computation the run will be charged for once it is done, by a key
-/// that names what it works out (two threads working out the same thing
-/// count once). Work charged only once done would let several such
-/// computations at once each run up to the whole limit, as if alone (ten
-/// people's floors in a cluttered room, two at a time: twice the time
-/// before the run stopped). Counting what each has done so far with what
-/// the run has spent stops it as soon as the sum passes the limit, and
-/// that stop is the answer every thread count gives: each flight's work is
-/// charged in full once done, so the run's sum would pass the limit
-/// anyway. A flight dropped leaves the count (its work then charged, or
-/// the run stopped).
-pub struct Flight<'m> {
-    meter: &'m Meter,
-    key: u64,
-}
-
-impl Flight<'_> {
-    /// Whether the run stays within its limit with this computation at
-    /// `units` and every other in flight at what it has done. Where it
-    /// does not, the run is stopped: the caller cuts its work short.
-    pub fn within(&self, units: u64) -> bool {
-        let Some(run) = &self.meter.run else {
-            return true;
-        };
-        let flying: u64 = {
-            let mut flights = run.flights();
-            let mine = flights.entry(self.key).or_default();
-            *mine = (*mine).max(units);
-            flights.values().fold(0, |sum, &w| sum.saturating_add(w))
-        };
-        let within = run.spent().saturating_add(flying) <= run.limit;
-        if !within {
-            run.stopped.store(true, Ordering::Relaxed);
-        }
-        within
-    }
-}
-
-impl Drop for Flight<'_> {
-    fn drop(&mut self) {
-        if let Some(run) = &self.meter.run {
-            run.flights().remove(&self.key);
-        }
-    }
-}
-
 /// A meter's counts, shared: work charged where it is done, by what has
 /// no meter to hand (a mesh check, by the triangles it tested). What a
 /// task's account is charged is the task's, whichever thread does it.
@@ -315,6 +280,19 @@ impl Account {
         if let Some(run) = &self.run {
             run.charge(units);
         }
+    }
+}
+
+impl Allowance for Account {
+    fn spend(&self, units: u64) -> bool {
+        self.charge(units);
+        !self.exceeded()
+    }
+    fn exhausted(&self) -> bool {
+        self.exceeded()
+    }
+    fn shared(&self) -> Arc<dyn Allowance + Send> {
+        Arc::new(self.clone())
     }
 }
 
@@ -352,7 +330,8 @@ mod tests {
     fn work_in_flight_counts_with_what_is_spent_and_once_for_each_key() {
         let run = RunWork::new(100);
         let (a, b) = (Meter::of(&run), Meter::of(&run));
-        assert!(a.charge(20));
+        let (a, b): (&dyn Allowance, &dyn Allowance) = (&a, &b);
+        assert!(a.spend(20));
         let floor = a.flight(1);
         assert!(floor.within(50));
         // The same floor worked out by another thread counts once.
@@ -367,7 +346,8 @@ mod tests {
         assert!(other.within(70), "a flight done leaves the count");
         assert!(!other.within(81));
         assert!(run.exceeded(), "a flight past the limit stops the run");
-        assert!(Meter::unmetered().flight(1).within(u64::MAX));
+        let unmetered: &dyn Allowance = Meter::unmetered();
+        assert!(unmetered.flight(1).within(u64::MAX));
     }
 
     #[test]

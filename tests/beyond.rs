@@ -86,7 +86,7 @@ fn the_floor_before_the_footrests_is_out_of_reach_and_the_lap_is_not() {
         assert!(proof.proves(&floor, 10.0), "{name}: the floor");
         let lap = Point3::new(350.0, -150.0, 250.0);
         assert!(!proof.proves(&lap, 10.0), "{name}: above the knees");
-        let kept = KeptProofs::new(&chain, &own, reach::meter::Meter::unmetered());
+        let kept = KeptProofs::new(&chain, &own, &reach::allowance::Unbounded);
         assert!(kept.proves(&floor, 10.0), "{name}: the floor, kept");
         assert!(
             (0..64).all(|_| !kept.proves(&lap, 10.0)),
@@ -168,7 +168,7 @@ proptest! {
             // longer (up to 64 times as long, between a map's rounds) and
             // for a grid cell round the point: it must not rule the point
             // out either.
-            let kept = KeptProofs::new(&chain, &own, reach::meter::Meter::unmetered());
+            let kept = KeptProofs::new(&chain, &own, &reach::allowance::Unbounded);
             for asked in 1..=64 {
                 prop_assert!(!kept.proves(&target, 10.0), "{}: kept, asked {} times: {:?} reaches {:?}", name, asked, q, target);
                 kept.settle();
@@ -194,7 +194,7 @@ proptest! {
             let target = chain.effector(&q) + towards * 9.9;
             let verdict = proof.decide_by_limits(&target, 10.0, 1024);
             prop_assert!(verdict != Verdict::Proved, "{}: {:?} reaches {:?}", name, q, target);
-            let kept = KeptProofs::new(&chain, &own, reach::meter::Meter::unmetered());
+            let kept = KeptProofs::new(&chain, &own, &reach::allowance::Unbounded);
             prop_assert!(!kept.beyond_limits(&target, 10.0), "{}: kept: {:?} reaches {:?}", name, q, target);
         }
     }

@@ -434,6 +434,25 @@ fn solvers_name_the_plugin_sdk_and_geometry_only() {
     assert!(problems.is_empty(), "{}", problems.join("\n"));
 }
 
+/// ARCHITECTURE.md, "Invariants": the plugin traits and the solvers know
+/// a run only as the `Allowance` they spend from: no file of `plugin/` or
+/// `solvers/` uses the meter (`crate::meter`, `Meter`) or names it in code.
+#[test]
+fn plugins_and_solvers_know_an_allowance_not_the_meter() {
+    let files = source_files();
+    let problems: Vec<String> = files
+        .values()
+        .filter(|f| f.rel.starts_with("plugin/") || f.rel.starts_with("solvers/"))
+        .filter(|f| {
+            let code = f.code.to_lowercase();
+            code.split(|c: char| !c.is_alphanumeric() && c != '_')
+                .any(|word| word == "meter")
+        })
+        .map(|f| format!("{} names the meter", f.rel))
+        .collect();
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
 /// ARCHITECTURE.md, "Invariants": every `static` and `thread_local!` of
 /// the library, each with what it holds. A new one is listed here, with
 /// why it may not be owned by a run or a watch session instead.

@@ -10,10 +10,10 @@ use std::sync::Mutex;
 use nalgebra::{Point3, Vector3};
 use proptest::prelude::*;
 
+use crate::allowance::Unbounded;
 use crate::collision::Obstacles;
 use crate::kinematics::revolute;
 use crate::kinematics::Chain;
-use crate::meter::Meter;
 use crate::options::Settings;
 use crate::plugin::{BasePose, Descents, IkProblem, IkSolution, ReachQuery, Search, Solver};
 use crate::scene::{BoxObstacle, OwnBody, Room};
@@ -70,7 +70,7 @@ fn query<'a>(
         last_resort: None,
         from_rest: false,
         descents: None,
-        meter: Meter::unmetered(),
+        allowance: &Unbounded,
         solves: None,
     }
 }

@@ -3,8 +3,8 @@
 use nalgebra::{Point3, Vector3};
 
 use super::search::{search, search_retrying_later, Candidate};
+use crate::allowance::Allowance;
 use crate::kinematics::{Chain, Stance};
-use crate::meter::Meter;
 use crate::plugin::{
     Base, BaseError, BasePlugin, BasePose, Fit, Hips, Options, ParamSpec, Params, Placement,
     Plugin, PreparedBase, ReachQuery, Settings, Solver,
@@ -92,7 +92,7 @@ impl Base for FixedBase {
     }
 
     /// The hip point must be inside the room.
-    fn fit(&self, room: &Room, _: &Meter) -> Fit {
+    fn fit(&self, room: &Room, _: &dyn Allowance) -> Fit {
         if self.outside(room) {
             Fit::Outside
         } else {

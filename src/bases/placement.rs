@@ -31,6 +31,7 @@ use super::capability::Capability;
 use super::face::face_normal;
 use super::placing::{Approach, Placing, SIDE_SLACK_MM};
 use super::search::{search, search_retrying_later, Candidate};
+use crate::allowance::{Allowance, Unbounded};
 use crate::floor::{
     unbounded, CutShort, Doorway, FloorObstacles, Footprint, Looked, Misfit, Region, Routes, Shut,
     Work,
@@ -38,7 +39,6 @@ use crate::floor::{
 use crate::geometry::Solid;
 use crate::kept::Kept;
 use crate::kinematics::Chain;
-use crate::meter::Meter;
 use crate::plugin::{
     Base, BasePose, Fit, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Solver, Tries,
 };
@@ -214,8 +214,8 @@ impl Mobile {
     /// Where the base may be placed, worked out once per room (with what
     /// its routes cost told to `meter`; cut short once the run would pass
     /// its work: nowhere then, and kept by no other run).
-    fn floor(&self, room: &Room, meter: &Meter) -> Arc<OnceLock<Floor>> {
-        self.floor_within(room, None, meter)
+    fn floor(&self, room: &Room, allowance: &dyn Allowance) -> Arc<OnceLock<Floor>> {
+        self.floor_within(room, None, allowance)
     }
 
     /// `floor`, for a room that is `wider` (whose floor is worked out)
@@ -225,7 +225,7 @@ impl Mobile {
         &self,
         room: &Room,
         wider: Option<&Room>,
-        meter: &Meter,
+        allowance: &dyn Allowance,
     ) -> Arc<OnceLock<Floor>> {
         let cell = self.floors.cell(room);
         // Not `get_or_init`: the routes work out a heading's tiles in
@@ -243,11 +243,11 @@ impl Mobile {
             });
             let hint = hint.as_ref().and_then(|c| c.get());
             let floor = FLOORS
-                .get_or_try(key, || self.compute_floor(room, hint, key, meter))
+                .get_or_try(key, || self.compute_floor(room, hint, key, allowance))
                 .unwrap_or_else(|cut| {
                     // Past the run's limit: the run stops.
-                    meter.charge(cut.work);
-                    debug_assert!(meter.exceeded(), "a floor cut short stops the run");
+                    allowance.spend(cut.work);
+                    debug_assert!(allowance.exhausted(), "a floor cut short stops the run");
                     Floor {
                         regions: Vec::new(),
                         doors: None,
@@ -285,12 +285,12 @@ impl Mobile {
         room: &Room,
         hint: Option<&Floor>,
         key: u64,
-        meter: &Meter,
+        allowance: &dyn Allowance,
     ) -> Result<Floor, CutShort> {
         let zone = self.placing.zone.as_ref();
         let headings = &self.placing.headings;
         // Charged once done: in flight, counted with the others.
-        let flight = meter.flight(key);
+        let flight = allowance.flight(key);
         let within = |units: u64| flight.within(units);
         let mut work = Work::new(&within);
         let allows = |units: u64| work.allows(units);
@@ -351,18 +351,18 @@ impl Mobile {
     /// misses or which doors shut it out (worked out once per room; its
     /// routes cut short where they would take the run past its work, and
     /// the run then stopped).
-    pub fn fit(&self, room: &Room, meter: &Meter) -> Fit {
-        self.fit_within(room, None, meter)
+    pub fn fit(&self, room: &Room, allowance: &dyn Allowance) -> Fit {
+        self.fit_within(room, None, allowance)
     }
 
     /// `fit`, for a room that is `wider` with obstacles or doors taken
     /// away ([`Mobile::floor_within`]).
-    fn fit_within(&self, room: &Room, wider: Option<&Room>, meter: &Meter) -> Fit {
-        let cell = self.floor_within(room, wider, meter);
+    fn fit_within(&self, room: &Room, wider: Option<&Room>, allowance: &dyn Allowance) -> Fit {
+        let cell = self.floor_within(room, wider, allowance);
         let Some(floor) = cell.get() else {
             return Fit::Fits;
         };
-        if meter.exceeded() {
+        if allowance.exhausted() {
             // The task stops where it starts, and the run with it.
             return Fit::Fits;
         }
@@ -378,7 +378,7 @@ impl Mobile {
         }
         let cell = self.misfits.cell(room);
         if cell.get().is_none() {
-            let flight = meter.flight(hash_pair(self.floor_key(room), MISFIT));
+            let flight = allowance.flight(hash_pair(self.floor_key(room), MISFIT));
             let within = |units: u64| flight.within(units);
             let mut work = Work::new(&within);
             let (headings, zone) = (&self.placing.headings, self.placing.zone.as_ref());
@@ -388,7 +388,7 @@ impl Mobile {
                 }
                 Err(cut) => {
                     // Past the run's limit: the run stops.
-                    meter.charge(cut.work);
+                    allowance.spend(cut.work);
                     return Fit::Fits;
                 }
             }
@@ -431,7 +431,7 @@ impl Mobile {
             mobile: self,
             room,
             chain,
-            floor: self.floor(room, Meter::unmetered()),
+            floor: self.floor(room, &Unbounded),
             capability: self.capability_of(chain),
             half_width_mm: self.footprint.half_width_mm(),
         }
@@ -463,12 +463,12 @@ impl Base for Mobile {
         Some(self.hip_height_mm)
     }
 
-    fn fit(&self, room: &Room, meter: &Meter) -> Fit {
-        Mobile::fit(self, room, meter)
+    fn fit(&self, room: &Room, allowance: &dyn Allowance) -> Fit {
+        Mobile::fit(self, room, allowance)
     }
 
-    fn fit_beside(&self, room: &Room, beside: &Room, meter: &Meter) -> Fit {
-        self.fit_within(room, Some(beside), meter)
+    fn fit_beside(&self, room: &Room, beside: &Room, allowance: &dyn Allowance) -> Fit {
+        self.fit_within(room, Some(beside), allowance)
     }
 
     fn floor_work(&self, room: &Room) -> u64 {
@@ -524,7 +524,7 @@ impl Base for Mobile {
     }
 
     fn reached_floor(&self, room: &Room, heading_rad: f64) -> Option<MultiPolygon<f64>> {
-        let cell = self.floor(room, Meter::unmetered());
+        let cell = self.floor(room, &Unbounded);
         let floor = cell.get()?;
         floor.doors.as_ref()?;
         let (_, region) = floor.regions.iter().min_by(|a, b| {
@@ -585,7 +585,7 @@ impl PreparedMobile<'_> {
                     self.nearest(
                         &query.target_room_mm,
                         self.capability.centre_mm,
-                        query.meter,
+                        query.allowance,
                     )
                 })
                 .clone()
@@ -602,13 +602,13 @@ impl PreparedMobile<'_> {
                 self.nearest(
                     &query.target_room_mm,
                     self.capability.centre_mm,
-                    query.meter,
+                    query.allowance,
                 )
             });
             let mut rest = self.nearest(
                 &query.target_room_mm,
                 self.capability.at_rest_mm,
-                query.meter,
+                query.allowance,
             );
             rest.retain(|p| !near.iter().any(|n| same_place(n, p)));
             rest
@@ -641,7 +641,7 @@ impl PreparedMobile<'_> {
                 .map(|c| (c.pose, c.start.unwrap_or_default()))
                 .collect()
         };
-        let placements = solves.placements(h.finish(), query.meter, sample);
+        let placements = solves.placements(h.finish(), query.allowance, sample);
         (placements.into_iter())
             .map(|(pose, q)| Candidate {
                 start: Some(q),
@@ -715,7 +715,12 @@ impl PreparedMobile<'_> {
     /// (`hint`, turned into the approach), or where that point is outside
     /// the approach, the nearest along its line; the nearest first. The
     /// search for floor far from the target is charged to `meter`.
-    fn nearest(&self, target: &Point3<f64>, hint: Vector2<f64>, meter: &Meter) -> Vec<BasePose> {
+    fn nearest(
+        &self,
+        target: &Point3<f64>,
+        hint: Vector2<f64>,
+        allowance: &dyn Allowance,
+    ) -> Vec<BasePose> {
         let hint = toward(hint, self.mobile.placing.approach, self.half_width_mm);
         let face = self.face(target);
         let mut scored: Vec<(f64, BasePose)> = self
@@ -724,7 +729,7 @@ impl PreparedMobile<'_> {
             .filter_map(|(heading, region)| {
                 let offset = Rotation2::new(*heading) * hint;
                 let preferred = Point::new(target.x - offset.x, target.y - offset.y);
-                let p = region.nearest_metered(preferred, meter)?;
+                let p = region.nearest_metered(preferred, allowance)?;
                 let pose = self.pose_at(p.x(), p.y(), *heading);
                 let pose = if self.admitted(&pose, target) {
                     pose
@@ -855,7 +860,7 @@ impl PreparedBase for PreparedMobile<'_> {
             + self.mobile.footprint.extent_mm()
             + NEAR_HEIGHT_MM[NEAR_HEIGHT_MM.len() - 1][1];
         // Watch mode's key, worked out before the run (not metered).
-        let unmetered = Meter::unmetered();
+        let unmetered = &Unbounded;
         let mut poses = self.nearest(target_room_mm, self.capability.centre_mm, unmetered);
         poses.extend(self.nearest(target_room_mm, self.capability.at_rest_mm, unmetered));
         Hips {

@@ -226,7 +226,7 @@ fn retry_blocked(
     let proofs = match query.proofs {
         Some(kept) => kept,
         None => {
-            made_here = KeptProofs::new(chain, query.own, query.meter);
+            made_here = KeptProofs::new(chain, query.own, query.allowance);
             &made_here
         }
     };

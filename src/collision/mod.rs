@@ -25,8 +25,9 @@ use parry3d_f64::bounding_volume::BoundingVolume;
 use parry3d_f64::query::{self, Ray, RayCast};
 use parry3d_f64::shape::{Capsule as ParryCapsule, Shape};
 
+use crate::allowance::Allowance;
 use crate::geometry::{Capsule, Cuboid};
-use crate::meter::{capsule_check, Account, Meter};
+use crate::meter::capsule_check;
 use crate::scene::{Blocker, MeshObstacle, MeshPart, MeshShape, Room, Wall};
 
 /// A mesh obstacle as parry holds it, and its name for reports.
@@ -63,7 +64,7 @@ pub struct Obstacles {
     charged: usize,
     /// Where the triangles a mesh check tests are charged, if anywhere
     /// ([`UNITS_PER_TRIANGLE`]).
-    account: Option<Account>,
+    account: Option<Arc<dyn Allowance + Send>>,
 }
 
 const WALLS: [Wall; 6] = [
@@ -121,9 +122,9 @@ impl Obstacles {
     /// their checks test: a check is otherwise charged by the obstacles
     /// it is put to, and a mesh counts as one, though a check may test
     /// every one of its triangles (thin ones across the room).
-    pub fn charging(self, meter: &Meter) -> Self {
+    pub fn charging(self, allowance: &dyn Allowance) -> Self {
         Obstacles {
-            account: Some(meter.account()),
+            account: Some(allowance.shared()),
             ..self
         }
     }
@@ -381,10 +382,10 @@ impl Obstacles {
     ) -> Option<(Blocker, f64)> {
         if let Some(account) = &self.account {
             // Past the limit, the answers are thrown away.
-            if account.exceeded() {
+            if account.exhausted() {
                 return None;
             }
-            account.charge(capsule_check(self.charged));
+            account.spend(capsule_check(self.charged));
         }
         let length = (target - eye).norm();
         if length <= end_gap_mm {
@@ -451,7 +452,7 @@ impl Obstacles {
     ) -> bool {
         // Past the limit, the answers are thrown away: a check that could
         // test thousands of triangles is not made.
-        if self.account.as_ref().is_some_and(Account::exceeded) {
+        if self.account.as_ref().is_some_and(|a| a.exhausted()) {
             return true;
         }
         let at = Isometry3::identity();
@@ -467,7 +468,7 @@ impl Obstacles {
             .filter(|p| reach(&p.bounds))
             .any(|p| part_touches(p, &swept, &mut tested));
         if let (Some(account), 1..) = (&self.account, tested) {
-            account.charge(tested.saturating_mul(UNITS_PER_TRIANGLE));
+            account.spend(tested.saturating_mul(UNITS_PER_TRIANGLE));
         }
         touches
     }
@@ -481,7 +482,7 @@ impl Obstacles {
             .filter_map(|p| part_ray(p, ray, max, &tested))
             .min_by(f64::total_cmp);
         if let (Some(account), 1..) = (&self.account, tested.get()) {
-            account.charge(tested.get().saturating_mul(UNITS_PER_RAY_TRIANGLE));
+            account.spend(tested.get().saturating_mul(UNITS_PER_RAY_TRIANGLE));
         }
         toi
     }
@@ -834,8 +835,8 @@ mod tests {
         let mut room = room_with(Vec::new());
         room.meshes.push(slivers(100));
         let run = crate::meter::RunWork::new(u64::MAX);
-        let meter = Meter::of(&run);
-        let o = Obstacles::new(&room, 0.0).charging(&meter);
+        let allowance = crate::meter::Meter::of(&run);
+        let o = Obstacles::new(&room, 0.0).charging(&allowance);
         // Beside every sliver's bounds' diagonal, 700 mm from each.
         let upright = Capsule::new(
             Point3::new(1500.0, 500.0, 50.0),
@@ -843,15 +844,15 @@ mod tests {
             40.0,
         );
         assert_eq!(o.capsule_hit(&upright), None);
-        assert_eq!(meter.spent(), 100 * UNITS_PER_TRIANGLE);
+        assert_eq!(allowance.spent(), 100 * UNITS_PER_TRIANGLE);
         assert_eq!(run.spent(), 100 * UNITS_PER_TRIANGLE);
         // Far from their bounds: none tested, nothing charged.
         let aside = Capsule::sphere(Point3::new(3000.0, 3000.0, 500.0), 40.0);
         assert_eq!(o.capsule_hit(&aside), None);
-        assert_eq!(meter.spent(), 100 * UNITS_PER_TRIANGLE);
+        assert_eq!(allowance.spent(), 100 * UNITS_PER_TRIANGLE);
         // Uncharged obstacles charge nothing.
         assert_eq!(Obstacles::new(&room, 0.0).capsule_hit(&upright), None);
-        assert_eq!(meter.spent(), 100 * UNITS_PER_TRIANGLE);
+        assert_eq!(allowance.spent(), 100 * UNITS_PER_TRIANGLE);
     }
 
     #[test]
@@ -859,8 +860,8 @@ mod tests {
         let mut room = room_with(Vec::new());
         room.meshes.push(slivers(100));
         let run = crate::meter::RunWork::new(1_000);
-        let meter = Meter::of(&run);
-        let o = Obstacles::new(&room, 0.0).charging(&meter);
+        let allowance = crate::meter::Meter::of(&run);
+        let o = Obstacles::new(&room, 0.0).charging(&allowance);
         // Up through every sliver's bounds, 700 mm from each sliver.
         let (eye, target) = (
             Point3::new(1500.0, 500.0, 50.0),
@@ -868,7 +869,7 @@ mod tests {
         );
         assert_eq!(o.first_on_sight_line(&eye, &target, 0.0), None);
         let line = capsule_check(1);
-        assert_eq!(meter.spent(), line + 100 * UNITS_PER_RAY_TRIANGLE);
+        assert_eq!(allowance.spent(), line + 100 * UNITS_PER_RAY_TRIANGLE);
         // Up through the slivers themselves: met at the first, as uncharged.
         let (low, high) = (
             Point3::new(1000.0, 1000.2, 50.0),
@@ -879,9 +880,9 @@ mod tests {
         assert_eq!(o.first_on_sight_line(&low, &high, 0.0), uncharged);
         // Past the limit, nothing is looked at or charged.
         run.charge(10_000);
-        let spent = meter.spent();
+        let spent = allowance.spent();
         assert_eq!(o.first_on_sight_line(&low, &high, 0.0), None);
-        assert_eq!(meter.spent(), spent);
+        assert_eq!(allowance.spent(), spent);
     }
 
     #[test]

@@ -28,9 +28,9 @@ use std::sync::Mutex;
 use nalgebra::Point3;
 use rayon::prelude::*;
 
+use crate::allowance::Allowance;
 use crate::collision::{OutOfReach, Verdict, BOXES};
 use crate::kinematics::Chain;
-use crate::meter::Meter;
 use crate::scene::OwnBody;
 
 /// The side of the grid cells points are rounded to.
@@ -72,7 +72,7 @@ pub struct KeptProofs<'a> {
     /// What each look is told to: the looks kept (one per cell and
     /// budget, whoever made it), so that the work is the same whatever
     /// the threads.
-    meter: &'a Meter,
+    allowance: &'a dyn Allowance,
 }
 
 /// What looking at one box of trunk postures costs, in the meter's units
@@ -82,11 +82,11 @@ const BOX_UNITS: u64 = 6;
 impl<'a> KeptProofs<'a> {
     /// None made yet, for `chain` in a person whose own body and base are
     /// `own`, the looks' work told to `meter`.
-    pub fn new(chain: &'a Chain, own: &'a OwnBody, meter: &'a Meter) -> Self {
+    pub fn new(chain: &'a Chain, own: &'a OwnBody, allowance: &'a dyn Allowance) -> Self {
         KeptProofs {
             cut: OutOfReach::of(chain, own),
             cells: Mutex::new(HashMap::new()),
-            meter,
+            allowance,
         }
     }
 
@@ -143,7 +143,7 @@ impl<'a> KeptProofs<'a> {
     /// again with so many times [`BOXES`] (in parallel), and the verdict
     /// answers its questions from the next round on.
     pub fn settle(&self) {
-        if self.meter.exceeded() {
+        if self.allowance.exhausted() {
             // The run is thrown away: no longer look is worth making.
             return;
         }
@@ -183,7 +183,7 @@ impl<'a> KeptProofs<'a> {
     /// this chain.
     fn cell(&self, target_mm: &Point3<f64>, tolerance_mm: f64) -> Option<(Key, Kept)> {
         self.cut.as_ref()?;
-        if self.meter.exceeded() {
+        if self.allowance.exhausted() {
             // The run is thrown away: no proof is worth making.
             return None;
         }
@@ -234,7 +234,7 @@ impl<'a> KeptProofs<'a> {
 
     /// Tell the meter of a look kept that looked at `boxes` boxes.
     fn charge(&self, boxes: usize) {
-        self.meter.charge(boxes as u64 * BOX_UNITS);
+        self.allowance.spend(boxes as u64 * BOX_UNITS);
     }
 
     fn lock(&self) -> std::sync::MutexGuard<'_, HashMap<Key, Kept>> {

@@ -23,8 +23,8 @@ use super::obstacles::FloorObstacles;
 use super::region::{admissible_in, shrunk_room, Grown, Turned};
 use super::work::CutShort;
 use super::{FloorPart, Footprint};
+use crate::allowance::Allowance;
 use crate::kept::Kept;
-use crate::meter::Meter;
 use crate::scene::{BoxObstacle, Door, Room, Wall};
 
 /// Sides of the polygon inscribed in a circle: its flats are within a
@@ -40,7 +40,7 @@ pub struct FreeFloor<'m> {
     region: Arc<MultiPolygon<f64>>,
     /// What one look ([`FreeFloor::holds`]) costs the meter.
     look_units: u64,
-    meter: &'m Meter,
+    allowance: &'m dyn Allowance,
 }
 
 /// Units of the meter a look at the free floor costs for each of its
@@ -50,7 +50,7 @@ pub struct FreeFloor<'m> {
 const UNITS_PER_CORNER: u64 = 12;
 
 impl<'m> FreeFloor<'m> {
-    pub fn new(room: &Room, below_mm: f64, meter: &'m Meter) -> Self {
+    pub fn new(room: &Room, below_mm: f64, allowance: &'m dyn Allowance) -> Self {
         // A point (a square a micrometre across) as the footprint.
         let h = 0.0005;
         let point = Footprint {
@@ -61,18 +61,18 @@ impl<'m> FreeFloor<'m> {
                 below_mm,
             )],
         };
-        let region = whole(room, &point, 0.0, meter);
+        let region = whole(room, &point, 0.0, allowance);
         FreeFloor {
             look_units: look_units(&region),
             region,
-            meter,
+            allowance,
         }
     }
 
     /// Whether all of `polygon` is free floor (charged to the meter; none
     /// is, once the run is past its limit).
     pub fn holds(&self, polygon: &Polygon<f64>) -> bool {
-        self.meter.charge(self.look_units) && holds_within(&self.region, polygon)
+        self.allowance.spend(self.look_units) && holds_within(&self.region, polygon)
     }
 }
 
@@ -120,27 +120,27 @@ fn whole(
     room: &Room,
     footprint: &Footprint,
     heading_rad: f64,
-    meter: &Meter,
+    allowance: &dyn Allowance,
 ) -> Arc<MultiPolygon<f64>> {
-    if meter.exceeded() {
+    if allowance.exhausted() {
         return Arc::new(MultiPolygon::new(Vec::new()));
     }
     let mut h = DefaultHasher::new();
     footprint.hash_with_floor(room, &mut h);
     heading_rad.to_bits().hash(&mut h);
-    let allows = |units: u64| meter.would_stay_within(units);
+    let allows = |units: u64| allowance.would_stay_within(units);
     let found = WHOLE.get_or_try(h.finish(), || {
         let (region, work) = worked_out(room, footprint, heading_rad, &allows)?;
         Ok::<_, CutShort>((Arc::new(region), work))
     });
     match found {
         Ok((region, work)) => {
-            meter.charge(work);
+            allowance.spend(work);
             region
         }
         // What it would have cost passes the limit: charged, the run stops.
         Err(cut) => {
-            meter.charge(cut.work);
+            allowance.spend(cut.work);
             Arc::new(MultiPolygon::new(Vec::new()))
         }
     }
@@ -197,21 +197,21 @@ pub fn disc_centre(
     radius_mm: f64,
     below_mm: f64,
     on: Option<&RouteFloor>,
-    meter: &Meter,
+    allowance: &dyn Allowance,
 ) -> Option<Point<f64>> {
     let footprint = disc(radius_mm, below_mm);
-    let region = on_route(whole(room, &footprint, 0.0, meter), on);
-    let allows = |units: u64| meter.would_stay_within(units);
+    let region = on_route(whole(room, &footprint, 0.0, allowance), on);
+    let allows = |units: u64| allowance.would_stay_within(units);
     // Cut short, what it would have cost passes the limit: charged, the
     // run stops.
     let obstacles = match FloorObstacles::with(room, &footprint, &[], &allows) {
         Ok(obstacles) => obstacles,
         Err(cut) => {
-            meter.charge(cut.work);
+            allowance.spend(cut.work);
             return None;
         }
     };
-    meter.charge(obstacles.work());
+    allowance.spend(obstacles.work());
     let clear = |c: Point<f64>| {
         let (x, y) = (c.x(), c.y());
         let walls = [x, y, room.size_mm.x - x, room.size_mm.y - y];
@@ -256,7 +256,7 @@ pub fn t_space(
     arm_mm: f64,
     below_mm: f64,
     on: Option<&RouteFloor>,
-    meter: &Meter,
+    allowance: &dyn Allowance,
 ) -> Option<(Point<f64>, f64)> {
     let h = square_mm / 2.0;
     let a = arm_mm / 2.0;
@@ -274,7 +274,7 @@ pub fn t_space(
     };
     (0..4).find_map(|k| {
         let heading = f64::from(k) * std::f64::consts::FRAC_PI_2;
-        let region = on_route(whole(room, &t, heading, meter), on);
+        let region = on_route(whole(room, &t, heading, allowance), on);
         let centre = region.0.iter().find_map(|p| p.interior_point())?;
         Some((centre, heading))
     })
@@ -292,7 +292,7 @@ pub fn route_width(
     to: &Polygon<f64>,
     below_mm: f64,
     most_mm: f64,
-    meter: &Meter,
+    allowance: &dyn Allowance,
 ) -> f64 {
     let Some(target) = to.bounding_rect() else {
         return 0.0;
@@ -306,8 +306,8 @@ pub fn route_width(
             target.min() - Coord { x: r, y: r },
             target.max() + Coord { x: r, y: r },
         );
-        let region = whole(room, &disc(r, below_mm), 0.0, meter);
-        meter.charge(look_units(&region))
+        let region = whole(room, &disc(r, below_mm), 0.0, allowance);
+        allowance.spend(look_units(&region))
             && (region.0.iter()).any(|piece| piece.intersects(&start) && piece.intersects(&reach))
     };
     let (mut lo, mut hi) = (10.0, most_mm);
@@ -338,12 +338,17 @@ pub struct RouteFloor<'m> {
     radius_mm: f64,
     pieces: MultiPolygon<f64>,
     look_units: u64,
-    meter: &'m Meter,
+    allowance: &'m dyn Allowance,
 }
 
 impl<'m> RouteFloor<'m> {
     /// None for a room without doors.
-    pub fn new(room: &Room, width_mm: f64, below_mm: f64, meter: &'m Meter) -> Option<Self> {
+    pub fn new(
+        room: &Room,
+        width_mm: f64,
+        below_mm: f64,
+        allowance: &'m dyn Allowance,
+    ) -> Option<Self> {
         if room.doors.is_empty() {
             return None;
         }
@@ -351,8 +356,8 @@ impl<'m> RouteFloor<'m> {
         let starts: Vec<Rect<f64>> = (room.doors.iter())
             .filter_map(|d| doorway(room, d, r))
             .collect();
-        let region = whole(room, &disc(r, below_mm), 0.0, meter);
-        meter.charge(look_units(&region) * starts.len() as u64);
+        let region = whole(room, &disc(r, below_mm), 0.0, allowance);
+        allowance.spend(look_units(&region) * starts.len() as u64);
         let pieces = MultiPolygon::new(
             (region.0.iter())
                 .filter(|piece| starts.iter().any(|s| piece.intersects(s)))
@@ -363,7 +368,7 @@ impl<'m> RouteFloor<'m> {
             radius_mm: r,
             look_units: look_units(&pieces),
             pieces,
-            meter,
+            allowance,
         })
     }
 
@@ -374,7 +379,7 @@ impl<'m> RouteFloor<'m> {
         let Some(target) = to.bounding_rect() else {
             return false;
         };
-        if !self.meter.charge(self.look_units) {
+        if !self.allowance.spend(self.look_units) {
             return false;
         }
         let r = Coord {
@@ -478,6 +483,7 @@ fn doorway(room: &Room, door: &Door, r: f64) -> Option<Rect<f64>> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::allowance::Unbounded;
     use crate::scene::BoxObstacle;
     use geo::LineString;
     use nalgebra::{Point3, Vector3};
@@ -550,12 +556,12 @@ mod tests {
                 Vec::new(),
             )
         };
-        assert!(disc_centre(&corridor(1526.0), 762.5, 685.0, None, Meter::unmetered()).is_some());
-        assert!(disc_centre(&corridor(1524.0), 762.5, 685.0, None, Meter::unmetered()).is_none());
+        assert!(disc_centre(&corridor(1526.0), 762.5, 685.0, None, &Unbounded).is_some());
+        assert!(disc_centre(&corridor(1524.0), 762.5, 685.0, None, &Unbounded).is_none());
         // A counter with knee space under it (from 700 mm) leaves the floor.
         let mut raised = corridor(1000.0);
         raised.boxes[1].corner_mm.z = 700.0;
-        assert!(disc_centre(&raised, 762.5, 685.0, None, Meter::unmetered()).is_some());
+        assert!(disc_centre(&raised, 762.5, 685.0, None, &Unbounded).is_some());
     }
 
     #[test]
@@ -563,7 +569,7 @@ mod tests {
         // A T in a 1525 mm square with 915 mm arms fits where a square
         // does; a 915 mm corridor crossing a 1525 mm one makes a T too.
         let open = room([1525.5, 1525.5], Vec::new(), Vec::new());
-        assert!(t_space(&open, 1525.0, 915.0, 685.0, None, Meter::unmetered()).is_some());
+        assert!(t_space(&open, 1525.0, 915.0, 685.0, None, &Unbounded).is_some());
         // Fill the square's corners beside the stem: still a T.
         let corners = room(
             [1525.5, 1525.5],
@@ -573,7 +579,7 @@ mod tests {
             ],
             Vec::new(),
         );
-        assert!(t_space(&corners, 1525.0, 915.0, 685.0, None, Meter::unmetered()).is_some());
+        assert!(t_space(&corners, 1525.0, 915.0, 685.0, None, &Unbounded).is_some());
         // Narrow the stem below 915 mm: no T.
         let narrow = room(
             [1525.5, 1525.5],
@@ -583,7 +589,7 @@ mod tests {
             ],
             Vec::new(),
         );
-        let found = t_space(&narrow, 1525.0, 915.0, 685.0, None, Meter::unmetered());
+        let found = t_space(&narrow, 1525.0, 915.0, 685.0, None, &Unbounded);
         assert!(found.is_none(), "{found:?}");
     }
 
@@ -613,21 +619,14 @@ mod tests {
             ]),
             Vec::new(),
         );
-        let width = route_width(&r, &r.doors[0], &far, 2030.0, 3000.0, Meter::unmetered());
+        let width = route_width(&r, &r.doors[0], &far, 2030.0, 3000.0, &Unbounded);
         assert!((width - 800.0).abs() <= 2.0, "{width}");
         // Wider than the door: the door is ruled on apart.
         let mut wide = r.clone();
         wide.boxes[1].corner_mm.x = 3400.0;
-        let width = route_width(
-            &wide,
-            &wide.doors[0],
-            &far,
-            2030.0,
-            3000.0,
-            Meter::unmetered(),
-        );
+        let width = route_width(&wide, &wide.doors[0], &far, 2030.0, 3000.0, &Unbounded);
         assert!((width - 1800.0).abs() <= 2.0, "{width}");
-        let free = FreeFloor::new(&r, 685.0, Meter::unmetered());
+        let free = FreeFloor::new(&r, 685.0, &Unbounded);
         assert!(free.holds(&far));
         let on_counter = Polygon::new(
             LineString::from(vec![

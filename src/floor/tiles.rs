@@ -16,7 +16,7 @@ use super::obstacles::FloorObstacles;
 use super::region::{admissible_in, shrunk_room, Grown, Turned, Zone};
 use super::work::{unbounded, CutShort, Looked, Work};
 use super::{Footprint, Inside, Routes};
-use crate::meter::Meter;
+use crate::allowance::Allowance;
 use crate::scene::Room;
 
 /// The side of a tile, for rooms up to `MAX_TILES` of them.
@@ -323,16 +323,16 @@ impl Region {
     /// time the task looks at it, and only what looking again costs after
     /// that, or where the search for whether the base fits anywhere
     /// looked at it (and the floor paid for it).
-    pub fn nearest_metered(&self, p: Point<f64>, meter: &Meter) -> Option<Point<f64>> {
-        let allowed = |units: u64| meter.would_stay_within(units);
+    pub fn nearest_metered(&self, p: Point<f64>, allowance: &dyn Allowance) -> Option<Point<f64>> {
+        let allowed = |units: u64| allowance.would_stay_within(units);
         let mut work = Work::new(&allowed);
         let searched = self.empty.get().map(|found| &found.looked);
         let fresh = |key: u64| {
             !self.paid.contains(key)
                 && !searched.is_some_and(|s| s.contains(key))
-                && meter.first_look(key)
+                && allowance.first_look(key)
         };
-        let grows = |shape: u64| meter.first_look(shape);
+        let grows = |shape: u64| allowance.first_look(shape);
         let fresh = Fresh {
             piece: &fresh,
             shape: &grows,
@@ -340,11 +340,11 @@ impl Region {
         let found = self.nearest_counted(p, Some(&fresh), &mut work);
         match found {
             Ok(found) => {
-                meter.charge(work.done);
+                allowance.spend(work.done);
                 found
             }
             Err(cut) => {
-                meter.charge(cut.work);
+                allowance.spend(cut.work);
                 None
             }
         }
@@ -594,18 +594,18 @@ mod tests {
     /// far off; once the run is past its limit, it finds nothing.
     #[test]
     fn a_search_for_far_floor_is_charged_and_a_near_one_is_not() {
-        use crate::meter::RunWork;
+        use crate::meter::{Meter, RunWork};
         let region = crowded_region();
         let run = RunWork::new(u64::MAX / 2);
-        let meter = Meter::of(&run);
-        let near = region.nearest_metered(Point::new(5500.0, 3000.0), &meter);
+        let allowance = Meter::of(&run);
+        let near = region.nearest_metered(Point::new(5500.0, 3000.0), &allowance);
         assert_eq!(near, region.nearest(Point::new(5500.0, 3000.0)));
-        assert_eq!(meter.spent(), 0);
-        let far = region.nearest_metered(Point::new(1000.0, 3000.0), &meter);
+        assert_eq!(allowance.spent(), 0);
+        let far = region.nearest_metered(Point::new(1000.0, 3000.0), &allowance);
         assert_eq!(far, region.nearest(Point::new(1000.0, 3000.0)));
         assert!(far.is_some_and(|p| p.x() > 4500.0), "{far:?}");
-        assert!(meter.spent() > 1_000, "{}", meter.spent());
-        let spent = meter.spent();
+        assert!(allowance.spent() > 1_000, "{}", allowance.spent());
+        let spent = allowance.spent();
         let tight = Meter::of(&RunWork::new(spent / 2));
         assert_eq!(
             region.nearest_metered(Point::new(1000.0, 3000.0), &tight),

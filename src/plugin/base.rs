@@ -13,9 +13,9 @@ use crate::collision::{Obstacles, PlacedObstacles};
 use crate::engine::{KeptProofs, SolvesFor};
 use geo::MultiPolygon;
 
+use crate::allowance::Allowance;
 use crate::floor::{Footprint, Misfit, Shut};
 use crate::kinematics::{Chain, Stance};
-use crate::meter::Meter;
 use crate::scene::{BasePose, Blocked, OwnBody, Physique, Placement, Room};
 
 /// How hard a base looks for a placement.
@@ -57,7 +57,7 @@ pub struct ReachQuery<'a> {
     /// reuse (a map's run of points); none: the search keeps its own.
     pub descents: Option<&'a RefCell<Descents>>,
     /// What the solves tell their work to.
-    pub meter: &'a Meter,
+    pub allowance: &'a dyn Allowance,
     /// Where the solves are kept for the task's next run, and taken from
     /// its last (watch mode), as this search's chain, obstacles and own
     /// body ask for them ([`crate::engine::KeptSolves::of`]).
@@ -124,7 +124,7 @@ impl<'a> ReachQuery<'a> {
                 own: self.own,
                 base_pose: pose,
             }),
-            allowance: self.meter,
+            allowance: self.allowance,
         }
     }
 
@@ -244,18 +244,18 @@ pub trait Base: Send + Sync {
     }
     /// Whether the base can be anywhere in the room at all: a task whose
     /// base fits nowhere is answered "does not fit". Where working that
-    /// out would take the run past its work (`meter`), it is cut short
-    /// and the run stopped.
-    fn fit(&self, room: &Room, meter: &Meter) -> Fit;
+    /// out would take the run past what `allowance` allows, it is cut
+    /// short and the run stopped.
+    fn fit(&self, room: &Room, allowance: &dyn Allowance) -> Fit;
     /// [`Base::fit`] in `room`, which is `beside` with obstacles or doors
     /// taken away (as finding why a reach failed tries it), where
     /// `beside`'s has been found: the base fits wherever it fitted there,
     /// which need not be searched again.
-    fn fit_beside(&self, room: &Room, _beside: &Room, meter: &Meter) -> Fit {
-        self.fit(room, meter)
+    fn fit_beside(&self, room: &Room, _beside: &Room, allowance: &dyn Allowance) -> Fit {
+        self.fit(room, allowance)
     }
     /// What working out where the base may stand in `room` cost, in units
-    /// of the meter ([`crate::meter`]), once [`Base::fit`] has: for a mobile
+    /// of work ([`crate::allowance`]), once [`Base::fit`] has: for a mobile
     /// base, the search at each heading for floor it fits on, the routes
     /// from the doors, and where it fits nowhere, the search for how much
     /// smaller it would fit. The run charges it to the first task
@@ -277,7 +277,7 @@ pub trait Base: Send + Sync {
         false
     }
     /// What getting ready for reaches with `chain` costs beyond where the
-    /// base fits ([`Base::floor_work`]), in units of the meter: a mobile
+    /// base fits ([`Base::floor_work`]), in units of work: a mobile
     /// base's capability map of the person. The run charges it to the
     /// first task by the person with those effectors.
     fn prepare_work(&self, _chain: &Chain) -> u64 {

@@ -5,7 +5,7 @@
 //! national one) is added the same way.
 
 use super::{Options, Plugin, SettingsError};
-use crate::meter::Meter;
+use crate::allowance::Allowance;
 use crate::report::StandardReport;
 use crate::scene::Room;
 
@@ -18,7 +18,7 @@ pub trait StandardPlugin: Plugin {
 pub trait Standard: Send + Sync {
     /// `room` checked against the standard's rules: each with what was
     /// measured, what the rule allows and whether it holds. What working
-    /// out its floor costs is charged to `meter`; once the run is past
-    /// its limit the check may stop short (the run then gives no answer).
-    fn check(&self, room: &Room, meter: &Meter) -> StandardReport;
+    /// out its floor costs is spent from `allowance`; once that is
+    /// exhausted the check may stop short (the run then gives no answer).
+    fn check(&self, room: &Room, allowance: &dyn Allowance) -> StandardReport;
 }

@@ -9,11 +9,11 @@ use std::sync::Arc;
 use nalgebra::Point3;
 
 use super::{Base, Options, Plugin, Registry, SettingsError, Tries};
+use crate::allowance::Allowance;
 use crate::collision::Touched;
 use crate::engine::KeptSolves;
 use crate::error::ErrorKind;
 use crate::kinematics::Chain;
-use crate::meter::Meter;
 use crate::progress::Progress;
 use crate::report::{Names, TaskReport};
 use crate::scene::{Person, Room, Surface, Target};
@@ -73,9 +73,9 @@ pub struct TaskInput<'a> {
     /// (watch mode's cache), if anywhere: only a task that
     /// [`Task::records_touches`] is given one.
     pub touched: Option<&'a Arc<Touched>>,
-    /// What the task's solves tell their work to ([`crate::meter`]): a
-    /// task whose run passes the limit is thrown away with the run.
-    pub meter: &'a Meter,
+    /// What the task's solves tell their work to ([`crate::allowance`]):
+    /// a task whose run passes its bound is thrown away with the run.
+    pub allowance: &'a dyn Allowance,
     /// Where a map's solves are kept for the task's next run, and taken
     /// from its last (watch mode's cache): given with [`TaskInput::touched`].
     pub solves: Option<&'a KeptSolves>,

@@ -12,8 +12,8 @@ pub use expect::{ExpectCheck, ExpectSpec};
 use std::fmt;
 use std::sync::Arc;
 
+use crate::allowance::Unbounded;
 use crate::error::{Error, ErrorKind};
-use crate::meter::Meter;
 use crate::options::Options;
 use crate::plugin::{Base, FormatScene, Standard, Subject, Task, TaskInput, TaskPlace};
 use crate::progress::Progress;
@@ -193,7 +193,7 @@ impl Scenario {
             progress,
             verdict_only: false,
             touched: None,
-            meter: Meter::unmetered(),
+            allowance: &Unbounded,
             solves: None,
         }
     }

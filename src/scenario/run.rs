@@ -411,7 +411,7 @@ impl Scenario {
         let input = TaskInput {
             verdict_only,
             touched: touched.as_ref(),
-            meter: &meter,
+            allowance: &meter,
             solves: solves.as_ref(),
             ..self.input(task, progress)
         };

@@ -23,8 +23,8 @@
 
 use super::figures::ADA2010;
 use super::rules;
+use crate::allowance::Allowance;
 use crate::bases::Approach;
-use crate::meter::Meter;
 use crate::plugin::{
     Options, ParamSpec, Params, Plugin, Settings, SettingsError, Standard, StandardPlugin,
 };
@@ -79,7 +79,7 @@ impl StandardPlugin for Ada2010 {
 struct Checked(Approach);
 
 impl Standard for Checked {
-    fn check(&self, room: &Room, meter: &Meter) -> StandardReport {
-        rules::check(&ADA2010, self.0, room, meter)
+    fn check(&self, room: &Room, allowance: &dyn Allowance) -> StandardReport {
+        rules::check(&ADA2010, self.0, room, allowance)
     }
 }

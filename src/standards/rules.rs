@@ -17,11 +17,11 @@ use nalgebra::{Point3, Vector2};
 
 use super::elements::{approached, crossing_within, knee_depth, Approached};
 use super::figures::Figures;
+use crate::allowance::Allowance;
 use crate::bases::Approach;
 use crate::floor::{
     disc_centre, door_clear_width, knee_limited, route_width, t_space, FreeFloor, RouteFloor,
 };
-use crate::meter::Meter;
 use crate::report::{mm, ElementCheck, FloorShape, RuleCheck, StandardReport};
 use crate::scene::{BoxObstacle, Door, Room, Target};
 
@@ -39,12 +39,17 @@ const DOOR_REVEAL: f64 = 20.0;
 
 /// Standard `f`'s rules on `room`, every element usable by `approach`;
 /// the floors worked out are charged to `meter`.
-pub fn check(f: &Figures, approach: Approach, room: &Room, meter: &Meter) -> StandardReport {
+pub fn check(
+    f: &Figures,
+    approach: Approach,
+    room: &Room,
+    allowance: &dyn Allowance,
+) -> StandardReport {
     // Floor under an element counts only so deep (306).
     let knees = knee_limited(room, f.knee_high_mm, f.knee_deepest_mm);
-    let floor = FreeFloor::new(&knees, f.knee_high_mm, meter);
+    let floor = FreeFloor::new(&knees, f.knee_high_mm, allowance);
     // A route's floor, to the rounded width (as `route` measures).
-    let routes = RouteFloor::new(room, f.route_mm - 0.5, f.headroom_mm, meter);
+    let routes = RouteFloor::new(room, f.route_mm - 0.5, f.headroom_mm, allowance);
     let mut notes = Vec::new();
     if room.doors.is_empty() {
         notes.push(format!(
@@ -64,7 +69,7 @@ pub fn check(f: &Figures, approach: Approach, room: &Room, meter: &Meter) -> Sta
         checks: 0,
         failed: 0,
         notes,
-        room_rules: std::iter::once(turning_space(f, &knees, routes.as_ref(), meter))
+        room_rules: std::iter::once(turning_space(f, &knees, routes.as_ref(), allowance))
             .chain(room.doors.iter().map(|d| door_width(f, room, d)))
             .collect(),
         elements: {
@@ -73,7 +78,7 @@ pub fn check(f: &Figures, approach: Approach, room: &Room, meter: &Meter) -> Sta
                 floor: &floor,
                 routes: routes.as_ref(),
                 meshes: mesh_bounds(room),
-                meter,
+                allowance,
                 figures: f,
             };
             room.targets
@@ -91,7 +96,7 @@ fn turning_space(
     f: &Figures,
     room: &Room,
     routes: Option<&RouteFloor>,
-    meter: &Meter,
+    allowance: &dyn Allowance,
 ) -> RuleCheck {
     let limit = format!("a {turning_mm:.0} mm circle, or a T in a {turning_mm:.0} mm square with {turning_arm_mm:.0} mm arms", turning_mm = f.turning_mm, turning_arm_mm = f.turning_arm_mm);
     // Exactly the rule's figures hold.
@@ -100,7 +105,7 @@ fn turning_space(
         f.turning_mm - 2.0 * EXACT_MM,
         f.turning_arm_mm - 2.0 * EXACT_MM,
     );
-    if let Some(c) = disc_centre(room, radius, f.knee_high_mm, routes, meter) {
+    if let Some(c) = disc_centre(room, radius, f.knee_high_mm, routes, allowance) {
         return RuleCheck {
             section: f.sections.turning_circle.into(),
             rule: "turning space".into(),
@@ -118,7 +123,7 @@ fn turning_space(
             }),
         };
     }
-    if let Some((c, heading)) = t_space(room, square, arm, f.knee_high_mm, routes, meter) {
+    if let Some((c, heading)) = t_space(room, square, arm, f.knee_high_mm, routes, allowance) {
         return RuleCheck {
             section: f.sections.turning_t.into(),
             rule: "turning space".into(),
@@ -136,8 +141,8 @@ fn turning_space(
         };
     }
     let cut_off = routes.is_some()
-        && (disc_centre(room, radius, f.knee_high_mm, None, meter).is_some()
-            || t_space(room, square, arm, f.knee_high_mm, None, meter).is_some());
+        && (disc_centre(room, radius, f.knee_high_mm, None, allowance).is_some()
+            || t_space(room, square, arm, f.knee_high_mm, None, allowance).is_some());
     RuleCheck {
         section: f.sections.turning.into(),
         rule: "turning space".into(),
@@ -222,7 +227,7 @@ struct Measure<'r> {
     routes: Option<&'r RouteFloor<'r>>,
     meshes: Vec<BoxObstacle>,
     /// What the floors worked out are charged to.
-    meter: &'r Meter,
+    allowance: &'r dyn Allowance,
     /// The standard's figures.
     figures: &'r Figures,
 }
@@ -273,7 +278,7 @@ fn element(m: &Measure<'_>, t: &Target, approach: Approach) -> ElementCheck {
         usage.rules.pop();
         usage
             .rules
-            .push(route(m.figures, m.room, &usage.space, m.meter));
+            .push(route(m.figures, m.room, &usage.space, m.allowance));
     }
     ElementCheck {
         name: t.name.clone(),
@@ -595,13 +600,13 @@ fn clear_floor(
 }
 
 /// 403.5.1: the widest way from a door to `space`.
-fn route(f: &Figures, room: &Room, space: &Polygon<f64>, meter: &Meter) -> RuleCheck {
+fn route(f: &Figures, room: &Room, space: &Polygon<f64>, allowance: &dyn Allowance) -> RuleCheck {
     let (width, door) = room
         .doors
         .iter()
         .map(|d| {
             (
-                route_width(room, d, space, f.headroom_mm, ROUTE_MOST, meter),
+                route_width(room, d, space, f.headroom_mm, ROUTE_MOST, allowance),
                 d.name.as_str(),
             )
         })
@@ -625,6 +630,7 @@ fn route(f: &Figures, room: &Room, space: &Polygon<f64>, meter: &Meter) -> RuleC
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::allowance::Unbounded;
     use crate::scene::MeshObstacle;
     use crate::standards::figures::ADA2010;
     use nalgebra::Vector3;
@@ -652,14 +658,14 @@ mod tests {
         };
         let switch = Point3::new(0.0, 2000.0, 1000.0);
         let reach_from_the_room = |room: &Room| {
-            let meter = Meter::unmetered();
-            let floor = FreeFloor::new(room, ADA2010.knee_high_mm, meter);
+            let allowance = &Unbounded;
+            let floor = FreeFloor::new(room, ADA2010.knee_high_mm, allowance);
             let m = Measure {
                 room,
                 floor: &floor,
                 routes: None,
                 meshes: mesh_bounds(room),
-                meter,
+                allowance,
                 figures: &ADA2010,
             };
             forward(&m, &switch, &approached(room, &switch, Vector2::x())).rules[0].clone()

@@ -6,9 +6,9 @@
 
 use nalgebra::Point3;
 
+use crate::allowance::Allowance;
 use crate::collision::Obstacles;
 use crate::kinematics::Chain;
-use crate::meter::Meter;
 use crate::plugin::{
     Dependence, EffectorNeed, Params, Placement, PluginConfig, PluginKind, ReachQuery, Registry,
     Retry, Search, SettingsError, Solver, TaskInput, Tries, Value,
@@ -189,7 +189,7 @@ impl Reaching {
         self.common.collisions.then(|| {
             Obstacles::new(input.room, self.common.clearance_mm)
                 .recording(input.touched)
-                .charging(input.meter)
+                .charging(input.allowance)
         })
     }
 
@@ -203,7 +203,7 @@ impl Reaching {
         search: Search,
         obstacles: Option<&'q Obstacles>,
         own: &'q OwnBody,
-        meter: &'q Meter,
+        allowance: &'q dyn Allowance,
     ) -> ReachQuery<'q> {
         let retry = (obstacles.is_some() && self.common.blocked_retries > 0).then(|| Retry {
             solver: self.blocked_solver.as_ref(),
@@ -222,7 +222,7 @@ impl Reaching {
             last_resort: None,
             from_rest: true,
             descents: None,
-            meter,
+            allowance,
             solves: None,
         }
     }

@@ -247,7 +247,7 @@ impl Task for GazeTask {
             Search::MostComfortable,
             obstacles.body.as_ref(),
             input.base.own_body(),
-            input.meter,
+            input.allowance,
         );
         let placement = input
             .base
@@ -287,7 +287,7 @@ impl<'a> GazeObstacles<'a> {
         GazeObstacles {
             sight: Obstacles::new(input.room, 0.0)
                 .recording(input.touched)
-                .charging(input.meter),
+                .charging(input.allowance),
             body: reaching.obstacles(input),
             room: input.room,
             own: input.base.own_body(),

@@ -148,14 +148,14 @@ fn map_report(
         asked,
         judge,
         prepared: input.base.prepare(input.room, asked.chain),
-        proofs: KeptProofs::new(asked.chain, input.base.own_body(), input.meter),
+        proofs: KeptProofs::new(asked.chain, input.base.own_body(), input.allowance),
         solves: (input.solves).map(|s| s.of(asked.chain, asked.obstacles, input.base.own_body())),
     };
     let mut solved = run.first_pass(&grid);
     run.proofs.settle();
     // A run past its bound on solver work is thrown away: what is left of
     // the map is not worked out.
-    let stopped = || input.meter.exceeded();
+    let stopped = || input.allowance.exhausted();
     if asked.grid.neighbour_starts && !stopped() {
         let reached: Vec<usize> = (0..solved.len())
             .filter(|&i| solved[i].reached.is_some())
@@ -248,7 +248,7 @@ impl<'a> GridRun<'a> {
                     Search::FirstReaching,
                     self.asked.obstacles,
                     self.input.base.own_body(),
-                    self.input.meter,
+                    self.input.allowance,
                 )
                 .keeping_proofs(&self.proofs)
         }
@@ -268,7 +268,7 @@ impl<'a> GridRun<'a> {
             descents: Some(descents).filter(|_| self.asked.grid.neighbour_starts),
             ..self.query(cell, neighbour)
         };
-        if self.input.meter.exceeded() {
+        if self.input.allowance.exhausted() {
             // The run is thrown away: the point is left unsolved.
             let placement = Placement {
                 pose: BasePose {
@@ -479,7 +479,7 @@ impl<'a> GridRun<'a> {
                     (harder || steer).then_some((i, harder))
                 })
                 .collect();
-            if holes.is_empty() || self.input.meter.exceeded() {
+            if holes.is_empty() || self.input.allowance.exhausted() {
                 return;
             }
             for &(i, harder) in &holes {

@@ -112,7 +112,7 @@ impl Task for ReachTask {
                 search,
                 obstacles.as_ref(),
                 own,
-                input.meter,
+                input.allowance,
             )
         };
         let prepared = input.base.prepare(input.room, &chain);

@@ -201,7 +201,7 @@ impl Task for ReachAndGazeTask {
             Search::MostComfortable,
             obstacles.body.as_ref(),
             own,
-            input.meter,
+            input.allowance,
         );
         // Not walked in (`walk_in.rs`): searched with the eyes' chain, a
         // seated person's reach and gaze at a shelf took 160 M units, and
@@ -372,7 +372,7 @@ impl Solving<'_, '_> {
                     own,
                     base_pose: pose,
                 }),
-                allowance: self.input.meter,
+                allowance: self.input.allowance,
             },
         )
     }

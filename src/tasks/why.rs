@@ -22,9 +22,9 @@
 use nalgebra::Point3;
 
 use super::common::Reaching;
+use crate::allowance::Allowance;
 use crate::collision::{obstacle_bounds, Obstacles, PlacedObstacles, TOUCH_MARGIN_MM};
 use crate::kinematics::{Chain, JointKind};
-use crate::meter::Meter;
 use crate::plugin::{Base, Placement, ReachQuery, Search, TaskInput};
 use crate::report::{Why, WIDENED_DEG};
 use crate::scene::{Blocker, OwnBody, Room};
@@ -153,7 +153,7 @@ impl Failed<'_> {
             return false;
         };
         let query = self.query(self.chain, self.obstacles, own);
-        charge_floor(free.as_ref(), self.input.room, None, self.input.meter);
+        charge_floor(free.as_ref(), self.input.room, None, self.input.allowance);
         let placed = free
             .prepare(self.input.room, self.chain)
             .reach(&query, self.reaching.solver.as_ref());
@@ -396,7 +396,7 @@ impl Failed<'_> {
             self.input.base,
             room,
             Some(self.input.room),
-            self.input.meter,
+            self.input.allowance,
         );
         self.input
             .base
@@ -423,7 +423,7 @@ impl Failed<'_> {
                 Search::MostComfortable,
                 obstacles,
                 own,
-                self.input.meter,
+                self.input.allowance,
             )
         }
     }
@@ -504,16 +504,16 @@ fn beyond_limits(chain: &Chain, q: &[f64]) -> Vec<String> {
 /// the search's floor counts towards the run's work as the task's own
 /// does, where the base's floor differs from the task's (and only for
 /// what it searches afresh: wherever it fitted there, it fits here).
-fn charge_floor(base: &dyn Base, room: &Room, beside: Option<&Room>, meter: &Meter) {
+fn charge_floor(base: &dyn Base, room: &Room, beside: Option<&Room>, allowance: &dyn Allowance) {
     let work = match beside {
         Some(beside) => {
-            base.fit_beside(room, beside, meter);
+            base.fit_beside(room, beside, allowance);
             base.floor_work_beside(room, beside)
         }
         None => {
-            base.fit(room, meter);
+            base.fit(room, allowance);
             base.floor_work(room)
         }
     };
-    meter.charge(work);
+    allowance.spend(work);
 }
