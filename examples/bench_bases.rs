@@ -72,7 +72,7 @@ fn main() {
     ];
     let own = OwnBody::default();
     for ((name, base), paper) in bases.iter().zip(paper) {
-        let prepared = base.prepare(room, &chain);
+        let prepared = base.prepare(room, &chain, &reach::allowance::Unbounded);
         let (mut ok, mut sweeps) = (0usize, 0u64);
         let mut times = Vec::with_capacity(n);
         for (i, t) in targets.iter().enumerate() {

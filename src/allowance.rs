@@ -7,6 +7,8 @@
 
 use std::sync::Arc;
 
+use crate::kept::Memo;
+
 /// What a computation tells its work to. A solver needs only
 /// [`Allowance::spend`] and [`Allowance::exhausted`]; the rest is for the
 /// long computations of bases and standards (a room's floor), whose
@@ -36,6 +38,11 @@ pub trait Allowance: Sync {
     /// The computation `key` is done (or given up): it no longer counts
     /// as in flight.
     fn flight_landed(&self, _key: u64) {}
+    /// The values the run keeps (a room's floor, its routes), which
+    /// outlive the computation: by default none are kept.
+    fn memo(&self) -> Arc<Memo> {
+        Arc::new(Memo::forgetting())
+    }
     /// The same allowance, to be kept by what cannot borrow it (the
     /// obstacles a task's checks are put to, which charge the triangles
     /// of meshes they test).
@@ -97,6 +104,26 @@ impl Allowance for Unbounded {
     }
     fn shared(&self) -> Arc<dyn Allowance + Send> {
         Arc::new(Unbounded)
+    }
+}
+
+/// An allowance that never runs out and keeps the values it is asked for
+/// in a run's memo: what a base works out unmetered for a run (what the
+/// run's metered search already paid for, asked again).
+pub struct Unmetered(pub Arc<Memo>);
+
+impl Allowance for Unmetered {
+    fn spend(&self, _units: u64) -> bool {
+        true
+    }
+    fn exhausted(&self) -> bool {
+        false
+    }
+    fn memo(&self) -> Arc<Memo> {
+        Arc::clone(&self.0)
+    }
+    fn shared(&self) -> Arc<dyn Allowance + Send> {
+        Arc::new(Unmetered(Arc::clone(&self.0)))
     }
 }
 

@@ -69,6 +69,8 @@ pub use limits::Limits;
 pub use loader::Input;
 pub use machine_diagnostics::DiagnosticStyle;
 
+use std::sync::Arc;
+
 use plugin::Registry;
 use report::Report;
 use scenario::Scenario;
@@ -76,10 +78,11 @@ use source::Sources;
 
 /// How scenarios are checked and run: the limits, the directories files
 /// may be read from besides each root's own (`--allow-path`; see
-/// [`read`]), what long tasks (maps) tell their progress to, and how many
-/// threads run the tasks. `Session::default()` has the defaults:
-/// [`Limits::default`], no other directory, no progress, rayon's global
-/// pool.
+/// [`read`]), what long tasks (maps) tell their progress to, how many
+/// threads run the tasks and what the runs keep for each other (floors,
+/// routes, capability maps: [`kept::Memo`]). `Session::default()` has the
+/// defaults: [`Limits::default`], no other directory, no progress, rayon's
+/// global pool, a memo for each run.
 ///
 /// ```no_run
 /// let registry = reach::plugin::Registry::builtin();
@@ -96,6 +99,7 @@ pub struct Session<'a> {
     also_allowed: &'a [std::path::PathBuf],
     progress: &'a dyn progress::Progress,
     threads: Option<usize>,
+    memo: Option<&'a Arc<kept::Memo>>,
 }
 
 /// A run's report and the work its solvers did, in the units of
@@ -113,6 +117,7 @@ impl Default for Session<'_> {
             also_allowed: &[],
             progress: &progress::NoProgress,
             threads: None,
+            memo: None,
         }
     }
 }
@@ -135,6 +140,17 @@ impl<'a> Session<'a> {
     /// Telling `progress` how long tasks advance.
     pub fn progress(self, progress: &'a dyn progress::Progress) -> Self {
         Session { progress, ..self }
+    }
+
+    /// Keeping what the runs work out that does not depend on the tasks
+    /// (a base's floor, its routes, a person's capability map) in `memo`,
+    /// for the runs after (a watch session's): the answers are those of a
+    /// memo of the run's own.
+    pub fn keeping(self, memo: &'a Arc<kept::Memo>) -> Self {
+        Session {
+            memo: Some(memo),
+            ..self
+        }
     }
 
     /// Running the tasks on a pool of `threads` threads (at least 1) of
@@ -177,11 +193,13 @@ impl<'a> Session<'a> {
         let pool = self
             .threads
             .and_then(|n| rayon::ThreadPoolBuilder::new().num_threads(n).build().ok());
+        let own = Arc::default();
+        let memo = self.memo.unwrap_or(&own);
         match pool {
-            Some(pool) => pool.install(|| run_on_this_pool(scenario, self.progress)),
+            Some(pool) => pool.install(|| run_on_this_pool(scenario, self.progress, memo)),
             // Without a pool of its own (none asked for, or the system
             // gave none), on rayon's global one: the same answers.
-            None => run_on_this_pool(scenario, self.progress),
+            None => run_on_this_pool(scenario, self.progress, memo),
         }
     }
 }
@@ -197,12 +215,16 @@ pub fn run(scenario: &Scenario) -> Result<Report, Error> {
     Session::default().run(scenario).map(|ran| ran.report)
 }
 
-fn run_on_this_pool(scenario: &Scenario, progress: &dyn progress::Progress) -> Result<Ran, Error> {
+fn run_on_this_pool(
+    scenario: &Scenario,
+    progress: &dyn progress::Progress,
+    memo: &Arc<kept::Memo>,
+) -> Result<Ran, Error> {
     let all: Vec<&scenario::TaskSpec> = scenario.tasks.iter().collect();
-    let ran = scenario.run_tasks(&all, progress)?;
+    let ran = scenario.run_tasks(&all, progress, memo)?;
     let work: u64 = ran.iter().map(|r| r.work).sum();
     let tasks = ran.into_iter().map(|r| r.report).collect();
-    let (report, standards) = scenario.report(tasks, work)?;
+    let (report, standards) = scenario.report(tasks, work, memo)?;
     Ok(Ran {
         report,
         work: work + standards,

@@ -28,6 +28,7 @@ use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Arc, LazyLock, Mutex};
 
 pub use crate::allowance::Allowance;
+use crate::kept::Memo;
 
 /// How many solids a posture check counts (an arm's links and hand).
 pub const POSTURE_CAPSULES: u64 = 8;
@@ -89,16 +90,26 @@ pub struct RunWork {
     flights: Mutex<BTreeMap<u64, u64>>,
     /// Set where a flight was cut short: the run is past its limit.
     stopped: AtomicBool,
+    /// The values the run keeps, which a watch session may keep across
+    /// its runs.
+    memo: Arc<Memo>,
 }
 
 impl RunWork {
-    /// Nothing spent yet, of `limit` units.
+    /// Nothing spent yet, of `limit` units, keeping values in a memo of
+    /// its own.
     pub fn new(limit: u64) -> Arc<Self> {
+        RunWork::keeping(limit, Arc::default())
+    }
+
+    /// Nothing spent yet, of `limit` units, keeping values in `memo`.
+    pub fn keeping(limit: u64, memo: Arc<Memo>) -> Arc<Self> {
         Arc::new(RunWork {
             spent: AtomicU64::new(0),
             limit,
             flights: Mutex::default(),
             stopped: AtomicBool::new(false),
+            memo,
         })
     }
 
@@ -131,7 +142,7 @@ pub struct Meter {
     own: Arc<AtomicU64>,
     run: Option<Arc<RunWork>>,
     /// The pieces of floor this task has been charged for working out
-    /// (by the key the process keeps them by): looked at again, they are
+    /// (by the key a memo keeps them by): looked at again, they are
     /// charged for looking alone (`floor/tiles.rs`).
     pieces: Mutex<BTreeSet<u64>>,
 }
@@ -175,6 +186,9 @@ impl Allowance for Meter {
         if let Some(run) = &self.run {
             run.flights().remove(&key);
         }
+    }
+    fn memo(&self) -> Arc<Memo> {
+        memo_of(self.run.as_ref())
     }
     fn shared(&self) -> Arc<dyn Allowance + Send> {
         Arc::new(self.account())
@@ -229,6 +243,11 @@ impl Meter {
     pub fn spent(&self) -> u64 {
         self.own.load(Ordering::Relaxed)
     }
+}
+
+/// The memo of `run`; one that keeps nothing where there is no run.
+fn memo_of(run: Option<&Arc<RunWork>>) -> Arc<Memo> {
+    run.map_or_else(|| Arc::new(Memo::forgetting()), |run| Arc::clone(&run.memo))
 }
 
 thread_local! {
@@ -290,6 +309,9 @@ impl Allowance for Account {
     }
     fn exhausted(&self) -> bool {
         self.exceeded()
+    }
+    fn memo(&self) -> Arc<Memo> {
+        memo_of(self.run.as_ref())
     }
     fn shared(&self) -> Arc<dyn Allowance + Send> {
         Arc::new(self.clone())

@@ -458,7 +458,7 @@ fn plugins_and_solvers_know_an_allowance_not_the_meter() {
 /// why it may not be owned by a run or a watch session instead.
 #[test]
 fn every_static_is_listed_with_what_it_holds() {
-    const LISTED: [(&str, &str, &str); 13] = [
+    const LISTED: [(&str, &str, &str); 7] = [
         ("ansur.rs", "SURVEY", "immutable: the survey's rows"),
         ("syntax/parser.rs", "PRATT", "immutable: the operator table"),
         (
@@ -473,31 +473,6 @@ fn every_static_is_listed_with_what_it_holds() {
             "a lock: one --out set written at a time",
         ),
         (
-            "bases/capability.rs",
-            "MAPS",
-            "process cache: capability maps by chain and body",
-        ),
-        (
-            "bases/placement.rs",
-            "FLOORS",
-            "process cache: a base's floor by room",
-        ),
-        (
-            "floor/region.rs",
-            "PIECES",
-            "process cache: floor pieces by outline",
-        ),
-        (
-            "floor/routes.rs",
-            "KEPT",
-            "process cache: routes from the doors",
-        ),
-        (
-            "floor/clear.rs",
-            "WHOLE",
-            "process cache: a standard's free floor",
-        ),
-        (
             "meter.rs",
             "COUNTED",
             "thread: the work of the solve running on it",
@@ -506,11 +481,6 @@ fn every_static_is_listed_with_what_it_holds() {
             "collision/touched.rs",
             "SCOPE",
             "thread: the obstacles its task touched",
-        ),
-        (
-            "report/map.rs",
-            "CELLS_APART",
-            "thread: a map's cells written apart",
         ),
     ];
     let files = source_files();

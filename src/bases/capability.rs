@@ -14,9 +14,9 @@
 //! built: a reach looks at a few hundred of the 8,192, and a population of
 //! a thousand people builds a thousand maps.
 //!
-//! Maps are kept for the process's life, keyed by everything they depend
-//! on (the chain and the person's own body), so watch mode and the people
-//! of a scenario who share a body share one map.
+//! Maps are kept in the memo of the run or the watch session, keyed by
+//! everything they depend on (the chain and the person's own body), so watch
+//! mode and the people of a scenario who share a body share one map.
 
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex, OnceLock};
@@ -25,6 +25,7 @@ use nalgebra::{Vector2, Vector3};
 use rand_chacha::rand_core::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 
+use crate::kept::{Memo, Table};
 use crate::kinematics::{Chain, Owner};
 use crate::scene::OwnBody;
 use crate::solvers::random_posture;
@@ -121,15 +122,14 @@ impl Capability {
         SAMPLES as u64 * (4 + chain.dof() as u64)
     }
 
-    /// The map of `chain` and `own`, built once per process.
-    pub fn of(chain: &Chain, own: &OwnBody) -> Arc<Capability> {
-        static MAPS: OnceLock<Mutex<Maps>> = OnceLock::new();
+    /// The map of `chain` and `own`, built once for the run or watch
+    /// session whose `memo` this is (two threads asking for it at once
+    /// build it once).
+    pub fn of(chain: &Chain, own: &OwnBody, memo: &Memo) -> Arc<Capability> {
+        let maps = MAPS.get_or(memo, 0, Arc::default);
         let key = format!("{chain:?}{own:?}");
         let cell = {
-            let mut maps = MAPS
-                .get_or_init(Mutex::default)
-                .lock()
-                .unwrap_or_else(|e| e.into_inner());
+            let mut maps = maps.lock().unwrap_or_else(|e| e.into_inner());
             let bytes = Capability::bytes(chain);
             if maps.built.len() >= MAPS_KEPT || maps.bytes + bytes > MAPS_KEPT_BYTES {
                 *maps = Maps::default();
@@ -199,13 +199,17 @@ struct Maps {
     bytes: usize,
 }
 
-/// How many maps the process keeps before it starts again (about 1 MB
+/// The maps a run or a watch session keeps, as one entry (key 0) of its
+/// memo, bounded by their count and their memory together.
+const MAPS: Table<Arc<Mutex<Maps>>> = Table::new("capability maps", 1);
+
+/// How many maps a memo keeps before it starts again (about 1 MB
 /// each): enough for the people of a scenario and their effectors; the
 /// members of a population each have their own, used by one thread while
 /// it runs that person's tasks.
 const MAPS_KEPT: usize = 64;
 
-/// The most memory the maps kept may take before the process starts
+/// The most memory the maps kept may take before the memo starts
 /// again: a chain of 700 joints makes a map of 46 MB, and 64 of them
 /// took 3 GB.
 const MAPS_KEPT_BYTES: usize = 256 << 20;

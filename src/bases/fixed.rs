@@ -104,7 +104,12 @@ impl Base for FixedBase {
         !room.contains(&self.pose.position_mm)
     }
 
-    fn prepare<'a>(&'a self, _: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a> {
+    fn prepare<'a>(
+        &'a self,
+        _: &'a Room,
+        chain: &'a Chain,
+        _: &dyn Allowance,
+    ) -> Box<dyn PreparedBase + 'a> {
         Box::new(Prepared {
             pose: self.pose,
             chain,

@@ -31,13 +31,12 @@ use super::capability::Capability;
 use super::face::face_normal;
 use super::placing::{Approach, Placing, SIDE_SLACK_MM};
 use super::search::{search, search_retrying_later, Candidate};
-use crate::allowance::{Allowance, Unbounded};
+use crate::allowance::{Allowance, Unbounded, Unmetered};
 use crate::floor::{
-    unbounded, CutShort, Doorway, FloorObstacles, Footprint, Looked, Misfit, Region, Routes, Shut,
-    Work,
+    CutShort, Doorway, FloorObstacles, Footprint, Looked, Misfit, Region, Routes, Shut, Work,
 };
 use crate::geometry::Solid;
-use crate::kept::Kept;
+use crate::kept::{Memo, Table};
 use crate::kinematics::Chain;
 use crate::plugin::{
     Base, BasePose, Fit, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Solver, Tries,
@@ -92,6 +91,9 @@ struct Floor {
     /// How the base comes in by each door (none: the room has no door,
     /// and the base may be placed wherever it fits).
     doors: Option<Vec<Doorway>>,
+    /// The routes from the doors (none: the room has no door, or the base
+    /// fits nowhere).
+    routes: Option<Arc<Routes>>,
     /// Whether it fits somewhere, doors aside.
     fits: bool,
     /// What working it out cost, in units of the meter
@@ -161,11 +163,12 @@ impl<T> ByRoom<T> {
     }
 }
 
-/// The floors worked out in this process, by [`Mobile::floor_key`]: watch
+/// The floors worked out for a run or a watch session, by
+/// [`Mobile::floor_key`]: watch
 /// mode checks the scenario again at every save, and a target moved or a
 /// task added leaves every base's floor as it was. 64: enough for the bases
 /// of a scenario; a population's members each have their own.
-static FLOORS: Kept<Floor> = Kept::new(64);
+const FLOORS: Table<Floor> = Table::new("floors", 64);
 
 /// What a misfit's flight is keyed by, with its floor's key (the two
 /// are worked out apart, and charged apart).
@@ -243,7 +246,9 @@ impl Mobile {
             });
             let hint = hint.as_ref().and_then(|c| c.get());
             let floor = FLOORS
-                .get_or_try(key, || self.compute_floor(room, hint, key, allowance))
+                .get_or_try(&allowance.memo(), key, || {
+                    self.compute_floor(room, hint, key, allowance)
+                })
                 .unwrap_or_else(|cut| {
                     // Past the run's limit: the run stops.
                     allowance.spend(cut.work);
@@ -251,6 +256,7 @@ impl Mobile {
                     Floor {
                         regions: Vec::new(),
                         doors: None,
+                        routes: None,
                         fits: false,
                         work: cut.work,
                     }
@@ -289,6 +295,7 @@ impl Mobile {
     ) -> Result<Floor, CutShort> {
         let zone = self.placing.zone.as_ref();
         let headings = &self.placing.headings;
+        let memo = allowance.memo();
         // Charged once done: in flight, counted with the others.
         let flight = allowance.flight(key);
         let within = |units: u64| flight.within(units);
@@ -300,7 +307,7 @@ impl Mobile {
         work.add(obstacles.work())?;
         let region = |k: usize, h: f64| {
             let obstacles = Arc::clone(&obstacles);
-            let region = Region::new(room, &self.footprint, h, zone, obstacles);
+            let region = Region::new(room, &self.footprint, h, zone, obstacles, &memo);
             hinted(region, found_there(hint, k))
         };
         let regions: Regions = if self.footprint.turns() {
@@ -314,7 +321,7 @@ impl Mobile {
         let fits = any_fits(&regions, &mut work)?;
         let routes = if fits {
             let left = |units: u64| work.allows(units);
-            Routes::of(room, &self.footprint, headings, &left)
+            Routes::of(room, &self.footprint, headings, &left, &memo)
                 .map_err(|cut| work.cut_short_with(cut.work))?
         } else {
             None
@@ -323,6 +330,7 @@ impl Mobile {
             return Ok(Floor {
                 regions,
                 doors: None,
+                routes: None,
                 fits,
                 work: work.done,
             });
@@ -331,7 +339,7 @@ impl Mobile {
         let reached = |k: usize, h: f64| {
             let obstacles = Arc::clone(&obstacles);
             let routes = Arc::clone(&routes);
-            let region = Region::reached(room, &self.footprint, h, zone, obstacles, routes);
+            let region = Region::reached(room, &self.footprint, h, zone, obstacles, routes, &memo);
             hinted(region, found_there(hint, k))
         };
         let regions: Regions = (headings.iter().enumerate())
@@ -341,6 +349,7 @@ impl Mobile {
         Ok(Floor {
             regions,
             doors: Some(routes.doors.clone()),
+            routes: Some(Arc::clone(&routes)),
             fits,
             work: work.done,
         })
@@ -382,7 +391,8 @@ impl Mobile {
             let within = |units: u64| flight.within(units);
             let mut work = Work::new(&within);
             let (headings, zone) = (&self.placing.headings, self.placing.zone.as_ref());
-            match Misfit::counted(room, &self.footprint, headings, zone, &mut work) {
+            let memo = allowance.memo();
+            match Misfit::counted(room, &self.footprint, headings, zone, &mut work, &memo) {
                 Ok(misfit) => {
                     let _ = cell.set((misfit, work.done));
                 }
@@ -402,10 +412,10 @@ impl Mobile {
     /// The capability map of `chain` and the person's own body: the one
     /// it was last prepared with for an equal chain, where that is still
     /// held (a task's search for why prepares it again for each room it
-    /// tries, the chain unchanged), else the process's
+    /// tries, the chain unchanged), else the memo's
     /// ([`Capability::of`], which finds it by the chain's and the body's
     /// text: for a why-map of 96,000 points, a fifth of the run).
-    fn capability_of(&self, chain: &Chain) -> Arc<Capability> {
+    fn capability_of(&self, chain: &Chain, memo: &Memo) -> Arc<Capability> {
         let lock = || self.capabilities.lock().unwrap_or_else(|e| e.into_inner());
         let held = (lock().iter())
             .find(|(c, _)| c == chain)
@@ -414,7 +424,7 @@ impl Mobile {
             return map;
         }
         // Not under the lock: building a map may wait for other work.
-        let map = Capability::of(chain, &self.own);
+        let map = Capability::of(chain, &self.own, memo);
         let mut remembered = lock();
         remembered.retain(|(c, map)| c != chain && map.strong_count() > 0);
         if remembered.len() >= CAPABILITIES_REMEMBERED {
@@ -426,13 +436,20 @@ impl Mobile {
 
     /// Ready for reaches in `room`: the regions, the capability map and the
     /// workspace centre are computed once.
-    pub fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> PreparedMobile<'a> {
+    pub fn prepare<'a>(
+        &'a self,
+        room: &'a Room,
+        chain: &'a Chain,
+        allowance: &dyn Allowance,
+    ) -> PreparedMobile<'a> {
+        let memo = allowance.memo();
         PreparedMobile {
             mobile: self,
             room,
             chain,
-            floor: self.floor(room, &Unbounded),
-            capability: self.capability_of(chain),
+            // Worked out and charged by `fit` before (unmetered here).
+            floor: self.floor(room, &Unmetered(Arc::clone(&memo))),
+            capability: self.capability_of(chain, &memo),
             half_width_mm: self.footprint.half_width_mm(),
         }
     }
@@ -484,8 +501,13 @@ impl Base for Mobile {
         self.floor_work(room)
     }
 
-    fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a> {
-        Box::new(Mobile::prepare(self, room, chain))
+    fn prepare<'a>(
+        &'a self,
+        room: &'a Room,
+        chain: &'a Chain,
+        allowance: &dyn Allowance,
+    ) -> Box<dyn PreparedBase + 'a> {
+        Box::new(Mobile::prepare(self, room, chain, allowance))
     }
 
     fn placements(&self) -> Tries {
@@ -515,11 +537,11 @@ impl Base for Mobile {
     }
 
     fn enclosing(&self, room: &Room, heading_rad: f64, hip_mm: (f64, f64)) -> Vec<usize> {
-        // The routes the placement followed, kept by the process.
-        let routes = Routes::of(room, &self.footprint, &self.placing.headings, &unbounded);
-        match routes {
-            Ok(Some(routes)) => routes.enclosing(room, &self.footprint, heading_rad, hip_mm),
-            _ => Vec::new(),
+        // The routes the placement followed, with the room's floor.
+        let cell = self.floor(room, &Unbounded);
+        match cell.get().and_then(|floor| floor.routes.as_ref()) {
+            Some(routes) => routes.enclosing(room, &self.footprint, heading_rad, hip_mm),
+            None => Vec::new(),
         }
     }
 

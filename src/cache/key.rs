@@ -15,6 +15,8 @@ use rayon::prelude::*;
 
 use super::reach::{obstacles_within, Tried};
 use super::touched::points_bounds;
+use crate::allowance::Unmetered;
+use crate::kept::Memo;
 use crate::kinematics::{Body, Chain, Joint};
 use crate::plugin::Dependence;
 use crate::progress::NoProgress;
@@ -56,7 +58,11 @@ impl TaskKey {
 /// The keys of the scenario's tasks, in order; `placements` holds, after,
 /// the placements of this scenario's tasks (reused from it where nothing
 /// they depend on changed).
-pub(super) fn keys(scenario: &Scenario, placements: &mut Placements) -> Vec<TaskKey> {
+pub(super) fn keys(
+    scenario: &Scenario,
+    placements: &mut Placements,
+    memo: &Arc<Memo>,
+) -> Vec<TaskKey> {
     let dependences: Vec<Dependence> = scenario
         .tasks
         .par_iter()
@@ -76,7 +82,7 @@ pub(super) fn keys(scenario: &Scenario, placements: &mut Placements) -> Vec<Task
         }
         let tried = match placements.get(floor_key) {
             Some(tried) => Arc::clone(tried),
-            None => Arc::new(tried(scenario, task, dependence)),
+            None => Arc::new(tried(scenario, task, dependence, memo)),
         };
         fresh.insert(*floor_key, tried);
     }
@@ -143,9 +149,16 @@ fn hash_tried(tried: &[Tried], h: &mut DefaultHasher) {
 }
 
 /// The placements a task's base may try for each of its points.
-fn tried(scenario: &Scenario, task: &TaskSpec, dependence: &Dependence) -> Vec<Tried> {
+fn tried(
+    scenario: &Scenario,
+    task: &TaskSpec,
+    dependence: &Dependence,
+    memo: &Arc<Memo>,
+) -> Vec<Tried> {
     let room = &scenario.rooms[task.room];
-    let prepared = scenario.bases[task.person].prepare(room, &dependence.chain);
+    // Worked out before the run, not metered; kept with the session's.
+    let unmetered = Unmetered(Arc::clone(memo));
+    let prepared = scenario.bases[task.person].prepare(room, &dependence.chain, &unmetered);
     dependence
         .points_mm
         .par_iter()

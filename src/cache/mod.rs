@@ -24,6 +24,7 @@ use std::sync::Arc;
 
 use crate::engine::Earlier;
 use crate::error::Error;
+use crate::kept::Memo;
 use crate::progress::Progress;
 use crate::report::{Report, TaskReport};
 use crate::scenario::{Scenario, TaskSpec};
@@ -42,6 +43,9 @@ pub struct TaskCache {
     /// Those of the runs before the last, newest first (at most
     /// [`GENERATIONS`]): an edit undone finds them again.
     older_placements: VecDeque<key::Placements>,
+    /// What the runs work out and keep (floors, routes, capability maps),
+    /// kept across the session's runs.
+    memo: Arc<Memo>,
 }
 
 /// The results of one run.
@@ -91,7 +95,7 @@ impl TaskCache {
                 known.entry(*k).or_insert_with(|| Arc::clone(tried));
             }
         }
-        let mut keys = key::keys(scenario, &mut known);
+        let mut keys = key::keys(scenario, &mut known, &self.memo);
         // A task's work holds its person's floor where it is the first to
         // place them (`Scenario::first_charges`): so does its key.
         for (k, charges) in keys.iter_mut().zip(scenario.first_charges()) {
@@ -119,7 +123,7 @@ impl TaskCache {
         let stale: Vec<&TaskSpec> = stale.into_iter().map(|(task, _)| task).collect();
         let reused_work = held.iter().flatten().map(|((_, w), _)| *w).sum();
         let mut ran_now = scenario
-            .run_tasks_recording(&stale, progress, reused_work, &earlier)?
+            .run_tasks_recording(&stale, progress, reused_work, &earlier, &self.memo)?
             .into_iter();
         let mut kept = HashMap::new();
         let mut results = HashMap::new();
@@ -154,7 +158,7 @@ impl TaskCache {
         }
         let ran = stale.len();
         self.keep_last(Generation { results, kept });
-        let (report, standards) = scenario.report(tasks, work)?;
+        let (report, standards) = scenario.report(tasks, work, &self.memo)?;
         let stats = CacheStats {
             reused: keys.len() - ran,
             ran,

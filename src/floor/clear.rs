@@ -24,7 +24,7 @@ use super::region::{admissible_in, shrunk_room, Grown, Turned};
 use super::work::CutShort;
 use super::{FloorPart, Footprint};
 use crate::allowance::Allowance;
-use crate::kept::Kept;
+use crate::kept::{Memo, Table};
 use crate::scene::{BoxObstacle, Door, Room, Wall};
 
 /// Sides of the polygon inscribed in a circle: its flats are within a
@@ -129,8 +129,9 @@ fn whole(
     footprint.hash_with_floor(room, &mut h);
     heading_rad.to_bits().hash(&mut h);
     let allows = |units: u64| allowance.would_stay_within(units);
-    let found = WHOLE.get_or_try(h.finish(), || {
-        let (region, work) = worked_out(room, footprint, heading_rad, &allows)?;
+    let memo = allowance.memo();
+    let found = WHOLE.get_or_try(&memo, h.finish(), || {
+        let (region, work) = worked_out(room, footprint, heading_rad, &allows, &memo)?;
         Ok::<_, CutShort>((Arc::new(region), work))
     });
     match found {
@@ -146,11 +147,11 @@ fn whole(
     }
 }
 
-/// The regions [`whole`] worked out in this process: watch mode checks a
-/// standard's rules again at every save, and a route's width is found by
-/// halving, each step a region (about 15 a clear floor space); 512 holds
-/// those of a kitchen's elements several times.
-static WHOLE: Kept<(Arc<MultiPolygon<f64>>, u64)> = Kept::new(512);
+/// The regions [`whole`] worked out for a run or a watch session: watch
+/// mode checks a standard's rules again at every save, and a route's
+/// width is found by halving, each step a region (about 15 a clear floor
+/// space); 512 holds those of a kitchen's elements several times.
+const WHOLE: Table<(Arc<MultiPolygon<f64>>, u64)> = Table::new("free floor", 512);
 
 /// Where `footprint`, turned to `heading_rad`, fits in `room`, worked out,
 /// and what that cost; cut short where its obstacles would cost more than
@@ -160,12 +161,13 @@ fn worked_out(
     footprint: &Footprint,
     heading_rad: f64,
     allows: &dyn Fn(u64) -> bool,
+    memo: &Memo,
 ) -> Result<(MultiPolygon<f64>, u64), CutShort> {
     let turned = Turned::new(footprint, heading_rad);
     Ok(match shrunk_room(room, &turned, None) {
         Some(within) => {
             let obstacles = FloorObstacles::with(room, footprint, &[], allows)?;
-            let piece = admissible_in(within, &turned, &obstacles, &Grown::default());
+            let piece = admissible_in(within, &turned, &obstacles, &Grown::default(), memo);
             (piece.free, piece.work.saturating_add(obstacles.work()))
         }
         None => (MultiPolygon::new(Vec::new()), 0),

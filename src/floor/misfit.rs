@@ -10,6 +10,7 @@ use std::sync::Arc;
 use super::region::Zone;
 use super::work::{unbounded, CutShort, Work};
 use super::{FloorObstacles, FloorPart, Footprint, Region};
+use crate::kept::Memo;
 use crate::scene::Room;
 
 /// Why a base fits nowhere, in figures.
@@ -35,7 +36,8 @@ impl Misfit {
     /// The misfit of `footprint` at `headings` in `room` (within `zone`).
     pub fn of(room: &Room, footprint: &Footprint, headings: &[f64], zone: Option<&Zone>) -> Self {
         let mut work = Work::new(&unbounded);
-        Misfit::counted(room, footprint, headings, zone, &mut work)
+        let memo = Arc::new(Memo::forgetting());
+        Misfit::counted(room, footprint, headings, zone, &mut work, &memo)
             .unwrap_or_else(|_| unreachable!("nothing cuts short a misfit allowed any work"))
     }
 
@@ -47,6 +49,7 @@ impl Misfit {
         headings: &[f64],
         zone: Option<&Zone>,
         work: &mut Work<'_>,
+        memo: &Arc<Memo>,
     ) -> Result<Self, CutShort> {
         let mut fits = |scale: f64| -> Result<bool, CutShort> {
             let scaled = footprint.scaled(scale);
@@ -56,7 +59,7 @@ impl Misfit {
             let obstacles = Arc::new(obstacles);
             work.add(obstacles.work())?;
             for &h in headings {
-                let region = Region::new(room, &scaled, h, zone, Arc::clone(&obstacles));
+                let region = Region::new(room, &scaled, h, zone, Arc::clone(&obstacles), memo);
                 if !region.emptiness(work)? {
                     return Ok(true);
                 }
@@ -155,9 +158,10 @@ mod tests {
         let fits = |gap_mm: f64| {
             let room = galley(gap_mm);
             let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
+            let memo = Arc::new(Memo::forgetting());
             (0..16).any(|k| {
                 let heading = f64::from(k) * std::f64::consts::PI / 8.0;
-                !Region::new(&room, &chair, heading, None, Arc::clone(&obstacles)).is_empty()
+                !Region::new(&room, &chair, heading, None, Arc::clone(&obstacles), &memo).is_empty()
             })
         };
         assert!(!fits(699.0));

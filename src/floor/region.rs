@@ -18,7 +18,7 @@ use geo::{BooleanOps, Coord, LineString, MultiPolygon, Polygon, Rect};
 use super::obstacles::{bounds, FloorObstacles};
 use super::work::Looked;
 use super::Footprint;
-use crate::kept::Kept;
+use crate::kept::{Memo, Table};
 use crate::scene::hash_bits;
 use crate::scene::Room;
 
@@ -100,14 +100,15 @@ impl Turned {
 /// (`within` already inside the room shrunk by the footprint), each
 /// obstacle's outlines grown by the parts that meet it joined once per
 /// shape (`grown` keeps them for `turned`). The same rectangle, footprint
-/// and obstacles near give the same piece: kept by the process (a room
-/// with one box moved or taken away, to learn why a reach failed or at a
-/// save in watch mode, works out again only the pieces near it).
+/// and obstacles near give the same piece: kept in `memo` (a room with one
+/// box moved or taken away, to learn why a reach failed or at a save in
+/// watch mode, works out again only the pieces near it).
 pub fn admissible_in(
     within: Rect<f64>,
     turned: &Turned,
     obstacles: &FloorObstacles,
     grown: &Grown,
+    memo: &Memo,
 ) -> Piece {
     let met = obstacles_met(cut_of(within), turned, obstacles);
     if met.is_empty() {
@@ -137,7 +138,7 @@ pub fn admissible_in(
         .map(|m| (m.outline.len() * m.parts.len()) as u64)
         .sum::<u64>()
         .saturating_mul(UNITS_PER_MET_CORNER);
-    let kept = PIECES.get_or(key, || {
+    let kept = PIECES.get_or(memo, key, || {
         Arc::new(if joined_first {
             free_of_met(within, &met, turned, grown)
         } else {
@@ -188,7 +189,7 @@ pub struct Piece {
     /// Where the base fits within the rectangle.
     pub free: MultiPolygon<f64>,
     /// What working it out costs ([`floor_work`]), whether or not it was
-    /// kept by the process.
+    /// kept in the memo.
     pub work: u64,
     /// What it depends on, hashed: the same key, the same piece, kept
     /// once (0: it meets no obstacle, and costs nothing).
@@ -306,7 +307,7 @@ impl Grown {
     }
 }
 
-/// Like `admissible_in`, worked out afresh (not kept by the process):
+/// Like `admissible_in`, worked out afresh (not kept in a memo):
 /// what a route search asks of every tile of a large floor at many
 /// headings. And its work, in the units of the meter
 /// ([`route_tile_work`]), and the shapes it grows (`Piece::shapes`: the
@@ -489,10 +490,10 @@ fn admissible_part_by_part(
     free_of_parts(within, &met, turned).0
 }
 
-/// Pieces of admissible region kept by the process, by a hash of their
+/// Pieces of admissible region kept in a memo, by a hash of their
 /// rectangle, the obstacles near it and the corners of the parts that
 /// meet each, with the crossings working each out met.
-static PIECES: Kept<Arc<(MultiPolygon<f64>, usize)>> = Kept::new(16_384);
+const PIECES: Table<Arc<(MultiPolygon<f64>, usize)>> = Table::new("floor pieces", 16_384);
 
 /// `free` less the union of the `grown` outlines, and the crossings the
 /// unions on the way met (`crossing_pairs`: what they cost).
@@ -614,7 +615,14 @@ pub fn admissible(
         return MultiPolygon::new(Vec::new());
     };
     let obstacles = FloorObstacles::new(room, footprint);
-    let region = admissible_in(within, &turned, &obstacles, &Grown::default()).free;
+    let region = admissible_in(
+        within,
+        &turned,
+        &obstacles,
+        &Grown::default(),
+        &Memo::forgetting(),
+    )
+    .free;
     match zone {
         Some(z) => z.cut(region),
         None => region,
@@ -808,7 +816,14 @@ mod tests {
             let turned = Turned::new(&chair, 0.0);
             let within = shrunk_room(&room, &turned, None).expect("the chair fits the room");
             let obstacles = FloorObstacles::new(&room, &chair);
-            admissible_in(within, &turned, &obstacles, &Grown::default()).shapes
+            admissible_in(
+                within,
+                &turned,
+                &obstacles,
+                &Grown::default(),
+                &Memo::default(),
+            )
+            .shapes
         };
         let alike = shapes(&|_| 20.0);
         assert_eq!(alike.iter().count(), 1);

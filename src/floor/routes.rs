@@ -35,7 +35,7 @@ use super::obstacles::{box_outline, FloorObstacles};
 use super::region::{shrunk, shrunk_room, Turned};
 use super::work::{unbounded, CutShort, Work};
 use super::Footprint;
-use crate::kept::Kept;
+use crate::kept::{Memo, Table};
 use crate::scene::{hash_bits, BoxObstacle, Door, MeshObstacle, Room, Wall};
 
 /// The headings a turning base is followed at, besides its own and the
@@ -104,15 +104,15 @@ pub enum Entry {
     Blocked,
 }
 
-/// Routes kept by the process, by a hash of the room's floor, the
-/// footprint and the headings.
-static KEPT: Kept<Option<Arc<Routes>>> = Kept::new(16);
+/// Routes kept for a run or a watch session, by a hash of the room's
+/// floor, the footprint and the headings.
+const KEPT: Table<Option<Arc<Routes>>> = Table::new("routes", 16);
 
 impl Routes {
     /// Where a base of `footprint` can get to in `room` from its doors,
     /// followed at the base's `headings` too; none if the room has no
-    /// door (then it may be placed wherever it fits). Kept by the process:
-    /// the same room, footprint and headings give the same routes. Cut
+    /// door (then it may be placed wherever it fits). Kept in `memo`: the
+    /// same room, footprint and headings give the same routes. Cut
     /// short once their work would pass what `within` allows (what a run
     /// has left of its work; not kept then).
     pub fn of(
@@ -120,6 +120,7 @@ impl Routes {
         footprint: &Footprint,
         headings: &[f64],
         within: &(dyn Fn(u64) -> bool + Sync),
+        memo: &Memo,
     ) -> Result<Option<Arc<Routes>>, CutShort> {
         if room.doors.is_empty() {
             return Ok(None);
@@ -127,7 +128,7 @@ impl Routes {
         let mut h = DefaultHasher::new();
         footprint.hash_with_floor(room, &mut h);
         hash_bits(headings, &mut h);
-        KEPT.get_or_try(h.finish(), || {
+        KEPT.get_or_try(memo, h.finish(), || {
             Routes::within(room, footprint, headings, within).map(|r| r.map(Arc::new))
         })
     }

@@ -17,6 +17,7 @@ use super::region::{admissible_in, shrunk_room, Grown, Turned, Zone};
 use super::work::{unbounded, CutShort, Looked, Work};
 use super::{Footprint, Inside, Routes};
 use crate::allowance::Allowance;
+use crate::kept::Memo;
 use crate::scene::Room;
 
 /// The side of a tile, for rooms up to `MAX_TILES` of them.
@@ -76,6 +77,8 @@ pub struct Region {
     /// Pieces paid for by the search of a room with more in it (this one
     /// is that with obstacles or doors taken away).
     paid: Looked,
+    /// Where the tiles' pieces are kept for other regions and runs.
+    memo: Arc<Memo>,
 }
 
 /// The pieces of `region` a base facing `heading_rad` can get to by
@@ -103,6 +106,7 @@ impl Region {
         heading_rad: f64,
         zone: Option<&Zone>,
         obstacles: Arc<FloorObstacles>,
+        memo: &Arc<Memo>,
     ) -> Self {
         let turned = Turned::new(footprint, heading_rad);
         let free = shrunk_room(room, &turned, zone);
@@ -124,6 +128,7 @@ impl Region {
             empty: OnceLock::new(),
             routes: None,
             paid: Looked::default(),
+            memo: Arc::clone(memo),
         }
     }
 
@@ -137,8 +142,9 @@ impl Region {
         zone: Option<&Zone>,
         obstacles: Arc<FloorObstacles>,
         routes: Arc<Routes>,
+        memo: &Arc<Memo>,
     ) -> Self {
-        let region = Region::new(room, footprint, heading_rad, zone, obstacles);
+        let region = Region::new(room, footprint, heading_rad, zone, obstacles, memo);
         let empty = OnceLock::new();
         if !routes.enters() {
             let _ = empty.set(Emptiness {
@@ -159,7 +165,7 @@ impl Region {
         self.tiles[j * self.nx + i].get_or_init(|| {
             let piece = self
                 .tile_rect(i, j)
-                .map(|r| admissible_in(r, &self.turned, &self.obstacles, &self.grown));
+                .map(|r| admissible_in(r, &self.turned, &self.obstacles, &self.grown, &self.memo));
             let (piece, work, key, finding, shapes) = match piece {
                 Some(p) => (p.free, p.work, p.key, p.finding, p.shapes),
                 None => (MultiPolygon::new(Vec::new()), 0, 0, 0, Looked::default()),
@@ -539,7 +545,14 @@ mod tests {
         let room = crowded();
         let chair = Footprint::circle(300.0, 900.0);
         let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
-        Region::new(&room, &chair, 0.0, None, obstacles)
+        Region::new(
+            &room,
+            &chair,
+            0.0,
+            None,
+            obstacles,
+            &Arc::new(Memo::forgetting()),
+        )
     }
 
     /// Finding out whether a base fits anywhere counts every tile the
@@ -637,7 +650,14 @@ mod tests {
         let free = admissible(&room, &chair, 0.0, None);
         let zoned = admissible(&room, &chair, 0.0, Some(&zone));
         let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
-        let tiled = Region::new(&room, &chair, 0.0, Some(&zone), obstacles);
+        let tiled = Region::new(
+            &room,
+            &chair,
+            0.0,
+            Some(&zone),
+            obstacles,
+            &Arc::new(Memo::forgetting()),
+        );
         let notch = Point::new(1500.0, 1000.0);
         assert!(free.contains(&notch), "the notch is free floor");
         for x in (900..=1800).step_by(50) {
@@ -657,7 +677,14 @@ mod tests {
         let heading = 0.7;
         let whole = admissible(&room, &chair, heading, None);
         let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
-        let tiled = Region::new(&room, &chair, heading, None, obstacles);
+        let tiled = Region::new(
+            &room,
+            &chair,
+            heading,
+            None,
+            obstacles,
+            &Arc::new(Memo::forgetting()),
+        );
         let differ = whole.xor(&tiled.whole()).unsigned_area();
         assert!(differ < 1.0, "{differ} mm2");
     }
@@ -669,7 +696,14 @@ mod tests {
         let chair = Footprint::rectangle(600.0, 500.0, 660.0, 1400.0);
         let whole = admissible(&room, &chair, 0.0, None);
         let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
-        let tiled = Region::new(&room, &chair, 0.0, None, obstacles);
+        let tiled = Region::new(
+            &room,
+            &chair,
+            0.0,
+            None,
+            obstacles,
+            &Arc::new(Memo::forgetting()),
+        );
         for (x, y) in [
             (2500.0, 1850.0),
             (300.0, 2000.0),

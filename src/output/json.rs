@@ -1,7 +1,7 @@
 //! The `json` format: the report as pretty-printed JSON (docs/report.md).
 
 use crate::plugin::{FormatPlugin, FormatScene, ParamSpec, Plugin};
-use crate::report::{cells_apart, MapCell, Report};
+use crate::report::{MapCell, Report};
 
 pub struct Json;
 
@@ -26,7 +26,7 @@ impl FormatPlugin for Json {
     }
 
     fn render(&self, report: &Report, _: &FormatScene<'_>) -> Option<String> {
-        let head = cells_apart(|| serde_json::to_value(report).expect("reports serialize"));
+        let head = serde_json::to_value(report.without_cells()).expect("reports serialize");
         let cells: Vec<Option<&[MapCell]>> = report
             .tasks
             .iter()

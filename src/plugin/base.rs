@@ -284,8 +284,14 @@ pub trait Base: Send + Sync {
         0
     }
     /// Get ready for reaches in `room` with `chain` (caching what does not
-    /// depend on the target, such as where the base fits).
-    fn prepare<'a>(&'a self, room: &'a Room, chain: &'a Chain) -> Box<dyn PreparedBase + 'a>;
+    /// depend on the target, such as where the base fits, in the memo of
+    /// `allowance`, which is not charged: [`Base::prepare_work`] is).
+    fn prepare<'a>(
+        &'a self,
+        room: &'a Room,
+        chain: &'a Chain,
+        allowance: &dyn Allowance,
+    ) -> Box<dyn PreparedBase + 'a>;
     /// The most candidate placements one reach may try (what the limit on
     /// solver starts counts).
     fn placements(&self) -> Tries {

@@ -58,36 +58,70 @@ pub struct MapReport {
     pub rows: usize,
     /// One string per row, the last row first: `#` reachable, `.` not.
     pub grid: Vec<String>,
-    /// Every point, row by row. (Left out while [`cells_apart`] holds,
-    /// for a writer that serializes them one at a time.)
-    #[serde(skip_serializing_if = "cells_left_out")]
+    /// Every point, row by row. (Left out where there are none: the JSON
+    /// writer serializes a map [`MapReport::without_cells`] and writes
+    /// its cells apart.)
+    #[serde(skip_serializing_if = "Vec::is_empty")]
     pub cells: Vec<MapCell>,
 }
 
-thread_local! {
-    static CELLS_APART: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
-}
-
-fn cells_left_out(_: &[MapCell]) -> bool {
-    CELLS_APART.with(std::cell::Cell::get)
-}
-
-/// Run `f` with every map's `cells` left out of what serde writes on
-/// this thread: the JSON writer serializes the rest of the report in one
-/// go and the cells one at a time, so that a map of 100,000 points is
-/// never held as one tree of values.
-pub fn cells_apart<T>(f: impl FnOnce() -> T) -> T {
-    /// Sets the flag back when dropped: also when `f` panics (a watch
-    /// session that goes on must not write its next maps without cells).
-    struct Apart;
-    impl Drop for Apart {
-        fn drop(&mut self) {
-            CELLS_APART.with(|c| c.set(false));
+impl MapReport {
+    /// This map without its cells: what the JSON writer serializes in one
+    /// go, writing the cells one at a time, so that a map of 100,000
+    /// points is never held as one tree of values.
+    pub fn without_cells(&self) -> MapReport {
+        // Every field named, so that a field added is not left out.
+        let MapReport {
+            name,
+            person,
+            of,
+            ok,
+            points,
+            reachable,
+            fraction,
+            reachable_heights_mm,
+            step_mm,
+            tolerance_mm,
+            solver,
+            effector,
+            point,
+            retried,
+            base,
+            view,
+            corner_mm,
+            u_mm,
+            v_mm,
+            columns,
+            rows,
+            grid,
+            cells: _,
+        } = self;
+        MapReport {
+            name: name.clone(),
+            person: person.clone(),
+            of,
+            ok: *ok,
+            points: *points,
+            reachable: *reachable,
+            fraction: *fraction,
+            reachable_heights_mm: *reachable_heights_mm,
+            step_mm: *step_mm,
+            tolerance_mm: *tolerance_mm,
+            solver: solver.clone(),
+            effector: effector.clone(),
+            point: point.clone(),
+            retried: *retried,
+            base: base.clone(),
+            view,
+            corner_mm: *corner_mm,
+            u_mm: *u_mm,
+            v_mm: *v_mm,
+            columns: *columns,
+            rows: *rows,
+            grid: grid.clone(),
+            cells: Vec::new(),
         }
     }
-    CELLS_APART.with(|c| c.set(true));
-    let _apart = Apart;
-    f()
 }
 
 /// One point of a map.
@@ -457,17 +491,53 @@ mod tests {
     use super::*;
 
     #[test]
-    fn cells_are_written_again_after_a_writer_that_left_them_out_panicked() {
-        let panicked = std::panic::catch_unwind(|| {
-            cells_apart(|| {
-                assert!(cells_left_out(&[]));
-                panic!("a writer failed");
-            })
-        });
-        assert!(panicked.is_err());
-        assert!(
-            !cells_left_out(&[]),
-            "the next report on this thread keeps its cells"
+    fn a_map_without_its_cells_is_the_same_map_less_the_cells() {
+        let cell = MapCell {
+            column: 0,
+            row: 0,
+            point_mm: [1.0, 2.0, 3.0],
+            reachable: true,
+            distance_mm: 0.5,
+            comfort: 2.0,
+            base_mm_deg: [0.0, 0.0, 90.0],
+            missed: None,
+        };
+        let map = MapReport {
+            name: "counter.top".into(),
+            person: "ann".into(),
+            of: "reach",
+            ok: true,
+            points: 1,
+            reachable: 1,
+            fraction: 1.0,
+            reachable_heights_mm: Some([3.0, 3.0]),
+            step_mm: 100.0,
+            tolerance_mm: 10.0,
+            solver: "incremental".into(),
+            effector: "grip".into(),
+            point: "the grip".into(),
+            retried: 0,
+            base: "wheelchair".into(),
+            view: "plan",
+            corner_mm: [0.0; 3],
+            u_mm: [1.0, 0.0, 0.0],
+            v_mm: [0.0, 1.0, 0.0],
+            columns: 1,
+            rows: 1,
+            grid: vec!["#".into()],
+            cells: vec![cell],
+        };
+        let head = map.without_cells();
+        assert!(head.cells.is_empty());
+        assert_eq!(
+            MapReport {
+                cells: map.cells.clone(),
+                ..head.clone()
+            },
+            map
         );
+        let whole = serde_json::to_value(&map).unwrap();
+        let written = serde_json::to_value(&head).unwrap();
+        assert!(whole.get("cells").is_some() && written.get("cells").is_none());
     }
 }

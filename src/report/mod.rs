@@ -28,7 +28,7 @@ pub use answer::{Answer, Figure};
 pub use entry_kind::{Asks, EntryKind, Kind, Tolerance};
 pub use expectation::ExpectationReport;
 pub use gaze::{GazeReport, Sight};
-pub use map::{cells_apart, MapCell, MapReport};
+pub use map::{MapCell, MapReport};
 pub use not_placed::NotPlacedReport;
 pub use parts::{deg, fixed, mm, Asked, BaseReport, Names, Posture};
 pub use population::{wilson95, Excluded, PopulationReport, ShareCell, ShareGrid};
@@ -62,6 +62,31 @@ pub struct Report {
 }
 
 impl Report {
+    /// This report with its maps [`MapReport::without_cells`].
+    pub fn without_cells(&self) -> Report {
+        // Every field named, so that a field added is not left out.
+        let Report {
+            schema,
+            file,
+            notes,
+            tasks,
+            expectations,
+        } = self;
+        Report {
+            schema: *schema,
+            file: file.clone(),
+            notes: notes.clone(),
+            tasks: tasks
+                .iter()
+                .map(|task| match task {
+                    TaskReport::Map(map) => TaskReport::Map(map.without_cells()),
+                    other => other.clone(),
+                })
+                .collect(),
+            expectations: expectations.clone(),
+        }
+    }
+
     /// Whether every expectation is met.
     pub fn expectations_met(&self) -> bool {
         self.expectations.iter().all(|e| e.met)

@@ -13,6 +13,7 @@ use super::{Scenario, TaskSpec};
 use crate::collision::{Touched, TouchedSet};
 use crate::engine::{Earlier, KeptSolves, SolveMap};
 use crate::error::Error;
+use crate::kept::Memo;
 use crate::meter::{Meter, RunWork};
 use crate::plugin::{Fit, TaskInput};
 use crate::progress::Progress;
@@ -81,19 +82,22 @@ impl Scenario {
     /// An error where its solvers needed more work than the scenario's
     /// bound.
     pub fn run_task(&self, task: &TaskSpec, progress: &dyn Progress) -> Result<TaskReport, Error> {
-        let mut ran = self.run_tasks(&[task], progress)?;
+        let mut ran = self.run_tasks(&[task], progress, &Arc::default())?;
         Ok(ran.pop().expect("one answer per task").report)
     }
 
-    /// Run `tasks` in parallel; their answers (and the work of each) in
-    /// the order given, or an error where their solvers needed more work
-    /// than the scenario's bound.
+    /// Run `tasks` in parallel, keeping what they work out in `memo`;
+    /// their answers (and the work of each) in the order given, or an
+    /// error where their solvers needed more work than the scenario's
+    /// bound.
     pub fn run_tasks(
         &self,
         tasks: &[&TaskSpec],
         progress: &dyn Progress,
+        memo: &Arc<Memo>,
     ) -> Result<Vec<Ran>, Error> {
-        self.run_jobs(tasks, progress, None, &RunWork::new(self.work.limit))
+        let run = RunWork::keeping(self.work.limit, Arc::clone(memo));
+        self.run_jobs(tasks, progress, None, &run)
     }
 
     /// As [`Scenario::run_tasks`], with what each task's questions touched
@@ -110,8 +114,9 @@ impl Scenario {
         progress: &dyn Progress,
         also_spent: u64,
         earlier: &[Option<Earlier>],
+        memo: &Arc<Memo>,
     ) -> Result<Vec<Ran>, Error> {
-        let run = RunWork::new(self.work.limit);
+        let run = RunWork::keeping(self.work.limit, Arc::clone(memo));
         if !run.charge(also_spent) {
             return Err(self.work.exceeded());
         }
@@ -231,9 +236,14 @@ impl Scenario {
     /// (checked again each time: they read the whole room), and what the
     /// file expects of them; with the standards' work. An error where the
     /// standards would take the run past its bound.
-    pub fn report(&self, mut tasks: Vec<TaskReport>, spent: u64) -> Result<(Report, u64), Error> {
+    pub fn report(
+        &self,
+        mut tasks: Vec<TaskReport>,
+        spent: u64,
+        memo: &Arc<Memo>,
+    ) -> Result<(Report, u64), Error> {
         let all: Vec<&TaskSpec> = self.tasks.iter().collect();
-        let run = RunWork::new(self.work.limit);
+        let run = RunWork::keeping(self.work.limit, Arc::clone(memo));
         run.charge(spent);
         let standards = self.run_standards(&all, &tasks, &run);
         if run.exceeded() {

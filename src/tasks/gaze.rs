@@ -251,7 +251,7 @@ impl Task for GazeTask {
         );
         let placement = input
             .base
-            .prepare(input.room, &chain)
+            .prepare(input.room, &chain, input.allowance)
             .reach(&query, reaching.solver.as_ref());
         let looked = Looked {
             chain: &chain,

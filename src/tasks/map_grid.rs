@@ -147,7 +147,7 @@ fn map_report(
         input,
         asked,
         judge,
-        prepared: input.base.prepare(input.room, asked.chain),
+        prepared: input.base.prepare(input.room, asked.chain, input.allowance),
         proofs: KeptProofs::new(asked.chain, input.base.own_body(), input.allowance),
         solves: (input.solves).map(|s| s.of(asked.chain, asked.obstacles, input.base.own_body())),
     };

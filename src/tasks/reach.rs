@@ -115,7 +115,7 @@ impl Task for ReachTask {
                 input.allowance,
             )
         };
-        let prepared = input.base.prepare(input.room, &chain);
+        let prepared = input.base.prepare(input.room, &chain, input.allowance);
         let solver = reaching.solver.as_ref();
         let mut placement = reach_walking_in(prepared.as_ref(), &query, &chain, solver);
         let mut why = Vec::new();

@@ -206,7 +206,7 @@ impl Task for ReachAndGazeTask {
         // Not walked in (`walk_in.rs`): searched with the eyes' chain, a
         // seated person's reach and gaze at a shelf took 160 M units, and
         // walked in 830 M, past the bound on solver work.
-        let prepared = input.base.prepare(input.room, &hand_chain);
+        let prepared = input.base.prepare(input.room, &hand_chain, input.allowance);
         let alone = prepared.reach(&query, reaching.solver.as_ref());
         let solving = Solving {
             task: self,

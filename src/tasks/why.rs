@@ -155,7 +155,7 @@ impl Failed<'_> {
         let query = self.query(self.chain, self.obstacles, own);
         charge_floor(free.as_ref(), self.input.room, None, self.input.allowance);
         let placed = free
-            .prepare(self.input.room, self.chain)
+            .prepare(self.input.room, self.chain, self.input.allowance)
             .reach(&query, self.reaching.solver.as_ref());
         self.valid(&placed)
     }
@@ -400,7 +400,7 @@ impl Failed<'_> {
         );
         self.input
             .base
-            .prepare(room, chain)
+            .prepare(room, chain, self.input.allowance)
             .reach(&query, self.reaching.solver.as_ref())
     }
 
