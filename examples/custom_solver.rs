@@ -15,8 +15,8 @@ use reach::plugin::{
     Solver, SolverPlugin,
 };
 use reach::report::Report;
-use reach::scenario::Scenario;
 use reach::Input;
+use reach::Scenario;
 
 /// The plugin: its name, its doc line and its parameters.
 pub struct Sampling;

@@ -9,11 +9,11 @@ use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 
 use clap::{ArgMatches, Args, ColorChoice, CommandFactory, FromArgMatches, Parser, Subcommand};
-use reach::escape::escaped;
+use reach::escaped;
 use reach::limits::{CEILINGS, DEFAULTS};
-use reach::machine_diagnostics::Finding;
 use reach::plugin::{PluginKind, Registry};
 use reach::report::TaskReport;
+use reach::Finding;
 use reach::{DiagnosticStyle, Diagnostics, Input, Limits};
 
 /// What `reach --help` and the man page say of exit codes.
@@ -290,7 +290,7 @@ pub fn main() -> i32 {
             0
         }
         Command::Stdlib => {
-            print!("{}", reach::std_modules::listing());
+            print!("{}", reach::stdlib_listing());
             0
         }
         Command::Schema => {

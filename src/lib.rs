@@ -20,65 +20,68 @@
 //! }
 //! ```
 
-pub mod allowance;
-pub mod ansur;
-pub mod bases;
-mod builtin;
-pub mod cache;
-pub mod calibration;
-mod check;
-pub mod collision;
-pub mod engine;
-pub mod error;
-pub mod escape;
-mod excerpt;
-pub mod figure;
-pub mod floor;
-pub mod geometry;
-pub mod kept;
-pub mod kinematics;
+// Without the `internals` feature, what only the crate's own tests,
+// benches and fuzz targets use of its modules (re-exports, helpers) is
+// unused.
+#![cfg_attr(not(feature = "internals"), allow(dead_code, unused_imports))]
+
+// The run API and the plugin SDK: what a program that uses this crate
+// sees. `plugin` is the SDK (the traits, the registry, and the types their
+// methods take); `report`, `output`, `suite`, `limits` and `progress` are
+// what a run takes and gives (`machine_diagnostics`: its diagnostics as
+// JSON Lines or GitHub workflow commands).
 pub mod limits;
-mod loader;
 pub mod machine_diagnostics;
-pub mod meshfile;
-pub mod meter;
-mod names;
-pub mod options;
 pub mod output;
-pub mod picture;
 pub mod plugin;
 pub mod progress;
-pub mod read;
 pub mod report;
-pub mod scenario;
-pub mod scene;
-pub mod solvers;
-pub mod source;
-pub mod span;
-pub mod standards;
-pub mod std_modules;
-pub mod stdlib;
 pub mod suite;
-pub mod syntax;
-pub mod tasks;
-pub mod units;
-pub mod vision;
 
+/// Modules that are the crate's own: private, but public (and hidden from
+/// the docs) where the `internals` feature is on, which only the crate's
+/// own tests, benches and fuzz targets enable (`[dev-dependencies]`), so
+/// that they can test the parts.
+macro_rules! internal_modules {
+    ($($module:ident)*) => {
+        $(
+            #[cfg(feature = "internals")]
+            #[doc(hidden)]
+            pub mod $module;
+            #[cfg(not(feature = "internals"))]
+            mod $module;
+        )*
+    };
+}
+
+internal_modules! {
+    allowance ansur bases builtin cache calibration check collision engine
+    error escape excerpt figure floor geometry kept kinematics loader
+    meshfile meter names options picture read scenario
+    scene solvers source span standards std_modules stdlib syntax tasks units
+    vision
+}
+
+pub use cache::TaskCache;
 pub use error::{Diagnostics, Error, ErrorKind};
+pub use escape::escaped;
+pub use kept::Memo;
 pub use limits::Limits;
 pub use loader::Input;
-pub use machine_diagnostics::DiagnosticStyle;
+pub use machine_diagnostics::{DiagnosticStyle, Finding};
+pub use read::read_root;
+pub use scenario::Scenario;
+pub use source::Sources;
+pub use std_modules::listing as stdlib_listing;
 
 use std::sync::Arc;
 
 use plugin::Registry;
 use report::Report;
-use scenario::Scenario;
-use source::Sources;
 
 /// How scenarios are checked and run: the limits, the directories files
 /// may be read from besides each root's own (`--allow-path`; see
-/// [`read`]), what long tasks (maps) tell their progress to, how many
+/// `read`), what long tasks (maps) tell their progress to, how many
 /// threads run the tasks and what the runs keep for each other (floors,
 /// routes, capability maps: [`kept::Memo`]). `Session::default()` has the
 /// defaults: [`Limits::default`], no other directory, no progress, rayon's
@@ -103,7 +106,7 @@ pub struct Session<'a> {
 }
 
 /// A run's report and the work its solvers did, in the units of
-/// [`meter`]: the same on every run and thread count.
+/// the meter: the same on every run and thread count.
 #[derive(Clone, Debug)]
 pub struct Ran {
     pub report: Report,

@@ -34,7 +34,7 @@ pub struct Limits {
     /// by its solver's iteration options over their defaults.
     pub solver_starts: u64,
     /// Most work the solvers of one run may do, in the units of
-    /// [`crate::meter`] (about a joint moved once), with the routes from
+    /// solver work (about a joint moved once), with the routes from
     /// the rooms' doors: counted as they work, and the run stopped with a
     /// diagnostic once past it.
     pub solver_work: u64,

@@ -86,8 +86,8 @@ const SELF_PAIRS_PER_UNIT: u64 = 12;
 pub struct RunWork {
     spent: AtomicU64,
     limit: u64,
-    /// By key, the most work any computation of that key has done so far.
-    flights: Mutex<BTreeMap<u64, u64>>,
+    /// The computations in flight and those landed.
+    flights: Mutex<Flights>,
     /// Set where a flight was cut short: the run is past its limit.
     stopped: AtomicBool,
     /// The values the run keeps, which a watch session may keep across
@@ -124,7 +124,7 @@ impl RunWork {
         self.spent() > self.limit || self.stopped.load(Ordering::Relaxed)
     }
 
-    fn flights(&self) -> std::sync::MutexGuard<'_, BTreeMap<u64, u64>> {
+    fn flights(&self) -> std::sync::MutexGuard<'_, Flights> {
         self.flights.lock().unwrap_or_else(|e| e.into_inner())
     }
 
@@ -133,6 +133,14 @@ impl RunWork {
         let before = self.spent.fetch_add(units, Ordering::Relaxed);
         before.saturating_add(units) <= self.limit
     }
+}
+
+/// By key, the most work any computation of that key has done so far
+/// while it is in flight, and the keys whose computation landed.
+#[derive(Debug, Default)]
+struct Flights {
+    flying: BTreeMap<u64, u64>,
+    landed: BTreeSet<u64>,
 }
 
 /// The meter of one task (one person's): what it spent, added to its
@@ -172,9 +180,14 @@ impl Allowance for Meter {
         };
         let flying: u64 = {
             let mut flights = run.flights();
-            let mine = flights.entry(key).or_default();
-            *mine = (*mine).max(units);
-            flights.values().fold(0, |sum, &w| sum.saturating_add(w))
+            // A computation of a key that landed is worked out again by a
+            // thread that started before it landed; its work is charged
+            // once, where the first landed, so it counts no more.
+            if !flights.landed.contains(&key) {
+                let mine = flights.flying.entry(key).or_default();
+                *mine = (*mine).max(units);
+            }
+            (flights.flying.values()).fold(0, |sum, &w| sum.saturating_add(w))
         };
         let within = run.spent().saturating_add(flying) <= run.limit;
         if !within {
@@ -184,7 +197,9 @@ impl Allowance for Meter {
     }
     fn flight_landed(&self, key: u64) {
         if let Some(run) = &self.run {
-            run.flights().remove(&key);
+            let mut flights = run.flights();
+            flights.flying.remove(&key);
+            flights.landed.insert(key);
         }
     }
     fn memo(&self) -> Arc<Memo> {
@@ -366,6 +381,11 @@ mod tests {
         assert!(!run.exceeded());
         drop(floor);
         assert!(other.within(70), "a flight done leaves the count");
+        // Worked out again by a thread that started before it landed:
+        // charged once, where it landed, it counts no more.
+        let late = a.flight(1);
+        assert!(late.within(1_000));
+        drop(late);
         assert!(!other.within(81));
         assert!(run.exceeded(), "a flight past the limit stops the run");
         let unmetered: &dyn Allowance = Meter::unmetered();

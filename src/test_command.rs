@@ -40,7 +40,7 @@ pub fn test(registry: &Registry, args: TestArgs) -> i32 {
     let scenarios = match suite::discover(&roots) {
         Ok(s) => s,
         Err(e) => {
-            eprintln!("error: {}", reach::escape::escaped(&e));
+            eprintln!("error: {}", reach::escaped(&e));
             return 2;
         }
     };
@@ -256,9 +256,9 @@ fn written(o: &Outcome) -> Option<String> {
 }
 
 fn shown(path: &std::path::Path) -> String {
-    reach::escape::escaped(&path.display().to_string()).into_owned()
+    reach::escaped(&path.display().to_string()).into_owned()
 }
 
 fn shown_text(text: &str) -> String {
-    reach::escape::escaped(text).into_owned()
+    reach::escaped(text).into_owned()
 }

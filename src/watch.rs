@@ -16,9 +16,9 @@ use std::time::{Duration, Instant};
 
 use notify::event::ModifyKind;
 use notify::{EventKind, RecommendedWatcher, RecursiveMode, Watcher};
-use reach::cache::TaskCache;
 use reach::plugin::{FormatPlugin, Registry};
 use reach::report::{Answer, Report};
+use reach::TaskCache;
 use reach::{Input, Limits};
 
 /// A burst of events ends after this much quiet.
@@ -99,7 +99,7 @@ fn fingerprint(files: &BTreeSet<PathBuf>, max_bytes: u64) -> u64 {
     let mut h = std::collections::hash_map::DefaultHasher::new();
     for path in files {
         path.hash(&mut h);
-        match reach::read::read_root(path, max_bytes) {
+        match reach::read_root(path, max_bytes) {
             Ok(bytes) => (0u8, bytes).hash(&mut h),
             Err(e) => (1u8, e.to_string()).hash(&mut h),
         }

@@ -509,3 +509,87 @@ fn every_static_is_listed_with_what_it_holds() {
         "statics not listed: {new:?}; listed but gone: {gone:?}"
     );
 }
+
+/// ARCHITECTURE.md, "Invariants": `lib.rs` exports the run API and the
+/// plugin SDK and nothing else; every other module is private, public
+/// (and hidden) only with the `internals` feature that the crate's own
+/// tests, benches and fuzz targets turn on. A new export is added here
+/// with the reason it belongs to a program that uses the library.
+#[test]
+fn the_library_exports_the_run_api_and_the_plugin_sdk_only() {
+    const EXPORTED: [&str; 20] = [
+        // What a run takes and gives, and the plugin SDK.
+        "pub mod limits;",
+        "pub mod machine_diagnostics;",
+        "pub mod output;",
+        "pub mod plugin;",
+        "pub mod progress;",
+        "pub mod report;",
+        "pub mod suite;",
+        // Watch mode's cache of answers, as the binary keeps one.
+        "pub use cache::TaskCache;",
+        "pub use error::{Diagnostics, Error, ErrorKind};",
+        "pub use escape::escaped;",
+        "pub use kept::Memo;",
+        "pub use limits::Limits;",
+        "pub use loader::Input;",
+        "pub use machine_diagnostics::{DiagnosticStyle, Finding};",
+        "pub use read::read_root;",
+        "pub use scenario::Scenario;",
+        "pub use source::Sources;",
+        "pub use std_modules::listing as stdlib_listing;",
+        "pub struct Session<'a> {",
+        "pub struct Ran {",
+    ];
+    let text = std::fs::read_to_string(Path::new(ROOT).join("src/lib.rs")).unwrap();
+    let exported: Vec<&str> = text
+        .lines()
+        .filter(|l| l.starts_with("pub ") && !l.starts_with("pub fn "))
+        .collect();
+    let mut expected = EXPORTED.to_vec();
+    expected.sort_unstable();
+    let mut found = exported.clone();
+    found.sort_unstable();
+    assert_eq!(found, expected, "lib.rs's exports");
+    let functions: Vec<&str> = text.lines().filter(|l| l.starts_with("pub fn ")).collect();
+    assert_eq!(
+        functions.len(),
+        2,
+        "reach::check and reach::run: {functions:?}"
+    );
+    // The other modules are declared only through `internal_modules!`.
+    assert!(
+        text.lines()
+            .all(|l| !l.starts_with("mod ") && !l.starts_with("pub(crate) mod")),
+        "a module declared outside internal_modules!"
+    );
+    assert!(text.contains("#[cfg(not(feature = \"internals\"))]\n            mod $module;"));
+}
+
+/// The example of a plugin written with the library
+/// (`examples/custom_solver.rs`) names only the run API and the plugin SDK:
+/// what a program outside the crate can.
+#[test]
+fn the_custom_solver_example_needs_no_internals() {
+    let text = std::fs::read_to_string(Path::new(ROOT).join("examples/custom_solver.rs")).unwrap();
+    let public = [
+        "plugin",
+        "report",
+        "output",
+        "suite",
+        "limits",
+        "progress",
+        "machine_diagnostics",
+    ];
+    let internal: Vec<&str> = text
+        .match_indices("reach::")
+        .filter_map(|(k, _)| {
+            let rest = &text[k + 7..];
+            let name_end = rest.find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))?;
+            let name = &rest[..name_end];
+            let is_module = rest[name_end..].starts_with("::");
+            (is_module && !public.contains(&name)).then_some(name)
+        })
+        .collect();
+    assert!(internal.is_empty(), "internal modules named: {internal:?}");
+}

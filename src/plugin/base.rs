@@ -255,7 +255,7 @@ pub trait Base: Send + Sync {
         self.fit(room, allowance)
     }
     /// What working out where the base may stand in `room` cost, in units
-    /// of work ([`crate::allowance`]), once [`Base::fit`] has: for a mobile
+    /// of work ([`Allowance`]), once [`Base::fit`] has: for a mobile
     /// base, the search at each heading for floor it fits on, the routes
     /// from the doors, and where it fits nowhere, the search for how much
     /// smaller it would fit. The run charges it to the first task

@@ -31,6 +31,14 @@ pub use crate::options::{
     Options, ParamKind, ParamSpec, Params, PluginConfig, PluginKind, Settings, SettingsError, Value,
 };
 pub use crate::scene::{BasePose, IkSolution, Placement};
+// The types the traits' questions carry: the chain a solver works on, the
+// room, person and own body a base places, the obstacles a posture is
+// checked against, what a task and a format answer with.
+pub use crate::collision::{Obstacles, PlacedObstacles, Touched};
+pub use crate::engine::{KeptProofs, KeptSolves, SolvesFor};
+pub use crate::kinematics::{Body, Chain, Joint};
+pub use crate::report::{Names, Report, StandardReport, TaskReport};
+pub use crate::scene::{OwnBody, Person, Room};
 
 /// What every plugin declares.
 pub trait Plugin: Send + Sync {

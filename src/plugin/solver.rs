@@ -22,7 +22,7 @@ pub struct IkProblem<'a> {
     /// must stay out of them.
     pub obstacles: Option<PlacedObstacles<'a>>,
     /// What the solve's work is told to: a solve counts its steps and its
-    /// checks against the room ([`crate::allowance`]) and stops early once
+    /// checks against the room ([`Allowance`]) and stops early once
     /// the allowance is exhausted (its answer is then thrown away).
     pub allowance: &'a dyn Allowance,
 }
@@ -36,7 +36,7 @@ impl IkProblem<'_> {
         obstacles.posture_hit(self.chain, q, self.tolerance_mm)
     }
 
-    /// What one check of a posture costs ([`crate::allowance`]'s units):
+    /// What one check of a posture costs ([`Allowance`]'s units):
     /// nothing where obstacles are not checked.
     pub fn check_units(&self) -> u64 {
         self.obstacles

@@ -73,7 +73,7 @@ pub struct TaskInput<'a> {
     /// (watch mode's cache), if anywhere: only a task that
     /// [`Task::records_touches`] is given one.
     pub touched: Option<&'a Arc<Touched>>,
-    /// What the task's solves tell their work to ([`crate::allowance`]):
+    /// What the task's solves tell their work to (`Allowance`):
     /// a task whose run passes its bound is thrown away with the run.
     pub allowance: &'a dyn Allowance,
     /// Where a map's solves are kept for the task's next run, and taken
