@@ -107,6 +107,8 @@ pub enum ErrorKind {
     Repeated { what: String },
     #[error("target `{name}` is inside box `{obstacle}`")]
     TargetInsideBox { name: String, obstacle: String },
+    #[error("target `{name}` is inside mesh `{obstacle}`, which is closed")]
+    TargetInsideMesh { name: String, obstacle: String },
     #[error("target `{name}` lies outside room `{room}`")]
     TargetOutsideRoom {
         name: String,
@@ -234,7 +236,7 @@ impl ErrorKind {
             | Implausible { .. }
             | BeyondAnatomical { .. } => "reach::range",
             Missing { .. } | Repeated { .. } | TargetOutsideRoom { .. } => "reach::scene",
-            TargetInsideBox { .. } => "reach::scene",
+            TargetInsideBox { .. } | TargetInsideMesh { .. } => "reach::scene",
             Unsupported { .. } | Misplaced { .. } | NoLookLink { .. } => "reach::scene",
             Illegible { .. } => "reach::range",
             NoEffector { .. } => "reach::name",
@@ -285,6 +287,7 @@ impl ErrorKind {
             Repeated { .. } => "given again here".into(),
             TargetOutsideRoom { .. } => "outside the room".into(),
             TargetInsideBox { .. } => "inside the box".into(),
+            TargetInsideMesh { .. } => "inside the mesh".into(),
             MixedDefaults => "bare numbers with different default units".into(),
             Unsupported { .. } => "not supported".into(),
             TooLarge { .. } => "too large".into(),
@@ -356,6 +359,9 @@ impl ErrorKind {
             TargetOutsideRoom { bounds, .. } => Some(format!("the room spans {bounds}")),
             TargetInsideBox { .. } => Some(
                 "a box is solid: nothing inside it can be reached or seen; model an open cabinet as boards, or put the target on the box's surface".into(),
+            ),
+            TargetInsideMesh { .. } => Some(
+                "a closed mesh is solid, as a box is: nothing inside it can be reached or seen; put the target on its surface (an open mesh, a scan's surface, blocks only its surface)".into(),
             ),
             MixedDefaults => Some("write the units on these numbers".into()),
             Unsupported { help, .. } => Some(help.clone()),

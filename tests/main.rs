@@ -17,6 +17,7 @@ mod gaze;
 mod golden;
 mod hostile;
 mod independent;
+mod invariance;
 mod layers;
 mod meshes;
 mod parser;

@@ -502,3 +502,83 @@ proptest! {
         prop_assert!(lost <= edges * 2.0 * CELL_MM + 1.0, "{lost} mm2 lost along {edges} mm");
     }
 }
+
+/// A closed box as a mesh: its eight corners and twelve triangles, faces
+/// outwards.
+fn box_mesh(corner: [f64; 3], size: [f64; 3]) -> MeshObstacle {
+    let vertices = (0..8)
+        .map(|k| {
+            let pick =
+                |axis: usize| corner[axis] + if k >> axis & 1 == 1 { size[axis] } else { 0.0 };
+            nalgebra::Point3::new(pick(0), pick(1), pick(2))
+        })
+        .collect();
+    // Corner k has x from bit 0, y from bit 1, z from bit 2.
+    let triangles = [
+        [0, 2, 1],
+        [1, 2, 3], // z = 0, down
+        [4, 5, 6],
+        [5, 7, 6], // z = top, up
+        [0, 1, 4],
+        [1, 5, 4], // y = 0
+        [2, 6, 3],
+        [3, 6, 7], // y = top
+        [0, 4, 2],
+        [2, 4, 6], // x = 0
+        [1, 3, 5],
+        [3, 7, 5], // x = top
+    ];
+    MeshObstacle::new("board".into(), vertices, &triangles)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, rng_seed: proptest::test_runner::RngSeed::Fixed(57), .. ProptestConfig::default() })]
+
+    /// Solids are solid: a point is strictly inside a closed mesh exactly
+    /// where it is strictly inside the box the mesh closes (the checker
+    /// refuses a target there, as in a box), whatever the box and the
+    /// point, boards 1 mm from their surface included.
+    #[test]
+    fn a_point_is_inside_a_closed_mesh_where_inside_its_box(
+        corner in prop::array::uniform3(-500.0..500.0f64),
+        size in prop::array::uniform3(5.0..800.0f64),
+        at in prop::array::uniform3(-0.2..1.2f64),
+    ) {
+        let mesh = box_mesh(corner, size);
+        prop_assert!(mesh.encloses());
+        let p = nalgebra::Point3::new(
+            corner[0] + at[0] * size[0],
+            corner[1] + at[1] * size[1],
+            corner[2] + at[2] * size[2],
+        );
+        let depth = (0..3)
+            .map(|i| (p[i] - corner[i]).min(corner[i] + size[i] - p[i]))
+            .fold(f64::INFINITY, f64::min);
+        // Within a micrometre of the surface either answer is allowed.
+        if depth.abs() > 2e-3 {
+            prop_assert_eq!(mesh.holds_strictly(&p), depth > 0.0, "depth {}", depth);
+        }
+    }
+}
+
+/// A target 1 mm inside a closed mesh board is refused; 1 mm in front of
+/// it, and in an open sheet, it is not.
+#[test]
+fn a_target_a_millimetre_inside_a_closed_board_is_refused() {
+    let board = box_mesh([0.0, 1000.0, 1200.0], [600.0, 300.0, 20.0]);
+    assert!(board.holds_strictly(&nalgebra::Point3::new(300.0, 1150.0, 1219.0)));
+    assert!(!board.holds_strictly(&nalgebra::Point3::new(300.0, 1150.0, 1221.0)));
+    // The board's top alone: open, no inside.
+    let sheet = MeshObstacle::new(
+        "sheet".into(),
+        vec![
+            nalgebra::Point3::new(0.0, 1000.0, 1220.0),
+            nalgebra::Point3::new(600.0, 1000.0, 1220.0),
+            nalgebra::Point3::new(0.0, 1300.0, 1220.0),
+            nalgebra::Point3::new(600.0, 1300.0, 1220.0),
+        ],
+        &[[0, 1, 2], [1, 3, 2]],
+    );
+    assert!(!sheet.encloses());
+    assert!(!sheet.holds_strictly(&nalgebra::Point3::new(300.0, 1150.0, 1219.0)));
+}

@@ -27,7 +27,7 @@ use geo::{MultiPolygon, Point};
 use nalgebra::{Point3, Rotation2, Vector2};
 use rayon::prelude::*;
 
-use super::capability::Capability;
+use super::capability::{Capability, Sample};
 use super::face::face_normal;
 use super::placing::{Approach, Placing, SIDE_SLACK_MM};
 use super::search::{search, search_retrying_later, Candidate};
@@ -693,43 +693,70 @@ impl PreparedMobile<'_> {
             if !admitted || !capability.clear(sample) {
                 continue;
             }
-            let hand = sample.effector_mm.xy();
-            // The sample's solids, worked out once for every heading.
-            let mut volumes = None;
-            for (heading, region) in self.regions() {
-                if !approach.faces(*heading, face) {
-                    continue;
-                }
-                let offset = Rotation2::new(*heading) * hand;
-                let (x, y) = (target.x - offset.x, target.y - offset.y);
-                let pose = self.pose_at(x, y, *heading);
-                // The quick count first, the exact test (which would count
-                // again) only for a new point it lets in.
-                if !region.roughly_contains(x, y)
-                    || scanned.iter().any(|p| same_place(p, &pose))
-                    || !region.contains(x, y)
-                {
-                    continue;
-                }
-                scanned.push(pose);
-                let q = capability.q(sample);
-                let clear = query.obstacles.is_none() || {
-                    let v = volumes.get_or_insert_with(|| self.chain.volumes(q));
-                    let problem = query.problem(self.chain, pose);
-                    problem.collision_of_charged(v).is_none()
-                };
-                if clear {
-                    found.push(Candidate {
-                        start: Some(q.to_vec()),
-                        ..Candidate::at(pose)
-                    });
-                }
-                if found.len() == SEEDED || scanned.len() == SCANNED {
-                    return found;
-                }
+            // A sample's headings are taken all or none, so that which
+            // placements are tried does not depend on which heading comes
+            // first (the room turned by 90 degrees tries the same).
+            let (here_scanned, here_found) = self.sample_at_headings(query, sample, face, &scanned);
+            if found.len() + here_found.len() > SEEDED
+                || scanned.len() + here_scanned.len() > SCANNED
+            {
+                break;
+            }
+            scanned.extend(here_scanned);
+            found.extend(here_found);
+            if found.len() == SEEDED || scanned.len() == SCANNED {
+                break;
             }
         }
         found
+    }
+
+    /// The placements of capability sample `sample` at each heading the
+    /// approach and the floor admit, not at a place of `scanned`: those
+    /// looked at, and of them those whose posture is clear of the room.
+    fn sample_at_headings(
+        &self,
+        query: &ReachQuery<'_>,
+        sample: &Sample,
+        face: Option<Vector2<f64>>,
+        scanned: &[BasePose],
+    ) -> (Vec<BasePose>, Vec<Candidate>) {
+        let target = &query.target_room_mm;
+        let approach = self.mobile.placing.approach;
+        let hand = sample.effector_mm.xy();
+        let q = self.capability.q(sample);
+        // The sample's solids, worked out once for every heading.
+        let mut volumes = None;
+        let (mut looked, mut found) = (Vec::new(), Vec::new());
+        for (heading, region) in self.regions() {
+            if !approach.faces(*heading, face) {
+                continue;
+            }
+            let offset = Rotation2::new(*heading) * hand;
+            let (x, y) = (target.x - offset.x, target.y - offset.y);
+            let pose = self.pose_at(x, y, *heading);
+            // The quick count first, the exact test (which would count
+            // again) only for a new point it lets in.
+            if !region.roughly_contains(x, y)
+                || scanned.iter().chain(&looked).any(|p| same_place(p, &pose))
+                || !region.contains(x, y)
+            {
+                continue;
+            }
+            looked.push(pose);
+            let clear = query.obstacles.is_none() || {
+                let v = volumes.get_or_insert_with(|| self.chain.volumes(q));
+                let problem = query.problem(self.chain, pose);
+                problem.collision_of_charged(v).is_none()
+            };
+            if clear {
+                found.push(Candidate {
+                    start: Some(q.to_vec()),
+                    ..Candidate::at(pose)
+                });
+            }
+        }
+        (looked, found)
     }
 
     /// For each heading that faces the target as the approach asks, the
@@ -758,6 +785,7 @@ impl PreparedMobile<'_> {
                 } else {
                     self.along_approach(target, *heading, hint, region)?
                 };
+                let pose = snapped(pose, target);
                 let p = pose.position_mm;
                 Some(((p.x - preferred.x()).hypot(p.y - preferred.y()), pose))
             })
@@ -824,6 +852,26 @@ impl PreparedMobile<'_> {
 const ALONG_STEP_MM: f64 = 10.0;
 
 /// Whether two poses are one candidate: the same heading, close.
+/// The grid a placement found on the floor is put on, from the target:
+/// the floor's outlines are worked out by boolean operations that round
+/// their corners to a grid of the room's own (about a micrometre), so the
+/// nearest free point moves by that much when the whole scenario moves.
+/// Put on a grid of a thousandth of a millimetre from the target (which
+/// turns onto itself by multiples of 90 degrees), the placement is where
+/// it was from the target: the same search, whatever the room's place.
+const PLACEMENT_GRID_MM: f64 = 1e-3;
+
+/// `pose` put on the grid of [`PLACEMENT_GRID_MM`] from `target`: it
+/// moves by at most 0.7 µm.
+fn snapped(pose: BasePose, target: &Point3<f64>) -> BasePose {
+    let snap = |from: f64, at: f64| from + ((at - from) / PLACEMENT_GRID_MM).round() * PLACEMENT_GRID_MM;
+    let p = pose.position_mm;
+    BasePose {
+        position_mm: Point3::new(snap(target.x, p.x), snap(target.y, p.y), p.z),
+        ..pose
+    }
+}
+
 fn same_place(a: &BasePose, b: &BasePose) -> bool {
     a.heading_rad == b.heading_rad && (a.position_mm - b.position_mm).xy().norm() < APART_MM
 }

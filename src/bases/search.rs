@@ -235,9 +235,10 @@ fn retry_blocked(
         if proofs.proves(&target_mm, query.tolerance_mm) {
             continue;
         }
-        let seed = query.seed ^ 0x7e72_1ed5_0000_0001 ^ ((k as u64) << 32);
-        let mut kicks = Kicks::new(chain, &placement.q, retry.spread, seed);
         let problem = query.problem(chain, placement.pose);
+        // The problem's seed holds where the target is from this placement.
+        let seed = problem.seed ^ 0x7e72_1ed5_0000_0001 ^ ((k as u64) << 32);
+        let mut kicks = Kicks::new(chain, &placement.q, retry.spread, seed);
         let draws = if retry.solver.steers_clear() {
             CLEAR_DRAWS
         } else {

@@ -9,7 +9,7 @@ use rstar::RTree;
 use super::eval::fmt_num;
 use super::Checker;
 use crate::error::{thousands, Error, ErrorKind};
-use crate::scene::{BoxObstacle, Door, Room, Surface, Target, Wall};
+use crate::scene::{BoxObstacle, Door, MeshObstacle, Room, Surface, Target, Wall};
 use crate::span::Span;
 use crate::syntax::ast::{BoxDecl, DoorDecl, RoomDecl, RoomItem, SurfaceDecl};
 
@@ -149,6 +149,7 @@ impl Checker<'_> {
             }
         }
         self.check_not_in_boxes(&targets, &target_spans, &boxes);
+        self.check_not_in_meshes(&targets, &target_spans, &meshes);
         Some(Room {
             name: decl.name.value.clone(),
             size_mm: size?,
@@ -312,6 +313,27 @@ impl Checker<'_> {
                     ErrorKind::TargetInsideBox {
                         name: t.name.clone(),
                         obstacle: b.name.clone(),
+                    },
+                    *span,
+                ));
+            }
+        }
+    }
+
+    /// Each target inside a closed mesh (and not on its surface) is an
+    /// error, as one inside a box is.
+    fn check_not_in_meshes(
+        &mut self,
+        targets: &[Target],
+        spans: &[crate::span::Span],
+        meshes: &[MeshObstacle],
+    ) {
+        for (t, span) in targets.iter().zip(spans) {
+            if let Some(m) = meshes.iter().find(|m| m.holds_strictly(&t.position_mm)) {
+                self.error(Error::new(
+                    ErrorKind::TargetInsideMesh {
+                        name: t.name.clone(),
+                        obstacle: m.name.clone(),
                     },
                     *span,
                 ));

@@ -16,7 +16,7 @@ use geo::MultiPolygon;
 use crate::allowance::Allowance;
 use crate::floor::{Footprint, Misfit, Shut};
 use crate::kinematics::{Chain, Stance};
-use crate::scene::{BasePose, Blocked, OwnBody, Physique, Placement, Room};
+use crate::scene::{seed_in_base_frame, BasePose, Blocked, OwnBody, Physique, Placement, Room};
 
 /// How hard a base looks for a placement.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -118,7 +118,7 @@ impl<'a> ReachQuery<'a> {
             chain,
             target_mm: pose.to_base(&self.target_room_mm),
             tolerance_mm: self.tolerance_mm,
-            seed: self.seed,
+            seed: seed_in_base_frame(self.seed, &pose.to_base(&self.target_room_mm)),
             obstacles: self.obstacles.map(|obstacles| PlacedObstacles {
                 obstacles,
                 own: self.own,

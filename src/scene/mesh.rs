@@ -107,6 +107,25 @@ impl MeshObstacle {
 
     /// parry's shape of the mesh, built on the first call; none if parry
     /// refuses the triangles.
+    /// Whether `p` is inside the mesh and not on its surface (within a
+    /// thousandth of a millimetre), as [`BoxObstacle::holds_strictly`]
+    /// says of a box: only a mesh that encloses has an inside.
+    pub fn holds_strictly(&self, p: &Point3<f64>) -> bool {
+        let Some([lo, hi]) = self.vertex_bounds else {
+            return false;
+        };
+        if !(0..3).all(|i| lo[i] < p[i] && p[i] < hi[i]) {
+            return false;
+        }
+        let Some(MeshShape { parts, solid: true }) = self.shape() else {
+            return false;
+        };
+        let at = nalgebra::Isometry3::identity();
+        parts.iter().any(|part| {
+            part.shape.contains_point(&at, p) && part.shape.distance_to_point(&at, p, false) > 1e-3
+        })
+    }
+
     pub fn shape(&self) -> Option<&MeshShape> {
         self.shape.0.get_or_init(|| self.build_shape()).as_ref()
     }

@@ -17,7 +17,8 @@ pub use door::Door;
 pub use mesh::{MeshObstacle, MeshPart, MeshShape, PART_TRIANGLES};
 pub use person_parts::{column_solid, OwnBody, Physique};
 pub use placement::{
-    BasePose, Blocked, Blocker, Collision, HasSolution, IkSolution, Placement, Preferred, Wall,
+    seed_in_base_frame, BasePose, Blocked, Blocker, Collision, HasSolution, IkSolution, Placement,
+    Preferred, Wall,
 };
 pub use population::{Drawn, Population};
 pub use room_hash::hash_bits;

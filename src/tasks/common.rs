@@ -293,16 +293,17 @@ pub fn chain_of(input: &TaskInput<'_>, need: usize) -> Chain {
     input.person.body.chain(index)
 }
 
-/// A seed that depends on the task's seed, on what is asked (`kind`) and
-/// on where the point asked about is, never on names or the order of
-/// tasks in the file: adding a task, or renaming a target, a surface or a
-/// person, leaves every answer alone (and a member of a population gets
-/// the answers the same body alone gets).
-pub fn mix_seed(seed: u64, kind: &str, point_mm: &Point3<f64>) -> u64 {
+/// A seed that depends on the task's seed and on what is asked (`kind`),
+/// never on names, the order of tasks in the file or where the room is:
+/// adding a task, or renaming a target, a surface or a person, leaves
+/// every answer alone (and a member of a population gets the answers the
+/// same body alone gets). Each solve mixes in where its target is from
+/// where the person stands (`scene::seed_in_base_frame`), so that moving
+/// the whole scenario leaves every answer alone too.
+pub fn mix_seed(seed: u64, kind: &str) -> u64 {
     // FNV-1a: small, and stable across Rust versions (unlike std's hasher).
     let mut h: u64 = 0xcbf2_9ce4_8422_2325 ^ seed;
-    let coordinates = point_mm.iter().flat_map(|c| c.to_bits().to_le_bytes());
-    for b in kind.bytes().chain([0xff]).chain(coordinates) {
+    for b in kind.bytes().chain([0xff]) {
         h ^= u64::from(b);
         h = h.wrapping_mul(0x0100_0000_01b3);
     }

@@ -39,7 +39,7 @@ impl GazeSettings {
             p,
             &CommonDecl {
                 what,
-                seed_doc: "seeds the solver's random starts (mixed with where the subject is, never with names)",
+                seed_doc: "seeds the solver's random starts (mixed with where the subject is from where the person stands, never with names or where the room is)",
                 // FABRIK turns the neck and eyes before the trunk, as people
                 // do; the incremental solver moves every joint alike.
                 solver: ("fabrik", "the IK solver and its options"),
@@ -243,7 +243,7 @@ impl Task for GazeTask {
         let obstacles = GazeObstacles::new(input, reaching);
         let query = reaching.query(
             target.position_mm,
-            mix_seed(reaching.common.seed, "gaze", &target.position_mm),
+            mix_seed(reaching.common.seed, "gaze"),
             Search::MostComfortable,
             obstacles.body.as_ref(),
             input.base.own_body(),

@@ -31,7 +31,7 @@ impl Settings for MapSettings {
             p,
             &CommonDecl {
                 what: "point",
-                seed_doc: "seeds the solver's random starts (mixed with where each point is, never with names)",
+                seed_doc: "seeds the solver's random starts (mixed with where each point is from where the person stands, never with names or where the room is)",
                 solver: INCREMENTAL,
                 effector: None,
                 retry: MAP_RETRY,

@@ -236,7 +236,7 @@ impl<'a> GridRun<'a> {
     fn query<'q>(&'q self, cell: &GridCell, neighbour: Option<&'q Reached>) -> ReachQuery<'q> {
         let reaching = self.asked.reaching;
         let target_room_mm = cell.point_mm + self.asked.lift_mm;
-        let seed = mix_seed(reaching.common.seed, "map", &target_room_mm);
+        let seed = mix_seed(reaching.common.seed, "map");
         ReachQuery {
             last_resort: neighbour.and_then(|n| self.carried(n, &target_room_mm)),
             from_rest: false,

@@ -23,7 +23,7 @@ impl Settings for ReachSettings {
             p,
             &CommonDecl {
                 what: "target",
-                seed_doc: "seeds the solver's random starts (mixed with where the target is, never with names)",
+                seed_doc: "seeds the solver's random starts (mixed with where the target is from where the person stands, never with names or where the room is)",
                 solver: INCREMENTAL,
                 effector: None,
                 retry: THOROUGH_RETRY,
@@ -95,7 +95,7 @@ impl Task for ReachTask {
         };
         let chain = chain_of(input, 0);
         let obstacles = reaching.obstacles(input);
-        let seed = mix_seed(reaching.common.seed, "reach", &target.position_mm);
+        let seed = mix_seed(reaching.common.seed, "reach");
         // Whether any placement reaches does not depend on which is kept:
         // for a verdict alone, the first that reaches will do.
         let search = if input.verdict_only {

@@ -20,7 +20,7 @@ use crate::plugin::{
     Task, TaskInput, TaskPlugin, Tries,
 };
 use crate::report::{Asked, GazeReport, ReachAndGazeReport, ReachReport, TaskReport, Why};
-use crate::scene::Target;
+use crate::scene::{seed_in_base_frame, Target};
 use crate::solvers::fabrik::{solve_tree, TreeGoal, TreeProblem, TreeSolution};
 use crate::solvers::FabrikSettings;
 
@@ -42,7 +42,7 @@ impl Settings for ReachAndGazeSettings {
             p,
             &CommonDecl {
                 what: "target",
-                seed_doc: "seeds the solver's random starts (mixed with where the target is, never with names)",
+                seed_doc: "seeds the solver's random starts (mixed with where the target is from where the person stands, never with names or where the room is)",
                 solver: (
                     "fabrik",
                     "fabrik, whose tree solve moves hand and eyes together",
@@ -197,7 +197,7 @@ impl Task for ReachAndGazeTask {
         let obstacles = GazeObstacles::new(input, reaching);
         let query = reaching.query(
             target.position_mm,
-            mix_seed(reaching.common.seed, "reach+gaze", &target.position_mm),
+            mix_seed(reaching.common.seed, "reach+gaze"),
             Search::MostComfortable,
             obstacles.body.as_ref(),
             own,
@@ -231,8 +231,7 @@ impl Task for ReachAndGazeTask {
             });
             let poses = again_from(alone.pose, target.position_mm, prepared.as_ref());
             let tries = poses.into_iter().enumerate().map(|(k, pose)| {
-                let at = Point3::new(k as f64, 0.0, 0.0);
-                solving.attempt(pose, mix_seed(query.seed, "reach+gaze again", &at))
+                solving.attempt(pose, mix_seed(query.seed, &format!("reach+gaze again {k}")))
             });
             if let Some(found) = held.chain(tries).find(Seen::ok) {
                 seen = found;
@@ -360,6 +359,7 @@ impl Solving<'_, '_> {
     /// `body`'s tree solve for `goals` from the base at `pose`.
     fn solve(&self, body: &Body, goals: &[TreeGoal], pose: BasePose, seed: u64) -> TreeSolution {
         let own = self.input.base.own_body();
+        let seed = seed_in_base_frame(seed, &pose.to_base(&self.target.position_mm));
         solve_tree(
             &self.task.tree.unwrap_or_else(FabrikSettings::with_defaults),
             &TreeProblem {
