@@ -268,7 +268,7 @@ room r {
   target s5_front at (1420, 250, 1620)
 }
 person rm { mannequin man_50th base rollator }
-reach s5_front and gaze by rm { size 10mm seed 2 }
+reach s5_front and gaze by rm { size 10mm seed 1 }
 ";
     let both = first_reach_and_gaze("bookcase.reach", text);
     assert!(both.ok, "{:?} {:?}", both.reach.why, both.gaze.reason);

@@ -172,6 +172,17 @@ fn watch_keeps_the_page_and_its_stamp_current() {
     );
 }
 
+/// An upturned crate as OBJ text, from `min` to `min + size` (mm): a cube
+/// without its bottom face, open, so that what it covers is not inside a
+/// solid (which a target may not be) but behind its walls.
+fn crate_obj(min: [f64; 3], size: f64) -> String {
+    let cube = cube_obj(min, size);
+    cube.lines()
+        .filter(|line| *line != "f 1 3 4 2")
+        .map(|line| format!("{line}\n"))
+        .collect()
+}
+
 /// A closed cube as OBJ text, from `min` to `min + size` (mm).
 pub(crate) fn cube_obj(min: [f64; 3], size: f64) -> String {
     let mut text = String::new();
@@ -195,7 +206,7 @@ fn watch_follows_a_mesh_file_and_a_moved_mesh() {
     let obj = dir.path().join("crate.obj");
     std::fs::write(dir.path().join("parts.reach"), PARTS).unwrap();
     // A crate over the mug: no arm gets in.
-    std::fs::write(&obj, cube_obj([250.0, 1000.0, 920.0], 300.0)).unwrap();
+    std::fs::write(&obj, crate_obj([250.0, 1000.0, 920.0], 300.0)).unwrap();
     let scenario = |at_mm: i32| {
         scenario(0).replace(
             "  target mug",
@@ -208,7 +219,7 @@ fn watch_follows_a_mesh_file_and_a_moved_mesh() {
     assert_eq!(w.count("NOT reachable"), 1, "{:?}", w.lines.lock().unwrap());
 
     // The OBJ file is edited: the crate moves away from the mug.
-    std::fs::write(&obj, cube_obj([2500.0, 1000.0, 920.0], 300.0)).unwrap();
+    std::fs::write(&obj, crate_obj([2500.0, 1000.0, 920.0], 300.0)).unwrap();
     w.expect(
         "mug by ben: NOT reachable: blocked by `crate` -> reachable",
         1,

@@ -491,6 +491,13 @@ fn closest(region: &MultiPolygon<f64>, near_mm: f64, p: Point<f64>) -> Option<Po
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The region of `chair` at `heading_rad` in `room`, its pieces kept
+    /// in no memo.
+    fn unkept(room: &Room, chair: &Footprint, heading_rad: f64, zone: Option<&Zone>) -> Region {
+        let obstacles = Arc::new(FloorObstacles::new(room, chair));
+        Region::new(room, chair, heading_rad, zone, obstacles, &Arc::new(Memo::forgetting()))
+    }
     use crate::floor::admissible;
     use crate::scene::BoxObstacle;
     use geo::{Area, BooleanOps};
@@ -544,15 +551,7 @@ mod tests {
     fn crowded_region() -> Region {
         let room = crowded();
         let chair = Footprint::circle(300.0, 900.0);
-        let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
-        Region::new(
-            &room,
-            &chair,
-            0.0,
-            None,
-            obstacles,
-            &Arc::new(Memo::forgetting()),
-        )
+        unkept(&room, &chair, 0.0, None)
     }
 
     /// Finding out whether a base fits anywhere counts every tile the
@@ -649,15 +648,7 @@ mod tests {
         let chair = Footprint::circle(300.0, 2000.0);
         let free = admissible(&room, &chair, 0.0, None);
         let zoned = admissible(&room, &chair, 0.0, Some(&zone));
-        let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
-        let tiled = Region::new(
-            &room,
-            &chair,
-            0.0,
-            Some(&zone),
-            obstacles,
-            &Arc::new(Memo::forgetting()),
-        );
+        let tiled = unkept(&room, &chair, 0.0, Some(&zone));
         let notch = Point::new(1500.0, 1000.0);
         assert!(free.contains(&notch), "the notch is free floor");
         for x in (900..=1800).step_by(50) {
@@ -676,15 +667,7 @@ mod tests {
         let chair = Footprint::rectangle(600.0, 500.0, 660.0, 1400.0);
         let heading = 0.7;
         let whole = admissible(&room, &chair, heading, None);
-        let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
-        let tiled = Region::new(
-            &room,
-            &chair,
-            heading,
-            None,
-            obstacles,
-            &Arc::new(Memo::forgetting()),
-        );
+        let tiled = unkept(&room, &chair, heading, None);
         let differ = whole.xor(&tiled.whole()).unsigned_area();
         assert!(differ < 1.0, "{differ} mm2");
     }
@@ -695,15 +678,7 @@ mod tests {
         let room = room();
         let chair = Footprint::rectangle(600.0, 500.0, 660.0, 1400.0);
         let whole = admissible(&room, &chair, 0.0, None);
-        let obstacles = Arc::new(FloorObstacles::new(&room, &chair));
-        let tiled = Region::new(
-            &room,
-            &chair,
-            0.0,
-            None,
-            obstacles,
-            &Arc::new(Memo::forgetting()),
-        );
+        let tiled = unkept(&room, &chair, 0.0, None);
         for (x, y) in [
             (2500.0, 1850.0),
             (300.0, 2000.0),
