@@ -345,7 +345,9 @@ fn plugin_options_take_their_declared_defaults() {
         "{SCENE}person ann {{ mannequin arm base fixed {{ at (900, 1200, 930) }} }}\nreach mug by ann {{ solver incremental {{ rate 0.2 }} }}"
     );
     let s = ok(&text);
-    let ReachSettings(task) = ReachSettings::from_options(&s.tasks[0].options).unwrap();
+    let ReachSettings { common: task, hand } =
+        ReachSettings::from_options(&s.tasks[0].options).unwrap();
+    assert_eq!(hand, None);
     assert_eq!(task.tolerance_mm, 10.0);
     assert_eq!(task.solver.name, "incremental");
     let solver = IncrementalSettings::from_options(&task.solver.options).unwrap();
@@ -359,7 +361,9 @@ fn plugin_options_take_their_declared_defaults() {
 fn a_default_plugin_gets_its_own_default_options() {
     let text = format!("{SCENE}person ann {{ mannequin arm base fixed {{ at (900, 1200, 930) }} }}\nreach mug by ann");
     let s = ok(&text);
-    let ReachSettings(task) = ReachSettings::from_options(&s.tasks[0].options).unwrap();
+    let ReachSettings { common: task, hand } =
+        ReachSettings::from_options(&s.tasks[0].options).unwrap();
+    assert_eq!(hand, None);
     assert_eq!(task.solver.name, "incremental");
     let solver = IncrementalSettings::from_options(&task.solver.options).unwrap();
     assert_eq!(solver.rate, 0.05);

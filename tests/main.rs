@@ -15,6 +15,7 @@ mod docs_tables;
 mod ecosystem;
 mod gaze;
 mod golden;
+mod hands;
 mod hostile;
 mod independent;
 mod invariance;

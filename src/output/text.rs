@@ -71,11 +71,11 @@ fn expectations(report: &Report, out: &mut String) {
     }
 }
 
-/// One row per answer: its verdict, and its distance, sweeps and comfort
-/// where it has them.
+/// One row per answer: the effector it was found with (which hand), its
+/// verdict, and its distance, sweeps and comfort where it has them.
 fn table(answers: &[Answer]) -> String {
     let header = [
-        "task", "target", "person", "result", "distance", "sweeps", "comfort",
+        "task", "target", "person", "effector", "result", "distance", "sweeps", "comfort",
     ];
     // An answer with no posture (no place to approach the target from)
     // has no distance, sweeps or comfort to show.
@@ -85,13 +85,14 @@ fn table(answers: &[Answer]) -> String {
             .filter(|_| placed)
             .map_or("-".to_string(), |f| show(f.value))
     };
-    let rows: Vec<[String; 7]> = answers
+    let rows: Vec<[String; 8]> = answers
         .iter()
         .map(|a| {
             [
                 a.task.to_string(),
                 a.subject.clone(),
                 a.person.clone(),
+                a.effector.clone().unwrap_or_else(|| "-".into()),
                 a.verdict.clone(),
                 shown(a, "distance", |v| format!("{v:.1} mm")),
                 shown(a, "sweeps", |v| format!("{v}")),
@@ -111,7 +112,7 @@ fn table(answers: &[Answer]) -> String {
         for (i, cell) in cells.iter().enumerate() {
             let pad = widths[i] - cell.chars().count();
             // Text columns to the left, numbers to the right.
-            if i >= 4 {
+            if i >= 5 {
                 s.push_str(&" ".repeat(pad));
                 s.push_str(cell);
             } else {

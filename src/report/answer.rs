@@ -17,6 +17,9 @@ pub struct Answer {
     /// In words: `reachable`, `NOT visible: behind shelf`,
     /// `83.3 % of 24 reached`.
     pub verdict: String,
+    /// The effector the answer was found with (`grip`, `left_grip`), where
+    /// it is a hand's: which hand reached.
+    pub effector: Option<String>,
     pub figures: Vec<Figure>,
 }
 

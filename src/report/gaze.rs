@@ -129,6 +129,7 @@ impl ReportKind for GazeReport {
             person: self.person.clone(),
             ok: self.ok,
             verdict: self.verdict(),
+            effector: None,
             figures: self.figures(),
         }
     }

@@ -310,6 +310,7 @@ impl ReportKind for MapReport {
             person: self.person.clone(),
             ok: self.ok,
             verdict: format!("{:.1} % of {} {verb}", self.fraction * 100.0, self.points),
+            effector: (self.of == "reach").then(|| self.effector.clone()),
             figures: vec![
                 Figure::new(
                     "share",

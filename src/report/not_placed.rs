@@ -148,6 +148,7 @@ impl ReportKind for NotPlacedReport {
             person: self.person.clone(),
             ok: false,
             verdict: verdict.into(),
+            effector: None,
             figures: vec![Figure::new("fits at", self.fits_at * 100.0, "%", 0.5)],
         }
     }

@@ -283,6 +283,7 @@ impl ReportKind for PopulationReport {
             person: self.population.clone(),
             ok: self.ok,
             verdict,
+            effector: None,
             figures: vec![Figure::new("share", self.share * 100.0, "%", 0.05)],
         }
     }

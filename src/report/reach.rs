@@ -110,6 +110,7 @@ impl ReportKind for ReachReport {
             person: self.person.clone(),
             ok: self.ok,
             verdict: self.verdict(),
+            effector: Some(self.effector.clone()),
             figures: self.figures(),
         }
     }

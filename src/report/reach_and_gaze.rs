@@ -27,6 +27,7 @@ impl ReportKind for ReachAndGazeReport {
             person: self.person.clone(),
             ok: self.ok,
             verdict: format!("{}, {}", self.reach.verdict(), self.gaze.verdict()),
+            effector: Some(self.reach.effector.clone()),
             figures: self.reach.figures(),
         }
     }

@@ -123,6 +123,7 @@ impl ReportKind for StandardReport {
             person: format!("in {}", self.room),
             ok: self.ok,
             verdict,
+            effector: None,
             figures: vec![Figure::new("failed", self.failed as f64, "", 0.0)],
         }
     }

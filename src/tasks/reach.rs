@@ -10,25 +10,78 @@ use crate::plugin::{
     Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
 };
 use crate::report::{ReachReport, TaskReport};
+use crate::scene::Target;
 
 /// The plugin `reach`.
 pub struct Reach;
 
-/// Its settings: the common ones.
-pub struct ReachSettings(pub Common);
+/// Its settings: the common ones, and which hand reaches.
+pub struct ReachSettings {
+    pub common: Common,
+    /// `either`, `right` or `left` ([`Hand`]); none: either hand where no
+    /// effector is named, else the one named.
+    pub hand: Option<String>,
+}
 
 impl Settings for ReachSettings {
     fn visit(p: &mut Params<'_>) -> Self {
-        ReachSettings(Common::visit(
-            p,
-            &CommonDecl {
-                what: "target",
-                seed_doc: "seeds the solver's random starts (mixed with where the target is from where the person stands, never with names or where the room is)",
-                solver: INCREMENTAL,
-                effector: None,
-                retry: THOROUGH_RETRY,
-            },
-        ))
+        ReachSettings {
+            common: Common::visit(
+                p,
+                &CommonDecl {
+                    what: "target",
+                    seed_doc: "seeds the solver's random starts (mixed with where the target is from where the person stands, never with names or where the room is)",
+                    solver: INCREMENTAL,
+                    effector: None,
+                    retry: THOROUGH_RETRY,
+                },
+            ),
+            hand: p
+                .optional_name(
+                    "hand",
+                    "`either` (the effector and its twin on the other hand, `left_` and its name, where the mannequin has both: the hand that reaches, the more comfortable where both do; the default where no effector is named), `right` or `left`",
+                )
+                .get(),
+        }
+    }
+}
+
+/// Which hand a reach uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Hand {
+    /// The effector asked for and its twin on the other hand, where the
+    /// mannequin has one.
+    Either,
+    /// The effector asked for, on the right hand (its name without
+    /// `left_`).
+    Right,
+    /// Its twin on the left hand (`left_` and its name).
+    Left,
+}
+
+impl Hand {
+    fn parse(word: &str) -> Result<Self, SettingsError> {
+        match word {
+            "either" => Ok(Hand::Either),
+            "right" => Ok(Hand::Right),
+            "left" => Ok(Hand::Left),
+            other => Err(SettingsError::invalid(
+                "hand",
+                format!("`{other}` is not a hand: use `either`, `right` or `left`"),
+            )),
+        }
+    }
+}
+
+/// The prefix that names an effector of the left hand: `left_grip` is the
+/// twin of `grip`.
+const LEFT: &str = "left_";
+
+/// The name of the twin of effector `name` on the other hand.
+fn twin_name(name: &str) -> String {
+    match name.strip_prefix(LEFT) {
+        Some(right) => right.to_string(),
+        None => format!("{LEFT}{name}"),
     }
 }
 
@@ -56,21 +109,48 @@ impl TaskPlugin for Reach {
         options: &Options,
         plugins: &Registry,
     ) -> Result<Box<dyn Task>, SettingsError> {
-        let ReachSettings(common) = ReachSettings::from_options(options)?;
-        Ok(Box::new(ReachTask(Reaching::new(common, plugins)?)))
+        let ReachSettings { mut common, hand } = ReachSettings::from_options(options)?;
+        let hand = match hand {
+            Some(word) => Some(Hand::parse(&word)?),
+            // An effector named is the one asked for.
+            None => common.effector.is_none().then_some(Hand::Either),
+        };
+        // A hand named: the effector on that hand, which the checker finds
+        // (the mannequin's `grip` where no effector is named).
+        let named = common.effector.clone().unwrap_or_else(|| "grip".into());
+        let on_right = named.strip_prefix(LEFT).unwrap_or(&named).to_string();
+        match hand {
+            None | Some(Hand::Either) => {}
+            Some(Hand::Right) => common.effector = Some(on_right),
+            Some(Hand::Left) => common.effector = Some(format!("{LEFT}{on_right}")),
+        }
+        Ok(Box::new(ReachTask {
+            reaching: Reaching::new(common, plugins)?,
+            either: hand == Some(Hand::Either),
+        }))
     }
 }
 
-/// A configured reach.
-struct ReachTask(Reaching);
+/// A configured reach: with the effector asked for alone, or `either`
+/// hand (its twin too, where the mannequin has one).
+struct ReachTask {
+    reaching: Reaching,
+    either: bool,
+}
 
 impl Task for ReachTask {
     fn effectors(&self) -> Vec<EffectorNeed> {
-        vec![self.0.effector_need()]
+        vec![self.reaching.effector_need()]
     }
 
+    /// Either hand: each hand's search.
     fn starts_per_point(&self, placements: Tries) -> u64 {
-        self.0.starts_per_point(placements)
+        let one = self.reaching.starts_per_point(placements);
+        if self.either {
+            one.saturating_mul(2)
+        } else {
+            one
+        }
     }
 
     /// Its obstacles are asked about through `Reaching::obstacles` (and
@@ -81,19 +161,66 @@ impl Task for ReachTask {
 
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
         let chain = chain_of(input, 0);
-        let Subject::Target(target) = input.subject else {
-            return self.0.dependence(&chain, &[&chain], Vec::new(), false);
+        let chains: Vec<_> = self.hands(input).iter().map(|&e| input.person.body.chain(e)).collect();
+        let all: Vec<&_> = chains.iter().collect();
+        let points = match input.subject {
+            Subject::Target(target) => vec![target.position_mm],
+            _ => Vec::new(),
         };
-        self.0
-            .dependence(&chain, &[&chain], vec![target.position_mm], false)
+        self.reaching.dependence(&chain, &all, points, false)
     }
 
     fn run(&self, input: &TaskInput<'_>) -> TaskReport {
-        let reaching = &self.0;
         let Subject::Target(target) = input.subject else {
             unreachable!("the checker gives a reach a target")
         };
-        let chain = chain_of(input, 0);
+        let mut best: Option<ReachReport> = None;
+        for effector in self.hands(input) {
+            let report = self.reach_with(input, target, effector);
+            // For a verdict alone, the first hand that reaches will do.
+            let done = report.ok && input.verdict_only;
+            best = Some(match best {
+                Some(kept) if !better(&report, &kept) => kept,
+                _ => report,
+            });
+            if done {
+                break;
+            }
+        }
+        TaskReport::Reach(best.expect("a reach has at least one hand"))
+    }
+}
+
+/// Whether `a` is a better answer than `b`: it reaches where `b` does
+/// not; both reaching, it is more comfortable; neither, it comes closer.
+fn better(a: &ReachReport, b: &ReachReport) -> bool {
+    match (a.ok, b.ok) {
+        (true, false) => true,
+        (false, true) => false,
+        (true, true) => a.comfort < b.comfort,
+        (false, false) => a.distance_mm < b.distance_mm,
+    }
+}
+
+impl ReachTask {
+    /// The effectors (indices into the person's body) this reach tries:
+    /// the one the checker resolved, and for `either` its twin on the
+    /// other hand where the body has one.
+    fn hands(&self, input: &TaskInput<'_>) -> Vec<usize> {
+        let asked = input.effectors[0];
+        let body = &input.person.body;
+        let twin = self
+            .either
+            .then(|| body.effector_index(&twin_name(&body.effectors[asked].name)))
+            .flatten();
+        std::iter::once(asked).chain(twin).collect()
+    }
+
+    /// The reach of `target` with effector `effector`, and where it fails,
+    /// why.
+    fn reach_with(&self, input: &TaskInput<'_>, target: &Target, effector: usize) -> ReachReport {
+        let reaching = &self.reaching;
+        let chain = input.person.body.chain(effector);
         let obstacles = reaching.obstacles(input);
         let seed = mix_seed(reaching.common.seed, "reach");
         // Whether any placement reaches does not depend on which is kept:
@@ -137,6 +264,6 @@ impl Task for ReachTask {
         let asked = reaching.asked(&target.name, input, &chain, &placement);
         let mut report = ReachReport::new(&asked, &placement, target.position_mm);
         report.why = why;
-        TaskReport::Reach(report)
+        report
     }
 }

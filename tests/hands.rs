@@ -1,0 +1,87 @@
+//! Either hand: a reach that names no effector is made with the right
+//! hand and the left, and answers with the hand that reaches; `hand left`
+//! and `hand right` ask for one; every row names the effector.
+
+use reach::plugin::Registry;
+use reach::report::TaskReport;
+use reach::Input;
+
+/// A man standing at a fixed place facing +x, a cup 300 mm ahead and
+/// `side_mm` to his left (negative: right), at chest height; the reach
+/// with `options`.
+fn cup_reach(side_mm: f64, options: &str) -> Result<(bool, String), String> {
+    let text = format!(
+        "units mm deg\nuse std::people\nroom r {{\n  size 4000 x 4000 x 2500\n  \
+         target cup at (1300, {}, 1300)\n}}\n\
+         person p {{ mannequin man_50th base fixed {{ at (1000, 2000, 930) heading 0deg }} }}\n\
+         reach cup by p {{ {options} }}\n",
+        2000.0 + side_mm
+    );
+    let registry = Registry::builtin();
+    let (_, checked) = reach::check(
+        Input::Text {
+            name: "hands.reach",
+            text: &text,
+        },
+        &registry,
+    );
+    let scenario = checked.map_err(|d| d.render(false))?;
+    let report = reach::run(&scenario).map_err(|e| e.to_string())?;
+    match &report.tasks[0] {
+        TaskReport::Reach(r) => Ok((r.ok, r.effector.clone())),
+        other => Err(format!("not a reach: {other:?}")),
+    }
+}
+
+#[test]
+fn a_cup_far_to_the_left_is_reached_by_the_left_hand_and_named() {
+    // 900 mm to his left: beyond the right hand across the body.
+    let (ok, effector) = cup_reach(900.0, "").unwrap();
+    assert!(ok && effector == "left_grip", "{ok} {effector}");
+    let (ok, effector) = cup_reach(900.0, "hand right").unwrap();
+    assert!(!ok && effector == "grip", "{ok} {effector}");
+    let (ok, effector) = cup_reach(900.0, "hand left").unwrap();
+    assert!(ok && effector == "left_grip", "{ok} {effector}");
+    // Mirrored: the right hand, by default too.
+    let (ok, effector) = cup_reach(-900.0, "").unwrap();
+    assert!(ok && effector == "grip", "{ok} {effector}");
+    // An effector named is used alone.
+    let (ok, effector) = cup_reach(900.0, "effector grip").unwrap();
+    assert!(!ok && effector == "grip", "{ok} {effector}");
+}
+
+#[test]
+fn a_hand_the_mannequin_lacks_is_a_diagnostic_and_a_word_not_a_hand_too() {
+    let one_arm = "units mm deg\nuse std::arm\nroom r { size 4000 x 4000 x 2500\n target cup at (1450, 2000, 1300) }\n\
+        person p { mannequin right_arm base fixed { at (1000, 2000, 930) heading 0deg } }\n\
+        reach cup by p { hand left }\n";
+    let registry = Registry::builtin();
+    let (_, checked) = reach::check(
+        Input::Text {
+            name: "one_arm.reach",
+            text: one_arm,
+        },
+        &registry,
+    );
+    let Err(diagnostics) = checked else {
+        panic!("a right arm alone has no left hand")
+    };
+    let rendered = diagnostics.render(false);
+    assert!(rendered.contains("left_grip"), "{rendered}");
+    let err = cup_reach(0.0, "hand both").unwrap_err();
+    assert!(err.contains("`both` is not a hand"), "{err}");
+}
+
+/// The text report's table names the effector of each row.
+#[test]
+fn each_row_of_the_text_report_names_its_effector() {
+    let o = crate::cli::reach(&["run", "examples/flat_12.reach"]);
+    let out = crate::cli::stdout(&o);
+    let header = out.lines().find(|l| l.starts_with("task ")).unwrap();
+    assert!(header.contains(" effector "), "{header}");
+    assert!(
+        out.lines()
+            .any(|l| l.starts_with("reach ") && l.contains(" left_grip ")),
+        "{out}"
+    );
+}
