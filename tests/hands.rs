@@ -85,3 +85,44 @@ fn each_row_of_the_text_report_names_its_effector() {
         "{out}"
     );
 }
+
+/// The solver starts counted before a run count a search with each hand.
+#[test]
+fn the_starts_counted_before_the_run_count_each_hand() {
+    let starts = |hand: &str| {
+        let text = format!(
+            "units mm deg\nuse std::people\nroom r {{\n  size 4000 x 4000 x 2500\n  \
+             target cup at (1300, 2000, 1300)\n}}\n\
+             person p {{ mannequin man_50th base fixed {{ at (1000, 2000, 930) heading 0deg }} }}\n\
+             reach cup by p {{ {hand} }}\n"
+        );
+        let limits = reach::Limits {
+            solver_starts: 1,
+            ..reach::Limits::default()
+        };
+        let session = reach::Session::default().limits(limits);
+        let registry = Registry::builtin();
+        let (_, checked) = session.check(
+            Input::Text {
+                name: "starts.reach",
+                text: &text,
+            },
+            &registry,
+        );
+        let Err(d) = checked else {
+            panic!("one start is too few")
+        };
+        let words = d.render(false);
+        let after = words.split("up to ").nth(1).unwrap_or_default();
+        let number: String = after
+            .chars()
+            .take_while(|c| c.is_ascii_digit() || *c == ',')
+            .collect();
+        number
+            .replace(',', "")
+            .parse::<u64>()
+            .unwrap_or_else(|_| panic!("{words}"))
+    };
+    assert_eq!(starts(""), 2 * starts("hand right"));
+    assert_eq!(starts("hand left"), starts("hand right"));
+}

@@ -15,7 +15,7 @@ use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::plugin::Base;
 use crate::scenario::TaskSpec;
-use crate::scene::{Population, Room};
+use crate::scene::{Person, Population, Room};
 use crate::span::{FileId, Span};
 
 impl Checker<'_> {
@@ -28,13 +28,17 @@ impl Checker<'_> {
         rooms: &[Room],
         bases: &[Arc<dyn Base>],
         populations: &[Population],
+        persons: &[Person],
     ) -> Option<Span> {
         // Per declaration (one declaration gives a task per subject and person).
         let mut by_decl: Vec<(Span, u64)> = Vec::new();
         let mut index: HashMap<(FileId, u32), usize> = HashMap::new();
         for task in tasks {
             let people = task.population.map_or(1, |p| populations[p].len() as u64);
-            let starts = task_starts(task, rooms, bases).saturating_mul(people);
+            let body = &persons[task.person].body;
+            let searches = task.task.searches(body, &task.effectors);
+            let starts = (task_starts(task, rooms, bases).saturating_mul(searches))
+                .saturating_mul(people);
             let key = (task.span.file, task.span.start);
             match index.get(&key) {
                 Some(&i) => by_decl[i].1 = by_decl[i].1.saturating_add(starts),

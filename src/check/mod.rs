@@ -68,7 +68,7 @@ pub fn check(
         standards: &standards,
     });
     let costliest = if c.cx.errors.is_empty() {
-        c.check_budget(&tasks, &rooms, &bases, &populations)
+        c.check_budget(&tasks, &rooms, &bases, &populations, &persons)
     } else {
         None
     };

@@ -13,7 +13,7 @@ use crate::allowance::Allowance;
 use crate::collision::Touched;
 use crate::engine::KeptSolves;
 use crate::error::ErrorKind;
-use crate::kinematics::Chain;
+use crate::kinematics::{Body, Chain};
 use crate::progress::Progress;
 use crate::report::{Names, TaskReport};
 use crate::scene::{Person, Room, Surface, Target};
@@ -149,6 +149,12 @@ pub trait Task: Send + Sync {
     /// The most solver starts one point may need from `placements`
     /// candidate placements (what the limit on solver starts counts).
     fn starts_per_point(&self, placements: Tries) -> u64;
+    /// How many searches one point asks of a person of `body`, the task's
+    /// effectors resolved to `effectors`: one, but a reach with either
+    /// hand searches with each hand the body has.
+    fn searches(&self, _body: &Body, _effectors: &[usize]) -> u64 {
+        1
+    }
     /// What the answer depends on in the room (for the cache).
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence;
     /// Whether the task asks about the room's obstacles only through

@@ -10,6 +10,7 @@ use crate::plugin::{
     Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
 };
 use crate::report::{ReachReport, TaskReport};
+use crate::kinematics::Body;
 use crate::scene::Target;
 
 /// The plugin `reach`.
@@ -143,14 +144,13 @@ impl Task for ReachTask {
         vec![self.reaching.effector_need()]
     }
 
-    /// Either hand: each hand's search.
     fn starts_per_point(&self, placements: Tries) -> u64 {
-        let one = self.reaching.starts_per_point(placements);
-        if self.either {
-            one.saturating_mul(2)
-        } else {
-            one
-        }
+        self.reaching.starts_per_point(placements)
+    }
+
+    /// Either hand: a search with each.
+    fn searches(&self, body: &Body, effectors: &[usize]) -> u64 {
+        effectors.first().map_or(1, |&asked| self.hands_of(body, asked).len() as u64)
     }
 
     /// Its obstacles are asked about through `Reaching::obstacles` (and
@@ -161,7 +161,9 @@ impl Task for ReachTask {
 
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
         let chain = chain_of(input, 0);
-        let chains: Vec<_> = self.hands(input).iter().map(|&e| input.person.body.chain(e)).collect();
+        let chains: Vec<_> = (self.hands_of(&input.person.body, input.effectors[0]).iter())
+            .map(|&e| input.person.body.chain(e))
+            .collect();
         let all: Vec<&_> = chains.iter().collect();
         let points = match input.subject {
             Subject::Target(target) => vec![target.position_mm],
@@ -175,7 +177,7 @@ impl Task for ReachTask {
             unreachable!("the checker gives a reach a target")
         };
         let mut best: Option<ReachReport> = None;
-        for effector in self.hands(input) {
+        for effector in self.hands_of(&input.person.body, input.effectors[0]) {
             let report = self.reach_with(input, target, effector);
             // For a verdict alone, the first hand that reaches will do.
             let done = report.ok && input.verdict_only;
@@ -203,12 +205,10 @@ fn better(a: &ReachReport, b: &ReachReport) -> bool {
 }
 
 impl ReachTask {
-    /// The effectors (indices into the person's body) this reach tries:
-    /// the one the checker resolved, and for `either` its twin on the
-    /// other hand where the body has one.
-    fn hands(&self, input: &TaskInput<'_>) -> Vec<usize> {
-        let asked = input.effectors[0];
-        let body = &input.person.body;
+    /// The effectors (indices into `body`) this reach tries: `asked`, the
+    /// one the checker resolved, and for `either` its twin on the other
+    /// hand where the body has one.
+    fn hands_of(&self, body: &Body, asked: usize) -> Vec<usize> {
         let twin = self
             .either
             .then(|| body.effector_index(&twin_name(&body.effectors[asked].name)))
