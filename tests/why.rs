@@ -331,3 +331,39 @@ reach knob by pat
     );
     assert!(reach_of(&run(&without), "knob", "pat").ok);
 }
+
+/// The cause a designer can act on: a seated man reaching for a cabinet's
+/// front just over the end of a counter, the counter keeping his chair
+/// away. Searched without his body he reaches by leaning back through the
+/// chair's backrest, which is not why he misses: with the furniture off
+/// the floor, his chair comes close enough for the hand to reach, backrest
+/// and all, so the counter keeping the chair away is named (it was "the
+/// wheelchair's backrest; the joints' coupled limits").
+#[test]
+fn a_chair_kept_away_by_a_counter_is_kept_away_not_blocked_by_its_backrest() {
+    let text = "units mm deg\nuse std::people\nroom kitchen {\n  size 3000 x 3000 x 2500\n  \
+        box counter      at (0, 0, 0)    size (600, 2000, 900)\n  \
+        box wall_cabinet at (0, 0, 1400) size (350, 2000, 700)\n  \
+        target front at (350, 50, 1550)\n}\n\
+        person ann {\n  mannequin man_50th_seated\n  base manual_wheelchair { approach side }\n}\n\
+        reach front by ann { hand right }\n";
+    let registry = reach::plugin::Registry::builtin();
+    let (_, checked) = reach::check(
+        reach::Input::Text {
+            name: "corner.reach",
+            text,
+        },
+        &registry,
+    );
+    let Ok(scenario) = checked else {
+        panic!("the corner checks")
+    };
+    let report = reach::run(&scenario).unwrap();
+    let reach::report::TaskReport::Reach(r) = &report.tasks[0] else {
+        panic!("a reach")
+    };
+    assert!(!r.ok, "{r:?}");
+    let why = format!("{:?}", r.why);
+    assert!(why.contains("KeptAway") && why.contains("counter"), "{why}");
+    assert!(!why.contains("backrest"), "{why}");
+}

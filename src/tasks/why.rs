@@ -82,6 +82,17 @@ impl Failed<'_> {
             }
             let bare = self.solve(self.chain, None, &OwnBody::default());
             if self.reaches(&bare) {
+                // The person's own body or chair is the cause only where the
+                // placement is not the limit: where the base, the furniture
+                // off the floor, comes close enough for the hand to reach
+                // with the body as it is, the furniture keeps it away (else
+                // the hand reaching "without the backrest" leans back
+                // through where the backrest was).
+                let empty = self.without_furniture(&[]);
+                let closer = self.solve_in(&empty, self.chain, None, own);
+                if self.reaches(&closer) {
+                    return Found::Why(vec![self.kept_away(obstacles, &closer)]);
+                }
                 found.push(self.blocked_by_body(&no_room, &bare));
             } else {
                 let empty = self.without_furniture(&[]);
