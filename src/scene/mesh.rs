@@ -105,8 +105,6 @@ impl MeshObstacle {
         self.encloses
     }
 
-    /// parry's shape of the mesh, built on the first call; none if parry
-    /// refuses the triangles.
     /// Whether `p` is inside the mesh and not on its surface (within a
     /// thousandth of a millimetre), as [`BoxObstacle::holds_strictly`]
     /// says of a box: only a mesh that encloses has an inside.
@@ -126,6 +124,8 @@ impl MeshObstacle {
         })
     }
 
+    /// parry's shape of the mesh, built on the first call; none if parry
+    /// refuses the triangles.
     pub fn shape(&self) -> Option<&MeshShape> {
         self.shape.0.get_or_init(|| self.build_shape()).as_ref()
     }

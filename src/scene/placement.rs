@@ -41,7 +41,7 @@ impl BasePose {
 }
 
 /// How finely a target in the base frame is told apart when it seeds a
-/// solve: a millionth of a millimetre, far above the rounding a rigid
+/// solve: a thousandth of a millimetre, far above the rounding a rigid
 /// motion of the whole scene leaves in it (about 1e-12 mm), far below any
 /// distance that matters.
 const SEED_GRID_MM: f64 = 1e-3;
