@@ -5,6 +5,7 @@
 //! configured plugins and the tasks.
 
 mod door;
+mod fnv;
 mod mesh;
 mod person_parts;
 mod placement;
@@ -14,6 +15,7 @@ mod surface;
 mod vision;
 
 pub use door::Door;
+pub use fnv::fnv1a;
 pub use mesh::{MeshObstacle, MeshPart, MeshShape, PART_TRIANGLES};
 pub use person_parts::{column_solid, OwnBody, Physique};
 pub use placement::{

@@ -51,17 +51,10 @@ const SEED_GRID_MM: f64 = 1e-3;
 /// the scene only through where the target is from where the person
 /// stands, so that moving the whole scenario, or turning it by a multiple
 /// of 90 degrees, draws the same starts. (FNV-1a over the coordinates
-/// rounded to [`SEED_GRID_MM`]: stable across Rust versions.)
+/// rounded to [`SEED_GRID_MM`].)
 pub fn seed_in_base_frame(seed: u64, target_base_mm: &Point3<f64>) -> u64 {
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325 ^ seed;
-    for c in target_base_mm.iter() {
-        let cell = (c / SEED_GRID_MM).round() as i64;
-        for b in cell.to_le_bytes() {
-            h ^= u64::from(b);
-            h = h.wrapping_mul(0x0100_0000_01b3);
-        }
-    }
-    h
+    let cells = target_base_mm.iter().map(|c| (c / SEED_GRID_MM).round() as i64);
+    super::fnv1a(seed, cells.flat_map(i64::to_le_bytes))
 }
 
 /// Where the base stood and the posture the solver found from there.

@@ -301,11 +301,5 @@ pub fn chain_of(input: &TaskInput<'_>, need: usize) -> Chain {
 /// where the person stands (`scene::seed_in_base_frame`), so that moving
 /// the whole scenario leaves every answer alone too.
 pub fn mix_seed(seed: u64, kind: &str) -> u64 {
-    // FNV-1a: small, and stable across Rust versions (unlike std's hasher).
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325 ^ seed;
-    for b in kind.bytes().chain([0xff]) {
-        h ^= u64::from(b);
-        h = h.wrapping_mul(0x0100_0000_01b3);
-    }
-    h
+    crate::scene::fnv1a(seed, kind.bytes().chain([0xff]))
 }

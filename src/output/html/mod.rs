@@ -136,10 +136,7 @@ fn fill(template: &str, values: &[(&str, &str)]) -> String {
 /// A 64-bit FNV-1a hash of the page's data, in hex: what changes when the
 /// answers or the scene do.
 fn stamp_of(data: &str) -> String {
-    let hash = data.bytes().fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
-        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
-    });
-    format!("{hash:016x}")
+    format!("{:016x}", crate::scene::fnv1a(0, data.bytes()))
 }
 
 /// JSON safe inside a `<script>` element: no `<` at all, so no `</script>`
