@@ -1,12 +1,12 @@
 //! The `reach` task: can this person bring their hand to this target?
 
 use super::common::{
-    chain_of, mix_seed, Common, CommonDecl, Reaching, INCREMENTAL, THOROUGH_RETRY,
+    mix_seed, Common, CommonDecl, Reaching, INCREMENTAL, THOROUGH_RETRY,
 };
 use super::walk_in::reach_walking_in;
 use super::why::{Failed, Found};
 use crate::plugin::{
-    Dependence, EffectorNeed, Options, ParamSpec, Params, Plugin, ReachQuery, Registry, Search,
+    Dependence, EffectorNeed, Obstacles, Options, ParamSpec, Params, Plugin, ReachQuery, Registry, Search,
     Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
 };
 use crate::report::{ReachReport, TaskReport};
@@ -160,7 +160,7 @@ impl Task for ReachTask {
     }
 
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
-        let chain = chain_of(input, 0);
+        // The effector asked for first, then its twin.
         let chains: Vec<_> = (self.hands_of(&input.person.body, input.effectors[0]).iter())
             .map(|&e| input.person.body.chain(e))
             .collect();
@@ -169,16 +169,18 @@ impl Task for ReachTask {
             Subject::Target(target) => vec![target.position_mm],
             _ => Vec::new(),
         };
-        self.reaching.dependence(&chain, &all, points, false)
+        self.reaching.dependence(&chains[0], &all, points, false)
     }
 
     fn run(&self, input: &TaskInput<'_>) -> TaskReport {
         let Subject::Target(target) = input.subject else {
             unreachable!("the checker gives a reach a target")
         };
+        // The room's obstacles, once for either hand.
+        let obstacles = self.reaching.obstacles(input);
         let mut best: Option<ReachReport> = None;
         for effector in self.hands_of(&input.person.body, input.effectors[0]) {
-            let report = self.reach_with(input, target, effector);
+            let report = self.reach_with(input, target, effector, obstacles.as_ref());
             // For a verdict alone, the first hand that reaches will do.
             let done = report.ok && input.verdict_only;
             best = Some(match best {
@@ -216,12 +218,18 @@ impl ReachTask {
         std::iter::once(asked).chain(twin).collect()
     }
 
-    /// The reach of `target` with effector `effector`, and where it fails,
+    /// The reach of `target` with effector `effector`, kept out of
+    /// `obstacles` (none: collisions are not checked), and where it fails,
     /// why.
-    fn reach_with(&self, input: &TaskInput<'_>, target: &Target, effector: usize) -> ReachReport {
+    fn reach_with(
+        &self,
+        input: &TaskInput<'_>,
+        target: &Target,
+        effector: usize,
+        obstacles: Option<&Obstacles>,
+    ) -> ReachReport {
         let reaching = &self.reaching;
         let chain = input.person.body.chain(effector);
-        let obstacles = reaching.obstacles(input);
         let seed = mix_seed(reaching.common.seed, "reach");
         // Whether any placement reaches does not depend on which is kept:
         // for a verdict alone, the first that reaches will do.
@@ -232,12 +240,12 @@ impl ReachTask {
         };
         let own = input.base.own_body();
         let query = ReachQuery {
-            solves: (input.solves).map(|s| s.of(&chain, obstacles.as_ref(), own)),
+            solves: (input.solves).map(|s| s.of(&chain, obstacles, own)),
             ..reaching.query(
                 target.position_mm,
                 seed,
                 search,
-                obstacles.as_ref(),
+                obstacles,
                 own,
                 input.allowance,
             )
@@ -253,7 +261,7 @@ impl ReachTask {
                 chain: &chain,
                 target_mm: target.position_mm,
                 seed,
-                obstacles: obstacles.as_ref(),
+                obstacles,
                 placement: &placement,
             };
             match failed.why() {
