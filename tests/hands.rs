@@ -126,3 +126,95 @@ fn the_starts_counted_before_the_run_count_each_hand() {
     assert_eq!(starts(""), 2 * starts("hand right"));
     assert_eq!(starts("hand left"), starts("hand right"));
 }
+
+/// A man standing at a fixed place facing +x before a wall shelf 400 mm
+/// deep spanning 2 m across him: the map of its top with `options`.
+fn shelf_map(options: &str) -> reach::report::MapReport {
+    let text = format!(
+        "units mm deg\nuse std::people\nroom r {{\n  size 4000 x 4000 x 2500\n  \
+         box shelf at (1250, 1000, 1100) size (400, 2000, 20)\n}}\n\
+         person p {{ mannequin man_50th base fixed {{ at (1000, 2000, 930) heading 0deg }} }}\n\
+         map shelf.top by p {{ step 100mm {options} }}\n"
+    );
+    let registry = Registry::builtin();
+    let (_, checked) = reach::check(
+        Input::Text {
+            name: "shelf.reach",
+            text: &text,
+        },
+        &registry,
+    );
+    let scenario = checked.map_err(|d| d.render(false)).unwrap();
+    let report = reach::run(&scenario).unwrap();
+    match &report.tasks[0] {
+        TaskReport::Map(m) => m.clone(),
+        other => panic!("not a map: {other:?}"),
+    }
+}
+
+/// A map with either hand (the default) is the right hand's map where it
+/// reaches, and the left hand's where it does not: each cell names the
+/// hand, the cells only the left reaches lie on the left, and the file
+/// of a one-hand map is named after the hand.
+#[test]
+fn a_map_with_either_hand_reaches_what_each_hand_reaches_and_names_it() {
+    let right = shelf_map("hand right");
+    let either = shelf_map("");
+    assert_eq!(right.other_hand, None);
+    assert_eq!(either.other_hand.as_deref(), Some("left_grip"));
+    let mut left_only = 0;
+    for (r, e) in right.cells.iter().zip(&either.cells) {
+        if r.reachable {
+            // The right hand's answer is kept as it was.
+            assert!(e.reachable && e.hand == Some("right"), "{e:?}");
+            assert_eq!((r.base_mm_deg, r.comfort), (e.base_mm_deg, e.comfort));
+        } else if e.reachable {
+            assert_eq!(e.hand, Some("left"), "{e:?}");
+            // Facing +x, the left is +y.
+            assert!(e.point_mm[1] > 2000.0, "{e:?}");
+            left_only += 1;
+        }
+    }
+    assert!(
+        left_only > 0,
+        "the left hand reaches further left: {:?}",
+        either.grid
+    );
+    assert_eq!(either.reachable, right.reachable + left_only);
+    let named = |m: &reach::report::MapReport| m.cells.iter().filter(|c| c.hand.is_some()).count();
+    assert_eq!(named(&either), either.points);
+    assert_eq!(named(&right), 0);
+}
+
+#[test]
+fn a_map_of_one_hand_is_written_to_files_named_after_the_hand() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("shelf.reach");
+    std::fs::write(
+        &path,
+        "units mm deg\nuse std::people\nroom r {\n  size 4000 x 4000 x 2500\n  \
+         box shelf at (1250, 1500, 1100) size (400, 1000, 20)\n}\n\
+         person p { mannequin man_50th base fixed { at (1000, 2000, 930) heading 0deg } }\n\
+         map shelf.top by p { step 200mm hand left }\nmap shelf.top by p { step 200mm }\n",
+    )
+    .unwrap();
+    let out = dir.path().join("out");
+    let o = crate::cli::reach(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", crate::cli::stderr(&o));
+    for name in ["map-shelf-top-p-left_grip.svg", "map-shelf-top-p.svg"] {
+        assert!(out.join(name).is_file(), "{name}");
+    }
+    let csv = std::fs::read_to_string(out.join("map-shelf-top-p.csv")).unwrap();
+    assert!(csv.lines().next().unwrap().ends_with(",hand"), "{csv}");
+    assert!(
+        csv.lines()
+            .skip(1)
+            .all(|l| l.ends_with(",right") || l.ends_with(",left")),
+        "{csv}"
+    );
+}

@@ -79,6 +79,12 @@ impl Body {
         self.effectors.iter().position(|e| e.name == name)
     }
 
+    /// The twin of effector `asked` on the other hand, where the body has
+    /// one (`left_grip` for `grip`, and back).
+    pub fn twin_of(&self, asked: usize) -> Option<usize> {
+        self.effector_index(&twin_name(&self.effectors[asked].name))
+    }
+
     /// The joints from the base to `joint`, in order.
     pub fn path(&self, joint: Option<usize>) -> Vec<usize> {
         let mut path = Vec::new();
@@ -250,6 +256,28 @@ impl Carry<'_> {
     }
 }
 
+/// The prefix that names an effector of the left hand: `left_grip` is the
+/// twin of `grip`.
+pub const LEFT_PREFIX: &str = "left_";
+
+/// The name of the twin of effector `name` on the other hand.
+pub fn twin_name(name: &str) -> String {
+    match name.strip_prefix(LEFT_PREFIX) {
+        Some(right) => right.to_string(),
+        None => format!("{LEFT_PREFIX}{name}"),
+    }
+}
+
+/// Which hand effector `name` is on: `left` for `left_` and a name, else
+/// `right`.
+pub fn hand_side(name: &str) -> &'static str {
+    if name.starts_with(LEFT_PREFIX) {
+        "left"
+    } else {
+        "right"
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -339,3 +367,4 @@ mod tests {
         assert_eq!(body.chain(0).riders.len(), 1);
     }
 }
+

@@ -20,7 +20,7 @@ mod rhythm;
 mod urdf;
 mod volumes;
 
-pub use body::{Body, Effector, Sphere};
+pub use body::{hand_side, twin_name, Body, Effector, Sphere, LEFT_PREFIX};
 #[cfg(test)]
 pub(crate) use chain::revolute;
 pub use chain::{Chain, Joint, JointKind, Link, Rider};

@@ -20,9 +20,17 @@ use crate::escape::markup;
 use crate::report::{quoted, MapReport, PopulationReport, ShareCell, ShareGrid};
 
 /// File names for a map: `map-SURFACE-PERSON.csv` and `.svg`
-/// (`gaze_map-...` for a gaze map).
+/// (`gaze_map-...` for a gaze map), and a map of one effector other than
+/// the right hand's `grip` (`hand left`) the effector after them:
+/// `map-SURFACE-PERSON-left_grip`.
 pub fn file_stem(m: &MapReport) -> String {
-    stem(m.of, &m.name, &m.person)
+    let who = match (m.of, &m.other_hand) {
+        ("reach", None) if m.effector != "grip" && !m.effector.is_empty() => {
+            format!("{}-{}", m.person, m.effector)
+        }
+        _ => m.person.clone(),
+    };
+    stem(m.of, &m.name, &who)
 }
 
 /// File names for a population's map: `map-SURFACE-POPULATION`.
@@ -37,11 +45,14 @@ fn stem(of: &str, surface: &str, who: &str) -> String {
 }
 
 /// One line per point: where it is, whether it is reachable, the distance
-/// left, the comfort, and where the base stood; where the map found why
+/// left, the comfort, and where the base stood; where the map reaches
+/// with either hand, which hand; where the map found why
 /// points were not reached (`why true`), why, in a last column.
 pub fn csv(m: &MapReport) -> String {
     let with_why = m.cells.iter().any(|c| !c.why().is_empty());
+    let with_hand = m.other_hand.is_some();
     let mut out = String::from("column,row,x_mm,y_mm,z_mm,reachable,distance_mm,comfort,base_x_mm,base_y_mm,base_heading_deg");
+    out += if with_hand { ",hand" } else { "" };
     out += if with_why { ",why\n" } else { "\n" };
     for c in &m.cells {
         let [x, y, z] = c.point_mm;
@@ -55,6 +66,9 @@ pub fn csv(m: &MapReport) -> String {
             finite(c.distance_mm),
             finite(c.comfort)
         );
+        if with_hand {
+            let _ = write!(out, ",{}", c.hand.unwrap_or_default());
+        }
         if with_why {
             let _ = write!(out, ",{}", csv_field(&c.why_words()));
         }
@@ -145,7 +159,10 @@ impl Picture {
                     None => cell_colour(m.of, c.reachable, c.distance_mm),
                 },
                 words: match (c.reachable, m.of) {
-                    (true, _) => m.words()[1].to_string(),
+                    (true, _) => match c.hand {
+                        Some(hand) => format!("{} with the {hand} hand", m.words()[1]),
+                        None => m.words()[1].to_string(),
+                    },
                     (false, "gaze") => "not seen".to_string(),
                     (false, _) if !c.distance_mm.is_finite() => {
                         "no place to approach it from".into()
@@ -182,10 +199,15 @@ impl Picture {
         };
         Picture {
             title: format!(
-                "{} {} by {} ({} base): {:.1} % of {} points",
+                "{} {} by {}{} ({} base): {:.1} % of {} points",
                 m.name,
                 m.words()[0],
                 m.person,
+                if m.other_hand.is_some() {
+                    " with either hand"
+                } else {
+                    ""
+                },
                 m.base,
                 m.fraction * 100.0,
                 m.points

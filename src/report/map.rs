@@ -9,7 +9,7 @@ use serde::Serialize;
 use super::entry_kind::{text, Asks, EntryKind, Tolerance};
 use super::parts::point;
 use super::{deg, fixed, mm, Answer, Figure, ReportKind, Why};
-use crate::kinematics::Chain;
+use crate::kinematics::{hand_side, Chain};
 use crate::scene::{Grid, GridCell, Person, Placement, Surface};
 use serde_json::Value;
 
@@ -38,6 +38,10 @@ pub struct MapReport {
     pub solver: String,
     /// The effector whose distance to each point counts (`grip`, `eyes`).
     pub effector: String,
+    /// Its twin on the other hand (`left_grip`), where the map reaches
+    /// with either hand: each cell's `hand` says which reached it.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub other_hand: Option<String>,
     /// What point of the body that effector is ("the centre of a power
     /// grasp"), as its mannequin says; else "the effector `NAME`".
     pub point: String,
@@ -84,6 +88,7 @@ impl MapReport {
             tolerance_mm,
             solver,
             effector,
+            other_hand,
             point,
             retried,
             base,
@@ -109,6 +114,7 @@ impl MapReport {
             tolerance_mm: *tolerance_mm,
             solver: solver.clone(),
             effector: effector.clone(),
+            other_hand: other_hand.clone(),
             point: point.clone(),
             retried: *retried,
             base: base.clone(),
@@ -137,6 +143,14 @@ pub struct MapCell {
     pub comfort: f64,
     /// Where the base stood: x, y and heading in degrees.
     pub base_mm_deg: [f64; 3],
+    /// Which hand reached the point (`right` or `left`), or came closest,
+    /// where the map reaches with either (`other_hand`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub hand: Option<&'static str>,
+    /// Reached only thanks to the task's `blocked_solver` (counted in the
+    /// map's `retried`).
+    #[serde(skip)]
+    pub retried: bool,
     /// What more a point not reached says, where it says more (boxed: a
     /// map of 100,000 points keeps its cells twice over while it ends).
     #[serde(flatten)]
@@ -172,6 +186,8 @@ impl MapCell {
                 mm(pose.position_mm.y),
                 deg(pose.heading_rad),
             ],
+            hand: None,
+            retried: reachable && placement.retried,
             missed: None,
         }
     }
@@ -248,40 +264,21 @@ impl MapReport {
         grid: &Grid,
         cells: Vec<MapCell>,
     ) -> Self {
-        let reachable = cells.iter().filter(|c| c.reachable).count();
-        let heights: Vec<f64> = cells
-            .iter()
-            .filter(|c| c.reachable)
-            .map(|c| c.point_mm[2])
-            .collect();
-        let band = (!heights.is_empty()).then(|| {
-            let lo = heights.iter().copied().fold(f64::INFINITY, f64::min);
-            let hi = heights.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-            [lo, hi]
-        });
-        let rows: Vec<String> = (0..grid.rows)
-            .rev()
-            .map(|r| {
-                cells[r * grid.columns..(r + 1) * grid.columns]
-                    .iter()
-                    .map(|c| if c.reachable { '#' } else { '.' })
-                    .collect()
-            })
-            .collect();
         let v3 = |v: nalgebra::Vector3<f64>| [mm(v.x), mm(v.y), mm(v.z)];
-        MapReport {
+        let mut report = MapReport {
             name: surface.name.clone(),
             person: person.name.clone(),
             of: "reach",
-            ok: reachable > 0,
+            ok: false,
             points: cells.len(),
-            reachable,
-            fraction: fixed(reachable as f64 / cells.len().max(1) as f64, 4),
-            reachable_heights_mm: band,
+            reachable: 0,
+            fraction: 0.0,
+            reachable_heights_mm: None,
             step_mm: mm(step_mm),
             tolerance_mm: mm(tolerance_mm),
             solver: solver.to_string(),
             effector: String::new(),
+            other_hand: None,
             point: String::new(),
             retried: 0,
             base: person.base.name.clone(),
@@ -295,9 +292,64 @@ impl MapReport {
             v_mm: v3(surface.v_mm),
             columns: grid.columns,
             rows: grid.rows,
-            grid: rows,
+            grid: Vec::new(),
             cells,
+        };
+        report.summarize();
+        report
+    }
+
+    /// The figures that follow from the cells: how many are reachable,
+    /// their share and heights, the rows of `#` and `.`, how many only on
+    /// the retry.
+    fn summarize(&mut self) {
+        let cells = &self.cells;
+        let reachable = cells.iter().filter(|c| c.reachable).count();
+        let heights: Vec<f64> = cells
+            .iter()
+            .filter(|c| c.reachable)
+            .map(|c| c.point_mm[2])
+            .collect();
+        self.reachable_heights_mm = (!heights.is_empty()).then(|| {
+            let lo = heights.iter().copied().fold(f64::INFINITY, f64::min);
+            let hi = heights.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            [lo, hi]
+        });
+        let columns = self.columns;
+        self.grid = (0..self.rows)
+            .rev()
+            .map(|r| {
+                cells[r * columns..(r + 1) * columns]
+                    .iter()
+                    .map(|c| if c.reachable { '#' } else { '.' })
+                    .collect()
+            })
+            .collect();
+        self.ok = reachable > 0;
+        self.reachable = reachable;
+        self.fraction = fixed(reachable as f64 / cells.len().max(1) as f64, 4);
+        self.retried = cells.iter().filter(|c| c.retried).count();
+    }
+
+    /// This map (of one hand) together with `other`, the same surface's
+    /// map with the other hand, made where this one did not reach: each
+    /// point as the hand that reached it, or where neither did, the one
+    /// that came closer, and which hand in its `hand`.
+    pub fn with_other_hand(mut self, other: MapReport) -> MapReport {
+        let sides = [hand_side(&self.effector), hand_side(&other.effector)];
+        for (cell, theirs) in self.cells.iter_mut().zip(other.cells) {
+            let take =
+                !cell.reachable && (theirs.reachable || theirs.distance_mm < cell.distance_mm);
+            if take {
+                *cell = theirs;
+                cell.hand = Some(sides[1]);
+            } else {
+                cell.hand = Some(sides[0]);
+            }
         }
+        self.other_hand = Some(other.effector);
+        self.summarize();
+        self
     }
 }
 
@@ -310,7 +362,10 @@ impl ReportKind for MapReport {
             person: self.person.clone(),
             ok: self.ok,
             verdict: format!("{:.1} % of {} {verb}", self.fraction * 100.0, self.points),
-            effector: (self.of == "reach").then(|| self.effector.clone()),
+            effector: (self.of == "reach").then(|| match &self.other_hand {
+                Some(other) => format!("{} or {other}", self.effector),
+                None => self.effector.clone(),
+            }),
             figures: vec![
                 Figure::new(
                     "share",
@@ -351,8 +406,28 @@ impl ReportKind for MapReport {
             self.rows,
             self.step_mm
         );
-        if !self.point.is_empty() {
-            let _ = writeln!(out, "  distance to {} (`{}`)", self.point, self.effector);
+        match (&self.other_hand, self.point.is_empty()) {
+            (_, true) => {}
+            (None, false) => {
+                let _ = writeln!(out, "  distance to {} (`{}`)", self.point, self.effector);
+            }
+            (Some(other), false) => {
+                let _ = writeln!(
+                    out,
+                    "  distance to {} (`{}`), or the same of the other hand (`{other}`)",
+                    self.point, self.effector
+                );
+            }
+        }
+        if let Some(other) = &self.other_hand {
+            let with_other = (self.cells.iter())
+                .filter(|c| c.reachable && c.hand == Some(hand_side(other)))
+                .count();
+            let _ = writeln!(
+                out,
+                "  with either hand: {} reached only with `{other}` (`hand` in the JSON and CSV)",
+                points(with_other)
+            );
         }
         let through = self.cells.iter().filter(|c| c.through().is_some()).count();
         if through > 0 {
@@ -501,6 +576,8 @@ mod tests {
             distance_mm: 0.5,
             comfort: 2.0,
             base_mm_deg: [0.0, 0.0, 90.0],
+            hand: Some("left"),
+            retried: false,
             missed: None,
         };
         let map = MapReport {
@@ -516,6 +593,7 @@ mod tests {
             tolerance_mm: 10.0,
             solver: "incremental".into(),
             effector: "grip".into(),
+            other_hand: Some("left_grip".into()),
             point: "the grip".into(),
             retried: 0,
             base: "wheelchair".into(),

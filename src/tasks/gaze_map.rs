@@ -133,6 +133,7 @@ impl Task for GazeMapTask {
             of: "gaze",
             lift_mm: nalgebra::Vector3::zeros(),
             why: false,
+            settled: None,
         };
         run_map(input, &asked, &judge)
     }

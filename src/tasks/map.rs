@@ -7,23 +7,24 @@
 
 use nalgebra::Vector3;
 
-use super::common::{chain_of, Common, CommonDecl, Reaching, INCREMENTAL, MAP_RETRY};
+use super::common::{Common, CommonDecl, Reaching, INCREMENTAL, MAP_RETRY};
 use super::grid_settings::GridSettings;
-use super::map_grid::{run_map, MapAsked};
+use super::hand::{hands_of, Hand};
+use super::map_grid::{map_report, MapAsked};
 use crate::error::ErrorKind;
-use crate::kinematics::Chain;
+use crate::kinematics::{Body, Chain};
 use crate::plugin::{
     Dependence, EffectorNeed, Options, ParamSpec, Params, Placement, Plugin, Registry, Settings,
     SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
 };
-use crate::report::TaskReport;
+use crate::report::{MapReport, TaskReport};
 
 /// The plugin `map`.
 pub struct Map;
 
-/// Its settings: the common ones, the grid's, and whether to find why
-/// each point not reached was not.
-struct MapSettings(Common, GridSettings, bool);
+/// Its settings: the common ones, the grid's, whether to find why each
+/// point not reached was not, and which hand reaches.
+struct MapSettings(Common, GridSettings, bool, Option<String>);
 
 impl Settings for MapSettings {
     fn visit(p: &mut Params<'_>) -> Self {
@@ -45,7 +46,7 @@ impl Settings for MapSettings {
                 "find why each point not reached was not, as a reach's why is found (searched again without what may have stopped it): each such point costs about as much as a reach that fails",
             )
             .get();
-        MapSettings(common, grid, why)
+        MapSettings(common, grid, why, Hand::option(p))
     }
 }
 
@@ -73,20 +74,25 @@ impl TaskPlugin for Map {
         options: &Options,
         plugins: &Registry,
     ) -> Result<Box<dyn Task>, SettingsError> {
-        let MapSettings(common, grid, why) = MapSettings::from_options(options)?;
+        let MapSettings(mut common, grid, why, hand) = MapSettings::from_options(options)?;
+        let either = Hand::resolve(hand.as_deref(), &mut common)?;
         Ok(Box::new(MapTask {
             reaching: Reaching::new(common, plugins)?,
             grid,
             why,
+            either,
         }))
     }
 }
 
-/// A configured map.
+/// A configured map: with the effector asked for alone, or `either`
+/// hand (its twin too, where the mannequin has one, over the points the
+/// first did not reach).
 struct MapTask {
     reaching: Reaching,
     grid: GridSettings,
     why: bool,
+    either: bool,
 }
 
 impl Task for MapTask {
@@ -106,6 +112,12 @@ impl Task for MapTask {
         self.reaching.starts_per_point(placements.without_rest())
     }
 
+    /// Either hand: a search with each (the second only where the first
+    /// did not reach, at most every point).
+    fn searches(&self, body: &Body, effectors: &[usize]) -> u64 {
+        effectors.first().map_or(1, |&asked| hands_of(body, asked, self.either).len() as u64)
+    }
+
     /// Its obstacles are asked about through `Reaching::obstacles` (and
     /// finding why marks those it ranks), its floor through its base.
     fn records_touches(&self) -> bool {
@@ -113,32 +125,57 @@ impl Task for MapTask {
     }
 
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
-        let chain = chain_of(input, 0);
-        let lift = hand_lift(&input.subject, &chain);
-        let points = self
-            .grid
-            .points_mm(&input.subject)
-            .into_iter()
-            .map(|p| p + lift)
-            .collect();
-        self.reaching.dependence(&chain, &[&chain], points, false)
+        let chains: Vec<Chain> = self.hands(input).map(|e| input.person.body.chain(e)).collect();
+        let all: Vec<&Chain> = chains.iter().collect();
+        let mut points = Vec::new();
+        for chain in &chains {
+            let lift = hand_lift(&input.subject, chain);
+            points.extend(self.grid.points_mm(&input.subject).into_iter().map(|p| p + lift));
+        }
+        self.reaching.dependence(&chains[0], &all, points, false)
     }
 
     fn run(&self, input: &TaskInput<'_>) -> TaskReport {
+        let Subject::Surface(surface) = input.subject else {
+            unreachable!("the checker gives a map a surface")
+        };
         let tolerance_mm = self.reaching.common.tolerance_mm;
-        let chain = chain_of(input, 0);
         let obstacles = self.reaching.obstacles(input);
         let judge = |placement: &Placement, _| placement.solution.reaches(tolerance_mm);
-        let asked = MapAsked {
-            reaching: &self.reaching,
-            grid: &self.grid,
-            chain: &chain,
-            obstacles: obstacles.as_ref(),
-            of: "reach",
-            lift_mm: hand_lift(&input.subject, &chain),
-            why: self.why,
-        };
-        run_map(input, &asked, &judge)
+        let mut report: Option<MapReport> = None;
+        for effector in self.hands(input) {
+            let chain = input.person.body.chain(effector);
+            // The other hand maps what the first did not reach.
+            let settled: Option<Vec<bool>> =
+                (report.as_ref()).map(|r| r.cells.iter().map(|c| c.reachable).collect());
+            let asked = MapAsked {
+                reaching: &self.reaching,
+                grid: &self.grid,
+                chain: &chain,
+                obstacles: obstacles.as_ref(),
+                of: "reach",
+                lift_mm: hand_lift(&input.subject, &chain),
+                why: self.why,
+                settled: settled.as_deref(),
+            };
+            let this = map_report(input, surface, &asked, &judge);
+            report = Some(match report {
+                None => this,
+                Some(first) => {
+                    first.with_other_hand(this)
+                }
+            });
+        }
+        TaskReport::Map(report.expect("a map has at least one hand"))
+    }
+}
+
+impl MapTask {
+    /// The effectors (indices into the person's body) this map reaches
+    /// with: the one asked for, and for `either` its twin.
+    fn hands<'i>(&self, input: &'i TaskInput<'_>) -> impl Iterator<Item = usize> + 'i {
+        let asked = input.effectors.first().copied().unwrap_or(0);
+        hands_of(&input.person.body, asked, self.either).into_iter()
     }
 }
 

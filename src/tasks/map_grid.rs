@@ -54,6 +54,9 @@ pub(super) struct MapAsked<'a> {
     /// Whether to find why each point not reached was not, as a reach's
     /// why is found (`why.rs`).
     pub why: bool,
+    /// The points already answered (by the other hand, for a map with
+    /// either hand), by index: left unsolved, and not grown into.
+    pub settled: Option<&'a [bool]>,
 }
 
 /// A map of the task's surface: each point's placement found as for a
@@ -135,7 +138,7 @@ struct GridRun<'a> {
 
 /// The map of `surface`: each point of its grid solved as `asked`,
 /// judged by `judge`.
-fn map_report(
+pub(super) fn map_report(
     input: &TaskInput<'_>,
     surface: &Surface,
     asked: &MapAsked<'_>,
@@ -171,10 +174,6 @@ fn map_report(
     if asked.why && !stopped() {
         run.find_why(&grid, &mut solved);
     }
-    let retried = solved
-        .iter()
-        .filter(|s| s.reached.as_ref().is_some_and(|r| r.placement.retried))
-        .count();
     let cells = solved.into_iter().map(|s| s.cell).collect();
     let reaching = asked.reaching;
     let mut report = MapReport::new(
@@ -187,7 +186,6 @@ fn map_report(
         cells,
     );
     report.of = asked.of;
-    report.retried = retried;
     report.effector = asked.chain.effector_name.clone();
     report.point = asked.chain.measured_to();
     report
@@ -216,6 +214,11 @@ impl<'a> GridRun<'a> {
                 // The run's descents, kept from point to point.
                 let descents = RefCell::new(Descents::default());
                 for cell in *run {
+                    if self.settled(cell.row * grid.columns + cell.column) {
+                        solved.push(self.unsolved(cell));
+                        self.input.progress.advance(1);
+                        continue;
+                    }
                     let neighbour = last
                         .filter(|_| self.asked.grid.neighbour_starts)
                         .and_then(|i| solved[i].reached.as_ref());
@@ -270,15 +273,7 @@ impl<'a> GridRun<'a> {
         };
         if self.input.allowance.exhausted() {
             // The run is thrown away: the point is left unsolved.
-            let placement = Placement {
-                pose: BasePose {
-                    position_mm: Point3::origin(),
-                    heading_rad: 0.0,
-                },
-                solution: IkSolution::unsolved(self.asked.chain),
-                retried: false,
-            };
-            return self.solved(cell, placement, query.target_room_mm);
+            return self.unsolved(cell);
         }
         let counts = |p: &Placement| (self.judge)(p, cell.point_mm);
         let on = neighbour
@@ -299,6 +294,25 @@ impl<'a> GridRun<'a> {
             point.blocked = blocked;
         }
         point
+    }
+
+    /// `cell`'s point left unsolved: settled already, or the run thrown
+    /// away.
+    fn unsolved(&self, cell: &GridCell) -> Solved {
+        let placement = Placement {
+            pose: BasePose {
+                position_mm: Point3::origin(),
+                heading_rad: 0.0,
+            },
+            solution: IkSolution::unsolved(self.asked.chain),
+            retried: false,
+        };
+        self.solved(cell, placement, cell.point_mm + self.asked.lift_mm)
+    }
+
+    /// Whether point `i` was answered before this map (by the other hand).
+    fn settled(&self, i: usize) -> bool {
+        self.asked.settled.is_some_and(|s| s[i])
     }
 
     fn solved(&self, cell: &GridCell, placement: Placement, point_mm: Point3<f64>) -> Solved {
@@ -341,7 +355,7 @@ impl<'a> GridRun<'a> {
     /// search finds a posture for after all is reached with it.
     fn find_why(&self, grid: &Grid, solved: &mut [Solved]) {
         let unreached: Vec<usize> = (0..solved.len())
-            .filter(|&i| solved[i].reached.is_none())
+            .filter(|&i| solved[i].reached.is_none() && !self.settled(i))
             .collect();
         self.input.progress.add_work(unreached.len() as u64);
         let found: Vec<(usize, Point3<f64>, Found)> = unreached
@@ -423,7 +437,7 @@ impl<'a> GridRun<'a> {
             let mut asked: Vec<usize> = fresh
                 .iter()
                 .flat_map(|&f| neighbours(grid, f).into_iter().flatten())
-                .filter(|&i| solved[i].reached.is_none())
+                .filter(|&i| solved[i].reached.is_none() && !self.settled(i))
                 .collect();
             asked.sort_unstable();
             asked.dedup();
@@ -473,6 +487,7 @@ impl<'a> GridRun<'a> {
         loop {
             let in_gap = gaps(grid, solved);
             let holes: Vec<(usize, bool)> = (0..solved.len())
+                .filter(|&i| !self.settled(i))
                 .filter_map(|i| {
                     let harder = !searched[i] && (in_gap[i] || at_board_edge(grid, solved, i));
                     let steer = !steered[i] && at_body_edge(grid, solved, i);

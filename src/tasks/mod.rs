@@ -6,6 +6,7 @@ mod common;
 mod gaze;
 mod gaze_map;
 mod grid_settings;
+mod hand;
 mod map;
 mod map_grid;
 mod reach;

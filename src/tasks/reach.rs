@@ -1,5 +1,6 @@
 //! The `reach` task: can this person bring their hand to this target?
 
+use super::hand::{hands_of, Hand};
 use super::common::{
     mix_seed, Common, CommonDecl, Reaching, INCREMENTAL, THOROUGH_RETRY,
 };
@@ -37,52 +38,8 @@ impl Settings for ReachSettings {
                     retry: THOROUGH_RETRY,
                 },
             ),
-            hand: p
-                .optional_name(
-                    "hand",
-                    "`either` (the effector and its twin on the other hand, `left_` and its name, where the mannequin has both: the hand that reaches, the more comfortable where both do; the default where no effector is named), `right` or `left`",
-                )
-                .get(),
+            hand: Hand::option(p),
         }
-    }
-}
-
-/// Which hand a reach uses.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Hand {
-    /// The effector asked for and its twin on the other hand, where the
-    /// mannequin has one.
-    Either,
-    /// The effector asked for, on the right hand (its name without
-    /// `left_`).
-    Right,
-    /// Its twin on the left hand (`left_` and its name).
-    Left,
-}
-
-impl Hand {
-    fn parse(word: &str) -> Result<Self, SettingsError> {
-        match word {
-            "either" => Ok(Hand::Either),
-            "right" => Ok(Hand::Right),
-            "left" => Ok(Hand::Left),
-            other => Err(SettingsError::invalid(
-                "hand",
-                format!("`{other}` is not a hand: use `either`, `right` or `left`"),
-            )),
-        }
-    }
-}
-
-/// The prefix that names an effector of the left hand: `left_grip` is the
-/// twin of `grip`.
-const LEFT: &str = "left_";
-
-/// The name of the twin of effector `name` on the other hand.
-fn twin_name(name: &str) -> String {
-    match name.strip_prefix(LEFT) {
-        Some(right) => right.to_string(),
-        None => format!("{LEFT}{name}"),
     }
 }
 
@@ -111,23 +68,10 @@ impl TaskPlugin for Reach {
         plugins: &Registry,
     ) -> Result<Box<dyn Task>, SettingsError> {
         let ReachSettings { mut common, hand } = ReachSettings::from_options(options)?;
-        let hand = match hand {
-            Some(word) => Some(Hand::parse(&word)?),
-            // An effector named is the one asked for.
-            None => common.effector.is_none().then_some(Hand::Either),
-        };
-        // A hand named: the effector on that hand, which the checker finds
-        // (the mannequin's `grip` where no effector is named).
-        let named = common.effector.clone().unwrap_or_else(|| "grip".into());
-        let on_right = named.strip_prefix(LEFT).unwrap_or(&named).to_string();
-        match hand {
-            None | Some(Hand::Either) => {}
-            Some(Hand::Right) => common.effector = Some(on_right),
-            Some(Hand::Left) => common.effector = Some(format!("{LEFT}{on_right}")),
-        }
+        let either = Hand::resolve(hand.as_deref(), &mut common)?;
         Ok(Box::new(ReachTask {
             reaching: Reaching::new(common, plugins)?,
-            either: hand == Some(Hand::Either),
+            either,
         }))
     }
 }
@@ -207,15 +151,10 @@ fn better(a: &ReachReport, b: &ReachReport) -> bool {
 }
 
 impl ReachTask {
-    /// The effectors (indices into `body`) this reach tries: `asked`, the
-    /// one the checker resolved, and for `either` its twin on the other
-    /// hand where the body has one.
+    /// The effectors (indices into `body`) this reach tries: `asked`, and
+    /// for `either` its twin.
     fn hands_of(&self, body: &Body, asked: usize) -> Vec<usize> {
-        let twin = self
-            .either
-            .then(|| body.effector_index(&twin_name(&body.effectors[asked].name)))
-            .flatten();
-        std::iter::once(asked).chain(twin).collect()
+        hands_of(body, asked, self.either)
     }
 
     /// The reach of `target` with effector `effector`, kept out of

@@ -1,0 +1,84 @@
+//! Which hand a reach or a map uses: the effector asked for, its twin on
+//! the other hand (`left_` and its name), or either, the default where
+//! the task names no effector.
+
+use super::common::Common;
+use crate::kinematics::{Body, LEFT_PREFIX as LEFT};
+use crate::plugin::{Params, SettingsError};
+
+/// The option `hand`'s documentation.
+pub const HAND_DOC: &str = "`either` (the effector and its twin on the other hand, `left_` and its name, where the mannequin has both: the hand that reaches, the more comfortable where both do; the default where no effector is named), `right` or `left`";
+
+/// Which hand a task uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Hand {
+    /// The effector asked for and its twin on the other hand, where the
+    /// mannequin has one.
+    Either,
+    /// The effector asked for, on the right hand (its name without
+    /// `left_`).
+    Right,
+    /// Its twin on the left hand (`left_` and its name).
+    Left,
+}
+
+impl Hand {
+    fn parse(word: &str) -> Result<Self, SettingsError> {
+        match word {
+            "either" => Ok(Hand::Either),
+            "right" => Ok(Hand::Right),
+            "left" => Ok(Hand::Left),
+            other => Err(SettingsError::invalid(
+                "hand",
+                format!("`{other}` is not a hand: use `either`, `right` or `left`"),
+            )),
+        }
+    }
+
+    /// The option `hand`, read by a task's settings.
+    pub fn option(p: &mut Params<'_>) -> Option<String> {
+        p.optional_name("hand", HAND_DOC).get()
+    }
+
+    /// The hand `word` asks for (none: either where `common` names no
+    /// effector, else the one it names), with `common`'s effector set to
+    /// that hand's; whether the task reaches with either hand.
+    pub fn resolve(word: Option<&str>, common: &mut Common) -> Result<bool, SettingsError> {
+        let hand = match word {
+            Some(word) => Some(Hand::parse(word)?),
+            // An effector named is the one asked for.
+            None => common.effector.is_none().then_some(Hand::Either),
+        };
+        // A hand named: the effector on that hand, which the checker finds
+        // (the mannequin's `grip` where no effector is named).
+        let named = common.effector.clone().unwrap_or_else(|| "grip".into());
+        let on_right = named.strip_prefix(LEFT).unwrap_or(&named).to_string();
+        match hand {
+            None | Some(Hand::Either) => {}
+            Some(Hand::Right) => common.effector = Some(on_right),
+            Some(Hand::Left) => common.effector = Some(format!("{LEFT}{on_right}")),
+        }
+        Ok(hand == Some(Hand::Either))
+    }
+}
+
+/// The effectors (indices into `body`) a task tries: `asked`, the one the
+/// checker resolved, and with `either` its twin on the other hand where
+/// the body has one.
+pub fn hands_of(body: &Body, asked: usize, either: bool) -> Vec<usize> {
+    let twin = either.then(|| body.twin_of(asked)).flatten();
+    std::iter::once(asked).chain(twin).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::kinematics::{hand_side, twin_name};
+
+    #[test]
+    fn the_twin_of_an_effector_is_on_the_other_hand() {
+        assert_eq!(twin_name("grip"), "left_grip");
+        assert_eq!(twin_name("left_grip"), "grip");
+        assert_eq!(hand_side("left_grip"), "left");
+        assert_eq!(hand_side("grip"), "right");
+    }
+}
