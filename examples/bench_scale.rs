@@ -9,7 +9,8 @@
 //! between the two largest sizes of each kind.
 //!
 //! `cargo run --release --example bench_scale` (all rows), or with a kind
-//! (`boxes`, `mesh`, `map`, `doors`) to run only those.
+//! (`boxes`, `mesh`, `map`, `doors`) to run only those; `--tiny` makes
+//! each size a hundredth (CI runs it so, to see every row run).
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -33,7 +34,9 @@ fn main() {
         child(Path::new(&args[2]));
         return;
     }
-    let only = args.get(1).cloned();
+    // `--tiny`: each size a hundredth, to see that every row runs.
+    let tiny = args.iter().any(|a| a == "--tiny");
+    let only = args.iter().skip(1).find(|a| *a != "--tiny").cloned();
     println!("| work | size | time (s) | peak memory (MiB) |\n|---|---|---|---|");
     for (kind, sizes) in ROWS {
         if only.as_deref().is_some_and(|o| o != kind) {
@@ -41,6 +44,7 @@ fn main() {
         }
         let mut figures = Vec::new();
         for size in sizes {
+            let size = if tiny { (size / 100).max(2) } else { size };
             let dir = tempfile::tempdir().expect("a temporary directory");
             let path = write_room(kind, size, dir.path());
             let out = Command::new(&args[0])
@@ -48,6 +52,11 @@ fn main() {
                 .arg(&path)
                 .output()
                 .expect("the child runs");
+            assert!(
+                out.status.success(),
+                "the run of {kind} at {size} failed: {}",
+                String::from_utf8_lossy(&out.stderr)
+            );
             let text = String::from_utf8_lossy(&out.stdout);
             let mut it = text
                 .split_whitespace()

@@ -33,8 +33,16 @@ fn body() -> Body {
     body
 }
 
-/// A room holding the body's base at its origin, with a board in front of
-/// the chest when `board`.
+/// Where the body's base stands in the room: its middle, far from the
+/// floor (an obstacle), the walls and the ceiling.
+const BASE_MM: [f64; 3] = [5e4, 5e4, 5e4];
+
+/// The most random postures drawn for each target pair asked: a bench
+/// whose postures all hit something stops with a message, not a hang.
+const TRIES_PER_TARGET: usize = 10_000;
+
+/// A room holding the body's base at [`BASE_MM`], with a board in front
+/// of the chest when `board`.
 fn room(board: bool) -> Room {
     Room {
         name: "bench".into(),
@@ -42,7 +50,7 @@ fn room(board: bool) -> Room {
         boxes: board
             .then(|| BoxObstacle {
                 name: "board".into(),
-                corner_mm: Point3::new(250.0, -400.0, 300.0),
+                corner_mm: Point3::from(BASE_MM) + Vector3::new(250.0, -400.0, 300.0),
                 size_mm: Vector3::new(300.0, 800.0, 20.0),
                 yaw_rad: 0.0,
             })
@@ -69,7 +77,10 @@ fn targets(body: &Body, placed: Option<&PlacedObstacles<'_>>, n: usize) -> Vec<[
     let paths = [0, 1].map(|e| body.path(body.effectors[e].joint));
     let mut rng = ChaCha8Rng::seed_from_u64(SEED);
     let mut out = Vec::with_capacity(n);
-    while out.len() < n {
+    for _ in 0..n * TRIES_PER_TARGET {
+        if out.len() == n {
+            break;
+        }
         let mut q = vec![0.0; body.joints.len()];
         for (&j, v) in used.iter().zip(random_posture(&whole, &mut rng)) {
             q[j] = v;
@@ -83,6 +94,11 @@ fn targets(body: &Body, placed: Option<&PlacedObstacles<'_>>, n: usize) -> Vec<[
             out.push([0, 1].map(|e| chains[e].effector(&qs[e])));
         }
     }
+    assert_eq!(
+        out.len(),
+        n,
+        "{TRIES_PER_TARGET} random postures per target and still too few miss the room and the body"
+    );
     out
 }
 
@@ -109,7 +125,7 @@ pub fn rows(solves: usize) -> Vec<Row> {
             obstacles: &obstacles,
             own: &own,
             base_pose: BasePose {
-                position_mm: Point3::origin(),
+                position_mm: Point3::from(BASE_MM),
                 heading_rad: 0.0,
             },
         });
