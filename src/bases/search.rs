@@ -188,10 +188,23 @@ fn try_candidate(
             q: solution.q.clone(),
         });
     }
-    let comfort = chain.discomfort(&placement.solution.q);
-    tried.best.offer(placement, comfort);
+    let rank = rank(query, chain, &placement);
+    tried.best.offer(placement, rank);
     tried.best.reaches() && query.search == Search::FirstReaching
 }
+
+/// How a placement that reaches ranks among those that do (lower is
+/// better): its discomfort, and [`BEHIND_RANK`] more where the target is
+/// behind the person, so that a posture reaching back behind the hips is
+/// kept only where no placement facing the target reaches it.
+fn rank(query: &ReachQuery<'_>, chain: &Chain, placement: &Placement) -> f64 {
+    let behind = placement.pose.has_behind(&query.target_room_mm);
+    chain.discomfort(&placement.solution.q) + if behind { BEHIND_RANK } else { 0.0 }
+}
+
+/// Far more than any posture's discomfort (a sum of squared, weighted
+/// distances from neutral: tens at the joints' ends).
+const BEHIND_RANK: f64 = 1e6;
 
 /// The first of up to `draws` starts that is clear of obstacles and of
 /// the person's own body (a solver that steers clear stays clear from it),
@@ -253,8 +266,8 @@ fn retry_blocked(
                 continue;
             }
             tried.retried = true;
-            let comfort = chain.discomfort(&tried.solution.q);
-            best.offer(tried, comfort);
+            let rank = rank(query, chain, &tried);
+            best.offer(tried, rank);
             if query.search == Search::FirstReaching {
                 return;
             }

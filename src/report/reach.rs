@@ -49,6 +49,11 @@ pub struct ReachReport {
     /// body and the joints' limits, each alone enough; or out of reach);
     /// empty when it was reached.
     pub why: Vec<Why>,
+    /// Reached with the target behind the person (more than 110 degrees
+    /// round from the way the base faces): the search keeps such a
+    /// posture only where no placement facing the target reached it.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub behind: bool,
 }
 
 impl ReachReport {
@@ -75,12 +80,15 @@ impl ReachReport {
             effector_mm: point(effector_room),
             target_mm: point(target),
             why: Vec::new(),
+            behind: placement.solution.reaches(asked.tolerance_mm)
+                && placement.pose.has_behind(&target),
         }
     }
 
     /// `reachable` or `NOT reachable`.
     pub fn verdict(&self) -> String {
         match (self.why.as_slice(), self.ok) {
+            (_, true) if self.behind => "reachable, only facing away".into(),
             (_, true) => "reachable".into(),
             ([], false) => "NOT reachable".into(),
             (why, false) => {
@@ -126,6 +134,12 @@ impl ReportKind for ReachReport {
             self.base.write_line(out, what);
             self.posture.write_line(out);
             let _ = writeln!(out, "  distance to {} (`{}`)", self.point, self.effector);
+            if self.behind {
+                let _ = writeln!(
+                    out,
+                    "  the target is behind the person (more than 110 deg round from the way the base faces): no placement facing it reached it"
+                );
+            }
         } else {
             // No place to approach the target from: no base was placed and
             // no posture looked for.

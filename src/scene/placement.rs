@@ -38,7 +38,25 @@ impl BasePose {
     pub fn to_room(&self, base_point: &Point3<f64>) -> Point3<f64> {
         self.position_mm + self.direction_to_room(&base_point.coords)
     }
+
+    /// Whether `target_room_mm` lies behind the person standing or sitting
+    /// here: more than [`BEHIND_BEARING_DEG`] from the way the base faces,
+    /// and more than [`BEHIND_MIN_MM`] from its vertical (a point above
+    /// the hips is no more behind than in front).
+    pub fn has_behind(&self, target_room_mm: &Point3<f64>) -> bool {
+        let along = self.to_base(target_room_mm).coords.xy();
+        along.norm() > BEHIND_MIN_MM && along.y.atan2(along.x).abs() > BEHIND_BEARING_DEG.to_radians()
+    }
 }
+
+/// How far round from the way the base faces a target is behind the
+/// person: past a side approach (90 degrees, the target beside the hip)
+/// by what turning the trunk and reaching back a little covers.
+pub const BEHIND_BEARING_DEG: f64 = 110.0;
+
+/// How far out from the base's vertical a target must be for its bearing
+/// to count (the base's origin is the hips' point).
+pub const BEHIND_MIN_MM: f64 = 150.0;
 
 /// How finely a target in the base frame is told apart when it seeds a
 /// solve: a thousandth of a millimetre, far above the rounding a rigid
