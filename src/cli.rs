@@ -200,6 +200,10 @@ struct LimitArgs {
     /// Most joints in one mannequin (declared, or a URDF's chain)
     #[arg(long, value_name = "N", default_value_t = DEFAULTS.joints as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.joints as u64))]
     max_joints: u64,
+    /// How many times --max-solver-starts and --max-solver-work a scenario
+    /// may raise its own bounds to (`limits { ... }` in the file)
+    #[arg(long, value_name = "TIMES", default_value_t = DEFAULTS.raise, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.raise))]
+    max_limits_raise: u64,
     /// Also read used files, meshes and URDFs from DIR (by default only
     /// from the scenario's own directory and below); may be repeated
     #[arg(long, value_name = "DIR")]
@@ -222,6 +226,7 @@ impl LimitArgs {
             people: self.max_people as usize,
             triangles: self.max_triangles as usize,
             joints: self.max_joints as usize,
+            raise: self.max_limits_raise,
         }
     }
 }

@@ -143,6 +143,18 @@ pub enum ErrorKind {
         thousands(*.limit)
     )]
     TooMuchWork { limit: u64 },
+    #[error(
+        "`limits` raises {name} to {}, above the {} this run lets a file raise it to",
+        thousands(*.asked),
+        thousands(*.ceiling)
+    )]
+    AboveCeiling {
+        name: &'static str,
+        asked: u64,
+        ceiling: u64,
+        /// The command line's option for this bound (`--max-solver-work`).
+        flag: &'static str,
+    },
     #[error("the mannequin `{mannequin}` passes through itself at rest: {part} meets {other}")]
     MeetsItself {
         mannequin: String,
@@ -241,6 +253,7 @@ impl ErrorKind {
             Illegible { .. } => "reach::range",
             NoEffector { .. } => "reach::name",
             TooLarge { .. } | TooManyStarts { .. } | TooMuchWork { .. } => "reach::limit",
+            AboveCeiling { .. } => "reach::limit",
             BaseOutsideRoom { .. } => "reach::scene",
             UnknownPlugin { .. }
             | UnknownOption { .. }
@@ -295,6 +308,7 @@ impl ErrorKind {
                 format!("these tasks: up to {} starts", thousands(*decl_starts))
             }
             TooMuchWork { .. } => "the tasks that may ask the most".into(),
+            AboveCeiling { .. } => "above the ceiling".into(),
             BaseOutsideRoom { .. } => "cannot be placed for this task".into(),
             Misplaced { .. } => "in a used file".into(),
             Illegible { .. } => "for this size".into(),
@@ -373,12 +387,15 @@ impl ErrorKind {
                 None => "ask for less; the limits are in docs/language.md, \"Limits\"".into(),
             }),
             TooManyStarts { .. } => Some(
-                "ask less (a coarser `step`, fewer `starts`, `headings` or `blocked_retries`), or raise --max-solver-starts".into(),
+                "ask less (a coarser `step`, fewer `starts`, `headings` or `blocked_retries`), or raise the bound: `limits { solver_starts N }` in the file (up to --max-limits-raise times the command line's), or --max-solver-starts".into(),
             ),
             TooMuchWork { .. } => Some(
-                "ask less (a coarser `step`; fewer `starts`, `blocked_retries` or iterations: `max_iterations`, `sweeps`, `samples`, `kicks`; in a room with doors, whose routes count too, or one so crowded that the base fits only far from where it is asked to, whose floor counts too: fewer people or `headings`), or raise --max-solver-work; no answer of this run is shown, since some were cut short".into(),
+                "ask less (a coarser `step`; fewer `starts`, `blocked_retries` or iterations: `max_iterations`, `sweeps`, `samples`, `kicks`; in a room with doors, whose routes count too, or one so crowded that the base fits only far from where it is asked to, whose floor counts too: fewer people or `headings`), or raise the bound: `limits { solver_work N }` in the file (up to --max-limits-raise times the command line's), or --max-solver-work; no answer of this run is shown, since some were cut short".into(),
             ),
             BaseOutsideRoom { .. } => Some("a fixed base must stand inside the room: check its `at`".into()),
+            AboveCeiling { asked, flag, .. } => Some(format!(
+                "a file may raise a bound at most --max-limits-raise times (10 by default) the command line's: run it with {flag} {asked}, or with a larger --max-limits-raise, if you trust it to run that long"
+            )),
             Misplaced { .. } => Some("move it to the file you run, which can `use` this one".into()),
             Illegible { .. } => Some(
                 "D_max = size / (5 tan mar_far); the nearest is `near_point`, or size / (5 tan mar_near) when `mar_near` is given: raise the size or lower `near_point`".into(),

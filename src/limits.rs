@@ -50,6 +50,10 @@ pub struct Limits {
     /// of a URDF from root to tip (each posture check pairs a chain's
     /// solids with each other: quadratic in the joints).
     pub joints: usize,
+    /// How many times these bounds a scenario may raise its own bounds on
+    /// solver starts and work to (`limits { ... }` in the file it runs):
+    /// a file from elsewhere runs for hours only where the user says so.
+    pub raise: u64,
 }
 
 /// The limits unless told otherwise: far beyond any real scenario.
@@ -67,6 +71,7 @@ pub const DEFAULTS: Limits = Limits {
     people: 10_000,
     triangles: 2_000_000,
     joints: 2_000,
+    raise: 10,
 };
 
 impl Default for Limits {
@@ -93,4 +98,5 @@ pub const CEILINGS: Limits = Limits {
     people: 1_000_000,
     triangles: 50_000_000,
     joints: 100_000,
+    raise: 1_000_000,
 };

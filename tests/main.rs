@@ -21,6 +21,7 @@ mod hostile;
 mod independent;
 mod invariance;
 mod layers;
+mod limits;
 mod meshes;
 mod parser;
 mod placement;

@@ -125,6 +125,7 @@ fn declarations() {
         profile stiff { limits elbow (0deg, 10deg) }
         base big_chair = wheelchair { seat_height 50 }
         vision blurry { mar_far 2arcmin }
+        limits { solver_work 2e9 }
         "#,
     );
     let kinds: Vec<&str> = file
@@ -142,6 +143,7 @@ fn declarations() {
             Item::Person(_) => "person",
             Item::Population(_) => "population",
             Item::Standard(_) => "standard",
+            Item::Limits(_) => "limits",
             Item::Expect(_) => "expect",
             Item::Task(_) => "task",
         })
@@ -159,7 +161,8 @@ fn declarations() {
             "mannequin",
             "profile",
             "base preset",
-            "vision"
+            "vision",
+            "limits"
         ]
     );
     let Item::Mannequin(alias) = &file.items[7] else {

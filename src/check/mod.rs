@@ -8,6 +8,7 @@ mod budget;
 mod eval;
 mod expect;
 mod legs;
+mod limits;
 mod mannequin;
 mod mesh;
 mod options;
@@ -53,6 +54,7 @@ pub fn check(
         c.collect(f, f.id == root);
     }
     c.evaluate_lets();
+    c.file_limits();
     let rooms = c.rooms();
     c.build_mannequins();
     let (mut persons, mut bases): (Vec<_>, Vec<_>) = c.persons().into_iter().unzip();
@@ -137,6 +139,7 @@ struct Declarations<'a> {
     populations: Table<'a, crate::syntax::ast::PopulationDecl>,
     tasks: Vec<(&'a crate::syntax::ast::TaskDecl, FileId)>,
     standards: Vec<(&'a crate::syntax::ast::StandardDecl, FileId)>,
+    limits: Vec<(&'a crate::syntax::ast::LimitsDecl, FileId)>,
     expects: Vec<(&'a crate::syntax::ast::ExpectDecl, FileId)>,
 }
 
@@ -198,6 +201,7 @@ impl<'a> Checker<'a> {
                 populations: Table::new("population"),
                 tasks: Vec::new(),
                 standards: Vec::new(),
+                limits: Vec::new(),
                 expects: Vec::new(),
             },
             built: Built::default(),
@@ -292,6 +296,11 @@ impl<'a> Checker<'a> {
                     ErrorKind::Misplaced { what: "standards" },
                     d.span,
                 )),
+                Item::Limits(d) if is_root => {
+                    self.decls.limits.push((d, f.id));
+                    None
+                }
+                Item::Limits(d) => Some(Error::new(ErrorKind::Misplaced { what: "limits" }, d.span)),
                 Item::Expect(d) if is_root => {
                     self.decls.expects.push((d, f.id));
                     None

@@ -23,6 +23,7 @@ pub enum Item {
     Person(PersonDecl),
     Population(Box<PopulationDecl>),
     Standard(StandardDecl),
+    Limits(LimitsDecl),
     Expect(ExpectDecl),
     Task(TaskDecl),
 }
@@ -110,6 +111,13 @@ impl Comparison {
             Comparison::Below => "<",
         }
     }
+}
+
+/// `limits { solver_work 2e9 }`: the scenario's own bounds on its run.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LimitsDecl {
+    pub options: Vec<OptionDecl>,
+    pub span: Span,
 }
 
 /// `standard ada2010 in kitchen { options }`: a building standard's rules

@@ -32,6 +32,7 @@ fn describe(rule: Rule) -> Option<&'static str> {
         use_decl => "`use`",
         std_path => "`std::name` or a \"file.reach\" path",
         let_decl => "`let`",
+        limits_decl => "`limits`",
         room => "`room`",
         room_size | size_dims => "`size`",
         box_decl => "`box`",
@@ -181,8 +182,9 @@ fn is_visible_token(token: &str) -> bool {
 /// Where any top-level item may start, name one alternative for all of
 /// them rather than listing every keyword.
 fn collapse_item_starts(expected: &mut Vec<String>) {
-    const STARTS: [&str; 13] = [
+    const STARTS: [&str; 14] = [
         "`let`",
+        "`limits`",
         "`room`",
         "`mannequin`",
         "`profile`",

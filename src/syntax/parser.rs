@@ -162,6 +162,11 @@ impl Builder {
             Rule::population => Item::Population(Box::new(self.population(pair))),
             Rule::task => Item::Task(self.task(pair)),
             Rule::standard => Item::Standard(self.standard(pair)),
+            Rule::limits_decl => {
+                let span = self.span(&pair);
+                let options = self.options(pair.into_inner().next().unwrap());
+                Item::Limits(LimitsDecl { options, span })
+            }
             Rule::expect => Item::Expect(self.expect(pair)),
             r => unreachable!("item rule {r:?}"),
         }
