@@ -70,7 +70,14 @@ enum Command {
         reporting: Reporting,
     },
     /// Evaluate a scenario, then again whenever it or a file it uses changes.
-    Watch(Evaluate),
+    Watch {
+        #[command(flatten)]
+        evaluate: Evaluate,
+        /// Print only the summary of each evaluation (what changed, the
+        /// expectations not met) and diagnostics, not the report
+        #[arg(short, long)]
+        quiet: bool,
+    },
     /// Parse and check a scenario without running it.
     Check {
         /// The .reach scenario file.
@@ -240,7 +247,7 @@ pub fn main() -> i32 {
             evaluate,
             reporting,
         } => run(&registry, &evaluate, &Shown::new(&reporting, colour)),
-        Command::Watch(e) => {
+        Command::Watch { evaluate: e, quiet } => {
             let Some(formatter) = registry.format(&e.format).cloned() else {
                 return unknown_format(&registry, &e.format);
             };
@@ -256,6 +263,7 @@ pub fn main() -> i32 {
                 (
                     e.out.as_deref(),
                     colours(colour, std::io::stdout().is_terminal()),
+                    quiet,
                 ),
             )
         }

@@ -3,9 +3,11 @@
 //! that saving by rename or by delete-and-create is seen like writing in
 //! place; a burst of events is one change once it has been quiet for a
 //! moment. On a terminal each evaluation replaces the screen; piped, each
-//! is printed in full after a separator line. Every evaluation ends with a
-//! summary: the time it took and which results changed since the last good
-//! evaluation. A change that leaves the files the last evaluation read as
+//! is printed in full after a separator line. A save is said at once, with
+//! the files that changed; a long run draws a progress bar on a terminal.
+//! Every evaluation ends with a summary: the time it took, the tasks run
+//! again, and last, each result that changed since the last good
+//! evaluation (`-q`: the summary alone, and diagnostics). A change that leaves the files the last evaluation read as
 //! they were, byte for byte, is not evaluated again.
 
 use std::collections::BTreeSet;
@@ -34,7 +36,7 @@ pub fn watch(
     (limits, also_allowed): (&Limits, &[PathBuf]),
     file: &Path,
     formatter: &dyn FormatPlugin,
-    (out, colour): (Option<&Path>, bool),
+    (out, colour, quiet): (Option<&Path>, bool, bool),
 ) -> i32 {
     let (tx, rx) = channel();
     let mut watcher = match notify::recommended_watcher(tx) {
@@ -48,6 +50,7 @@ pub fn watch(
     let mut state = State {
         terminal: std::io::stdout().is_terminal(),
         colour,
+        quiet,
         limits: *limits,
         also_allowed: also_allowed.to_vec(),
         cache: TaskCache::default(),
@@ -65,6 +68,7 @@ pub fn watch(
         // this one reads them: a change made meanwhile is seen next time.
         let read_before = state.watched_files.clone();
         let bytes = fingerprint(&read_before, state.limits.file_bytes);
+        let each_file = fingerprints(&read_before, state.limits.file_bytes);
         let (files, screen) = state.evaluate(registry, file, formatter, out);
         state.rewatch(&mut watcher, &root, files.clone());
         state.show(&screen);
@@ -85,6 +89,8 @@ pub fn watch(
             let unchanged =
                 |bytes| bytes == fingerprint(&state.watched_files, state.limits.file_bytes);
             if !shown.is_some_and(unchanged) {
+                let max_bytes = state.limits.file_bytes;
+                state.announce(&changed_files(&read_before, &each_file, max_bytes));
                 break;
             }
         }
@@ -107,10 +113,42 @@ fn fingerprint(files: &BTreeSet<PathBuf>, max_bytes: u64) -> u64 {
     h.finish()
 }
 
+/// Each of `files` and the hash of what reading it gives ([`fingerprint`]).
+fn fingerprints(files: &BTreeSet<PathBuf>, max_bytes: u64) -> Vec<(PathBuf, u64)> {
+    files
+        .iter()
+        .map(|f| {
+            (
+                f.clone(),
+                fingerprint(&BTreeSet::from([f.clone()]), max_bytes),
+            )
+        })
+        .collect()
+}
+
+/// The names of the files of `files` whose bytes are no longer those
+/// `before` holds (a file new since: all of them).
+fn changed_files(
+    files: &BTreeSet<PathBuf>,
+    before: &[(PathBuf, u64)],
+    max_bytes: u64,
+) -> Vec<String> {
+    let now = fingerprints(files, max_bytes);
+    let mut names: Vec<String> = now
+        .iter()
+        .filter(|(f, h)| !before.iter().any(|(g, k)| g == f && k == h))
+        .filter_map(|(f, _)| f.file_name().map(|n| n.to_string_lossy().into_owned()))
+        .collect();
+    names.dedup();
+    names
+}
+
 struct State {
     terminal: bool,
     /// Whether diagnostics are coloured (`--color`, NO_COLOR).
     colour: bool,
+    /// `-q`: show only what changed, diagnostics and expectations not met.
+    quiet: bool,
     limits: Limits,
     also_allowed: Vec<PathBuf>,
     cache: TaskCache,
@@ -137,16 +175,19 @@ impl State {
         let (sources, checked) = session.check(Input::Path(file), registry);
         let mut screen = String::new();
         // A run past the bound on solver work is an error like the others.
-        let ran = checked.and_then(|scenario| {
-            match self.cache.run(&scenario, &reach::progress::NoProgress) {
-                Ok(ran) => Ok((scenario, ran)),
-                Err(e) => Err(reach::Diagnostics::single(e).attach(&sources)),
-            }
+        // A bar on the terminal for a run that takes more than a second.
+        let bar = crate::bar::Bar::new(!self.quiet);
+        let ran = checked.and_then(|scenario| match self.cache.run(&scenario, &bar) {
+            Ok(ran) => Ok((scenario, ran)),
+            Err(e) => Err(reach::Diagnostics::single(e).attach(&sources)),
         });
+        bar.clear();
         let summary = match ran {
             Ok((scenario, (report, stats))) => {
-                let text = formatter.render(&report, &scenario.format_scene());
-                screen.push_str(&text.unwrap_or_default());
+                if !self.quiet {
+                    let text = formatter.render(&report, &scenario.format_scene());
+                    screen.push_str(&text.unwrap_or_default());
+                }
                 if let Some(dir) = out {
                     let written = crate::signals::whole(|| {
                         reach::output::write_outputs(&report, &scenario, registry.formats(), dir)
@@ -155,17 +196,17 @@ impl State {
                         screen.push_str(&reach::Diagnostics::single(e).render(!self.colour));
                     }
                 }
-                let changes = changes(self.last_good.as_ref(), &report);
+                let (changed, listed) = changes(self.last_good.as_ref(), &report);
                 let expected = expectations(&report);
+                let rerun = rerun(&report, &stats.ran_tasks);
                 self.last_good = Some(report);
                 let plural = |n: usize| if n == 1 { "" } else { "s" };
                 format!(
-                    "evaluated in {} ms ({} task{} run, {} unchanged); {}{expected}",
+                    "evaluated in {} ms ({} task{} run, {} unchanged); {changed}{expected}{rerun}{listed}",
                     started.elapsed().as_millis(),
                     stats.ran,
                     plural(stats.ran),
                     stats.reused,
-                    changes
                 )
             }
             Err(d) => {
@@ -178,6 +219,19 @@ impl State {
         };
         screen.push_str(&format!("\n{summary}\n"));
         (sources.disk_paths(), screen)
+    }
+
+    /// Say at once that a save is being evaluated, and which files
+    /// changed: the screen keeps the last results until the new ones are
+    /// shown (a terminal), or the line comes before them (a pipe).
+    fn announce(&self, changed: &[String]) {
+        let what = match changed {
+            [] => "a file it uses was saved".to_string(),
+            names => format!("{} changed", names.join(", ")),
+        };
+        let mut stdout = std::io::stdout().lock();
+        let _ = writeln!(stdout, "--- {what}: evaluating ...");
+        let _ = stdout.flush();
     }
 
     /// Replace the screen (terminal) or append after a separator (pipe).
@@ -307,12 +361,34 @@ fn expectations(report: &Report) -> String {
     }
 }
 
-/// Which answers changed since `before`: "mug by ann: reachable -> NOT
-/// reachable", new and removed tasks too. Answers compare by their
-/// verdict in words.
-fn changes(before: Option<&Report>, now: &Report) -> String {
+/// The tasks run again rather than kept (by position in `report`), as
+/// "; run again: mug by ann, ..." (at most [`RERUN_NAMED`] named), or
+/// nothing where none or every one was.
+fn rerun(report: &Report, ran: &[usize]) -> String {
+    let tasks = &report.tasks;
+    if ran.is_empty() || ran.len() == tasks.len() {
+        return String::new();
+    }
+    let mut names: Vec<String> = (ran.iter().filter_map(|&i| tasks.get(i)))
+        .map(|t| t.answer().label())
+        .take(RERUN_NAMED)
+        .collect();
+    if ran.len() > RERUN_NAMED {
+        names.push(format!("and {} more", ran.len() - RERUN_NAMED));
+    }
+    format!("; run again: {}", names.join(", "))
+}
+
+/// The most tasks run again the summary names.
+const RERUN_NAMED: usize = 6;
+
+/// Which answers changed since `before`, in a few words ("2 results
+/// changed", "no result changed", "first results"), and listed, a line
+/// each after the summary ("mug by ann: reachable -> NOT reachable"), new
+/// and removed tasks too. Answers compare by their verdict in words.
+fn changes(before: Option<&Report>, now: &Report) -> (String, String) {
     let Some(before) = before else {
-        return "first results".to_string();
+        return ("first results".to_string(), String::new());
     };
     let (before, now) = (before.answers(), now.answers());
     let key = |a: &Answer| (a.task, a.subject.clone(), a.person.clone());
@@ -331,9 +407,11 @@ fn changes(before: Option<&Report>, now: &Report) -> String {
             lines.push(format!("{}: removed", b.label()));
         }
     }
-    if lines.is_empty() {
-        "no result changed".to_string()
-    } else {
-        format!("changed: {}", lines.join("; "))
+    match lines.len() {
+        0 => ("no result changed".to_string(), String::new()),
+        n => (
+            format!("{n} result{} changed", if n == 1 { "" } else { "s" }),
+            lines.iter().map(|l| format!("\n  changed: {l}")).collect(),
+        ),
     }
 }

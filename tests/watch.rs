@@ -305,3 +305,52 @@ fn watch_does_not_evaluate_again_what_a_save_left_unchanged() {
     w.expect("mug by ben: reachable -> NOT reachable", 1);
     assert_eq!(w.count("=== evaluation"), 3);
 }
+
+/// A save is said at once, with the file that changed, before its
+/// evaluation; the summary names the tasks run again where others were
+/// kept, and lists each changed answer on a line of its own, last.
+#[test]
+fn watch_says_at_once_what_changed_and_which_tasks_it_runs_again() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("two.reach");
+    let text = |far_y: u32| {
+        format!(
+            "use std::arm\nroom kitchen {{\n  size 6000 x 6000 x 2500\n  \
+             target mug at (400, 1150, 960)\n  target far at (5000, {far_y}, 960)\n}}\n\
+             person ben {{\n  mannequin right_arm\n  base fixed {{ at (850, 1300, 930) heading 180deg }}\n}}\n\
+             reach mug, far by ben\n"
+        )
+    };
+    std::fs::write(&file, text(5000)).unwrap();
+    let mut w = Watch::start(&file);
+    w.expect("first results", 1);
+    std::fs::write(&file, text(5001)).unwrap();
+    w.expect("=== evaluation 2", 1);
+    w.expect("run again: far by ben", 1);
+    let lines = w.lines.lock().unwrap().clone();
+    let said = lines
+        .iter()
+        .position(|l| l.starts_with("--- two.reach changed: evaluating"));
+    let shown = lines.iter().position(|l| l.starts_with("=== evaluation 2"));
+    assert!(said.is_some() && said < shown, "{}", lines.join("\n"));
+}
+
+/// `watch -q` shows the summary (and the answers that changed), not the
+/// report.
+#[test]
+fn watch_quiet_shows_only_what_changed() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("watched.reach");
+    std::fs::write(dir.path().join("parts.reach"), PARTS).unwrap();
+    std::fs::write(&file, scenario(0)).unwrap();
+    let mut w = Watch::start_with(&file, &["-q"]);
+    w.expect("first results", 1);
+    std::fs::write(&file, scenario(1500)).unwrap();
+    w.expect("  changed: mug by ben: reachable -> NOT reachable", 1);
+    let lines = w.lines.lock().unwrap().clone();
+    assert!(
+        !lines.iter().any(|l| l.starts_with("task ")),
+        "{}",
+        lines.join("\n")
+    );
+}

@@ -71,11 +71,13 @@ const GENERATIONS: usize = 3;
 
 /// How many tasks a cached run reused and how many it ran, and the work
 /// of all of them (the solver work a fresh run would count).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct CacheStats {
     pub reused: usize,
     pub ran: usize,
     pub work: u64,
+    /// The tasks run (not reused), by their position in the scenario.
+    pub ran_tasks: Vec<usize>,
 }
 
 impl TaskCache {
@@ -112,6 +114,7 @@ impl TaskCache {
         let held: Vec<Option<Held>> = (scenario.tasks.iter().zip(&keys).zip(&whole))
             .map(|((task, k), &whole)| self.held(k, whole, &seen[task.room]))
             .collect();
+        let ran_tasks: Vec<usize> = (0..held.len()).filter(|&i| held[i].is_none()).collect();
         let stale: Vec<(&TaskSpec, &key::TaskKey)> = (scenario.tasks.iter().zip(&keys).zip(&held))
             .filter(|(_, h)| h.is_none())
             .map(|(task_key, _)| task_key)
@@ -163,6 +166,7 @@ impl TaskCache {
             reused: keys.len() - ran,
             ran,
             work: work + standards,
+            ran_tasks,
         };
         Ok((report, stats))
     }
