@@ -8,10 +8,15 @@
 use std::borrow::Cow;
 use std::fmt::Write;
 
-/// Whether `c` is shown escaped: a control character or one that changes
-/// how the characters around it are shown without being seen itself.
+/// Whether `c` is shown escaped: a control character, one that changes
+/// how the characters around it are shown without being seen itself, or a
+/// noncharacter (U+FDD0-U+FDEF, and the last two of every plane: XML 1.0
+/// cannot hold U+FFFE and U+FFFF, so a JUnit file with one is ill-formed).
 pub fn is_unsafe(c: char) -> bool {
+    let code = u32::from(c);
     c.is_control()
+        || (0xFDD0..=0xFDEF).contains(&code)
+        || code & 0xFFFE == 0xFFFE
         || matches!(
             c,
             '\u{061C}'
@@ -78,6 +83,8 @@ mod tests {
             ("abc\u{202e}fed", "abc\\u{202e}fed"),
             ("isolate\u{2067}x\u{2069}", "isolate\\u{2067}x\\u{2069}"),
             ("tab\there", "tab\\u{9}here"),
+            ("not\u{FFFF}xml\u{FFFE}", "not\\u{ffff}xml\\u{fffe}"),
+            ("plane\u{1FFFF}\u{FDD0}", "plane\\u{1ffff}\\u{fdd0}"),
             ("Straße 10 µm", "Straße 10 µm"),
             ("bom\u{feff}", "bom\\u{feff}"),
         ];

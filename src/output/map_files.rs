@@ -405,7 +405,11 @@ fn cells(s: &mut String, m: &Picture, frame: &Frame, scale: &Scale) {
         let _ = writeln!(
             s,
             r#"<rect x="{x:.1}" y="{y:.1}" width="{side:.1}" height="{side:.1}" fill="{}" stroke="white" stroke-width="0.5"><title>({}, {}, {}) mm: {}</title></rect>"#,
-            c.fill, c.point_mm[0], c.point_mm[1], c.point_mm[2], c.words,
+            c.fill,
+            c.point_mm[0],
+            c.point_mm[1],
+            c.point_mm[2],
+            markup(&c.words),
         );
     }
 }
@@ -620,5 +624,28 @@ mod tests {
         ] {
             assert_eq!(nice_step(min), step, "{min}");
         }
+    }
+
+    /// A cell's tooltip names what the hand passed through (an obstacle's
+    /// name, a URDF link's): markup in it is text, not markup.
+    #[test]
+    fn a_cells_tooltip_is_escaped() {
+        let hostile = "reached only through `</title><script>alert(1)</script><title>`";
+        let picture = Picture {
+            title: "t".into(),
+            view: "plan",
+            step_mm: 100.0,
+            seen_from: Vector3::z(),
+            cells: vec![PictureCell {
+                point_mm: [0.0; 3],
+                fill: REACHED,
+                words: hostile.into(),
+            }],
+            bases: None,
+            legend: Vec::new(),
+        };
+        let svg = picture_svg(&picture, None);
+        assert!(!svg.contains("<script>"), "{svg}");
+        assert!(svg.contains("&lt;/title&gt;&lt;script&gt;"), "{svg}");
     }
 }

@@ -76,3 +76,19 @@ fn safe(text: &str) -> String {
         .collect::<Vec<_>>()
         .join("\n")
 }
+
+#[cfg(test)]
+mod tests {
+    use super::safe;
+
+    /// XML 1.0 holds neither most controls nor U+FFFE and U+FFFF: a file
+    /// name or a diagnostic with one must not make the file ill-formed.
+    #[test]
+    fn text_xml_cannot_hold_is_escaped() {
+        let text = safe("scene\u{FFFF}\u{FFFE}\u{1}\u{1b}.reach\nline two");
+        assert!(!text
+            .chars()
+            .any(|c| matches!(c, '\u{FFFE}' | '\u{FFFF}' | '\u{1}' | '\u{1b}')));
+        assert_eq!(text, "scene\\u{ffff}\\u{fffe}\\u{1}\\u{1b}.reach\nline two");
+    }
+}
