@@ -11,7 +11,7 @@ use super::Checker;
 use crate::error::{thousands, Error, ErrorKind};
 use crate::scene::{BoxObstacle, Door, MeshObstacle, Room, Surface, Target, Wall};
 use crate::span::Span;
-use crate::syntax::ast::{BoxDecl, DoorDecl, RoomDecl, RoomItem, SurfaceDecl};
+use crate::syntax::ast::{BoxDecl, DoorDecl, RoomDecl, RoomItem, SurfaceDecl, Vec3Expr};
 
 impl Checker<'_> {
     pub(super) fn rooms(&mut self) -> Vec<Room> {
@@ -113,6 +113,7 @@ impl Checker<'_> {
                     ));
                 }
                 self.size(s, "a room's size")
+                    .and_then(|size| self.within_largest_room(s, size))
             }
         };
         let mut boxes = Vec::new();
@@ -354,5 +355,27 @@ impl Checker<'_> {
             size_mm: size?,
             yaw_rad: yaw?,
         })
+    }
+}
+
+/// The longest side a room may have: 1 km. The floor's regions are worked
+/// out in integer coordinates scaled to the room (`geo`'s boolean
+/// operations): at 1 km they are 0.5 micrometres apart, and beyond a few
+/// thousand kilometres more than a millimetre, where the answers
+/// contradict each other (a route 3 m wide whose turning space fails).
+pub const LARGEST_ROOM_MM: f64 = 1_000_000.0;
+
+impl Checker<'_> {
+    /// `size`, where no side of it is longer than [`LARGEST_ROOM_MM`].
+    fn within_largest_room(&mut self, s: &Vec3Expr, size: Vector3<f64>) -> Option<Vector3<f64>> {
+        let mut ok = true;
+        for (i, part) in s.parts.iter().enumerate() {
+            if size[i] > LARGEST_ROOM_MM {
+                let value = format!("{} mm", fmt_num(size[i]));
+                self.out_of_range(part.span, "a room's side", "at most 1,000,000 mm (1 km)", &value);
+                ok = false;
+            }
+        }
+        ok.then_some(size)
     }
 }
