@@ -252,8 +252,12 @@ impl Reader {
                 )))
             }
         };
-        let mut indices = Vec::with_capacity(accessor.count());
-        for b in self.items(accessor, size)? {
+        // The count is checked against the bytes that back it (`items`)
+        // before anything is allocated for it: a count of 2^40 in a small
+        // file aborted the process.
+        let items = self.items(accessor, size)?;
+        let mut indices = Vec::new();
+        for b in items {
             let k = match size {
                 1 => u32::from(b[0]),
                 2 => u32::from(u16::from_le_bytes([b[0], b[1]])),
@@ -428,6 +432,17 @@ mod tests {
         .unwrap();
         assert_eq!(siblings.vertices[0].x, 5.0);
         assert_eq!(siblings.vertices[3].x, 7.0);
+    }
+
+    /// An index accessor that claims 2^40 indices in a 44-byte buffer is an
+    /// error in words, before anything is allocated for them.
+    #[test]
+    fn an_index_count_past_its_bytes_is_refused_before_allocating() {
+        let err = read(&gltf_indexed([0, 1, 2], |j| {
+            j["accessors"][1]["count"] = serde_json::json!(1u64 << 40);
+        }))
+        .unwrap_err();
+        assert!(err.to_string().contains("runs past its buffer view"), "{err}");
     }
 
     #[test]
