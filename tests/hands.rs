@@ -70,6 +70,12 @@ fn a_hand_the_mannequin_lacks_is_a_diagnostic_and_a_word_not_a_hand_too() {
     assert!(rendered.contains("left_grip"), "{rendered}");
     let err = cup_reach(0.0, "hand both").unwrap_err();
     assert!(err.contains("`both` is not a hand"), "{err}");
+    // A hand and an effector of the other hand: which was meant cannot be
+    // told (it mapped `grip` without a word).
+    let err = cup_reach(0.0, "hand right effector left_grip").unwrap_err();
+    assert!(err.contains("disagree"), "{err}");
+    let err = cup_reach(0.0, "hand left effector grip").unwrap_err();
+    assert!(err.contains("disagree"), "{err}");
 }
 
 /// The text report's table names the effector of each row.

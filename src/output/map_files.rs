@@ -17,7 +17,7 @@ use nalgebra::{Vector2, Vector3};
 use super::colours::{cell_colour, share_colour, MISSED, REACHED, SEEN, SHARES, SHORT, THROUGH};
 use super::view::RoomView;
 use crate::escape::markup;
-use crate::report::{quoted, MapReport, PopulationReport, ShareCell, ShareGrid};
+use crate::report::{quoted, MapCell, MapReport, PopulationReport, ShareCell, ShareGrid};
 
 /// File names for a map: `map-SURFACE-PERSON.csv` and `.svg`
 /// (`gaze_map-...` for a gaze map), and a map of one effector other than
@@ -146,6 +146,31 @@ struct PictureCell {
     words: String,
 }
 
+/// What a point not reached says: how far short it fell, or what it was
+/// reached only through, and why where the map found out.
+fn missed_words(c: &MapCell) -> String {
+    let missed = match c.through() {
+        Some(what) => format!("reached only through {}", quoted(what)),
+        None => format!("{} mm short", c.distance_mm),
+    };
+    match c.why_words() {
+        why if why.is_empty() => missed,
+        why => format!("{missed}: {why}"),
+    }
+}
+
+/// A map's hand in its title: " with either hand", " with `left_grip`"
+/// (one effector other than the right hand's grip), or nothing.
+fn with_hand(m: &MapReport) -> String {
+    match (&m.other_hand, m.of) {
+        (Some(_), _) => " with either hand".into(),
+        (None, "reach") if m.effector != "grip" && !m.effector.is_empty() => {
+            format!(" with `{}`", m.effector)
+        }
+        _ => String::new(),
+    }
+}
+
 impl Picture {
     /// One person's map: each point reached, or how far short it fell.
     pub fn of_map(m: &MapReport) -> Self {
@@ -163,20 +188,15 @@ impl Picture {
                         Some(hand) => format!("{} with the {hand} hand", m.words()[1]),
                         None => m.words()[1].to_string(),
                     },
+                    (false, _) if c.hand.is_some() && c.distance_mm.is_finite() => {
+                        let hand = c.hand.unwrap_or_default();
+                        format!("{} (the {hand} hand came closest)", missed_words(c))
+                    }
                     (false, "gaze") => "not seen".to_string(),
                     (false, _) if !c.distance_mm.is_finite() => {
                         "no place to approach it from".into()
                     }
-                    (false, _) => {
-                        let missed = match c.through() {
-                            Some(what) => format!("reached only through {}", quoted(what)),
-                            None => format!("{} mm short", c.distance_mm),
-                        };
-                        match c.why_words() {
-                            why if why.is_empty() => missed,
-                            why => format!("{missed}: {why}"),
-                        }
-                    }
+                    (false, _) => missed_words(c),
                 },
             })
             .collect();
@@ -203,11 +223,7 @@ impl Picture {
                 m.name,
                 m.words()[0],
                 m.person,
-                if m.other_hand.is_some() {
-                    " with either hand"
-                } else {
-                    ""
-                },
+                with_hand(m),
                 m.base,
                 m.fraction * 100.0,
                 m.points

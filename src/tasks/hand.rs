@@ -49,6 +49,21 @@ impl Hand {
             // An effector named is the one asked for.
             None => common.effector.is_none().then_some(Hand::Either),
         };
+        // An effector named on the other hand than the one named: which
+        // the user meant cannot be told.
+        if let (Some(side @ (Hand::Right | Hand::Left)), Some(named)) = (hand, &common.effector) {
+            let on_left = named.starts_with(LEFT);
+            if on_left != (side == Hand::Left) {
+                let word = if side == Hand::Left { "left" } else { "right" };
+                let other = if on_left { "left" } else { "right" };
+                return Err(SettingsError::invalid(
+                    "hand",
+                    format!(
+                        "`hand {word}` and `effector {named}`, an effector of the {other} hand, disagree: name the effector of the hand meant, or leave one out"
+                    ),
+                ));
+            }
+        }
         // A hand named: the effector on that hand, which the checker finds
         // (the mannequin's `grip` where no effector is named).
         let named = common.effector.clone().unwrap_or_else(|| "grip".into());
