@@ -412,3 +412,27 @@ fn a_file_another_scenario_uses_is_not_run_as_a_scenario() {
     assert!(!out.contains("people.reach"), "{out}");
     assert!(out.contains("1 passed, 0 failed"), "{out}");
 }
+
+/// A golden report that exists but cannot be read (a directory, a FIFO)
+/// fails the test in words, at once: it was taken as no golden report,
+/// and the test passed (a FIFO was waited on for ever).
+#[test]
+fn a_golden_report_that_cannot_be_read_fails_the_test() {
+    let (dir, golden_path, _) = with_golden(HIGH_MM);
+    std::fs::remove_file(&golden_path).unwrap();
+    std::fs::create_dir(&golden_path).unwrap();
+    let o = reach_in(dir.path(), &["test"]);
+    assert_eq!(o.status.code(), Some(1), "{}{}", stdout(&o), stderr(&o));
+    assert!(
+        stdout(&o).contains("cannot be read: it is a directory"),
+        "{}",
+        stdout(&o)
+    );
+    std::fs::remove_dir(&golden_path).unwrap();
+    let made = Command::new("mkfifo").arg(&golden_path).status();
+    if made.is_ok_and(|s| s.success()) {
+        let o = reach_in(dir.path(), &["test"]);
+        assert_eq!(o.status.code(), Some(1), "{}{}", stdout(&o), stderr(&o));
+        assert!(stdout(&o).contains("cannot be read"), "{}", stdout(&o));
+    }
+}

@@ -181,10 +181,10 @@ fn run_one(
     outcome.answers = report.tasks.len();
     outcome.expectations = report.expectations.clone();
     let golden_path = golden_path(path, roots, options.golden_dir.as_deref());
-    let golden = std::fs::read_to_string(&golden_path).ok();
-    let compared = golden
-        .as_deref()
-        .map(|g| compare(g, &report.tasks, options.tolerance));
+    let compared = read_golden(&golden_path, options.limits.file_bytes).map(|g| match g {
+        Ok(text) => compare(&text, &report.tasks, options.tolerance),
+        Err(why) => Compared::Unreadable(why),
+    });
     outcome.golden = match (compared, options.update) {
         (None, false) => Golden::Absent,
         (Some(c), false) | (Some(c @ Compared::Same), true) => Golden::Compared(c),
@@ -214,6 +214,22 @@ fn run_one(
         }
     };
     (outcome, used)
+}
+
+/// The golden report at `path`: none where there is no file there; else
+/// its text, read as the tool reads its inputs (a regular file only, a
+/// FIFO never waited on, at most `limit_bytes`), or why it could not be
+/// read, which fails the test (a golden that exists but cannot be read
+/// was taken as none, and the test passed).
+fn read_golden(path: &Path, limit_bytes: u64) -> Option<Result<String, String>> {
+    match std::fs::metadata(path) {
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return None,
+        _ => {}
+    }
+    let text = crate::read::read_root(path, limit_bytes)
+        .map_err(|e| e.to_string())
+        .and_then(|bytes| String::from_utf8(bytes).map_err(|_| "it is not UTF-8".to_string()));
+    Some(text)
 }
 
 /// Where `scenario`'s golden report is: `NAME.golden.json` beside it, or
