@@ -72,10 +72,17 @@ pub fn write_outputs(
     place_set(dir, &files, &leftovers)
 }
 
+/// The most bytes a set's list of names is read to: far more than the
+/// names of any set's files.
+const MANIFEST_BYTES: u64 = 1 << 20;
+
 /// The names the set now in `dir` lists (none where it lists none): plain
-/// names in `dir`, never a path elsewhere.
+/// names in `dir`, never a path elsewhere. A list that is not a regular
+/// file (a FIFO, which was waited on for ever; a link to `/dev/zero`), or
+/// is larger than [`MANIFEST_BYTES`], lists none.
 fn previous_set(dir: &Path) -> Vec<String> {
-    let text = std::fs::read_to_string(dir.join(MANIFEST)).unwrap_or_default();
+    let bytes = crate::read::read_root(&dir.join(MANIFEST), MANIFEST_BYTES).unwrap_or_default();
+    let text = String::from_utf8_lossy(&bytes);
     text.lines()
         .filter(|n| !n.is_empty() && !n.contains(['/', '\\']) && *n != "." && *n != "..")
         .filter(|n| !n.starts_with(TEMPORARY) && *n != MANIFEST)
@@ -159,5 +166,28 @@ fn sweep_stale(dir: &Path) {
         if is_temporary && old {
             let _ = std::fs::remove_file(entry.path());
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A set's list that is a FIFO (or a link to a device) is not read:
+    /// it lists nothing, so nothing is removed, and nothing waits.
+    #[cfg(unix)]
+    #[test]
+    fn a_list_that_is_not_a_regular_file_lists_nothing() {
+        let dir = tempfile::tempdir().unwrap();
+        let list = dir.path().join(MANIFEST);
+        let c = std::ffi::CString::new(list.to_str().unwrap()).unwrap();
+        assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o600) }, 0);
+        assert!(previous_set(dir.path()).is_empty());
+        std::fs::remove_file(&list).unwrap();
+        std::os::unix::fs::symlink("/dev/zero", &list).unwrap();
+        assert!(previous_set(dir.path()).is_empty());
+        std::fs::remove_file(&list).unwrap();
+        std::fs::write(&list, "report.json\n../outside\n").unwrap();
+        assert_eq!(previous_set(dir.path()), ["report.json"]);
     }
 }

@@ -46,7 +46,13 @@ pub fn begin(dir: &Path, steps: &[SetStep]) -> std::io::Result<PathBuf> {
     }
     let journal = dir.join(format!("{JOURNAL}{}", std::process::id()));
     let draft = dir.join(format!("{JOURNAL}{}.draft", std::process::id()));
-    let mut file = std::fs::File::create(&draft)?;
+    // Created new, never through a link planted at its name (which would
+    // truncate the file it points to, anywhere).
+    let _ = std::fs::remove_file(&draft);
+    let mut file = std::fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(&draft)?;
     file.write_all(text.as_bytes())?;
     file.sync_all()?;
     std::fs::rename(&draft, &journal)?;
@@ -80,12 +86,17 @@ pub fn recover(dir: &Path) {
             let _ = std::fs::remove_file(entry.path());
             continue;
         }
-        if let Ok(text) = std::fs::read_to_string(entry.path()) {
-            roll_forward(dir, &text);
+        // A regular file of at most JOURNAL_BYTES only: a FIFO at a
+        // journal's name was waited on for ever.
+        if let Ok(bytes) = crate::read::read_root(&entry.path(), JOURNAL_BYTES) {
+            roll_forward(dir, &String::from_utf8_lossy(&bytes));
         }
         let _ = std::fs::remove_file(entry.path());
     }
 }
+
+/// The most bytes of a journal read: far more than a set's renames.
+const JOURNAL_BYTES: u64 = 1 << 20;
 
 /// Make each rename of a journal's `text` whose temporary is still there,
 /// then each removal.
@@ -161,6 +172,35 @@ D\t../outside
         assert!(!d.join("map-old.csv").exists());
         assert!(!d.join(".reach-journal-4000000").exists());
         assert!(!dir.path().parent().unwrap().join("escaped").exists());
+    }
+
+    /// A link planted at the draft's name is replaced, never written
+    /// through: the file it points to is left as it was.
+    #[cfg(unix)]
+    #[test]
+    fn a_link_at_the_drafts_name_is_not_followed() {
+        let dir = tempfile::tempdir().unwrap();
+        let (d, outside) = (dir.path().join("out"), dir.path().join("precious"));
+        std::fs::create_dir(&d).unwrap();
+        std::fs::write(&outside, "keep me").unwrap();
+        let draft = d.join(format!("{JOURNAL}{}.draft", std::process::id()));
+        std::os::unix::fs::symlink(&outside, &draft).unwrap();
+        let journal = begin(&d, &[SetStep::Remove(d.join("old.csv"))]).unwrap();
+        assert_eq!(std::fs::read_to_string(&outside).unwrap(), "keep me");
+        assert_eq!(std::fs::read_to_string(&journal).unwrap(), "D\told.csv\n");
+    }
+
+    /// A journal (of a process not running) that is a FIFO is not waited
+    /// on: recovery goes on and removes it.
+    #[cfg(unix)]
+    #[test]
+    fn a_fifo_at_a_journals_name_is_not_waited_on() {
+        let dir = tempfile::tempdir().unwrap();
+        let fifo = dir.path().join(format!("{JOURNAL}4000001"));
+        let c = std::ffi::CString::new(fifo.to_str().unwrap()).unwrap();
+        assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o600) }, 0);
+        recover(dir.path());
+        assert!(!fifo.exists());
     }
 
     #[test]
