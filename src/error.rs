@@ -328,6 +328,9 @@ impl ErrorKind {
     pub fn help(&self) -> Option<String> {
         use ErrorKind::*;
         match self {
+            Syntax { found, .. } if found.starts_with("`#") => {
+                Some("a comment starts with `//` (or is `/* ... */`), not `#`".into())
+            }
             UnknownUnit { .. } | UnitsRepeated { .. } => Some(
                 "lengths: mm, cm, m, in; angles: deg, rad, arcmin (write the unit right after the number: `90deg`)"
                     .into(),
@@ -343,6 +346,9 @@ impl ErrorKind {
                 "name the room: `{}.{name}`",
                 rooms.first().map_or("", String::as_str)
             )),
+            UnknownName { what, name, .. } if std_home(what, name).is_some() => {
+                std_home(what, name)
+            }
             UnknownName { suggestion, .. } | BadUrdf { suggestion, .. } => {
                 suggestion.as_ref().map(|s| format!("did you mean `{s}`?"))
             }
@@ -406,6 +412,9 @@ impl ErrorKind {
             NoLookLink { .. } => Some(
                 "a gaze effector's chain ends in a prismatic joint along the line of sight, as `eyes` of std::body's `upper_body`".into(),
             ),
+            UnknownPlugin { kind, name, .. } if std_home(kind, name).is_some() => {
+                std_home(kind, name)
+            }
             UnknownPlugin {
                 suggestion,
                 available,
@@ -421,6 +430,20 @@ impl ErrorKind {
             _ => None,
         }
     }
+}
+
+/// Where an unknown `name` of this kind is declared in a module of the
+/// standard library the file does not use: "add `use std::people`".
+fn std_home(what: &str, name: &str) -> Option<String> {
+    let keyword = match what {
+        "mannequin" | "profile" | "vision" | "population" => what,
+        "base" | "base preset" => "base",
+        _ => return None,
+    };
+    let module = crate::std_texts::home_of(keyword, name)?;
+    Some(format!(
+        "`{name}` is a {keyword} of std::{module}: add `use std::{module}` at the top of the file"
+    ))
 }
 
 fn did_you_mean(suggestion: &Option<String>, otherwise: &str) -> String {

@@ -58,7 +58,7 @@ internal_modules! {
     allowance ansur bases builtin cache calibration check collision engine
     error escape excerpt figure floor geometry kept kinematics loader
     meshfile meter names options picture read scenario
-    scene solvers source span standards std_modules stdlib syntax tasks units
+    scene solvers source span standards std_modules std_texts stdlib syntax tasks units
     vision
 }
 

@@ -3,22 +3,7 @@
 //! `reach stdlib` prints. (`stdlib.rs`, above the checker, gives their
 //! mannequins checked.)
 
-/// Every module, by name, in the order `reach stdlib` lists them.
-pub const MODULES: &[(&str, &str)] = &[
-    ("arm", include_str!("../stdlib/arm.reach")),
-    ("body", include_str!("../stdlib/body.reach")),
-    ("paper", include_str!("../stdlib/paper.reach")),
-    ("people", include_str!("../stdlib/people.reach")),
-    ("populations", include_str!("../stdlib/populations.reach")),
-];
-
-/// The text of module `name`, if there is one.
-pub fn module(name: &str) -> Option<&'static str> {
-    MODULES
-        .iter()
-        .find(|(n, _)| *n == name)
-        .map(|(_, text)| *text)
-}
+pub use crate::std_texts::{module, MODULES};
 
 /// What `reach stdlib` prints: each module with the first line of its
 /// comment and, by kind, the names it declares (mannequins with their

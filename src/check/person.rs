@@ -435,7 +435,14 @@ impl Checker<'_> {
         use_: &ast::PluginUse,
     ) -> Option<PluginConfig> {
         let Some(params) = self.cx.registry.params(kind, &use_.name.value) else {
-            let names = self.cx.registry.names(kind);
+            // A person's base may also be a preset of the file or a module
+            // it uses.
+            let presets: Vec<String> = match kind {
+                PluginKind::Base => self.decls.base_presets.names().map(str::to_string).collect(),
+                _ => Vec::new(),
+            };
+            let mut names = self.cx.registry.names(kind);
+            names.extend(presets.iter().map(String::as_str));
             self.error(Error::new(
                 ErrorKind::UnknownPlugin {
                     kind: kind.noun(),
