@@ -328,6 +328,12 @@ impl ErrorKind {
     pub fn help(&self) -> Option<String> {
         use ErrorKind::*;
         match self {
+            OutOfRange { bound, value, .. } if bound == "from 0 % to 100 %" => {
+                let percent = value.parse::<f64>().ok().filter(|v| *v > 1.0 && *v <= 100.0);
+                percent.map(|_| {
+                    format!("a share is a fraction of 1 or written with `%`: `{value} %`")
+                })
+            }
             Syntax { found, .. } if found.starts_with("`#") => {
                 Some("a comment starts with `//` (or is `/* ... */`), not `#`".into())
             }

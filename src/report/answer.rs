@@ -53,8 +53,40 @@ impl Answer {
         self.figures.iter().find(|f| f.name == name)
     }
 
-    /// `mug by ann`: how watch mode and comparisons name the answer.
+    /// `mug by ann`, or a standard's `ada2010 in bathroom`: how watch mode
+    /// and comparisons name the answer.
     pub fn label(&self) -> String {
-        format!("{} by {}", self.subject, self.person)
+        match self.person.strip_prefix("in ") {
+            Some(room) if self.task == "standard" => format!("{} in {room}", self.subject),
+            _ => format!("{} by {}", self.subject, self.person),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Answer;
+
+    fn answer(task: &'static str, subject: &str, person: &str) -> Answer {
+        Answer {
+            task,
+            subject: subject.into(),
+            person: person.into(),
+            ok: true,
+            verdict: String::new(),
+            effector: None,
+            figures: Vec::new(),
+        }
+    }
+
+    /// A standard is checked in a room, not by a person: "ada2010 by in
+    /// bathroom" read as a slip.
+    #[test]
+    fn a_label_names_the_person_or_a_standards_room() {
+        assert_eq!(answer("reach", "mug", "ann").label(), "mug by ann");
+        assert_eq!(
+            answer("standard", "ada2010", "in bathroom").label(),
+            "ada2010 in bathroom"
+        );
     }
 }
