@@ -801,15 +801,21 @@ fn integers_up_to_two_to_the_53_are_exact_and_beyond_are_refused() {
             assert!(err.contains(&format!("`{n}` is too large")), "{err}");
         }
     }
-    // A count in a message is never saturated.
-    let huge = "units mm deg\nuse std::arm\nroom big {\n  size 1e15 x 1e15 x 2500\n  \
-                surface s at (0, 0, 900) size (1e15, 1e15, 0)\n}\n\
+    // A count in a message is never cut to 32 bits (the largest room, 1
+    // km a side, mapped at the finest step: 10^12 points).
+    let huge = "units mm deg\nuse std::arm\nroom big {\n  size 1e6 x 1e6 x 2500\n  \
+                surface s at (0, 0, 900) size (1e6, 1e6, 0)\n}\n\
                 person p { mannequin right_arm base fixed { at (5000, 5000, 930) } }\nmap s by p { step 1mm }\n";
     let (_dir, path) = scenario_file(huge);
     let (code, _, err) = check(&path, &[]);
     assert_eq!(code, Some(1), "{err}");
+    assert!(err.contains("(1000000000000 points)"), "{err}");
+    // A room larger than 1 km a side is refused at its size.
+    let (_dir, path) = scenario_file(&huge.replace("size 1e6 x 1e6", "size 1e15 x 1e15"));
+    let (code, _, err) = check(&path, &[]);
+    assert_eq!(code, Some(1), "{err}");
     assert!(
-        err.contains("(1000000000000000000000000000000 points)"),
+        err.contains("a room's side must be at most 1,000,000 mm"),
         "{err}"
     );
 }
