@@ -159,13 +159,59 @@ pub(super) fn syntax_error(file: FileId, text: &str, e: pest::error::Error<Rule>
     } else {
         (pos, len)
     };
-    Error::new(
+    let wants_brace = expected.iter().any(|e| e == "`}`");
+    let error = Error::new(
         ErrorKind::Syntax {
             expected: join_or(&expected),
             found,
         },
         Span::new(file, pos, pos + len),
-    )
+    );
+    // A `}` left out is found where the next declaration begins, or at the
+    // end of the file: point at the brace it should close as well.
+    match open_brace_before(text, pos).filter(|_| wants_brace) {
+        Some(open) if open + 1 < pos => {
+            error.with_note(Span::new(file, open, open + 1), "this `{` is not closed")
+        }
+        _ => error,
+    }
+}
+
+/// The innermost `{` before `pos` that no `}` closes, outside comments
+/// and strings.
+fn open_brace_before(text: &str, pos: usize) -> Option<usize> {
+    let bytes = text.as_bytes();
+    let mut open = Vec::new();
+    let mut i = 0;
+    while i < pos.min(bytes.len()) {
+        match bytes[i] {
+            b'/' if bytes.get(i + 1) == Some(&b'/') => {
+                while i < bytes.len() && bytes[i] != b'\n' {
+                    i += 1;
+                }
+            }
+            b'/' if bytes.get(i + 1) == Some(&b'*') => {
+                i += 2;
+                while i + 1 < bytes.len() && !(bytes[i] == b'*' && bytes[i + 1] == b'/') {
+                    i += 1;
+                }
+                i += 1;
+            }
+            b'"' => {
+                i += 1;
+                while i < bytes.len() && bytes[i] != b'"' {
+                    i += if bytes[i] == b'\\' { 2 } else { 1 };
+                }
+            }
+            b'{' => open.push(i),
+            b'}' => {
+                open.pop();
+            }
+            _ => {}
+        }
+        i += 1;
+    }
+    open.pop()
 }
 
 /// Literal tokens worth naming: not comment or whitespace markers, not the
