@@ -311,6 +311,7 @@ impl Checker<'_> {
         let file = self.cx.file;
         // A mannequin that failed to build has reported its own errors.
         let mut body = self.body_of(&m.mannequin, file, 0)?;
+        with_stance(&mut body, m);
         let mut ok = true;
         for o in &m.overrides {
             ok &= self.apply_override(&mut body.joints, o).is_some();
@@ -463,5 +464,16 @@ impl Checker<'_> {
             name: use_.name.value.clone(),
             options,
         })
+    }
+}
+
+/// `body` `seated` or `standing` where the person's `mannequin` line says
+/// so after the mannequin (`mannequin upper_body(stature 1.6m) seated`).
+pub(super) fn with_stance(body: &mut Body, m: &PersonMannequin) {
+    if let Some(p) = &m.posture {
+        body.posture = Some(match p.value {
+            ast::Stance::Seated => crate::kinematics::Stance::Seated,
+            ast::Stance::Standing => crate::kinematics::Stance::Standing,
+        });
     }
 }

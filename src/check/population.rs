@@ -559,6 +559,7 @@ impl<'a> Checker<'a> {
         vision: Option<(&'a [PersonVision], FileId)>,
     ) -> Option<(Person, Arc<dyn Base>)> {
         let mut body = self.in_file(m_file, |c| c.body_of(&m.mannequin, m_file, 0))?;
+        super::person::with_stance(&mut body, m);
         for profile in &drawn.profiles {
             let profile = Name {
                 value: profile.clone(),

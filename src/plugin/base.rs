@@ -433,8 +433,9 @@ impl BaseError {
     /// The error for a mannequin whose declared posture is not the base's.
     pub fn posture(base: &str, declared: Stance, needed: Stance) -> Self {
         BaseError::Unfit(format!(
-            "the mannequin is {}, and a {base} needs one {}: give the person a mannequin declared `{}`, or a base for a {} person",
+            "the mannequin is {}, and a {base} needs one {}: write `{}` after the mannequin's name (`mannequin NAME {}`), or give the person a base for a {} person",
             declared.word(),
+            needed.word(),
             needed.word(),
             needed.word(),
             declared.word()

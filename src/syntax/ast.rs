@@ -468,6 +468,8 @@ pub struct MannequinRef {
 #[derive(Clone, Debug, PartialEq)]
 pub struct PersonMannequin {
     pub mannequin: MannequinRef,
+    /// `seated` or `standing` after it, as an alias may say.
+    pub posture: Option<Spanned<Stance>>,
     /// Profiles and joint overrides, applied in order.
     pub overrides: Vec<JointOverride>,
 }

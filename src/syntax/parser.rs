@@ -708,11 +708,15 @@ impl Builder {
         {
             match p.as_rule() {
                 Rule::person_mannequin => {
-                    let mut m = p.into_inner();
+                    let mut m = p.into_inner().peekable();
                     let mannequin = self.mannequin_ref(m.next().unwrap());
+                    let posture = m
+                        .next_if(|q| q.as_rule() == Rule::posture)
+                        .map(|q| self.posture(q));
                     let overrides = m.map(|o| self.joint_override(o)).collect();
                     person.mannequins.push(PersonMannequin {
                         mannequin,
+                        posture,
                         overrides,
                     });
                 }
