@@ -2,6 +2,7 @@
 //! conversion to the AST, and parse errors in words a user knows.
 
 pub mod ast;
+mod code;
 mod expected;
 mod grammar;
 mod parser;

@@ -968,28 +968,9 @@ impl Builder {
 /// text, whose recursive descent would otherwise follow the nesting on the
 /// stack.
 fn too_deep(text: &str, max_depth: usize) -> Option<usize> {
-    let bytes = text.as_bytes();
-    let (mut depth, mut i) = (0usize, 0usize);
-    while i < bytes.len() {
-        match bytes[i] {
-            b'/' if bytes.get(i + 1) == Some(&b'/') => {
-                while i < bytes.len() && bytes[i] != b'\n' {
-                    i += 1;
-                }
-            }
-            b'/' if bytes.get(i + 1) == Some(&b'*') => {
-                i += 2;
-                while i + 1 < bytes.len() && !(bytes[i] == b'*' && bytes[i + 1] == b'/') {
-                    i += 1;
-                }
-                i += 1;
-            }
-            b'"' => {
-                i += 1;
-                while i < bytes.len() && bytes[i] != b'"' && bytes[i] != b'\n' {
-                    i += if bytes[i] == b'\\' { 2 } else { 1 };
-                }
-            }
+    let mut depth = 0usize;
+    for (i, b) in super::code::code_bytes(text) {
+        match b {
             b'(' | b'{' => {
                 depth += 1;
                 if depth > max_depth {
@@ -999,7 +980,6 @@ fn too_deep(text: &str, max_depth: usize) -> Option<usize> {
             b')' | b'}' => depth = depth.saturating_sub(1),
             _ => {}
         }
-        i += 1;
     }
     None
 }
