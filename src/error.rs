@@ -119,7 +119,7 @@ pub enum ErrorKind {
     MixedDefaults,
     /// A base the scenario puts outside the room (a fixed base's `at`); a
     /// mobile base that fits nowhere is an answer of the run, not an error.
-    #[error("the {base} base of `{person}` stands outside room `{room}`")]
+    #[error("the {base} base of `{person}` {} room `{room}`", outside_words(base))]
     BaseOutsideRoom {
         person: String,
         base: String,
@@ -404,7 +404,7 @@ impl ErrorKind {
             TooMuchWork { .. } => Some(
                 "ask less (a coarser `step`; fewer `starts`, `blocked_retries` or iterations: `max_iterations`, `sweeps`, `samples`, `kicks`; in a room with doors, whose routes count too, or one so crowded that the base fits only far from where it is asked to, whose floor counts too: fewer people or `headings`), or raise the bound: `limits { solver_work N }` in the file (up to --max-limits-raise times the command line's), or --max-solver-work; no answer of this run is shown, since some were cut short".into(),
             ),
-            BaseOutsideRoom { .. } => Some("a fixed base must stand inside the room: check its `at`".into()),
+            BaseOutsideRoom { .. } => Some("a fixed base must stand inside the room (check its `at`), and a moving base's zone must meet its floor (check `zone`, or `zone_from` and `zone_to`)".into()),
             AboveCeiling { asked, flag, .. } => Some(format!(
                 "a file may raise a bound at most --max-limits-raise times (10 by default) the command line's: run it with {flag} {asked}, or with a larger --max-limits-raise, if you trust it to run that long"
             )),
@@ -435,6 +435,16 @@ impl ErrorKind {
             NothingToExpect { hint, .. } | BadExpectation { help: hint, .. } => Some(hint.clone()),
             _ => None,
         }
+    }
+}
+
+/// How a base is outside a room: a fixed one stands there; a moving one
+/// is kept to a zone there.
+fn outside_words(base: &str) -> &'static str {
+    if base == "fixed" {
+        "stands outside"
+    } else {
+        "is kept to a zone outside"
     }
 }
 

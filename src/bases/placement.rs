@@ -466,6 +466,12 @@ impl Base for Mobile {
         &self.own
     }
 
+    /// A zone wholly outside the room: no hip point may be in both.
+    fn outside(&self, room: &Room) -> bool {
+        let floor = (room.size_mm.x, room.size_mm.y);
+        self.placing.zone.as_ref().is_some_and(|z| z.outside(floor))
+    }
+
     /// The person's capability map ([`Capability::build_work`]).
     fn prepare_work(&self, chain: &Chain) -> u64 {
         Capability::build_work(chain)

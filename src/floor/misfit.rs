@@ -86,8 +86,7 @@ impl Misfit {
             size_mm: footprint.size_mm(),
             fits_at,
             in_zone: zone.is_some(),
-            zone_outside: zone
-                .is_some_and(|z| z.max.0 <= 0.0 || z.max.1 <= 0.0 || z.min.0 >= x || z.min.1 >= y),
+            zone_outside: zone.is_some_and(|z| z.outside((x, y))),
         })
     }
 }

@@ -43,6 +43,12 @@ impl Zone {
         }
     }
 
+    /// Whether the zone lies wholly outside a room of floor `x_mm` by
+    /// `y_mm` (touching its walls at most): no hip point can be in both.
+    pub fn outside(&self, (x_mm, y_mm): (f64, f64)) -> bool {
+        self.max.0 <= 0.0 || self.max.1 <= 0.0 || self.min.0 >= x_mm || self.min.1 >= y_mm
+    }
+
     /// The polygon `outline` (of at least three corners), in its bounds.
     pub fn outline(outline: Polygon<f64>) -> Option<Self> {
         use geo::BoundingRect;
