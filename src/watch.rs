@@ -67,14 +67,14 @@ pub fn watch(
         // The bytes of the files the last evaluation read, taken before
         // this one reads them: a change made meanwhile is seen next time.
         let read_before = state.watched_files.clone();
-        let bytes = fingerprint(&read_before, state.limits.file_bytes);
-        let each_file = fingerprints(&read_before, state.limits.file_bytes);
+        let max_bytes = state.limits.file_bytes;
+        let before = fingerprints(&read_before, max_bytes);
         let (files, screen) = state.evaluate(registry, file, formatter, out);
         state.rewatch(&mut watcher, &root, files.clone());
         state.show(&screen);
         // Only where this evaluation read the same files is the
         // fingerprint theirs.
-        let shown = (state.watched_files == read_before).then_some(bytes);
+        let shown = (state.watched_files == read_before).then_some(&before);
         loop {
             if !wait_for_change(&rx, &state.watched_files, &state.watched_dirs) {
                 return 0;
@@ -86,57 +86,37 @@ pub fn watch(
             // since is watched first, then the files are read: what is
             // written in it from then on is an event, and before, a change.
             state.rewatch(&mut watcher, &root, files.clone());
-            let unchanged =
-                |bytes| bytes == fingerprint(&state.watched_files, state.limits.file_bytes);
-            if !shown.is_some_and(unchanged) {
-                let max_bytes = state.limits.file_bytes;
-                state.announce(&changed_files(&read_before, &each_file, max_bytes));
+            let now = fingerprints(&state.watched_files, max_bytes);
+            if shown != Some(&now) {
+                state.announce(&changed_files(&now, &before));
                 break;
             }
         }
     }
 }
 
-/// A hash of what reading `files` gives, as an evaluation reads them
-/// (`reach::read`: regular files only, a FIFO never waited on, at most
-/// `max_bytes`): each file's bytes, or why it could not be read.
-fn fingerprint(files: &BTreeSet<PathBuf>, max_bytes: u64) -> u64 {
+/// Each of `files` and a hash of what reading it gives, as an evaluation
+/// reads it (`reach::read`: regular files only, a FIFO never waited on, at
+/// most `max_bytes`): its bytes, or why it could not be read.
+fn fingerprints(files: &BTreeSet<PathBuf>, max_bytes: u64) -> Vec<(PathBuf, u64)> {
     use std::hash::{Hash, Hasher};
-    let mut h = std::collections::hash_map::DefaultHasher::new();
-    for path in files {
-        path.hash(&mut h);
+    let fingerprint = |path: &PathBuf| {
+        let mut h = std::collections::hash_map::DefaultHasher::new();
         match reach::read_root(path, max_bytes) {
             Ok(bytes) => (0u8, bytes).hash(&mut h),
             Err(e) => (1u8, e.to_string()).hash(&mut h),
         }
-    }
-    h.finish()
+        h.finish()
+    };
+    files.iter().map(|f| (f.clone(), fingerprint(f))).collect()
 }
 
-/// Each of `files` and the hash of what reading it gives ([`fingerprint`]).
-fn fingerprints(files: &BTreeSet<PathBuf>, max_bytes: u64) -> Vec<(PathBuf, u64)> {
-    files
-        .iter()
-        .map(|f| {
-            (
-                f.clone(),
-                fingerprint(&BTreeSet::from([f.clone()]), max_bytes),
-            )
-        })
-        .collect()
-}
-
-/// The names of the files of `files` whose bytes are no longer those
-/// `before` holds (a file new since: all of them).
-fn changed_files(
-    files: &BTreeSet<PathBuf>,
-    before: &[(PathBuf, u64)],
-    max_bytes: u64,
-) -> Vec<String> {
-    let now = fingerprints(files, max_bytes);
+/// The names of the files of `now` whose bytes are not those `before`
+/// holds (a file new since: all of them).
+fn changed_files(now: &[(PathBuf, u64)], before: &[(PathBuf, u64)]) -> Vec<String> {
     let mut names: Vec<String> = now
         .iter()
-        .filter(|(f, h)| !before.iter().any(|(g, k)| g == f && k == h))
+        .filter(|entry| !before.contains(entry))
         .filter_map(|(f, _)| f.file_name().map(|n| n.to_string_lossy().into_owned()))
         .collect();
     names.dedup();
