@@ -14,7 +14,6 @@
 //! command line holds SIGINT and SIGTERM back while a set is written, so
 //! that they too leave a whole set.)
 
-use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, SystemTime};
 
@@ -123,7 +122,7 @@ fn place_set(dir: &Path, files: &[(String, Vec<u8>)], leftovers: &[PathBuf]) -> 
     let mut written: Vec<(PathBuf, PathBuf)> = Vec::with_capacity(files.len());
     for (name, bytes) in files {
         let temporary = dir.join(format!("{TEMPORARY}{}-{name}", std::process::id()));
-        if let Err(e) = write_new(&temporary, bytes) {
+        if let Err(e) = journal::write_new(&temporary, bytes) {
             let _ = std::fs::remove_file(&temporary);
             remove_all(&written);
             return Err(write_error(&dir.join(name), &e));
@@ -132,18 +131,6 @@ fn place_set(dir: &Path, files: &[(String, Vec<u8>)], leftovers: &[PathBuf]) -> 
     }
     let rename = |from: &Path, to: &Path| std::fs::rename(from, to);
     placing::place(dir, &written, leftovers, &rename).map_err(|(path, e)| write_error(&path, &e))
-}
-
-/// A new file (replacing a temporary a run with this process id left),
-/// created with the user's umask, written and flushed to disk.
-fn write_new(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let _ = std::fs::remove_file(path);
-    let mut file = std::fs::OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(path)?;
-    file.write_all(bytes)?;
-    file.sync_all()
 }
 
 fn remove_all(written: &[(PathBuf, PathBuf)]) {

@@ -46,17 +46,23 @@ pub fn begin(dir: &Path, steps: &[SetStep]) -> std::io::Result<PathBuf> {
     }
     let journal = dir.join(format!("{JOURNAL}{}", std::process::id()));
     let draft = dir.join(format!("{JOURNAL}{}.draft", std::process::id()));
-    // Created new, never through a link planted at its name (which would
-    // truncate the file it points to, anywhere).
-    let _ = std::fs::remove_file(&draft);
+    write_new(&draft, text.as_bytes())?;
+    std::fs::rename(&draft, &journal)?;
+    Ok(journal)
+}
+
+/// A new file (replacing a temporary or draft a run with this process id
+/// left), created with the user's umask, written and flushed to disk:
+/// created new, never through a link planted at its name (which would
+/// truncate the file it points to, anywhere).
+pub(super) fn write_new(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let _ = std::fs::remove_file(path);
     let mut file = std::fs::OpenOptions::new()
         .write(true)
         .create_new(true)
-        .open(&draft)?;
-    file.write_all(text.as_bytes())?;
-    file.sync_all()?;
-    std::fs::rename(&draft, &journal)?;
-    Ok(journal)
+        .open(path)?;
+    file.write_all(bytes)?;
+    file.sync_all()
 }
 
 /// Finish the renames of every journal in `dir` that a process no longer
