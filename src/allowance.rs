@@ -31,7 +31,7 @@ pub trait Allowance: Sync {
     }
     /// Whether the run stays within its bound with the computation `key`
     /// at `units` and every other in flight at what it has done
-    /// ([`Flight`]). Where it does not, the run is stopped.
+    /// (`Flight`). Where it does not, the run is stopped.
     fn flight_within(&self, _key: u64, _units: u64) -> bool {
         true
     }
@@ -133,7 +133,7 @@ impl Allowance for Unmetered {
 /// counter.
 const BATCH: u64 = 4_096;
 
-/// The work of one solve, told to its allowance every [`BATCH`] units and
+/// The work of one solve, told to its allowance every `BATCH` units and
 /// when it is dropped.
 pub struct Tally<'a> {
     allowance: &'a dyn Allowance,

@@ -84,7 +84,7 @@ impl SourceFile {
     }
 }
 
-/// All files loaded for one evaluation, indexed by [`FileId`].
+/// All files loaded for one evaluation, indexed by `FileId`.
 #[derive(Debug, Default)]
 pub struct Sources {
     files: Vec<SourceFile>,

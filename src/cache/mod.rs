@@ -83,7 +83,7 @@ pub struct CacheStats {
 impl TaskCache {
     /// Run the scenario, reusing the results of tasks whose inputs have not
     /// changed; afterwards the cache holds this run's results, and by full
-    /// key those of the [`GENERATIONS`] runs before it. The
+    /// key those of the `GENERATIONS` runs before it. The
     /// work of the results reused counts against the scenario's bound as
     /// if they had run: an error where a fresh run would stop too.
     pub fn run(

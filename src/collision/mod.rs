@@ -371,7 +371,7 @@ impl Obstacles {
     /// where along it (0 at the eye, 1 at the target; 0 for a box that holds
     /// the eye). The last `end_gap_mm` before the target is not checked, so
     /// that an object resting on a shelf is not hidden by the shelf.
-    /// Charged as a solid's check is ([`capsule_check`]), and the
+    /// Charged as a solid's check is (`capsule_check`), and the
     /// triangles of meshes tested besides; once the run is past its limit,
     /// nothing is looked at (the answers are thrown away).
     pub fn first_on_sight_line(

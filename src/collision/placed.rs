@@ -22,7 +22,7 @@ pub struct PlacedObstacles<'a> {
 
 impl PlacedObstacles<'_> {
     /// What one check of a posture of `chain` against these (and against
-    /// itself) costs, in units of the meter ([`crate::meter`]).
+    /// itself) costs, in units of the meter (`crate::meter`).
     pub fn check_units(&self, chain: &Chain) -> u64 {
         crate::meter::posture_check(self.obstacles.count(), chain.solids_at_most())
     }
@@ -67,7 +67,7 @@ impl PlacedObstacles<'_> {
 
     /// The first collision of `chain`'s solids `v` in some posture, as
     /// [`PlacedObstacles::posture_hit`] finds it; solids that did not move
-    /// since a posture known to be clear ([`Motion::Still`]), and pairs
+    /// since a posture known to be clear (`Motion::Still`), and pairs
     /// that did not move apart, are not looked at again.
     pub fn volumes_hit(
         &self,

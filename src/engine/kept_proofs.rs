@@ -140,7 +140,7 @@ impl<'a> KeptProofs<'a> {
 
     /// Between two rounds of a map: each cell still undecided whose
     /// questions have grown to four, sixteen or sixty-four is looked at
-    /// again with so many times [`BOXES`] (in parallel), and the verdict
+    /// again with so many times `BOXES` (in parallel), and the verdict
     /// answers its questions from the next round on.
     pub fn settle(&self) {
         if self.allowance.exhausted() {

@@ -159,7 +159,7 @@ impl SolvesFor<'_> {
         }
     }
 
-    /// [`KeptSolves::solve`] for this variant.
+    /// `KeptSolves::solve` for this variant.
     pub fn solve(
         &self,
         key: u64,
@@ -169,7 +169,7 @@ impl SolvesFor<'_> {
         self.kept.solve(self.key(key), allowance, solve)
     }
 
-    /// [`KeptSolves::placements`] for this variant, where placements are
+    /// `KeptSolves::placements` for this variant, where placements are
     /// kept; else sampled here.
     pub fn placements(
         &self,
@@ -320,7 +320,7 @@ impl KeptSolves {
 }
 
 /// The fingerprint of a solver of `kind` with `settings`
-/// ([`Solver::fingerprint`]): a hash of their `Debug` text, which writes
+/// ([`Solver::fingerprint`](crate::plugin::Solver::fingerprint)): a hash of their `Debug` text, which writes
 /// every field, each float exactly, so that a setting added later is
 /// taken in without being named here.
 pub fn fingerprint_of(kind: &str, settings: &impl std::fmt::Debug) -> u64 {

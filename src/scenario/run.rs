@@ -361,15 +361,15 @@ impl Scenario {
 
     /// For each task of the scenario (by its address), whether it is
     /// charged the work of its person's floor in its room
-    /// ([`Base::floor_work`]): the first task of the scenario in that room
+    /// ([`Base::floor_work`](crate::plugin::Base::floor_work)): the first task of the scenario in that room
     /// by the same person (or population), whichever runs first and
     /// whichever answers a watch reuses, so that every task's work is the
     /// same on every run; and whether it is charged its base's getting
-    /// ready for its effectors ([`Base::prepare_work`]): the first task by
+    /// ready for its effectors ([`Base::prepare_work`](crate::plugin::Base::prepare_work)): the first task by
     /// the same person (or population) with those effectors, in any room.
     /// A task not of the scenario is charged both.
     /// For each task, in order, whether it is charged its person's floor
-    /// and its base's getting ready ([`Scenario::floor_charges`]): part of
+    /// and its base's getting ready (`Scenario::floor_charges`): part of
     /// its work, so part of the key watch mode keeps its answer by (a task
     /// added or taken away before it moves them).
     pub fn first_charges(&self) -> Vec<(bool, bool)> {

@@ -40,8 +40,8 @@ impl BasePose {
     }
 
     /// Whether `target_room_mm` lies behind the person standing or sitting
-    /// here: more than [`BEHIND_BEARING_DEG`] from the way the base faces,
-    /// and more than [`BEHIND_MIN_MM`] from its vertical (a point above
+    /// here: more than `BEHIND_BEARING_DEG` from the way the base faces,
+    /// and more than `BEHIND_MIN_MM` from its vertical (a point above
     /// the hips is no more behind than in front).
     pub fn has_behind(&self, target_room_mm: &Point3<f64>) -> bool {
         let along = self.to_base(target_room_mm).coords.xy();
