@@ -352,10 +352,13 @@ impl ErrorKind {
                 "name the room: `{}.{name}`",
                 rooms.first().map_or("", String::as_str)
             )),
-            UnknownName { what, name, .. } if std_home(what, name).is_some() => {
-                std_home(what, name)
-            }
-            UnknownName { suggestion, .. } | BadUrdf { suggestion, .. } => {
+            UnknownName {
+                what,
+                name,
+                suggestion,
+                ..
+            } => std_home(what, name).or_else(|| suggestion.as_ref().map(|s| format!("did you mean `{s}`?"))),
+            BadUrdf { suggestion, .. } => {
                 suggestion.as_ref().map(|s| format!("did you mean `{s}`?"))
             }
             Dimension { expected, .. } => Some(match example_of(expected) {
@@ -418,15 +421,15 @@ impl ErrorKind {
             NoLookLink { .. } => Some(
                 "a gaze effector's chain ends in a prismatic joint along the line of sight, as `eyes` of std::body's `upper_body`".into(),
             ),
-            UnknownPlugin { kind, name, .. } if std_home(kind, name).is_some() => {
-                std_home(kind, name)
-            }
             UnknownPlugin {
+                kind,
+                name,
                 suggestion,
                 available,
                 ..
-            }
-            | UnknownOption {
+            } => std_home(kind, name)
+                .or_else(|| Some(did_you_mean(suggestion, &format!("available: {available}")))),
+            UnknownOption {
                 suggestion,
                 available,
                 ..

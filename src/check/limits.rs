@@ -41,7 +41,7 @@ fn params() -> Vec<ParamSpec> {
             name: b.name,
             kind: ParamKind::Integer,
             default: None,
-            range: Some((1.0, 9_007_199_254_740_992.0)),
+            range: Some((1.0, super::options::MAX_INTEGER)),
             optional: true,
             doc: b.doc,
         })

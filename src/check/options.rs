@@ -9,7 +9,7 @@ use crate::span::Span;
 use crate::syntax::ast::{Expr, ExprKind, OptionDecl, OptionValue, PluginUse};
 
 /// Whole numbers up to this size are exact in f64.
-const MAX_INTEGER: f64 = 9_007_199_254_740_992.0;
+pub(super) const MAX_INTEGER: f64 = 9_007_199_254_740_992.0;
 
 impl Checker<'_> {
     /// Validate `given` against `params` of the plugin called `label`;

@@ -222,7 +222,7 @@ impl<'a> Checker<'a> {
         let size = self.population_size(items)?;
         let seed = match items.seed {
             Some((e, file)) => self.in_file(file, |c| {
-                c.whole(e, "a population's seed", 0.0, 2f64.powi(53))
+                c.whole(e, "a population's seed", 0.0, super::options::MAX_INTEGER)
             })?,
             None => 1.0,
         } as u64;

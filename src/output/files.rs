@@ -71,16 +71,13 @@ pub fn write_outputs(
     place_set(dir, &files, &leftovers)
 }
 
-/// The most bytes a set's list of names is read to: far more than the
-/// names of any set's files.
-const MANIFEST_BYTES: u64 = 1 << 20;
-
 /// The names the set now in `dir` lists (none where it lists none): plain
 /// names in `dir`, never a path elsewhere. A list that is not a regular
 /// file (a FIFO, which was waited on for ever; a link to `/dev/zero`), or
-/// is larger than [`MANIFEST_BYTES`], lists none.
+/// is larger than `journal::RECORD_BYTES`, lists none.
 fn previous_set(dir: &Path) -> Vec<String> {
-    let bytes = crate::read::read_root(&dir.join(MANIFEST), MANIFEST_BYTES).unwrap_or_default();
+    let bytes = crate::read::read_root(&dir.join(MANIFEST), super::journal::RECORD_BYTES)
+        .unwrap_or_default();
     let text = String::from_utf8_lossy(&bytes);
     text.lines()
         .filter(|n| !n.is_empty() && !n.contains(['/', '\\']) && *n != "." && *n != "..")

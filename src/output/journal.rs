@@ -92,17 +92,18 @@ pub fn recover(dir: &Path) {
             let _ = std::fs::remove_file(entry.path());
             continue;
         }
-        // A regular file of at most JOURNAL_BYTES only: a FIFO at a
+        // A regular file of at most RECORD_BYTES only: a FIFO at a
         // journal's name was waited on for ever.
-        if let Ok(bytes) = crate::read::read_root(&entry.path(), JOURNAL_BYTES) {
+        if let Ok(bytes) = crate::read::read_root(&entry.path(), RECORD_BYTES) {
             roll_forward(dir, &String::from_utf8_lossy(&bytes));
         }
         let _ = std::fs::remove_file(entry.path());
     }
 }
 
-/// The most bytes of a journal read: far more than a set's renames.
-const JOURNAL_BYTES: u64 = 1 << 20;
+/// The most bytes a set's records (its list of names, a journal) are read
+/// to: far more than any set's names and renames.
+pub(super) const RECORD_BYTES: u64 = 1 << 20;
 
 /// Make each rename of a journal's `text` whose temporary is still there,
 /// then each removal.

@@ -9,7 +9,7 @@ use nalgebra::Vector3;
 
 use super::common::{Common, CommonDecl, Reaching, INCREMENTAL, MAP_RETRY};
 use super::grid_settings::GridSettings;
-use super::hand::{hands_of, Hand};
+use super::hand::{self, hands_of, Hand};
 use super::map_grid::{map_report, MapAsked};
 use crate::error::ErrorKind;
 use crate::kinematics::{Body, Chain};
@@ -115,7 +115,7 @@ impl Task for MapTask {
     /// Either hand: a search with each (the second only where the first
     /// did not reach, at most every point).
     fn searches(&self, body: &Body, effectors: &[usize]) -> u64 {
-        effectors.first().map_or(1, |&asked| hands_of(body, asked, self.either).len() as u64)
+        hand::searches(body, effectors, self.either)
     }
 
     /// Its obstacles are asked about through `Reaching::obstacles` (and

@@ -1,6 +1,6 @@
 //! The `reach` task: can this person bring their hand to this target?
 
-use super::hand::{hands_of, Hand};
+use super::hand::{self, hands_of, Hand};
 use super::common::{
     mix_seed, Common, CommonDecl, Reaching, INCREMENTAL, THOROUGH_RETRY,
 };
@@ -94,7 +94,7 @@ impl Task for ReachTask {
 
     /// Either hand: a search with each.
     fn searches(&self, body: &Body, effectors: &[usize]) -> u64 {
-        effectors.first().map_or(1, |&asked| self.hands_of(body, asked).len() as u64)
+        hand::searches(body, effectors, self.either)
     }
 
     /// Its obstacles are asked about through `Reaching::obstacles` (and

@@ -14,7 +14,6 @@
 //! through an obstacle is moved by `avoid.rs`.
 
 use nalgebra::{IsometryMatrix3, Point3, Rotation3, Unit, Vector3};
-use rand_chacha::rand_core::Rng;
 use rand_chacha::ChaCha8Rng;
 
 use super::avoid;
@@ -320,7 +319,7 @@ impl<'a> Pass<'a> {
 /// range, within its limits and couplings.
 pub fn kick(q: &mut [f64], chain: &Chain, fraction: f64, rng: &mut ChaCha8Rng) {
     for (i, joint) in chain.joints.iter().enumerate() {
-        let u = (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
+        let u = crate::solvers::starts::unit_interval(rng);
         q[i] = chain.clamp_joint(i, q[i] + (2.0 * u - 1.0) * fraction * joint.range(), q);
     }
 }
