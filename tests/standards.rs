@@ -139,6 +139,35 @@ fn a_turning_space_is_a_1525_mm_circle_or_a_t() {
 /// 635 mm deep (306): a room roofed by a table at knee height has no
 /// turning space in its middle.
 #[test]
+fn a_trap_box_against_the_wall_under_a_basin_shortens_the_knee_space() {
+    // A basin 550 deep on the wall x = 0, its underside at 720 mm, open
+    // below but for a trap box `trap` deep against the wall (floor to 500
+    // mm), under the tap, which is 450 mm in from the basin's front edge.
+    // The basin is what the hand reaches over, not a shelf over the trap
+    // box: the space under it is knee space.
+    let basin = |trap: f64| {
+        format!(
+            "box basin at (0, 2700, 720) size (550, 600, 150)\n\
+             box trap_box at (0, 2850, 0) size ({trap}, 300, 500)\n\
+             target tap at (100, 3000, 900)"
+        )
+    };
+    let forward = "{ approach forward }";
+    // 100 deep: knee space 720 mm high and 450 deep, as deep as the reach.
+    let knee = rule(&checked(&basin(100.0), forward), "306.3");
+    assert!(knee.ok, "{knee:?}");
+    assert_eq!(knee.measured, "720 mm high, 450 mm deep");
+    // 150 deep, reaching under the tap: the knee space is as high, and
+    // 400 deep, 50 mm short of the reach's depth, said so (it was taken
+    // for a shelf over the trap box: "none").
+    let knee = rule(&checked(&basin(150.0), forward), "306.3");
+    assert!(!knee.ok, "{knee:?}");
+    assert_eq!(knee.measured, "720 mm high, 400 mm deep");
+    let reach = rule(&checked(&basin(150.0), forward), "308.2.2");
+    assert_eq!(reach.measured, "900 mm high over 450 mm");
+}
+
+#[test]
 fn knee_clearance_counts_only_635_mm_deep() {
     // A counter along the wall y = 0, `open` mm of open floor, then a
     // table at knee height `deep` mm deep to the wall y = 6000.

@@ -113,8 +113,11 @@ fn obstruction(
 }
 
 /// The board under the element that it rests on, where the obstruction
-/// also holds a lower box with room between the two (a shelf over a
-/// counter).
+/// also holds a lower box with room between the two that reaches as far
+/// towards the person (a shelf over a counter). Where the board reaches
+/// farther than every box below it (a basin over a trap box against the
+/// wall), the hand reaches over the board, and the space under it may be
+/// knee space.
 fn support(room: &Room, at: &Point3<f64>, a: &Approached) -> Option<usize> {
     let top = |i: usize| room.boxes[i].corner_mm.z + room.boxes[i].size_mm.z;
     let board = a
@@ -125,9 +128,16 @@ fn support(room: &Room, at: &Point3<f64>, a: &Approached) -> Option<usize> {
         .filter(|&i| top(i) >= at.z - RESTING_MM)
         .max_by(|&i, &j| top(i).total_cmp(&top(j)))?;
     let bottom = room.boxes[board].corner_mm.z;
+    let reach = |i: usize| {
+        crossing(&room.boxes[i], at.xy().coords, a.toward).map_or(f64::NEG_INFINITY, |c| c.1)
+    };
     a.under
         .iter()
-        .any(|&i| i != board && top(i) < bottom - TOUCHING_MM)
+        .any(|&i| {
+            i != board
+                && top(i) < bottom - TOUCHING_MM
+                && reach(i) >= reach(board) - TOUCHING_MM
+        })
         .then_some(board)
 }
 
@@ -170,6 +180,24 @@ fn crossing(b: &BoxObstacle, origin: Vector2<f64>, dir: Vector2<f64>) -> Option<
         t1 = t1.min(a.max(c));
     }
     (t0 <= t1).then_some((t0, t1))
+}
+
+/// How high the space under the obstruction is at its front: the lowest
+/// underside among the boxes reached over that the way crosses within
+/// `front_mm` of the obstruction's edge nearest the person. A box further
+/// back (a trap box against the wall under a basin) does not lower it; it
+/// ends the knee space's depth instead ([`knee_depth`]).
+pub fn knee_height(room: &Room, at: &Point3<f64>, a: &Approached, front_mm: f64) -> f64 {
+    let origin = at.xy().coords;
+    a.under
+        .iter()
+        .map(|&i| &room.boxes[i])
+        .filter(|b| {
+            crossing(b, origin, a.toward)
+                .is_some_and(|(_, t1)| t1 > a.depth_mm - front_mm + TOUCHING_MM)
+        })
+        .map(|b| b.corner_mm.z)
+        .fold(f64::INFINITY, f64::min)
 }
 
 /// How deep the space under the boxes `under` is, from `front_mm` along
@@ -289,6 +317,31 @@ mod tests {
         let a = approached(&open, &tap, Vector2::x());
         let depth = knee_depth(&open, &tap, Vector2::x(), a.depth_mm, 685.0);
         assert!((depth - 600.0).abs() < 1e-9, "{depth}");
+    }
+
+    #[test]
+    fn a_trap_box_at_the_wall_shortens_the_knee_space_not_its_height() {
+        // A basin 550 deep, its underside at 720 mm, open below; a trap box
+        // 150 deep against the wall from the floor to 500 mm.
+        let mut room = kitchen();
+        room.boxes = vec![
+            block("basin", [0.0, 1000.0, 720.0], [550.0, 600.0, 150.0]),
+            block("trap_box", [0.0, 1150.0, 0.0], [150.0, 300.0, 500.0]),
+        ];
+        let tap = Point3::new(100.0, 1300.0, 900.0);
+        let a = approached(&room, &tap, Vector2::x());
+        assert!((a.depth_mm - 450.0).abs() < 1e-9, "{a:?}");
+        assert_eq!(a.under, [0, 1]);
+        // The front 280 mm are open up to the basin's underside.
+        assert_eq!(knee_height(&room, &tap, &a, 280.0), 720.0);
+        // The knee space runs back from the basin's front to the trap box.
+        let depth = knee_depth(&room, &tap, Vector2::x(), a.depth_mm, 685.0);
+        assert!((depth - 400.0).abs() < 1e-9, "{depth}");
+        // A vanity cabinet as deep as the basin, from the floor, leaves
+        // no knee space.
+        room.boxes[1].size_mm = Vector3::new(550.0, 300.0, 700.0);
+        let a = approached(&room, &tap, Vector2::x());
+        assert_eq!(knee_height(&room, &tap, &a, 280.0), 0.0);
     }
 
     #[test]

@@ -15,7 +15,7 @@
 use geo::{Coord, LineString, Polygon};
 use nalgebra::{Point3, Vector2};
 
-use super::elements::{approached, crossing_within, knee_depth, Approached};
+use super::elements::{approached, crossing_within, knee_depth, knee_height, Approached};
 use super::figures::Figures;
 use crate::allowance::Allowance;
 use crate::bases::Approach;
@@ -438,11 +438,7 @@ fn forward(m: &Measure<'_>, at: &Point3<f64>, a: &Approached) -> Usage {
 
 /// 306: the knee space under the obstruction a forward reach goes over.
 fn knee(f: &Figures, room: &Room, at: &Point3<f64>, a: &Approached) -> RuleCheck {
-    let height = a
-        .under
-        .iter()
-        .map(|&i| room.boxes[i].corner_mm.z)
-        .fold(f64::INFINITY, f64::min);
+    let height = knee_height(room, at, a, f.knee_deep_mm);
     let depth = if height >= f.knee_high_mm {
         knee_depth(room, at, a.toward, a.depth_mm, f.knee_high_mm)
     } else {
