@@ -168,6 +168,31 @@ fn a_trap_box_against_the_wall_under_a_basin_shortens_the_knee_space() {
 }
 
 #[test]
+fn a_switch_on_a_wall_is_approached_from_the_room() {
+    // A switch on the middle of the wall y = 6000, and one in the corner.
+    let report = checked(
+        "target switch at (3000, 6000, 1200)\ntarget corner at (6000, 6000, 1000)",
+        "",
+    );
+    let [switch, corner] = &report.elements[..] else {
+        panic!("two elements: {:?}", report.elements);
+    };
+    // Facing the wall, not along it (the first side tried was +x: it
+    // read "forward approach facing 180 deg" with the floor space along
+    // the wall).
+    assert_eq!((switch.approach.as_str(), switch.facing_deg), ("forward", 90.0));
+    assert!(switch.ok, "{switch:?}");
+    // In a corner, facing either wall.
+    assert!([0.0, 90.0].contains(&corner.facing_deg), "{corner:?}");
+    // Side: beside it, parallel to the wall.
+    let side = checked("target switch at (3000, 6000, 1200)", "{ approach side }");
+    let switch = &side.elements[0];
+    assert_eq!(switch.approach, "side");
+    assert!([0.0, 180.0].contains(&switch.facing_deg), "{switch:?}");
+    assert!(switch.ok, "{switch:?}");
+}
+
+#[test]
 fn knee_clearance_counts_only_635_mm_deep() {
     // A counter along the wall y = 0, `open` mm of open floor, then a
     // table at knee height `deep` mm deep to the wall y = 6000.

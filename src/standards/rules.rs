@@ -251,9 +251,8 @@ fn mesh_bounds(room: &Room) -> Vec<BoxObstacle> {
 /// fewest, the first tried of those).
 fn element(m: &Measure<'_>, t: &Target, approach: Approach) -> ElementCheck {
     let at = t.position_mm;
-    let sides = [Vector2::x(), -Vector2::x(), Vector2::y(), -Vector2::y()];
     let mut usages: Vec<Usage> = Vec::new();
-    for toward in sides {
+    for toward in approach_sides(m.room, &at) {
         let a = approached(m.room, &at, toward);
         if approach != Approach::Side {
             usages.push(forward(m, &at, &a));
@@ -290,6 +289,34 @@ fn element(m: &Measure<'_>, t: &Target, approach: Approach) -> ElementCheck {
         people: Vec::new(),
     }
 }
+
+/// The directions an element is approached from (from the element
+/// towards the person, on the floor): from the room for an element on a
+/// wall ([`ON_WALL_MM`]; in a corner, from either wall), else from each
+/// of the four sides. A forward approach along a wall would face past a
+/// switch on it, and a side approach along it would stand facing the wall
+/// beside the switch: neither is how the standard approaches it.
+fn approach_sides(room: &Room, at: &Point3<f64>) -> Vec<Vector2<f64>> {
+    let walls = [
+        (at.x, Vector2::x()),
+        (room.size_mm.x - at.x, -Vector2::x()),
+        (at.y, Vector2::y()),
+        (room.size_mm.y - at.y, -Vector2::y()),
+    ];
+    let on_walls: Vec<Vector2<f64>> = (walls.iter())
+        .filter(|(distance_mm, _)| *distance_mm <= ON_WALL_MM)
+        .map(|&(_, inward)| inward)
+        .collect();
+    if on_walls.is_empty() {
+        walls.iter().map(|&(_, inward)| inward).collect()
+    } else {
+        on_walls
+    }
+}
+
+/// An element at most this far from a wall is on it: a switch, a socket,
+/// a dispenser's button.
+const ON_WALL_MM: f64 = 50.0;
 
 /// 403.5.1 for an approach not (yet) chosen: whether a 915 mm route gets
 /// to its clear floor space.
