@@ -180,7 +180,10 @@ fn a_switch_on_a_wall_is_approached_from_the_room() {
     // Facing the wall, not along it (the first side tried was +x: it
     // read "forward approach facing 180 deg" with the floor space along
     // the wall).
-    assert_eq!((switch.approach.as_str(), switch.facing_deg), ("forward", 90.0));
+    assert_eq!(
+        (switch.approach.as_str(), switch.facing_deg),
+        ("forward", 90.0)
+    );
     assert!(switch.ok, "{switch:?}");
     // In a corner, facing either wall.
     assert!([0.0, 90.0].contains(&corner.facing_deg), "{corner:?}");
@@ -304,6 +307,28 @@ fn the_people_s_answers_stand_beside_the_rules() {
         ("ann", "reach")
     );
     assert_eq!(people[0].ok, report.tasks[0].answer().ok);
+}
+
+#[test]
+fn a_target_named_in_except_is_not_an_element() {
+    // A point on a mirror a gaze looks at, high on the wall, and a switch.
+    let items = "target mirror_centre at (0, 3000, 1700)\ntarget switch at (0, 1000, 1100)";
+    let all = checked(items, "");
+    let names =
+        |r: &StandardReport| -> Vec<String> { r.elements.iter().map(|e| e.name.clone()).collect() };
+    assert_eq!(names(&all), ["mirror_centre", "switch"]);
+    assert!(!all.ok, "the mirror's point is out of reach: {all:?}");
+    let except = checked(items, "except mirror_centre");
+    assert_eq!(names(&except), ["switch"]);
+    assert!(except.ok, "{except:?}");
+    assert!(
+        except
+            .notes
+            .iter()
+            .any(|n| n == "not elements (`except`): `mirror_centre`"),
+        "{:?}",
+        except.notes
+    );
 }
 
 #[test]

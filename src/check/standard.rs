@@ -1,7 +1,8 @@
 //! `standard NAME [in ROOM] { options }`: a building standard's rules
 //! checked on one room, or on every room without `in`: the plugin by name
 //! (with the nearest names when it is unknown), its options validated
-//! against its declared parameters, the room resolved.
+//! against its declared parameters, the room resolved, and the targets
+//! `except` names (not elements) resolved in it.
 
 use std::sync::Arc;
 
@@ -55,6 +56,7 @@ impl Checker<'_> {
             },
             None => (0..rooms.len()).collect(),
         };
+        let except = self.except(decl, rooms, &checked)?;
         let options = options?;
         let standard: Arc<dyn Standard> = match plugin.configure(&options) {
             Ok(s) => Arc::from(s),
@@ -70,10 +72,41 @@ impl Checker<'_> {
                     name: name.value.clone(),
                     standard: Arc::clone(&standard),
                     room,
+                    except: except.clone(),
                     options: options.clone(),
                     span: decl.span,
                 })
                 .collect(),
         )
+    }
+
+    /// The names of `except`: each a target of a room checked (of one of
+    /// them without `in`), named once.
+    fn except(
+        &mut self,
+        decl: &StandardDecl,
+        rooms: &[Room],
+        checked: &[usize],
+    ) -> Option<Vec<String>> {
+        let mut names: Vec<String> = Vec::new();
+        let mut ok = true;
+        for name in &decl.except {
+            let targets = || {
+                (checked.iter())
+                    .flat_map(|&r| rooms[r].targets.iter())
+                    .map(|t| t.name.as_str())
+            };
+            if names.contains(&name.value) {
+                let what = format!("`{}` in `except`", name.value);
+                self.error(Error::new(ErrorKind::Repeated { what }, name.span));
+                ok = false;
+            } else if targets().any(|t| t == name.value) {
+                names.push(name.value.clone());
+            } else {
+                self.error(self.unknown("target", &name.value, name.span, targets()));
+                ok = false;
+            }
+        }
+        ok.then_some(names)
     }
 }

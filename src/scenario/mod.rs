@@ -68,9 +68,29 @@ pub struct StandardSpec {
     pub name: String,
     pub standard: Arc<dyn Standard>,
     pub room: usize,
+    /// Targets of the room that are not elements (`except`), by name.
+    pub except: Vec<String>,
     /// The validated options it was configured from.
     pub options: Options,
     pub span: Span,
+}
+
+impl StandardSpec {
+    /// `room` as the standard sees it: without the targets `except` names.
+    pub fn room_of_elements<'r>(&self, room: &'r Room) -> std::borrow::Cow<'r, Room> {
+        if self.except.is_empty() {
+            return std::borrow::Cow::Borrowed(room);
+        }
+        let mut elements = room.clone();
+        elements.targets.retain(|t| !self.except.contains(&t.name));
+        std::borrow::Cow::Owned(elements)
+    }
+
+    /// The report's note of the targets left out, if any.
+    pub fn except_note(&self) -> Option<String> {
+        let names: Vec<String> = self.except.iter().map(|n| format!("`{n}`")).collect();
+        (!names.is_empty()).then(|| format!("not elements (`except`): {}", names.join(", ")))
+    }
 }
 
 /// A task's subject, resolved in its room.

@@ -274,7 +274,9 @@ impl Scenario {
             .par_iter()
             .map(|spec| {
                 let meter = Meter::of(run);
-                let mut report = spec.standard.check(&self.rooms[spec.room], &meter);
+                let room = spec.room_of_elements(&self.rooms[spec.room]);
+                let mut report = spec.standard.check(&room, &meter);
+                report.notes.extend(spec.except_note());
                 for element in &mut report.elements {
                     let about = tasks.iter().zip(answers).filter(|(t, _)| {
                         t.room == spec.room && t.subject_name(self) == element.name

@@ -126,6 +126,8 @@ pub struct LimitsDecl {
 pub struct StandardDecl {
     pub name: Name,
     pub room: Option<Name>,
+    /// `except a, b`: targets that are not elements.
+    pub except: Vec<Name>,
     pub options: Vec<OptionDecl>,
     pub span: Span,
 }

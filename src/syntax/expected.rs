@@ -88,6 +88,7 @@ fn describe(rule: Rule) -> Option<&'static str> {
         meets => "`meets`",
         bound | comparison => "a bound `>= 80 %`",
         in_room => "`in`",
+        except | except_word => "`except`",
         door_decl => "`door`",
         vec2 => "a point `(x, y)`",
         population_from => "`= POPULATION`",

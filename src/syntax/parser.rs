@@ -914,10 +914,18 @@ impl Builder {
             .next_if(|p| p.as_rule() == Rule::in_room)
             .and_then(|_| it.next())
             .map(|p| self.name(p));
+        let except = it
+            .next_if(|p| p.as_rule() == Rule::except)
+            .map(|p| {
+                let list = p.into_inner().nth(1).unwrap();
+                list.into_inner().map(|n| self.name(n)).collect()
+            })
+            .unwrap_or_default();
         let options = it.next().map(|o| self.options(o)).unwrap_or_default();
         StandardDecl {
             name,
             room,
+            except,
             options,
             span,
         }
