@@ -144,6 +144,7 @@ fn counts(o: &Outcome) -> String {
             Golden::Written { fresh: true, .. } => "golden report written",
             Golden::Written { .. } => "golden report rewritten",
             Golden::NotWritten { .. } => "golden report NOT written",
+            Golden::Shared { .. } => "golden report shared with another scenario",
         }
         .into(),
     );
@@ -200,6 +201,9 @@ fn failure_of_golden(o: &Outcome, out: &mut String) {
                 shown(path),
                 shown_text(reason)
             );
+        }
+        Golden::Shared { path, with } => {
+            let _ = writeln!(out, "  {}", shown_text(&Golden::shared_words(path, with)));
         }
         _ => {}
     }

@@ -436,3 +436,39 @@ fn a_golden_report_that_cannot_be_read_fails_the_test() {
         assert!(stdout(&o).contains("cannot be read"), "{}", stdout(&o));
     }
 }
+
+#[test]
+fn two_scenarios_whose_golden_reports_would_collide_are_refused_not_overwritten() {
+    // `one/x.reach` and `two/x.reach` given as two roots: under
+    // `--golden-dir` both would be `goldens/x.golden.json` (it was written
+    // twice, "(new)" both times, the second over the first).
+    let dir = tempfile::tempdir().unwrap();
+    for sub in ["one", "two", "goldens"] {
+        std::fs::create_dir(dir.path().join(sub)).unwrap();
+    }
+    write(&dir.path().join("one"), "x.reach", &scenario(LOW_MM, ""));
+    write(&dir.path().join("two"), "x.reach", &scenario(HIGH_MM, ""));
+    let args = ["test", "--update", "--golden-dir", "goldens", "one", "two"];
+    let o = reach_in(dir.path(), &args);
+    assert_eq!(o.status.code(), Some(1), "{}", stdout(&o));
+    let out = stdout(&o);
+    assert!(
+        out.contains("would also be that of two/x.reach") && out.contains("that of one/x.reach"),
+        "{out}"
+    );
+    assert_eq!(
+        std::fs::read_dir(dir.path().join("goldens"))
+            .unwrap()
+            .count(),
+        0
+    );
+    // Named by the folder that holds both, each keeps its own.
+    let o = reach_in(
+        dir.path(),
+        &["test", "--update", "--golden-dir", "goldens", "."],
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", stdout(&o));
+    for each in ["goldens/one/x.golden.json", "goldens/two/x.golden.json"] {
+        assert!(dir.path().join(each).is_file(), "{each}: {}", stdout(&o));
+    }
+}

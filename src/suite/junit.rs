@@ -55,6 +55,7 @@ fn golden_case(golden: &Golden) -> Option<TestCase> {
         Golden::NotWritten { path, reason } => {
             failed(name, &format!("cannot write {}", path.display()), reason)
         }
+        Golden::Shared { path, with } => failed(name, &Golden::shared_words(path, with), ""),
     };
     Some(case)
 }

@@ -67,6 +67,28 @@ pub enum Golden {
         path: PathBuf,
         reason: String,
     },
+    /// Its path is also the golden report of the scenarios `with` (two
+    /// `x.reach` under two roots, with `--golden-dir`): neither compared
+    /// nor written, since each would overwrite or be judged by the other's.
+    Shared {
+        path: PathBuf,
+        with: Vec<PathBuf>,
+    },
+}
+
+impl Golden {
+    /// For [`Golden::Shared`], in words: which golden report, whose too,
+    /// and what to do.
+    pub fn shared_words(path: &Path, with: &[PathBuf]) -> String {
+        let others: Vec<String> = with.iter().map(|p| p.display().to_string()).collect();
+        format!(
+            "its golden report {} would also be that of {}: neither is compared or written; \
+             give the scenarios different names, or name the folder that holds them all \
+             (`--golden-dir` keeps each scenario's path under the path it was found under)",
+            path.display(),
+            others.join(", ")
+        )
+    }
 }
 
 impl Outcome {
@@ -119,9 +141,17 @@ pub fn run_suite(
     options: &SuiteOptions,
     registry: &Registry,
 ) -> Vec<Outcome> {
-    let ran: Vec<(Outcome, Vec<PathBuf>)> = scenarios
-        .par_iter()
-        .map(|path| run_one(path, roots, options, registry))
+    let golden_paths: Vec<PathBuf> = (scenarios.iter())
+        .map(|path| golden_path(path, roots, options.golden_dir.as_deref()))
+        .collect();
+    let ran: Vec<(Outcome, Vec<PathBuf>)> = (scenarios.par_iter().zip(&golden_paths))
+        .map(|(path, golden)| {
+            let sharing: Vec<PathBuf> = (scenarios.iter().zip(&golden_paths))
+                .filter(|(other, g)| *g == golden && *other != path)
+                .map(|(other, _)| other.clone())
+                .collect();
+            run_one(path, (golden, &sharing), options, registry)
+        })
         .collect();
     // A file another scenario uses is a part of it, not a scenario.
     let used: HashSet<PathBuf> = ran
@@ -144,11 +174,12 @@ fn canonical(path: &Path) -> PathBuf {
 }
 
 /// One scenario: checked, run, its expectations judged and its answers
-/// compared with (or, updating, written to) its golden report; and the
-/// files it read.
+/// compared with (or, updating, written to) its golden report at
+/// `golden_path` (unless that is also the golden report of the scenarios
+/// `sharing`); and the files it read.
 fn run_one(
     path: &Path,
-    roots: &[PathBuf],
+    (golden_path, sharing): (&Path, &[PathBuf]),
     options: &SuiteOptions,
     registry: &Registry,
 ) -> (Outcome, Vec<PathBuf>) {
@@ -180,7 +211,14 @@ fn run_one(
     };
     outcome.answers = report.tasks.len();
     outcome.expectations = report.expectations.clone();
-    let golden_path = golden_path(path, roots, options.golden_dir.as_deref());
+    if !sharing.is_empty() {
+        outcome.golden = Golden::Shared {
+            path: golden_path.to_path_buf(),
+            with: sharing.to_vec(),
+        };
+        return (outcome, used);
+    }
+    let golden_path = golden_path.to_path_buf();
     let compared = read_golden(&golden_path, options.limits.file_bytes).map(|g| match g {
         Ok(text) => compare(&text, &report.tasks, options.tolerance),
         Err(why) => Compared::Unreadable(why),
