@@ -582,3 +582,75 @@ fn a_target_a_millimetre_inside_a_closed_board_is_refused() {
     assert!(!sheet.encloses());
     assert!(!sheet.holds_strictly(&nalgebra::Point3::new(300.0, 1150.0, 1219.0)));
 }
+
+/// The bytes this thread has read through system calls so far (Linux).
+#[cfg(target_os = "linux")]
+fn bytes_read_by_this_thread() -> u64 {
+    let io = std::fs::read_to_string("/proc/thread-self/io").expect("/proc/thread-self/io");
+    io.lines()
+        .find_map(|l| l.strip_prefix("rchar: "))
+        .and_then(|n| n.trim().parse().ok())
+        .expect("an rchar line")
+}
+
+/// A file named by many `mesh` lines, and a glTF whose buffers all name
+/// one file, are each read once: 20 lines naming one 4 MB OBJ read 80 MB,
+/// and 30 buffers naming one 4 MB file 120 MB.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_file_named_many_times_is_read_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let padding = format!("# {}\n", "x".repeat(1000)).repeat(4000);
+    let board = [[
+        [0.0, 0.0, 900.0],
+        [600.0, 0.0, 900.0],
+        [600.0, 600.0, 900.0],
+        [0.0, 600.0, 900.0],
+    ]];
+    std::fs::write(dir.path().join("board.obj"), obj(&board, 1.0) + &padding).unwrap();
+    // The glTF's positions and indices at the start of `big.bin`, padded.
+    let (v, t) = triangulated(&board);
+    let mut bin: Vec<u8> = v
+        .iter()
+        .flatten()
+        .flat_map(|c| ((c / 1000.0) as f32).to_le_bytes())
+        .collect();
+    let positions_len = bin.len();
+    bin.extend(t.iter().flatten().flat_map(|k| k.to_le_bytes()));
+    let indices_len = bin.len() - positions_len;
+    bin.resize(4_000_000, 0);
+    std::fs::write(dir.path().join("big.bin"), &bin).unwrap();
+    let buffers = vec![format!(r#"{{"byteLength":{},"uri":"big.bin"}}"#, bin.len()); 30];
+    let gltf = format!(
+        r#"{{"asset":{{"version":"2.0"}},"scene":0,"scenes":[{{"nodes":[0]}}],"nodes":[{{"mesh":0}}],
+"meshes":[{{"primitives":[{{"attributes":{{"POSITION":0}},"indices":1}}]}}],
+"accessors":[{{"bufferView":0,"componentType":5126,"count":{nv},"type":"VEC3","min":[0,0,0],"max":[1,1,1]}},
+{{"bufferView":1,"componentType":5125,"count":{ni},"type":"SCALAR"}}],
+"bufferViews":[{{"buffer":29,"byteOffset":0,"byteLength":{positions_len}}},{{"buffer":29,"byteOffset":{positions_len},"byteLength":{indices_len}}}],
+"buffers":[{}]}}"#,
+        buffers.join(","),
+        nv = v.len(),
+        ni = 3 * t.len(),
+    );
+    std::fs::write(dir.path().join("board.gltf"), gltf).unwrap();
+    let mut rooms = String::new();
+    for k in 0..20 {
+        writeln!(
+            rooms,
+            "  mesh board_{k} from \"board.obj\" at (0, {}, 0)",
+            700 * k
+        )
+        .unwrap();
+    }
+    let text = format!(
+        "units mm deg\nroom r {{\n  size 3000 x 20000 x 2500\n{rooms}  mesh scan from \"board.gltf\" at (2000, 0, 0) unit mm\n}}\n"
+    );
+    let path = dir.path().join("boards.reach");
+    std::fs::write(&path, text).unwrap();
+    let before = bytes_read_by_this_thread();
+    let (_, checked) = reach::check(Input::Path(&path), &Registry::builtin());
+    let read = bytes_read_by_this_thread() - before;
+    let scenario = checked.unwrap_or_else(|d| panic!("{}", d.render(false)));
+    assert_eq!(scenario.rooms[0].meshes.len(), 21);
+    assert!(read < 20_000_000, "{read} bytes read");
+}

@@ -7,7 +7,9 @@
 //! be read or parsed, or that has no triangle with an area, is a
 //! diagnostic at its name.
 
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use nalgebra::{Point3, Rotation3, Vector3};
 
@@ -25,6 +27,20 @@ use crate::units::Unit;
 /// indices), which bounds how many triangles a file within the byte limit
 /// may place.
 const MIN_BYTES_PER_TRIANGLE: u64 = 12;
+
+/// The mesh files of one check, each read and parsed once.
+#[derive(Default)]
+pub(super) struct MeshFiles {
+    /// The bytes of each file a mesh refers to, or why they cannot be read.
+    related: HashMap<PathBuf, Result<Arc<[u8]>, String>>,
+    /// Each mesh file parsed whole, by its path and the format it is read as.
+    parsed: HashMap<(PathBuf, MeshFormat), Arc<RawMesh>>,
+}
+
+/// The key a file is known by: its canonical path where it has one.
+fn file_key(path: &Path) -> PathBuf {
+    std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf())
+}
 
 /// How a file's coordinates become the room's millimetres.
 struct Frame {
@@ -157,6 +173,16 @@ impl Checker<'_> {
         format: Option<MeshFormat>,
     ) -> Option<RawMesh> {
         self.cx.data_files.push(path.clone());
+        let left = self
+            .cx
+            .limits
+            .triangles
+            .saturating_sub(self.cx.triangles_read);
+        let key = format.map(|format| (file_key(&path), format));
+        if let Some(mesh) = key.as_ref().and_then(|k| self.cx.mesh_files.parsed.get(k)) {
+            let mesh = RawMesh::clone(mesh);
+            return self.counted(d, Ok(mesh), left, usize::MAX);
+        }
         let limit = self.cx.limits.file_bytes;
         let bytes = match read::read(&path, FileKind::Mesh, &self.cx.sources.allowed, limit) {
             Ok(bytes) => bytes,
@@ -170,19 +196,40 @@ impl Checker<'_> {
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         let mut buffers = Vec::new();
         let allowed = &self.cx.sources.allowed;
+        let read_before = &mut self.cx.mesh_files.related;
         let mut related = |uri: &str| {
             let buffer = dir.join(uri);
             buffers.push(buffer.clone());
-            read::read(&buffer, FileKind::MeshBuffer, allowed, limit).map_err(|e| e.to_string())
+            let read = || read::read(&buffer, FileKind::MeshBuffer, allowed, limit);
+            (read_before.entry(file_key(&buffer)))
+                .or_insert_with(|| read().map(Arc::from).map_err(|e| e.to_string()))
+                .clone()
         };
         let in_file = usize::try_from(limit / MIN_BYTES_PER_TRIANGLE).unwrap_or(usize::MAX);
-        let left = self
-            .cx
-            .limits
-            .triangles
-            .saturating_sub(self.cx.triangles_read);
         let parsed = meshfile::parse(format, &bytes, in_file.min(left), &mut related);
         self.cx.data_files.extend(buffers);
+        if let (Ok(mesh), Some(key)) = (&parsed, key) {
+            (self.cx.mesh_files.parsed).insert(key, Arc::new(mesh.clone()));
+        }
+        self.counted(d, parsed, left, in_file)
+    }
+
+    /// A mesh parsed (or taken from one parsed before), its triangles
+    /// counted against the scenario's bound (`left` of it before this one;
+    /// `in_file`, the most one file within the byte limit may place).
+    fn counted(
+        &mut self,
+        d: &MeshDecl,
+        parsed: Result<RawMesh, MeshFileError>,
+        left: usize,
+        in_file: usize,
+    ) -> Option<RawMesh> {
+        let parsed = match parsed {
+            Ok(mesh) if mesh.triangles.len() > left => {
+                Err(MeshFileError::TooManyTriangles { limit: left })
+            }
+            other => other,
+        };
         match parsed {
             Ok(mesh) => {
                 self.cx.triangles_read += mesh.triangles.len();

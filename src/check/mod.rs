@@ -24,6 +24,7 @@ use std::collections::HashMap;
 use std::path::PathBuf;
 
 use crate::error::{Diagnostics, Error, ErrorKind};
+use mesh::MeshFiles;
 use crate::kinematics::Body;
 use crate::limits::Limits;
 use crate::loader::LoadedFile;
@@ -107,6 +108,10 @@ struct Context<'a> {
     data_files: Vec<PathBuf>,
     /// The triangles of the meshes read so far (`Limits::triangles`).
     triangles_read: usize,
+    /// Each mesh file parsed, and each file a mesh refers to (a glTF's
+    /// buffers) read, by its canonical path: a file named by many `mesh`
+    /// lines, or by many buffers, is read and parsed once.
+    mesh_files: MeshFiles,
     /// The joints of the people built so far, and whether they passed
     /// their bound (`Checker::within_people_joints`).
     people_joints: (u64, bool),
@@ -181,6 +186,7 @@ impl<'a> Checker<'a> {
                 limits,
                 data_files: Vec::new(),
                 triangles_read: 0,
+                mesh_files: MeshFiles::default(),
                 people_joints: (0, false),
                 evaluated_text: (0, false),
                 sources,

@@ -7,6 +7,8 @@
 //! the first) is placed by its node's transform; a scene-less file gives
 //! its meshes as they are.
 
+use std::sync::Arc;
+
 use base64::Engine as _;
 use gltf::accessor::{DataType, Dimensions};
 use gltf::mesh::{Mode, Semantic};
@@ -104,23 +106,23 @@ fn buffers(
     document: &Document,
     mut blob: Option<Vec<u8>>,
     related: &mut ReadRelated<'_>,
-) -> Result<Vec<Vec<u8>>, MeshFileError> {
+) -> Result<Vec<Arc<[u8]>>, MeshFileError> {
     let mut all = Vec::new();
     for buffer in document.buffers() {
         let data = match buffer.source() {
-            gltf::buffer::Source::Bin => blob.take().ok_or_else(|| {
+            gltf::buffer::Source::Bin => Arc::from(blob.take().ok_or_else(|| {
                 invalid(format!(
                     "buffer {} is in a binary chunk the file lacks",
                     buffer.index()
                 ))
-            })?,
+            })?),
             gltf::buffer::Source::Uri(uri) => match uri.strip_prefix("data:") {
-                Some(data) => data_uri(data).ok_or_else(|| {
+                Some(data) => Arc::from(data_uri(data).ok_or_else(|| {
                     invalid(format!(
                         "buffer {}'s data URI is not base64",
                         buffer.index()
                     ))
-                })?,
+                })?),
                 None => related(uri).map_err(|reason| MeshFileError::Buffer {
                     uri: uri.to_string(),
                     reason,
@@ -150,7 +152,7 @@ fn data_uri(data: &str) -> Option<Vec<u8>> {
 
 /// The mesh gathered while walking a scene's nodes.
 struct Reader {
-    buffers: Vec<Vec<u8>>,
+    buffers: Vec<Arc<[u8]>>,
     mesh: RawMesh,
     max_triangles: usize,
     /// Nodes already placed: a node has one parent, so a second visit is a

@@ -11,6 +11,7 @@ mod stl;
 
 use std::fmt;
 use std::path::Path;
+use std::sync::Arc;
 
 use nalgebra::Point3;
 
@@ -23,7 +24,7 @@ pub struct RawMesh {
 }
 
 /// The formats read, known by the file's extension.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum MeshFormat {
     Obj,
     Stl,
@@ -121,8 +122,9 @@ impl fmt::Display for MeshFileError {
     }
 }
 
-/// Reads a file a glTF refers to (an external buffer), by its URI.
-pub type ReadRelated<'a> = dyn FnMut(&str) -> Result<Vec<u8>, String> + 'a;
+/// Reads a file a glTF refers to (an external buffer), by its URI: shared
+/// bytes, so that buffers naming one file hold it once.
+pub type ReadRelated<'a> = dyn FnMut(&str) -> Result<Arc<[u8]>, String> + 'a;
 
 /// The mesh in `bytes`, a file of `format`. `max_triangles` bounds what
 /// the file may place; `related` reads the files it refers to.
