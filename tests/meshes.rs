@@ -654,3 +654,42 @@ fn a_file_named_many_times_is_read_once() {
     assert_eq!(scenario.rooms[0].meshes.len(), 21);
     assert!(read < 20_000_000, "{read} bytes read");
 }
+
+/// A glTF of millions of empty nodes (`{}`, three bytes each: within the
+/// byte limit) is refused before it is built: 5,000,000 of them in 15 MB
+/// took 1.1 GB.
+#[test]
+fn a_gltf_of_millions_of_empty_nodes_is_refused_before_it_is_built() {
+    let dir = tempfile::tempdir().unwrap();
+    let board = [[
+        [0.0, 0.0, 900.0],
+        [600.0, 0.0, 900.0],
+        [600.0, 600.0, 900.0],
+        [0.0, 600.0, 900.0],
+    ]];
+    let glb = glb(&board, None);
+    // The GLB's JSON with 1,100,000 empty nodes after its one.
+    let json_len = u32::from_le_bytes(glb[12..16].try_into().unwrap()) as usize;
+    let json = std::str::from_utf8(&glb[20..20 + json_len])
+        .unwrap()
+        .trim_end();
+    let bin_chunk = &glb[20 + json_len..];
+    let nodes = format!("{}{{}}", "{},".repeat(1_099_999));
+    let json = json.replacen(
+        r#""translation":[1,0,0]}]"#,
+        &format!(r#""translation":[1,0,0]}},{nodes}]"#),
+        1,
+    );
+    let gltf = json.replacen(r#""buffers":[{"#, r#""buffers":[{"uri":"board.bin","#, 1);
+    std::fs::write(dir.path().join("board.bin"), &bin_chunk[8..]).unwrap();
+    let path = mesh_kitchen(dir.path(), "board.gltf", gltf.as_bytes(), "");
+    let (_, checked) = reach::check(Input::Path(&path), &Registry::builtin());
+    let rendered = match checked {
+        Ok(_) => panic!("1,100,000 nodes were built"),
+        Err(d) => d.render(false),
+    };
+    assert!(
+        rendered.contains("not a valid glTF file") && rendered.contains("1000000 objects"),
+        "{rendered}"
+    );
+}

@@ -168,3 +168,29 @@ fn mistakes_in_the_urdf_are_diagnostics_at_the_reach_text() {
         assert_eq!(&source.text[span.start as usize..span.end as usize], at);
     }
 }
+
+/// A URDF of more elements than any body has is refused before it is
+/// parsed: the arm with 100,000 empty links added parsed (2,000,000 of
+/// them in 45 MB took 2.4 GB and 8.5 s).
+#[test]
+fn a_urdf_of_too_many_elements_is_refused_before_it_is_parsed() {
+    let dir = tempfile::tempdir().unwrap();
+    let arm = std::fs::read_to_string("tests/data/human_arm.urdf").unwrap();
+    let links: String = (0..100_000)
+        .map(|k| format!("<link name=\"extra_{k}\"/>"))
+        .collect();
+    let padded = arm.replacen("</robot>", &format!("{links}</robot>"), 1);
+    std::fs::write(dir.path().join("padded.urdf"), padded).unwrap();
+    let path = dir.path().join("padded.reach");
+    std::fs::write(
+        &path,
+        SCENARIO.replace("tests/data/human_arm.urdf", "padded.urdf"),
+    )
+    .unwrap();
+    let (_, checked) = reach::check(Input::Path(&path), &Registry::builtin());
+    let shown = checked.expect_err("refused").errors[0].to_string();
+    assert!(
+        shown.contains("it holds more than 100,000 elements"),
+        "{shown}"
+    );
+}

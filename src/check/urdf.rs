@@ -4,7 +4,7 @@
 //! `.reach` text that names the file or the link.
 
 use super::Checker;
-use crate::error::{Error, ErrorKind};
+use crate::error::{thousands, Error, ErrorKind};
 use crate::kinematics::{chain_from_urdf, Body, UrdfError};
 use crate::read::{self, FileKind};
 use crate::syntax::ast::UrdfSource;
@@ -32,11 +32,17 @@ impl Checker<'_> {
             Ok(t) => t,
             Err(reason) => return fail(self, reason, None, source.path.span),
         };
-        if let Some(depth) = xml_too_deep(&text, self.cx.limits.nesting) {
-            let reason = format!(
-                "its elements nest {depth} deep, beyond the limit of {} levels (--max-nesting)",
-                self.cx.limits.nesting
-            );
+        if let Some(beyond) = xml_beyond(&text, self.cx.limits.nesting, MOST_URDF_ELEMENTS) {
+            let reason = match beyond {
+                XmlBeyond::Depth(depth) => format!(
+                    "its elements nest {depth} deep, beyond the limit of {} levels (--max-nesting)",
+                    self.cx.limits.nesting
+                ),
+                XmlBeyond::Elements => format!(
+                    "it holds more than {} elements (links, joints and their parts): more than any body needs",
+                    thousands(MOST_URDF_ELEMENTS as u64)
+                ),
+            };
             return fail(self, reason, None, source.path.span);
         }
         let robot = match urdf_rs::read_from_string(&text) {
@@ -80,12 +86,27 @@ impl Checker<'_> {
     }
 }
 
-/// How deep the elements of an XML text nest, if deeper than `max_depth`
-/// (a URDF nests three or four deep): checked in one pass before the XML
-/// parser, whose cost grows with the depth, sees the text. Comments,
+/// The most elements a URDF may hold: a body of a few dozen links has a
+/// few hundred; a file of millions of empty links (`<link name="a"/>`,
+/// within the byte limit) took gigabytes to parse.
+const MOST_URDF_ELEMENTS: usize = 100_000;
+
+/// How an XML text is beyond what is parsed.
+#[derive(Debug, PartialEq, Eq)]
+enum XmlBeyond {
+    /// Its elements nest this deep.
+    Depth(usize),
+    /// It holds more elements than allowed.
+    Elements,
+}
+
+/// Whether the elements of an XML text nest deeper than `max_depth` (a
+/// URDF nests three or four deep) or number more than `max_elements`:
+/// checked in one pass before the XML parser, whose cost grows with the
+/// depth and whose memory with the elements, sees the text. Comments,
 /// processing instructions, declarations and quoted attribute values are
 /// skipped; a malformed text is left for the parser to report.
-fn xml_too_deep(text: &str, max_depth: usize) -> Option<usize> {
+fn xml_beyond(text: &str, max_depth: usize, max_elements: usize) -> Option<XmlBeyond> {
     let bytes = text.as_bytes();
     let skip_past = |from: usize, end: &[u8]| {
         bytes[from..]
@@ -93,7 +114,7 @@ fn xml_too_deep(text: &str, max_depth: usize) -> Option<usize> {
             .position(|w| w == end)
             .map_or(bytes.len(), |p| from + p + end.len())
     };
-    let (mut depth, mut i) = (0usize, 0usize);
+    let (mut depth, mut i, mut elements) = (0usize, 0usize, 0usize);
     while let Some(p) = bytes[i..].iter().position(|&b| b == b'<') {
         i += p + 1;
         match bytes.get(i) {
@@ -107,10 +128,14 @@ fn xml_too_deep(text: &str, max_depth: usize) -> Option<usize> {
             Some(_) => {
                 let (end, self_closing) = tag_end(bytes, i);
                 i = end;
+                elements += 1;
+                if elements > max_elements {
+                    return Some(XmlBeyond::Elements);
+                }
                 if !self_closing {
                     depth += 1;
                     if depth > max_depth {
-                        return Some(depth);
+                        return Some(XmlBeyond::Depth(depth));
                     }
                 }
             }
@@ -141,7 +166,22 @@ fn tag_end(bytes: &[u8], from: usize) -> (usize, bool) {
 
 #[cfg(test)]
 mod tests {
-    use super::xml_too_deep;
+    use super::{xml_beyond, XmlBeyond};
+
+    fn xml_too_deep(text: &str, max_depth: usize) -> Option<usize> {
+        match xml_beyond(text, max_depth, usize::MAX) {
+            Some(XmlBeyond::Depth(depth)) => Some(depth),
+            _ => None,
+        }
+    }
+
+    #[test]
+    fn elements_are_counted_to_their_bound() {
+        let links = "<link name=\"a\"/>".repeat(10);
+        let urdf = format!("<robot name=\"r\"><!-- <link/> -->{links}</robot>");
+        assert_eq!(xml_beyond(&urdf, 8, 11), None);
+        assert_eq!(xml_beyond(&urdf, 8, 10), Some(XmlBeyond::Elements));
+    }
 
     #[test]
     fn nesting_is_counted_past_comments_quotes_and_empty_elements() {

@@ -23,6 +23,7 @@ pub(super) fn parse(
     related: &mut ReadRelated<'_>,
 ) -> Result<RawMesh, MeshFileError> {
     check_glb_length(bytes)?;
+    check_json_size(bytes)?;
     let gltf::Gltf { document, blob } =
         gltf::Gltf::from_slice_without_validation(bytes).map_err(|e| invalid(e.to_string()))?;
     let json = document.into_json();
@@ -71,6 +72,18 @@ fn check_glb_length(bytes: &[u8]) -> Result<(), MeshFileError> {
         )));
     }
     Ok(())
+}
+
+/// That the JSON (a `.gltf` file, or a GLB's JSON chunk) holds no more
+/// than the `gltf` crate may build (`json_tally.rs`).
+fn check_json_size(bytes: &[u8]) -> Result<(), MeshFileError> {
+    let json = if bytes.starts_with(b"glTF") {
+        let glb = gltf::binary::Glb::from_slice(bytes).map_err(|e| invalid(e.to_string()))?;
+        glb.json
+    } else {
+        std::borrow::Cow::Borrowed(bytes)
+    };
+    super::json_tally::tally(&json).map(|_| ()).map_err(invalid)
 }
 
 /// That every primitive's POSITION accessor exists: the `gltf` crate's

@@ -6,6 +6,7 @@
 //! user can act on, never a panic.
 
 mod gltf;
+mod json_tally;
 mod obj;
 mod stl;
 
