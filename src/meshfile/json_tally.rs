@@ -4,7 +4,7 @@
 //! three bytes each) took gigabytes. The JSON is walked once, keeping
 //! nothing, and refused as soon as it passes the bounds.
 
-use serde::de::{DeserializeSeed, Deserializer, Error as _, MapAccess, SeqAccess, Visitor};
+use serde::de::{DeserializeSeed, Deserializer, MapAccess, SeqAccess, Visitor};
 
 /// The most JSON objects a glTF may hold (nodes, meshes, primitives,
 /// accessors, materials, ...): far more than any room's scan needs (a
