@@ -291,6 +291,10 @@ impl Checker<'_> {
             }
             [] => {}
         }
+        if s.value.iter().any(|part| self.failed_face_holder(part, rooms)) {
+            // Its declaration has reported its own error.
+            return None;
+        }
         let is_box = |name: &String| {
             rooms
                 .iter()
@@ -359,5 +363,25 @@ impl Checker<'_> {
             .chain(self.decls.populations.names());
         self.error(self.unknown("person or population", &name.value, name.span, known));
         None
+    }
+
+    /// Whether `name` is a surface, box or mesh some room declares that was
+    /// not built (its declaration failed, and said why).
+    fn failed_face_holder(&self, name: &str, rooms: &[Room]) -> bool {
+        use crate::syntax::ast::RoomItem;
+        let built = rooms.iter().any(|r| {
+            r.surfaces.iter().any(|s| s.name == name)
+                || r.boxes.iter().any(|b| b.name == name)
+                || r.meshes.iter().any(|m| m.name == name)
+        });
+        let declared = (self.decls.rooms.iter())
+            .flat_map(|(_, d, _)| d.items.iter())
+            .any(|i| match i {
+                RoomItem::Surface(s) => s.name.value == name,
+                RoomItem::Box(b) => b.name.value == name,
+                RoomItem::Mesh(m) => m.name.value == name,
+                _ => false,
+            });
+        declared && !built
     }
 }
