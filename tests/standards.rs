@@ -332,6 +332,41 @@ fn a_target_named_in_except_is_not_an_element() {
 }
 
 #[test]
+fn each_room_notes_only_its_own_targets_left_out() {
+    let text = "units mm deg
+room bath {
+  size 3000 x 3000 x 2500
+  target mirror_centre at (0, 1500, 1700)
+}
+room kitchen {
+  size 4000 x 3000 x 2500
+  target worktop_spot at (0, 1500, 950)
+}
+standard ada2010 except mirror_centre, worktop_spot
+";
+    let (_, report) = run(text);
+    let notes: Vec<Vec<String>> = (report.tasks.iter())
+        .filter_map(|t| match t {
+            TaskReport::Standard(s) => Some(s.notes.clone()),
+            _ => None,
+        })
+        .collect();
+    let except = |notes: &[String]| {
+        notes
+            .iter()
+            .find(|n| n.starts_with("not elements"))
+            .cloned()
+    };
+    assert_eq!(
+        notes.iter().map(|n| except(n)).collect::<Vec<_>>(),
+        [
+            Some("not elements (`except`): `mirror_centre`".to_string()),
+            Some("not elements (`except`): `worktop_spot`".to_string())
+        ]
+    );
+}
+
+#[test]
 fn an_unknown_standard_or_room_or_approach_is_a_diagnostic() {
     let registry = reach::plugin::Registry::builtin();
     for (tail, expected) in [

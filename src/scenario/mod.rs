@@ -86,9 +86,12 @@ impl StandardSpec {
         std::borrow::Cow::Owned(elements)
     }
 
-    /// The report's note of the targets left out, if any.
-    pub fn except_note(&self) -> Option<String> {
-        let names: Vec<String> = self.except.iter().map(|n| format!("`{n}`")).collect();
+    /// The report's note of the targets of `room` left out, if any.
+    pub fn except_note(&self, room: &Room) -> Option<String> {
+        let names: Vec<String> = (self.except.iter())
+            .filter(|n| room.targets.iter().any(|t| &t.name == *n))
+            .map(|n| format!("`{n}`"))
+            .collect();
         (!names.is_empty()).then(|| format!("not elements (`except`): {}", names.join(", ")))
     }
 }

@@ -276,7 +276,7 @@ impl Scenario {
                 let meter = Meter::of(run);
                 let room = spec.room_of_elements(&self.rooms[spec.room]);
                 let mut report = spec.standard.check(&room, &meter);
-                report.notes.extend(spec.except_note());
+                report.notes.extend(spec.except_note(&self.rooms[spec.room]));
                 for element in &mut report.elements {
                     let about = tasks.iter().zip(answers).filter(|(t, _)| {
                         t.room == spec.room && t.subject_name(self) == element.name

@@ -54,6 +54,10 @@ const TOUCHING_MM: f64 = 1.0;
 /// what the element rests on (a mug's handle is some 60 mm above its
 /// shelf).
 const RESTING_MM: f64 = 150.0;
+/// A board is a shelf over a lower box only with at least this much room
+/// between the two (a hand, or a jar, goes under it); closer, the two are
+/// one obstruction (a worktop on base units, a basin on its vanity).
+const SHELF_GAP_MM: f64 = 100.0;
 
 /// `at` approached from `toward` (a unit vector on the floor, from the
 /// element towards the person): the boxes below the element that the
@@ -113,8 +117,8 @@ fn obstruction(
 }
 
 /// The board under the element that it rests on, where the obstruction
-/// also holds a lower box with room between the two that reaches as far
-/// towards the person (a shelf over a counter). Where the board reaches
+/// also holds a lower box, at least [`SHELF_GAP_MM`] below it, that
+/// reaches as far towards the person (a shelf over a counter). Where the board reaches
 /// farther than every box below it (a basin over a trap box against the
 /// wall), the hand reaches over the board, and the space under it may be
 /// knee space.
@@ -135,7 +139,7 @@ fn support(room: &Room, at: &Point3<f64>, a: &Approached) -> Option<usize> {
         .iter()
         .any(|&i| {
             i != board
-                && top(i) < bottom - TOUCHING_MM
+                && top(i) <= bottom - SHELF_GAP_MM
                 && reach(i) >= reach(board) - TOUCHING_MM
         })
         .then_some(board)
@@ -378,6 +382,14 @@ mod tests {
         assert_eq!(a.under, [0]);
         assert_eq!(a.height_mm, 900.0);
         assert!((a.depth_mm - 425.0).abs() < 1e-9);
+        // A worktop 2 mm above its base units is no shelf: the jar on it
+        // is reached over both, 900 mm high.
+        let mut worktop = kitchen();
+        worktop.boxes[0].size_mm.z = 860.0;
+        worktop.boxes[2] = block("top", [0.0, 0.0, 862.0], [600.0, 3000.0, 40.0]);
+        let jar = Point3::new(300.0, 1500.0, 960.0);
+        let a = approached(&worktop, &jar, Vector2::x());
+        assert_eq!((a.support, a.height_mm), (None, 902.0));
         // A cup on the counter itself: the counter is the obstruction.
         let cup = Point3::new(300.0, 1500.0, 960.0);
         assert_eq!(approached(&room, &cup, Vector2::x()).support, None);
