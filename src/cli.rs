@@ -541,7 +541,10 @@ fn check(registry: &Registry, args: &LimitArgs, file: &Path, shown: &Shown) -> i
         Ok(_) if shown.quiet => 0,
         Ok(s) => {
             let name = file.display().to_string();
-            println!("{}: ok ({} tasks)", escaped(&name), s.tasks.len());
+            // What a run answers: each task's, then each standard's.
+            let answers = s.tasks.len() + s.standards.len();
+            let noun = if answers == 1 { "task" } else { "tasks" };
+            println!("{}: ok ({answers} {noun})", escaped(&name));
             0
         }
         Err(d) => shown.diagnostics(&d),

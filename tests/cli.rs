@@ -291,6 +291,9 @@ fn check_reports_ok() {
     let o = reach(&["check", "examples/kitchen.reach"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(stdout(&o).contains("ok (4 tasks)"), "{}", stdout(&o));
+    // Its standard counted as `run` counts it (34 were said).
+    let o = reach(&["check", "examples/kitchen_wheelchair.reach"]);
+    assert!(stdout(&o).contains("ok (35 tasks)"), "{}", stdout(&o));
 }
 
 #[test]

@@ -35,7 +35,8 @@ impl FormatPlugin for Text {
         let mut out = String::new();
         let ok = answers.iter().filter(|a| a.ok).count();
         let file = escaped(&report.file);
-        let _ = writeln!(out, "{file}: {} tasks, {} ok\n", answers.len(), ok);
+        let noun = if answers.len() == 1 { "task" } else { "tasks" };
+        let _ = writeln!(out, "{file}: {} {noun}, {} ok\n", answers.len(), ok);
         out.push_str(&table(&answers));
         for task in &report.tasks {
             task.details(&mut out);
