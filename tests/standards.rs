@@ -187,6 +187,17 @@ fn a_switch_on_a_wall_is_approached_from_the_room() {
     assert!(switch.ok, "{switch:?}");
     // In a corner, facing either wall.
     assert!([0.0, 90.0].contains(&corner.facing_deg), "{corner:?}");
+    // On a partition (a box), 10 mm proud of its face: facing the
+    // partition (it read "facing 180 deg", along it).
+    let partition = checked(
+        "box partition at (0, 3000, 0) size (4000, 100, 2500)\ntarget switch at (2000, 3110, 1000)",
+        "",
+    );
+    let switch = &partition.elements[0];
+    assert_eq!(
+        (switch.approach.as_str(), switch.facing_deg),
+        ("forward", 270.0)
+    );
     // Side: beside it, parallel to the wall.
     let side = checked("target switch at (3000, 6000, 1200)", "{ approach side }");
     let switch = &side.elements[0];

@@ -292,26 +292,53 @@ fn element(m: &Measure<'_>, t: &Target, approach: Approach) -> ElementCheck {
 
 /// The directions an element is approached from (from the element
 /// towards the person, on the floor): from the room for an element on a
-/// wall ([`ON_WALL_MM`]; in a corner, from either wall), else from each
-/// of the four sides. A forward approach along a wall would face past a
-/// switch on it, and a side approach along it would stand facing the wall
-/// beside the switch: neither is how the standard approaches it.
+/// wall, or on the side of a box that stands at its height (a partition,
+/// a cabinet's front), within [`ON_WALL_MM`] (in a corner, from either),
+/// else from each of the four sides. A forward approach along a wall
+/// would face past a switch on it, and a side approach along it would
+/// stand facing the wall beside the switch: neither is how the standard
+/// approaches it.
 fn approach_sides(room: &Room, at: &Point3<f64>) -> Vec<Vector2<f64>> {
+    let sides = [Vector2::x(), -Vector2::x(), Vector2::y(), -Vector2::y()];
     let walls = [
-        (at.x, Vector2::x()),
-        (room.size_mm.x - at.x, -Vector2::x()),
-        (at.y, Vector2::y()),
-        (room.size_mm.y - at.y, -Vector2::y()),
+        at.x,
+        room.size_mm.x - at.x,
+        at.y,
+        room.size_mm.y - at.y,
     ];
-    let on_walls: Vec<Vector2<f64>> = (walls.iter())
-        .filter(|(distance_mm, _)| *distance_mm <= ON_WALL_MM)
-        .map(|&(_, inward)| inward)
+    let on: Vec<Vector2<f64>> = (sides.iter().zip(walls))
+        .filter(|&(&out, wall_mm)| {
+            wall_mm <= ON_WALL_MM || room.boxes.iter().any(|b| on_box_side(b, at, out))
+        })
+        .map(|(&out, _)| out)
         .collect();
-    if on_walls.is_empty() {
-        walls.iter().map(|&(_, inward)| inward).collect()
+    if on.is_empty() {
+        sides.to_vec()
     } else {
-        on_walls
+        on
     }
+}
+
+/// Whether `at` is on the side of box `b` that faces `out` (a unit vector
+/// along the room's axes): within [`ON_WALL_MM`] in front of that side,
+/// between its ends and between the box's bottom and top. A box turned off
+/// the room's axes has no such side.
+fn on_box_side(b: &crate::scene::BoxObstacle, at: &Point3<f64>, out: Vector2<f64>) -> bool {
+    if b.yaw_rad != 0.0 {
+        return false;
+    }
+    let (lo, hi) = (b.corner_mm, b.corner_mm + b.size_mm);
+    let within = |v: f64, a: f64, c: f64| (a..=c).contains(&v);
+    let height = within(at.z, lo.z, hi.z);
+    let in_front = |v: f64, face: f64, sign: f64| within(sign * (v - face), 0.0, ON_WALL_MM);
+    height
+        && if out.x != 0.0 {
+            let face = if out.x > 0.0 { hi.x } else { lo.x };
+            in_front(at.x, face, out.x) && within(at.y, lo.y, hi.y)
+        } else {
+            let face = if out.y > 0.0 { hi.y } else { lo.y };
+            in_front(at.y, face, out.y) && within(at.x, lo.x, hi.x)
+        }
 }
 
 /// An element at most this far from a wall is on it: a switch, a socket,
