@@ -65,6 +65,10 @@ pub enum ErrorKind {
     },
     #[error("`{name}` is in more than one room: {}", rooms.join(", "))]
     AmbiguousSurface { name: String, rooms: Vec<String> },
+    /// A name in a standard's `except` that is not a target of the room
+    /// checked: `is` says what it is ("a box", "a target of room `bath`").
+    #[error("`{name}` is {is}: `except` names targets of the room checked")]
+    NotAnElement { name: String, is: String },
     #[error("{what} `{name}` is defined twice")]
     Duplicate { what: &'static str, name: String },
     #[error("`{name}` is defined in terms of itself")]
@@ -239,6 +243,7 @@ impl ErrorKind {
             ImportCycle { .. } | UnknownStdModule { .. } => "reach::use",
             UnknownName { .. }
             | AmbiguousSurface { .. }
+            | NotAnElement { .. }
             | Duplicate { .. }
             | LetCycle { .. }
             | PresetNamesPlugin { .. } => "reach::name",
@@ -285,6 +290,7 @@ impl ErrorKind {
             WriteFile { .. } => "here".into(),
             UnknownName { what, .. } => format!("no {what} of this name"),
             AmbiguousSurface { .. } => "which room's?".into(),
+            NotAnElement { .. } => "not a target of this room".into(),
             Duplicate { .. } => "defined again here".into(),
             LetCycle { .. } => "used in its own definition".into(),
             PresetNamesPlugin { .. } => "a base plugin's name".into(),

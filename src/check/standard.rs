@@ -103,10 +103,44 @@ impl Checker<'_> {
             } else if targets().any(|t| t == name.value) {
                 names.push(name.value.clone());
             } else {
-                self.error(self.unknown("target", &name.value, name.span, targets()));
+                let error = match what_else(&name.value, rooms, checked) {
+                    Some(is) => Error::new(
+                        ErrorKind::NotAnElement {
+                            name: name.value.clone(),
+                            is,
+                        },
+                        name.span,
+                    ),
+                    None => self.unknown("target", &name.value, name.span, targets()),
+                };
+                self.error(error);
                 ok = false;
             }
         }
         ok.then_some(names)
     }
+}
+
+/// What `name` is, if not a target of the rooms `checked`: a box, mesh,
+/// surface or door of one of them, or a target of another room.
+fn what_else(name: &str, rooms: &[Room], checked: &[usize]) -> Option<String> {
+    let here = || checked.iter().map(|&r| &rooms[r]);
+    let kind = here().find_map(|r| {
+        if r.boxes.iter().any(|b| b.name == name) {
+            Some("a box")
+        } else if r.meshes.iter().any(|m| m.name == name) {
+            Some("a mesh")
+        } else if r.surfaces.iter().any(|s| s.name == name) {
+            Some("a surface")
+        } else if r.doors.iter().any(|d| d.name == name) {
+            Some("a door")
+        } else {
+            None
+        }
+    });
+    kind.map(str::to_string).or_else(|| {
+        (rooms.iter().enumerate())
+            .find(|(k, r)| !checked.contains(k) && r.targets.iter().any(|t| t.name == name))
+            .map(|(_, r)| format!("a target of room `{}`", r.name))
+    })
 }
