@@ -139,12 +139,12 @@ fn a_turning_space_is_a_1525_mm_circle_or_a_t() {
 /// 635 mm deep (306): a room roofed by a table at knee height has no
 /// turning space in its middle.
 #[test]
-fn a_trap_box_against_the_wall_under_a_basin_shortens_the_knee_space() {
+fn a_trap_box_against_the_wall_under_a_basin_shortens_the_toe_space() {
     // A basin 550 deep on the wall x = 0, its underside at 720 mm, open
     // below but for a trap box `trap` deep against the wall (floor to 500
     // mm), under the tap, which is 450 mm in from the basin's front edge.
     // The basin is what the hand reaches over, not a shelf over the trap
-    // box: the space under it is knee space.
+    // box: the space under it is knee and toe space.
     let basin = |trap: f64| {
         format!(
             "box basin at (0, 2700, 720) size (550, 600, 150)\n\
@@ -153,18 +153,58 @@ fn a_trap_box_against_the_wall_under_a_basin_shortens_the_knee_space() {
         )
     };
     let forward = "{ approach forward }";
-    // 100 deep: knee space 720 mm high and 450 deep, as deep as the reach.
-    let knee = rule(&checked(&basin(100.0), forward), "306.3");
+    // 100 deep: knee space 720 mm high and 450 deep; toe space as deep as
+    // the reach.
+    let report = checked(&basin(100.0), forward);
+    let (knee, toe) = (rule(&report, "306.3"), rule(&report, "306.2"));
+    assert!(knee.ok && toe.ok, "{knee:?} {toe:?}");
+    assert_eq!(knee.measured, "720 mm high, 450 mm deep down to 230 mm");
+    assert_eq!(toe.measured, "450 mm deep at the floor");
+    // 150 deep, reaching under the tap: the knees have room (280 mm at
+    // 230 mm high is enough), the clear floor space under the tap does
+    // not (it was taken for a shelf over the trap box: "none").
+    let report = checked(&basin(150.0), forward);
+    let (knee, toe) = (rule(&report, "306.3"), rule(&report, "306.2"));
     assert!(knee.ok, "{knee:?}");
-    assert_eq!(knee.measured, "720 mm high, 450 mm deep");
-    // 150 deep, reaching under the tap: the knee space is as high, and
-    // 400 deep, 50 mm short of the reach's depth, said so (it was taken
-    // for a shelf over the trap box: "none").
-    let knee = rule(&checked(&basin(150.0), forward), "306.3");
-    assert!(!knee.ok, "{knee:?}");
-    assert_eq!(knee.measured, "720 mm high, 400 mm deep");
-    let reach = rule(&checked(&basin(150.0), forward), "308.2.2");
-    assert_eq!(reach.measured, "900 mm high over 450 mm");
+    assert_eq!(knee.measured, "720 mm high, 400 mm deep down to 230 mm");
+    assert!(!toe.ok, "{toe:?}");
+    assert_eq!(toe.measured, "400 mm deep at the floor");
+    assert_eq!(rule(&report, "308.2.2").measured, "900 mm high over 450 mm");
+}
+
+#[test]
+fn knee_space_narrows_by_1_in_6_from_280_mm_at_230_mm_to_205_mm_at_685() {
+    // A counter 700 mm deep, its underside at 760 mm, with a bowl under it
+    // whose front is `back` mm behind the counter's front and whose
+    // bottom is at `bottom` mm: it needs 280 - (bottom - 230) / 6 mm.
+    let at = |back: f64, bottom: f64| {
+        format!(
+            "box counter at (0, 0, 760) size (700, 6000, 40)\n\
+             box bowl at (0, 2500, {bottom}) size ({}, 1000, {})\n\
+             target tap at (600, 3000, 900)",
+            700.0 - back,
+            760.0 - bottom
+        )
+    };
+    let forward = "{ approach forward }";
+    // At 640 mm: 211.7 mm needed (ADA's 306.3.4; it was 685 mm high over
+    // the front 280, "none: the obstruction comes down to 640 mm").
+    assert!(holds(&at(212.0, 640.0), forward, "306.3"));
+    assert!(!holds(&at(211.0, 640.0), forward, "306.3"));
+    // And the clear floor space reaches under the counter up to the bowl:
+    // every rule holds.
+    let whole = checked(&at(250.0, 640.0), forward);
+    assert!(whole.elements[0].ok, "{:?}", whole.elements[0]);
+    // Just under 685 mm, about 205 (204.3 at 684); at 230 mm and below,
+    // 280.
+    assert!(holds(&at(205.0, 684.0), forward, "306.3"));
+    assert!(!holds(&at(204.0, 684.0), forward, "306.3"));
+    assert!(holds(&at(280.0, 100.0), forward, "306.3"));
+    assert!(!holds(&at(279.0, 100.0), forward, "306.3"));
+    // Toe space: 430 mm at the floor (a bowl from 230 mm up leaves it).
+    assert!(holds(&at(300.0, 230.0), forward, "306.2"));
+    assert!(!holds(&at(429.0, 0.0), forward, "306.2"));
+    assert!(holds(&at(430.0, 0.0), forward, "306.2"));
 }
 
 #[test]

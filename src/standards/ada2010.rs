@@ -13,9 +13,11 @@
 //!   255 mm deep and 865 mm high; 308.3.2 side over an obstruction 255-610
 //!   mm deep and at most 865 mm high, 1170 mm; never below 380 mm), 305 a
 //!   760 x 1220 mm clear floor space (forward: its short side at the
-//!   element; side: its long side), 306 knee clearance under the
+//!   element; side: its long side), 306.3 knee clearance under the
 //!   obstruction where a forward reach goes over one (at least 685 mm
-//!   high, 280 mm deep and as deep as the reach), and 403.5.1 a route at
+//!   high, 205 mm deep there and 280 mm at 230 mm, 1 in 6 between) and
+//!   306.2 toe clearance (430 mm, and as deep as the reach; see
+//!   `clearance.rs`), and 403.5.1 a route at
 //!   least 915 mm wide from a door to the clear floor space (where the room
 //!   has doors).
 //!

@@ -190,7 +190,7 @@ fn crossing(b: &BoxObstacle, origin: Vector2<f64>, dir: Vector2<f64>) -> Option<
 /// underside among the boxes reached over that the way crosses within
 /// `front_mm` of the obstruction's edge nearest the person. A box further
 /// back (a trap box against the wall under a basin) does not lower it; it
-/// ends the knee space's depth instead ([`knee_depth`]).
+/// narrows the space instead ([`narrowings`]).
 pub fn knee_height(room: &Room, at: &Point3<f64>, a: &Approached, front_mm: f64) -> f64 {
     let origin = at.xy().coords;
     a.under
@@ -204,33 +204,48 @@ pub fn knee_height(room: &Room, at: &Point3<f64>, a: &Approached, front_mm: f64)
         .fold(f64::INFINITY, f64::min)
 }
 
-/// How deep the space under the boxes `under` is, from `front_mm` along
-/// the way (their edge nearest the person) back towards and past the
-/// element, before a box that comes down below `knee_mm` or the room's
-/// wall: the knee space a forward approach uses.
-pub fn knee_depth(
+/// Where the space under an obstruction narrows: a box that comes down
+/// into it (or the wall, from the floor up), how far back from the
+/// obstruction's front edge it begins and how low it comes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Narrowing {
+    pub depth_mm: f64,
+    pub bottom_mm: f64,
+}
+
+/// The narrowings of the space under the obstruction, from `front_mm`
+/// along the way (its edge nearest the person) back towards and past the
+/// element: each box whose underside is below `below_mm` that the way
+/// back crosses (from its edge, 0 where it stands at the front), and the
+/// room's wall.
+pub fn narrowings(
     room: &Room,
     at: &Point3<f64>,
     toward: Vector2<f64>,
     front_mm: f64,
-    knee_mm: f64,
-) -> f64 {
+    below_mm: f64,
+) -> Vec<Narrowing> {
     let origin = at.xy().coords + toward * front_mm;
     let back = -toward;
-    let wall = wall_distance(room, origin, back);
-    let first_low = room
-        .boxes
-        .iter()
-        .filter(|b| b.corner_mm.z < knee_mm)
-        .filter_map(|b| crossing(b, origin, back))
-        .filter(|&(_, t1)| t1 > TOUCHING_MM)
-        .map(|(t0, _)| t0.max(0.0))
-        .fold(f64::INFINITY, f64::min);
-    wall.min(first_low)
+    let mut found: Vec<Narrowing> = (room.boxes.iter())
+        .filter(|b| b.corner_mm.z < below_mm)
+        .filter_map(|b| {
+            let (t0, t1) = crossing(b, origin, back)?;
+            (t1 > TOUCHING_MM).then_some(Narrowing {
+                depth_mm: t0.max(0.0),
+                bottom_mm: b.corner_mm.z,
+            })
+        })
+        .collect();
+    found.push(Narrowing {
+        depth_mm: wall_distance(room, origin, back),
+        bottom_mm: 0.0,
+    });
+    found
 }
 
 /// How far from `origin` along `dir` the room's wall is.
-fn wall_distance(room: &Room, origin: Vector2<f64>, dir: Vector2<f64>) -> f64 {
+pub fn wall_distance(room: &Room, origin: Vector2<f64>, dir: Vector2<f64>) -> f64 {
     let mut t = f64::INFINITY;
     for (o, d, size) in [
         (origin.x, dir.x, room.size_mm.x),
@@ -313,13 +328,14 @@ mod tests {
         // The counter and the sink are both reached over.
         assert!((a.depth_mm - 300.0).abs() < 1e-9);
         // Under the sink (from 700 mm) there is knee space, but the counter
-        // box under it comes to the floor: none.
-        assert!(knee_depth(&room, &tap, Vector2::x(), a.depth_mm, 685.0) < 1e-9);
+        // box under it comes to the floor at its front: none.
+        let first = |n: Vec<Narrowing>| n.iter().map(|n| n.depth_mm).fold(f64::INFINITY, f64::min);
+        assert!(first(narrowings(&room, &tap, Vector2::x(), a.depth_mm, 685.0)) < 1e-9);
         let mut open = kitchen();
         open.boxes[0].corner_mm.y = 800.0;
         open.boxes[0].size_mm.y = 2200.0;
         let a = approached(&open, &tap, Vector2::x());
-        let depth = knee_depth(&open, &tap, Vector2::x(), a.depth_mm, 685.0);
+        let depth = first(narrowings(&open, &tap, Vector2::x(), a.depth_mm, 685.0));
         assert!((depth - 600.0).abs() < 1e-9, "{depth}");
     }
 
@@ -338,9 +354,12 @@ mod tests {
         assert_eq!(a.under, [0, 1]);
         // The front 280 mm are open up to the basin's underside.
         assert_eq!(knee_height(&room, &tap, &a, 280.0), 720.0);
-        // The knee space runs back from the basin's front to the trap box.
-        let depth = knee_depth(&room, &tap, Vector2::x(), a.depth_mm, 685.0);
-        assert!((depth - 400.0).abs() < 1e-9, "{depth}");
+        // The space runs back from the basin's front to the trap box, up
+        // to 500 mm, and to the wall above it.
+        let n = narrowings(&room, &tap, Vector2::x(), a.depth_mm, 685.0);
+        let trap = Narrowing { depth_mm: 400.0, bottom_mm: 0.0 };
+        let wall = Narrowing { depth_mm: 550.0, bottom_mm: 0.0 };
+        assert_eq!(n, [trap, wall]);
         // A vanity cabinet as deep as the basin, from the floor, leaves
         // no knee space.
         room.boxes[1].size_mm = Vector3::new(550.0, 300.0, 700.0);

@@ -32,10 +32,18 @@ pub struct Figures {
     pub floor_length_mm: f64,
     /// Knee clearance: at least this high ...
     pub knee_high_mm: f64,
-    /// ... and this deep (or as deep as the reach over it) ...
+    /// ... this deep at that height ...
+    pub knee_front_deep_mm: f64,
+    /// ... and this deep at [`Figures::toe_high_mm`], narrowing between
+    /// the two by 1 in [`Figures::knee_slope`] of height ...
     pub knee_deep_mm: f64,
+    pub knee_slope: f64,
     /// ... and counted as floor space only so deep.
     pub knee_deepest_mm: f64,
+    /// Toe clearance: the space up to this high, at least this deep under
+    /// the element (and as deep as the reach over it).
+    pub toe_high_mm: f64,
+    pub toe_deep_mm: f64,
     /// The turning circle's diameter, and the T's square.
     pub turning_mm: f64,
     /// The width of the T's arms.
@@ -62,6 +70,7 @@ pub struct Sections {
     pub forward_unobstructed: &'static str,
     pub forward_over: &'static str,
     pub knee: &'static str,
+    pub toe: &'static str,
     pub side_reach: &'static str,
     pub side_shallow: &'static str,
     pub side_deep: &'static str,
@@ -84,7 +93,11 @@ pub const ADA2010: Figures = Figures {
     floor_width_mm: 760.0,
     floor_length_mm: 1220.0,
     knee_high_mm: 685.0,
+    knee_front_deep_mm: 205.0,
     knee_deep_mm: 280.0,
+    knee_slope: 6.0,
+    toe_high_mm: 230.0,
+    toe_deep_mm: 430.0,
     knee_deepest_mm: 635.0,
     turning_mm: 1525.0,
     turning_arm_mm: 915.0,
@@ -101,6 +114,7 @@ pub const ADA2010: Figures = Figures {
         forward_unobstructed: "308.2.1",
         forward_over: "308.2.2",
         knee: "306.3",
+        toe: "306.2",
         side_reach: "308.3",
         side_shallow: "308.3.1",
         side_deep: "308.3.2",

@@ -5,6 +5,7 @@
 //! floor and an element, for any standard's reach rules.
 
 mod ada2010;
+mod clearance;
 mod elements;
 mod figures;
 mod rules;

@@ -15,7 +15,8 @@
 use geo::{Coord, LineString, Polygon};
 use nalgebra::{Point3, Vector2};
 
-use super::elements::{approached, crossing_within, knee_depth, knee_height, Approached};
+use super::clearance::{has_knee_space, knee, open_depth, toe};
+use super::elements::{approached, crossing_within, wall_distance, Approached};
 use super::figures::Figures;
 use crate::allowance::Allowance;
 use crate::bases::Approach;
@@ -252,8 +253,14 @@ fn mesh_bounds(room: &Room) -> Vec<BoxObstacle> {
 fn element(m: &Measure<'_>, t: &Target, approach: Approach) -> ElementCheck {
     let at = t.position_mm;
     let mut usages: Vec<Usage> = Vec::new();
-    for toward in approach_sides(m.room, &at) {
-        let a = approached(m.room, &at, toward);
+    let sides = approach_sides(m.room, &at);
+    let ways: Vec<Approached> = sides.iter().map(|&t| approached(m.room, &at, t)).collect();
+    // A way whose obstruction runs to the wall leaves the person nowhere
+    // to stand (outside the room), unless every way does.
+    let inside = |a: &Approached| wall_distance(m.room, at.xy().coords, a.toward) > a.depth_mm + 1.0;
+    let any_inside = ways.iter().any(inside);
+    for a in ways.iter().filter(|a| !any_inside || inside(a)) {
+        let a = a.clone();
         if approach != Approach::Side {
             usages.push(forward(m, &at, &a));
         }
@@ -454,6 +461,11 @@ fn forward(m: &Measure<'_>, at: &Point3<f64>, a: &Approached) -> Usage {
         let knee = knee(f, m.room, at, a);
         knee_ok = knee.ok;
         rules.push(knee);
+        // Toe space is asked of a space the knees have: where the
+        // obstruction comes down in front, the knee rule has said so.
+        if has_knee_space(f, m.room, at, a) {
+            rules.push(toe(f, m.room, at, a));
+        }
         RuleCheck {
             section: f.sections.forward_over.into(),
             rule: "forward reach over an obstruction".into(),
@@ -465,10 +477,11 @@ fn forward(m: &Measure<'_>, at: &Point3<f64>, a: &Approached) -> Usage {
         }
     };
     rules.insert(0, reach);
-    // With knee space, the clear floor space reaches under the element;
-    // without, it stops at the obstruction's edge.
+    // With knee space, the clear floor space reaches under the obstruction
+    // up to the first thing that comes down into the knee space (to the
+    // element at most); without, it stops at the obstruction's edge.
     let near = if knee_ok {
-        NONE_MM
+        (a.depth_mm - open_depth(f, m.room, at, a)).max(0.0) + NONE_MM
     } else {
         a.depth_mm + NONE_MM
     };
@@ -487,30 +500,6 @@ fn forward(m: &Measure<'_>, at: &Point3<f64>, a: &Approached) -> Usage {
         facing_deg: facing(-a.toward),
         space: space.1,
         rules: [rules, vec![space.0]].concat(),
-    }
-}
-
-/// 306: the knee space under the obstruction a forward reach goes over.
-fn knee(f: &Figures, room: &Room, at: &Point3<f64>, a: &Approached) -> RuleCheck {
-    let height = knee_height(room, at, a, f.knee_deep_mm);
-    let depth = if height >= f.knee_high_mm {
-        knee_depth(room, at, a.toward, a.depth_mm, f.knee_high_mm)
-    } else {
-        0.0
-    };
-    let needed = f.knee_deep_mm.max(a.depth_mm);
-    RuleCheck {
-        section: f.sections.knee.into(),
-        rule: "knee clearance under the obstruction".into(),
-        ok: height >= f.knee_high_mm && depth >= needed,
-        measured: if height >= f.knee_high_mm {
-            format!("{height:.0} mm high, {depth:.0} mm deep")
-        } else {
-            format!("none: the obstruction comes down to {height:.0} mm")
-        },
-        limit: format!(
-            "at least {knee_high_mm:.0} mm high and {needed:.0} mm deep ({knee_deep_mm:.0} mm, and as deep as the reach)", knee_high_mm = f.knee_high_mm, knee_deep_mm = f.knee_deep_mm),
-        shape: None,
     }
 }
 
