@@ -522,7 +522,12 @@ fn side(m: &Measure<'_>, at: &Point3<f64>, a: &Approached) -> Usage {
         let obstructed = depth >= NONE_MM;
         RuleCheck {
             section: f.sections.side_shallow.into(),
-            rule: "side reach, unobstructed".into(),
+            rule: if obstructed {
+                "side reach over a shallow obstruction"
+            } else {
+                "side reach, unobstructed"
+            }
+            .into(),
             ok: (f.low_mm..=f.high_mm).contains(&z) && (!obstructed || top <= f.side_obstruction_high_mm),
             measured: if obstructed {
                 format!("{} over {depth:.0} mm, {top:.0} mm high", high(z))
