@@ -170,12 +170,57 @@ pub(super) fn syntax_error(file: FileId, text: &str, e: pest::error::Error<Rule>
     );
     // A `}` left out is found where the next declaration begins, or at the
     // end of the file: point at the brace it should close as well.
-    match open_brace_before(text, pos).filter(|_| wants_brace) {
+    let error = match open_brace_before(text, pos).filter(|_| wants_brace) {
         Some(open) if open + 1 < pos => {
             error.with_note(Span::new(file, open, open + 1), "this `{` is not closed")
         }
         _ => error,
+    };
+    // `except a b` ends the list at `a`, and `b` is read as a new task.
+    match name_without_comma_after_except(text, pos) {
+        Some((start, end)) => error.with_note(
+            Span::new(file, start, end),
+            "a `,` before this name? `except` lists its names with commas: `except a, b`",
+        ),
+        None => error,
     }
+}
+
+/// Where, on the line of `pos` or the line before it, a name follows
+/// another after `except` with no comma between them, before `pos` (the
+/// names' list ended at the first, and the second began a new
+/// declaration, which then went wrong).
+fn name_without_comma_after_except(text: &str, pos: usize) -> Option<(usize, usize)> {
+    let pos = pos.min(text.len());
+    let line_start = text[..pos].rfind('\n').map_or(0, |i| i + 1);
+    missing_comma_on_line(text, line_start, pos).or_else(|| {
+        let previous = text[..line_start.checked_sub(1)?].rfind('\n').map_or(0, |i| i + 1);
+        missing_comma_on_line(text, previous, pos)
+    })
+}
+
+/// [`name_without_comma_after_except`] on the line that starts at
+/// `line_start`.
+fn missing_comma_on_line(text: &str, line_start: usize, pos: usize) -> Option<(usize, usize)> {
+    let line_end = text[line_start..].find('\n').map_or(text.len(), |i| line_start + i);
+    // The names end at an option block or a comment.
+    let line = text[line_start..line_end]
+        .split(['{', '/', '"'])
+        .next()
+        .unwrap_or_default();
+    let is_name = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
+    let words: Vec<(usize, usize)> = (0..line.len())
+        .filter(|&i| is_name(line.as_bytes()[i]) && (i == 0 || !is_name(line.as_bytes()[i - 1])))
+        .map(|i| (i, line[i..].bytes().take_while(|&b| is_name(b)).count() + i))
+        .collect();
+    let after = words.iter().position(|&(s, e)| &line[s..e] == "except")?;
+    let names = &words[after + 1..];
+    names.windows(2).find_map(|pair| {
+        let (gap_start, gap_end) = (pair[0].1, pair[1].0);
+        let gap = &line[gap_start..gap_end];
+        let missing = gap.trim().is_empty() && line_start + pair[1].0 <= pos;
+        missing.then_some((line_start + pair[1].0, line_start + pair[1].1))
+    })
 }
 
 /// The innermost `{` before `pos` that no `}` closes, outside comments
