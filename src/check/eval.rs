@@ -203,15 +203,23 @@ impl Checker<'_> {
     /// A size: a point whose parts must all be positive.
     pub(super) fn size(&mut self, v: &Vec3Expr, what: &str) -> Option<Vector3<f64>> {
         let size = self.point(v)?;
+        self.each_part(v, size, (what, "greater than zero"), |mm| mm > 0.0)
+    }
+
+    /// `size` (the value of `v`) if `fits` each of its parts, else an
+    /// error at each part that does not (`what` it is, and the `bound`
+    /// in words).
+    pub(super) fn each_part(
+        &mut self,
+        v: &Vec3Expr,
+        size: Vector3<f64>,
+        (what, bound): (&str, &str),
+        fits: impl Fn(f64) -> bool,
+    ) -> Option<Vector3<f64>> {
         let mut ok = true;
         for (i, part) in v.parts.iter().enumerate() {
-            if size[i] <= 0.0 {
-                self.out_of_range(
-                    part.span,
-                    what,
-                    "greater than zero",
-                    &format!("{} mm", fmt_num(size[i])),
-                );
+            if !fits(size[i]) {
+                self.out_of_range(part.span, what, bound, &format!("{} mm", fmt_num(size[i])));
                 ok = false;
             }
         }

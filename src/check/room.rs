@@ -368,14 +368,7 @@ pub const LARGEST_ROOM_MM: f64 = 1_000_000.0;
 impl Checker<'_> {
     /// `size`, where no side of it is longer than [`LARGEST_ROOM_MM`].
     fn within_largest_room(&mut self, s: &Vec3Expr, size: Vector3<f64>) -> Option<Vector3<f64>> {
-        let mut ok = true;
-        for (i, part) in s.parts.iter().enumerate() {
-            if size[i] > LARGEST_ROOM_MM {
-                let value = format!("{} mm", fmt_num(size[i]));
-                self.out_of_range(part.span, "a room's side", "at most 1,000,000 mm (1 km)", &value);
-                ok = false;
-            }
-        }
-        ok.then_some(size)
+        let bound = ("a room's side", "at most 1,000,000 mm (1 km)");
+        self.each_part(s, size, bound, |mm| mm <= LARGEST_ROOM_MM)
     }
 }
