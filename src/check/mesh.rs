@@ -61,8 +61,8 @@ impl Checker<'_> {
         let turn = Rotation3::from_axis_angle(&Vector3::z_axis(), frame.yaw_rad);
         let vertices_mm = raw
             .vertices
-            .into_iter()
-            .map(|v| frame.at + turn * (frame.up.to_z_up(v).coords * frame.mm_per_unit))
+            .iter()
+            .map(|&v| frame.at + turn * (frame.up.to_z_up(v).coords * frame.mm_per_unit))
             .collect();
         let mesh = MeshObstacle::new(d.name.value.clone(), vertices_mm, &raw.triangles);
         if mesh.triangles.is_empty() {
@@ -165,13 +165,14 @@ impl Checker<'_> {
         self.error(Error::new(kind, w.span));
     }
 
-    /// The file's vertices (in its own units and axes) and triangles.
+    /// The file's vertices (in its own units and axes) and triangles,
+    /// shared with every other `mesh` line that names the file.
     fn read_mesh(
         &mut self,
         d: &MeshDecl,
         path: PathBuf,
         format: Option<MeshFormat>,
-    ) -> Option<RawMesh> {
+    ) -> Option<Arc<RawMesh>> {
         self.cx.data_files.push(path.clone());
         let left = self
             .cx
@@ -180,7 +181,7 @@ impl Checker<'_> {
             .saturating_sub(self.cx.triangles_read);
         let key = format.map(|format| (file_key(&path), format));
         if let Some(mesh) = key.as_ref().and_then(|k| self.cx.mesh_files.parsed.get(k)) {
-            let mesh = RawMesh::clone(mesh);
+            let mesh = Arc::clone(mesh);
             return self.counted(d, Ok(mesh), left, usize::MAX);
         }
         let limit = self.cx.limits.file_bytes;
@@ -206,10 +207,10 @@ impl Checker<'_> {
                 .clone()
         };
         let in_file = usize::try_from(limit / MIN_BYTES_PER_TRIANGLE).unwrap_or(usize::MAX);
-        let parsed = meshfile::parse(format, &bytes, in_file.min(left), &mut related);
+        let parsed = meshfile::parse(format, &bytes, in_file.min(left), &mut related).map(Arc::new);
         self.cx.data_files.extend(buffers);
         if let (Ok(mesh), Some(key)) = (&parsed, key) {
-            (self.cx.mesh_files.parsed).insert(key, Arc::new(mesh.clone()));
+            (self.cx.mesh_files.parsed).insert(key, Arc::clone(mesh));
         }
         self.counted(d, parsed, left, in_file)
     }
@@ -220,10 +221,10 @@ impl Checker<'_> {
     fn counted(
         &mut self,
         d: &MeshDecl,
-        parsed: Result<RawMesh, MeshFileError>,
+        parsed: Result<Arc<RawMesh>, MeshFileError>,
         left: usize,
         in_file: usize,
-    ) -> Option<RawMesh> {
+    ) -> Option<Arc<RawMesh>> {
         let parsed = match parsed {
             Ok(mesh) if mesh.triangles.len() > left => {
                 Err(MeshFileError::TooManyTriangles { limit: left })
