@@ -15,7 +15,7 @@
 use geo::{Coord, LineString, Polygon};
 use nalgebra::{Point3, Vector2};
 
-use super::clearance::{has_knee_space, knee, open_depth, toe};
+use super::clearance::Under;
 use super::elements::{approached, crossing_within, wall_distance, Approached};
 use super::figures::Figures;
 use crate::allowance::Allowance;
@@ -260,12 +260,11 @@ fn element(m: &Measure<'_>, t: &Target, approach: Approach) -> ElementCheck {
     let inside = |a: &Approached| wall_distance(m.room, at.xy().coords, a.toward) > a.depth_mm + 1.0;
     let any_inside = ways.iter().any(inside);
     for a in ways.iter().filter(|a| !any_inside || inside(a)) {
-        let a = a.clone();
         if approach != Approach::Side {
-            usages.push(forward(m, &at, &a));
+            usages.push(forward(m, &at, a));
         }
         if approach != Approach::Forward {
-            usages.push(side(m, &at, &a));
+            usages.push(side(m, &at, a));
         }
     }
     if let Some(routes) = m.routes {
@@ -428,7 +427,9 @@ fn forward(m: &Measure<'_>, at: &Point3<f64>, a: &Approached) -> Usage {
     let f = m.figures;
     let z = at.z;
     let mut rules = Vec::new();
-    let mut knee_ok = false;
+    // Where the knee rule holds: how far back under the obstruction the
+    // floor is open.
+    let mut open_mm = None;
     let blocked = in_the_way(
         m,
         at,
@@ -458,13 +459,14 @@ fn forward(m: &Measure<'_>, at: &Point3<f64>, a: &Approached) -> Usage {
         } else {
             f.forward_deep_high_mm
         };
-        let knee = knee(f, m.room, at, a);
-        knee_ok = knee.ok;
+        let under = Under::of(f, m.room, at, a);
+        let knee = under.knee(f);
+        open_mm = knee.ok.then(|| under.open_depth(f));
         rules.push(knee);
         // Toe space is asked of a space the knees have: where the
         // obstruction comes down in front, the knee rule has said so.
-        if has_knee_space(f, m.room, at, a) {
-            rules.push(toe(f, m.room, at, a));
+        if under.has_knee_space(f) {
+            rules.push(under.toe(f, a.depth_mm));
         }
         RuleCheck {
             section: f.sections.forward_over.into(),
@@ -480,10 +482,9 @@ fn forward(m: &Measure<'_>, at: &Point3<f64>, a: &Approached) -> Usage {
     // With knee space, the clear floor space reaches under the obstruction
     // up to the first thing that comes down into the knee space (to the
     // element at most); without, it stops at the obstruction's edge.
-    let near = if knee_ok {
-        (a.depth_mm - open_depth(f, m.room, at, a)).max(0.0) + NONE_MM
-    } else {
-        a.depth_mm + NONE_MM
+    let near = match open_mm {
+        Some(open) => (a.depth_mm - open).max(0.0) + NONE_MM,
+        None => a.depth_mm + NONE_MM,
     };
     let space = clear_floor(
         f,
