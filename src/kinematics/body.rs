@@ -138,6 +138,7 @@ impl Body {
                 .into_iter()
                 .map(|(_, r)| r)
                 .collect(),
+            ballast: self.ballast_at(&path, q),
             couplings: self.couplings_on(&path),
         }
     }
@@ -161,6 +162,22 @@ impl Body {
         let links = self.holding_links(path).into_iter();
         let links = links.filter_map(|j| Some((Some(j), carry.link(j)?)));
         spheres.chain(links).collect()
+    }
+
+    /// The links off `path` that a chain along it neither moves nor
+    /// carries (the other arm), as it would carry them: where the body's
+    /// mass is besides the chain's own solids.
+    fn ballast_at(&self, path: &[usize], q: Option<&[f64]>) -> Vec<Rider> {
+        let carry = Carry {
+            body: self,
+            path,
+            q,
+        };
+        let held = self.holding_links(path);
+        (0..self.joints.len())
+            .filter(|j| !path.contains(j) && !held.contains(j))
+            .filter_map(|j| carry.link(j))
+            .collect()
     }
 
     /// The joints off `path` between it and a sphere (the neck's, under

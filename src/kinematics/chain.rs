@@ -189,6 +189,10 @@ pub struct Chain {
     /// Solids of the body the chain carries (a head and neck on the
     /// spine).
     pub riders: Vec<Rider>,
+    /// The body's other solids (the other arm), carried as riders are but
+    /// not solids of the chain: nothing is checked against them. They
+    /// count only for where the body's mass is (standing balance).
+    pub ballast: Vec<Rider>,
     /// Joints of the chain whose ranges are not independent.
     pub couplings: Vec<Coupling>,
 }
@@ -252,6 +256,7 @@ impl Chain {
             effector_link: Link::named(name),
             effector_point: String::new(),
             riders: Vec::new(),
+            ballast: Vec::new(),
             couplings: Vec::new(),
         }
     }

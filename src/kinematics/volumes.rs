@@ -39,6 +39,9 @@ pub struct Volumes {
     /// How each volume moved since a posture known to be clear (all
     /// [`Motion::Moved`] when there is none): what a check may skip.
     pub motion: Vec<Motion>,
+    /// The chain's ballast (`Chain::ballast`) where the posture carries
+    /// it: for where the body's mass is, not checked against anything.
+    pub ballast: Vec<Capsule>,
 }
 
 /// How a volume moved when one joint of a posture moved.
@@ -236,6 +239,13 @@ impl Chain {
                 None => (IsometryMatrix3::identity(), -1, Motion::Moved),
             };
             v.push(rider.capsule_at(&at), Owner::Rider(k), place, motion);
+        }
+        v.ballast.clear();
+        for rider in &self.ballast {
+            let at = rider
+                .anchor
+                .map_or_else(IsometryMatrix3::identity, |a| walk.frames[a]);
+            v.ballast.push(rider.capsule_at(&at));
         }
     }
 }
