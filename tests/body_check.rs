@@ -423,3 +423,153 @@ pub fn everything_met(
     }
     met
 }
+
+/// Whether a standing `body` in `posture` (the reach's effector
+/// `effector`'s path; the other joints at neutral) keeps its balance with
+/// the centre of mass within `share` of the way from the ankles to the
+/// feet's edges, worked out here: every solid of the upper body (each
+/// link a capsule between its frame origins, the effector's link whole,
+/// the spheres) weighed by its volume, the legs by theirs, the upper body
+/// taken sideways from where it is at rest; the feet's place tried a
+/// millimetre at a time within the legs' lean, not solved for. With
+/// `feet_under`, the feet are kept under the hips.
+pub fn balanced(
+    body: &Body,
+    effector: &str,
+    posture: &Posture,
+    share: f64,
+    feet_under: bool,
+) -> bool {
+    use reach::kinematics::LEGS_MASS_SHARE;
+    let legs = body.legs.as_ref().expect("a standing body has legs");
+    let upper = upper_centre(body, effector, Some(posture));
+    let rest_left = upper_centre(body, effector, None).y;
+    let leg_solids = |s: nalgebra::Vector2<f64>| -> Vec<(f64, Point3<f64>)> {
+        legs.standing_feet_moved(s)
+            .iter()
+            .map(|solid| match &solid.shape {
+                Shape::Capsule(c) => (
+                    volume(&c.a, &c.b, c.radius_mm),
+                    nalgebra::center(&c.a, &c.b),
+                ),
+                _ => panic!("legs are capsules"),
+            })
+            .collect()
+    };
+    let reach_mm = (legs.hip_height_mm - legs.ankle_height_mm) * 10f64.to_radians().sin();
+    let side = share * (legs.hip_width_mm / 2.0 + legs.foot_radius_mm);
+    let toe = share * 0.8 * legs.foot_mm;
+    let heel = share * 0.2 * legs.foot_mm;
+    let steps = if feet_under {
+        0
+    } else {
+        reach_mm.floor() as i64
+    };
+    // The centre over the feet moved `s`, as (x, y) less the move.
+    let over = |s: nalgebra::Vector2<f64>| {
+        let legs_at = weighted(&leg_solids(s));
+        let x = (1.0 - LEGS_MASS_SHARE) * upper.x + LEGS_MASS_SHARE * legs_at.x;
+        let y = (1.0 - LEGS_MASS_SHARE) * (upper.y - rest_left) + LEGS_MASS_SHARE * legs_at.y;
+        (x - s.x, y - s.y)
+    };
+    // Each way apart (the legs' centre follows the feet alike either
+    // way), then the two moves found together within the lean.
+    let least = |holds: &dyn Fn(i64) -> bool| {
+        (0..=steps)
+            .flat_map(|k| [k, -k])
+            .find(|&k| holds(k))
+            .map(|k| k as f64)
+    };
+    let v2 = nalgebra::Vector2::new;
+    let forward = least(&|k| {
+        let (x, _) = over(v2(k as f64, 0.0));
+        x <= toe && x >= -heel
+    });
+    let sideways = least(&|k| over(v2(0.0, k as f64)).1.abs() <= side);
+    match (forward, sideways) {
+        (Some(x), Some(y)) => {
+            let (cx, cy) = over(v2(x, y));
+            v2(x, y).norm() <= reach_mm + 1.5 && cx <= toe && cx >= -heel && cy.abs() <= side
+        }
+        _ => false,
+    }
+}
+
+/// The volume-weighted centre of the upper body in `posture` (none: at
+/// rest, every joint at neutral), in the base frame.
+fn upper_centre(body: &Body, effector: &str, posture: Option<&Posture>) -> Point3<f64> {
+    let e = body
+        .effector_index(effector)
+        .expect("the report's effector");
+    let frames = match posture {
+        Some(p) => body_frames(body, &body.path(body.effectors[e].joint), p, None),
+        None => body_frames(body, &[], &Posture(Vec::new(), Vec::new()), None),
+    };
+    let origin =
+        |j: Option<usize>| j.map_or(Point3::origin(), |j| point(&frames[j], &Vector3::zeros()));
+    let mut solids = Vec::new();
+    for (j, joint) in body.joints.iter().enumerate() {
+        let (a, b) = (origin(body.parents[j]), origin(Some(j)));
+        if joint.link.radius_mm > 0.0 && (b - a).norm() > 1e-6 {
+            solids.push((
+                volume(&a, &b, joint.link.radius_mm),
+                nalgebra::center(&a, &b),
+            ));
+        }
+    }
+    let hand = &body.effectors[e];
+    let end = hand.joint.map_or(Point3::from(hand.offset_mm), |j| {
+        point(&frames[j], &hand.offset_mm)
+    });
+    let last = origin(hand.joint);
+    solids.push((
+        volume(&last, &end, hand.link.radius_mm),
+        nalgebra::center(&last, &end),
+    ));
+    for s in &body.spheres {
+        let c = s.joint.map_or(Point3::from(s.centre_mm), |j| {
+            point(&frames[j], &s.centre_mm)
+        });
+        solids.push((volume(&c, &c, s.radius_mm), c));
+    }
+    weighted(&solids)
+}
+
+fn volume(a: &Point3<f64>, b: &Point3<f64>, r: f64) -> f64 {
+    std::f64::consts::PI * r * r * ((b - a).norm() + 4.0 / 3.0 * r)
+}
+
+fn weighted(solids: &[(f64, Point3<f64>)]) -> Point3<f64> {
+    let total: f64 = solids.iter().map(|(v, _)| v).sum();
+    let sum = solids
+        .iter()
+        .fold(Vector3::zeros(), |s, (v, p)| s + p.coords * *v);
+    Point3::from(sum / total)
+}
+
+/// Whether `body`'s legs, standing straight under the hips where the base
+/// stood, meet one of the room's boxes (by parry, as the posture's solids
+/// are checked here).
+pub fn legs_meet_boxes(body: &Body, room: &Room, base: &BaseReport) -> bool {
+    let Some(legs) = body.legs.as_ref() else {
+        return false;
+    };
+    legs.standing().iter().any(|solid| {
+        let Shape::Capsule(c) = &solid.shape else {
+            return false;
+        };
+        let part = Part {
+            a: to_room(base, &c.a),
+            b: to_room(base, &c.b),
+            radius_mm: c.radius_mm,
+            order: -1,
+            carried: false,
+            name: solid.name.clone(),
+        };
+        !boxes_met(&part, room, ROUNDING_GROW_MM).is_empty()
+    })
+}
+
+/// How far a solid is grown where whether it meets a box is asked of a
+/// rounded report.
+const ROUNDING_GROW_MM: f64 = 0.01;

@@ -141,3 +141,25 @@ fn every_measured_adult_is_a_person_measured_may_build() {
         }
     }
 }
+
+/// Standing, std::people's median man and 5th-percentile woman reach
+/// forward (functional reach, Duncan et al. 1990) no farther than the
+/// measured young adults' mean of their sex, and the tall man no farther
+/// than that mean and one standard deviation; none short of the mean of
+/// adults aged 70-87 (docs/calibration.md, "Standing forward reach").
+#[test]
+fn standing_people_lean_forward_no_farther_than_measured_people() {
+    use reach::functional_reach::functional_reach;
+    for (name, most_mm, least_mm) in [
+        ("woman_5th", 372.0, 266.0),
+        ("man_50th", 425.0, 334.0),
+        ("man_95th", 425.0 + 49.0, 334.0),
+    ] {
+        let body = reach::stdlib::body("people", name).unwrap();
+        let reach = functional_reach(name, &body).unwrap().reach_mm();
+        assert!(
+            reach <= most_mm && reach >= least_mm,
+            "{name}: {reach} mm, measured people {least_mm}-{most_mm} mm"
+        );
+    }
+}

@@ -8,13 +8,13 @@
 //! something a part meets.
 
 use nalgebra::{Matrix4, Vector4};
-use reach::kinematics::{Chain, JointKind};
+use reach::kinematics::{Body, Chain, JointKind, SUPPORT_SHARE};
 use reach::plugin::Registry;
 use reach::report::{BaseReport, Posture, ReachReport, TaskReport};
 use reach::scene::{OwnBody, Room};
 use reach::Input;
 
-use super::body_check::{dh, everything_met, parts, parts_with, Part};
+use super::body_check::{balanced, dh, everything_met, legs_meet_boxes, parts, parts_with, Part};
 use super::gaze::RIGHT_SHELVES;
 
 /// The hip, every joint frame's origin and the effector, in the room, for
@@ -185,6 +185,9 @@ fn reaches_checked(input: Input, name: &str) -> (usize, usize) {
         if let Some(wrong) = solids_disagree(&solids, room, own, r) {
             panic!("{name}: {wrong}");
         }
+        if let Some(wrong) = balance_disagrees(body, room, own, r) {
+            panic!("{name}: {wrong}");
+        }
         collisions += usize::from(r.collision.is_some());
         let e = *points.last().unwrap();
         let t = r.target_mm;
@@ -283,6 +286,9 @@ fn solids_disagree(solids: &[Part], room: &Room, own: &OwnBody, r: &ReachReport)
         }
     }
     let blocker = r.collision.as_ref()?;
+    if blocker.contains("balance") {
+        return None;
+    }
     let met = everything_met(solids, room, own, &r.base, ROUNDING_MM);
     let wall = ["the wall", "the floor", "the ceiling"]
         .iter()
@@ -293,6 +299,34 @@ fn solids_disagree(solids: &[Part], room: &Room, own: &OwnBody, r: &ReachReport)
         format!(
             "{} by {}: nothing meets {blocker} ({:?}): {met:?}",
             r.name, r.person, r.collision_part
+        )
+    })
+}
+
+/// Standing, where the report and the balance worked out here disagree
+/// (a margin of 0.02 of the support either way, for the effector's link,
+/// whose end the report rounds): a posture reported reached must be
+/// balanced; one reported to tip must not be, and one whose feet had no
+/// room must not be with the feet left under the hips, or there the legs
+/// meet a box.
+fn balance_disagrees(body: &Body, room: &Room, own: &OwnBody, r: &ReachReport) -> Option<String> {
+    own.balance.as_ref()?;
+    let share = SUPPORT_SHARE;
+    let said = r.collision.as_deref().unwrap_or("");
+    let wrong = if r.ok {
+        !balanced(body, &r.effector, &r.posture, share + 0.02, false)
+    } else if said.contains("balance (tipping") {
+        balanced(body, &r.effector, &r.posture, share - 0.02, false)
+    } else if said.contains("balance (no room for the feet") {
+        balanced(body, &r.effector, &r.posture, share - 0.02, true)
+            && !legs_meet_boxes(body, room, &r.base)
+    } else {
+        false
+    };
+    wrong.then(|| {
+        format!(
+            "{} by {}: reported {:?}, the balance worked out here disagrees",
+            r.name, r.person, r.collision
         )
     })
 }

@@ -11,7 +11,9 @@ use reach::scene::{Blocker, BoxObstacle, OwnBody, Room};
 use reach::solvers::fabrik::{solve_tree, TreeGoal, TreeProblem};
 use reach::solvers::FabrikSettings;
 
-use crate::body_check::effector_link_end;
+use reach::kinematics::SUPPORT_SHARE;
+
+use crate::body_check::{balanced, effector_link_end};
 
 /// A random joint: revolute (limits within +/-pi) or prismatic (0 to 200 mm).
 fn joint() -> impl Strategy<Value = Joint> {
@@ -293,6 +295,39 @@ proptest! {
             let path = body.path(body.effectors[g.effector].joint);
             let fk = body.chain(e).effector(&path.iter().map(|&j| s.q[j]).collect::<Vec<_>>());
             prop_assert!(((fk - g.target_mm).norm() - s.distances_mm[e]).abs() < 1e-6);
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+
+    /// Standing, for random postures of std::people's people, the
+    /// balance's answer agrees with a search of the feet's place a
+    /// millimetre at a time (`body_check::balanced`): a posture it holds
+    /// is held there (with the feet moved no farther than the legs lean),
+    /// and one it says tips is not held anywhere within that lean.
+    #[test]
+    fn the_balance_agrees_with_a_search_of_where_the_feet_may_go(
+        person in 0usize..3,
+        fractions in prop::collection::vec(0.0..1.0f64, 11),
+    ) {
+        let name = ["woman_5th", "man_50th", "man_95th"][person];
+        let body = reach::stdlib::body("people", name).unwrap();
+        let physique = reach::scene::Physique::of(&body);
+        let own = OwnBody::default().standing(&physique);
+        let balance = own.balance.as_ref().unwrap();
+        let chain = body.chain_named(Some("grip")).unwrap();
+        let mut q = posture(&chain, &fractions);
+        chain.pull_in(&mut q);
+        let reported = reach::report::Posture::new(&chain, &q);
+        let margin = 0.02;
+        match balance.feet_moved_mm(&chain.volumes(&q)) {
+            Ok(moved) => {
+                prop_assert!(moved.norm() <= balance.feet_shift_max_mm() + 1e-9);
+                prop_assert!(balanced(&body, "grip", &reported, SUPPORT_SHARE + margin, false));
+            }
+            Err(_) => prop_assert!(!balanced(&body, "grip", &reported, SUPPORT_SHARE - margin, false)),
         }
     }
 }

@@ -61,9 +61,10 @@ impl BasePlugin for Fixed {
     /// standing.
     fn build(&self, options: &Options, person: &Physique) -> Result<Box<dyn Base>, BaseError> {
         let s = FixedSettings::from_options(options)?;
-        let legs = person.legs.as_ref().map(|l| match person.posture {
-            Some(Stance::Seated) => l.seated(20f64.to_radians()),
-            _ => l.standing(),
+        let seated = person.posture == Some(Stance::Seated);
+        let legs = person.legs.as_ref().map(|l| match seated {
+            true => l.seated(20f64.to_radians()),
+            false => l.standing(),
         });
         let pelvis = person.legs.as_ref().map_or(0.0, |l| l.pelvis_mm);
         Ok(Box::new(FixedBase {
@@ -71,7 +72,10 @@ impl BasePlugin for Fixed {
                 position_mm: Point3::from(s.at_mm),
                 heading_rad: s.heading_rad,
             },
-            own: OwnBody::new(legs.unwrap_or_default(), pelvis),
+            own: match seated {
+                true => OwnBody::new(legs.unwrap_or_default(), pelvis),
+                false => OwnBody::new(legs.unwrap_or_default(), pelvis).standing(person),
+            },
         }))
     }
 }

@@ -4,8 +4,10 @@
 //! other moving parts (the hand through the trunk). The chain's solids come
 //! in the base frame and are carried into the room by the base pose.
 
-use crate::geometry::Capsule;
-use crate::kinematics::{Chain, Motion, Owner, Volumes};
+use nalgebra::Vector2;
+
+use crate::geometry::{Capsule, Shape};
+use crate::kinematics::{Chain, Motion, Owner, Tipping, Volumes};
 use crate::scene::{BasePose, Blocker, Collision, OwnBody};
 
 use super::Obstacles;
@@ -83,10 +85,58 @@ impl PlacedObstacles<'_> {
                 return Some(Collision { part, blocker });
             }
         }
-        v.self_hit().map(|(i, j)| Collision {
-            part: v.owners[j],
-            blocker: Blocker::Body(v.owners[i]),
-        })
+        if let Some((i, j)) = v.self_hit() {
+            return Some(Collision {
+                part: v.owners[j],
+                blocker: Blocker::Body(v.owners[i]),
+            });
+        }
+        self.balance_hit(chain, v, end_allowance_mm)
+    }
+
+    /// Standing, whether the posture of `v` loses the balance: no lean of
+    /// the legs puts the feet under its centre of mass, or the feet, where
+    /// the least lean puts them, meet the room (where a moving base did
+    /// not already place them) or the moving body.
+    fn balance_hit(&self, chain: &Chain, v: &Volumes, end_allowance_mm: f64) -> Option<Collision> {
+        let balance = self.own.balance.as_ref()?;
+        let lost = |t| {
+            Some(Collision {
+                part: Owner::Link(chain.joints.len()),
+                blocker: Blocker::Balance(t),
+            })
+        };
+        let feet_mm = match balance.feet_moved_mm(v) {
+            Ok(feet_mm) => feet_mm,
+            Err(t) => return lost(t),
+        };
+        let moved = feet_mm != Vector2::zeros();
+        if !moved && self.own.feet_placed {
+            return None;
+        }
+        let upright = balance.legs().standing();
+        let standing = balance.legs().standing_feet_moved(feet_mm);
+        for (up, now) in upright.iter().zip(&standing) {
+            let (Shape::Capsule(up), Shape::Capsule(now)) = (&up.shape, &now.shape) else {
+                continue;
+            };
+            if let Some(b) = self.obstacles.capsule_hit(&self.in_room(now)) {
+                let placed_so = self.own.feet_placed
+                    && self.obstacles.capsule_hits(&self.in_room(up)).any(|u| u == b);
+                if !placed_so {
+                    return lost(Tipping::NoFooting);
+                }
+            }
+        }
+        if !moved {
+            return None;
+        }
+        let legs = OwnBody::new(standing, self.own.pelvis_mm);
+        let upright = OwnBody::new(upright, self.own.pelvis_mm);
+        checked(chain, v, end_allowance_mm)
+            .any(|(tested, _, _)| legs.hit(&tested).is_some() && upright.hit(&tested).is_none())
+            .then_some(())
+            .and_then(|()| lost(Tipping::NoFooting))
     }
 }
 
@@ -110,6 +160,9 @@ impl PlacedObstacles<'_> {
         }
         if let Some((i, _)) = v.self_hit() {
             add(Blocker::Body(v.owners[i]));
+        }
+        if let Some(c) = self.balance_hit(chain, &v, end_allowance_mm) {
+            add(c.blocker);
         }
         met
     }

@@ -3,7 +3,7 @@
 //! the left, z up, origin at the hip point), seated on a seat or standing
 //! on the floor. The base decides which and where the seat is.
 
-use nalgebra::{Point3, Vector3};
+use nalgebra::{Point3, Vector2, Vector3};
 
 use crate::geometry::{Capsule, Shape, Solid};
 
@@ -65,17 +65,43 @@ impl Legs {
     /// thigh. (Started at the joint, a sideways bend within the trunk's
     /// range met the top of the thigh.)
     pub fn standing(&self) -> Vec<Solid> {
+        self.standing_feet_moved(Vector2::zeros())
+    }
+
+    /// Standing with the feet moved `feet_mm` (forward, to the left) from
+    /// under the hip point, legs straight and the hips at the same height:
+    /// the legs lean about the ankles as the hips move back (or sideways)
+    /// over the feet. A real person's hips drop by what the lean shortens
+    /// the legs' height ([`Legs::hip_drop_mm`]).
+    pub fn standing_feet_moved(&self, feet_mm: Vector2<f64>) -> Vec<Solid> {
         let knee_z = -self.thigh_mm();
         let ankle_z = knee_z - self.shank_mm();
         let thigh_top_z = (-self.thigh_radius_mm).max(knee_z);
         self.solids(|side| {
             let y = side * self.hip_width_mm / 2.0;
-            [
-                Point3::new(0.0, y, thigh_top_z),
-                Point3::new(0.0, y, knee_z),
-                Point3::new(0.0, y, ankle_z),
-            ]
+            let at = |z: f64| {
+                let moved = feet_mm * (z / ankle_z);
+                Point3::new(moved.x, y + moved.y, z)
+            };
+            [at(thigh_top_z), at(knee_z), at(ankle_z)]
         })
+    }
+
+    /// How much lower the hips of straight legs are with the feet moved
+    /// `moved_mm` from under them than over them.
+    pub fn hip_drop_mm(&self, moved_mm: f64) -> f64 {
+        let legs_mm = self.hip_height_mm - self.ankle_height_mm;
+        legs_mm - (legs_mm.powi(2) - moved_mm.powi(2)).max(0.0).sqrt()
+    }
+
+    /// Where the ankle joints are along the foot: the heel
+    /// `HEEL_FRACTION` of the foot behind, the toe the rest ahead.
+    pub fn heel_behind_ankle_mm(&self) -> f64 {
+        HEEL_FRACTION * self.foot_mm
+    }
+
+    pub fn toe_ahead_of_ankle_mm(&self) -> f64 {
+        (1.0 - HEEL_FRACTION) * self.foot_mm
     }
 
     /// Seated: thighs level on the seat (`hip_above_seat` below the hip
@@ -123,12 +149,12 @@ impl Legs {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
     /// The 50th-percentile man's legs (Drillis & Contini fractions of
     /// 1755 mm; ANSUR II radii).
-    fn legs() -> Legs {
+    pub(in crate::kinematics) fn legs() -> Legs {
         Legs {
             hip_height_mm: 930.0,
             knee_height_mm: 500.0,

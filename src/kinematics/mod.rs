@@ -4,8 +4,10 @@
 //! their limits, `ellipse.rs`, or one following two others' elevation,
 //! `rhythm.rs`);
 //! bodies (`body.rs`): joints as a tree with several effectors; the legs
-//! no joint moves (`legs.rs`).
+//! no joint moves (`legs.rs`), and a standing body's balance over them
+//! (`balance.rs`).
 
+mod balance;
 mod body;
 mod chain;
 mod coupling;
@@ -20,6 +22,7 @@ mod rhythm;
 mod urdf;
 mod volumes;
 
+pub use balance::{upper_centre_mm, Balance, Tipping, LEGS_MASS_SHARE, SUPPORT_SHARE};
 pub use body::{hand_side, twin_name, Body, Effector, Sphere, LEFT_PREFIX};
 #[cfg(test)]
 pub(crate) use chain::revolute;

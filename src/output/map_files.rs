@@ -17,7 +17,7 @@ use nalgebra::{Vector2, Vector3};
 use super::colours::{cell_colour, share_colour, MISSED, REACHED, SEEN, SHARES, SHORT, THROUGH};
 use super::view::RoomView;
 use crate::escape::markup;
-use crate::report::{quoted, MapCell, MapReport, PopulationReport, ShareCell, ShareGrid};
+use crate::report::{quoted, MapCell, MapReport, PopulationReport, ShareCell, ShareGrid, BALANCE};
 
 /// File names for a map: `map-SURFACE-PERSON.csv` and `.svg`
 /// (`gaze_map-...` for a gaze map), and a map of one effector other than
@@ -150,6 +150,7 @@ struct PictureCell {
 /// reached only through, and why where the map found out.
 fn missed_words(c: &MapCell) -> String {
     let missed = match c.through() {
+        Some(what) if what.starts_with(BALANCE) => format!("reached only losing {what}"),
         Some(what) => format!("reached only through {}", quoted(what)),
         None => format!("{} mm short", c.distance_mm),
     };

@@ -30,7 +30,7 @@ pub use expectation::ExpectationReport;
 pub use gaze::{GazeReport, Sight};
 pub use map::{MapCell, MapReport};
 pub use not_placed::NotPlacedReport;
-pub use parts::{deg, fixed, mm, Asked, BaseReport, Names, Posture};
+pub use parts::{deg, fixed, mm, Asked, BaseReport, Names, Posture, BALANCE};
 pub use population::{wilson95, Excluded, PopulationReport, ShareCell, ShareGrid};
 pub use reach::{quoted, ReachReport};
 pub use reach_and_gaze::ReachAndGazeReport;

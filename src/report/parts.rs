@@ -161,6 +161,11 @@ impl Asked<'_> {
     }
 }
 
+/// What a standing person's balance is called where a posture loses it
+/// (`Blocker::Balance`): "the person loses their balance (tipping
+/// forwards)".
+pub const BALANCE: &str = "their balance";
+
 /// What the parts of a person and the things they meet are called.
 pub struct Names<'a> {
     pub room: &'a Room,
@@ -170,7 +175,10 @@ pub struct Names<'a> {
 
 impl Names<'_> {
     pub fn part(&self, c: &Collision) -> String {
-        self.chain.volume_name(c.part).to_string()
+        match c.blocker {
+            Blocker::Balance(_) => "the person".into(),
+            _ => self.chain.volume_name(c.part).to_string(),
+        }
     }
 
     pub fn blocker(&self, b: Blocker) -> String {
@@ -183,6 +191,7 @@ impl Names<'_> {
                 .get(i)
                 .map_or_else(String::new, |s| s.name.clone()),
             Blocker::Body(owner) => self.chain.volume_name(owner).to_string(),
+            Blocker::Balance(t) => format!("{BALANCE} ({})", t.words()),
         }
     }
 }

@@ -7,7 +7,7 @@ use nalgebra::Point3;
 use serde::Serialize;
 
 use super::entry_kind::{ok_words, placed_answer_changes, Asks, EntryKind, Tolerance};
-use super::parts::{point, COMFORT_TOLERANCE, DISTANCE_TOLERANCE_MM};
+use super::parts::{point, BALANCE, COMFORT_TOLERANCE, DISTANCE_TOLERANCE_MM};
 use super::{fixed, mm, Answer, Asked, BaseReport, Figure, Posture, ReportKind, Why};
 use crate::scene::Placement;
 use serde_json::Value;
@@ -23,10 +23,12 @@ pub struct ReachReport {
     /// Distance left between effector and target.
     pub distance_mm: f64,
     /// What a part of the posture passes through: an obstacle of the room,
-    /// a wall, or the person's own body or base ("the left thigh"); null:
-    /// nothing, or collisions not checked.
+    /// a wall, or the person's own body or base ("the left thigh"); or,
+    /// standing, "their balance (tipping forwards)" where the posture
+    /// loses it; null: nothing, or collisions not checked.
     pub collision: Option<String>,
-    /// Which part of the person passes through it ("the right forearm").
+    /// Which part of the person passes through it ("the right forearm";
+    /// "the person" where it is their balance).
     pub collision_part: Option<String>,
     pub tolerance_mm: f64,
     /// Sweeps (solver iterations) of the kept solution.
@@ -54,6 +56,11 @@ pub struct ReachReport {
     /// posture only where no placement facing the target reached it.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub behind: bool,
+    /// Standing: where the feet went to keep the person's balance, moved
+    /// from under the hip point (forward, to the left), mm; absent where
+    /// they stay under it, where it is not reached, and seated.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub feet_moved_mm: Option<[f64; 2]>,
 }
 
 impl ReachReport {
@@ -82,6 +89,7 @@ impl ReachReport {
             why: Vec::new(),
             behind: placement.solution.reaches(asked.tolerance_mm)
                 && placement.pose.has_behind(&target),
+            feet_moved_mm: feet_moved(asked, placement),
         }
     }
 
@@ -110,6 +118,40 @@ impl ReachReport {
     }
 }
 
+/// Standing, where the feet of the placement's posture go to keep the
+/// balance, where it reaches and they leave the hip point's vertical.
+fn feet_moved(asked: &Asked<'_>, placement: &Placement) -> Option<[f64; 2]> {
+    let balance = asked.own.balance.as_ref()?;
+    let solution = &placement.solution;
+    if !solution.reaches(asked.tolerance_mm) {
+        return None;
+    }
+    let moved = balance
+        .feet_moved_mm(&asked.chain.volumes(&solution.q))
+        .ok()?;
+    let [x, y] = [mm(moved.x), mm(moved.y)];
+    (x != 0.0 || y != 0.0).then_some([x, y])
+}
+
+/// "the feet 62 mm ahead of and 10 mm to the left of the hip point, for
+/// balance".
+fn feet_words([forward, left]: [f64; 2]) -> String {
+    let mut ways = Vec::new();
+    if forward != 0.0 {
+        let way = if forward > 0.0 { "ahead of" } else { "behind" };
+        ways.push(format!("{:.0} mm {way}", forward.abs()));
+    }
+    if left != 0.0 {
+        let way = if left > 0.0 {
+            "to the left of"
+        } else {
+            "to the right of"
+        };
+        ways.push(format!("{:.0} mm {way}", left.abs()));
+    }
+    format!("the feet {} the hip point, for balance", ways.join(" and "))
+}
+
 impl ReportKind for ReachReport {
     fn answer(&self) -> Answer {
         Answer {
@@ -134,6 +176,9 @@ impl ReportKind for ReachReport {
             self.base.write_line(out, what);
             self.posture.write_line(out);
             let _ = writeln!(out, "  distance to {} (`{}`)", self.point, self.effector);
+            if let Some(feet) = self.feet_moved_mm {
+                let _ = writeln!(out, "  {}", feet_words(feet));
+            }
             if self.behind {
                 let _ = writeln!(
                     out,
@@ -147,7 +192,11 @@ impl ReportKind for ReachReport {
             let _ = writeln!(out, "\n{name} {verb} {person}: the base was not placed");
         }
         if let (Some(part), Some(what)) = (&self.collision_part, &self.collision) {
-            let _ = writeln!(out, "  {part} passes through {}", quoted(what));
+            if what.starts_with(BALANCE) {
+                let _ = writeln!(out, "  {part} loses {what}");
+            } else {
+                let _ = writeln!(out, "  {part} passes through {}", quoted(what));
+            }
         }
         for why in &self.why {
             let _ = writeln!(out, "  why: {}", why.sentence());

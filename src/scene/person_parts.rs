@@ -7,7 +7,7 @@
 use nalgebra::Point3;
 
 use crate::geometry::{Capsule, Cuboid, Shape, Solid};
-use crate::kinematics::{Body, Legs, Owner, Stance};
+use crate::kinematics::{upper_centre_mm, Balance, Body, Legs, Owner, Stance};
 
 /// What a base needs to know of the person on it.
 #[derive(Clone, Debug, PartialEq)]
@@ -18,6 +18,9 @@ pub struct Physique {
     /// The upright trunk, head and shoulders: least and greatest corners
     /// in the base frame, at the neutral posture.
     pub column_mm: Option<[Point3<f64>; 2]>,
+    /// How far to the left of the midplane the centre of mass of the upper
+    /// body's solids is at rest (`kinematics::Balance`).
+    pub rest_left_mm: f64,
 }
 
 impl Physique {
@@ -26,8 +29,20 @@ impl Physique {
             legs: body.legs.clone(),
             posture: body.posture,
             column_mm: column(body),
+            rest_left_mm: rest_left_mm(body),
         }
     }
+}
+
+/// How far to the left of the midplane the centre of mass of `body`'s
+/// upper body is at rest: its first chain's solids and the rest of the
+/// body carried as ballast.
+fn rest_left_mm(body: &Body) -> f64 {
+    if body.effectors.is_empty() {
+        return 0.0;
+    }
+    let chain = body.chain(0);
+    upper_centre_mm(&chain.volumes(&chain.neutral())).map_or(0.0, |c| c.y)
 }
 
 /// The upright column of `body`: the first link of its first chain (the
@@ -66,6 +81,12 @@ pub struct OwnBody {
     pub pelvis_mm: f64,
     /// Each solid's axis-aligned bounds.
     bounds: Vec<[Point3<f64>; 2]>,
+    /// Standing: the legs' balance, which every posture must keep.
+    pub balance: Option<Balance>,
+    /// Whether the base placed the legs clear of the room, as a base that
+    /// moves does (a fixed base puts the hips where it is told, and the
+    /// feet under them must be checked).
+    pub feet_placed: bool,
 }
 
 impl OwnBody {
@@ -74,6 +95,25 @@ impl OwnBody {
             bounds: solids.iter().map(|s| s.shape.bounds()).collect(),
             solids,
             pelvis_mm,
+            balance: None,
+            feet_placed: false,
+        }
+    }
+
+    /// This body, of `person`, standing on their legs: every posture must
+    /// keep its balance over them, the feet clear of the room.
+    pub fn standing(mut self, person: &Physique) -> Self {
+        let rest = person.rest_left_mm;
+        self.balance = person.legs.clone().map(|l| Balance::new(l, rest));
+        self
+    }
+
+    /// [`OwnBody::standing`], on a base that placed the legs clear of the
+    /// room: the feet are checked only where the balance moves them.
+    pub fn standing_placed(self, person: &Physique) -> Self {
+        OwnBody {
+            feet_placed: true,
+            ..self.standing(person)
         }
     }
 

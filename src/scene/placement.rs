@@ -4,7 +4,7 @@
 
 use nalgebra::{Point3, Rotation2, Vector3};
 
-use crate::kinematics::{Chain, Owner};
+use crate::kinematics::{Chain, Owner, Tipping};
 
 /// Where the base stands: its origin (the hip point) in the room, and the
 /// direction it faces, counter-clockwise from the room's x axis.
@@ -127,6 +127,10 @@ pub enum Blocker {
     Own(usize),
     /// Another part of the person's moving body (a volume of the chain).
     Body(Owner),
+    /// The person's balance, standing: no lean of the legs puts the feet
+    /// under the centre of mass, or the feet cannot go where it would
+    /// (`kinematics::Balance`).
+    Balance(Tipping),
 }
 
 /// The room's six sides.

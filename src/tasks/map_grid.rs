@@ -675,7 +675,10 @@ fn at_board_edge(grid: &Grid, solved: &[Solved], i: usize) -> bool {
 /// 100,000-point map of `bench_scale`; these descents 0.04 s for its 512
 /// such points, 77 points more on 160 random maps).
 fn at_body_edge(grid: &Grid, solved: &[Solved], i: usize) -> bool {
-    matches!(solved[i].through, Some(Blocker::Own(_) | Blocker::Body(_)))
+    matches!(
+        solved[i].through,
+        Some(Blocker::Own(_) | Blocker::Body(_) | Blocker::Balance(_))
+    )
         && at_edge(grid, solved, i)
 }
 
