@@ -81,7 +81,7 @@ fn a_target_just_past_a_limit_names_the_joint() {
 fn a_far_target_is_out_of_reach_by_its_distance_less_the_arm() {
     let report = run(&scenario(true));
     let far = reach_of(&report, "far", "pat");
-    let [Why::OutOfReach { closest_mm }] = far.why.as_slice() else {
+    let [Why::OutOfReach { closest_mm, .. }] = far.why.as_slice() else {
         panic!("{far:?}")
     };
     // 1400 mm from the shoulder, 600 mm of arm.
@@ -290,7 +290,7 @@ fn a_map_that_asks_why_names_the_board_and_the_points_out_of_reach() {
         let from_shoulder = ((x - 1000.0).powi(2) + (y - 1000.0).powi(2)).sqrt();
         if from_shoulder > 620.0 {
             assert!(
-                matches!(a.why(), [Why::OutOfReach { closest_mm }] if *closest_mm > 0.0),
+                matches!(a.why(), [Why::OutOfReach { closest_mm, .. }] if *closest_mm > 0.0),
                 "{a:?}"
             );
             far += 1;
@@ -376,4 +376,44 @@ fn a_chair_kept_away_by_a_counter_is_kept_away_not_blocked_by_its_backrest() {
     let why = format!("{:?}", r.why);
     assert!(why.contains("KeptAway") && why.contains("counter"), "{why}");
     assert!(!why.contains("backrest"), "{why}");
+}
+
+/// A standing person's target on the floor, out of reach, says that a
+/// real person squats or kneels for it (the model does neither); one at
+/// the same distance but high above the head does not.
+#[test]
+fn a_standing_persons_target_below_the_knees_says_the_model_does_not_squat() {
+    let report = run("units mm deg
+use std::people
+room r {
+  size 3000 x 3000 x 2500
+  target on_floor at (1250, 1500, 60)
+  target up_high at (1250, 1500, 2400)
+}
+person ann { mannequin woman_5th base fixed { at (1000, 1500, 806) heading 0 } }
+reach on_floor, up_high by ann
+");
+    let low = reach_of(&report, "on_floor", "ann");
+    assert!(
+        matches!(
+            low.why[..],
+            [Why::OutOfReach {
+                below_the_knees: true,
+                ..
+            }]
+        ),
+        "{low:?}"
+    );
+    assert!(low.why[0].sentence().contains("squats or kneels"));
+    let high = reach_of(&report, "up_high", "ann");
+    assert!(
+        matches!(
+            high.why[..],
+            [Why::OutOfReach {
+                below_the_knees: false,
+                ..
+            }]
+        ),
+        "{high:?}"
+    );
 }

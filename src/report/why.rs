@@ -48,8 +48,14 @@ pub enum Why {
     CannotGetThere { names: Vec<String> },
     /// Out of the arm's reach with nothing in the way: with the room's
     /// obstacles and the person's own body gone, the hand comes this close
-    /// at best.
-    OutOfReach { closest_mm: f64 },
+    /// at best. `below_the_knees`: the person stands and the target is
+    /// lower than their knees, where a real person squats or kneels, which
+    /// the model does not.
+    OutOfReach {
+        closest_mm: f64,
+        #[serde(default, skip_serializing_if = "is_false")]
+        below_the_knees: bool,
+    },
     /// `reach ... and gaze`: the hand reaches the target alone (searched
     /// as a `reach`), but no posture found brings it there while the eyes
     /// look at it from within the legible range.
@@ -64,6 +70,7 @@ impl Why {
     pub fn out_of_reach(closest_mm: f64) -> Self {
         Why::OutOfReach {
             closest_mm: mm(closest_mm),
+            below_the_knees: false,
         }
     }
 
@@ -168,8 +175,16 @@ impl Why {
             ),
             Why::WhileLooking => "not while looking at it: the hand reaches it alone, but no posture found brings it there while the eyes look at it from within the legible range (the neck's and eyes' limits, the line of sight)".into(),
             Why::NoApproach => "no place to approach it from: wherever the base fits, its `approach` or `heading` options do not let it face the target so; no posture was looked for".into(),
-            Why::OutOfReach { closest_mm } => format!(
-                "out of reach: even with the room empty (no furniture on the floor or in the arm's way) and without the person's own body in the way, the hand comes no closer than {closest_mm:.1} mm"
+            Why::OutOfReach {
+                closest_mm,
+                below_the_knees,
+            } => format!(
+                "out of reach: even with the room empty (no furniture on the floor or in the arm's way) and without the person's own body in the way, the hand comes no closer than {closest_mm:.1} mm{}",
+                if *below_the_knees {
+                    " (the target is below the knees: a real person squats or kneels for it, which the model does not)"
+                } else {
+                    ""
+                }
             ),
         }
     }

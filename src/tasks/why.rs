@@ -26,7 +26,7 @@ use crate::allowance::Allowance;
 use crate::collision::{obstacle_bounds, Obstacles, PlacedObstacles, TOUCH_MARGIN_MM};
 use crate::kinematics::{Chain, JointKind};
 use crate::plugin::{Base, Placement, ReachQuery, Search, TaskInput};
-use crate::report::{Why, WIDENED_DEG};
+use crate::report::{mm, Why, WIDENED_DEG};
 use crate::scene::{Blocker, OwnBody, Room};
 
 /// How many of the room's obstacles a failed reach met are each tried
@@ -124,9 +124,23 @@ impl Failed<'_> {
             }
         }
         if found.is_empty() {
-            found.push(Why::out_of_reach(closest_mm));
+            found.push(Why::OutOfReach {
+                closest_mm: mm(closest_mm),
+                below_the_knees: self.below_the_knees(own),
+            });
         }
         Found::Why(found)
+    }
+
+    /// Whether the person stands and the target is lower than their knees
+    /// (the floor their legs put below the hip point).
+    fn below_the_knees(&self, own: &OwnBody) -> bool {
+        let Some(balance) = own.balance.as_ref() else {
+            return false;
+        };
+        let legs = balance.legs();
+        let floor_mm = self.placement.pose.position_mm.z - legs.hip_height_mm;
+        self.target_mm.z < floor_mm + legs.knee_height_mm
     }
 
     /// Where the room has doors and the base moves: whether the target is
