@@ -67,14 +67,15 @@ impl BasePlugin for Fixed {
             false => l.standing(),
         });
         let pelvis = person.legs.as_ref().map_or(0.0, |l| l.pelvis_mm);
+        let own = OwnBody::new(legs.unwrap_or_default(), pelvis);
         Ok(Box::new(FixedBase {
             pose: BasePose {
                 position_mm: Point3::from(s.at_mm),
                 heading_rad: s.heading_rad,
             },
             own: match seated {
-                true => OwnBody::new(legs.unwrap_or_default(), pelvis),
-                false => OwnBody::new(legs.unwrap_or_default(), pelvis).standing(person),
+                true => own,
+                false => own.standing(person),
             },
         }))
     }

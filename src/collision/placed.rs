@@ -114,9 +114,10 @@ impl PlacedObstacles<'_> {
         if !moved && self.own.feet_placed {
             return None;
         }
-        let upright = balance.legs().standing();
-        let standing = balance.legs().standing_feet_moved(feet_mm);
-        for (up, now) in upright.iter().zip(&standing) {
+        let upright = balance.upright_legs();
+        let moved_legs = moved.then(|| balance.legs().standing_feet_moved(feet_mm));
+        let standing = moved_legs.as_deref().unwrap_or(upright);
+        for (up, now) in upright.iter().zip(standing) {
             let (Shape::Capsule(up), Shape::Capsule(now)) = (&up.shape, &now.shape) else {
                 continue;
             };
@@ -128,15 +129,15 @@ impl PlacedObstacles<'_> {
                 }
             }
         }
-        if !moved {
-            return None;
+        let legs = OwnBody::new(moved_legs?, self.own.pelvis_mm);
+        let upright = OwnBody::new(upright.to_vec(), self.own.pelvis_mm);
+        let in_the_way = checked(chain, v, end_allowance_mm)
+            .any(|(tested, _, _)| legs.hit(&tested).is_some() && upright.hit(&tested).is_none());
+        if in_the_way {
+            lost(Tipping::NoFooting)
+        } else {
+            None
         }
-        let legs = OwnBody::new(standing, self.own.pelvis_mm);
-        let upright = OwnBody::new(upright, self.own.pelvis_mm);
-        checked(chain, v, end_allowance_mm)
-            .any(|(tested, _, _)| legs.hit(&tested).is_some() && upright.hit(&tested).is_none())
-            .then_some(())
-            .and_then(|()| lost(Tipping::NoFooting))
     }
 }
 

@@ -37,6 +37,9 @@ pub const LEAN_MAX_RAD: f64 = 10.0 * std::f64::consts::PI / 180.0;
 #[derive(Clone, Debug, PartialEq)]
 pub struct Balance {
     legs: Legs,
+    /// The legs' solids standing straight, the feet under the hips: made
+    /// once, since every posture checked with its feet there asks for them.
+    upright: Vec<Solid>,
     /// How far to the left of the midplane the upper body's centre of
     /// mass is at rest: a posture's is taken from there, since a person
     /// standing at rest is balanced side to side whatever the mannequin
@@ -87,6 +90,7 @@ impl Balance {
         Balance {
             legs_follow: (forward.x - under.x) / PROBE_MM,
             legs_centre_mm: under,
+            upright: legs.standing(),
             legs,
             rest_left_mm,
         }
@@ -94,6 +98,12 @@ impl Balance {
 
     pub fn legs(&self) -> &Legs {
         &self.legs
+    }
+
+    /// The legs' solids standing straight, the feet under the hips
+    /// ([`Legs::standing`]).
+    pub fn upright_legs(&self) -> &[Solid] {
+        &self.upright
     }
 
     /// The most the feet move from under the hips, any way.
