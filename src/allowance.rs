@@ -5,6 +5,8 @@
 //! and what is kept for watch mode the engine's (`crate::engine`), not the
 //! solver's.
 
+use std::ops::Deref;
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 
 use crate::kept::Memo;
@@ -124,6 +126,53 @@ impl Allowance for Unmetered {
     }
     fn shared(&self) -> Arc<dyn Allowance + Send> {
         Arc::new(Unmetered(Arc::clone(&self.0)))
+    }
+}
+
+/// An allowance that adds what is spent through it to a count of its
+/// own as well: one solve's work, which watch mode keeps with the solve
+/// (`engine::KeptSolves`). Everything else is the inner allowance's.
+pub struct Counted<A> {
+    inner: A,
+    units: Arc<AtomicU64>,
+}
+
+impl<A> Counted<A> {
+    /// `inner`, counting what is spent through it into `units`.
+    pub fn new(inner: A, units: Arc<AtomicU64>) -> Self {
+        Counted { inner, units }
+    }
+}
+
+impl<A> Allowance for Counted<A>
+where
+    A: Deref + Sync,
+    A::Target: Allowance,
+{
+    fn spend(&self, units: u64) -> bool {
+        self.units.fetch_add(units, Ordering::Relaxed);
+        self.inner.spend(units)
+    }
+    fn exhausted(&self) -> bool {
+        self.inner.exhausted()
+    }
+    fn would_stay_within(&self, units: u64) -> bool {
+        self.inner.would_stay_within(units)
+    }
+    fn first_look(&self, key: u64) -> bool {
+        self.inner.first_look(key)
+    }
+    fn flight_within(&self, key: u64, units: u64) -> bool {
+        self.inner.flight_within(key, units)
+    }
+    fn flight_landed(&self, key: u64) {
+        self.inner.flight_landed(key)
+    }
+    fn memo(&self) -> Arc<Memo> {
+        self.inner.memo()
+    }
+    fn shared(&self) -> Arc<dyn Allowance + Send> {
+        Arc::new(Counted::new(self.inner.shared(), Arc::clone(&self.units)))
     }
 }
 

@@ -18,11 +18,10 @@
 //! passes a limit whatever order its terms come in). Once past, solves
 //! stop early and the run's answers are thrown away.
 //!
-//! What one solve charges can be counted on its own thread
-//! ([`counting_one`]), so that a solve watch mode keeps from an earlier
-//! run is charged what it cost when it ran (`engine::KeptSolves`).
+//! What one solve charges is counted by the allowances it is given
+//! (`allowance::Counted`), so that a solve watch mode keeps from an
+//! earlier run is charged what it cost when it ran (`engine::KeptSolves`).
 
-use std::cell::Cell;
 use std::collections::{BTreeMap, BTreeSet};
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::{Arc, LazyLock, Mutex};
@@ -235,7 +234,6 @@ impl Meter {
 
     /// Add `units`; whether the run is still within its limit.
     pub fn charge(&self, units: u64) -> bool {
-        count_on_thread(units);
         self.own.fetch_add(units, Ordering::Relaxed);
         self.run.as_ref().is_none_or(|run| run.charge(units))
     }
@@ -265,32 +263,6 @@ fn memo_of(run: Option<&Arc<RunWork>>) -> Arc<Memo> {
     run.map_or_else(|| Arc::new(Memo::forgetting()), |run| Arc::clone(&run.memo))
 }
 
-thread_local! {
-    /// What the solve running on this thread has charged, where it is
-    /// being counted ([`counting_one`]).
-    static COUNTED: Cell<Option<u64>> = const { Cell::new(None) };
-}
-
-/// `work` run on this thread, counting what it charges any meter or
-/// account (all of it, whether told at once or in batches, must be told
-/// before it returns, as a solve's tally is when dropped): its result and
-/// that count. A count already being made on this thread is set aside
-/// while `work` runs, and takes its count too.
-pub fn counting_one<R>(work: impl FnOnce() -> R) -> (R, u64) {
-    let outer = COUNTED.replace(Some(0));
-    let result = work();
-    let units = COUNTED.replace(outer).unwrap_or(0);
-    count_on_thread(units);
-    (result, units)
-}
-
-/// `units` added to the count being made on this thread, if any.
-fn count_on_thread(units: u64) {
-    if let Some(sum) = COUNTED.get() {
-        COUNTED.set(Some(sum.saturating_add(units)));
-    }
-}
-
 /// A meter's counts, shared: work charged where it is done, by what has
 /// no meter to hand (a mesh check, by the triangles it tested). What a
 /// task's account is charged is the task's, whichever thread does it.
@@ -309,7 +281,6 @@ impl Account {
 
     /// Add `units` to the task's work and its run's.
     pub fn charge(&self, units: u64) {
-        count_on_thread(units);
         self.own.fetch_add(units, Ordering::Relaxed);
         if let Some(run) = &self.run {
             run.charge(units);
@@ -336,31 +307,29 @@ impl Allowance for Account {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::allowance::Tally;
+    use crate::allowance::{Counted, Tally};
 
     #[test]
-    fn one_solve_counts_what_it_charges_and_the_count_around_it_takes_it_in() {
+    fn a_counted_allowance_counts_what_is_spent_through_it_and_its_shares() {
         let run = RunWork::new(u64::MAX);
         let meter = Meter::of(&run);
-        let account = meter.account();
         meter.charge(5);
-        let ((_, inner), outer) = counting_one(|| {
-            meter.charge(3);
-            counting_one(|| {
-                account.charge(7);
-                let mut tally = Tally::new(&meter);
-                tally.add(11);
-            })
-        });
+        let units = Arc::new(AtomicU64::new(0));
+        let counted = Counted::new(&meter as &dyn Allowance, Arc::clone(&units));
+        counted.spend(3);
+        counted.shared().spend(7);
+        let mut tally = Tally::new(&counted);
+        tally.add(11);
+        drop(tally);
         assert_eq!(
-            inner, 18,
-            "the account's charge and the tally's, told when dropped"
+            units.load(Ordering::Relaxed),
+            21,
+            "its own, its share's and the tally's, told when dropped"
         );
-        assert_eq!(outer, 21);
         assert_eq!(meter.spent(), 26);
-        // Charges on another thread are not this thread's solve's.
-        let (_, none) = counting_one(|| std::thread::scope(|s| _ = s.spawn(|| meter.charge(2))));
-        assert_eq!(none, 0);
+        // What is charged past it is not its count.
+        meter.charge(2);
+        assert_eq!(units.load(Ordering::Relaxed), 21);
     }
 
     #[test]

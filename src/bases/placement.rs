@@ -39,7 +39,7 @@ use crate::geometry::Solid;
 use crate::kept::{Memo, Table};
 use crate::kinematics::Chain;
 use crate::plugin::{
-    Base, BasePose, Fit, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Solver, Tries,
+    Asked, Base, BasePose, Fit, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Solver, Tries,
 };
 use crate::scene::{column_solid, hash_bits, Blocked, OwnBody, Physique, Room};
 
@@ -663,13 +663,22 @@ impl PreparedMobile<'_> {
         let target = query.target_room_mm.coords.iter();
         hash_bits(target.chain(face.iter().flat_map(|f| f.iter())), &mut h);
         face.is_some().hash(&mut h);
-        let sample = || {
-            let found = self.sampled_here(query).into_iter();
+        let sample = |asked: Asked<'_>| {
+            let query = ReachQuery {
+                obstacles: asked.obstacles,
+                allowance: asked.allowance,
+                ..*query
+            };
+            let found = self.sampled_here(&query).into_iter();
             found
                 .map(|c| (c.pose, c.start.unwrap_or_default()))
                 .collect()
         };
-        let placements = solves.placements(h.finish(), query.allowance, sample);
+        let asked = Asked {
+            obstacles: query.obstacles,
+            allowance: query.allowance,
+        };
+        let placements = solves.placements(h.finish(), asked, sample);
         (placements.into_iter())
             .map(|(pose, q)| Candidate {
                 start: Some(q),

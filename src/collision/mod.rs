@@ -14,7 +14,7 @@ mod touched;
 pub use beyond::{OutOfReach, Verdict, BOXES};
 pub use placed::PlacedObstacles;
 pub use touched::{
-    bounds_meet, bounds_within, recording_one, OneRecord, Touched, TouchedSet, TOUCH_MARGIN_MM,
+    bounds_meet, bounds_within, OneRecord, SolveRecord, Touched, TouchedSet, TOUCH_MARGIN_MM,
 };
 
 use std::cell::Cell;
@@ -25,7 +25,7 @@ use parry3d_f64::bounding_volume::BoundingVolume;
 use parry3d_f64::query::{self, Ray, RayCast};
 use parry3d_f64::shape::{Capsule as ParryCapsule, Shape};
 
-use crate::allowance::Allowance;
+use crate::allowance::{Allowance, Counted};
 use crate::geometry::{Capsule, Cuboid};
 use crate::meter::capsule_check;
 use crate::scene::{Blocker, MeshObstacle, MeshPart, MeshShape, Room, Wall};
@@ -44,11 +44,14 @@ struct Mesh {
     bounds: [Point3<f64>; 2],
 }
 
+/// A box obstacle: its name for reports, its solid and its bounds.
+type NamedBox = (String, Cuboid, [Point3<f64>; 2]);
+
 /// The obstacles of one room.
 #[derive(Clone, Default)]
 pub struct Obstacles {
-    boxes: Vec<(String, Cuboid, [Point3<f64>; 2])>,
-    meshes: Vec<Mesh>,
+    boxes: Arc<[NamedBox]>,
+    meshes: Arc<[Mesh]>,
     /// The room's size: its walls, floor and ceiling.
     size_mm: Vector3<f64>,
     /// How close a solid may come to an obstacle.
@@ -59,6 +62,9 @@ pub struct Obstacles {
     /// Where the obstacles the questions come near are recorded (watch
     /// mode's cache), if anywhere.
     touched: Option<Arc<Touched>>,
+    /// The record of the one solve these obstacles are asked by, if one is
+    /// being made (`Obstacles::recording_solve`).
+    solve: Option<Arc<SolveRecord>>,
     /// The room's boxes and meshes, which a check is charged for
     /// ([`crate::meter`]) whichever of them a search leaves out.
     charged: usize,
@@ -81,7 +87,7 @@ impl Obstacles {
     /// `clearance_mm` to one counts as touching it. A mesh is solid where
     /// its triangles close and face outwards, else only its surface counts.
     pub fn new(room: &Room, clearance_mm: f64) -> Self {
-        let boxes = room
+        let boxes: Vec<_> = room
             .boxes
             .iter()
             .map(|b| {
@@ -90,7 +96,7 @@ impl Obstacles {
             })
             .collect();
         let first_mesh = room.boxes.len();
-        let meshes = room
+        let meshes: Vec<Mesh> = room
             .meshes
             .iter()
             .enumerate()
@@ -107,12 +113,13 @@ impl Obstacles {
             })
             .collect();
         Obstacles {
-            boxes,
-            meshes,
+            boxes: boxes.into(),
+            meshes: meshes.into(),
             size_mm: room.size_mm,
             clearance_mm,
             walls: WALLS.to_vec(),
             touched: None,
+            solve: None,
             charged: room.boxes.len() + room.meshes.len(),
             account: None,
         }
@@ -138,6 +145,39 @@ impl Obstacles {
         }
     }
 
+    /// These obstacles as one solve asks them, keeping its own record in
+    /// `solve` beside the task's (where the task's is kept): what its
+    /// questions touched, where they asked, and what the triangles its
+    /// checks tested cost. (A solve asks no other solve's questions: a
+    /// view of a view keeps only the last record.)
+    pub fn recording_solve(&self, solve: &Arc<SolveRecord>) -> Obstacles {
+        let account = self.account.as_ref().map(|account| {
+            let counted = Counted::new(Arc::clone(account), solve.units());
+            Arc::new(counted) as Arc<dyn Allowance + Send>
+        });
+        Obstacles {
+            solve: self.touched.as_ref().map(|_| Arc::clone(solve)),
+            account,
+            ..self.clone()
+        }
+    }
+
+    /// Obstacle `index` touched: in the task's record and the solve's.
+    fn mark(&self, index: usize) {
+        if let Some(touched) = &self.touched {
+            touched.mark(index);
+            if let Some(solve) = &self.solve {
+                solve.mark(index);
+            }
+        }
+    }
+
+    /// Whether a question must work out whether it comes near obstacle
+    /// `index` ([`Touched::needs`]).
+    fn needs(&self, index: usize) -> bool {
+        (self.touched.as_ref()).is_some_and(|t| t.needs(index, self.solve.as_deref()))
+    }
+
     /// Record obstacle `index`, whose bounds are `bounds`, as touched if
     /// the segment `a`-`b`, whose bounds grown by `r_mm` are `asked`, comes
     /// nearer than `r_mm` to them grown by the margin (`touched.rs`): the
@@ -161,8 +201,8 @@ impl Obstacles {
     /// takes them in: `touched.rs`).
     #[inline]
     fn ask(&self, asked: &[Point3<f64>; 2]) {
-        if let Some(touched) = &self.touched {
-            touched.asked(asked);
+        if let Some(solve) = &self.solve {
+            solve.asked(asked);
         }
     }
 
@@ -173,10 +213,8 @@ impl Obstacles {
     /// where a mesh is once its bounds come that near.
     #[inline]
     fn note_mesh(&self, index: usize, bounds: &[Point3<f64>; 2], asked: &[Point3<f64>; 2]) {
-        if let Some(touched) = &self.touched {
-            if bounds_meet(bounds, asked, TOUCH_MARGIN_MM) && touched.needs(index) {
-                touched.mark(index);
-            }
+        if bounds_meet(bounds, asked, TOUCH_MARGIN_MM) && self.needs(index) {
+            self.mark(index);
         }
     }
 
@@ -188,10 +226,7 @@ impl Obstacles {
         segment: (&Point3<f64>, &Point3<f64>, f64),
         asked: &[Point3<f64>; 2],
     ) {
-        let Some(touched) = &self.touched else {
-            return;
-        };
-        if !bounds_meet(bounds, asked, TOUCH_MARGIN_MM) || !touched.needs(index) {
+        if !bounds_meet(bounds, asked, TOUCH_MARGIN_MM) || !self.needs(index) {
             return;
         }
         let (a, b, r_mm) = segment;
@@ -204,7 +239,7 @@ impl Obstacles {
         };
         // A little more than the exact tests count, to be safe.
         if aabb.distance_to_segment(a, b) < r_mm.max(0.0) + 1e-6 {
-            touched.mark(index);
+            self.mark(index);
         }
     }
 
@@ -213,13 +248,15 @@ impl Obstacles {
     /// what stopped it. A removed box keeps its index, with no extent.
     pub fn without(&self, removed: &[Blocker]) -> Obstacles {
         let mut rest = self.clone();
-        for (i, (_, _, bounds)) in rest.boxes.iter_mut().enumerate() {
+        let mut boxes = rest.boxes.to_vec();
+        for (i, (_, _, bounds)) in boxes.iter_mut().enumerate() {
             if removed.contains(&Blocker::Obstacle(i)) {
                 *bounds = NO_EXTENT;
             }
         }
-        rest.meshes
-            .retain(|m| !removed.contains(&Blocker::Obstacle(m.index)));
+        rest.boxes = boxes.into();
+        let meshes = rest.meshes.iter().filter(|m| !removed.contains(&Blocker::Obstacle(m.index)));
+        rest.meshes = meshes.cloned().collect();
         rest.walls.retain(|w| !removed.contains(&Blocker::Wall(*w)));
         rest
     }
@@ -262,9 +299,7 @@ impl Obstacles {
     /// The name of the room's obstacle `index` (as the hits give it): an
     /// obstacle whose name is asked for counts as touched.
     pub fn name(&self, index: usize) -> &str {
-        if let Some(touched) = &self.touched {
-            touched.mark(index);
-        }
+        self.mark(index);
         match self.boxes.get(index) {
             Some((name, ..)) => name,
             None => self
@@ -302,7 +337,7 @@ impl Obstacles {
                 return Some(Blocker::Obstacle(i));
             }
         }
-        for m in &self.meshes {
+        for m in self.meshes.iter() {
             self.note_mesh(m.index, &m.bounds, &asked);
             if reach(&m.bounds) && self.mesh_touches(m, capsule, r.max(1e-9), reach) {
                 return Some(Blocker::Obstacle(m.index));

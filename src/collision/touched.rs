@@ -16,13 +16,14 @@
 //! on obstacles however far, which a key of the obstacles within reach
 //! does not hold.
 //!
-//! One solve's own record ([`recording_one`]) is kept beside the task's
-//! while it runs on its thread: watch mode keeps the solve's answer with
-//! it (`engine::KeptSolves`), for a run of the task after an edit that
-//! changed none of the obstacles that solve touched.
+//! One solve's own record ([`SolveRecord`]) is kept beside the task's
+//! while it runs, by the view of the obstacles that solve is given
+//! (`Obstacles::recording_solve`): watch mode keeps the solve's answer
+//! with it (`engine::KeptSolves`), for a run of the task after an edit
+//! that changed none of the obstacles that solve touched.
 
-use std::cell::RefCell;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::{Arc, Mutex};
 
 use nalgebra::Point3;
 
@@ -65,7 +66,6 @@ impl Touched {
 
     /// Obstacle `index` was touched.
     pub fn mark(&self, index: usize) {
-        mark_in_scope(index);
         let bit = 1u64 << (index % 64);
         match self.words.get(index / 64) {
             // Read first: the threads of one task mark the same few
@@ -79,24 +79,11 @@ impl Touched {
         }
     }
 
-    /// A question whose bounds are `asked_mm` is put to the obstacles:
-    /// the record of the solve running on this thread, if one is being
-    /// made, takes them in.
-    pub fn asked(&self, asked_mm: &[Point3<f64>; 2]) {
-        SCOPE.with(|s| {
-            if let Some(scope) = s.borrow_mut().as_mut() {
-                scope.take_asked(asked_mm);
-            }
-        });
-    }
-
     /// Whether a question must work out whether it comes near obstacle
     /// `index`: the obstacle is not marked yet in the task's record, or in
-    /// the record of the solve running on this thread, if one is being
-    /// made.
-    pub fn needs(&self, index: usize) -> bool {
-        let solve_lacks = SCOPE.with(|s| s.borrow().as_ref().is_some_and(|s| !s.has(index)));
-        solve_lacks || !self.is_marked(index)
+    /// the record of the solve asking (`solve`), if one is being made.
+    pub fn needs(&self, index: usize, solve: Option<&SolveRecord>) -> bool {
+        solve.is_some_and(|s| !s.has(index)) || !self.is_marked(index)
     }
 
     /// Whether obstacle `index` is touched already in the task's record.
@@ -156,7 +143,7 @@ impl TouchedSet {
     }
 }
 
-/// What one solve's questions came to ([`recording_one`]).
+/// What one solve's questions came to ([`SolveRecord::finish`]).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct OneRecord {
     /// The obstacles they touched, by index, in order.
@@ -167,8 +154,60 @@ pub struct OneRecord {
     pub asked_mm: Option<[Point3<f64>; 2]>,
 }
 
-/// The record being made of the solve running on a thread.
-#[derive(Default)]
+/// The record being made of one solve: the obstacles its questions
+/// touched and where they asked, and the work it charged (counted by the
+/// allowances it is given, `allowance::Counted`).
+#[derive(Debug, Default)]
+pub struct SolveRecord {
+    scope: Mutex<Scope>,
+    units: Arc<AtomicU64>,
+}
+
+impl SolveRecord {
+    /// The count the solve's allowances add its work to.
+    pub fn units(&self) -> Arc<AtomicU64> {
+        Arc::clone(&self.units)
+    }
+
+    /// Obstacle `index` touched by the solve.
+    pub fn mark(&self, index: usize) {
+        self.scope().mark(index);
+    }
+
+    /// Whether the solve has touched obstacle `index`.
+    pub fn has(&self, index: usize) -> bool {
+        self.scope().has(index)
+    }
+
+    /// A question whose bounds are `asked_mm` was put to the obstacles.
+    pub fn asked(&self, asked_mm: &[Point3<f64>; 2]) {
+        self.scope().take_asked(asked_mm);
+    }
+
+    /// What the solve's questions came to, and the work it charged.
+    pub fn finish(&self) -> (OneRecord, u64) {
+        let scope = std::mem::take(&mut *self.scope());
+        let touched: Vec<u32> = (scope.words.iter().enumerate())
+            .flat_map(|(w, &word)| {
+                (0..64u32)
+                    .filter(move |b| word & (1u64 << b) != 0)
+                    .map(move |b| w as u32 * 64 + b)
+            })
+            .collect();
+        let record = OneRecord {
+            touched,
+            asked_mm: scope.asked_mm,
+        };
+        (record, self.units.load(Ordering::Relaxed))
+    }
+
+    fn scope(&self) -> std::sync::MutexGuard<'_, Scope> {
+        self.scope.lock().unwrap_or_else(|e| e.into_inner())
+    }
+}
+
+/// One solve's record as it is made.
+#[derive(Debug, Default)]
 struct Scope {
     words: Vec<u64>,
     asked_mm: Option<[Point3<f64>; 2]>,
@@ -192,54 +231,6 @@ impl Scope {
             None => *asked,
         });
     }
-}
-
-thread_local! {
-    /// The record of the solve running on this thread, where one is
-    /// being made ([`recording_one`]).
-    static SCOPE: RefCell<Option<Scope>> = const { RefCell::new(None) };
-}
-
-/// `work` run on this thread with a record of its own of the obstacles
-/// its questions touch and of where they asked (the task's record is kept
-/// as well): its result and that record. `work` must not hand work to
-/// other threads (a solve does not). A record already being made on this
-/// thread is set aside while `work` runs, and takes this one in too.
-pub fn recording_one<R>(work: impl FnOnce() -> R) -> (R, OneRecord) {
-    let outer = SCOPE.with(|s| s.borrow_mut().replace(Scope::default()));
-    let result = work();
-    let scope = SCOPE.with(|s| std::mem::replace(&mut *s.borrow_mut(), outer));
-    let scope = scope.unwrap_or_default();
-    let touched: Vec<u32> = (scope.words.iter().enumerate())
-        .flat_map(|(w, &word)| {
-            (0..64u32)
-                .filter(move |b| word & (1u64 << b) != 0)
-                .map(move |b| w as u32 * 64 + b)
-        })
-        .collect();
-    let record = OneRecord {
-        touched,
-        asked_mm: scope.asked_mm,
-    };
-    SCOPE.with(|s| {
-        if let Some(outer) = s.borrow_mut().as_mut() {
-            record.touched.iter().for_each(|&i| outer.mark(i as usize));
-            if let Some(asked) = &record.asked_mm {
-                outer.take_asked(asked);
-            }
-        }
-    });
-    (result, record)
-}
-
-/// Obstacle `index` marked in the record of the solve running on this
-/// thread, if one is being made.
-fn mark_in_scope(index: usize) {
-    SCOPE.with(|s| {
-        if let Some(scope) = s.borrow_mut().as_mut() {
-            scope.mark(index);
-        }
-    });
 }
 
 /// Whether the bounds `a` and `b` meet once `a` is grown by `grow_mm` on
@@ -270,29 +261,26 @@ mod tests {
     }
 
     #[test]
-    fn one_solve_keeps_its_own_record_and_the_record_around_it_takes_it_in() {
+    fn one_solve_keeps_its_own_record_beside_the_task_s() {
         let touched = Touched::new(200);
         touched.mark(3);
         let at = |x: f64| [Point3::new(x, 0.0, 0.0), Point3::new(x + 1.0, 1.0, 1.0)];
-        let ((_, inner), outer) = recording_one(|| {
-            // Marked for the task already, but not for this solve.
-            assert!(touched.needs(3));
-            touched.mark(3);
-            assert!(!touched.needs(3));
-            touched.asked(&at(0.0));
-            recording_one(|| {
-                touched.mark(130);
-                touched.asked(&at(10.0));
-            })
-        });
-        assert_eq!(inner.touched, vec![130]);
-        assert_eq!(inner.asked_mm, Some(at(10.0)));
-        assert_eq!(outer.touched, vec![3, 130]);
-        let [lo, hi] = outer.asked_mm.unwrap();
-        assert_eq!((lo.x, hi.x), (0.0, 11.0));
-        assert!(touched.set().contains(130));
-        // Outside a solve's record only the task's counts.
-        assert!(!touched.needs(3) && touched.needs(4));
+        let solve = SolveRecord::default();
+        // Marked for the task already, but not for this solve.
+        assert!(touched.needs(3, Some(&solve)));
+        assert!(!touched.needs(3, None));
+        solve.mark(3);
+        assert!(!touched.needs(3, Some(&solve)));
+        solve.mark(130);
+        solve.asked(&at(0.0));
+        solve.asked(&at(10.0));
+        solve.units().fetch_add(7, Ordering::Relaxed);
+        let (record, units) = solve.finish();
+        assert_eq!(record.touched, vec![3, 130]);
+        let [lo, hi] = record.asked_mm.unwrap();
+        assert_eq!((lo.x, hi.x, units), (0.0, 11.0, 7));
+        // The task's record is the obstacles' to mark, not the solve's.
+        assert!(touched.needs(130, None));
     }
 
     #[test]

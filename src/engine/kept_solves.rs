@@ -4,9 +4,10 @@
 //! the task's chain and own body, and on the room's obstacles only through
 //! the questions it puts to them. Each solve of a task's searches (a
 //! map's points, a reach, the searches that find why) is kept by a key of
-//! all but the obstacles, with the obstacles its questions touched
-//! (`collision::recording_one`) and the work it charged
-//! (`meter::counting_one`).
+//! all but the obstacles, with the obstacles its questions touched and
+//! the work it charged, which the solve's own view of the obstacles
+//! (`Obstacles::recording_solve`) and its counted allowance
+//! (`allowance::Counted`) record as it runs.
 //!
 //! The task's next run, after an edit that left its key of all but the
 //! obstacles as it was but moved an obstacle it touched (`cache`), takes a
@@ -37,10 +38,9 @@ use std::sync::{Arc, Mutex};
 
 use nalgebra::Point3;
 
-use crate::allowance::Allowance;
-use crate::collision::{bounds_meet, recording_one, Obstacles, Touched, TOUCH_MARGIN_MM};
+use crate::allowance::{Allowance, Counted};
+use crate::collision::{bounds_meet, Obstacles, SolveRecord, Touched, TOUCH_MARGIN_MM};
 use crate::kinematics::Chain;
-use crate::meter::counting_one;
 use crate::scene::{BasePose, IkSolution, OwnBody};
 
 /// The most solves kept for one task (about 300 bytes each): past it, no
@@ -163,10 +163,10 @@ impl SolvesFor<'_> {
     pub fn solve(
         &self,
         key: u64,
-        allowance: &dyn Allowance,
-        solve: impl FnOnce() -> IkSolution,
+        asked: Asked<'_>,
+        solve: impl FnOnce(Asked<'_>) -> IkSolution,
     ) -> IkSolution {
-        self.kept.solve(self.key(key), allowance, solve)
+        self.kept.solve(self.key(key), asked, solve)
     }
 
     /// `KeptSolves::placements` for this variant, where placements are
@@ -174,12 +174,12 @@ impl SolvesFor<'_> {
     pub fn placements(
         &self,
         key: u64,
-        allowance: &dyn Allowance,
-        sample: impl FnOnce() -> Vec<(BasePose, Vec<f64>)>,
+        asked: Asked<'_>,
+        sample: impl FnOnce(Asked<'_>) -> Vec<(BasePose, Vec<f64>)>,
     ) -> Vec<(BasePose, Vec<f64>)> {
         match self.placements {
-            true => self.kept.placements(self.key(key), allowance, sample),
-            false => sample(),
+            true => self.kept.placements(self.key(key), asked, sample),
+            false => sample(asked),
         }
     }
 
@@ -189,6 +189,16 @@ impl SolvesFor<'_> {
         std::hash::Hasher::write_u64(&mut h, self.variant);
         std::hash::Hasher::finish(&h)
     }
+}
+
+/// What a kept computation asks its questions of and tells its work to:
+/// the obstacles (none: not checked) and the allowance. A computation
+/// made to be kept is given its own view of both, which record what it
+/// touched and charged.
+#[derive(Clone, Copy)]
+pub struct Asked<'a> {
+    pub obstacles: Option<&'a Obstacles>,
+    pub allowance: &'a dyn Allowance,
 }
 
 /// One task run's solves: those it may take from its last run, and those
@@ -233,8 +243,8 @@ impl KeptSolves {
     fn solve(
         &self,
         key: u64,
-        allowance: &dyn Allowance,
-        solve: impl FnOnce() -> IkSolution,
+        asked: Asked<'_>,
+        solve: impl FnOnce(Asked<'_>) -> IkSolution,
     ) -> IkSolution {
         let keep = |s: &IkSolution| Found::Solve {
             q: s.q.clone(),
@@ -254,7 +264,7 @@ impl KeptSolves {
             }),
             Found::Placements(_) => None,
         };
-        self.kept_or_made(key, allowance, solve, keep, take)
+        self.kept_or_made(key, asked, solve, keep, take)
     }
 
     /// The placements sampled for a point, by `key`: kept from the last
@@ -263,29 +273,31 @@ impl KeptSolves {
     fn placements(
         &self,
         key: u64,
-        allowance: &dyn Allowance,
-        sample: impl FnOnce() -> Vec<(BasePose, Vec<f64>)>,
+        asked: Asked<'_>,
+        sample: impl FnOnce(Asked<'_>) -> Vec<(BasePose, Vec<f64>)>,
     ) -> Vec<(BasePose, Vec<f64>)> {
         let keep = |p: &Vec<(BasePose, Vec<f64>)>| Found::Placements(p.clone());
         let take = |found: &Found| match found {
             Found::Placements(p) => Some(p.clone()),
             Found::Solve { .. } => None,
         };
-        self.kept_or_made(key, allowance, sample, keep, take)
+        self.kept_or_made(key, asked, sample, keep, take)
     }
 
     /// What `make` makes, kept under `key` from the last run where that
-    /// holds (`take` reading it back), its work told to `allowance` and its
-    /// touches marked; else made here and kept (as `keep` writes it)
-    /// unless the run has passed its limit.
+    /// holds (`take` reading it back), its work told to the allowance
+    /// `asked` gives and its touches marked; else made here, asking
+    /// through a view of its own that records it, and kept (as `keep`
+    /// writes it) unless the run has passed its limit.
     fn kept_or_made<T>(
         &self,
         key: u64,
-        allowance: &dyn Allowance,
-        make: impl FnOnce() -> T,
+        asked: Asked<'_>,
+        make: impl FnOnce(Asked<'_>) -> T,
         keep: impl FnOnce(&T) -> Found,
         take: impl FnOnce(&Found) -> Option<T>,
     ) -> T {
+        let allowance = asked.allowance;
         let held = self.earlier.as_ref().and_then(|e| e.holding(key));
         if let Some(kept) = held.filter(|_| !allowance.exhausted()) {
             if let Some(made) = take(&kept.found) {
@@ -297,7 +309,14 @@ impl KeptSolves {
                 return made;
             }
         }
-        let ((made, record), units) = counting_one(|| recording_one(make));
+        let solve = Arc::new(SolveRecord::default());
+        let obstacles = asked.obstacles.map(|o| o.recording_solve(&solve));
+        let counted = Counted::new(allowance, solve.units());
+        let made = make(Asked {
+            obstacles: obstacles.as_ref(),
+            allowance: &counted,
+        });
+        let (record, units) = solve.finish();
         if !allowance.exhausted() {
             let kept = KeptSolve {
                 found: Arc::new(keep(&made)),

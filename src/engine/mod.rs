@@ -10,4 +10,4 @@ pub mod kept_solves;
 
 pub use kept_proofs::KeptProofs;
 pub use kept_solves::fingerprint_of;
-pub use kept_solves::{Changed, Earlier, KeptSolves, SolveMap, SolvesFor};
+pub use kept_solves::{Asked, Changed, Earlier, KeptSolves, SolveMap, SolvesFor};

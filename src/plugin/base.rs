@@ -189,14 +189,16 @@ impl<'a> ReachQuery<'a> {
             ))
         });
         let search = self.search;
-        let solve = move || match (start, search) {
+        let solve = move |problem: &IkProblem<'_>| match (start, search) {
             (Some(start), _) => solver.solve_from(problem, start),
             (None, Search::MostComfortable) => solver.solve(problem),
             (None, Search::FirstReaching) => solver.solve_until_reached(problem),
         };
         let mut solution = match kept {
-            Some((solves, key)) => solves.solve(key, problem.allowance, solve),
-            None => solve(),
+            Some((solves, key)) => {
+                solves.solve(key, problem.asked(), |asked| solve(&problem.asking(asked)))
+            }
+            None => solve(problem),
         };
         solution.collision = problem.collision_charged(&solution.q);
         Placement {

@@ -35,7 +35,7 @@ pub use crate::scene::{BasePose, IkSolution, Placement};
 // room, person and own body a base places, the obstacles a posture is
 // checked against, what a task and a format answer with.
 pub use crate::collision::{Obstacles, PlacedObstacles, Touched};
-pub use crate::engine::{KeptProofs, KeptSolves, SolvesFor};
+pub use crate::engine::{Asked, KeptProofs, KeptSolves, SolvesFor};
 pub use crate::kinematics::{Body, Chain, Joint};
 pub use crate::report::{Names, Report, StandardReport, TaskReport};
 pub use crate::scene::{OwnBody, Person, Room};

@@ -6,6 +6,7 @@ use nalgebra::Point3;
 use super::{Options, Plugin, SettingsError};
 use crate::allowance::Allowance;
 use crate::collision::PlacedObstacles;
+use crate::engine::Asked;
 use crate::kinematics::{Chain, Volumes};
 use crate::scene::{Collision, IkSolution};
 
@@ -27,7 +28,32 @@ pub struct IkProblem<'a> {
     pub allowance: &'a dyn Allowance,
 }
 
-impl IkProblem<'_> {
+impl<'a> IkProblem<'a> {
+    /// What this problem asks its questions of and tells its work to.
+    pub fn asked(&self) -> Asked<'a> {
+        Asked {
+            obstacles: self.obstacles.map(|placed| placed.obstacles),
+            allowance: self.allowance,
+        }
+    }
+
+    /// This problem asking `asked` instead (a kept solve's own view of
+    /// the same obstacles and allowance, which record it).
+    pub fn asking<'b>(&self, asked: Asked<'b>) -> IkProblem<'b>
+    where
+        'a: 'b,
+    {
+        let placed = self.obstacles.zip(asked.obstacles);
+        IkProblem {
+            obstacles: placed.map(|(placed, obstacles)| PlacedObstacles {
+                obstacles,
+                ..placed
+            }),
+            allowance: asked.allowance,
+            ..*self
+        }
+    }
+
     /// The first thing a part of posture `q` runs into (none when
     /// obstacles are not checked). The hand may press into what it reaches
     /// by up to the tolerance.
