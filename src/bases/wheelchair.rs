@@ -144,7 +144,7 @@ impl BasePlugin for Wheelchair {
             return Err(BaseError::posture("wheelchair", declared, Stance::Seated));
         }
         let chair = Chair::new(&s, person);
-        let hip_height_mm = s.seat_height_mm + chair.above_seat_mm;
+        let hip_height_mm = chair.hip_height_mm;
         let mut solids = chair.parts(&s);
         let legs = chair.legs.as_ref().map(|l| l.seated(s.shank_forward_rad));
         solids.extend(legs.iter().flatten().cloned());
@@ -153,7 +153,7 @@ impl BasePlugin for Wheelchair {
             None => {
                 // No legs to put them under: where ADA's chair has them.
                 let half = s.footrest_width_mm / 2.0;
-                chair.part(&s, "footrests", [400.0, 640.0], [-half, half], [50.0, 80.0])
+                chair.part("footrests", [400.0, 640.0], [-half, half], [50.0, 80.0])
             }
         });
         let pelvis = chair.legs.as_ref().map_or(0.0, |l| l.pelvis_mm);
@@ -167,12 +167,17 @@ impl BasePlugin for Wheelchair {
     }
 }
 
-/// A chair fitted to its user, in the base frame.
+/// A chair fitted to its user. Its settings are heights above the floor;
+/// its parts are made in the base frame (the hip point at the origin), so
+/// each height above the floor passes through `hip_height_mm` once, where
+/// a part is made (`Chair::part`).
 struct Chair {
     /// The person's legs with the hip point at the chair's height above
     /// the seat.
     legs: Option<Legs>,
-    above_seat_mm: f64,
+    /// The hip point above the floor: the seat's height and the hip's
+    /// height above the seat.
+    hip_height_mm: f64,
     /// The backrest's front: just behind the back of the upright trunk.
     back_x_mm: f64,
 }
@@ -193,21 +198,15 @@ impl Chair {
         let back_x_mm = person.column_mm.map_or(-130.0, |[lo, _]| lo.x) - 5.0;
         Chair {
             legs,
-            above_seat_mm,
+            hip_height_mm: s.seat_height_mm + above_seat_mm,
             back_x_mm,
         }
     }
 
-    /// A box of the chair between heights `z_mm` above the floor.
-    fn part(
-        &self,
-        s: &WheelchairSettings,
-        name: &str,
-        x: [f64; 2],
-        y: [f64; 2],
-        z: [f64; 2],
-    ) -> Solid {
-        let hip = s.seat_height_mm + self.above_seat_mm;
+    /// A box of the chair, `x` and `y` in the base frame, between heights
+    /// `z` above the floor.
+    fn part(&self, name: &str, x: [f64; 2], y: [f64; 2], z: [f64; 2]) -> Solid {
+        let hip = self.hip_height_mm;
         let lo = Point3::new(x[0], y[0], z[0] - hip);
         let hi = Point3::new(x[1], y[1], z[1] - hip);
         Solid::new(
@@ -221,7 +220,6 @@ impl Chair {
         let (back, seat) = (self.back_x_mm, s.seat_height_mm);
         let half_seat = s.seat_width_mm / 2.0;
         let mut parts = vec![self.part(
-            s,
             "seat",
             [back, back + s.seat_depth_mm],
             [-half_seat, half_seat],
@@ -229,7 +227,6 @@ impl Chair {
         )];
         if s.backrest_mm > 0.0 {
             parts.push(self.part(
-                s,
                 "backrest",
                 [back - 40.0, back],
                 [-half_seat, half_seat],
@@ -242,7 +239,6 @@ impl Chair {
             ("right", [-half, -half + 35.0]),
         ] {
             parts.push(self.part(
-                s,
                 &format!("{side} wheel"),
                 [axle - r, axle + r],
                 y,
@@ -252,8 +248,8 @@ impl Chair {
         if s.armrests {
             let z = [s.armrest_height_mm - 40.0, s.armrest_height_mm];
             let x = [back, back + 330.0];
-            parts.push(self.part(s, "left armrest", x, [half_seat, half_seat + 50.0], z));
-            parts.push(self.part(s, "right armrest", x, [-half_seat - 50.0, -half_seat], z));
+            parts.push(self.part("left armrest", x, [half_seat, half_seat + 50.0], z));
+            parts.push(self.part("right armrest", x, [-half_seat - 50.0, -half_seat], z));
         }
         parts
     }
@@ -277,9 +273,9 @@ impl Chair {
             .iter()
             .map(|[lo, _]| lo.z)
             .fold(f64::INFINITY, f64::min);
-        let hip = s.seat_height_mm + self.above_seat_mm;
         let half = s.footrest_width_mm / 2.0;
-        let top = sole + hip;
-        self.part(s, "footrests", [x0, x1], [-half, half], [top - 30.0, top])
+        // The soles' height above the floor.
+        let top = sole + self.hip_height_mm;
+        self.part("footrests", [x0, x1], [-half, half], [top - 30.0, top])
     }
 }
