@@ -10,11 +10,18 @@ use reach::Input;
 /// `side_mm` to his left (negative: right), at chest height; the reach
 /// with `options`.
 fn cup_reach(side_mm: f64, options: &str) -> Result<(bool, String), String> {
+    cup_task(side_mm, "reach cup", options)
+}
+
+/// The task `task` (`reach cup`, `reach cup and gaze`) of the man and cup
+/// of [`cup_reach`], with `options`: whether the hand (and the eyes) do,
+/// and the hand's effector.
+fn cup_task(side_mm: f64, task: &str, options: &str) -> Result<(bool, String), String> {
     let text = format!(
         "units mm deg\nuse std::people\nroom r {{\n  size 4000 x 4000 x 2500\n  \
          target cup at (1300, {}, 1300)\n}}\n\
          person p {{ mannequin man_50th base fixed {{ at (1000, 2000, 930) heading 0deg }} }}\n\
-         reach cup by p {{ {options} }}\n",
+         {task} by p {{ {options} }}\n",
         2000.0 + side_mm
     );
     let registry = Registry::builtin();
@@ -29,8 +36,24 @@ fn cup_reach(side_mm: f64, options: &str) -> Result<(bool, String), String> {
     let report = reach::run(&scenario).map_err(|e| e.to_string())?;
     match &report.tasks[0] {
         TaskReport::Reach(r) => Ok((r.ok, r.effector.clone())),
+        TaskReport::ReachAndGaze(r) => Ok((r.ok, r.reach.effector.clone())),
         other => Err(format!("not a reach: {other:?}")),
     }
+}
+
+#[test]
+fn a_reach_and_gaze_far_to_the_left_is_made_with_the_left_hand_and_named() {
+    let task = "reach cup and gaze";
+    let (ok, effector) = cup_task(900.0, task, "size 10mm").unwrap();
+    assert!(ok && effector == "left_grip", "{ok} {effector}");
+    let (ok, effector) = cup_task(900.0, task, "size 10mm hand right").unwrap();
+    assert!(!ok && effector == "grip", "{ok} {effector}");
+    // Mirrored: the right hand, by default too.
+    let (ok, effector) = cup_task(-900.0, task, "size 10mm").unwrap();
+    assert!(ok && effector == "grip", "{ok} {effector}");
+    // An effector named is used alone.
+    let (ok, effector) = cup_task(900.0, task, "size 10mm effector grip").unwrap();
+    assert!(!ok && effector == "grip", "{ok} {effector}");
 }
 
 #[test]

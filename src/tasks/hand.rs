@@ -6,8 +6,14 @@ use super::common::Common;
 use crate::kinematics::{Body, LEFT_PREFIX as LEFT};
 use crate::plugin::{Params, SettingsError};
 
-/// The option `hand`'s documentation.
+/// The option `hand`'s documentation, for a task that takes the more
+/// comfortable hand where both do (a reach).
 pub const HAND_DOC: &str = "`either` (the effector and its twin on the other hand, `left_` and its name, where the mannequin has both: the hand that reaches, the more comfortable where both do; the default where no effector is named), `right` or `left`";
+
+/// The option `hand`'s documentation, for a task that tries the twin only
+/// where the effector asked for does not do (a map's point, a reach and
+/// gaze).
+pub const HAND_DOC_FIRST: &str = "`either` (the effector and its twin on the other hand, `left_` and its name, where the mannequin has both: the effector where it does, else its twin; the default where no effector is named), `right` or `left`";
 
 /// Which hand a task uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -35,9 +41,10 @@ impl Hand {
         }
     }
 
-    /// The option `hand`, read by a task's settings.
-    pub fn option(p: &mut Params<'_>) -> Option<String> {
-        p.optional_name("hand", HAND_DOC).get()
+    /// The option `hand`, read by a task's settings, with its
+    /// documentation (`HAND_DOC` or `HAND_DOC_FIRST`).
+    pub fn option(p: &mut Params<'_>, doc: &'static str) -> Option<String> {
+        p.optional_name("hand", doc).get()
     }
 
     /// The hand `word` asks for (none: either where `common` names no

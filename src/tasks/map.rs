@@ -46,7 +46,7 @@ impl Settings for MapSettings {
                 "find why each point not reached was not, as a reach's why is found (searched again without what may have stopped it): each such point costs about as much as a reach that fails",
             )
             .get();
-        MapSettings(common, grid, why, Hand::option(p))
+        MapSettings(common, grid, why, Hand::option(p, hand::HAND_DOC_FIRST))
     }
 }
 

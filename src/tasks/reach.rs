@@ -38,7 +38,7 @@ impl Settings for ReachSettings {
                     retry: THOROUGH_RETRY,
                 },
             ),
-            hand: Hand::option(p),
+            hand: Hand::option(p, hand::HAND_DOC),
         }
     }
 }

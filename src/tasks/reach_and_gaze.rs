@@ -8,7 +8,8 @@
 
 use nalgebra::{Point3, Vector2};
 
-use super::common::{chain_of, mix_seed, Common, CommonDecl, Reaching, THOROUGH_RETRY};
+use super::common::{mix_seed, Common, CommonDecl, Reaching, THOROUGH_RETRY};
+use super::hand::{self, hands_of, Hand};
 use super::gaze::{limit_look, needs_look_link, Eyes, GazeObstacles, Looked, Looking};
 use super::why::{Failed, Found};
 use crate::collision::{Obstacles, PlacedObstacles};
@@ -27,10 +28,13 @@ use crate::solvers::FabrikSettings;
 /// The plugin `reach_and_gaze`.
 pub struct ReachAndGaze;
 
-/// Its settings: the common ones (fabrik as solver), the eyes, their
-/// weight, and what they must make out.
+/// Its settings: the common ones (fabrik as solver), which hand, the
+/// eyes, their weight, and what they must make out.
 struct ReachAndGazeSettings {
     common: Common,
+    /// `either`, `right` or `left` ([`Hand`]); none: either hand where no
+    /// effector is named, else the one named.
+    hand: Option<String>,
     eyes: String,
     gaze_weight: f64,
     looking: Looking,
@@ -68,6 +72,7 @@ impl Settings for ReachAndGazeSettings {
             .get();
         ReachAndGazeSettings {
             common,
+            hand: Hand::option(p, hand::HAND_DOC_FIRST),
             eyes,
             gaze_weight,
             looking: Looking::visit(p),
@@ -99,7 +104,8 @@ impl TaskPlugin for ReachAndGaze {
         options: &Options,
         plugins: &Registry,
     ) -> Result<Box<dyn Task>, SettingsError> {
-        let s = ReachAndGazeSettings::from_options(options)?;
+        let mut s = ReachAndGazeSettings::from_options(options)?;
+        let either = Hand::resolve(s.hand.as_deref(), &mut s.common)?;
         // The tree solve is fabrik's: its settings when fabrik is named
         // (`validate` refuses any other solver).
         let tree =
@@ -113,6 +119,7 @@ impl TaskPlugin for ReachAndGaze {
             };
         Ok(Box::new(ReachAndGazeTask {
             reaching: Reaching::new(s.common, plugins)?,
+            either,
             eyes: s.eyes,
             gaze_weight: s.gaze_weight,
             looking: s.looking,
@@ -121,9 +128,11 @@ impl TaskPlugin for ReachAndGaze {
     }
 }
 
-/// A configured `reach T and gaze`.
+/// A configured `reach T and gaze`: with the effector asked for alone, or
+/// `either` hand (its twin too, where the mannequin has one).
 struct ReachAndGazeTask {
     reaching: Reaching,
+    either: bool,
     eyes: String,
     gaze_weight: f64,
     looking: Looking,
@@ -164,6 +173,11 @@ impl Task for ReachAndGazeTask {
         self.reaching.starts_per_point(placements)
     }
 
+    /// Either hand: a search with each.
+    fn searches(&self, body: &Body, effectors: &[usize]) -> u64 {
+        hand::searches(body, effectors, self.either)
+    }
+
     /// Its obstacles are asked about through `Reaching::obstacles` (and
     /// finding why marks those it ranks), its floor through its base.
     fn records_touches(&self) -> bool {
@@ -172,51 +186,150 @@ impl Task for ReachAndGazeTask {
 
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
         let eyes = self.looking.eyes(Some(&input.person.vision));
-        let (body, _, eyes_index) =
+        let (body, eyes_index) =
             body_with_look_range(input, eyes.aimed_mm(self.reaching.common.tolerance_mm));
-        let hand_chain = chain_of(input, 0);
-        let eyes_chain = body.chain(eyes_index);
+        // The effector asked for first, then its twin, then the eyes.
+        let mut chains: Vec<Chain> = (self.hands(input).into_iter())
+            .map(|hand| input.person.body.chain(hand))
+            .collect();
+        chains.push(body.chain(eyes_index));
+        let all: Vec<&Chain> = chains.iter().collect();
         let points = match input.subject {
             Subject::Target(t) => vec![t.position_mm],
             Subject::Surface(_) => Vec::new(),
         };
-        self.reaching
-            .dependence(&hand_chain, &[&hand_chain, &eyes_chain], points, true)
+        self.reaching.dependence(&chains[0], &all, points, true)
     }
 
     fn run(&self, input: &TaskInput<'_>) -> TaskReport {
-        let reaching = &self.reaching;
         let Subject::Target(target) = input.subject else {
             unreachable!("the checker gives a reach and gaze a target")
         };
+        // The room's obstacles and the body with its look range, once for
+        // either hand.
         let eyes = self.looking.eyes(Some(&input.person.vision));
-        let (body, hand, eyes_index) =
+        let (body, eyes_index) =
             body_with_look_range(input, eyes.aimed_mm(self.reaching.common.tolerance_mm));
-        let hand_chain = chain_of(input, 0);
-        let own = input.base.own_body();
-        let obstacles = GazeObstacles::new(input, reaching);
-        let query = reaching.query(
+        let obstacles = GazeObstacles::new(input, &self.reaching);
+        let query = self.reaching.query(
             target.position_mm,
-            mix_seed(reaching.common.seed, "reach+gaze"),
+            mix_seed(self.reaching.common.seed, "reach+gaze"),
             Search::MostComfortable,
             obstacles.body.as_ref(),
-            own,
+            input.base.own_body(),
             input.allowance,
         );
-        // Not walked in (`walk_in.rs`): searched with the eyes' chain, a
-        // seated person's reach and gaze at a shelf took 160 M units, and
-        // walked in 830 M, past the bound on solver work.
-        let prepared = input.base.prepare(input.room, &hand_chain, input.allowance);
-        let alone = prepared.reach(&query, reaching.solver.as_ref());
-        let solving = Solving {
-            task: self,
+        let with = With {
             input,
+            target,
             body: &body,
-            hand,
             eyes_index,
             eyes: &eyes,
             obstacles: &obstacles,
             query: &query,
+        };
+        let mut best: Option<Tried> = None;
+        for hand in self.hands(input) {
+            let tried = self.run_with(&with, hand);
+            // The first hand that reaches while the eyes see will do: the
+            // other is tried only where it does not (a tree solve with the
+            // eyes costs several reaches, and trying the other hand for
+            // comfort tripled a kitchen's work).
+            let done = tried.report.ok;
+            best = Some(match best {
+                Some(kept) if !better(&tried.report, &kept.report) => kept,
+                _ => tried,
+            });
+            if done {
+                break;
+            }
+        }
+        let Tried {
+            mut report,
+            hand,
+            alone,
+        } = best.expect("a reach and gaze has at least one hand");
+        // Why, for the hand answered with only (finding why searches again).
+        if !report.reach.ok {
+            let chain = input.person.body.chain(hand);
+            report.reach.why = self.why_not(input, &chain, &alone, &query, obstacles.body.as_ref());
+        }
+        TaskReport::ReachAndGaze(Box::new(report))
+    }
+}
+
+/// A reach and gaze with one hand: its report (without why), the hand, and
+/// where the hand alone came (searched as a reach).
+struct Tried {
+    report: ReachAndGazeReport,
+    hand: usize,
+    alone: Placement,
+}
+
+/// Whether `a` is a better answer than `b`, which did not do: hand and
+/// eyes both do; else the hand reaches where in `b` it does not, or comes
+/// closer.
+fn better(a: &ReachAndGazeReport, b: &ReachAndGazeReport) -> bool {
+    match (a.ok, b.ok) {
+        (true, _) => true,
+        (false, true) => false,
+        (false, false) => match (a.reach.ok, b.reach.ok) {
+            (true, false) => true,
+            (false, true) => false,
+            _ => a.reach.distance_mm < b.reach.distance_mm,
+        },
+    }
+}
+
+/// What a reach and gaze with each hand shares: the task's input and
+/// target, the body with its look range, the eyes and the obstacles.
+struct With<'w, 'a> {
+    input: &'w TaskInput<'a>,
+    target: &'w Target,
+    body: &'w Body,
+    eyes_index: usize,
+    eyes: &'w Eyes,
+    obstacles: &'w GazeObstacles<'a>,
+    /// The hand's reach, searched as a `reach` searches it.
+    query: &'w ReachQuery<'w>,
+}
+
+impl ReachAndGazeTask {
+    /// The hands (effector indices) this reach and gaze tries: the one
+    /// asked for, and for `either` its twin.
+    fn hands(&self, input: &TaskInput<'_>) -> Vec<usize> {
+        let asked = input.effectors.first().copied().unwrap_or(0);
+        hands_of(&input.person.body, asked, self.either)
+    }
+
+    /// The reach and gaze with effector `hand`: the base placed for the
+    /// hand, then hand and eyes solved together.
+    fn run_with(&self, with: &With<'_, '_>, hand: usize) -> Tried {
+        let reaching = &self.reaching;
+        let With {
+            input,
+            target,
+            body,
+            eyes_index,
+            eyes,
+            obstacles,
+            query,
+        } = *with;
+        let hand_chain = input.person.body.chain(hand);
+        // Not walked in (`walk_in.rs`): searched with the eyes' chain, a
+        // seated person's reach and gaze at a shelf took 160 M units, and
+        // walked in 830 M, past the bound on solver work.
+        let prepared = input.base.prepare(input.room, &hand_chain, input.allowance);
+        let alone = prepared.reach(query, reaching.solver.as_ref());
+        let solving = Solving {
+            task: self,
+            input,
+            body,
+            hand,
+            eyes_index,
+            eyes,
+            obstacles,
+            query,
             target,
         };
         let mut seen = solving.attempt(alone.pose, query.seed);
@@ -237,17 +350,19 @@ impl Task for ReachAndGazeTask {
                 seen = found;
             }
         }
-        let Seen { mut reach, gaze } = seen;
-        if !reach.ok {
-            reach.why = self.why_not(input, &hand_chain, &alone, &query, obstacles.body.as_ref());
-        }
-        TaskReport::ReachAndGaze(Box::new(ReachAndGazeReport {
+        let Seen { reach, gaze } = seen;
+        let report = ReachAndGazeReport {
             name: target.name.clone(),
             person: input.person.name.clone(),
             ok: reach.ok && gaze.ok,
             reach,
             gaze,
-        }))
+        };
+        Tried {
+            report,
+            hand,
+            alone,
+        }
     }
 }
 
@@ -459,15 +574,14 @@ impl ReachAndGazeTask {
 }
 
 /// The person's body with the eyes' look link kept to the legible range,
-/// and the indices of the hand and eye effectors.
-fn body_with_look_range(input: &TaskInput<'_>, legible_mm: [f64; 2]) -> (Body, usize, usize) {
+/// and the index of the eyes' effector.
+fn body_with_look_range(input: &TaskInput<'_>, legible_mm: [f64; 2]) -> (Body, usize) {
     let mut body = input.person.body.clone();
-    let hand = input.effectors.first().copied().unwrap_or(0);
     let eyes = input.effectors.get(1).copied().unwrap_or(0);
     if let Some(look) = body.effectors[eyes].joint {
         limit_look(&mut body.joints[look], legible_mm);
     }
-    (body, hand, eyes)
+    (body, eyes)
 }
 
 /// Effector `effector`'s share of the tree's posture (`chain` is its
