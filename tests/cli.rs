@@ -101,19 +101,47 @@ fn json_report_has_the_documented_fields() {
     assert_eq!(task["kind"], "reach");
 }
 
-#[test]
-fn json_is_byte_identical_across_runs_and_thread_counts() {
-    let mut examples: Vec<_> = std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/examples"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "reach"))
-        .collect();
-    examples.sort();
-    assert!(examples.len() >= 5, "{examples:?}");
-    for example in examples {
-        let relative = example.strip_prefix(env!("CARGO_MANIFEST_DIR")).unwrap();
-        identical_across_threads(relative.to_str().unwrap());
-    }
+/// One test per example, so that each is short and they run beside the
+/// others: `example` on one thread and on four gives the same JSON, and
+/// the same as its golden report.
+macro_rules! identical_across_threads {
+    ($($test:ident: $file:literal,)*) => {
+        $(
+            #[test]
+            fn $test() {
+                identical_across_threads(concat!("examples/", $file));
+            }
+        )*
+
+        /// Every example has its test above.
+        #[test]
+        fn json_is_byte_identical_across_runs_and_thread_counts_for_every_example() {
+            let listed = [$($file),*];
+            let mut examples: Vec<String> =
+                std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/examples"))
+                    .unwrap()
+                    .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+                    .filter(|name| name.ends_with(".reach"))
+                    .collect();
+            examples.sort();
+            assert_eq!(examples, listed, "an example without its test above, or the reverse");
+        }
+    };
+}
+
+identical_across_threads! {
+    identical_json_client_kitchen: "client_kitchen.reach",
+    identical_json_flat_12: "flat_12.reach",
+    identical_json_galley: "galley.reach",
+    identical_json_gaze_shelf: "gaze_shelf.reach",
+    identical_json_kitchen: "kitchen.reach",
+    identical_json_kitchen_wheelchair: "kitchen_wheelchair.reach",
+    identical_json_map_10k: "map_10k.reach",
+    identical_json_mother_kitchen: "mother_kitchen.reach",
+    identical_json_open_door: "open_door.reach",
+    identical_json_pocket: "pocket.reach",
+    identical_json_population: "population.reach",
+    identical_json_why_map: "why_map.reach",
 }
 
 /// `example` run twice, at once, on one thread and on four: both runs'
