@@ -634,6 +634,115 @@ fn names_in(dir: &Path) -> Vec<String> {
     names
 }
 
+/// `reach run PATH --out OUT`.
+fn run_out(path: &Path, out: &Path) -> std::process::Output {
+    reach_bin(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ])
+}
+
+/// A set's list written by hand (a repository can carry one) names files
+/// the next set would remove as its leftovers: none of them is removed.
+/// And a file of an earlier set that the user changed since is kept when
+/// the next set drops it, while the unchanged ones dropped are removed.
+#[test]
+fn a_set_removes_only_the_files_its_own_earlier_set_wrote_unchanged() {
+    let (dir, path) = scenario_file(THREE_MAPS);
+    let out = dir.path().join("out");
+    std::fs::create_dir(&out).unwrap();
+    std::fs::write(out.join("thesis.txt"), "mine").unwrap();
+    std::fs::write(out.join(".reach-set"), "thesis.txt\nreport.json\n").unwrap();
+    let o = run_out(&path, &out);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert_eq!(
+        std::fs::read_to_string(out.join("thesis.txt")).unwrap(),
+        "mine"
+    );
+    // The user edits one map's CSV; the next run drops both maps of
+    // `map shelf.top` at 100 mm and the gaze map.
+    std::fs::write(out.join("map-shelf-top-p-2.csv"), "my notes").unwrap();
+    let one_map = THREE_MAPS
+        .lines()
+        .filter(|l| !l.contains("step 100mm") && !l.starts_with("gaze_map"))
+        .collect::<Vec<_>>()
+        .join("\n");
+    std::fs::write(&path, one_map).unwrap();
+    let o = run_out(&path, &out);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    let names = names_in(&out);
+    assert!(
+        names.contains(&"map-shelf-top-p-2.csv".to_string()),
+        "{names:?}"
+    );
+    for gone in ["map-shelf-top-p-2.svg", "gaze_map-shelf-top-p.csv"] {
+        assert!(!names.contains(&gone.to_string()), "{gone} left: {names:?}");
+    }
+    assert_eq!(
+        std::fs::read_to_string(out.join("thesis.txt")).unwrap(),
+        "mine"
+    );
+}
+
+/// Two runs of different scenarios writing one `--out` at once, again and
+/// again: each time the folder holds one run's set whole (its report.json
+/// and its report.txt from the same run), never a mix.
+#[test]
+fn runs_writing_one_output_folder_at_once_leave_one_whole_set() {
+    let (dir, first) = scenario_file(THREE_MAPS);
+    let second = dir.path().join("other.reach");
+    std::fs::write(&second, THREE_MAPS.replace("step 150mm", "step 120mm")).unwrap();
+    let out = dir.path().join("out");
+    // Each run's set alone, to compare with.
+    let compared = |dir: &Path| -> Vec<(String, Vec<u8>)> {
+        (names_in(dir).into_iter())
+            .filter(|n| {
+                n.starts_with("map") || n.starts_with("gaze_map") || n.starts_with("report.")
+            })
+            .map(|n| (n.clone(), std::fs::read(dir.join(&n)).unwrap()))
+            .collect()
+    };
+    let alone: Vec<_> = [&first, &second]
+        .iter()
+        .enumerate()
+        .map(|(k, path)| {
+            let own = dir.path().join(format!("alone-{k}"));
+            assert_eq!(run_out(path, &own).status.code(), Some(0));
+            compared(&own)
+        })
+        .collect();
+    assert_ne!(alone[0], alone[1]);
+    for round in 0..12 {
+        let runs: Vec<std::process::Child> = [&first, &second]
+            .iter()
+            .map(|path| {
+                std::process::Command::new(env!("CARGO_BIN_EXE_reach"))
+                    .args([
+                        "run",
+                        path.to_str().unwrap(),
+                        "--out",
+                        out.to_str().unwrap(),
+                    ])
+                    .stdout(std::process::Stdio::null())
+                    .stderr(std::process::Stdio::null())
+                    .spawn()
+                    .unwrap()
+            })
+            .collect();
+        for run in runs {
+            let status = run.wait_with_output().unwrap().status;
+            assert_eq!(status.code(), Some(0), "round {round}");
+        }
+        let now = compared(&out);
+        assert!(
+            alone.contains(&now),
+            "round {round}: a set mixed from both runs"
+        );
+    }
+}
+
 #[test]
 fn an_output_set_has_a_file_per_map_and_is_written_whole_or_not_at_all() {
     let (dir, path) = scenario_file(THREE_MAPS);

@@ -8,8 +8,11 @@
 //! run killed outright is finished by the next); a failure before that (a
 //! name taken by a directory, a full disk) removes the temporaries and
 //! leaves the previous set as it was. A set lists its files in
-//! [`MANIFEST`], so that the next set removes those it has not (a map
-//! taken out of the scenario), and never a file it did not write.
+//! [`MANIFEST`], each with its SHA-256, sealed (`seal.rs`), so that the
+//! next set removes those it has not (a map taken out of the scenario),
+//! and never a file it did not write: a list this tool did not write for
+//! this user lists nothing, and a file changed since its set wrote it is
+//! kept.
 //! Temporaries a killed run left behind are swept at the next run. (The
 //! command line holds SIGINT and SIGTERM back while a set is written, so
 //! that they too leave a whole set.)
@@ -21,6 +24,7 @@ use std::sync::Arc;
 
 use super::journal;
 use super::placing;
+use super::seal::{self, own_record, Sealer};
 use crate::error::{Error, ErrorKind};
 use crate::plugin::FormatPlugin;
 use crate::report::Report;
@@ -59,30 +63,39 @@ pub fn write_outputs(
     formats: &[Arc<dyn FormatPlugin>],
     dir: &Path,
 ) -> Result<(), Error> {
+    let sealer = Sealer::of_user();
     let mut files = output_set(report, scenario, formats);
-    let names: String = files.iter().map(|(name, _)| format!("{name}\n")).collect();
-    files.push((MANIFEST.to_string(), names.into_bytes()));
-    let leftovers = previous_set(dir)
+    let listed: String = (files.iter())
+        .map(|(name, bytes)| format!("{name}\t{}\n", seal::digest(bytes)))
+        .collect();
+    files.push((MANIFEST.to_string(), sealer.seal(&listed).into_bytes()));
+    let leftovers = previous_set(dir, &sealer)
         .into_iter()
-        .filter(|old| !files.iter().any(|(name, _)| name == old))
-        .map(|old| dir.join(old))
-        .filter(|path| path.is_file())
+        .filter(|(old, _)| !files.iter().any(|(name, _)| name == old))
+        .filter(|(old, digest)| seal::digest_of_file(&dir.join(old)).as_ref() == Some(digest))
+        .map(|(old, _)| dir.join(old))
         .collect::<Vec<_>>();
-    place_set(dir, &files, &leftovers)
+    place_set(dir, &files, &leftovers, &sealer)
 }
 
-/// The names the set now in `dir` lists (none where it lists none): plain
-/// names in `dir`, never a path elsewhere. A list that is not a regular
-/// file (a FIFO, which was waited on for ever; a link to `/dev/zero`), or
-/// is larger than `journal::RECORD_BYTES`, lists none.
-fn previous_set(dir: &Path) -> Vec<String> {
-    let bytes = crate::read::read_root(&dir.join(MANIFEST), super::journal::RECORD_BYTES)
-        .unwrap_or_default();
+/// The files the set now in `dir` lists, each with the SHA-256 it was
+/// written with (none where it lists none): plain names in `dir`, never a
+/// path elsewhere. A list that is not a regular file of the user's (a
+/// FIFO, which was waited on for ever; a link to `/dev/zero`), is larger
+/// than `journal::RECORD_BYTES`, or whose seal does not hold under
+/// `sealer` (written by hand, carried by a repository, planted by another
+/// user) lists none.
+fn previous_set(dir: &Path, sealer: &Sealer) -> Vec<(String, String)> {
+    let bytes = own_record(&dir.join(MANIFEST), super::journal::RECORD_BYTES).unwrap_or_default();
     let text = String::from_utf8_lossy(&bytes);
-    text.lines()
-        .filter(|n| !n.is_empty() && !n.contains(['/', '\\']) && *n != "." && *n != "..")
-        .filter(|n| !n.starts_with(TEMPORARY) && *n != MANIFEST)
-        .map(str::to_string)
+    let Some(listed) = sealer.open(&text) else {
+        return Vec::new();
+    };
+    let plain = |n: &str| !n.is_empty() && !n.contains(['/', '\\']) && n != "." && n != "..";
+    (listed.lines())
+        .filter_map(|line| line.split_once('\t'))
+        .filter(|(n, _)| plain(n) && !n.starts_with(TEMPORARY) && *n != MANIFEST)
+        .map(|(n, digest)| (n.to_string(), digest.to_string()))
         .collect()
 }
 
@@ -96,18 +109,24 @@ fn write_error(path: &Path, e: &std::io::Error) -> Error {
 /// Write `files` into `dir` as one set: all of them, or none (the files
 /// they replace as they were).
 pub fn write_set(dir: &Path, files: &[(String, Vec<u8>)]) -> Result<(), Error> {
-    place_set(dir, files, &[])
+    place_set(dir, files, &[], &Sealer::of_user())
 }
 
 /// Write `files` into `dir` as one set and remove `leftovers` (files of
 /// `dir`): all of it, or none. One set at a time in a process: the
 /// temporaries and the journal are named by the process (`reach test`
 /// writes golden reports from several threads).
-fn place_set(dir: &Path, files: &[(String, Vec<u8>)], leftovers: &[PathBuf]) -> Result<(), Error> {
+fn place_set(
+    dir: &Path,
+    files: &[(String, Vec<u8>)],
+    leftovers: &[PathBuf],
+    sealer: &Sealer,
+) -> Result<(), Error> {
     static WRITING: std::sync::Mutex<()> = std::sync::Mutex::new(());
     let _one_at_a_time = WRITING.lock().unwrap_or_else(|e| e.into_inner());
     std::fs::create_dir_all(dir).map_err(|e| write_error(dir, &e))?;
-    journal::recover(dir);
+    let _across_processes = lock_dir(dir).map_err(|e| write_error(dir, &e))?;
+    journal::recover(dir, sealer);
     sweep_stale(dir);
     for (name, _) in files {
         let path = dir.join(name);
@@ -127,7 +146,29 @@ fn place_set(dir: &Path, files: &[(String, Vec<u8>)], leftovers: &[PathBuf]) -> 
         written.push((temporary, dir.join(name)));
     }
     let rename = |from: &Path, to: &Path| std::fs::rename(from, to);
-    placing::place(dir, &written, leftovers, &rename).map_err(|(path, e)| write_error(&path, &e))
+    placing::place(dir, &written, leftovers, &rename, sealer)
+        .map_err(|(path, e)| write_error(&path, &e))
+}
+
+/// `dir` locked against other processes writing a set there (an
+/// exclusive lock on the directory itself, so that no lock file is left
+/// in it), until the handle is dropped: two runs writing one `--out` at
+/// once each leave a whole set, the last one's, never a mix of both.
+#[cfg(unix)]
+fn lock_dir(dir: &Path) -> std::io::Result<std::fs::File> {
+    use std::os::fd::AsRawFd;
+    let handle = std::fs::File::open(dir)?;
+    // SAFETY: flock on a descriptor this handle owns; it is released when
+    // the handle is dropped (closed).
+    if unsafe { libc::flock(handle.as_raw_fd(), libc::LOCK_EX) } != 0 {
+        return Err(std::io::Error::last_os_error());
+    }
+    Ok(handle)
+}
+
+#[cfg(not(unix))]
+fn lock_dir(_dir: &Path) -> std::io::Result<()> {
+    Ok(())
 }
 
 fn remove_all(written: &[(PathBuf, PathBuf)]) {
@@ -157,6 +198,10 @@ fn sweep_stale(dir: &Path) {
 mod tests {
     use super::*;
 
+    fn sealer() -> Sealer {
+        Sealer::with_key(Some([6; 32]))
+    }
+
     /// A set's list that is a FIFO (or a link to a device) is not read:
     /// it lists nothing, so nothing is removed, and nothing waits.
     #[cfg(unix)]
@@ -166,12 +211,30 @@ mod tests {
         let list = dir.path().join(MANIFEST);
         let c = std::ffi::CString::new(list.to_str().unwrap()).unwrap();
         assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o600) }, 0);
-        assert!(previous_set(dir.path()).is_empty());
+        assert!(previous_set(dir.path(), &sealer()).is_empty());
         std::fs::remove_file(&list).unwrap();
         std::os::unix::fs::symlink("/dev/zero", &list).unwrap();
-        assert!(previous_set(dir.path()).is_empty());
+        assert!(previous_set(dir.path(), &sealer()).is_empty());
         std::fs::remove_file(&list).unwrap();
-        std::fs::write(&list, "report.json\n../outside\n").unwrap();
-        assert_eq!(previous_set(dir.path()), ["report.json"]);
+        let listed = "report.json\tab\n../outside\tcd\n";
+        std::fs::write(&list, sealer().seal(listed)).unwrap();
+        let set = previous_set(dir.path(), &sealer());
+        assert_eq!(set, [("report.json".to_string(), "ab".to_string())]);
+    }
+
+    /// A list this tool did not write for this user (by hand, or sealed
+    /// under another key) lists nothing: the files it names are not
+    /// removed by the next set.
+    #[test]
+    fn a_list_not_sealed_by_this_user_lists_nothing() {
+        let dir = tempfile::tempdir().unwrap();
+        let list = dir.path().join(MANIFEST);
+        let digest = seal::digest(b"mine");
+        let listed = format!("thesis.txt\t{digest}\n");
+        std::fs::write(&list, &listed).unwrap();
+        assert!(previous_set(dir.path(), &sealer()).is_empty());
+        let other = Sealer::with_key(Some([9; 32]));
+        std::fs::write(&list, other.seal(&listed)).unwrap();
+        assert!(previous_set(dir.path(), &sealer()).is_empty());
     }
 }

@@ -7,10 +7,13 @@
 //! holding part of each set and the journal; the next run that writes
 //! there first finishes what the journal lists (the renames whose
 //! temporaries are still there, then the removals), so that the directory
-//! holds the new set whole again.
+//! holds the new set whole again. A journal is sealed (`seal.rs`): one
+//! this tool did not write for this user is never replayed.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
+
+use super::seal::{own_record, Sealer};
 
 /// The journal's name: this, then the writing process's id.
 const JOURNAL: &str = ".reach-journal-";
@@ -24,10 +27,11 @@ pub enum SetStep {
     Remove(PathBuf),
 }
 
-/// Write down that `steps` (on files in `dir`) are about to be made;
-/// returns the journal's path. A line a step: `R`, the temporary's name
-/// and the final name; or `D` and the name removed; tab-separated.
-pub fn begin(dir: &Path, steps: &[SetStep]) -> std::io::Result<PathBuf> {
+/// Write down that `steps` (on files in `dir`) are about to be made,
+/// sealed by `sealer`; returns the journal's path. A line a step: `R`, the
+/// temporary's name and the final name; or `D` and the name removed;
+/// tab-separated.
+pub fn begin(dir: &Path, steps: &[SetStep], sealer: &Sealer) -> std::io::Result<PathBuf> {
     let name = |p: &Path| p.file_name().map(|n| n.to_string_lossy().into_owned());
     let mut text = String::new();
     for step in steps {
@@ -46,7 +50,7 @@ pub fn begin(dir: &Path, steps: &[SetStep]) -> std::io::Result<PathBuf> {
     }
     let journal = dir.join(format!("{JOURNAL}{}", std::process::id()));
     let draft = dir.join(format!("{JOURNAL}{}.draft", std::process::id()));
-    write_new(&draft, text.as_bytes())?;
+    write_new(&draft, sealer.seal(&text).as_bytes())?;
     std::fs::rename(&draft, &journal)?;
     Ok(journal)
 }
@@ -67,8 +71,10 @@ pub(super) fn write_new(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
 
 /// Finish the renames of every journal in `dir` that a process no longer
 /// running left, then remove it. A journal of a running process (another
-/// run writing here now) is left alone.
-pub fn recover(dir: &Path) {
+/// run writing here now) is left alone, and so is one whose seal does not
+/// hold under `sealer` (not this tool's for this user: it is not replayed,
+/// and not removed either).
+pub fn recover(dir: &Path, sealer: &Sealer) {
     let Ok(entries) = std::fs::read_dir(dir) else {
         return;
     };
@@ -87,15 +93,19 @@ pub fn recover(dir: &Path) {
         if running(pid) {
             continue;
         }
-        if draft {
-            // The renames never began: the previous set is whole.
-            let _ = std::fs::remove_file(entry.path());
+        // A regular file of the user's, of at most RECORD_BYTES, sealed:
+        // a FIFO at a journal's name was waited on for ever, and a
+        // journal written by hand renamed and removed the user's files.
+        let Some(bytes) = own_record(&entry.path(), RECORD_BYTES) else {
             continue;
-        }
-        // A regular file of at most RECORD_BYTES only: a FIFO at a
-        // journal's name was waited on for ever.
-        if let Ok(bytes) = crate::read::read_root(&entry.path(), RECORD_BYTES) {
-            roll_forward(dir, &String::from_utf8_lossy(&bytes));
+        };
+        let text = String::from_utf8_lossy(&bytes);
+        let Some(steps) = sealer.open(&text) else {
+            continue;
+        };
+        // A draft's renames never began: the previous set is whole.
+        if !draft {
+            roll_forward(dir, steps);
         }
         let _ = std::fs::remove_file(entry.path());
     }
@@ -151,6 +161,10 @@ fn running(_pid: u32) -> bool {
 mod tests {
     use super::*;
 
+    fn sealer() -> Sealer {
+        Sealer::with_key(Some([3; 32]))
+    }
+
     /// A run killed after renaming report.json and before scene.glb: the
     /// next run's recovery puts the new scene.glb in place, removes the
     /// previous set's leftover and the journal, and touches nothing
@@ -170,9 +184,9 @@ R\t.reach-tmp-4000000-x\t../escaped
 D\tmap-old.csv
 D\t../outside
 ";
-        std::fs::write(d.join(".reach-journal-4000000"), journal).unwrap();
+        std::fs::write(d.join(".reach-journal-4000000"), sealer().seal(journal)).unwrap();
         std::fs::write(d.join(".reach-tmp-4000000-x"), "x").unwrap();
-        recover(d);
+        recover(d, &sealer());
         let read = |n: &str| std::fs::read_to_string(d.join(n)).unwrap();
         assert_eq!(read("report.json"), "new");
         assert_eq!(read("scene.glb"), "new");
@@ -192,9 +206,10 @@ D\t../outside
         std::fs::write(&outside, "keep me").unwrap();
         let draft = d.join(format!("{JOURNAL}{}.draft", std::process::id()));
         std::os::unix::fs::symlink(&outside, &draft).unwrap();
-        let journal = begin(&d, &[SetStep::Remove(d.join("old.csv"))]).unwrap();
+        let journal = begin(&d, &[SetStep::Remove(d.join("old.csv"))], &sealer()).unwrap();
         assert_eq!(std::fs::read_to_string(&outside).unwrap(), "keep me");
-        assert_eq!(std::fs::read_to_string(&journal).unwrap(), "D\told.csv\n");
+        let text = std::fs::read_to_string(&journal).unwrap();
+        assert_eq!(sealer().open(&text), Some("D\told.csv\n"));
     }
 
     /// A journal (of a process not running) that is a FIFO is not waited
@@ -206,8 +221,41 @@ D\t../outside
         let fifo = dir.path().join(format!("{JOURNAL}4000001"));
         let c = std::ffi::CString::new(fifo.to_str().unwrap()).unwrap();
         assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o600) }, 0);
-        recover(dir.path());
-        assert!(!fifo.exists());
+        recover(dir.path(), &sealer());
+        assert!(
+            fifo.exists(),
+            "not this tool's: left alone, and not waited on"
+        );
+    }
+
+    /// A journal this tool did not write (by hand, in a repository, or
+    /// under another user's key) is not replayed: the files it names are
+    /// not renamed or removed, and it is left where it is.
+    #[test]
+    fn a_journal_not_sealed_by_this_user_is_not_replayed() {
+        let dir = tempfile::tempdir().unwrap();
+        let d = dir.path();
+        std::fs::write(d.join("thesis.txt"), "mine").unwrap();
+        std::fs::write(d.join("notes.txt"), "mine too").unwrap();
+        let journal = "R\tthesis.txt\tnotes.txt\nD\tthesis.txt\n";
+        let other = Sealer::with_key(Some([4; 32]));
+        for (k, text) in [journal.to_string(), other.seal(journal)]
+            .iter()
+            .enumerate()
+        {
+            let name = d.join(format!("{JOURNAL}{}", 4000010 + k));
+            std::fs::write(&name, text).unwrap();
+            recover(d, &sealer());
+            assert!(name.exists());
+        }
+        assert_eq!(
+            std::fs::read_to_string(d.join("thesis.txt")).unwrap(),
+            "mine"
+        );
+        assert_eq!(
+            std::fs::read_to_string(d.join("notes.txt")).unwrap(),
+            "mine too"
+        );
     }
 
     #[test]
@@ -215,8 +263,8 @@ D\t../outside
         let dir = tempfile::tempdir().unwrap();
         let d = dir.path();
         let ours = d.join(format!("{JOURNAL}{}", std::process::id()));
-        std::fs::write(&ours, "").unwrap();
-        recover(d);
+        std::fs::write(&ours, sealer().seal("")).unwrap();
+        recover(d, &sealer());
         assert!(ours.exists());
     }
 }

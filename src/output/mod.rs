@@ -12,6 +12,7 @@ pub mod json_layout;
 pub mod map_files;
 mod maps;
 mod placing;
+mod seal;
 mod text;
 pub mod view;
 

@@ -11,6 +11,7 @@
 use std::path::{Path, PathBuf};
 
 use super::journal::{self, SetStep};
+use super::seal::Sealer;
 
 /// A backup's name starts with this (a temporary's prefix, so that a
 /// killed run's backups are swept like its temporaries), then the
@@ -24,12 +25,14 @@ pub type Rename<'a> = &'a dyn Fn(&Path, &Path) -> std::io::Result<()>;
 /// Rename each temporary of `renames` (temporary, final path; all in
 /// `dir`) over its final path, then remove `leftovers` (files of the
 /// previous set this one does not have): all, or on an error none, the
-/// previous set restored. The error names the path that failed.
+/// previous set restored. The error names the path that failed. The
+/// journal is sealed by `sealer`.
 pub fn place(
     dir: &Path,
     renames: &[(PathBuf, PathBuf)],
     leftovers: &[PathBuf],
     rename: Rename<'_>,
+    sealer: &Sealer,
 ) -> Result<(), (PathBuf, std::io::Error)> {
     let backups = match back_up(dir, renames) {
         Ok(backups) => backups,
@@ -49,7 +52,7 @@ pub fn place(
             .cloned()
             .map(SetStep::Remove),
     );
-    let log = match journal::begin(dir, &steps) {
+    let log = match journal::begin(dir, &steps, sealer) {
         Ok(log) => log,
         Err(e) => {
             remove_temporaries(renames);
@@ -180,7 +183,8 @@ mod tests {
             std::fs::rename(from, to)
         };
         let r = renames(d, &["a", "b", "c", "d"]);
-        let e = place(d, &r, &[d.join("gone")], &failing).unwrap_err();
+        let sealer = Sealer::with_key(Some([5; 32]));
+        let e = place(d, &r, &[d.join("gone")], &failing, &sealer).unwrap_err();
         assert_eq!(e.0, d.join("c"));
         assert_eq!(listing(d), before);
     }
@@ -197,7 +201,15 @@ mod tests {
             &[(".reach-tmp-1-a", "new a"), (".reach-tmp-1-b", "new b")],
         );
         let r = renames(d, &["a", "b"]);
-        place(d, &r, &[d.join("gone")], &|f, t| std::fs::rename(f, t)).unwrap();
+        let sealer = Sealer::with_key(Some([5; 32]));
+        place(
+            d,
+            &r,
+            &[d.join("gone")],
+            &|f, t| std::fs::rename(f, t),
+            &sealer,
+        )
+        .unwrap();
         let expected = [("a", "new a"), ("b", "new b"), ("mine", "user's")];
         let expected: Vec<(String, String)> = expected
             .iter()
