@@ -23,6 +23,7 @@ mod invariance;
 mod layers;
 mod limits;
 mod meshes;
+mod outputs;
 mod parser;
 mod placement;
 mod plugins;
