@@ -146,7 +146,9 @@ struct Evaluate {
     format: String,
     /// Also write every format's files as one set: DIR/report.txt,
     /// report.json, report.html, scene.glb, and a CSV and an SVG heat map
-    /// per map.
+    /// per map; with DIR/.reach-set, its list, sealed with your key
+    /// (~/.local/state/reach/key). The next set removes only files this
+    /// list names and that are as it wrote them.
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
     /// Exit 3 (after the report) if a person's base fits nowhere in a
