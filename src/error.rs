@@ -189,6 +189,8 @@ pub enum ErrorKind {
     },
     #[error("effector `{effector}` of `{person}` has no look link")]
     NoLookLink { effector: String, person: String },
+    #[error("effector `{effector}` of `{person}` is a line of sight, not a hand")]
+    LookLinkReaches { effector: String, person: String },
 
     // ------------------------------------------------------------ plugins
     #[error("unknown {kind} `{name}`")]
@@ -255,6 +257,7 @@ impl ErrorKind {
             Missing { .. } | Repeated { .. } | TargetOutsideRoom { .. } => "reach::scene",
             TargetInsideBox { .. } | TargetInsideMesh { .. } => "reach::scene",
             Unsupported { .. } | Misplaced { .. } | NoLookLink { .. } => "reach::scene",
+            LookLinkReaches { .. } => "reach::scene",
             Illegible { .. } => "reach::range",
             NoEffector { .. } => "reach::name",
             TooLarge { .. } | TooManyStarts { .. } | TooMuchWork { .. } => "reach::limit",
@@ -319,6 +322,7 @@ impl ErrorKind {
             Misplaced { .. } => "in a used file".into(),
             Illegible { .. } => "for this size".into(),
             NoLookLink { .. } => "for this person".into(),
+            LookLinkReaches { .. } => "not a hand".into(),
             NoEffector { .. } => "for this person".into(),
             UnknownPlugin { kind, .. } => format!("no {kind} of this name"),
             UnknownOption { .. } => "unknown option".into(),
@@ -426,6 +430,9 @@ impl ErrorKind {
             )),
             NoLookLink { .. } => Some(
                 "a gaze effector's chain ends in a prismatic joint along the line of sight, as `eyes` of std::body's `upper_body`".into(),
+            ),
+            LookLinkReaches { .. } => Some(
+                "its chain ends in a look link, which stretches along the line of sight to whatever it is aimed at, so it would \"reach\" anything in view: name a hand's point (`grip`, `thumb_tip`, `fingertip`, or their `left_` twins) or leave `effector` out; whether the eyes see a target is a `gaze`".into(),
             ),
             UnknownPlugin {
                 kind,

@@ -17,12 +17,20 @@ fn cup_reach(side_mm: f64, options: &str) -> Result<(bool, String), String> {
 /// of [`cup_reach`], with `options`: whether the hand (and the eyes) do,
 /// and the hand's effector.
 fn cup_task(side_mm: f64, task: &str, options: &str) -> Result<(bool, String), String> {
+    cup_task_at([300.0, side_mm, 1300.0], task, options)
+}
+
+/// [`cup_task`] with the cup `[ahead, to the left, high]` of the man's hip
+/// point (mm; his hip point is 930 mm above the floor).
+fn cup_task_at(at_mm: [f64; 3], task: &str, options: &str) -> Result<(bool, String), String> {
     let text = format!(
         "units mm deg\nuse std::people\nroom r {{\n  size 4000 x 4000 x 2500\n  \
-         target cup at (1300, {}, 1300)\n}}\n\
+         target cup at ({}, {}, {})\n}}\n\
          person p {{ mannequin man_50th base fixed {{ at (1000, 2000, 930) heading 0deg }} }}\n\
          {task} by p {{ {options} }}\n",
-        2000.0 + side_mm
+        1000.0 + at_mm[0],
+        2000.0 + at_mm[1],
+        at_mm[2]
     );
     let registry = Registry::builtin();
     let (_, checked) = reach::check(
@@ -246,4 +254,30 @@ fn a_map_of_one_hand_is_written_to_files_named_after_the_hand() {
             .all(|l| l.ends_with(",right") || l.ends_with(",left")),
         "{csv}"
     );
+}
+
+/// A cup 300 mm to one side (past that shoulder) that both hands reach is
+/// reached with the hand on its side, by a reach and by a reach and gaze:
+/// a person does not reach across the body for it. (A reach took the left
+/// hand for a cup 300 mm to the right, a little more comfortable by the
+/// criterion; a reach and gaze took the right hand for one on the left.)
+#[test]
+fn a_cup_well_to_one_side_is_reached_with_that_sides_hand() {
+    for task in ["reach cup", "reach cup and gaze"] {
+        let options = if task == "reach cup" { "" } else { "size 10mm" };
+        let (ok, effector) = cup_task(300.0, task, options).unwrap();
+        assert!(
+            ok && effector == "left_grip",
+            "{task} left: {ok} {effector}"
+        );
+        let (ok, effector) = cup_task(-300.0, task, options).unwrap();
+        assert!(ok && effector == "grip", "{task} right: {ok} {effector}");
+        // 400 mm ahead, 300 mm to the right, at 1400 mm: the left hand
+        // was the more comfortable by the criterion.
+        let (ok, effector) = cup_task_at([400.0, -300.0, 1400.0], task, options).unwrap();
+        assert!(
+            ok && effector == "grip",
+            "{task} ahead right: {ok} {effector}"
+        );
+    }
 }

@@ -411,6 +411,18 @@ pub(super) fn needs_look_link(person: &str, chain: &Chain) -> Option<ErrorKind> 
     })
 }
 
+/// An error where `chain` (of `person`) ends in a look link but is asked
+/// to bring a hand to a target (a reach, a map, the hand of a reach and
+/// gaze): the look link stretches to whatever it is aimed at.
+pub(super) fn refuses_look_link(person: &str, chain: &Chain) -> Option<ErrorKind> {
+    needs_look_link(person, chain)
+        .is_none()
+        .then(|| ErrorKind::LookLinkReaches {
+            effector: chain.effector_name.clone(),
+            person: person.to_string(),
+        })
+}
+
 /// The chain with its look link limited to `legible_mm` (the aimed range).
 pub(super) fn with_look_range(chain: &Chain, legible_mm: [f64; 2]) -> Chain {
     let mut chain = chain.clone();

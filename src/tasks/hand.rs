@@ -2,18 +2,23 @@
 //! the other hand (`left_` and its name), or either, the default where
 //! the task names no effector.
 
+use nalgebra::Point3;
+
 use super::common::Common;
-use crate::kinematics::{Body, LEFT_PREFIX as LEFT};
+use crate::kinematics::{hand_side, Body, LEFT_PREFIX as LEFT};
 use crate::plugin::{Params, SettingsError};
 
-/// The option `hand`'s documentation, for a task that takes the more
-/// comfortable hand where both do (a reach).
-pub const HAND_DOC: &str = "`either` (the effector and its twin on the other hand, `left_` and its name, where the mannequin has both: the hand that reaches, the more comfortable where both do; the default where no effector is named), `right` or `left`";
+/// The option `hand`'s documentation, for a task that searches with each
+/// hand (a reach).
+pub const HAND_DOC: &str = "`either` (the effector and its twin on the other hand, `left_` and its name, where the mannequin has both: the hand that reaches; where both do, the hand on the target's side when the target is more than 150 mm to one side, else the more comfortable; the default where no effector is named), `right` or `left`";
 
 /// The option `hand`'s documentation, for a task that tries the twin only
-/// where the effector asked for does not do (a map's point, a reach and
-/// gaze).
+/// where the effector asked for does not do (a map's point).
 pub const HAND_DOC_FIRST: &str = "`either` (the effector and its twin on the other hand, `left_` and its name, where the mannequin has both: the effector where it does, else its twin; the default where no effector is named), `right` or `left`";
+
+/// The option `hand`'s documentation for a reach and gaze: the twin is
+/// tried where the first does not do or the target is on its side.
+pub const HAND_DOC_SEEN: &str = "`either` (the effector and its twin on the other hand, `left_` and its name, where the mannequin has both: the effector where it reaches while the eyes see, the twin too where it does not or the target is more than 150 mm to the twin's side, and then the hand on the target's side; the default where no effector is named), `right` or `left`";
 
 /// Which hand a task uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -42,7 +47,7 @@ impl Hand {
     }
 
     /// The option `hand`, read by a task's settings, with its
-    /// documentation (`HAND_DOC` or `HAND_DOC_FIRST`).
+    /// documentation (`HAND_DOC`, `HAND_DOC_FIRST` or `HAND_DOC_SEEN`).
     pub fn option(p: &mut Params<'_>, doc: &'static str) -> Option<String> {
         p.optional_name("hand", doc).get()
     }
@@ -62,11 +67,15 @@ impl Hand {
             let on_left = named.starts_with(LEFT);
             if on_left != (side == Hand::Left) {
                 let word = if side == Hand::Left { "left" } else { "right" };
-                let other = if on_left { "left" } else { "right" };
+                let named_is = if on_left {
+                    "a left-hand effector (`left_`)"
+                } else {
+                    "not a left-hand effector (no `left_`)"
+                };
                 return Err(SettingsError::invalid(
                     "hand",
                     format!(
-                        "`hand {word}` and `effector {named}`, an effector of the {other} hand, disagree: name the effector of the hand meant, or leave one out"
+                        "`hand {word}` and `effector {named}`, {named_is}, disagree: name the effector of the hand meant, or leave one out"
                     ),
                 ));
             }
@@ -81,6 +90,28 @@ impl Hand {
             Some(Hand::Left) => common.effector = Some(format!("{LEFT}{on_right}")),
         }
         Ok(hand == Some(Hand::Either))
+    }
+}
+
+/// How far past the body's midline (the hip point, across the base) a
+/// target is on one hand's side: about where that hand's shoulder is.
+/// Beyond it, either hand reaches with that side's hand where both do.
+pub const SIDE_MM: f64 = 150.0;
+
+/// How far to the left of the midline of a base at `base_mm`, facing
+/// `heading_rad`, the point `target_mm` is (negative: to the right).
+pub fn across_mm(base_mm: [f64; 2], heading_rad: f64, target_mm: &Point3<f64>) -> f64 {
+    let (dx, dy) = (target_mm.x - base_mm[0], target_mm.y - base_mm[1]);
+    -dx * heading_rad.sin() + dy * heading_rad.cos()
+}
+
+/// Whether a point `across_mm` to the left of the midline (negative: to
+/// the right) is on the side of the hand of `effector`: more than
+/// [`SIDE_MM`] that way.
+pub fn on_side_of(effector: &str, across_mm: f64) -> bool {
+    match hand_side(effector) {
+        "left" => across_mm > SIDE_MM,
+        _ => across_mm < -SIDE_MM,
     }
 }
 
@@ -101,6 +132,20 @@ pub fn searches(body: &Body, effectors: &[usize], either: bool) -> u64 {
 #[cfg(test)]
 mod tests {
     use crate::kinematics::{hand_side, twin_name};
+
+    #[test]
+    fn a_point_past_a_shoulder_is_on_that_hands_side() {
+        use super::{across_mm, on_side_of};
+        let target = nalgebra::Point3::new(1000.0, 1300.0, 1200.0);
+        // Facing +x from (700, 1500): the point is 200 mm to the right.
+        let across = across_mm([700.0, 1500.0], 0.0, &target);
+        assert!((across + 200.0).abs() < 1e-9);
+        assert!(on_side_of("grip", across) && !on_side_of("left_grip", across));
+        // Facing +y from (700, 1000): 300 mm ahead and 300 mm to the right.
+        let turned = across_mm([700.0, 1000.0], std::f64::consts::FRAC_PI_2, &target);
+        assert!((turned + 300.0).abs() < 1e-9, "{turned}");
+        assert!(!on_side_of("grip", 100.0) && !on_side_of("left_grip", 100.0));
+    }
 
     #[test]
     fn the_twin_of_an_effector_is_on_the_other_hand() {

@@ -8,6 +8,7 @@
 use nalgebra::Vector3;
 
 use super::common::{Common, CommonDecl, Reaching, INCREMENTAL, MAP_RETRY};
+use super::gaze::refuses_look_link;
 use super::grid_settings::GridSettings;
 use super::hand::{self, hands_of, Hand};
 use super::map_grid::{map_report, MapAsked};
@@ -98,6 +99,12 @@ struct MapTask {
 impl Task for MapTask {
     fn effectors(&self) -> Vec<EffectorNeed> {
         vec![self.reaching.effector_need()]
+    }
+
+    /// A hand's point: not a line of sight, whose look link would
+    /// "reach" whatever is in view.
+    fn validate_chain(&self, person: &str, _need: usize, chain: &Chain) -> Option<ErrorKind> {
+        refuses_look_link(person, chain)
     }
 
     fn validate(&self, subject: &Subject<'_>) -> Option<ErrorKind> {

@@ -4,6 +4,7 @@ use super::hand::{self, hands_of, Hand};
 use super::common::{
     mix_seed, Common, CommonDecl, Reaching, INCREMENTAL, THOROUGH_RETRY,
 };
+use super::gaze::refuses_look_link;
 use super::walk_in::reach_walking_in;
 use super::why::{Failed, Found};
 use crate::plugin::{
@@ -11,8 +12,10 @@ use crate::plugin::{
     Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
 };
 use crate::report::{ReachReport, TaskReport};
-use crate::kinematics::Body;
+use crate::error::ErrorKind;
+use crate::kinematics::{Body, Chain};
 use crate::scene::Target;
+use nalgebra::Point3;
 
 /// The plugin `reach`.
 pub struct Reach;
@@ -88,6 +91,12 @@ impl Task for ReachTask {
         vec![self.reaching.effector_need()]
     }
 
+    /// A hand's point: not a line of sight, whose look link would
+    /// "reach" whatever is in view.
+    fn validate_chain(&self, person: &str, _need: usize, chain: &Chain) -> Option<ErrorKind> {
+        refuses_look_link(person, chain)
+    }
+
     fn starts_per_point(&self, placements: Tries) -> u64 {
         self.reaching.starts_per_point(placements)
     }
@@ -128,7 +137,7 @@ impl Task for ReachTask {
             // For a verdict alone, the first hand that reaches will do.
             let done = report.ok && input.verdict_only;
             best = Some(match best {
-                Some(kept) if !better(&report, &kept) => kept,
+                Some(kept) if !better(&report, &kept, &target.position_mm) => kept,
                 _ => report,
             });
             if done {
@@ -139,13 +148,24 @@ impl Task for ReachTask {
     }
 }
 
-/// Whether `a` is a better answer than `b`: it reaches where `b` does
-/// not; both reaching, it is more comfortable; neither, it comes closer.
-fn better(a: &ReachReport, b: &ReachReport) -> bool {
+/// Whether `a` is a better answer than `b` for the target at
+/// `target_mm`: it reaches where `b` does not; both reaching, with the
+/// hand on the target's side where it is well to one side (past a
+/// shoulder: a person does not reach across the body for it), else the
+/// more comfortable; neither, it comes closer.
+fn better(a: &ReachReport, b: &ReachReport, target_mm: &Point3<f64>) -> bool {
+    let on_its_side = |r: &ReachReport| {
+        let across = hand::across_mm([r.base.x_mm, r.base.y_mm], r.base.heading_deg.to_radians(), target_mm);
+        hand::on_side_of(&r.effector, across)
+    };
     match (a.ok, b.ok) {
         (true, false) => true,
         (false, true) => false,
-        (true, true) => a.comfort < b.comfort,
+        (true, true) => match (on_its_side(a), on_its_side(b)) {
+            (true, false) => true,
+            (false, true) => false,
+            _ => a.comfort < b.comfort,
+        },
         (false, false) => a.distance_mm < b.distance_mm,
     }
 }

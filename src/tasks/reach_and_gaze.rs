@@ -10,7 +10,9 @@ use nalgebra::{Point3, Vector2};
 
 use super::common::{mix_seed, Common, CommonDecl, Reaching, THOROUGH_RETRY};
 use super::hand::{self, hands_of, Hand};
-use super::gaze::{limit_look, needs_look_link, Eyes, GazeObstacles, Looked, Looking};
+use super::gaze::{
+    limit_look, needs_look_link, refuses_look_link, Eyes, GazeObstacles, Looked, Looking,
+};
 use super::why::{Failed, Found};
 use crate::collision::{Obstacles, PlacedObstacles};
 use crate::error::ErrorKind;
@@ -72,7 +74,7 @@ impl Settings for ReachAndGazeSettings {
             .get();
         ReachAndGazeSettings {
             common,
-            hand: Hand::option(p, hand::HAND_DOC_FIRST),
+            hand: Hand::option(p, hand::HAND_DOC_SEEN),
             eyes,
             gaze_weight,
             looking: Looking::visit(p),
@@ -164,9 +166,10 @@ impl Task for ReachAndGazeTask {
     }
 
     fn validate_chain(&self, person: &str, need: usize, chain: &Chain) -> Option<ErrorKind> {
-        (need == 1)
-            .then(|| needs_look_link(person, chain))
-            .flatten()
+        match need {
+            0 => refuses_look_link(person, chain),
+            _ => needs_look_link(person, chain),
+        }
     }
 
     fn starts_per_point(&self, placements: Tries) -> u64 {
@@ -229,15 +232,26 @@ impl Task for ReachAndGazeTask {
             query: &query,
         };
         let mut best: Option<Tried> = None;
-        for hand in self.hands(input) {
+        let hands = self.hands(input);
+        for (k, &hand) in hands.iter().enumerate() {
             let tried = self.run_with(&with, hand);
-            // The first hand that reaches while the eyes see will do: the
-            // other is tried only where it does not (a tree solve with the
-            // eyes costs several reaches, and trying the other hand for
-            // comfort tripled a kitchen's work).
-            let done = tried.report.ok;
+            // The first hand that reaches while the eyes see will do,
+            // unless the target is on the other hand's side of the body:
+            // the other is tried only then or where the first does not (a
+            // solve with the eyes costs several reaches, and trying the
+            // other hand for comfort everywhere tripled a kitchen's work).
+            let pose = &tried.alone.pose;
+            let across = hand::across_mm(
+                [pose.position_mm.x, pose.position_mm.y],
+                pose.heading_rad,
+                &target.position_mm,
+            );
+            let body = &input.person.body;
+            let twin_side = (hands.get(k + 1))
+                .is_some_and(|&twin| hand::on_side_of(&body.effectors[twin].name, across));
+            let done = tried.report.ok && !twin_side;
             best = Some(match best {
-                Some(kept) if !better(&tried.report, &kept.report) => kept,
+                Some(kept) if !better(&tried.report, &kept.report, across) => kept,
                 _ => tried,
             });
             if done {
@@ -266,13 +280,21 @@ struct Tried {
     alone: Placement,
 }
 
-/// Whether `a` is a better answer than `b`, which did not do: hand and
-/// eyes both do; else the hand reaches where in `b` it does not, or comes
-/// closer.
-fn better(a: &ReachAndGazeReport, b: &ReachAndGazeReport) -> bool {
+/// Whether `a` is a better answer than `b`, the target `across_mm` to
+/// the left of `a`'s base's midline: hand and eyes both do where in `b`
+/// they do not; both doing, with the hand on the target's side where it
+/// is well to one side, else the more comfortable hand; neither, the
+/// hand reaches where in `b` it does not, else comes closer.
+fn better(a: &ReachAndGazeReport, b: &ReachAndGazeReport, across_mm: f64) -> bool {
+    let on_its_side = |r: &ReachAndGazeReport| hand::on_side_of(&r.reach.effector, across_mm);
     match (a.ok, b.ok) {
-        (true, _) => true,
+        (true, false) => true,
         (false, true) => false,
+        (true, true) => match (on_its_side(a), on_its_side(b)) {
+            (true, false) => true,
+            (false, true) => false,
+            _ => a.reach.comfort < b.reach.comfort,
+        },
         (false, false) => match (a.reach.ok, b.reach.ok) {
             (true, false) => true,
             (false, true) => false,
@@ -332,21 +354,23 @@ impl ReachAndGazeTask {
             query,
             target,
         };
-        let mut seen = solving.attempt(alone.pose, query.seed);
-        // The tree's posture may reach with the eyes on the target and yet
-        // the view be blocked (the sight line is checked after), or its
-        // starts miss: where the hand alone reaches, the eyes are solved
-        // with the hand held there, then the tree again from other starts,
-        // then with the base moved, before the answer is no.
-        if !seen.ok() && alone.solution.reaches(reaching.common.tolerance_mm) {
-            let held = std::iter::once_with(|| {
-                solving.eyes_after_hand(alone.pose, &alone.solution.q, query.seed)
-            });
+        // Where the hand alone reaches, first the eyes with the hand held
+        // in the reach's own posture (the most comfortable it found: the
+        // person reaches as they would and turns the head to look), then
+        // hand and eyes together by the tree, which may bend the trunk
+        // where the head cannot see from there; then the tree from other
+        // starts and with the base moved, before the answer is no.
+        let hand_reaches = alone.solution.reaches(reaching.common.tolerance_mm);
+        let held = hand_reaches
+            .then(|| solving.eyes_after_hand(alone.pose, &alone.solution.q, query.seed))
+            .filter(Seen::ok);
+        let mut seen = held.unwrap_or_else(|| solving.attempt(alone.pose, query.seed));
+        if !seen.ok() && hand_reaches {
             let poses = again_from(alone.pose, target.position_mm, prepared.as_ref());
             let tries = poses.into_iter().enumerate().map(|(k, pose)| {
                 solving.attempt(pose, mix_seed(query.seed, &format!("reach+gaze again {k}")))
             });
-            if let Some(found) = held.chain(tries).find(Seen::ok) {
+            if let Some(found) = tries.into_iter().find(Seen::ok) {
                 seen = found;
             }
         }
