@@ -437,10 +437,15 @@ fn run(registry: &Registry, e: &Evaluate, shown: &Shown) -> i32 {
         Err(error) => return shown.diagnostics(&Diagnostics::single(error).attach(&sources)),
     };
     if let Some(dir) = &e.out {
-        if let Err(error) = crate::signals::whole(|| {
+        match crate::signals::whole(|| {
             reach::output::write_outputs(&report, &scenario, registry.formats(), dir)
         }) {
-            return shown.diagnostics(&Diagnostics::single(error));
+            Err(error) => return shown.diagnostics(&Diagnostics::single(error)),
+            Ok(written) => {
+                if let Some(note) = written.note(dir) {
+                    eprintln!("{note}");
+                }
+            }
         }
     }
     let mut stdout = std::io::stdout().lock();

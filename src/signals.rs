@@ -1,4 +1,5 @@
-//! SIGINT and SIGTERM held back while an `--out` set is written, so that
+//! SIGINT, SIGTERM and SIGHUP (a terminal closed, an SSH session
+//! dropped) held back while an `--out` set is written, so that
 //! DIR holds the previous set or the new one, never part of each: outside
 //! [`whole`], they end the program at once as usual; inside, they are
 //! noted, and the program ends (with 128 + the signal, as the shell
@@ -19,12 +20,12 @@ static HELD: OnceLock<Option<Held>> = OnceLock::new();
 
 #[cfg(unix)]
 fn install() -> Option<Held> {
-    use signal_hook::consts::{SIGINT, SIGTERM};
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
     let held = Held {
         act_at_once: Arc::new(AtomicBool::new(true)),
         arrived: Arc::new(AtomicUsize::new(0)),
     };
-    for signal in [SIGINT, SIGTERM] {
+    for signal in [SIGINT, SIGTERM, SIGHUP] {
         // The default action first, when allowed; else only noted.
         signal_hook::flag::register_conditional_default(signal, Arc::clone(&held.act_at_once))
             .ok()?;
@@ -39,8 +40,9 @@ fn install() -> Option<Held> {
     None
 }
 
-/// Run `write` (an output set being written) with SIGINT and SIGTERM held
-/// back; if one arrived meanwhile, end the program once it is done.
+/// Run `write` (an output set being written) with SIGINT, SIGTERM and
+/// SIGHUP held back; if one arrived meanwhile, end the program once it is
+/// done.
 pub fn whole<T>(write: impl FnOnce() -> T) -> T {
     let Some(held) = HELD.get_or_init(install) else {
         return write();

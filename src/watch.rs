@@ -172,8 +172,15 @@ impl State {
                     let written = crate::signals::whole(|| {
                         reach::output::write_outputs(&report, &scenario, registry.formats(), dir)
                     });
-                    if let Err(e) = written {
-                        screen.push_str(&reach::Diagnostics::single(e).render(!self.colour));
+                    match written {
+                        Err(e) => {
+                            screen.push_str(&reach::Diagnostics::single(e).render(!self.colour))
+                        }
+                        Ok(written) => {
+                            if let Some(note) = written.note(dir) {
+                                screen.push_str(&format!("{note}\n"));
+                            }
+                        }
                     }
                 }
                 let (changed, listed) = changes(self.last_good.as_ref(), &report);

@@ -62,20 +62,47 @@ pub fn write_outputs(
     scenario: &Scenario,
     formats: &[Arc<dyn FormatPlugin>],
     dir: &Path,
-) -> Result<(), Error> {
+) -> Result<Written, Error> {
     let sealer = Sealer::of_user();
     let mut files = output_set(report, scenario, formats);
     let listed: String = (files.iter())
         .map(|(name, bytes)| format!("{name}\t{}\n", seal::digest(bytes)))
         .collect();
     files.push((MANIFEST.to_string(), sealer.seal(&listed).into_bytes()));
-    let leftovers = previous_set(dir, &sealer)
-        .into_iter()
-        .filter(|(old, _)| !files.iter().any(|(name, _)| name == old))
-        .filter(|(old, digest)| seal::digest_of_file(&dir.join(old)).as_ref() == Some(digest))
-        .map(|(old, _)| dir.join(old))
-        .collect::<Vec<_>>();
-    place_set(dir, &files, &leftovers, &sealer)
+    // Read once a journal a killed set left is finished: its list is the
+    // previous set's.
+    let leftovers = |dir: &Path, sealer: &Sealer| {
+        (previous_set(dir, sealer).into_iter())
+            .filter(|(old, _)| !files.iter().any(|(name, _)| name == old))
+            .filter(|(old, digest)| seal::digest_of_file(&dir.join(old)).as_ref() == Some(digest))
+            .map(|(old, _)| dir.join(old))
+            .collect::<Vec<_>>()
+    };
+    place_set(dir, &files, &leftovers, &sealer)?;
+    Ok(Written {
+        sealed: sealer.has_key(),
+    })
+}
+
+/// What writing an `--out` set did that its caller may tell the user.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Written {
+    /// Whether the set's list was sealed: where the user has no key (none
+    /// could be made), it is not, and the next set removes none of its
+    /// files.
+    pub sealed: bool,
+}
+
+impl Written {
+    /// What the user is told of the set written in `dir`, if anything.
+    pub fn note(&self, dir: &Path) -> Option<String> {
+        (!self.sealed).then(|| {
+            format!(
+                "note: no key to seal output sets could be read or made (`$XDG_STATE_HOME/reach/key`, by default `~/.local/state/reach/key`: a home that is missing or cannot be written, or a key others may read): the list of `{}` is unsealed, so the next set written there removes none of these files",
+                crate::escape::escaped(&dir.display().to_string())
+            )
+        })
+    }
 }
 
 /// The files the set now in `dir` lists, each with the SHA-256 it was
@@ -109,17 +136,18 @@ fn write_error(path: &Path, e: &std::io::Error) -> Error {
 /// Write `files` into `dir` as one set: all of them, or none (the files
 /// they replace as they were).
 pub fn write_set(dir: &Path, files: &[(String, Vec<u8>)]) -> Result<(), Error> {
-    place_set(dir, files, &[], &Sealer::of_user())
+    place_set(dir, files, &|_, _| Vec::new(), &Sealer::of_user())
 }
 
-/// Write `files` into `dir` as one set and remove `leftovers` (files of
-/// `dir`): all of it, or none. One set at a time in a process: the
+/// Write `files` into `dir` as one set and remove the files of `dir` that
+/// `leftovers` names (asked once `dir` is locked and a killed set's
+/// journal finished): all of it, or none. One set at a time in a process: the
 /// temporaries and the journal are named by the process (`reach test`
 /// writes golden reports from several threads).
 fn place_set(
     dir: &Path,
     files: &[(String, Vec<u8>)],
-    leftovers: &[PathBuf],
+    leftovers: &dyn Fn(&Path, &Sealer) -> Vec<PathBuf>,
     sealer: &Sealer,
 ) -> Result<(), Error> {
     static WRITING: std::sync::Mutex<()> = std::sync::Mutex::new(());
@@ -128,6 +156,7 @@ fn place_set(
     let _across_processes = lock_dir(dir).map_err(|e| write_error(dir, &e))?;
     journal::recover(dir, sealer);
     sweep_stale(dir);
+    let leftovers = leftovers(dir, sealer);
     for (name, _) in files {
         let path = dir.join(name);
         if path.is_dir() {
@@ -146,7 +175,7 @@ fn place_set(
         written.push((temporary, dir.join(name)));
     }
     let rename = |from: &Path, to: &Path| std::fs::rename(from, to);
-    placing::place(dir, &written, leftovers, &rename, sealer)
+    placing::place(dir, &written, &leftovers, &rename, sealer)
         .map_err(|(path, e)| write_error(&path, &e))
 }
 
@@ -220,6 +249,34 @@ mod tests {
         std::fs::write(&list, sealer().seal(listed)).unwrap();
         let set = previous_set(dir.path(), &sealer());
         assert_eq!(set, [("report.json".to_string(), "ab".to_string())]);
+    }
+
+    /// A set killed during its renames left its journal: the next set
+    /// finishes it before it reads the previous list, so the killed set's
+    /// files that the next has not are removed (read before, the list
+    /// was the one before the killed set, and they stayed for good).
+    #[test]
+    fn the_previous_list_is_read_once_a_killed_sets_journal_is_finished() {
+        let dir = tempfile::tempdir().unwrap();
+        let d = dir.path();
+        let sealer = sealer();
+        let killed = ".reach-tmp-4000020-";
+        let listed = format!("map-a.csv\t{}\n", seal::digest(b"a"));
+        std::fs::write(d.join(format!("{killed}{MANIFEST}")), sealer.seal(&listed)).unwrap();
+        std::fs::write(d.join(format!("{killed}map-a.csv")), "a").unwrap();
+        std::fs::write(d.join(MANIFEST), sealer.seal("")).unwrap();
+        let journal =
+            format!("R\t{killed}{MANIFEST}\t{MANIFEST}\nR\t{killed}map-a.csv\tmap-a.csv\n");
+        std::fs::write(d.join(".reach-journal-4000020"), sealer.seal(&journal)).unwrap();
+        let files = [("report.json".to_string(), b"{}".to_vec())];
+        let leftovers = |dir: &Path, sealer: &Sealer| {
+            (previous_set(dir, sealer).into_iter())
+                .map(|(old, _)| dir.join(old))
+                .collect::<Vec<_>>()
+        };
+        place_set(d, &files, &leftovers, &sealer).unwrap();
+        assert!(!d.join("map-a.csv").exists());
+        assert!(d.join("report.json").exists());
     }
 
     /// A list this tool did not write for this user (by hand, or sealed

@@ -16,7 +16,7 @@ mod seal;
 mod text;
 pub mod view;
 
-pub use files::{output_set, write_outputs, write_set};
+pub use files::{output_set, write_outputs, write_set, Written};
 pub use glb_file::GlbFile;
 pub use html::Html;
 pub use json::Json;

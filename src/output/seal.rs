@@ -8,8 +8,9 @@
 //! did not write for this user (one a repository carries, one another
 //! user planted in a shared folder, one written by hand) lists nothing and
 //! replays nothing. Where the user has no key and none can be made (no
-//! home), records are written unsealed and none is acted on: a set then
-//! removes no file of an earlier set, and a killed set is not finished.
+//! home, a home that cannot be written), records are written unsealed and
+//! none is acted on: a set then removes no file of an earlier set (the
+//! command line says so), and a killed set is not finished.
 
 use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
@@ -40,6 +41,11 @@ impl Sealer {
     #[cfg(test)]
     pub fn with_key(key: Option<[u8; KEY_BYTES]>) -> Self {
         Sealer { key }
+    }
+
+    /// Whether there is a key to seal with.
+    pub fn has_key(&self) -> bool {
+        self.key.is_some()
     }
 
     /// `body` with its seal first (unsealed where there is no key).
@@ -113,10 +119,15 @@ fn owned_by_user(_meta: &std::fs::Metadata) -> bool {
 
 /// Where the user's key is kept.
 fn key_dir() -> Option<PathBuf> {
+    // A home that is not there is not made (a user without one, a
+    // service account): then there is no key.
     let state = std::env::var_os("XDG_STATE_HOME")
         .map(PathBuf::from)
         .filter(|p| p.is_absolute())
-        .or_else(|| std::env::var_os("HOME").map(|h| Path::new(&h).join(".local/state")))?;
+        .or_else(|| {
+            let home = PathBuf::from(std::env::var_os("HOME")?);
+            home.is_dir().then(|| home.join(".local/state"))
+        })?;
     Some(state.join("reach"))
 }
 
