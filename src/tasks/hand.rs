@@ -115,6 +115,17 @@ pub fn on_side_of(effector: &str, across_mm: f64) -> bool {
     }
 }
 
+/// Of two hands that both do, whether the first (`(on the target's side,
+/// comfort)`, [`on_side_of`]) is taken rather than the second: the one on
+/// the target's side where only one is, else the more comfortable.
+pub fn rather((a_side, a_comfort): (bool, f64), (b_side, b_comfort): (bool, f64)) -> bool {
+    match (a_side, b_side) {
+        (true, false) => true,
+        (false, true) => false,
+        _ => a_comfort < b_comfort,
+    }
+}
+
 /// The effectors (indices into `body`) a task tries: `asked`, the one the
 /// checker resolved, and with `either` its twin on the other hand where
 /// the body has one.

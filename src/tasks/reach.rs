@@ -161,11 +161,7 @@ fn better(a: &ReachReport, b: &ReachReport, target_mm: &Point3<f64>) -> bool {
     match (a.ok, b.ok) {
         (true, false) => true,
         (false, true) => false,
-        (true, true) => match (on_its_side(a), on_its_side(b)) {
-            (true, false) => true,
-            (false, true) => false,
-            _ => a.comfort < b.comfort,
-        },
+        (true, true) => hand::rather((on_its_side(a), a.comfort), (on_its_side(b), b.comfort)),
         (false, false) => a.distance_mm < b.distance_mm,
     }
 }

@@ -290,11 +290,10 @@ fn better(a: &ReachAndGazeReport, b: &ReachAndGazeReport, across_mm: f64) -> boo
     match (a.ok, b.ok) {
         (true, false) => true,
         (false, true) => false,
-        (true, true) => match (on_its_side(a), on_its_side(b)) {
-            (true, false) => true,
-            (false, true) => false,
-            _ => a.reach.comfort < b.reach.comfort,
-        },
+        (true, true) => hand::rather(
+            (on_its_side(a), a.reach.comfort),
+            (on_its_side(b), b.reach.comfort),
+        ),
         (false, false) => match (a.reach.ok, b.reach.ok) {
             (true, false) => true,
             (false, true) => false,
