@@ -672,6 +672,11 @@ fn a_set_removes_only_the_files_its_own_earlier_set_wrote_unchanged() {
     std::fs::write(&path, one_map).unwrap();
     let o = run_out(&path, &out);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(
+        flat(&stderr(&o)).contains("kept `map-shelf-top-p-2.csv`"),
+        "the file kept is said: {}",
+        stderr(&o)
+    );
     let names = names_in(&out);
     assert!(
         names.contains(&"map-shelf-top-p-2.csv".to_string()),
@@ -680,6 +685,18 @@ fn a_set_removes_only_the_files_its_own_earlier_set_wrote_unchanged() {
     for gone in ["map-shelf-top-p-2.svg", "gaze_map-shelf-top-p.csv"] {
         assert!(!names.contains(&gone.to_string()), "{gone} left: {names:?}");
     }
+    assert_eq!(
+        std::fs::read_to_string(out.join("thesis.txt")).unwrap(),
+        "mine"
+    );
+    // `--out` at a file: said so, and the file left alone.
+    let o = run_out(&path, &out.join("thesis.txt"));
+    assert_eq!(o.status.code(), Some(1));
+    assert!(
+        flat(&stderr(&o)).contains("it is a file, not a folder"),
+        "{}",
+        stderr(&o)
+    );
     assert_eq!(
         std::fs::read_to_string(out.join("thesis.txt")).unwrap(),
         "mine"

@@ -70,38 +70,61 @@ pub fn write_outputs(
         .collect();
     files.push((MANIFEST.to_string(), sealer.seal(&listed).into_bytes()));
     // Read once a journal a killed set left is finished: its list is the
-    // previous set's.
+    // previous set's. A file it lists that changed since is kept, and said.
+    let kept = std::cell::RefCell::new(Vec::new());
     let leftovers = |dir: &Path, sealer: &Sealer| {
-        (previous_set(dir, sealer).into_iter())
-            .filter(|(old, _)| !files.iter().any(|(name, _)| name == old))
-            .filter(|(old, digest)| seal::digest_of_file(&dir.join(old)).as_ref() == Some(digest))
+        let dropped = (previous_set(dir, sealer).into_iter())
+            .filter(|(old, _)| !files.iter().any(|(name, _)| name == old));
+        let (same, changed): (Vec<_>, Vec<_>) = dropped
+            .filter(|(old, _)| dir.join(old).is_file())
+            .partition(|(old, digest)| {
+                seal::digest_of_file(&dir.join(old)).as_ref() == Some(digest)
+            });
+        *kept.borrow_mut() = changed.into_iter().map(|(old, _)| old).collect();
+        same.into_iter()
             .map(|(old, _)| dir.join(old))
             .collect::<Vec<_>>()
     };
     place_set(dir, &files, &leftovers, &sealer)?;
     Ok(Written {
         sealed: sealer.has_key(),
+        kept: kept.into_inner(),
     })
 }
 
 /// What writing an `--out` set did that its caller may tell the user.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Written {
     /// Whether the set's list was sealed: where the user has no key (none
     /// could be made), it is not, and the next set removes none of its
     /// files.
     pub sealed: bool,
+    /// The previous set's files this one has not, kept because they
+    /// changed since that set wrote them (by name).
+    pub kept: Vec<String>,
 }
 
 impl Written {
     /// What the user is told of the set written in `dir`, if anything.
     pub fn note(&self, dir: &Path) -> Option<String> {
-        (!self.sealed).then(|| {
-            format!(
-                "note: no key to seal output sets could be read or made (`$XDG_STATE_HOME/reach/key`, by default `~/.local/state/reach/key`: a home that is missing or cannot be written, or a key others may read): the list of `{}` is unsealed, so the next set written there removes none of these files",
-                crate::escape::escaped(&dir.display().to_string())
-            )
-        })
+        let shown = dir.display().to_string();
+        let shown = crate::escape::escaped(&shown);
+        let mut lines = Vec::new();
+        if !self.kept.is_empty() {
+            let names: Vec<String> = (self.kept.iter())
+                .map(|n| format!("`{}`", crate::escape::escaped(n)))
+                .collect();
+            lines.push(format!(
+                "note: kept {} in `{shown}`: the set before wrote it, this one has not, and it was changed since",
+                names.join(", ")
+            ));
+        }
+        if !self.sealed {
+            lines.push(format!(
+                "note: no key to seal output sets could be read or made (`$XDG_STATE_HOME/reach/key`, by default `~/.local/state/reach/key`: a home that is missing or cannot be written, or a key others may read): the list of `{shown}` is unsealed, so the next set written there removes none of these files"
+            ));
+        }
+        (!lines.is_empty()).then(|| lines.join("\n"))
     }
 }
 
@@ -152,6 +175,10 @@ fn place_set(
 ) -> Result<(), Error> {
     static WRITING: std::sync::Mutex<()> = std::sync::Mutex::new(());
     let _one_at_a_time = WRITING.lock().unwrap_or_else(|e| e.into_inner());
+    if std::fs::symlink_metadata(dir).is_ok_and(|m| !m.is_dir()) && !dir.is_dir() {
+        let e = std::io::Error::other("it is a file, not a folder");
+        return Err(write_error(dir, &e));
+    }
     std::fs::create_dir_all(dir).map_err(|e| write_error(dir, &e))?;
     let _across_processes = lock_dir(dir).map_err(|e| write_error(dir, &e))?;
     journal::recover(dir, sealer);
