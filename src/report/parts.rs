@@ -33,6 +33,14 @@ impl BaseReport {
         }
     }
 
+    /// The pose it reports (to the report's rounding).
+    pub fn pose(&self) -> BasePose {
+        BasePose {
+            position_mm: nalgebra::Point3::new(self.x_mm, self.y_mm, self.z_mm),
+            heading_rad: self.heading_deg.to_radians(),
+        }
+    }
+
     /// Where it stood, as figures of an answer.
     pub fn figures(&self) -> [Figure; 3] {
         [

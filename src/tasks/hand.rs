@@ -6,7 +6,7 @@ use nalgebra::Point3;
 
 use super::common::Common;
 use crate::kinematics::{hand_side, Body, LEFT_PREFIX as LEFT};
-use crate::plugin::{Params, SettingsError};
+use crate::plugin::{BasePose, Params, SettingsError};
 
 /// The option `hand`'s documentation, for a task that searches with each
 /// hand (a reach).
@@ -98,17 +98,11 @@ impl Hand {
 /// Beyond it, either hand reaches with that side's hand where both do.
 pub const SIDE_MM: f64 = 150.0;
 
-/// How far to the left of the midline of a base at `base_mm`, facing
-/// `heading_rad`, the point `target_mm` is (negative: to the right).
-pub fn across_mm(base_mm: [f64; 2], heading_rad: f64, target_mm: &Point3<f64>) -> f64 {
-    let (dx, dy) = (target_mm.x - base_mm[0], target_mm.y - base_mm[1]);
-    -dx * heading_rad.sin() + dy * heading_rad.cos()
-}
-
-/// Whether a point `across_mm` to the left of the midline (negative: to
-/// the right) is on the side of the hand of `effector`: more than
-/// [`SIDE_MM`] that way.
-pub fn on_side_of(effector: &str, across_mm: f64) -> bool {
+/// Whether the point `target_mm` is on the side of the hand of `effector`
+/// seen from a base at `pose`: more than [`SIDE_MM`] that way of the
+/// midline (the base frame's y, to the left).
+pub fn on_side_of(effector: &str, pose: &BasePose, target_mm: &Point3<f64>) -> bool {
+    let across_mm = pose.to_base(target_mm).y;
     match hand_side(effector) {
         "left" => across_mm > SIDE_MM,
         _ => across_mm < -SIDE_MM,
@@ -146,16 +140,25 @@ mod tests {
 
     #[test]
     fn a_point_past_a_shoulder_is_on_that_hands_side() {
-        use super::{across_mm, on_side_of};
-        let target = nalgebra::Point3::new(1000.0, 1300.0, 1200.0);
+        use super::on_side_of;
+        use crate::plugin::BasePose;
+        use nalgebra::Point3;
+        let target = Point3::new(1000.0, 1300.0, 1200.0);
+        let at = |x: f64, y: f64, heading_rad: f64| BasePose {
+            position_mm: Point3::new(x, y, 930.0),
+            heading_rad,
+        };
         // Facing +x from (700, 1500): the point is 200 mm to the right.
-        let across = across_mm([700.0, 1500.0], 0.0, &target);
-        assert!((across + 200.0).abs() < 1e-9);
-        assert!(on_side_of("grip", across) && !on_side_of("left_grip", across));
+        let pose = at(700.0, 1500.0, 0.0);
+        assert!((pose.to_base(&target).y + 200.0).abs() < 1e-9);
+        assert!(on_side_of("grip", &pose, &target) && !on_side_of("left_grip", &pose, &target));
         // Facing +y from (700, 1000): 300 mm ahead and 300 mm to the right.
-        let turned = across_mm([700.0, 1000.0], std::f64::consts::FRAC_PI_2, &target);
-        assert!((turned + 300.0).abs() < 1e-9, "{turned}");
-        assert!(!on_side_of("grip", 100.0) && !on_side_of("left_grip", 100.0));
+        let turned = at(700.0, 1000.0, std::f64::consts::FRAC_PI_2);
+        let across = turned.to_base(&target).y;
+        assert!((across + 300.0).abs() < 1e-9, "{across}");
+        // 100 mm to the left: on neither hand's side.
+        let near = at(900.0, 1200.0, 0.0);
+        assert!(!on_side_of("grip", &near, &target) && !on_side_of("left_grip", &near, &target));
     }
 
     #[test]

@@ -154,10 +154,7 @@ impl Task for ReachTask {
 /// shoulder: a person does not reach across the body for it), else the
 /// more comfortable; neither, it comes closer.
 fn better(a: &ReachReport, b: &ReachReport, target_mm: &Point3<f64>) -> bool {
-    let on_its_side = |r: &ReachReport| {
-        let across = hand::across_mm([r.base.x_mm, r.base.y_mm], r.base.heading_deg.to_radians(), target_mm);
-        hand::on_side_of(&r.effector, across)
-    };
+    let on_its_side = |r: &ReachReport| hand::on_side_of(&r.effector, &r.base.pose(), target_mm);
     match (a.ok, b.ok) {
         (true, false) => true,
         (false, true) => false,

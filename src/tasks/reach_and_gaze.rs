@@ -240,18 +240,14 @@ impl Task for ReachAndGazeTask {
             // the other is tried only then or where the first does not (a
             // solve with the eyes costs several reaches, and trying the
             // other hand for comfort everywhere tripled a kitchen's work).
-            let pose = &tried.alone.pose;
-            let across = hand::across_mm(
-                [pose.position_mm.x, pose.position_mm.y],
-                pose.heading_rad,
-                &target.position_mm,
-            );
-            let body = &input.person.body;
-            let twin_side = (hands.get(k + 1))
-                .is_some_and(|&twin| hand::on_side_of(&body.effectors[twin].name, across));
+            let pose = tried.alone.pose;
+            let effectors = &input.person.body.effectors;
+            let twin_side = (hands.get(k + 1)).is_some_and(|&twin| {
+                hand::on_side_of(&effectors[twin].name, &pose, &target.position_mm)
+            });
             let done = tried.report.ok && !twin_side;
             best = Some(match best {
-                Some(kept) if !better(&tried.report, &kept.report, across) => kept,
+                Some(kept) if !better(&tried.report, &kept.report, (&pose, target)) => kept,
                 _ => tried,
             });
             if done {
@@ -280,13 +276,18 @@ struct Tried {
     alone: Placement,
 }
 
-/// Whether `a` is a better answer than `b`, the target `across_mm` to
-/// the left of `a`'s base's midline: hand and eyes both do where in `b`
-/// they do not; both doing, with the hand on the target's side where it
-/// is well to one side, else the more comfortable hand; neither, the
-/// hand reaches where in `b` it does not, else comes closer.
-fn better(a: &ReachAndGazeReport, b: &ReachAndGazeReport, across_mm: f64) -> bool {
-    let on_its_side = |r: &ReachAndGazeReport| hand::on_side_of(&r.reach.effector, across_mm);
+/// Whether `a` is a better answer than `b`, the target's side seen from
+/// `a`'s placement (`pose`): hand and eyes both do where in `b` they do
+/// not; both doing, with the hand on the target's side where it is well
+/// to one side, else the more comfortable hand; neither, the hand reaches
+/// where in `b` it does not, else comes closer.
+fn better(
+    a: &ReachAndGazeReport,
+    b: &ReachAndGazeReport,
+    (pose, target): (&BasePose, &Target),
+) -> bool {
+    let on_its_side =
+        |r: &ReachAndGazeReport| hand::on_side_of(&r.reach.effector, pose, &target.position_mm);
     match (a.ok, b.ok) {
         (true, false) => true,
         (false, true) => false,

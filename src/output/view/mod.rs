@@ -18,7 +18,7 @@ use crate::geometry::{Cuboid, Shape};
 use crate::kinematics::{Body, JointKind};
 use crate::plugin::{FormatScene, TaskPlace};
 use crate::report::{
-    fixed, BaseReport, FloorShape, MapReport, PopulationReport, Report, StandardReport, TaskReport,
+    fixed, FloorShape, MapReport, PopulationReport, Report, StandardReport, TaskReport,
 };
 use crate::scene::{BasePose, Door, Room, Wall};
 use simplify::simplified;
@@ -379,7 +379,7 @@ fn task_view(task: &TaskReport, place: &TaskPlace, scene: &FormatScene<'_>) -> T
         for (_, posture) in &postures {
             set_posture(body, &mut q, &posture.0);
         }
-        let pose = base_pose(base);
+        let pose = base.pose();
         view.base = Some([base.x_mm, base.y_mm, base.z_mm, base.heading_deg]);
         let room = &scene.rooms[place.room];
         if let Some(floor) = scene.bases[person].reached_floor(room, pose.heading_rad) {
@@ -409,13 +409,6 @@ fn set_posture(body: &Body, q: &mut [f64], values: &[(String, f64)]) {
                 JointKind::Prismatic => *value,
             };
         }
-    }
-}
-
-fn base_pose(b: &BaseReport) -> BasePose {
-    BasePose {
-        position_mm: Point3::new(b.x_mm, b.y_mm, b.z_mm),
-        heading_rad: b.heading_deg.to_radians(),
     }
 }
 
