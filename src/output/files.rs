@@ -141,10 +141,9 @@ fn previous_set(dir: &Path, sealer: &Sealer) -> Vec<(String, String)> {
     let Some(listed) = sealer.open(&text) else {
         return Vec::new();
     };
-    let plain = |n: &str| !n.is_empty() && !n.contains(['/', '\\']) && n != "." && n != "..";
     (listed.lines())
         .filter_map(|line| line.split_once('\t'))
-        .filter(|(n, _)| plain(n) && !n.starts_with(TEMPORARY) && *n != MANIFEST)
+        .filter(|(n, _)| journal::plain_name(n) && !n.starts_with(TEMPORARY) && *n != MANIFEST)
         .map(|(n, digest)| (n.to_string(), digest.to_string()))
         .collect()
 }

@@ -115,24 +115,29 @@ pub fn recover(dir: &Path, sealer: &Sealer) {
 /// to: far more than any set's names and renames.
 pub(super) const RECORD_BYTES: u64 = 1 << 20;
 
+/// Whether `name` is a plain name of a file in a set's directory: a
+/// record (a journal, a set's list) names only such, so it cannot touch a
+/// file outside the directory.
+pub(super) fn plain_name(name: &str) -> bool {
+    !name.is_empty() && !name.contains(['/', '\\']) && name != "." && name != ".."
+}
+
 /// Make each rename of a journal's `text` whose temporary is still there,
 /// then each removal.
 fn roll_forward(dir: &Path, text: &str) {
-    // Names only: a journal cannot touch a file outside `dir`.
-    let plain = |n: &str| !n.is_empty() && !n.contains(['/', '\\']) && n != "." && n != "..";
     let fields = |line: &str| line.split('\t').map(str::to_string).collect::<Vec<_>>();
     let lines: Vec<Vec<String>> = text.lines().map(fields).collect();
     for line in &lines {
         if let [tag, from, to] = line.as_slice() {
             let temporary = dir.join(from);
-            if tag == "R" && plain(from) && plain(to) && temporary.is_file() {
+            if tag == "R" && plain_name(from) && plain_name(to) && temporary.is_file() {
                 let _ = std::fs::rename(&temporary, dir.join(to));
             }
         }
     }
     for line in &lines {
         if let [tag, gone] = line.as_slice() {
-            if tag == "D" && plain(gone) && dir.join(gone).is_file() {
+            if tag == "D" && plain_name(gone) && dir.join(gone).is_file() {
                 let _ = std::fs::remove_file(dir.join(gone));
             }
         }
