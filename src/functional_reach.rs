@@ -61,15 +61,16 @@ impl From<Diagnostics> for Unmeasured {
 pub fn functional_reach(mannequin: &str, body: &Body) -> Result<FunctionalReach, Unmeasured> {
     let (arm_forward_mm, height_mm) = arm_forward(body).ok_or(Unmeasured::NotStdBody)?;
     let legs = body.legs.as_ref().ok_or(Unmeasured::NotStdBody)?;
+    let toe_mm = legs.toe_ahead_of_ankle_mm();
+    let registry = Registry::builtin();
     let mut farthest_mm = f64::NAN;
     for back_mm in HIPS_BACK_MM {
-        let toe_mm = legs.toe_ahead_of_ankle_mm();
         let scenario = scenario(mannequin, legs.hip_height_mm, toe_mm, back_mm, height_mm, arm_forward_mm);
         let input = Input::Text {
             name: "functional_reach.reach",
             text: &scenario,
         };
-        let (_, checked) = crate::check(input, &Registry::builtin());
+        let (_, checked) = crate::check(input, &registry);
         let report = crate::run(&checked?).map_err(|e| Unmeasured::Scenario(e.to_string()))?;
         for task in &report.tasks {
             if let TaskReport::Reach(r) = task {
