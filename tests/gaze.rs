@@ -275,3 +275,38 @@ reach s5_front and gaze by rm { size 10mm seed 1 }
     let boards = [1300.0, 1600.0, 1900.0].map(|z| [1020.0, 0.0, z]);
     assert_line_of_sight_misses(&both.gaze, &boards, [800.0, 300.0, 20.0]);
 }
+
+/// A standing man reads a label held 300 mm ahead of his hip point at
+/// chest height (1,400 mm). Where his reach's own posture leans him over
+/// it, his eyes come inside the label's near point (250 mm) and the held
+/// look fails; the tree then kept the first posture that reached and saw,
+/// the trunk bent 75 deg with the neck at its limits (comfort 12.06). He
+/// stands as he looks and holds it out with the arm: the trunk within
+/// 20 deg of upright and the eyes beyond the near point.
+#[test]
+fn a_label_held_at_the_chest_is_read_standing_up() {
+    let text = "units mm deg
+use std::people
+room r {
+  size 3000 x 3000 x 2500
+  target t at (1300, 1500, 1400)
+}
+person p { mannequin man_50th base fixed { at (1000, 1500, 930) heading 0 } }
+reach t and gaze by p { size 20mm }
+";
+    let both = first_reach_and_gaze("held_label.reach", text);
+    assert!(both.ok, "{:?} {:?}", both.reach.why, both.gaze.reason);
+    let joint = |name: &str| {
+        both.reach
+            .posture
+            .0
+            .iter()
+            .find(|(n, _)| n == name)
+            .unwrap()
+            .1
+    };
+    let flexion_deg = joint("trunk_flexion");
+    assert!(flexion_deg.abs() <= 20.0, "trunk flexion {flexion_deg} deg");
+    assert!(both.reach.comfort < 6.0, "comfort {}", both.reach.comfort);
+    assert!(both.gaze.distance_mm >= 250.0, "{}", both.gaze.distance_mm);
+}

@@ -363,7 +363,11 @@ impl ReachAndGazeTask {
         let hand_reaches = alone.solution.reaches(reaching.common.tolerance_mm);
         let held = hand_reaches
             .then(|| solving.eyes_after_hand(alone.pose, &alone.solution.q, query.seed))
-            .filter(Seen::ok);
+            .filter(Seen::ok)
+            .or_else(|| {
+                let looked = hand_reaches.then(|| solving.hand_after_eyes(alone.pose, query.seed));
+                looked.filter(Seen::ok)
+            });
         let mut seen = held.unwrap_or_else(|| solving.attempt(alone.pose, query.seed));
         if !seen.ok() && hand_reaches {
             let poses = again_from(alone.pose, target.position_mm, prepared.as_ref());
@@ -451,19 +455,9 @@ impl Solving<'_, '_> {
     /// Hand and eyes solved together by the tree from the base at `pose`,
     /// its starts drawn from `seed`, and what the posture reaches and sees.
     fn attempt(&self, pose: BasePose, seed: u64) -> Seen {
-        let target = self.target;
-        let goal = pose.to_base(&target.position_mm);
         let goals = [
-            TreeGoal {
-                effector: self.hand,
-                target_mm: goal,
-                weight: 1.0,
-            },
-            TreeGoal {
-                effector: self.eyes_index,
-                target_mm: goal,
-                weight: self.task.gaze_weight,
-            },
+            self.goal(self.hand, pose, 1.0),
+            self.goal(self.eyes_index, pose, self.task.gaze_weight),
         ];
         let tree = self.solve(self.body, &goals, pose, seed);
         self.judge(pose, &tree)
@@ -474,25 +468,49 @@ impl Solving<'_, '_> {
     /// the hand's path held: where the hand's own posture leaves the head
     /// free to look.
     fn eyes_after_hand(&self, pose: BasePose, hand_q: &[f64], seed: u64) -> Seen {
-        let mut held = self.body.clone();
-        let path = held.path(held.effectors[self.hand].joint);
-        for (&j, &value) in path.iter().zip(hand_q) {
-            let joint = &mut held.joints[j];
+        self.held_then(pose, (self.hand, hand_q), self.eyes_index, seed)
+    }
+
+    /// The eyes solved alone first (the most comfortable look the tree
+    /// finds), then the hand with every joint on the eyes' path held
+    /// there: where the hand's own posture brings the eyes inside the near
+    /// point (the thing held too close to read), the person stands as
+    /// they look and reaches with the arm.
+    fn hand_after_eyes(&self, pose: BasePose, seed: u64) -> Seen {
+        let eyes_chain = self.body.chain(self.eyes_index);
+        let problem = self.query.problem(&eyes_chain, pose);
+        let look = self.task.reaching.solver.solve(&problem);
+        self.held_then(pose, (self.eyes_index, &look.q), self.hand, seed)
+    }
+
+    /// The joints on `held`'s effector's path kept at its values (one per
+    /// joint of its path), and `free`'s effector solved alone by the tree.
+    fn held_then(&self, pose: BasePose, held: (usize, &[f64]), free: usize, seed: u64) -> Seen {
+        let (held_effector, values) = held;
+        let mut body = self.body.clone();
+        let path = body.path(body.effectors[held_effector].joint);
+        for (&j, &value) in path.iter().zip(values) {
+            let joint = &mut body.joints[j];
             (joint.min, joint.max, joint.neutral) = (value, value, value);
         }
-        // The held values keep the couplings (the hand's posture did).
-        held.couplings
+        // The held values keep the couplings (the posture they come from did).
+        body.couplings
             .retain(|c| !c.joints().iter().any(|j| path.contains(j)));
-        let goals = [TreeGoal {
-            effector: self.eyes_index,
-            target_mm: pose.to_base(&self.target.position_mm),
-            weight: 1.0,
-        }];
-        let mut tree = self.solve(&held, &goals, pose, seed);
-        for (&j, &value) in path.iter().zip(hand_q) {
+        let goals = [self.goal(free, pose, 1.0)];
+        let mut tree = self.solve(&body, &goals, pose, seed);
+        for (&j, &value) in path.iter().zip(values) {
             tree.q[j] = value;
         }
         self.judge(pose, &tree)
+    }
+
+    /// The goal of `effector`: the target, in the base frame at `pose`.
+    fn goal(&self, effector: usize, pose: BasePose, weight: f64) -> TreeGoal {
+        TreeGoal {
+            effector,
+            target_mm: pose.to_base(&self.target.position_mm),
+            weight,
+        }
     }
 
     /// `body`'s tree solve for `goals` from the base at `pose`.

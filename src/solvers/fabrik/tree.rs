@@ -61,13 +61,37 @@ impl TreeSolution {
         self.distances_mm.iter().all(|&d| d <= tolerance_mm) && self.collision.is_none()
     }
 
+    /// Whether this posture is preferred to `kept`: one that reaches every
+    /// goal before one that does not; of two that do, the more comfortable
+    /// (`discomfort`, of the joints the goals move), as a chain's solve
+    /// prefers; of two that do not, the smaller weighted distance.
+    fn preferred_to(
+        &self,
+        discomfort: f64,
+        kept: &TreeSolution,
+        kept_discomfort: f64,
+        goals: &[TreeGoal],
+        tolerance_mm: f64,
+    ) -> bool {
+        match (self.reaches(tolerance_mm), kept.reaches(tolerance_mm)) {
+            (true, false) => true,
+            (false, true) => false,
+            (true, true) => discomfort < kept_discomfort,
+            (false, false) => self.weighted_mm(goals) < kept.weighted_mm(goals),
+        }
+    }
+
+    /// Within one start's run: reaching first, then the weighted distance.
     fn score(&self, goals: &[TreeGoal], tolerance_mm: f64) -> (bool, f64) {
-        let weighted: f64 = goals
+        (self.reaches(tolerance_mm), -self.weighted_mm(goals))
+    }
+
+    fn weighted_mm(&self, goals: &[TreeGoal]) -> f64 {
+        goals
             .iter()
             .zip(&self.distances_mm)
             .map(|(g, d)| g.weight * d)
-            .sum();
-        (self.reaches(tolerance_mm), -weighted)
+            .sum()
     }
 }
 
@@ -80,7 +104,7 @@ struct Branch {
 }
 
 /// Solve from the settings' starts; the best posture (all reaching, then
-/// least weighted distance) is kept.
+/// the most comfortable; else the least weighted distance) is kept.
 pub fn solve_tree(settings: &FabrikSettings, problem: &TreeProblem<'_>) -> TreeSolution {
     let body = problem.body;
     let paths: Vec<Vec<usize>> = problem
@@ -130,7 +154,7 @@ pub fn solve_tree(settings: &FabrikSettings, problem: &TreeProblem<'_>) -> TreeS
     let effectors: Vec<usize> = problem.goals.iter().map(|g| g.effector).collect();
     let used = Used::new(problem.body, &effectors);
     let mut rng = ChaCha8Rng::seed_from_u64(problem.seed ^ 0x7472_6565);
-    let mut best: Option<TreeSolution> = None;
+    let mut best: Option<(TreeSolution, f64)> = None;
     let mut iterations = 0;
     let starts = Starts::new(&used.chain, problem.seed, settings.neutral_start);
     for start in starts.take(settings.starts as usize) {
@@ -159,15 +183,21 @@ pub fn solve_tree(settings: &FabrikSettings, problem: &TreeProblem<'_>) -> TreeS
         };
         let solution = tree.run(&used, &mut rng);
         iterations += solution.iterations;
-        let better = best.as_ref().is_none_or(|b| {
-            solution.score(problem.goals, problem.tolerance_mm)
-                > b.score(problem.goals, problem.tolerance_mm)
+        let discomfort = used.chain.discomfort(&used.gather(&solution.q));
+        let better = best.as_ref().is_none_or(|(kept, kept_discomfort)| {
+            solution.preferred_to(
+                discomfort,
+                kept,
+                *kept_discomfort,
+                problem.goals,
+                problem.tolerance_mm,
+            )
         });
         if better {
-            best = Some(solution);
+            best = Some((solution, discomfort));
         }
     }
-    let mut solution = best.expect("at least one start");
+    let (mut solution, _) = best.expect("at least one start");
     solution.iterations = iterations;
     solution
 }
