@@ -112,7 +112,7 @@ fn a_hand_the_mannequin_lacks_is_a_diagnostic_and_a_word_not_a_hand_too() {
 /// The text report's table names the effector of each row.
 #[test]
 fn each_row_of_the_text_report_names_its_effector() {
-    let o = crate::cli::reach(&["run", "examples/flat_12.reach"]);
+    let o = crate::cli::reach(&["run", "examples/mother_kitchen.reach"]);
     let out = crate::cli::stdout(&o);
     let header = out.lines().find(|l| l.starts_with("task ")).unwrap();
     assert!(header.contains(" effector "), "{header}");
@@ -280,4 +280,40 @@ fn a_cup_well_to_one_side_is_reached_with_that_sides_hand() {
             "{task} ahead right: {ok} {effector}"
         );
     }
+}
+
+/// std::body's left hand is drawn as the right's mirror image: its chain
+/// negates exactly the trunk's turning and sideways bending, and every
+/// posture so mirrored puts the left grip where the right grip's mirror
+/// image is.
+#[test]
+fn the_left_arm_is_the_right_arms_mirror_image() {
+    let body = reach::stdlib::body("body", "upper_body").unwrap();
+    let grip = body.effector_index("grip").unwrap();
+    let left = body.chain(body.effector_index("left_grip").unwrap());
+    let right = body.chain(grip);
+    assert!(right.mirror_of_twin.is_empty());
+    let negated: Vec<&str> = (left.joints.iter().zip(&left.mirror_of_twin))
+        .filter(|(_, &n)| n)
+        .map(|(j, _)| j.name.as_str())
+        .collect();
+    assert_eq!(negated, ["trunk_rotation", "trunk_lateral"]);
+    let mut worst_mm: f64 = 0.0;
+    for k in 0..200 {
+        let q: Vec<f64> = right
+            .joints
+            .iter()
+            .enumerate()
+            .map(|(i, j)| j.min + (j.max - j.min) * (((k * 7 + i * 13) % 17) as f64 / 16.0))
+            .collect();
+        let q_left: Vec<f64> = q
+            .iter()
+            .enumerate()
+            .map(|(i, &v)| if left.drawn_negated(i) { -v } else { v })
+            .collect();
+        let r = right.effector(&q);
+        let l = left.effector(&q_left);
+        worst_mm = worst_mm.max((reach::kinematics::mirrored(&r) - l).norm());
+    }
+    assert!(worst_mm < 1e-9, "{worst_mm}");
 }

@@ -6,15 +6,17 @@
 //! room's centre (the room turns onto itself), asks the same questions of
 //! the same person.
 //!
-//! What holds today: moved, a person on a fixed base gets the same answers
-//! to the last digit (verdicts, distances, postures, comfort, causes),
-//! since each solve is seeded by where its target is from the person
-//! (`scene::seed_in_base_frame`), not by where it is in the room; every
-//! verdict is the same moved or turned, on a fixed base or a wheelchair.
-//! Not yet: a wheelchair's placements moved, and any posture turned, may
-//! differ in their last digits and, where a posture slides along a board,
-//! in which posture is found (the floor's outlines are worked out in the
-//! room's own coordinates, and turning a posture rounds differently).
+//! What holds: moved or turned, a person on a fixed base gets the same
+//! answers to the report's last digit (verdicts, distances, postures,
+//! comfort, causes), since each solve is seeded by where its target is
+//! from the person (`scene::seed_in_base_frame`), not by where it is in
+//! the room, and a heading along a wall turns exactly; mirrored left to
+//! right and asked of the other hand, a two-armed person on a fixed base
+//! or a wheelchair gets the same answers with the posture seen in a
+//! mirror (`kinematics::mirror`). Moved or turned, a wheelchair user gets
+//! the same verdicts; the wheelchair's placements may differ in their last
+//! digits (the floor's outlines are worked out in the room's own
+//! coordinates).
 
 use proptest::prelude::*;
 use reach::plugin::Registry;
@@ -33,6 +35,9 @@ enum Placed {
     Moved(f64, f64),
     /// Turned by 90 degrees about the room's centre, counter-clockwise.
     Turned,
+    /// Mirrored left to right (y to the room's side less y), asked of the
+    /// other hand.
+    Mirrored,
 }
 
 impl Placed {
@@ -42,6 +47,7 @@ impl Placed {
             Placed::AsDrawn => (x, y),
             Placed::Moved(dx, dy) => (x + dx, y + dy),
             Placed::Turned => (2.0 * CENTRE_MM - y, x),
+            Placed::Mirrored => (x, ROOM_MM - y),
         }
     }
 
@@ -50,6 +56,7 @@ impl Placed {
     fn box_xy(self, x: f64, y: f64, sx: f64, sy: f64) -> (f64, f64, f64, f64) {
         match self {
             Placed::Turned => (2.0 * CENTRE_MM - y - sy, x, sy, sx),
+            Placed::Mirrored => (x, ROOM_MM - y - sy, sx, sy),
             _ => {
                 let (x, y) = self.point(x, y);
                 (x, y, sx, sy)
@@ -60,6 +67,7 @@ impl Placed {
     fn heading_deg(self, heading_deg: f64) -> f64 {
         match self {
             Placed::Turned => heading_deg + 90.0,
+            Placed::Mirrored => -heading_deg,
             _ => heading_deg,
         }
     }
@@ -109,8 +117,16 @@ fn kitchen(wheelchair: bool) -> impl Strategy<Value = Kitchen> {
 }
 
 impl Kitchen {
-    /// The scenario text, the kitchen placed as `placed`.
+    /// The scenario text, the kitchen placed as `placed`, asked of a
+    /// one-armed person (std::arm's right arm).
     fn text(&self, placed: Placed) -> String {
+        self.text_asking(placed, None)
+    }
+
+    /// The scenario text, the kitchen placed as `placed`; `hand`: asked
+    /// of that hand of a two-armed person (std::body's upper body), else
+    /// as [`Kitchen::text`].
+    fn text_asking(&self, placed: Placed, hand: Option<&str>) -> String {
         let (x0, depth, height) = (
             self.counter_x_mm,
             self.counter_depth_mm,
@@ -127,23 +143,41 @@ impl Kitchen {
         if let Some((px, py)) = self.post {
             boxes.push(("post", [x0 + px, 2200.0 + py, 0.0], [150.0, 150.0, 2000.0]));
         }
+        // Asked of a hand, on whole quarter millimetres, as a drawing is
+        // (so that mirroring the room, y to its side less y, is exact).
+        let snap = |v: f64| {
+            if hand.is_some() {
+                (v * 4.0).round() / 4.0
+            } else {
+                v
+            }
+        };
+        let module = if hand.is_some() { "body" } else { "arm" };
         let mut text = format!(
-            "units mm deg\nuse std::arm\n\nroom r {{\n  size {ROOM_MM} x {ROOM_MM} x 2500\n"
+            "units mm deg\nuse std::{module}\n\nroom r {{\n  size {ROOM_MM} x {ROOM_MM} x 2500\n"
         );
         for (name, [x, y, z], [sx, sy, sz]) in boxes {
+            let [x, y, z, sx, sy, sz] = [x, y, z, sx, sy, sz].map(snap);
             let (x, y, sx, sy) = placed.box_xy(x, y, sx, sy);
             text +=
                 &format!("  box {name} at ({x:?}, {y:?}, {z:?}) size ({sx:?}, {sy:?}, {sz:?})\n");
         }
         for (k, &(kind, u, v, w)) in self.targets.iter().enumerate() {
-            let [x, y, z] = self.target(kind, u, v, w);
+            let [x, y, z] = self.target(kind, u, v, w).map(snap);
             let (x, y) = placed.point(x, y);
             text += &format!("  target t{k} at ({x:?}, {y:?}, {z:?})\n");
         }
-        text += "}\nperson p {\n  mannequin right_arm { limits trunk_flexion (-10deg, 40deg) }\n";
+        let mannequin = if hand.is_some() {
+            "upper_body"
+        } else {
+            "right_arm"
+        };
+        text += &format!(
+            "}}\nperson p {{\n  mannequin {mannequin} {{ limits trunk_flexion (-10deg, 40deg) }}\n"
+        );
         match self.fixed {
             Some((x, y)) => {
-                let (x, y) = placed.point(x, y);
+                let (x, y) = placed.point(snap(x), snap(y));
                 let heading = placed.heading_deg(180.0);
                 text +=
                     &format!("  base fixed {{ at ({x:?}, {y:?}, 930) heading {heading:?}deg }}\n");
@@ -151,7 +185,8 @@ impl Kitchen {
             None => text += "  base wheelchair\n",
         }
         let names: Vec<String> = (0..self.targets.len()).map(|k| format!("t{k}")).collect();
-        text + &format!("}}\nreach {} by p\n", names.join(", "))
+        let options = hand.map_or(String::new(), |h| format!(" {{ hand {h} }}"));
+        text + &format!("}}\nreach {} by p{options}\n", names.join(", "))
     }
 
     fn target(&self, kind: u8, u: f64, v: f64, w: f64) -> [f64; 3] {
@@ -176,7 +211,7 @@ impl Kitchen {
 }
 
 /// The report's tasks of `text`, run.
-fn tasks(text: &str) -> Vec<Value> {
+pub(super) fn tasks(text: &str) -> Vec<Value> {
     let registry = Registry::builtin();
     let (_, checked) = reach::check(
         Input::Text {
@@ -245,12 +280,38 @@ proptest! {
     }
 
     /// Turned by 90 degrees, a person on a fixed base gets the same
-    /// verdicts.
+    /// answers, to the report's last digit (a heading along a wall turns
+    /// exactly: `BasePose::rotation`).
     #[test]
-    fn a_fixed_base_turned_gives_the_same_verdicts(k in kitchen(false)) {
+    fn a_fixed_base_turned_answers_the_same(k in kitchen(false)) {
         let drawn = tasks(&k.text(Placed::AsDrawn));
         let turned = tasks(&k.text(Placed::Turned));
-        prop_assert_eq!(verdicts(&drawn), verdicts(&turned));
+        for (a, b) in drawn.iter().zip(&turned) {
+            prop_assert_eq!(answer(a), answer(b));
+        }
+    }
+
+    /// Mirrored, a two-armed person on a fixed base asked of the other
+    /// hand gets the same answers: verdicts, shortfalls, comfort and the
+    /// posture seen in a mirror, to the report's last digit (the left hand
+    /// draws its starts, kicks and first steps as the right's mirror
+    /// image, `kinematics::mirror`, and a step that leaves the distance as
+    /// it was is taken, not left to rounding). Fails on c280014:
+    /// shortfalls differed by up to 12 mm, postures in most tasks.
+    #[test]
+    fn a_fixed_base_mirrored_answers_the_same_with_the_other_hand(k in kitchen(false)) {
+        let drawn = tasks(&k.text_asking(Placed::AsDrawn, Some("right")));
+        let mirrored = tasks(&k.text_asking(Placed::Mirrored, Some("left")));
+        for (a, b) in drawn.iter().zip(&mirrored) {
+            prop_assert_eq!(&a["effector"], "grip");
+            prop_assert_eq!(&b["effector"], "left_grip");
+            for same in ["ok", "distance_mm", "comfort", "iterations"] {
+                prop_assert_eq!(&a[same], &b[same], "{}", same);
+            }
+            // The causes, naming the other arm's joints.
+            prop_assert_eq!(a["why"].to_string(), b["why"].to_string().replace("left_", ""));
+            prop_assert_eq!(mirrored_posture(&a["posture"]), sorted_posture(&b["posture"]));
+        }
     }
 }
 
@@ -261,14 +322,59 @@ proptest! {
         ..ProptestConfig::default()
     })]
 
-    /// Moved or turned, a wheelchair user gets the same verdicts.
+    /// Moved or turned, a wheelchair user gets the same verdicts; mirrored
+    /// and asked of the other hand, the same answers (verdicts, shortfalls,
+    /// comfort, the posture seen in a mirror).
     #[test]
-    fn a_wheelchair_moved_or_turned_gives_the_same_verdicts(
+    fn a_wheelchair_moved_turned_or_mirrored_answers_the_same(
         k in kitchen(true),
         (dx, dy) in a_move(),
     ) {
         let drawn = verdicts(&tasks(&k.text(Placed::AsDrawn)));
         prop_assert_eq!(&drawn, &verdicts(&tasks(&k.text(Placed::Moved(dx, dy)))));
         prop_assert_eq!(&drawn, &verdicts(&tasks(&k.text(Placed::Turned))));
+        let right = tasks(&k.text_asking(Placed::AsDrawn, Some("right")));
+        let left = tasks(&k.text_asking(Placed::Mirrored, Some("left")));
+        for (a, b) in right.iter().zip(&left) {
+            for same in ["ok", "distance_mm", "comfort"] {
+                prop_assert_eq!(&a[same], &b[same], "{}", same);
+            }
+            prop_assert_eq!(mirrored_posture(&a["posture"]), sorted_posture(&b["posture"]));
+        }
     }
+}
+
+/// A two-armed person's posture, named by joint, with the left and right
+/// arms' names swapped and the joints that turn about an axis in the
+/// body's midplane (bending and turning sideways) negated: the posture
+/// seen in a mirror.
+fn mirrored_posture(posture: &Value) -> Vec<(String, f64)> {
+    let mut joints: Vec<(String, f64)> = posture
+        .as_object()
+        .unwrap()
+        .iter()
+        .map(|(name, value)| {
+            let value = value.as_f64().unwrap();
+            let swapped = match name.strip_prefix("left_") {
+                Some(right) => right.to_string(),
+                None => format!("left_{name}"),
+            };
+            let sideways = ["trunk_rotation", "trunk_lateral"].contains(&name.as_str());
+            match name.as_str() {
+                _ if sideways => (name.clone(), -value),
+                n if n.starts_with("trunk_") => (name.clone(), value),
+                _ => (swapped, value),
+            }
+        })
+        .collect();
+    joints.sort_by(|a, b| a.0.cmp(&b.0));
+    joints
+}
+
+fn sorted_posture(posture: &Value) -> Vec<(String, f64)> {
+    let mut joints: Vec<(String, f64)> = (posture.as_object().unwrap().iter())
+        .map(|(name, value)| (name.clone(), value.as_f64().unwrap()))
+        .collect();
+    joints.sort_by(|a, b| a.0.cmp(&b.0));
+    joints
 }

@@ -13,6 +13,7 @@ mod cli;
 mod docs_picture;
 mod docs_tables;
 mod ecosystem;
+mod edges;
 mod facing;
 mod gaze;
 mod golden;

@@ -404,3 +404,36 @@ reach on_floor, up_high by ann
     let low = reach_of(&report, "on_floor", "ann");
     assert!(low.why[0].sentence().contains("squats or kneels"));
 }
+
+/// A person on a fixed base is never "kept away" by the furniture: the
+/// base stands where it is told. A seated woman reaching low on a
+/// counter's front, between her knees and the counter: the search without
+/// the room or her body happened to reach where the search again, "with
+/// the furniture taken off the floor", is the same search for a fixed
+/// base; the cause read "the base is kept away by `counter` and `cabinet`
+/// together".
+#[test]
+fn a_fixed_base_is_never_kept_away() {
+    let text = "units mm deg
+use std::people
+room r {
+  size 4000 x 4000 x 2500
+  box counter at (0, 1000, 0) size (600, 2000, 720)
+  box cabinet at (0, 1000, 1300) size (350, 2000, 20)
+  target t1 at (600, 1809, 260)
+  target t2 at (600, 1809, 280)
+}
+person w {
+  mannequin woman_5th_seated
+  base fixed { at (1129, 1832, 500) heading 180deg }
+}
+reach t1, t2 by w
+";
+    let report = run(text);
+    for target in ["t1", "t2"] {
+        let r = reach_of(&report, target, "w");
+        assert!(!r.ok, "{r:?}");
+        let kept_away = r.why.iter().any(|w| matches!(w, Why::KeptAway { .. }));
+        assert!(!kept_away && !r.why.is_empty(), "{target}: {:?}", r.why);
+    }
+}

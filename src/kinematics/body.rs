@@ -9,6 +9,7 @@ use nalgebra::{Point3, Vector3};
 use super::chain::{Chain, Joint, Link, Rider};
 use super::coupling::Coupling;
 use super::legs::{Legs, Stance};
+use super::mirror::flips_of_twin;
 
 /// One end of the body: a hand's grip point, or the eyes' look point.
 #[derive(Clone, Debug, PartialEq)]
@@ -125,6 +126,17 @@ impl Body {
     }
 
     fn chain_at(&self, index: usize, q: Option<&[f64]>) -> Chain {
+        let mut chain = self.own_chain_at(index, q);
+        if hand_side(&chain.effector_name) == "left" {
+            if let Some(twin) = self.twin_of(index) {
+                chain.mirror_of_twin = flips_of_twin(&chain, &self.own_chain_at(twin, None));
+            }
+        }
+        chain
+    }
+
+    /// The chain of effector `index`, drawing its own starts.
+    fn own_chain_at(&self, index: usize, q: Option<&[f64]>) -> Chain {
         let effector = &self.effectors[index];
         let path = self.path(effector.joint);
         Chain {
@@ -140,6 +152,7 @@ impl Body {
                 .collect(),
             ballast: self.ballast_at(&path, q),
             couplings: self.couplings_on(&path),
+            mirror_of_twin: Vec::new(),
         }
     }
 

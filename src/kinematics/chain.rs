@@ -195,6 +195,12 @@ pub struct Chain {
     pub ballast: Vec<Rider>,
     /// Joints of the chain whose ranges are not independent.
     pub couplings: Vec<Coupling>,
+    /// Empty: the chain draws its starts and kicks as they come. Else it
+    /// is a left hand's chain drawn as the mirror image of its right
+    /// twin's (`mirror.rs`): for each joint, whether its value is drawn
+    /// negated (a joint turning about an axis in the body's midplane), and
+    /// its seeds come from the target seen in the midplane.
+    pub mirror_of_twin: Vec<bool>,
 }
 
 /// A solid of the body carried by a chain though no joint of the chain
@@ -258,7 +264,13 @@ impl Chain {
             riders: Vec::new(),
             ballast: Vec::new(),
             couplings: Vec::new(),
+            mirror_of_twin: Vec::new(),
         }
+    }
+
+    /// Whether joint `i` is drawn negated, as its twin's seen in a mirror.
+    pub fn drawn_negated(&self, i: usize) -> bool {
+        self.mirror_of_twin.get(i).copied().unwrap_or(false)
     }
 
     /// What a reported distance is measured to: the effector's `point`,

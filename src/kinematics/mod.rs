@@ -5,7 +5,8 @@
 //! `rhythm.rs`);
 //! bodies (`body.rs`): joints as a tree with several effectors; the legs
 //! no joint moves (`legs.rs`), and a standing body's balance over them
-//! (`balance.rs`).
+//! (`balance.rs`); a left hand's chain as its right twin's mirror image
+//! (`mirror.rs`).
 
 mod balance;
 mod body;
@@ -17,6 +18,7 @@ mod frames;
 mod incremental;
 mod legs;
 mod limited;
+mod mirror;
 mod posed;
 mod rhythm;
 mod urdf;
@@ -32,6 +34,7 @@ pub use dh::Dh;
 pub use frames::{Declared, Folded};
 pub use incremental::{IncrementalFk, Step};
 pub use legs::{Legs, Stance};
+pub use mirror::{flips_of_twin, mirrored, seed_point_mm};
 pub use posed::Posed;
 pub use urdf::{chain_from_urdf, UrdfError};
 pub use volumes::{Contact, Motion, Owner, Volumes};

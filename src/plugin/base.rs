@@ -118,7 +118,10 @@ impl<'a> ReachQuery<'a> {
             chain,
             target_mm: pose.to_base(&self.target_room_mm),
             tolerance_mm: self.tolerance_mm,
-            seed: seed_in_base_frame(self.seed, &pose.to_base(&self.target_room_mm)),
+            seed: seed_in_base_frame(
+                self.seed,
+                &crate::kinematics::seed_point_mm(chain, &pose.to_base(&self.target_room_mm)),
+            ),
             obstacles: self.obstacles.map(|obstacles| PlacedObstacles {
                 obstacles,
                 own: self.own,

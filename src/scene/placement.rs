@@ -18,7 +18,7 @@ impl BasePose {
     /// The base frame's axes in the room's: turned by the heading about
     /// the vertical.
     pub fn rotation(&self) -> Rotation2<f64> {
-        Rotation2::new(self.heading_rad)
+        turn_exact_at_quarters(self.heading_rad)
     }
 
     /// A point of the room in the base frame.
@@ -47,6 +47,25 @@ impl BasePose {
         let along = self.to_base(target_room_mm).coords.xy();
         along.norm() > BEHIND_MIN_MM && along.y.atan2(along.x).abs() > BEHIND_BEARING_DEG.to_radians()
     }
+}
+
+/// The turn by `rad` about the vertical, exact where it is a whole number
+/// of quarter turns (facing along a wall): `Rotation2::new(PI)` has a sine
+/// of 1.2e-16, which a scene turned or mirrored onto itself rounds
+/// differently.
+fn turn_exact_at_quarters(rad: f64) -> Rotation2<f64> {
+    let quarters = rad / std::f64::consts::FRAC_PI_2;
+    let whole = quarters.round();
+    if (quarters - whole).abs() > 1e-12 {
+        return Rotation2::new(rad);
+    }
+    let (sin, cos) = match (whole as i64).rem_euclid(4) {
+        0 => (0.0, 1.0),
+        1 => (1.0, 0.0),
+        2 => (0.0, -1.0),
+        _ => (-1.0, 0.0),
+    };
+    Rotation2::from_matrix_unchecked(nalgebra::Matrix2::new(cos, -sin, sin, cos))
 }
 
 /// How far round from the way the base faces a target is behind the

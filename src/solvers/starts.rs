@@ -1,6 +1,8 @@
 //! Starting postures for the solvers: the neutral posture, then postures
 //! drawn uniformly within the joint limits from a seeded generator whose
-//! stream does not change between versions of the crate.
+//! stream does not change between versions of the crate. A left hand's
+//! chain drawn as its twin's mirror image (`Chain::mirror_of_twin`) draws
+//! the mirror image of what the twin draws.
 
 use rand_chacha::rand_core::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -31,9 +33,28 @@ pub fn random_posture(chain: &Chain, rng: &mut ChaCha8Rng) -> Vec<f64> {
         .collect();
     for i in drawing_order(chain) {
         let (lo, hi) = chain.interval(i, &q);
-        q[i] = lo + unit_interval(rng) * (hi - lo);
+        let u = unit_interval(rng);
+        // Drawn negated (`Chain::mirror_of_twin`): the negation of the
+        // twin's draw `-hi + u (hi - lo)` from its interval `(-hi, -lo)`.
+        q[i] = if chain.drawn_negated(i) {
+            hi - u * (hi - lo)
+        } else {
+            lo + u * (hi - lo)
+        };
     }
     q
+}
+
+/// A kick of joint `i` of `chain` by up to `fraction` of its range, from
+/// draw `u` in [0, 1): negated for a joint drawn negated, so that a
+/// mirrored chain is kicked as its twin is, in the mirror.
+pub(crate) fn kick_by(chain: &Chain, i: usize, u: f64, fraction: f64) -> f64 {
+    let kick = (2.0 * u - 1.0) * fraction * chain.joints[i].range();
+    if chain.drawn_negated(i) {
+        -kick
+    } else {
+        kick
+    }
 }
 
 /// The rhythms' followers of `chain` (the shoulder girdles), in the
@@ -126,8 +147,7 @@ impl Iterator for Kicks<'_> {
             kicked[f] = self.chain.joints[f].min;
         }
         for i in drawing_order(self.chain) {
-            let j = &self.chain.joints[i];
-            let kick = (2.0 * unit_interval(&mut self.rng) - 1.0) * self.spread * j.range();
+            let kick = kick_by(self.chain, i, unit_interval(&mut self.rng), self.spread);
             kicked[i] = self.chain.clamp_joint(i, self.around[i] + kick, &kicked);
         }
         Some(kicked)

@@ -74,6 +74,10 @@ impl Failed<'_> {
         }
         let mut closest_mm = self.placement.solution.distance_mm;
         let mut found = Vec::new();
+        // Only a base that moves is kept away: a fixed base stands where
+        // it is told, whatever the furniture (its search with the room
+        // emptied is the search without obstacles again).
+        let moves = self.input.base.footprint().is_some();
         if let Some(obstacles) = self.obstacles {
             let no_room = obstacles.none_of();
             let free = self.solve(self.chain, Some(&no_room), own);
@@ -89,18 +93,21 @@ impl Failed<'_> {
                 // the hand reaching "without the backrest" leans back
                 // through where the backrest was).
                 let empty = self.without_furniture(&[]);
-                let closer = self.solve_in(&empty, self.chain, None, own);
-                if self.reaches(&closer) {
+                let closer = moves.then(|| self.solve_in(&empty, self.chain, None, own));
+                if let Some(closer) = closer.filter(|c| self.reaches(c)) {
                     return Found::Why(vec![self.kept_away(obstacles, &closer)]);
                 }
                 found.push(self.blocked_by_body(&no_room, &bare));
             } else {
                 let empty = self.without_furniture(&[]);
-                let roomy = self.solve_in(&empty, self.chain, None, &OwnBody::default());
-                if self.reaches(&roomy) {
-                    return Found::Why(vec![self.kept_away(obstacles, &roomy)]);
+                let roomy = moves
+                    .then(|| self.solve_in(&empty, self.chain, None, &OwnBody::default()));
+                if let Some(roomy) = &roomy {
+                    if self.reaches(roomy) {
+                        return Found::Why(vec![self.kept_away(obstacles, roomy)]);
+                    }
+                    closest_mm = roomy.solution.distance_mm;
                 }
-                closest_mm = roomy.solution.distance_mm;
             }
         }
         let widened = widen(self.chain);

@@ -318,9 +318,10 @@ impl<'a> Pass<'a> {
 /// Move every joint by a seeded random amount, up to `fraction` of its
 /// range, within its limits and couplings.
 pub fn kick(q: &mut [f64], chain: &Chain, fraction: f64, rng: &mut ChaCha8Rng) {
-    for (i, joint) in chain.joints.iter().enumerate() {
+    for i in 0..chain.dof() {
         let u = crate::solvers::starts::unit_interval(rng);
-        q[i] = chain.clamp_joint(i, q[i] + (2.0 * u - 1.0) * fraction * joint.range(), q);
+        let by = crate::solvers::starts::kick_by(chain, i, u, fraction);
+        q[i] = chain.clamp_joint(i, q[i] + by, q);
     }
 }
 

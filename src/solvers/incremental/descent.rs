@@ -169,7 +169,13 @@ fn descend_with(
     let tolerance_sq = problem.tolerance_mm * problem.tolerance_mm;
     let mut d_sq = fk.distance_sq();
     let mut rate = s.rate;
-    let mut sign = vec![1.0_f64; chain.dof()];
+    // Each joint's first try is up, or down for a joint drawn negated
+    // (`Chain::mirror_of_twin`): a left hand descends as the right one
+    // does in the mirror.
+    let first_sign: Vec<f64> = (0..chain.dof())
+        .map(|i| if chain.drawn_negated(i) { -1.0 } else { 1.0 })
+        .collect();
+    let mut sign = first_sign.clone();
     // Inc(i) = range * rate (section 5.3.1), then adapted per joint.
     let mut steps: Vec<Step> = chain
         .joints
@@ -194,6 +200,9 @@ fn descend_with(
             }
             let step = &steps[i];
             let interval = chain.interval(i, fk.q());
+            if !s.sign_memory {
+                sign[i] = first_sign[i];
+            }
             let kept = try_joint(
                 s,
                 &mut fk,
@@ -268,8 +277,13 @@ fn descend_with(
     }
 }
 
+/// How much of the squared distance a move may lose and still count as
+/// no farther: far above its rounding (about 1e-13 of it), far below any
+/// loss that matters.
+const NO_FARTHER: f64 = 1e-11;
+
 /// Try joint `i` one increment either way, by the paper's rule: the first
-/// direction (the remembered sign) if it brings the effector closer within
+/// direction (`sign`: the remembered one, or the joint's first) if it brings the effector closer within
 /// the joint's limits, else the other if it does. Eagerly, both are
 /// evaluated before either is chosen, so the second does not wait for the
 /// first comparison; lazily (the paper's cost), the second only if the
@@ -289,7 +303,7 @@ fn try_joint<K: Kinematics>(
     mut guard: Option<&mut Guard<'_, '_>>,
 ) -> bool {
     let lever = fk.lever(i);
-    let first = if s.sign_memory { *sign } else { 1.0 };
+    let first = *sign;
     let old = fk.q()[i];
     let (lo, hi) = interval;
     let limits = |v: f64| v >= lo && v <= hi;
@@ -301,7 +315,15 @@ fn try_joint<K: Kinematics>(
     let second = s
         .eager_pair
         .then(|| fk.distance_sq_moved(i, step, -first, &lever));
-    if d_first < *d_sq && within(&mut guard, plus) {
+    // A move is made where it brings the effector no farther, a tie
+    // included: a joint that leaves the distance as it is (the forearm's
+    // rotation, the grip on its axis) moves on, which lets the posture
+    // slide round an obstacle, and the same every time, where a strict
+    // comparison left the tie to the rounding of the distance (the mirror
+    // image of a search, or the same search in a room turned, parted ways
+    // there).
+    let closer = |d: f64| d < *d_sq * (1.0 + NO_FARTHER);
+    if closer(d_first) && within(&mut guard, plus) {
         *d_sq = d_first;
         fk.set_moved(i, plus, cs_first);
         if let Some(g) = guard {
@@ -311,7 +333,7 @@ fn try_joint<K: Kinematics>(
     }
     let (d_second, cs_second) =
         second.unwrap_or_else(|| fk.distance_sq_moved(i, step, -first, &lever));
-    if d_second < *d_sq && within(&mut guard, minus) {
+    if closer(d_second) && within(&mut guard, minus) {
         *d_sq = d_second;
         fk.set_moved(i, minus, cs_second);
         *sign = -first;
