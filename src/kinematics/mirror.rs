@@ -58,14 +58,16 @@ pub fn flips_of_twin(left: &Chain, right: &Chain) -> Vec<bool> {
             JointKind::Revolute => PROBE_RAD,
             JointKind::Prismatic => PROBE_MM,
         };
-        let moved = |chain: &Chain, rest: &[f64], by: f64| -> Vector3<f64> {
+        // The effector's move from `at`, where `rest` puts it.
+        let moved = |chain: &Chain, (rest, at): (&[f64], &Point3<f64>), by: f64| -> Vector3<f64> {
             let mut q = rest.to_vec();
             q[i] += by;
-            chain.effector(&q) - chain.effector(rest)
+            chain.effector(&q) - at
         };
-        let want = mirrored(&Point3::from(moved(right, &rest_right, probe))).coords;
-        let same = (moved(left, &rest_left, probe) - want).norm();
-        let negated = (moved(left, &rest_left, -probe) - want).norm();
+        let (left_rest, right_rest) = ((&rest_left[..], &at_left), (&rest_right[..], &at_right));
+        let want = mirrored(&Point3::from(moved(right, right_rest, probe))).coords;
+        let same = (moved(left, left_rest, probe) - want).norm();
+        let negated = (moved(left, left_rest, -probe) - want).norm();
         if same.min(negated) > AGREE_MM {
             return Vec::new();
         }

@@ -114,13 +114,14 @@ impl<'a> ReachQuery<'a> {
 
     /// The problem in the base frame of a base standing at `pose`.
     pub fn problem<'c>(&'c self, chain: &'c Chain, pose: BasePose) -> IkProblem<'c> {
+        let target_mm = pose.to_base(&self.target_room_mm);
         IkProblem {
             chain,
-            target_mm: pose.to_base(&self.target_room_mm),
+            target_mm,
             tolerance_mm: self.tolerance_mm,
             seed: seed_in_base_frame(
                 self.seed,
-                &crate::kinematics::seed_point_mm(chain, &pose.to_base(&self.target_room_mm)),
+                &crate::kinematics::seed_point_mm(chain, &target_mm),
             ),
             obstacles: self.obstacles.map(|obstacles| PlacedObstacles {
                 obstacles,

@@ -92,16 +92,13 @@ impl Failed<'_> {
                 // with the body as it is, the furniture keeps it away (else
                 // the hand reaching "without the backrest" leans back
                 // through where the backrest was).
-                let empty = self.without_furniture(&[]);
-                let closer = moves.then(|| self.solve_in(&empty, self.chain, None, own));
+                let closer = moves.then(|| self.solve_emptied(own));
                 if let Some(closer) = closer.filter(|c| self.reaches(c)) {
                     return Found::Why(vec![self.kept_away(obstacles, &closer)]);
                 }
                 found.push(self.blocked_by_body(&no_room, &bare));
             } else {
-                let empty = self.without_furniture(&[]);
-                let roomy = moves
-                    .then(|| self.solve_in(&empty, self.chain, None, &OwnBody::default()));
+                let roomy = moves.then(|| self.solve_emptied(&OwnBody::default()));
                 if let Some(roomy) = &roomy {
                     if self.reaches(roomy) {
                         return Found::Why(vec![self.kept_away(obstacles, roomy)]);
@@ -387,6 +384,13 @@ impl Failed<'_> {
     /// The task's room without the obstacles `removed` (all of them when
     /// empty), under a name of its own (a base keeps where it fits by
     /// room name).
+    /// The search again with the room's furniture taken away (walls and
+    /// doors kept) and no obstacle checked, the body and chair as `own`:
+    /// whether the base, coming closer, lets the hand reach.
+    fn solve_emptied(&self, own: &OwnBody) -> Placement {
+        self.solve_in(&self.without_furniture(&[]), self.chain, None, own)
+    }
+
     fn without_furniture(&self, removed: &[usize]) -> Room {
         let room = self.input.room;
         let all = removed.is_empty();
