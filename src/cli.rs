@@ -2,8 +2,9 @@
 //! if targets are unreachable, or a person's base fits nowhere), 1 on
 //! diagnostics, 2 on usage errors, 3 when the scenario ran but one of its
 //! `expect`s is not met (unless `--no-expect`), or with `--strict` a
-//! person's base fits nowhere in a task's room. `reach test` exits 1 when
-//! any scenario fails, as test runners do.
+//! person's base fits nowhere in a task's room, 4 when the bound on work
+//! stopped `reach run` partway (the answers before the stop are shown).
+//! `reach test` exits 1 when any scenario fails, as test runners do.
 
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
@@ -20,7 +21,9 @@ use reach::{DiagnosticStyle, Diagnostics, Input, Limits};
 const EXIT_STATUS: &str = "Exit status: 0 when the scenario evaluated and its expects are met \
 (an unreachable target, or a chair that fits nowhere, is an answer); 1 when the input has \
 errors, or `reach test` has a failing scenario; 2 on usage errors; 3 when the scenario ran but \
-an expect is not met (unless --no-expect), or with --strict a base fits nowhere.";
+an expect is not met (unless --no-expect), or with --strict a base fits nowhere; 4 when the \
+bound on solver work stopped `reach run` partway (the answers before the stop are shown, the \
+rest are not evaluated).";
 
 #[derive(Parser)]
 #[command(
@@ -430,12 +433,9 @@ fn run(registry: &Registry, e: &Evaluate, shown: &Shown) -> i32 {
         Err(d) => return shown.diagnostics(&d),
     };
     let bar = crate::bar::Bar::new(!shown.quiet);
-    let ran = session.progress(&bar).run(&scenario).map(|ran| ran.report);
+    let ran = session.progress(&bar).run_partly(&scenario);
     bar.clear();
-    let report = match ran {
-        Ok(report) => report,
-        Err(error) => return shown.diagnostics(&Diagnostics::single(error).attach(&sources)),
-    };
+    let (report, stopped) = (ran.report, ran.stopped);
     if let Some(dir) = &e.out {
         match crate::signals::whole(|| {
             reach::output::write_outputs(&report, &scenario, registry.formats(), dir)
@@ -473,6 +473,15 @@ fn run(registry: &Registry, e: &Evaluate, shown: &Shown) -> i32 {
             .map(|why| format!("{}: {why}", answer.label()))
         })
         .collect();
+    if let Some(error) = stopped {
+        eprint!(
+            "{}",
+            Diagnostics::single(error)
+                .attach(&sources)
+                .render_in(shown.style)
+        );
+        return STOPPED_PARTWAY;
+    }
     if e.strict && !not_placed.is_empty() {
         let file = e.file.display().to_string();
         for message in not_placed {
@@ -506,6 +515,10 @@ fn run(registry: &Registry, e: &Evaluate, shown: &Shown) -> i32 {
 /// (`--strict`) a person's base fits nowhere or cannot get in: not 1,
 /// which says the input is wrong.
 const NOT_AS_EXPECTED: i32 = 3;
+
+/// The exit code when the bound on work stopped the run partway: the
+/// answers before it are shown and written, the rest are not evaluated.
+const STOPPED_PARTWAY: i32 = 4;
 
 /// A format with no text for standard output (`glb`, `maps`): a usage
 /// error, with the formats that have one.

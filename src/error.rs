@@ -148,6 +148,20 @@ pub enum ErrorKind {
     )]
     TooMuchWork { limit: u64 },
     #[error(
+        "the run needed more solver work than the limit of {} units: {answered} of {tasks} tasks answered, the rest not evaluated",
+        thousands(*.limit)
+    )]
+    StoppedPartway {
+        limit: u64,
+        /// The tasks answered (those before the first not evaluated).
+        answered: usize,
+        /// Every task of the run, the standards included.
+        tasks: usize,
+        /// The work that was left for the first task not evaluated (it
+        /// alone needs more).
+        left: u64,
+    },
+    #[error(
         "`limits` raises {name} to {}, above the {} this run lets a file raise it to",
         thousands(*.asked),
         thousands(*.ceiling)
@@ -261,6 +275,7 @@ impl ErrorKind {
             Illegible { .. } => "reach::range",
             NoEffector { .. } => "reach::name",
             TooLarge { .. } | TooManyStarts { .. } | TooMuchWork { .. } => "reach::limit",
+            StoppedPartway { .. } => "reach::limit",
             AboveCeiling { .. } => "reach::limit",
             BaseOutsideRoom { .. } => "reach::scene",
             UnknownPlugin { .. }
@@ -317,6 +332,10 @@ impl ErrorKind {
                 format!("these tasks: up to {} starts", thousands(*decl_starts))
             }
             TooMuchWork { .. } => "the tasks that may ask the most".into(),
+            StoppedPartway { left, .. } => format!(
+                "not evaluated: this task alone needs more than the {} units left",
+                thousands(*left)
+            ),
             AboveCeiling { .. } => "above the ceiling".into(),
             BaseOutsideRoom { .. } => "cannot be placed for this task".into(),
             Misplaced { .. } => "in a used file".into(),
@@ -416,6 +435,9 @@ impl ErrorKind {
             ),
             TooMuchWork { .. } => Some(
                 "ask less (a coarser `step`; fewer `starts`, `blocked_retries` or iterations: `max_iterations`, `sweeps`, `samples`, `kicks`; in a room with doors, whose routes count too, or one so crowded that the base fits only far from where it is asked to, whose floor counts too: fewer people or `headings`), or raise the bound: `limits { solver_work N }` in the file (up to --max-limits-raise times the command line's), or --max-solver-work; no answer of this run is shown, since some were cut short".into(),
+            ),
+            StoppedPartway { .. } => Some(
+                "the answers before this task are shown; for the rest, ask less (a coarser `step`; fewer people, `starts`, `blocked_retries` or `headings`) or raise the bound: `limits { solver_work N }` in the file (up to --max-limits-raise times the command line's), or --max-solver-work".into(),
             ),
             BaseOutsideRoom { .. } => Some("a fixed base must stand inside the room (check its `at`), and a moving base's zone must meet its floor (check `zone`, or `zone_from` and `zone_to`)".into()),
             AboveCeiling { asked, flag, .. } => Some(format!(

@@ -111,6 +111,10 @@ pub struct Session<'a> {
 pub struct Ran {
     pub report: Report,
     pub work: u64,
+    /// Where the bound on work stopped a run of [`Session::run_partly`]
+    /// (none where every task was answered): the error to show, at the
+    /// first task not evaluated.
+    pub stopped: Option<Error>,
 }
 
 impl Default for Session<'_> {
@@ -193,16 +197,33 @@ impl<'a> Session<'a> {
     /// ([`Limits::solver_work`]; no answer is given, since some were cut
     /// short).
     pub fn run(&self, scenario: &Scenario) -> Result<Ran, Error> {
+        self.on_pool(|memo| run_on_this_pool(scenario, self.progress, memo))
+    }
+
+    /// Run every task of a checked scenario as [`Session::run`] does, as
+    /// far as the scenario's bound on work allows: where it stops the run,
+    /// the answers of the longest leading run of tasks (in the order of
+    /// the file) whose work fits within the bound, each task after them
+    /// reported not evaluated ([`report::NotEvaluatedReport`]), and
+    /// [`Ran::stopped`] says where and why. The same answers on every run
+    /// and thread count.
+    pub fn run_partly(&self, scenario: &Scenario) -> Ran {
+        self.on_pool(|memo| run_partly_on_this_pool(scenario, self.progress, memo))
+    }
+
+    /// `run` on the session's pool of threads (or rayon's global one),
+    /// with the session's memo (or one of its own).
+    fn on_pool<T: Send>(&self, run: impl FnOnce(&Arc<kept::Memo>) -> T + Send) -> T {
         let pool = self
             .threads
             .and_then(|n| rayon::ThreadPoolBuilder::new().num_threads(n).build().ok());
         let own = Arc::default();
         let memo = self.memo.unwrap_or(&own);
         match pool {
-            Some(pool) => pool.install(|| run_on_this_pool(scenario, self.progress, memo)),
+            Some(pool) => pool.install(|| run(memo)),
             // Without a pool of its own (none asked for, or the system
             // gave none), on rayon's global one: the same answers.
-            None => run_on_this_pool(scenario, self.progress, memo),
+            None => run(memo),
         }
     }
 }
@@ -231,5 +252,30 @@ fn run_on_this_pool(
     Ok(Ran {
         report,
         work: work + standards,
+        stopped: None,
     })
+}
+
+fn run_partly_on_this_pool(
+    scenario: &Scenario,
+    progress: &dyn progress::Progress,
+    memo: &Arc<kept::Memo>,
+) -> Ran {
+    let all: Vec<&scenario::TaskSpec> = scenario.tasks.iter().collect();
+    let (ran, stop) = scenario.run_tasks_partly(&all, progress, memo);
+    let work: u64 = ran.iter().flatten().map(|r| r.work).sum();
+    let tasks = (ran.into_iter().zip(&all))
+        .map(|(ran, task)| ran.map_or_else(|| scenario.not_evaluated(task), |r| r.report))
+        .collect();
+    let (report, standards, checked) = scenario.report_partly(tasks, work, stop.is_some(), memo);
+    let stopped = match stop {
+        Some(stop) => Some(scenario.stopped_at(stop)),
+        None if !checked => Some(scenario.stopped_at_standards(work)),
+        None => None,
+    };
+    Ran {
+        report,
+        work: work + standards,
+        stopped,
+    }
 }

@@ -1029,16 +1029,22 @@ fn a_run_past_the_bound_on_solver_work_stops_with_the_limit_named() {
         out.to_str().unwrap(),
     ]);
     let err = stderr(&o);
-    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert_eq!(o.status.code(), Some(4), "{err}");
     assert!(
         flat(&err).contains("more solver work than the limit of 20,000,000 units"),
         "{err}"
     );
     assert!(err.contains("--max-solver-work"), "{err}");
-    // At the task that may ask the most, and no answer shown or written.
+    // At the first task not evaluated (the only one), which is shown and
+    // written as such, with no answer of its own.
     assert!(err.contains("root.reach:10"), "{err}");
-    assert!(stdout(&o).is_empty(), "{}", stdout(&o));
-    assert!(!out.exists());
+    assert!(
+        stdout(&o).contains("not evaluated: work limit"),
+        "{}",
+        stdout(&o)
+    );
+    let json = std::fs::read_to_string(out.join("report.json")).expect("the report is written");
+    assert!(json.contains("\"kind\": \"not_evaluated\""), "{json}");
 }
 
 /// A map through the shelf and a reach over it by a wheelchair user: the

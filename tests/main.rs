@@ -26,6 +26,7 @@ mod limits;
 mod meshes;
 mod outputs;
 mod parser;
+mod partial;
 mod placement;
 mod plugins;
 mod population;

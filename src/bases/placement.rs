@@ -245,23 +245,28 @@ impl Mobile {
                 self.floors.cell(w)
             });
             let hint = hint.as_ref().and_then(|c| c.get());
-            let floor = FLOORS
-                .get_or_try(&allowance.memo(), key, || {
-                    self.compute_floor(room, hint, key, allowance)
-                })
-                .unwrap_or_else(|cut| {
-                    // Past the run's limit: the run stops.
+            let floor = FLOORS.get_or_try(&allowance.memo(), key, || {
+                self.compute_floor(room, hint, key, allowance)
+            });
+            match floor {
+                Ok(floor) => _ = cell.set(floor),
+                Err(cut) => {
+                    // Past the run's limit: the run stops. The floor cut
+                    // short is this call's alone: a run after it (with
+                    // more work left) works the floor out again.
                     allowance.spend(cut.work);
                     debug_assert!(allowance.exhausted(), "a floor cut short stops the run");
-                    Floor {
+                    let alone = Arc::new(OnceLock::new());
+                    let _ = alone.set(Floor {
                         regions: Vec::new(),
                         doors: None,
                         routes: None,
                         fits: false,
                         work: cut.work,
-                    }
-                });
-            let _ = cell.set(floor);
+                    });
+                    return alone;
+                }
+            }
         }
         cell
     }

@@ -6,7 +6,7 @@ use std::fmt::Write;
 
 use crate::escape::{escaped, escaped_keeping};
 use crate::plugin::{FormatPlugin, FormatScene, ParamSpec, Plugin};
-use crate::report::{Answer, Report};
+use crate::report::{Answer, Report, TaskReport};
 
 pub struct Text;
 
@@ -36,7 +36,14 @@ impl FormatPlugin for Text {
         let ok = answers.iter().filter(|a| a.ok).count();
         let file = escaped(&report.file);
         let noun = if answers.len() == 1 { "task" } else { "tasks" };
-        let _ = writeln!(out, "{file}: {} {noun}, {} ok\n", answers.len(), ok);
+        let unrun = (report.tasks.iter())
+            .filter(|t| matches!(t, TaskReport::NotEvaluated(_)))
+            .count();
+        let unrun = match unrun {
+            0 => String::new(),
+            n => format!(", {n} not evaluated (work limit)"),
+        };
+        let _ = writeln!(out, "{file}: {} {noun}, {} ok{unrun}\n", answers.len(), ok);
         out.push_str(&table(&answers));
         for task in &report.tasks {
             task.details(&mut out);

@@ -14,8 +14,8 @@ use serde::Deserialize;
 use serde_json::Value;
 
 use super::{
-    Answer, GazeReport, MapReport, NotPlacedReport, PopulationReport, ReachAndGazeReport,
-    ReachReport, StandardReport, TaskReport, Why,
+    Answer, GazeReport, MapReport, NotEvaluatedReport, NotPlacedReport, PopulationReport,
+    ReachAndGazeReport, ReachReport, StandardReport, TaskReport, Why,
 };
 
 /// Floats within these count as unchanged.
@@ -81,6 +81,7 @@ pub enum Kind {
     ReachAndGaze,
     Map,
     NotPlaced,
+    NotEvaluated,
     Population,
     Standard,
 }
@@ -99,6 +100,7 @@ impl Kind {
             TaskReport::ReachAndGaze(_) => Kind::ReachAndGaze,
             TaskReport::Map(_) => Kind::Map,
             TaskReport::NotPlaced(_) => Kind::NotPlaced,
+            TaskReport::NotEvaluated(_) => Kind::NotEvaluated,
             TaskReport::Population(_) => Kind::Population,
             TaskReport::Standard(_) => Kind::Standard,
         }
@@ -112,6 +114,7 @@ impl Kind {
             Kind::ReachAndGaze => ReachAndGazeReport::asks(entry),
             Kind::Map => MapReport::asks(entry),
             Kind::NotPlaced => NotPlacedReport::asks(entry),
+            Kind::NotEvaluated => NotEvaluatedReport::asks(entry),
             Kind::Population => PopulationReport::asks(entry),
             Kind::Standard => StandardReport::asks(entry),
         }
@@ -125,6 +128,7 @@ impl Kind {
             Kind::ReachAndGaze => ReachAndGazeReport::verdict_words(entry),
             Kind::Map => MapReport::verdict_words(entry),
             Kind::NotPlaced => NotPlacedReport::verdict_words(entry),
+            Kind::NotEvaluated => NotEvaluatedReport::verdict_words(entry),
             Kind::Population => PopulationReport::verdict_words(entry),
             Kind::Standard => StandardReport::verdict_words(entry),
         }
@@ -144,6 +148,7 @@ impl Kind {
             Kind::ReachAndGaze => ReachAndGazeReport::changes,
             Kind::Map => MapReport::changes,
             Kind::NotPlaced => NotPlacedReport::changes,
+            Kind::NotEvaluated => NotEvaluatedReport::changes,
             Kind::Population => PopulationReport::changes,
             Kind::Standard => StandardReport::changes,
         };
@@ -278,7 +283,7 @@ mod tests {
             .iter()
             .map(|k| text(&k["properties"]["kind"], "const"))
             .collect();
-        assert_eq!(tags.len(), 7, "{tags:?}");
+        assert_eq!(tags.len(), 8, "{tags:?}");
         for tag in tags {
             let entry = serde_json::json!({ "kind": tag });
             assert!(Kind::of(&entry).is_some(), "`{tag}` is not a Kind");

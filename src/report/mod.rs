@@ -15,6 +15,7 @@ mod entry_kind;
 mod expectation;
 mod gaze;
 mod map;
+mod not_evaluated;
 mod not_placed;
 mod parts;
 mod population;
@@ -29,6 +30,7 @@ pub use entry_kind::{Asks, EntryKind, Kind, Tolerance};
 pub use expectation::ExpectationReport;
 pub use gaze::{GazeReport, Sight};
 pub use map::{MapCell, MapReport};
+pub use not_evaluated::{NotEvaluatedReport, WORK_LIMIT};
 pub use not_placed::NotPlacedReport;
 pub use parts::{deg, fixed, mm, Asked, BaseReport, Names, Posture, BALANCE};
 pub use population::{wilson95, Excluded, PopulationReport, ShareCell, ShareGrid};
@@ -112,6 +114,9 @@ pub enum TaskReport {
     /// The person's base fits nowhere in the task's room.
     #[serde(rename = "not_placed")]
     NotPlaced(NotPlacedReport),
+    /// A task the run's work limit stopped it before.
+    #[serde(rename = "not_evaluated")]
+    NotEvaluated(NotEvaluatedReport),
     /// A task by a population: the share it accommodates.
     Population(Box<PopulationReport>),
     /// A room checked against a building standard's rules.
@@ -154,6 +159,7 @@ impl TaskReport {
             TaskReport::ReachAndGaze(b) => b.as_ref(),
             TaskReport::Map(m) => m,
             TaskReport::NotPlaced(n) => n,
+            TaskReport::NotEvaluated(n) => n,
             TaskReport::Population(p) => p.as_ref(),
             TaskReport::Standard(s) => s.as_ref(),
         }

@@ -96,7 +96,12 @@ fn all(
     let results: Vec<(bool, String)> = entries
         .iter()
         .filter_map(|&k| reports.get(k))
-        .map(judged)
+        .map(|r| match r {
+            // Nothing was found: no expectation of it is met, whatever
+            // it wanted.
+            TaskReport::NotEvaluated(_) => (false, r.answer().verdict),
+            _ => judged(r),
+        })
         .collect();
     match results.iter().find(|(ok, _)| !ok) {
         Some((_, words)) => (false, words.clone()),

@@ -51,6 +51,22 @@ pub struct WorkBound {
 }
 
 impl WorkBound {
+    /// The error of a run the bound stopped partway (`answered` of
+    /// `tasks` answered), at `span` (the first task not evaluated) with
+    /// `left` units left for it.
+    pub fn stopped(&self, span: Option<Span>, answered: usize, tasks: usize, left: u64) -> Error {
+        let kind = ErrorKind::StoppedPartway {
+            limit: self.limit,
+            answered,
+            tasks,
+            left,
+        };
+        match span {
+            Some(span) => Error::new(kind, span),
+            None => Error::unplaced(kind),
+        }
+    }
+
     /// The error of a run past the bound.
     pub fn exceeded(&self) -> Error {
         let kind = ErrorKind::TooMuchWork { limit: self.limit };

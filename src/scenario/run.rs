@@ -18,7 +18,7 @@ use crate::meter::{Meter, RunWork};
 use crate::plugin::{Fit, TaskInput};
 use crate::progress::Progress;
 use crate::report::{
-    NotPlacedReport, PersonAnswer, PopulationReport, Report, TaskReport, SCHEMA_VERSION,
+    NotEvaluatedReport, NotPlacedReport, PersonAnswer, PopulationReport, Report, TaskReport, SCHEMA_VERSION,
 };
 
 /// One task's answer, what its questions touched of its room (where it
@@ -29,6 +29,27 @@ pub struct Ran {
     pub work: u64,
     /// Its solves, kept for its next run (where it records its touches).
     pub solves: Option<SolveMap>,
+}
+
+/// Where the bound stopped a run of tasks ([`Scenario::run_tasks_partly`]):
+/// the position of the first task not run, and the work that was left
+/// for it (it alone needs more).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Stop {
+    pub at: usize,
+    pub left: u64,
+}
+
+/// A task kind as the text report names it (`reach`, `map`, ...).
+fn task_label(kind: &str) -> &'static str {
+    match kind {
+        "reach_and_gaze" => "reach+gaze",
+        "reach" => "reach",
+        "gaze" => "gaze",
+        "map" => "map",
+        "gaze_map" => "gaze_map",
+        _ => "task",
+    }
 }
 
 /// That a task's run records what it touched (watch mode), with the
@@ -100,6 +121,74 @@ impl Scenario {
         self.run_jobs(tasks, progress, None, &run)
     }
 
+    /// Run `tasks` (in the order of the file) as far as the scenario's
+    /// bound allows: each task's answer for the longest leading run of
+    /// them whose work together fits within the bound, none for the rest,
+    /// and where the bound stopped them, the position of the first not
+    /// run with the work that was left for it. The same on every run and
+    /// thread count: the tasks run in parallel first, and where the bound
+    /// stops them, each of the leading run that the threads left
+    /// unfinished is run again on its own with what is left, in order (a
+    /// task's work does not depend on what ran beside it).
+    pub fn run_tasks_partly(
+        &self,
+        tasks: &[&TaskSpec],
+        progress: &dyn Progress,
+        memo: &Arc<Memo>,
+    ) -> (Vec<Option<Ran>>, Option<Stop>) {
+        let run = RunWork::keeping(self.work.limit, Arc::clone(memo));
+        let mut ran = self.run_jobs_partly(tasks, progress, None, &run);
+        if !run.exceeded() && ran.iter().all(Option::is_some) {
+            return (ran, None);
+        }
+        let mut spent = 0u64;
+        for k in 0..tasks.len() {
+            let left = self.work.limit.saturating_sub(spent);
+            let whole = match ran[k].take() {
+                Some(done) => (done.work <= left).then_some(done),
+                None => {
+                    let alone = RunWork::keeping(left, Arc::clone(memo));
+                    let mut one = self.run_jobs_partly(&tasks[k..=k], progress, None, &alone);
+                    one.pop().flatten().filter(|_| !alone.exceeded())
+                }
+            };
+            let Some(done) = whole else {
+                ran[k..].iter_mut().for_each(|r| *r = None);
+                return (ran, Some(Stop { at: k, left }));
+            };
+            spent += done.work;
+            ran[k] = Some(done);
+        }
+        (ran, None)
+    }
+
+    /// The error of a run of every task of the file that the bound
+    /// stopped at `stop`.
+    pub fn stopped_at(&self, stop: Stop) -> Error {
+        let all = self.tasks.len() + self.standards.len();
+        let span = self.tasks.get(stop.at).map(|t| t.span);
+        self.work.stopped(span, stop.at, all, stop.left)
+    }
+
+    /// The error of a run of every task of the file (`spent` units of
+    /// work) that the bound stopped at its standards.
+    pub fn stopped_at_standards(&self, spent: u64) -> Error {
+        let all = self.tasks.len() + self.standards.len();
+        let span = self.standards.first().map(|s| s.span);
+        let left = self.work.limit.saturating_sub(spent);
+        self.work.stopped(span, self.tasks.len(), all, left)
+    }
+
+    /// The entry of `task`, which the bound stopped the run before.
+    pub fn not_evaluated(&self, task: &TaskSpec) -> TaskReport {
+        let who = match task.population {
+            Some(p) => &self.populations[p].name,
+            None => &self.persons[task.person].name,
+        };
+        let label = task_label(&task.kind);
+        TaskReport::NotEvaluated(NotEvaluatedReport::new(label, task.subject_name(self), who))
+    }
+
     /// As [`Scenario::run_tasks`], with what each task's questions touched
     /// of its room where it records that (`Task::records_touches`; never
     /// for a population's task), and the work each did; the work of the
@@ -125,7 +214,7 @@ impl Scenario {
 
     /// `tasks` run in parallel, recording what they touch where `record`
     /// holds the solves of their last runs (by position), their work told
-    /// to `run`.
+    /// to `run`: every answer, or an error where the run passed its bound.
     fn run_jobs(
         &self,
         tasks: &[&TaskSpec],
@@ -133,6 +222,25 @@ impl Scenario {
         record: Option<&[Option<Earlier>]>,
         run: &Arc<RunWork>,
     ) -> Result<Vec<Ran>, Error> {
+        let ran = self.run_jobs_partly(tasks, progress, record, run);
+        match ran.into_iter().collect::<Option<Vec<Ran>>>() {
+            Some(ran) if !run.exceeded() => Ok(ran),
+            _ => Err(self.work.exceeded()),
+        }
+    }
+
+    /// `tasks` run in parallel as [`Scenario::run_jobs`] runs them: each
+    /// task's answer where it was finished before the run passed its bound
+    /// (a population's task: by every one of its people), none where the
+    /// bound stopped it first. Which tasks those are depends on the order
+    /// the threads took them in.
+    fn run_jobs_partly(
+        &self,
+        tasks: &[&TaskSpec],
+        progress: &dyn Progress,
+        record: Option<&[Option<Earlier>]>,
+        run: &Arc<RunWork>,
+    ) -> Vec<Option<Ran>> {
         // The positions of the tasks by each population.
         let mut by_population: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
         let mut jobs = Vec::new();
@@ -162,8 +270,11 @@ impl Scenario {
         }
         let floor_charges = self.floor_charges();
         // Each job's answers (a task's alone, or a member's in the order
-        // of their population's tasks) and the work of each; none once the
-        // run is past its bound (no job starts then).
+        // of their population's tasks) and the work of each; none where
+        // the run passed its bound before the job ended (no job starts
+        // then, and one under way stops early: its answers are not
+        // whole). The bound, once passed, stays passed: a job that ends
+        // with the run within it was never cut short.
         type Found = (
             Vec<(TaskReport, u64)>,
             Option<(TouchedSet, Option<SolveMap>)>,
@@ -171,7 +282,10 @@ impl Scenario {
         let found: Vec<Option<Found>> = jobs
             .par_iter()
             .map(|job| {
-                (!run.exceeded()).then(|| match *job {
+                if run.exceeded() {
+                    return None;
+                }
+                let found = match *job {
                     Job::Alone(k) => {
                         let charges = floor_charges.of(tasks[k]);
                         let recording = record.map(|earlier| Recording {
@@ -191,18 +305,26 @@ impl Scenario {
                             .collect();
                         (each, None)
                     }
-                })
+                };
+                (!run.exceeded()).then_some(found)
             })
             .collect();
-        let found: Vec<Found> = match found.into_iter().collect::<Option<_>>() {
-            Some(found) if !run.exceeded() => found,
-            _ => return Err(self.work.exceeded()),
-        };
         let mut touched: Vec<Option<(TouchedSet, Option<SolveMap>)>> =
             (0..tasks.len()).map(|_| None).collect();
         let mut work = vec![0u64; tasks.len()];
+        let mut whole = vec![true; tasks.len()];
         let mut answers = Vec::with_capacity(found.len());
-        for (job, (each, set)) in jobs.iter().zip(found) {
+        for (job, found) in jobs.iter().zip(found) {
+            let Some((each, set)) = found else {
+                match job {
+                    Job::Alone(k) => whole[*k] = false,
+                    Job::Member { population, .. } => {
+                        by_population[population].iter().for_each(|&k| whole[k] = false);
+                    }
+                }
+                answers.push(None);
+                continue;
+            };
             match job {
                 Job::Alone(k) => (touched[*k], work[*k]) = (set, each[0].1),
                 Job::Member { population, .. } => {
@@ -211,23 +333,23 @@ impl Scenario {
                     }
                 }
             }
-            answers.push(each.into_iter().map(|(report, _)| report).collect());
+            answers.push(Some(each.into_iter().map(|(report, _)| report).collect()));
         }
-        let reports = self.gather(tasks, &by_population, &jobs, answers);
-        Ok(reports
+        let reports = self.gather(tasks, &by_population, &jobs, answers, &whole);
+        reports
             .into_iter()
             .zip(touched)
             .zip(work)
             .map(|((report, touched), work)| {
                 let (touched, solves) = touched.unzip();
-                Ran {
+                report.map(|report| Ran {
                     report,
                     touched,
                     work,
                     solves: solves.flatten(),
-                }
+                })
             })
-            .collect())
+            .collect()
     }
 
     /// The report of a run whose tasks, all of them in the order of the
@@ -258,6 +380,48 @@ impl Scenario {
             tasks,
         };
         Ok((report, run.spent() - spent))
+    }
+
+    /// The report of a run of every task of the file (`tasks`, `spent`
+    /// units of work) that the bound may have stopped (`stopped`: some
+    /// tasks are not evaluated): the standards are checked where every
+    /// task was answered and they fit within what is left of the bound,
+    /// and are each not evaluated otherwise; with the standards' work,
+    /// and whether they were checked.
+    pub fn report_partly(
+        &self,
+        mut tasks: Vec<TaskReport>,
+        spent: u64,
+        stopped: bool,
+        memo: &Arc<Memo>,
+    ) -> (Report, u64, bool) {
+        let all: Vec<&TaskSpec> = self.tasks.iter().collect();
+        let run = RunWork::keeping(self.work.limit, Arc::clone(memo));
+        run.charge(spent);
+        let mut standards = if stopped {
+            Vec::new()
+        } else {
+            self.run_standards(&all, &tasks, &run)
+        };
+        let checked = !stopped && !run.exceeded();
+        if !checked {
+            standards = (self.standards.iter())
+                .map(|spec| {
+                    let room = format!("in {}", self.rooms[spec.room].name);
+                    TaskReport::NotEvaluated(NotEvaluatedReport::new("standard", &spec.name, &room))
+                })
+                .collect();
+        }
+        tasks.extend(standards);
+        let report = Report {
+            schema: SCHEMA_VERSION,
+            file: self.file.clone(),
+            notes: self.notes(),
+            expectations: self.judge(&tasks),
+            tasks,
+        };
+        let work = if checked { run.spent() - spent } else { 0 };
+        (report, work, checked)
     }
 
     /// Each standard checked on its room, in parallel, in the order given,
@@ -298,19 +462,23 @@ impl Scenario {
             .collect()
     }
 
-    /// The answers of `found` (one per job of `jobs`) as one report per
-    /// task, in the order of `tasks`.
+    /// The answers of `found` (one per job of `jobs`, none where it was
+    /// not finished) as one report per task, in the order of `tasks`: none
+    /// for a task not `whole` (a population's task some of whose people
+    /// were not run).
     fn gather(
         &self,
         tasks: &[&TaskSpec],
         by_population: &BTreeMap<usize, Vec<usize>>,
         jobs: &[Job],
-        found: Vec<Vec<TaskReport>>,
-    ) -> Vec<TaskReport> {
+        found: Vec<Option<Vec<TaskReport>>>,
+        whole: &[bool],
+    ) -> Vec<Option<TaskReport>> {
         let mut reports: Vec<Option<TaskReport>> = vec![None; tasks.len()];
         // Each population task's answers, person by person in draw order.
         let mut answers: BTreeMap<usize, Vec<TaskReport>> = BTreeMap::new();
         for (job, each) in jobs.iter().zip(found) {
+            let Some(each) = each else { continue };
             match job {
                 Job::Alone(k) => reports[*k] = each.into_iter().next(),
                 Job::Member { population, .. } => {
@@ -321,6 +489,9 @@ impl Scenario {
             }
         }
         for (k, answers) in answers {
+            if !whole[k] {
+                continue;
+            }
             let task = tasks[k];
             let population = &self.populations[task.population.expect("a population task")];
             let name = task.subject_name(self);
@@ -328,9 +499,6 @@ impl Scenario {
             reports[k] = Some(TaskReport::Population(Box::new(report)));
         }
         reports
-            .into_iter()
-            .map(|r| r.expect("every task answered"))
-            .collect()
     }
 
     /// Whether `task` asks about one point (its progress then counts
@@ -427,14 +595,7 @@ impl Scenario {
             solves: solves.as_ref(),
             ..self.input(task, progress)
         };
-        let label = match task.kind.as_str() {
-            "reach_and_gaze" => "reach+gaze",
-            "reach" => "reach",
-            "gaze" => "gaze",
-            "map" => "map",
-            "gaze_map" => "gaze_map",
-            _ => "task",
-        };
+        let label = task_label(&task.kind);
         let (subject, person) = (input.subject.name(), &input.person.name);
         let (base, room) = (&input.person.base.name, &input.room.name);
         let fit = input.base.fit(input.room, &meter);

@@ -300,11 +300,12 @@ function expectationsSummary(data) {
   return `; expectations: ${met} met, ${all.length - met} NOT met`;
 }
 
-// A dot in the colour of a verdict: met or reached, or not.
-function verdictDot(ok) {
+// A dot in the colour of a verdict: met or reached, or not; grey where
+// nothing was looked for (the work limit stopped the run before it).
+function verdictDot(ok, notEvaluated = false) {
   const dot = document.createElement("span");
   dot.className = "dot";
-  dot.style.background = ok ? "#2e9e4f" : "#d64545";
+  dot.style.background = notEvaluated ? "#9a9a9a" : ok ? "#2e9e4f" : "#d64545";
   return dot;
 }
 
@@ -331,8 +332,10 @@ export function start(settings, data) {
   const simplified = data.rooms.flatMap((r) => r.meshes)
     .filter((m) => m.simplified_from)
     .map((m) => `; ${m.name} drawn with ${m.indices.length / 3} of its ${m.simplified_from} triangles (answers use them all)`);
+  const unrun = data.tasks.filter((t) => t.not_evaluated).length;
+  const unrunWords = unrun ? `, ${unrun} not evaluated (work limit)` : "";
   document.getElementById("summary").textContent =
-    `${data.tasks.length} tasks, ${ok} ok` + simplified.join("") + expectationsSummary(data);
+    `${data.tasks.length} tasks, ${ok} ok` + unrunWords + simplified.join("") + expectationsSummary(data);
   listExpectations(data.expectations);
 
   const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: selftest });
@@ -366,7 +369,7 @@ export function start(settings, data) {
   const buttons = data.tasks.map((t, k) => {
     const item = document.createElement("li");
     const button = document.createElement("button");
-    const dot = verdictDot(t.ok);
+    const dot = verdictDot(t.ok, t.not_evaluated);
     const verdict = document.createElement("span");
     verdict.className = "verdict";
     verdict.textContent = t.verdict;

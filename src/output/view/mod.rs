@@ -109,6 +109,10 @@ pub struct TaskView {
     pub label: String,
     pub room: usize,
     pub ok: bool,
+    /// Present and true where the run's work limit stopped it before this
+    /// task: nothing was looked for (drawn grey, not as a failure).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub not_evaluated: bool,
     pub verdict: String,
     /// The text report's lines for this task.
     pub details: String,
@@ -310,15 +314,16 @@ fn task_view(task: &TaskReport, place: &TaskPlace, scene: &FormatScene<'_>) -> T
     let answer = task.answer();
     let mut details = String::new();
     task.details(&mut details);
-    let label = match task {
+    let label = match answer.task {
         // `standard ada2010 in kitchen`
-        TaskReport::Standard(_) => format!("{} {} {}", answer.task, answer.subject, answer.person),
+        "standard" => format!("{} {} {}", answer.task, answer.subject, answer.person),
         _ => format!("{} {} by {}", answer.task, answer.subject, answer.person),
     };
     let mut view = TaskView {
         label,
         room: place.room,
         ok: answer.ok,
+        not_evaluated: matches!(task, TaskReport::NotEvaluated(_)),
         verdict: answer.verdict.clone(),
         details: details.trim().to_string(),
         solids: Vec::new(),
@@ -367,6 +372,8 @@ fn task_view(task: &TaskReport, place: &TaskPlace, scene: &FormatScene<'_>) -> T
         TaskReport::Map(m) => view.cells = Some(cells(m)),
         // No person is placed: the room and the words say it.
         TaskReport::NotPlaced(_) => {}
+        // Nothing was looked for: the words say so.
+        TaskReport::NotEvaluated(_) => {}
         // Many people: the words say the share, and a map's cells show
         // each point's.
         TaskReport::Population(p) => view.cells = share_cells(p),
