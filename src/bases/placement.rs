@@ -33,7 +33,8 @@ use super::placing::{Approach, Placing, SIDE_SLACK_MM};
 use super::search::{search, search_retrying_later, Candidate};
 use crate::allowance::{Allowance, Unbounded, Unmetered};
 use crate::floor::{
-    CutShort, Doorway, FloorObstacles, Footprint, Looked, Misfit, Region, Routes, Shut, Work,
+    CutShort, DoorRoutes, Doorway, FloorGroup, FloorObstacles, Footprint, Looked, Misfit, Region,
+    Shut, Work,
 };
 use crate::geometry::Solid;
 use crate::kept::{Memo, Table};
@@ -93,7 +94,7 @@ struct Floor {
     doors: Option<Vec<Doorway>>,
     /// The routes from the doors (none: the room has no door, or the base
     /// fits nowhere).
-    routes: Option<Arc<Routes>>,
+    routes: Option<Arc<DoorRoutes>>,
     /// Whether it fits somewhere, doors aside.
     fits: bool,
     /// What working it out cost, in units of the meter
@@ -140,6 +141,10 @@ pub struct Mobile {
     /// The capability maps of the chains it was last prepared for, while
     /// something else holds them ([`Mobile::capability_of`]).
     capabilities: Mutex<Vec<(Chain, Weak<Capability>)>>,
+    /// The bounds of the footprints of the group (a population) it is one
+    /// of, whose routes from the doors it shares
+    /// ([`Base::join_floor_group`]).
+    group: OnceLock<Arc<FloorGroup>>,
 }
 
 /// How many chains' maps a base remembers it was prepared for.
@@ -189,6 +194,7 @@ impl Mobile {
             floors: ByRoom::default(),
             misfits: ByRoom::default(),
             capabilities: Mutex::default(),
+            group: OnceLock::new(),
         }
     }
 
@@ -277,6 +283,9 @@ impl Mobile {
         let mut h = DefaultHasher::new();
         self.footprint.hash_with_floor(room, &mut h);
         hash_bits(&self.placing.headings, &mut h);
+        if let Some(group) = self.group.get() {
+            group.hash_into(&mut h);
+        }
         if let Some(zone) = &self.placing.zone {
             hash_bits(&[zone.min.0, zone.min.1, zone.max.0, zone.max.1], &mut h);
             if let Some(outline) = &zone.outline {
@@ -326,12 +335,13 @@ impl Mobile {
         let fits = any_fits(&regions, &mut work)?;
         let routes = if fits {
             let left = |units: u64| work.allows(units);
-            Routes::of(room, &self.footprint, headings, &left, &memo)
+            let group = self.group.get().map(Arc::as_ref);
+            DoorRoutes::of(room, &self.footprint, group, headings, &left, &memo)
                 .map_err(|cut| work.cut_short_with(cut.work))?
         } else {
             None
         };
-        let Some(routes) = routes else {
+        let Some((routes, routes_work)) = routes else {
             return Ok(Floor {
                 regions,
                 doors: None,
@@ -340,11 +350,15 @@ impl Mobile {
                 work: work.done,
             });
         };
-        work.add(routes.work)?;
+        work.add(routes_work)?;
+        let routes = Arc::new(routes);
         let reached = |k: usize, h: f64| {
             let obstacles = Arc::clone(&obstacles);
             let routes = Arc::clone(&routes);
             let region = Region::reached(room, &self.footprint, h, zone, obstacles, routes, &memo);
+            // The pieces the search for whether it fits at all looked at
+            // are those the routes cut: worked out once, charged once.
+            let region = region.paid_by(&regions[k].1.looked());
             hinted(region, found_there(hint, k))
         };
         let regions: Regions = (headings.iter().enumerate())
@@ -353,7 +367,7 @@ impl Mobile {
         any_fits(&regions, &mut work)?;
         Ok(Floor {
             regions,
-            doors: Some(routes.doors.clone()),
+            doors: Some(routes.doors().to_vec()),
             routes: Some(Arc::clone(&routes)),
             fits,
             work: work.done,
@@ -547,11 +561,15 @@ impl Base for Mobile {
         )))
     }
 
+    fn join_floor_group(&self, group: &Arc<FloorGroup>) {
+        let _ = self.group.set(Arc::clone(group));
+    }
+
     fn enclosing(&self, room: &Room, heading_rad: f64, hip_mm: (f64, f64)) -> Vec<usize> {
         // The routes the placement followed, with the room's floor.
         let cell = self.floor(room, &Unbounded);
         match cell.get().and_then(|floor| floor.routes.as_ref()) {
-            Some(routes) => routes.enclosing(room, &self.footprint, heading_rad, hip_mm),
+            Some(routes) => (routes.own()).enclosing(room, &self.footprint, heading_rad, hip_mm),
             None => Vec::new(),
         }
     }

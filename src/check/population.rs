@@ -126,6 +126,7 @@ impl<'a> Checker<'a> {
                 }
             }
             if persons.len() - start == plan.drawn.len() {
+                join_floor_group(&bases[start..]);
                 out.push(Population {
                     name: plan.name,
                     members: start..persons.len(),
@@ -679,3 +680,44 @@ fn categorised(categories: &[(String, f64)], size: usize, seed: u64) -> Vec<(usi
     }
     given
 }
+
+/// The members' bases (`members`) put in groups of about
+/// [`FLOOR_GROUP`] of the most alike footprints (by their length and
+/// width), each sharing the routes from a room's doors by its
+/// footprints' bounds, where they are alike enough to be bounded
+/// (`FloorGroup::of`). The tighter the bounds, the fewer places they
+/// leave to a member's own routes.
+fn join_floor_group(members: &[Arc<dyn Base>]) {
+    let Some(footprints) = members
+        .iter()
+        .map(|b| b.footprint())
+        .collect::<Option<Vec<&crate::floor::Footprint>>>()
+    else {
+        return;
+    };
+    let mut order: Vec<usize> = (0..members.len()).collect();
+    let size = |k: usize| footprints[k].size_mm();
+    order.sort_by(|&a, &b| {
+        let (sa, sb) = (size(a), size(b));
+        (sa[1].total_cmp(&sb[1]))
+            .then(sa[0].total_cmp(&sb[0]))
+            .then(a.cmp(&b))
+    });
+    let groups = order.len().div_ceil(FLOOR_GROUP).max(1);
+    for k in 0..groups {
+        // Even shares, in order of size.
+        let part = &order[k * order.len() / groups..(k + 1) * order.len() / groups];
+        let alike: Vec<&crate::floor::Footprint> = part.iter().map(|&i| footprints[i]).collect();
+        let Some(group) = crate::floor::FloorGroup::of(&alike) else {
+            continue;
+        };
+        let group = Arc::new(group);
+        for &i in part {
+            members[i].join_floor_group(&group);
+        }
+    }
+}
+
+/// About how many members share one group's bounds on their routes
+/// (`join_floor_group`).
+const FLOOR_GROUP: usize = 16;

@@ -235,7 +235,7 @@ fn circle(centre: Vector2<f64>, radius_mm: f64) -> Vec<Vector2<f64>> {
 }
 
 /// The convex hull of `points`, counter-clockwise (Andrew's monotone chain).
-fn convex_hull(points: impl IntoIterator<Item = Vector2<f64>>) -> Vec<Vector2<f64>> {
+pub(super) fn convex_hull(points: impl IntoIterator<Item = Vector2<f64>>) -> Vec<Vector2<f64>> {
     let mut p: Vec<Vector2<f64>> = points.into_iter().collect();
     p.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
     p.dedup();

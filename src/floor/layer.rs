@@ -212,7 +212,7 @@ impl Layer {
 }
 
 /// The rectangle two rectangles share, none if they share no area.
-fn overlap(a: Rect<f64>, b: Rect<f64>) -> Option<Rect<f64>> {
+pub(super) fn overlap(a: Rect<f64>, b: Rect<f64>) -> Option<Rect<f64>> {
     let lo = Coord {
         x: a.min().x.max(b.min().x),
         y: a.min().y.max(b.min().y),

@@ -7,6 +7,7 @@
 
 mod clear;
 mod footprint;
+mod group;
 mod inside;
 mod layer;
 mod mesh_cells;
@@ -14,6 +15,7 @@ mod misfit;
 mod obstacles;
 mod region;
 mod routes;
+mod shared_routes;
 mod tiles;
 mod work;
 
@@ -24,11 +26,13 @@ pub use clear::{
     disc_centre, door_clear_width, knee_limited, route_width, t_space, FreeFloor, RouteFloor,
 };
 pub use footprint::{FloorPart, Footprint};
+pub use group::{FloorGroup, GROUP_MARGIN_MM};
 pub use inside::Inside;
 pub use mesh_cells::{CELL_MM, FLOOR_TOLERANCE_MM};
 pub use misfit::Misfit;
 pub use obstacles::FloorObstacles;
 pub use region::{admissible, Zone};
 pub use routes::{Doorway, Entry, Routes, Shut};
+pub use shared_routes::DoorRoutes;
 pub use tiles::Region;
 pub use work::{unbounded, CutShort, Looked, Work};

@@ -51,10 +51,28 @@ const TURNED_MOST: usize = 4;
 const SAME_HEADING_RAD: f64 = 1e-9;
 /// How much wider the base is followed than it is: a way must be wider
 /// than the base by more than this.
-const HAIR_MM: f64 = 0.01;
+pub(super) const HAIR_MM: f64 = 0.01;
 /// Room to spare at the far end of a door's passage, beyond what holds
 /// the base.
 const SPARE_MM: f64 = 100.0;
+/// Two pieces of floor overlap where they share more than this area (a
+/// shared edge or corner, left by rounding, is none).
+pub(super) const OVERLAP_AREA_MM2: f64 = 1.0;
+
+/// How wide a base of `footprint` is across `door`'s opening, facing in.
+pub fn needs_mm(footprint: &Footprint, door: &Door) -> f64 {
+    let turned = Turned::new(footprint, door.inward_heading_rad());
+    let along = |c: &Coord<f64>| match door.wall {
+        Wall::XMin | Wall::XMax => c.y,
+        _ => c.x,
+    };
+    let (lo, hi) = (turned.parts.iter().flatten())
+        .map(along)
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
+    hi - lo
+}
 
 /// Where a base can get to in one room.
 pub struct Routes {
@@ -286,6 +304,31 @@ impl Routes {
             .min_by(|a, b| distance(a).total_cmp(&distance(b)))
     }
 
+    /// Whether a piece of the floor at `heading_rad` (one of the headings
+    /// followed) that the base can get to overlaps `piece` (by more than
+    /// a hair's area); none where that heading is not followed.
+    pub fn reaches_into(&self, heading_rad: f64, piece: &Polygon<f64>) -> Option<bool> {
+        use geo::{Area, BooleanOps, BoundingRect};
+        let layer = self.layer(heading_rad)?;
+        let bounds = piece.bounding_rect()?;
+        let overlaps = |n: usize, q: &Polygon<f64>| {
+            self.reached[n]
+                && q.bounding_rect().is_some_and(|b| {
+                    b.min().x <= bounds.max().x
+                        && bounds.min().x <= b.max().x
+                        && b.min().y <= bounds.max().y
+                        && bounds.min().y <= b.max().y
+                })
+                && q.intersection(piece).unsigned_area() > OVERLAP_AREA_MM2
+        };
+        Some(layer.pieces().any(|(n, q)| overlaps(n, q)))
+    }
+
+    /// Whether `heading_rad` is one of the headings followed.
+    pub fn follows(&self, heading_rad: f64) -> bool {
+        self.layer(heading_rad).is_some()
+    }
+
     fn layer(&self, heading_rad: f64) -> Option<&Layer> {
         let h = normalized(heading_rad);
         self.layers
@@ -298,16 +341,6 @@ impl Routes {
     /// only gets into the doorway; too narrow if it cannot stand in the
     /// passage at all.
     fn doorway(&self, room: &Room, door: &Door, footprint: &Footprint, ends: &[usize]) -> Doorway {
-        let turned = Turned::new(footprint, door.inward_heading_rad());
-        let along = |c: &Coord<f64>| match door.wall {
-            Wall::XMin | Wall::XMax => c.y,
-            _ => c.x,
-        };
-        let (lo, hi) = (turned.parts.iter().flatten())
-            .map(along)
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-                (a.min(v), b.max(v))
-            });
         let sets: Vec<usize> = ends.iter().map(|&n| self.sets[n]).collect();
         // Whether a piece joined to this door's ends lies in the room.
         let inside = self.layers.iter().any(|layer| {
@@ -318,7 +351,7 @@ impl Routes {
         Doorway {
             name: door.name.clone(),
             width_mm: door.width_mm,
-            needs_mm: hi - lo,
+            needs_mm: needs_mm(footprint, door),
             comes_in: if ends.is_empty() {
                 Entry::TooNarrow
             } else if inside {

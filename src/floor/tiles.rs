@@ -10,12 +10,14 @@ use std::cell::RefCell;
 use std::collections::HashSet;
 use std::sync::{Arc, OnceLock};
 
-use geo::{Closest, ClosestPoint, Coord, MultiPolygon, Point, Polygon, Rect};
+use geo::{Closest, ClosestPoint, Coord, MultiPolygon, Point, Rect};
 
+use super::layer::overlap;
 use super::obstacles::FloorObstacles;
 use super::region::{admissible_in, shrunk_room, Grown, Turned, Zone};
 use super::work::{unbounded, CutShort, Looked, Work};
-use super::{Footprint, Inside, Routes};
+use super::shared_routes::Around;
+use super::{DoorRoutes, Footprint, Inside};
 use crate::allowance::Allowance;
 use crate::kept::Memo;
 use crate::scene::Room;
@@ -45,7 +47,20 @@ struct Tile {
     /// The shapes working its piece out grows, and what each costs
     /// (`region::Piece`).
     shapes: Looked,
+    /// What finding which of its pieces the routes from the doors reach
+    /// cost beyond the floor's (`DoorRoutes::piece_reached`), and the key
+    /// a search is charged it by, once, whether or not the piece was
+    /// paid for.
+    reaching: (u64, u64),
+    /// What the member's own routes cost, where a piece here asked them
+    /// (0 where none did): charged once to a search, by [`OWN_ROUTES`],
+    /// however many tiles asked them.
+    own_routes: u64,
 }
+
+/// The key a search is charged a member's own routes by
+/// (`Tile::own_routes`): a search is one member's.
+const OWN_ROUTES: u64 = 0x6f77_6e5f_726f_7574;
 
 /// Whether a region is empty, and what finding out cost (every tile its
 /// search looked at, and those tiles' pieces).
@@ -73,7 +88,7 @@ pub struct Region {
     empty: OnceLock<Emptiness>,
     /// The routes from the room's doors and the heading they are followed
     /// at, where only what they reach is kept.
-    routes: Option<(Arc<Routes>, f64)>,
+    routes: Option<(Arc<DoorRoutes>, f64)>,
     /// Pieces paid for by the search of a room with more in it (this one
     /// is that with obstacles or doors taken away).
     paid: Looked,
@@ -82,21 +97,27 @@ pub struct Region {
 }
 
 /// The pieces of `region` a base facing `heading_rad` can get to by
-/// `routes` (a piece is reached whole or not at all: any point inside it
-/// tells).
+/// `routes` (a piece is reached whole or not at all), and the work of
+/// finding out beyond the floor's: the windows' about its pieces, and the
+/// member's own routes' where any piece asked them
+/// (`DoorRoutes::piece_reached`).
 fn reached_pieces(
     region: MultiPolygon<f64>,
-    routes: &Routes,
+    routes: &DoorRoutes,
     heading_rad: f64,
-) -> MultiPolygon<f64> {
-    use geo::InteriorPoint;
-    let reached = |piece: &Polygon<f64>| {
-        piece
-            .interior_point()
-            .and_then(|p| routes.reached_at(heading_rad, p.x(), p.y()))
-            .unwrap_or(false)
-    };
-    MultiPolygon::new(region.0.into_iter().filter(reached).collect())
+    around: &Around<'_>,
+) -> (MultiPolygon<f64>, u64, u64) {
+    let (mut windows, mut own) = (0u64, 0u64);
+    let mut kept = Vec::with_capacity(region.0.len());
+    for piece in region.0 {
+        let decided = routes.piece_reached(heading_rad, &piece, around);
+        windows = windows.saturating_add(decided.window_work);
+        own = own.max(decided.own_work);
+        if decided.reached {
+            kept.push(piece);
+        }
+    }
+    (MultiPolygon::new(kept), windows, own)
 }
 
 impl Region {
@@ -141,7 +162,7 @@ impl Region {
         heading_rad: f64,
         zone: Option<&Zone>,
         obstacles: Arc<FloorObstacles>,
-        routes: Arc<Routes>,
+        routes: Arc<DoorRoutes>,
         memo: &Arc<Memo>,
     ) -> Self {
         let region = Region::new(room, footprint, heading_rad, zone, obstacles, memo);
@@ -174,17 +195,36 @@ impl Region {
                 Some(zone) => zone.cut(piece),
                 None => piece,
             };
-            let inside = Inside::new(match &self.routes {
-                Some((routes, heading_rad)) => reached_pieces(piece, routes, *heading_rad),
-                None => piece,
-            });
+            // The floor of a footprint in a window about a piece, within
+            // the shrunk room, facing the way the region does.
+            let heading = self.routes.as_ref().map_or(0.0, |(_, h)| *h);
+            let around = |window: Rect<f64>, footprint: &Footprint| {
+                let within = overlap(window, self.free?)?;
+                let turned = Turned::new(footprint, heading);
+                let grown = Grown::default();
+                let found = admissible_in(within, &turned, &self.obstacles, &grown, &self.memo);
+                Some((found.free, found.work))
+            };
+            let (piece, windows, own_routes) = match &self.routes {
+                Some((routes, heading_rad)) => reached_pieces(piece, routes, *heading_rad, &around),
+                None => (piece, 0, 0),
+            };
+            let inside = Inside::new(piece);
             let corners = geo::CoordsIter::coords_count(inside.region()) as u64;
+            let reaching_key = {
+                use std::hash::{Hash, Hasher};
+                let mut h = std::collections::hash_map::DefaultHasher::new();
+                ("reaching", key, heading.to_bits(), i, j).hash(&mut h);
+                h.finish()
+            };
             Tile {
                 inside,
                 work,
                 key,
                 again: finding.saturating_add(corners),
                 shapes,
+                reaching: (reaching_key, windows),
+                own_routes,
             }
         })
     }
@@ -259,7 +299,17 @@ impl Region {
         }
         Region {
             empty,
-            paid,
+            paid: self.paid.with(&paid),
+            ..self
+        }
+    }
+
+    /// The region, its pieces of `paid` (looked at by the search of the
+    /// same floor before its pieces were cut to the routes from the doors:
+    /// the same pieces, worked out once) charged for looking at again.
+    pub fn paid_by(self, paid: &Looked) -> Self {
+        Region {
+            paid: self.paid.with(paid),
             ..self
         }
     }
@@ -397,6 +447,7 @@ impl Region {
                     self.work_out(&tiles[k..tiles.len().min(k + at_once)]);
                 }
                 let tile = self.tile(i, j);
+                let (reaching_key, reaching) = tile.reaching;
                 let units = match fresh {
                     Some(fresh) if !(fresh.piece)(tile.key) => tile.again,
                     Some(fresh) => (tile.shapes.iter())
@@ -404,6 +455,15 @@ impl Region {
                         .fold(tile.work, |sum, (_, units)| sum.saturating_add(units)),
                     None => tile.work,
                 };
+                let reaching = match fresh {
+                    Some(fresh) if reaching > 0 && !(fresh.shape)(reaching_key) => 0,
+                    _ => reaching,
+                };
+                let own_routes = match fresh {
+                    Some(fresh) if tile.own_routes > 0 && !(fresh.shape)(OWN_ROUTES) => 0,
+                    _ => tile.own_routes,
+                };
+                let units = units.saturating_add(reaching).saturating_add(own_routes);
                 work.add_piece(tile.key, units)?;
                 // A piece whose bounds are no nearer than the best cannot
                 // be nearer (nor, by a tie, replace it).

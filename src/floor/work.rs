@@ -104,6 +104,11 @@ impl Looked {
         all.settled()
     }
 
+    /// The pieces of both, each once.
+    pub fn with(&self, other: &Looked) -> Looked {
+        Looked::of(self.iter().chain(other.iter()))
+    }
+
     /// Whether piece `key` was looked at.
     pub fn contains(&self, key: u64) -> bool {
         self.0.binary_search_by_key(&key, |&(k, _)| k).is_ok()

@@ -1,0 +1,394 @@
+//! The routes from a room's doors as one member of a group asks them: its
+//! own (`Routes`), or its group's bounds (`group.rs`) worked out once for
+//! every member, its own only where they leave a piece of its floor
+//! undecided. A piece of the member's floor (at one heading, in one tile:
+//! a base there can drive anywhere in it) is reached where the outer
+//! bound reaches a point of it (the outer's way there is clear for the
+//! member), and not reached where the inner bound does not reach its
+//! point (no way is clear for the inner, so none for the member); else
+//! the member's own routes tell, worked out then, once, and their work is
+//! charged with the piece's. The answers are the member's own routes'
+//! (`tests/routes.rs` compares them).
+
+use std::sync::{Arc, OnceLock};
+
+use geo::{BoundingRect, Coord, MultiPolygon, Polygon, Rect};
+
+use super::group::FloorGroup;
+use super::routes::{needs_mm, Doorway, Entry, Routes, HAIR_MM, OVERLAP_AREA_MM2};
+use super::work::{unbounded, CutShort};
+use super::Footprint;
+use crate::kept::Memo;
+use crate::scene::Room;
+
+/// How far beyond a piece of floor the window its floor is followed in
+/// reaches (where the bounds leave it undecided): a pocket beside a
+/// counter's end or a post, cut off from the open floor by a tile's
+/// edge, runs on into it within a metre or so.
+const WINDOW_MM: f64 = 600.0;
+
+/// The floor in a window of a footprint, facing the way a piece asked
+/// about does, and its work (none where the window is outside the room).
+pub type Around<'a> = dyn Fn(Rect<f64>, &Footprint) -> Option<(MultiPolygon<f64>, u64)> + 'a;
+
+/// Whether two pieces of floor share more than a hair's area.
+fn overlaps(a: &Polygon<f64>, b: &Polygon<f64>) -> bool {
+    use geo::{Area, BooleanOps};
+    let (Some(ra), Some(rb)) = (a.bounding_rect(), b.bounding_rect()) else {
+        return false;
+    };
+    let apart = ra.max().x < rb.min().x
+        || rb.max().x < ra.min().x
+        || ra.max().y < rb.min().y
+        || rb.max().y < ra.min().y;
+    !apart && a.intersection(b).unsigned_area() > OVERLAP_AREA_MM2
+}
+
+/// The routes a base's floor is cut to.
+pub enum DoorRoutes {
+    /// Worked out for the base's own footprint.
+    Own(Arc<Routes>),
+    /// Bounded by its group's.
+    Shared(Arc<SharedRoutes>),
+}
+
+/// Whether a piece of floor is reached, and what finding out cost beyond
+/// the floor's.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Decided {
+    pub reached: bool,
+    /// The member's floor in a window about the piece.
+    pub window_work: u64,
+    /// The member's own routes, where they were asked (0 where not).
+    pub own_work: u64,
+}
+
+/// A member's routes bounded by its group's.
+pub struct SharedRoutes {
+    outer: Arc<Routes>,
+    inner: Arc<Routes>,
+    /// The room, its footprint and headings, for its own routes.
+    room: Room,
+    footprint: Footprint,
+    /// The footprint a hair wider, as routes follow it.
+    followed: Footprint,
+    headings: Vec<f64>,
+    memo: Arc<Memo>,
+    own: OnceLock<Arc<Routes>>,
+    doors: Vec<Doorway>,
+}
+
+impl DoorRoutes {
+    /// The routes of `footprint` (one of `group`'s members, where it has
+    /// one) in `room`, followed at `headings`; none where the room has no
+    /// door. The bounds are shared where the group has them, the room no
+    /// meshes (whose copy would cost as much as the routes) and the outer
+    /// bound comes in by every door (a member then does too); else the
+    /// footprint's own. Cut short as [`Routes::of`] is, the bounds
+    /// counted at the member's share of their work. The work to charge
+    /// the member comes with them.
+    pub fn of(
+        room: &Room,
+        footprint: &Footprint,
+        group: Option<&FloorGroup>,
+        headings: &[f64],
+        within: &(dyn Fn(u64) -> bool + Sync),
+        memo: &Arc<Memo>,
+    ) -> Result<Option<(DoorRoutes, u64)>, CutShort> {
+        let own = |within: &(dyn Fn(u64) -> bool + Sync)| {
+            let routes = Routes::of(room, footprint, headings, within, memo)?;
+            Ok(routes.map(|r| {
+                let work = r.work;
+                (DoorRoutes::Own(r), work)
+            }))
+        };
+        let Some(group) = group.filter(|_| room.meshes.is_empty()) else {
+            return own(within);
+        };
+        let n = group.members.max(1) as u64;
+        let share = |units: u64| units.div_ceil(n);
+        let shared = |units: u64| within(share(units));
+        let bound = |f: &Footprint| Routes::of(room, f, headings, &shared, memo);
+        let bounds = group.routes(group.routes_key(room, headings), || {
+            Ok::<_, CutShort>(bound(&group.outer)?.zip(bound(&group.inner)?))
+        })?;
+        let Some((outer, inner)) = bounds else {
+            return own(within);
+        };
+        let through = |d: &Doorway| d.comes_in == Entry::Through;
+        if !outer.doors.iter().all(through) {
+            return own(within);
+        }
+        let doors = (room.doors.iter().zip(&outer.doors))
+            .map(|(door, bound)| Doorway {
+                needs_mm: needs_mm(footprint, door),
+                ..bound.clone()
+            })
+            .collect();
+        let work = share(outer.work.saturating_add(inner.work));
+        let routes = SharedRoutes {
+            outer,
+            inner,
+            room: room.clone(),
+            footprint: footprint.clone(),
+            followed: footprint.grown(HAIR_MM),
+            headings: headings.to_vec(),
+            memo: Arc::clone(memo),
+            own: OnceLock::new(),
+            doors,
+        };
+        Ok(Some((DoorRoutes::Shared(Arc::new(routes)), work)))
+    }
+
+    /// Whether the base comes in through any door.
+    pub fn enters(&self) -> bool {
+        match self {
+            DoorRoutes::Own(r) => r.enters(),
+            // Through every door, as the outer bound.
+            DoorRoutes::Shared(s) => !s.doors.is_empty(),
+        }
+    }
+
+    /// How the base comes in, door by door.
+    pub fn doors(&self) -> &[Doorway] {
+        match self {
+            DoorRoutes::Own(r) => &r.doors,
+            DoorRoutes::Shared(s) => &s.doors,
+        }
+    }
+
+    /// Whether the base facing `heading_rad` can get to `piece` of its
+    /// floor, and the work of finding out beyond the floor's: that of the
+    /// floor in a window about the piece, and that of the member's own
+    /// routes where they were asked (worked out once, whoever asks). A
+    /// piece is reached whole or not at all: it is where it overlaps (by
+    /// more than a hair's area) floor the routes reach. (Asked at one
+    /// point inside it, the point might fall in a sliver a boolean
+    /// operation left, where the routes, followed a hair wider, have no
+    /// floor.) `around` gives the floor in a window of a footprint at that
+    /// heading, and its work (none where the window is outside the room).
+    pub fn piece_reached(&self, heading_rad: f64, piece: &Polygon<f64>, around: &Around<'_>) -> Decided {
+        match self {
+            DoorRoutes::Own(r) => Decided {
+                reached: r.reaches_into(heading_rad, piece) == Some(true),
+                ..Decided::default()
+            },
+            DoorRoutes::Shared(s) => s.piece_reached(heading_rad, piece, around),
+        }
+    }
+
+    /// The base's own routes (worked out now where they were not, and not
+    /// charged: for why a target is cut off, and for pictures).
+    pub fn own(&self) -> Arc<Routes> {
+        match self {
+            DoorRoutes::Own(r) => Arc::clone(r),
+            DoorRoutes::Shared(s) => Arc::clone(s.own()),
+        }
+    }
+}
+
+impl SharedRoutes {
+    /// [`DoorRoutes::piece_reached`]: by the bounds where they decide
+    /// (the outer's reached floor overlaps the piece: reached; the
+    /// inner's does not: not); else, where the piece runs on (facing the
+    /// same way, in a window about it, followed a hair wider as the
+    /// routes are) into floor the outer reaches, reached; else as its own
+    /// routes say.
+    fn piece_reached(&self, heading_rad: f64, piece: &Polygon<f64>, around: &Around<'_>) -> Decided {
+        let by_bounds = |reached| Decided {
+            reached,
+            ..Decided::default()
+        };
+        if !self.inner.follows(heading_rad) || !self.outer.follows(heading_rad) {
+            return self.own_reached(heading_rad, piece, 0);
+        }
+        if self.outer.reaches_into(heading_rad, piece) == Some(true) {
+            return by_bounds(true);
+        }
+        if self.inner.reaches_into(heading_rad, piece) != Some(true) {
+            return by_bounds(false);
+        }
+        let mut window_work = 0;
+        if let Some(bounds) = piece.bounding_rect() {
+            let window = Rect::new(
+                bounds.min() - Coord { x: WINDOW_MM, y: WINDOW_MM },
+                bounds.max() + Coord { x: WINDOW_MM, y: WINDOW_MM },
+            );
+            if let Some((free, units)) = around(window, &self.followed) {
+                window_work = units;
+                let runs_on = free.0.iter().any(|q| {
+                    overlaps(q, piece) && self.outer.reaches_into(heading_rad, q) == Some(true)
+                });
+                if runs_on {
+                    return Decided {
+                        reached: true,
+                        window_work,
+                        own_work: 0,
+                    };
+                }
+            }
+        }
+        self.own_reached(heading_rad, piece, window_work)
+    }
+
+    /// Whether the member's own routes reach into `piece` facing
+    /// `heading_rad`, with their work and the window's.
+    fn own_reached(&self, heading_rad: f64, piece: &Polygon<f64>, window_work: u64) -> Decided {
+        let own = self.own();
+        Decided {
+            reached: own.reaches_into(heading_rad, piece) == Some(true),
+            window_work,
+            own_work: own.work,
+        }
+    }
+
+    /// The member's own routes, worked out once.
+    fn own(&self) -> &Arc<Routes> {
+        self.own.get_or_init(|| {
+            let routes = Routes::of(&self.room, &self.footprint, &self.headings, &unbounded, &self.memo);
+            match routes {
+                Ok(Some(routes)) => routes,
+                _ => unreachable!("the room has doors, and routes allowed any work are not cut short"),
+            }
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::floor::{FloorGroup, FloorObstacles, FloorPart, Region};
+    use crate::scene::{BoxObstacle, Door, Wall};
+    use nalgebra::{Point3, Vector2, Vector3};
+    use proptest::prelude::*;
+    use std::f64::consts::FRAC_PI_2;
+
+    /// A rectangle from `x0` to `x1` ahead of the hip point, `width_mm`
+    /// wide.
+    fn rectangle(x0: f64, x1: f64, width_mm: f64) -> Vec<Vector2<f64>> {
+        let h = width_mm / 2.0;
+        [(x0, -h), (x1, -h), (x1, h), (x0, h)]
+            .map(|(x, y)| Vector2::new(x, y))
+            .to_vec()
+    }
+
+    /// A chair from the floor to its seat and the knees and feet ahead of
+    /// it at `knee_mm` and below.
+    fn chair(front_mm: f64, back_mm: f64, width_mm: f64, knee_mm: f64) -> Footprint {
+        Footprint {
+            parts: vec![
+                FloorPart {
+                    outline_mm: rectangle(-back_mm, 150.0, width_mm),
+                    z_mm: [0.0, 900.0],
+                },
+                FloorPart {
+                    outline_mm: rectangle(150.0, front_mm, width_mm * 0.7),
+                    z_mm: [60.0, knee_mm],
+                },
+            ],
+        }
+    }
+
+    /// A 4.5 x 4 m room with a door in its near wall and `boxes` (corner,
+    /// size and lowest and highest, each in mm).
+    fn room(door_x: f64, boxes: &[([f64; 2], [f64; 2], [f64; 2])]) -> Room {
+        Room {
+            name: "r".into(),
+            size_mm: Vector3::new(4500.0, 4000.0, 2500.0),
+            boxes: (boxes.iter().enumerate())
+                .map(|(k, (at, size, z))| BoxObstacle {
+                    name: format!("b{k}"),
+                    corner_mm: Point3::new(at[0], at[1], z[0]),
+                    size_mm: Vector3::new(size[0], size[1], z[1] - z[0]),
+                    yaw_rad: 0.0,
+                })
+                .collect(),
+            meshes: Vec::new(),
+            targets: Vec::new(),
+            surfaces: Vec::new(),
+            doors: vec![Door {
+                name: "d".into(),
+                wall: Wall::YMin,
+                along_mm: door_x,
+                width_mm: 1000.0,
+            }],
+        }
+    }
+
+    /// Each member's floor at four headings, cut to its routes: the same
+    /// from the group's bounds as from its own routes, piece for piece.
+    fn same_floor(room: &Room, members: &[Footprint]) -> Result<bool, TestCaseError> {
+        let refs: Vec<&Footprint> = members.iter().collect();
+        let group = FloorGroup::of(&refs).expect("alike chairs");
+        let headings = [0.0, FRAC_PI_2, 2.0 * FRAC_PI_2, 3.0 * FRAC_PI_2];
+        let memo = Arc::new(Memo::default());
+        let mut shared_any = false;
+        for f in members {
+            let of = |group| DoorRoutes::of(room, f, group, &headings, &unbounded, &memo);
+            let (own, _) = of(None).expect("unbounded").expect("a door");
+            let (shared, _) = of(Some(&group)).expect("unbounded").expect("a door");
+            shared_any |= matches!(shared, DoorRoutes::Shared(_));
+            prop_assert_eq!(own.doors(), shared.doors());
+            let (own, shared) = (Arc::new(own), Arc::new(shared));
+            let obstacles = Arc::new(FloorObstacles::new(room, f));
+            for h in headings {
+                let floor = |routes: &Arc<DoorRoutes>| {
+                    let (obstacles, routes) = (Arc::clone(&obstacles), Arc::clone(routes));
+                    Region::reached(room, f, h, None, obstacles, routes, &memo).whole()
+                };
+                prop_assert_eq!(floor(&own), floor(&shared), "heading {}", h.to_degrees());
+            }
+        }
+        Ok(shared_any)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+
+        /// Random rooms of counters (some with knee space under them) and
+        /// blocks, and four chairs of different sizes. (400 cases, counted
+        /// once: 5,358 pieces the bounds left undecided, 2,727 of them
+        /// decided in a window about them, 2,631 by the member's own
+        /// routes; every floor the same as from its own routes.)
+        #[test]
+        fn a_members_floor_from_the_groups_bounds_is_its_own(
+            door_x in 700.0..3800.0f64,
+            boxes in prop::collection::vec(
+                ((0.0..4000.0f64, 300.0..3600.0f64), (200.0..1500.0f64, 200.0..900.0f64), prop::bool::ANY),
+                2..7,
+            ),
+            sizes in prop::collection::vec((550.0..700.0f64, 350.0..550.0f64, 560.0..720.0f64, 450.0..650.0f64), 4),
+        ) {
+            let boxes: Vec<([f64; 2], [f64; 2], [f64; 2])> = boxes
+                .into_iter()
+                .map(|((x, y), (w, d), high)| {
+                    let z = if high { [700.0, 900.0] } else { [0.0, 1000.0] };
+                    ([x, y], [w, d], z)
+                })
+                .collect();
+            let members: Vec<Footprint> = sizes
+                .into_iter()
+                .map(|(front, back, width, knee)| chair(front, back, width, knee))
+                .collect();
+            same_floor(&room(door_x, &boxes), &members)?;
+        }
+    }
+
+    /// A room where the bounds decide nearly everything: an open floor with
+    /// a counter and a pocket beside a post that only the smaller chairs
+    /// fit in.
+    #[test]
+    fn the_bounds_are_used_where_the_outer_chair_comes_in() {
+        let boxes = [
+            ([0.0, 3400.0], [4500.0, 600.0], [0.0, 900.0]),
+            ([3000.0, 2000.0], [300.0, 300.0], [0.0, 1000.0]),
+        ];
+        let members = [
+            chair(600.0, 400.0, 600.0, 500.0),
+            chair(650.0, 450.0, 700.0, 600.0),
+            chair(620.0, 420.0, 640.0, 550.0),
+        ];
+        let shared = same_floor(&room(2000.0, &boxes), &members);
+        assert!(matches!(shared, Ok(true)), "{shared:?}");
+    }
+}
