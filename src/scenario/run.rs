@@ -360,26 +360,14 @@ impl Scenario {
     /// standards would take the run past its bound.
     pub fn report(
         &self,
-        mut tasks: Vec<TaskReport>,
+        tasks: Vec<TaskReport>,
         spent: u64,
         memo: &Arc<Memo>,
     ) -> Result<(Report, u64), Error> {
-        let all: Vec<&TaskSpec> = self.tasks.iter().collect();
-        let run = RunWork::keeping(self.work.limit, Arc::clone(memo));
-        run.charge(spent);
-        let standards = self.run_standards(&all, &tasks, &run);
-        if run.exceeded() {
-            return Err(self.work.exceeded());
+        match self.report_partly(tasks, spent, false, memo) {
+            (report, work, true) => Ok((report, work)),
+            _ => Err(self.work.exceeded()),
         }
-        tasks.extend(standards);
-        let report = Report {
-            schema: SCHEMA_VERSION,
-            file: self.file.clone(),
-            notes: self.notes(),
-            expectations: self.judge(&tasks),
-            tasks,
-        };
-        Ok((report, run.spent() - spent))
     }
 
     /// The report of a run of every task of the file (`tasks`, `spent`
