@@ -433,7 +433,10 @@ fn run(registry: &Registry, e: &Evaluate, shown: &Shown) -> i32 {
         Err(d) => return shown.diagnostics(&d),
     };
     let bar = crate::bar::Bar::new(!shown.quiet);
-    let ran = session.progress(&bar).run_partly(&scenario);
+    // Where the bound stops the run, the file checked afresh runs again
+    // one task at a time (Session::run_partly).
+    let again = || session.check(Input::Path(&e.file), registry).1.ok();
+    let ran = session.progress(&bar).run_partly(&scenario, &again);
     bar.clear();
     let (report, stopped) = (ran.report, ran.stopped);
     if let Some(dir) = &e.out {
@@ -474,6 +477,14 @@ fn run(registry: &Registry, e: &Evaluate, shown: &Shown) -> i32 {
         })
         .collect();
     if let Some(error) = stopped {
+        // The expectations of the tasks answered that are not met, as a
+        // whole run would give them (those of tasks not evaluated are not
+        // met either; the stop says why).
+        let missed = (report.expectations.iter())
+            .filter(|x| !x.met && !x.because.starts_with("not evaluated"));
+        for x in missed {
+            shown.finding(&x.finding());
+        }
         eprint!(
             "{}",
             Diagnostics::single(error)

@@ -206,9 +206,16 @@ impl<'a> Session<'a> {
     /// the file) whose work fits within the bound, each task after them
     /// reported not evaluated ([`report::NotEvaluatedReport`]), and
     /// [`Ran::stopped`] says where and why. The same answers on every run
-    /// and thread count.
-    pub fn run_partly(&self, scenario: &Scenario) -> Ran {
-        self.on_pool(|memo| run_partly_on_this_pool(scenario, self.progress, memo))
+    /// and thread count: where the bound stops the tasks run in parallel,
+    /// they are run again one at a time, in order, on `again`, the same
+    /// scenario checked afresh (nothing run on it yet); where that cannot
+    /// be had, no task is answered.
+    pub fn run_partly(
+        &self,
+        scenario: &Scenario,
+        again: &(dyn Fn() -> Option<Scenario> + Sync),
+    ) -> Ran {
+        self.on_pool(|memo| run_partly_on_this_pool(scenario, again, self.progress, memo))
     }
 
     /// `run` on the session's pool of threads (or rayon's global one),
@@ -258,13 +265,46 @@ fn run_on_this_pool(
 
 fn run_partly_on_this_pool(
     scenario: &Scenario,
+    again: &(dyn Fn() -> Option<Scenario> + Sync),
     progress: &dyn progress::Progress,
     memo: &Arc<kept::Memo>,
 ) -> Ran {
     let all: Vec<&scenario::TaskSpec> = scenario.tasks.iter().collect();
-    let (ran, stop) = scenario.run_tasks_partly(&all, progress, memo);
+    let (ran, stopped) = scenario.run_tasks_partly(&all, progress, memo);
+    if !stopped {
+        return partly_reported(scenario, ran, None, memo);
+    }
+    match again() {
+        Some(fresh) => {
+            let all: Vec<&scenario::TaskSpec> = fresh.tasks.iter().collect();
+            let (ran, stop) = fresh.run_tasks_in_order(&all, progress);
+            let stop = stop.or(Some(scenario::Stop {
+                at: all.len(),
+                left: 0,
+            }));
+            partly_reported(&fresh, ran, stop.filter(|s| s.at < all.len()), memo)
+        }
+        None => {
+            let none = all.iter().map(|_| None).collect();
+            let stop = scenario::Stop {
+                at: 0,
+                left: scenario.work.limit,
+            };
+            partly_reported(scenario, none, Some(stop), memo)
+        }
+    }
+}
+
+/// The report of `ran` (each task's answer, none where it was not
+/// evaluated), stopped at `stop` where the bound stopped it.
+fn partly_reported(
+    scenario: &Scenario,
+    ran: Vec<Option<scenario::Ran>>,
+    stop: Option<scenario::Stop>,
+    memo: &Arc<kept::Memo>,
+) -> Ran {
     let work: u64 = ran.iter().flatten().map(|r| r.work).sum();
-    let tasks = (ran.into_iter().zip(&all))
+    let tasks = (ran.into_iter().zip(&scenario.tasks))
         .map(|(ran, task)| ran.map_or_else(|| scenario.not_evaluated(task), |r| r.report))
         .collect();
     let (report, standards, checked) = scenario.report_partly(tasks, work, stop.is_some(), memo);

@@ -8,6 +8,7 @@ mod expect;
 mod run;
 
 pub use expect::{ExpectCheck, ExpectSpec};
+pub use run::{Ran, Stop};
 
 use std::fmt;
 use std::sync::Arc;

@@ -121,39 +121,45 @@ impl Scenario {
         self.run_jobs(tasks, progress, None, &run)
     }
 
-    /// Run `tasks` (in the order of the file) as far as the scenario's
-    /// bound allows: each task's answer for the longest leading run of
-    /// them whose work together fits within the bound, none for the rest,
-    /// and where the bound stopped them, the position of the first not
-    /// run with the work that was left for it. The same on every run and
-    /// thread count: the tasks run in parallel first, and where the bound
-    /// stops them, each of the leading run that the threads left
-    /// unfinished is run again on its own with what is left, in order (a
-    /// task's work does not depend on what ran beside it).
+    /// Run `tasks` in parallel within the scenario's bound: each task's
+    /// answer, or where the bound stopped the run, none for the tasks it
+    /// stopped (which those are depends on the threads), and whether it
+    /// stopped.
     pub fn run_tasks_partly(
         &self,
         tasks: &[&TaskSpec],
         progress: &dyn Progress,
         memo: &Arc<Memo>,
-    ) -> (Vec<Option<Ran>>, Option<Stop>) {
+    ) -> (Vec<Option<Ran>>, bool) {
         let run = RunWork::keeping(self.work.limit, Arc::clone(memo));
-        let mut ran = self.run_jobs_partly(tasks, progress, None, &run);
-        if !run.exceeded() && ran.iter().all(Option::is_some) {
-            return (ran, None);
-        }
+        let ran = self.run_jobs_partly(tasks, progress, None, &run);
+        let stopped = run.exceeded() || ran.iter().any(Option::is_none);
+        (ran, stopped)
+    }
+
+    /// Run `tasks` (in the order of the file) one at a time, each alone
+    /// with what the bound has left, until one does not fit: the answers
+    /// of the leading run of tasks whose work together fits within the
+    /// bound, none for the rest, and where the bound stopped them, the
+    /// position of the first not run with the work that was left for it.
+    /// On a scenario nothing has run on yet, the same on every run and
+    /// thread count: side by side, what a task is charged depends on which
+    /// task worked out a value they share first (the floor of a room
+    /// without an obstacle, for two tasks finding why); alone, in order
+    /// from the start, it does not.
+    pub fn run_tasks_in_order(
+        &self,
+        tasks: &[&TaskSpec],
+        progress: &dyn Progress,
+    ) -> (Vec<Option<Ran>>, Option<Stop>) {
+        let memo = Arc::new(Memo::default());
+        let mut ran: Vec<Option<Ran>> = (0..tasks.len()).map(|_| None).collect();
         let mut spent = 0u64;
         for k in 0..tasks.len() {
             let left = self.work.limit.saturating_sub(spent);
-            let whole = match ran[k].take() {
-                Some(done) => (done.work <= left).then_some(done),
-                None => {
-                    let alone = RunWork::keeping(left, Arc::clone(memo));
-                    let mut one = self.run_jobs_partly(&tasks[k..=k], progress, None, &alone);
-                    one.pop().flatten().filter(|_| !alone.exceeded())
-                }
-            };
-            let Some(done) = whole else {
-                ran[k..].iter_mut().for_each(|r| *r = None);
+            let alone = RunWork::keeping(left, Arc::clone(&memo));
+            let mut one = self.run_jobs_partly(&tasks[k..=k], progress, None, &alone);
+            let Some(done) = one.pop().flatten().filter(|_| !alone.exceeded()) else {
                 return (ran, Some(Stop { at: k, left }));
             };
             spent += done.work;

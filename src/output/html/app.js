@@ -426,7 +426,8 @@ export function start(settings, data) {
     const room = rooms[task.room];
     const subject = task.label.split(" ")[1];
     const target = room.targets.get(subject);
-    if (target) target.material.color.setHex(task.ok ? COLOURS.ok : COLOURS.not);
+    // A task not evaluated leaves its target as it is: nothing was found.
+    if (target && !task.not_evaluated) target.material.color.setHex(task.ok ? COLOURS.ok : COLOURS.not);
     const blocker = task.blocked_by && room.obstacles.get(task.blocked_by);
     if (blocker) blocker.material.emissive.setHex(COLOURS.blocked);
     buttons.forEach((b, i) => b.classList.toggle("selected", i === k));
