@@ -166,14 +166,6 @@ impl Layer {
         piece_near(&self.tiles[t], p, NEAR_MM).map(|k| self.starts[t] + k)
     }
 
-    /// The number of a piece holding `p` strictly inside it.
-    pub fn piece_holding(&self, grid: &Tiling, p: Point<f64>) -> Option<usize> {
-        self.within?;
-        let t = grid.of(p);
-        let k = self.tiles[t].iter().position(|q| q.contains(&p))?;
-        Some(self.starts[t] + k)
-    }
-
     /// The pairs of pieces of neighbouring tiles that overlap: the same
     /// piece of the region, cut by the tiles' edge.
     pub fn seams(&self, grid: &Tiling) -> Vec<(usize, usize)> {

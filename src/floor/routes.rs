@@ -305,20 +305,11 @@ impl Routes {
     }
 
     /// Whether a piece of the floor at `heading_rad` (one of the headings
-    /// followed) that the base can get to holds a point strictly inside
-    /// `piece` (its interior point), or else overlaps it by more than a
-    /// hair's area; none where that heading is not followed.
+    /// followed) that the base can get to overlaps `piece` (by more than
+    /// a hair's area); none where that heading is not followed.
     pub fn reaches_into(&self, heading_rad: f64, piece: &Polygon<f64>) -> Option<bool> {
-        use geo::{Area, BooleanOps, BoundingRect, Contains, InteriorPoint};
+        use geo::{Area, BooleanOps, BoundingRect};
         let layer = self.layer(heading_rad)?;
-        // Most pieces tell at a point deep inside them: it is strictly
-        // inside a piece the base can get to (and then so is a disc about
-        // it, of both).
-        let inside = piece.interior_point().filter(|p| piece.contains(p));
-        let holding = inside.and_then(|p| layer.piece_holding(&self.grid, p));
-        if holding.is_some_and(|n| self.reached[n]) {
-            return Some(true);
-        }
         let bounds = piece.bounding_rect()?;
         let overlaps = |n: usize, q: &Polygon<f64>| {
             self.reached[n]
