@@ -160,6 +160,8 @@ pub enum ErrorKind {
         /// The work that was left for the first task not evaluated (it
         /// alone needs more).
         left: u64,
+        /// That task, in words: `mug_shelf by ann`.
+        first: String,
     },
     #[error(
         "`limits` raises {name} to {}, above the {} this run lets a file raise it to",
@@ -332,8 +334,8 @@ impl ErrorKind {
                 format!("these tasks: up to {} starts", thousands(*decl_starts))
             }
             TooMuchWork { .. } => "the tasks that may ask the most".into(),
-            StoppedPartway { left, .. } => format!(
-                "not evaluated: this task alone needs more than the {} units left",
+            StoppedPartway { left, first, .. } => format!(
+                "not evaluated from `{first}` on: it alone needs more than the {} units left",
                 thousands(*left)
             ),
             AboveCeiling { .. } => "above the ceiling".into(),

@@ -59,11 +59,7 @@ impl ReportKind for NotEvaluatedReport {
 
     fn details(&self, out: &mut String) {
         let answer = self.answer();
-        let _ = writeln!(
-            out,
-            "{}: not evaluated: the run's work limit stopped it before this task (raise it with `limits {{ solver_work N }}` in the file or --max-solver-work)",
-            answer.label()
-        );
+        let _ = writeln!(out, "\n{}: not evaluated (work limit)", answer.label());
     }
 }
 

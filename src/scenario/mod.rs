@@ -53,14 +53,16 @@ pub struct WorkBound {
 
 impl WorkBound {
     /// The error of a run the bound stopped partway (`answered` of
-    /// `tasks` answered), at `span` (the first task not evaluated) with
-    /// `left` units left for it.
-    pub fn stopped(&self, span: Option<Span>, answered: usize, tasks: usize, left: u64) -> Error {
+    /// `tasks` answered), `at` the first task not evaluated (its
+    /// declaration, and it in words) with `left` units left for it.
+    pub fn stopped(&self, at: (Option<Span>, String), answered: usize, tasks: usize, left: u64) -> Error {
+        let (span, first) = at;
         let kind = ErrorKind::StoppedPartway {
             limit: self.limit,
             answered,
             tasks,
             left,
+            first,
         };
         match span {
             Some(span) => Error::new(kind, span),

@@ -172,17 +172,26 @@ impl Scenario {
     /// stopped at `stop`.
     pub fn stopped_at(&self, stop: Stop) -> Error {
         let all = self.tasks.len() + self.standards.len();
-        let span = self.tasks.get(stop.at).map(|t| t.span);
-        self.work.stopped(span, stop.at, all, stop.left)
+        let Some(task) = self.tasks.get(stop.at) else {
+            return self.stopped_at_standards(self.work.limit.saturating_sub(stop.left));
+        };
+        let first = self.not_evaluated(task).answer().label();
+        self.work.stopped((Some(task.span), first), stop.at, all, stop.left)
     }
 
     /// The error of a run of every task of the file (`spent` units of
     /// work) that the bound stopped at its standards.
     pub fn stopped_at_standards(&self, spent: u64) -> Error {
         let all = self.tasks.len() + self.standards.len();
-        let span = self.standards.first().map(|s| s.span);
+        let first = self.standards.first();
+        let at = (
+            first.map(|s| s.span),
+            first.map_or_else(String::new, |s| {
+                format!("{} in {}", s.name, self.rooms[s.room].name)
+            }),
+        );
         let left = self.work.limit.saturating_sub(spent);
-        self.work.stopped(span, self.tasks.len(), all, left)
+        self.work.stopped(at, self.tasks.len(), all, left)
     }
 
     /// The entry of `task`, which the bound stopped the run before.
