@@ -278,11 +278,7 @@ fn run_partly_on_this_pool(
         Some(fresh) => {
             let all: Vec<&scenario::TaskSpec> = fresh.tasks.iter().collect();
             let (ran, stop) = fresh.run_tasks_in_order(&all, progress);
-            let stop = stop.or(Some(scenario::Stop {
-                at: all.len(),
-                left: 0,
-            }));
-            partly_reported(&fresh, ran, stop.filter(|s| s.at < all.len()), memo)
+            partly_reported(&fresh, ran, stop, memo)
         }
         None => {
             let none = all.iter().map(|_| None).collect();

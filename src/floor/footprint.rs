@@ -55,6 +55,11 @@ impl Footprint {
     /// it fits depends on (for what is kept across runs, `crate::kept`).
     pub fn hash_with_floor(&self, room: &Room, h: &mut impl std::hash::Hasher) {
         room.hash_floor(&self.bands_mm(), h);
+        self.hash_parts(h);
+    }
+
+    /// Its parts' outlines and heights, hashed bit for bit.
+    pub fn hash_parts(&self, h: &mut impl std::hash::Hasher) {
         for part in &self.parts {
             part.outline_mm.iter().for_each(|p| hash_bits(p.iter(), h));
             hash_bits(&part.z_mm, h);

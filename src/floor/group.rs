@@ -113,10 +113,7 @@ impl FloorGroup {
     pub fn hash_into(&self, h: &mut impl std::hash::Hasher) {
         use std::hash::Hash;
         for f in [&self.outer, &self.inner] {
-            for part in &f.parts {
-                hash_bits(part.outline_mm.iter().flat_map(|p| p.iter()), h);
-                hash_bits(&part.z_mm, h);
-            }
+            f.hash_parts(h);
             f.parts.len().hash(h);
         }
         self.members.hash(h);

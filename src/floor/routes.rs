@@ -30,7 +30,7 @@ use geo::{ConvexHull, Distance, Euclidean, InteriorPoint, Intersects, LineString
 use geo::{Coord, Point, Polygon, Rect};
 use nalgebra::{Point3, Vector3};
 
-use super::layer::{Layer, Tiling};
+use super::layer::{overlap, Layer, Tiling};
 use super::obstacles::{box_outline, FloorObstacles};
 use super::region::{shrunk, shrunk_room, Turned};
 use super::work::{unbounded, CutShort, Work};
@@ -57,7 +57,17 @@ pub(super) const HAIR_MM: f64 = 0.01;
 const SPARE_MM: f64 = 100.0;
 /// Two pieces of floor overlap where they share more than this area (a
 /// shared edge or corner, left by rounding, is none).
-pub(super) const OVERLAP_AREA_MM2: f64 = 1.0;
+const OVERLAP_AREA_MM2: f64 = 1.0;
+
+/// Whether two pieces of floor share more than a hair's area
+/// ([`OVERLAP_AREA_MM2`]).
+pub(super) fn pieces_overlap(a: &Polygon<f64>, b: &Polygon<f64>) -> bool {
+    use geo::{Area, BooleanOps, BoundingRect};
+    let (Some(ra), Some(rb)) = (a.bounding_rect(), b.bounding_rect()) else {
+        return false;
+    };
+    overlap(ra, rb).is_some() && a.intersection(b).unsigned_area() > OVERLAP_AREA_MM2
+}
 
 /// How wide a base of `footprint` is across `door`'s opening, facing in.
 pub fn needs_mm(footprint: &Footprint, door: &Door) -> f64 {
@@ -308,20 +318,11 @@ impl Routes {
     /// followed) that the base can get to overlaps `piece` (by more than
     /// a hair's area); none where that heading is not followed.
     pub fn reaches_into(&self, heading_rad: f64, piece: &Polygon<f64>) -> Option<bool> {
-        use geo::{Area, BooleanOps, BoundingRect};
         let layer = self.layer(heading_rad)?;
-        let bounds = piece.bounding_rect()?;
-        let overlaps = |n: usize, q: &Polygon<f64>| {
-            self.reached[n]
-                && q.bounding_rect().is_some_and(|b| {
-                    b.min().x <= bounds.max().x
-                        && bounds.min().x <= b.max().x
-                        && b.min().y <= bounds.max().y
-                        && bounds.min().y <= b.max().y
-                })
-                && q.intersection(piece).unsigned_area() > OVERLAP_AREA_MM2
-        };
-        Some(layer.pieces().any(|(n, q)| overlaps(n, q)))
+        Some(
+            (layer.pieces())
+                .any(|(n, q)| self.reached[n] && pieces_overlap(q, piece)),
+        )
     }
 
     /// Whether `heading_rad` is one of the headings followed.

@@ -2,20 +2,22 @@
 //! own (`Routes`), or its group's bounds (`group.rs`) worked out once for
 //! every member, its own only where they leave a piece of its floor
 //! undecided. A piece of the member's floor (at one heading, in one tile:
-//! a base there can drive anywhere in it) is reached where the outer
-//! bound reaches a point of it (the outer's way there is clear for the
-//! member), and not reached where the inner bound does not reach its
-//! point (no way is clear for the inner, so none for the member); else
-//! the member's own routes tell, worked out then, once, and their work is
-//! charged with the piece's. The answers are the member's own routes'
-//! (`tests/routes.rs` compares them).
+//! a base there can drive anywhere in it) is reached where it overlaps
+//! floor the outer bound reaches (the outer's way there is clear for the
+//! member), and not reached where it overlaps none the inner bound reaches
+//! (no way is clear for the inner, so none for the member); else, where
+//! the piece runs on, in a window about it, into floor the outer reaches,
+//! reached; else the member's own routes tell, worked out then, once.
+//! What the window and the member's own routes cost is charged with the
+//! tile. The answers are the member's own routes' (this file's property
+//! test compares them).
 
 use std::sync::{Arc, OnceLock};
 
 use geo::{BoundingRect, Coord, MultiPolygon, Polygon, Rect};
 
 use super::group::FloorGroup;
-use super::routes::{needs_mm, Doorway, Entry, Routes, HAIR_MM, OVERLAP_AREA_MM2};
+use super::routes::{needs_mm, pieces_overlap, Doorway, Entry, Routes, HAIR_MM};
 use super::work::{unbounded, CutShort};
 use super::Footprint;
 use crate::kept::Memo;
@@ -30,19 +32,6 @@ const WINDOW_MM: f64 = 600.0;
 /// The floor in a window of a footprint, facing the way a piece asked
 /// about does, and its work (none where the window is outside the room).
 pub type Around<'a> = dyn Fn(Rect<f64>, &Footprint) -> Option<(MultiPolygon<f64>, u64)> + 'a;
-
-/// Whether two pieces of floor share more than a hair's area.
-fn overlaps(a: &Polygon<f64>, b: &Polygon<f64>) -> bool {
-    use geo::{Area, BooleanOps};
-    let (Some(ra), Some(rb)) = (a.bounding_rect(), b.bounding_rect()) else {
-        return false;
-    };
-    let apart = ra.max().x < rb.min().x
-        || rb.max().x < ra.min().x
-        || ra.max().y < rb.min().y
-        || rb.max().y < ra.min().y;
-    !apart && a.intersection(b).unsigned_area() > OVERLAP_AREA_MM2
-}
 
 /// The routes a base's floor is cut to.
 pub enum DoorRoutes {
@@ -217,7 +206,7 @@ impl SharedRoutes {
             if let Some((free, units)) = around(window, &self.followed) {
                 window_work = units;
                 let runs_on = free.0.iter().any(|q| {
-                    overlaps(q, piece) && self.outer.reaches_into(heading_rad, q) == Some(true)
+                    pieces_overlap(q, piece) && self.outer.reaches_into(heading_rad, q) == Some(true)
                 });
                 if runs_on {
                     return Decided {

@@ -297,11 +297,7 @@ impl Region {
                 looked: Looked::default(),
             });
         }
-        Region {
-            empty,
-            paid: self.paid.with(&paid),
-            ..self
-        }
+        Region { empty, ..self }.paid_by(&paid)
     }
 
     /// The region, its pieces of `paid` (looked at by the search of the

@@ -9,7 +9,7 @@ use std::sync::Arc;
 
 use rayon::prelude::*;
 
-use super::{Scenario, TaskSpec};
+use super::{Scenario, StandardSpec, TaskSpec};
 use crate::collision::{Touched, TouchedSet};
 use crate::engine::{Earlier, KeptSolves, SolveMap};
 use crate::error::Error;
@@ -187,11 +187,18 @@ impl Scenario {
         let at = (
             first.map(|s| s.span),
             first.map_or_else(String::new, |s| {
-                format!("{} in {}", s.name, self.rooms[s.room].name)
+                TaskReport::NotEvaluated(self.standard_not_evaluated(s)).answer().label()
             }),
         );
         let left = self.work.limit.saturating_sub(spent);
         self.work.stopped(at, self.tasks.len(), all, left)
+    }
+
+    /// The entry of the standard `spec`, which the bound stopped the run
+    /// before.
+    fn standard_not_evaluated(&self, spec: &StandardSpec) -> NotEvaluatedReport {
+        let room = format!("in {}", self.rooms[spec.room].name);
+        NotEvaluatedReport::new("standard", &spec.name, &room)
     }
 
     /// The entry of `task`, which the bound stopped the run before.
@@ -409,10 +416,7 @@ impl Scenario {
         let checked = !stopped && !run.exceeded();
         if !checked {
             standards = (self.standards.iter())
-                .map(|spec| {
-                    let room = format!("in {}", self.rooms[spec.room].name);
-                    TaskReport::NotEvaluated(NotEvaluatedReport::new("standard", &spec.name, &room))
-                })
+                .map(|spec| TaskReport::NotEvaluated(self.standard_not_evaluated(spec)))
                 .collect();
         }
         tasks.extend(standards);
