@@ -3,7 +3,8 @@
 //! the wall time, and the work per millisecond. The bound on solver work
 //! (`--max-solver-work`) is chosen from the slowest rate this prints, so
 //! that what the default admits finishes in about 10 s on this machine
-//! (docs/benchmarks.md, "Solver work").
+//! (docs/benchmarks.md, "Solver work"). Beside it, what `reach check
+//! --estimate` says the run needs, and how long the estimate took.
 //!
 //! `cargo run --release --example bench_work -- [FILE.reach ...]`
 
@@ -32,16 +33,25 @@ fn main() {
         solver_work: CEILINGS.solver_work,
         ..Limits::default()
     };
-    println!("| scenario | work (units) | seconds | units per ms |");
-    println!("|---|---|---|---|");
+    println!("| scenario | work (units) | seconds | units per ms | estimated (95 %) | estimate's seconds |");
+    println!("|---|---|---|---|---|---|");
     for file in files {
-        let (_, checked) = reach::Session::default()
-            .limits(limits)
-            .check(Input::Path(&file), &registry);
-        let Ok(scenario) = checked else {
-            println!("| {} | does not check | | |", file.display());
+        let check = || {
+            let (_, checked) = reach::Session::default()
+                .limits(limits)
+                .check(Input::Path(&file), &registry);
+            checked.ok()
+        };
+        let Some(scenario) = check() else {
+            println!("| {} | does not check | | | | |", file.display());
             continue;
         };
+        // On a scenario of its own: a base keeps what it works out.
+        let started = Instant::now();
+        let estimated =
+            check().map(|s| s.estimate_work(&reach::progress::NoProgress, CEILINGS.solver_work));
+        let estimate_seconds = started.elapsed().as_secs_f64();
+        let (units, half) = estimated.map(|e| e.total()).unwrap_or_default();
         let started = Instant::now();
         let ran = reach::Session::default()
             .run(&scenario)
@@ -49,7 +59,7 @@ fn main() {
         let seconds = started.elapsed().as_secs_f64();
         let work = ran.map(|(_, w)| w).unwrap_or_default();
         println!(
-            "| {} | {work} | {seconds:.3} | {:.0} |",
+            "| {} | {work} | {seconds:.3} | {:.0} | {units} ± {half} | {estimate_seconds:.3} |",
             file.display(),
             work as f64 / (seconds * 1000.0)
         );

@@ -85,6 +85,13 @@ enum Command {
     Check {
         /// The .reach scenario file.
         file: PathBuf,
+        /// Also estimate the work a run will need, task by task, against
+        /// the bound on solver work: runs every task by one person and a
+        /// sample of each population's people (the square root of its
+        /// size, at least 8), within the most a file may raise the bound to
+        /// (--max-solver-work times --max-limits-raise)
+        #[arg(long)]
+        estimate: bool,
         #[command(flatten)]
         limits: LimitArgs,
         #[command(flatten)]
@@ -274,9 +281,16 @@ pub fn main() -> i32 {
         }
         Command::Check {
             file,
+            estimate,
             limits,
             reporting,
-        } => check(&registry, &limits, &file, &Shown::new(&reporting, colour)),
+        } => check(
+            &registry,
+            &limits,
+            &file,
+            estimate,
+            &Shown::new(&reporting, colour),
+        ),
         Command::Test {
             paths,
             update,
@@ -562,24 +576,36 @@ fn format_names(registry: &Registry, prints: bool) -> String {
         .join(", ")
 }
 
-fn check(registry: &Registry, args: &LimitArgs, file: &Path, shown: &Shown) -> i32 {
+fn check(registry: &Registry, args: &LimitArgs, file: &Path, estimate: bool, shown: &Shown) -> i32 {
     let limits = args.limits();
     let session = reach::Session::default()
         .limits(limits)
         .allowing(&args.allow_path);
     let (_, checked) = session.check(Input::Path(file), registry);
-    match checked {
-        Ok(_) if shown.quiet => 0,
-        Ok(s) => {
-            let name = file.display().to_string();
-            // What a run answers: each task's, then each standard's.
-            let answers = s.tasks.len() + s.standards.len();
-            let noun = if answers == 1 { "task" } else { "tasks" };
-            println!("{}: ok ({answers} {noun})", escaped(&name));
-            0
-        }
-        Err(d) => shown.diagnostics(&d),
+    let scenario = match checked {
+        Ok(s) => s,
+        Err(d) => return shown.diagnostics(&d),
+    };
+    if !shown.quiet {
+        let name = file.display().to_string();
+        // What a run answers: each task's, then each standard's.
+        let answers = scenario.tasks.len() + scenario.standards.len();
+        let noun = if answers == 1 { "task" } else { "tasks" };
+        println!("{}: ok ({answers} {noun})", escaped(&name));
     }
+    if estimate {
+        let bar = crate::bar::Bar::new(!shown.quiet);
+        // The most a file may raise its bound to: the estimate of a file
+        // beyond its bound says by how much.
+        let file_ceiling =
+            (limits.solver_work.saturating_mul(limits.raise)).max(scenario.work.limit);
+        let estimated = scenario.estimate_work(&bar, file_ceiling);
+        bar.clear();
+        for line in estimated.text(scenario.work.limit, file_ceiling).lines() {
+            println!("{}", escaped(line));
+        }
+    }
+    0
 }
 
 fn plugins_listing(registry: &Registry) -> String {

@@ -436,10 +436,10 @@ impl ErrorKind {
                 "ask less (a coarser `step`, fewer `starts`, `headings` or `blocked_retries`), or raise the bound: `limits { solver_starts N }` in the file (up to --max-limits-raise times the command line's), or --max-solver-starts".into(),
             ),
             TooMuchWork { .. } => Some(
-                "ask less (a coarser `step`; fewer `starts`, `blocked_retries` or iterations: `max_iterations`, `sweeps`, `samples`, `kicks`; in a room with doors, whose routes count too, or one so crowded that the base fits only far from where it is asked to, whose floor counts too: fewer people or `headings`), or raise the bound: `limits { solver_work N }` in the file (up to --max-limits-raise times the command line's), or --max-solver-work; no answer of this run is shown, since some were cut short".into(),
+                "ask less (a coarser `step`; fewer `starts`, `blocked_retries` or iterations: `max_iterations`, `sweeps`, `samples`, `kicks`; in a room with doors, whose routes count too, or one so crowded that the base fits only far from where it is asked to, whose floor counts too: fewer people or `headings`), or raise the bound: `limits { solver_work N }` in the file (up to --max-limits-raise times the command line's), or --max-solver-work (`reach check --estimate` says how much each task needs); no answer of this run is shown, since some were cut short".into(),
             ),
             StoppedPartway { .. } => Some(
-                "the answers before this task are shown; for the rest, ask less (a coarser `step`; fewer people, `starts`, `blocked_retries` or `headings`) or raise the bound: `limits { solver_work N }` in the file (up to --max-limits-raise times the command line's), or --max-solver-work".into(),
+                "the answers before this task are shown; for the rest, ask less (a coarser `step`; fewer people, `starts`, `blocked_retries` or `headings`) or raise the bound: `limits { solver_work N }` in the file (up to --max-limits-raise times the command line's), or --max-solver-work (`reach check --estimate` says how much each task needs)".into(),
             ),
             BaseOutsideRoom { .. } => Some("a fixed base must stand inside the room (check its `at`), and a moving base's zone must meet its floor (check `zone`, or `zone_from` and `zone_to`)".into()),
             AboveCeiling { asked, flag, .. } => Some(format!(

@@ -14,6 +14,7 @@ mod docs_picture;
 mod docs_tables;
 mod ecosystem;
 mod edges;
+mod estimate;
 mod facing;
 mod gaze;
 mod golden;

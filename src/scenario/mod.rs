@@ -4,10 +4,12 @@
 //! run looks no name up. Spans remain only where a run may still need to
 //! point back at the text.
 
+mod estimate;
 mod expect;
 mod run;
 
 pub use expect::{ExpectCheck, ExpectSpec};
+pub use estimate::{sample_size, TaskWork, WorkEstimate};
 pub use run::{Ran, Stop};
 
 use std::fmt;

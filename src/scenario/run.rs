@@ -55,7 +55,7 @@ fn task_label(kind: &str) -> &'static str {
 /// That a task's run records what it touched (watch mode), with the
 /// solves of its last run that it may take.
 #[derive(Clone, Copy)]
-struct Recording<'e> {
+pub(super) struct Recording<'e> {
     earlier: Option<&'e Earlier>,
 }
 
@@ -72,13 +72,13 @@ enum Job {
 
 /// Which tasks are charged their person's floor and their base's getting
 /// ready ([`Scenario::floor_charges`]).
-struct FloorCharges {
+pub(super) struct FloorCharges {
     first: HashMap<usize, Charges>,
 }
 
 /// What a task is charged besides its own work.
 #[derive(Clone, Copy)]
-struct Charges {
+pub(super) struct Charges {
     /// Its person's floor in its room ([`Base::floor_work`]).
     floor: bool,
     /// Its base's getting ready for its effectors ([`Base::prepare_work`]).
@@ -87,7 +87,7 @@ struct Charges {
 
 impl FloorCharges {
     /// What `task` is charged (a task not of the scenario: everything).
-    fn of(&self, task: &TaskSpec) -> Charges {
+    pub(super) fn of(&self, task: &TaskSpec) -> Charges {
         let address = std::ptr::from_ref(task) as usize;
         (self.first.get(&address).copied()).unwrap_or(Charges {
             floor: true,
@@ -203,12 +203,22 @@ impl Scenario {
 
     /// The entry of `task`, which the bound stopped the run before.
     pub fn not_evaluated(&self, task: &TaskSpec) -> TaskReport {
-        let who = match task.population {
+        let label = task_label(&task.kind);
+        TaskReport::NotEvaluated(NotEvaluatedReport::new(label, task.subject_name(self), self.who(task)))
+    }
+
+    /// `task` in words: `map high_far_half by chair_users`.
+    pub fn task_words(&self, task: &TaskSpec) -> String {
+        let label = task_label(&task.kind);
+        format!("{label} {} by {}", task.subject_name(self), self.who(task))
+    }
+
+    /// Who `task` is by: its population's name or its person's.
+    fn who(&self, task: &TaskSpec) -> &str {
+        match task.population {
             Some(p) => &self.populations[p].name,
             None => &self.persons[task.person].name,
-        };
-        let label = task_label(&task.kind);
-        TaskReport::NotEvaluated(NotEvaluatedReport::new(label, task.subject_name(self), who))
+        }
     }
 
     /// As [`Scenario::run_tasks`], with what each task's questions touched
@@ -435,7 +445,7 @@ impl Scenario {
     /// its work told to `run`; beside each element, what the tasks
     /// (`tasks`, whose answers are `answers`) in that room about it
     /// answered.
-    fn run_standards(
+    pub(super) fn run_standards(
         &self,
         tasks: &[&TaskSpec],
         answers: &[TaskReport],
@@ -515,7 +525,7 @@ impl Scenario {
     }
 
     /// `task` (by a population) for its member `person`, and its work.
-    fn run_member(
+    pub(super) fn run_member(
         &self,
         task: &TaskSpec,
         person: usize,
@@ -559,7 +569,7 @@ impl Scenario {
             .collect()
     }
 
-    fn floor_charges(&self) -> FloorCharges {
+    pub(super) fn floor_charges(&self) -> FloorCharges {
         let (mut floors, mut prepared) = (HashSet::new(), HashSet::new());
         let first = (self.tasks.iter())
             .map(|t| {
@@ -578,7 +588,7 @@ impl Scenario {
     /// population, of whom only the verdict is kept), its work told to
     /// `run`: its answer, what its questions touched of the room (if
     /// `record` and it records that) and its work.
-    fn run_one(
+    pub(super) fn run_one(
         &self,
         task: &TaskSpec,
         progress: &dyn Progress,
