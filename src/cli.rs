@@ -69,6 +69,29 @@ enum Command {
     Run {
         #[command(flatten)]
         evaluate: Evaluate,
+        /// Run only the K-th of N equal ranges of each population's
+        /// people, and print the shard's file (JSON, whatever --format) for
+        /// `reach merge`, which runs the rest
+        #[arg(long, value_name = "K/N", conflicts_with = "out", value_parser = shard_of)]
+        shard: Option<reach::ShardOf>,
+        #[command(flatten)]
+        reporting: Reporting,
+    },
+    /// Join the files of a run's shards (`reach run FILE --shard K/N`, every
+    /// K from 1 to N) into the report one run of FILE gives, byte for byte:
+    /// runs each task by one person and the standards, and takes each
+    /// population's people from the shards
+    Merge {
+        /// Instead: join the --junit files of a suite's shards (`reach test
+        /// --shard K/N`; FILE and SHARD are those files) into OUT, as one
+        /// `reach test --junit OUT` writes it
+        #[arg(long, value_name = "OUT")]
+        junit: Option<PathBuf>,
+        #[command(flatten)]
+        evaluate: Evaluate,
+        /// The shards' files, in any order
+        #[arg(required_unless_present = "junit", value_name = "SHARD")]
+        shards: Vec<PathBuf>,
         #[command(flatten)]
         reporting: Reporting,
     },
@@ -120,6 +143,11 @@ enum Command {
         /// Headings within this many degrees count as unchanged.
         #[arg(long, value_name = "DEG", default_value_t = 0.1)]
         tolerance_deg: f64,
+        /// Test only the K-th of N equal ranges of the scenarios found (in
+        /// the order of their paths); `reach merge --junit` joins the
+        /// shards' --junit files
+        #[arg(long, value_name = "K/N", value_parser = shard_of)]
+        shard: Option<reach::ShardOf>,
         #[command(flatten)]
         limits: LimitArgs,
         #[command(flatten)]
@@ -143,6 +171,11 @@ enum Command {
         #[arg(long, value_name = "DIR")]
         out: Option<PathBuf>,
     },
+}
+
+/// `K/N` for `--shard`.
+fn shard_of(text: &str) -> Result<reach::ShardOf, String> {
+    reach::ShardOf::parse(text)
 }
 
 /// What `run` and `watch` take.
@@ -257,8 +290,34 @@ pub fn main() -> i32 {
     match cli.command {
         Command::Run {
             evaluate,
+            shard: Some(shard),
+            reporting,
+        } => run_shard(&registry, &evaluate, shard, &Shown::new(&reporting, colour)),
+        Command::Run {
+            evaluate,
+            shard: None,
             reporting,
         } => run(&registry, &evaluate, &Shown::new(&reporting, colour)),
+        Command::Merge {
+            junit: Some(out),
+            evaluate,
+            shards,
+            ..
+        } => {
+            let parts: Vec<PathBuf> = std::iter::once(evaluate.file).chain(shards).collect();
+            crate::test_command::merge_junit(&out, &parts, evaluate.limits.limits().file_bytes)
+        }
+        Command::Merge {
+            junit: None,
+            evaluate,
+            shards,
+            reporting,
+        } => merge(
+            &registry,
+            &evaluate,
+            &shards,
+            &Shown::new(&reporting, colour),
+        ),
         Command::Watch { evaluate: e, quiet } => {
             let Some(formatter) = registry.format(&e.format).cloned() else {
                 return unknown_format(&registry, &e.format);
@@ -298,6 +357,7 @@ pub fn main() -> i32 {
             junit,
             tolerance_mm,
             tolerance_deg,
+            shard,
             limits,
             reporting,
         } => crate::test_command::test(
@@ -314,6 +374,7 @@ pub fn main() -> i32 {
                 limits: limits.limits(),
                 allowed: limits.allow_path,
                 quiet: reporting.quiet,
+                shard,
                 style: Shown::new(&reporting, colour).style,
             },
         ),
@@ -452,10 +513,92 @@ fn run(registry: &Registry, e: &Evaluate, shown: &Shown) -> i32 {
     let again = || session.check(Input::Path(&e.file), registry).1.ok();
     let ran = session.progress(&bar).run_partly(&scenario, &again);
     bar.clear();
-    let (report, stopped) = (ran.report, ran.stopped);
+    let ran = Presented {
+        scenario: &scenario,
+        sources: &sources,
+        report: ran.report,
+        stopped: ran.stopped,
+    };
+    present(registry, e, formatter.as_ref(), shown, ran)
+}
+
+/// `reach run FILE --shard K/N`: the shard's file on standard output.
+fn run_shard(registry: &Registry, e: &Evaluate, shard: reach::ShardOf, shown: &Shown) -> i32 {
+    let bar = crate::bar::Bar::new(!shown.quiet);
+    let file = crate::shard_command::shard_file(registry, &e.reading(), shard, &bar);
+    bar.clear();
+    match file {
+        Ok(text) => {
+            let _ = std::io::stdout().lock().write_all(text.as_bytes());
+            0
+        }
+        Err(d) => shown.diagnostics(&d),
+    }
+}
+
+/// `reach merge FILE SHARD...`: shown and written as `reach run` would.
+fn merge(registry: &Registry, e: &Evaluate, shards: &[PathBuf], shown: &Shown) -> i32 {
+    let Some(formatter) = registry.format(&e.format) else {
+        return unknown_format(registry, &e.format);
+    };
+    if !formatter.prints() {
+        return unprintable_format(registry, &e.format);
+    }
+    let bar = crate::bar::Bar::new(!shown.quiet);
+    let merged = crate::shard_command::merged(registry, &e.reading(), shards, &bar);
+    bar.clear();
+    match merged {
+        Ok(m) => {
+            let ran = Presented {
+                scenario: &m.scenario,
+                sources: &m.sources,
+                report: m.report,
+                stopped: None,
+            };
+            present(registry, e, formatter.as_ref(), shown, ran)
+        }
+        Err(d) => shown.diagnostics(&d),
+    }
+}
+
+impl Evaluate {
+    fn reading(&self) -> crate::shard_command::Reading<'_> {
+        crate::shard_command::Reading {
+            file: &self.file,
+            limits: self.limits.limits(),
+            allowed: &self.limits.allow_path,
+        }
+    }
+}
+
+/// A run's report, to show and write.
+struct Presented<'a> {
+    pub scenario: &'a reach::Scenario,
+    pub sources: &'a reach::Sources,
+    pub report: reach::report::Report,
+    /// Where the bound stopped the run partway.
+    pub stopped: Option<reach::Error>,
+}
+
+/// Show and write a run's report as `reach run` does (`formatter` on
+/// standard output, every format's files with `--out`), and its exit
+/// code: a stop partway, expectations not met, `--strict`.
+fn present(
+    registry: &Registry,
+    e: &Evaluate,
+    formatter: &dyn reach::plugin::FormatPlugin,
+    shown: &Shown,
+    ran: Presented<'_>,
+) -> i32 {
+    let Presented {
+        scenario,
+        sources,
+        report,
+        stopped,
+    } = ran;
     if let Some(dir) = &e.out {
         match crate::signals::whole(|| {
-            reach::output::write_outputs(&report, &scenario, registry.formats(), dir)
+            reach::output::write_outputs(&report, scenario, registry.formats(), dir)
         }) {
             Err(error) => return shown.diagnostics(&Diagnostics::single(error)),
             Ok(written) => {
@@ -502,7 +645,7 @@ fn run(registry: &Registry, e: &Evaluate, shown: &Shown) -> i32 {
         eprint!(
             "{}",
             Diagnostics::single(error)
-                .attach(&sources)
+                .attach(sources)
                 .render_in(shown.style)
         );
         return STOPPED_PARTWAY;

@@ -55,6 +55,8 @@ pub enum ErrorKind {
     },
     #[error("cannot write `{path}`: {reason}")]
     WriteFile { path: String, reason: String },
+    #[error("cannot merge `{path}`: {why}")]
+    BadShard { path: String, why: String },
 
     // ------------------------------------------------------------ names
     #[error("unknown {what} `{name}`")]
@@ -254,6 +256,7 @@ impl ErrorKind {
             ReadFile { .. }
             | NotUtf8 { .. }
             | WriteFile { .. }
+            | BadShard { .. }
             | BadMesh { .. }
             | BadMeshSetting { .. }
             | BadUrdf { .. } => "reach::file",
@@ -308,6 +311,7 @@ impl ErrorKind {
             ImportCycle { .. } => "this `use` closes the cycle".into(),
             UnknownStdModule { .. } => "no such module".into(),
             WriteFile { .. } => "here".into(),
+            BadShard { .. } => "the scenario".into(),
             UnknownName { what, .. } => format!("no {what} of this name"),
             AmbiguousSurface { .. } => "which room's?".into(),
             NotAnElement { .. } => "not a target of this room".into(),
@@ -424,6 +428,7 @@ impl ErrorKind {
                 "a closed mesh is solid, as a box is: nothing inside it can be reached or seen; put the target on its surface (an open mesh, a scan's surface, blocks only its surface)".into(),
             ),
             MixedDefaults => Some("write the units on these numbers".into()),
+            BadShard { .. } => Some("merge the files of `reach run FILE --shard K/N` for every K from 1 to the same N, run on the same scenario files by the same version of reach".into()),
             Unsupported { help, .. } => Some(help.clone()),
             TooLarge { limit, .. } => Some(match limit.split_once("(--") {
                 Some((_, flag)) => format!(

@@ -70,7 +70,7 @@ pub use limits::Limits;
 pub use loader::Input;
 pub use machine_diagnostics::{DiagnosticStyle, Finding};
 pub use read::read_root;
-pub use scenario::Scenario;
+pub use scenario::{fingerprint, read_shard, write_shard, PeopleBuilt, Scenario, ShardOf, ShardPart};
 pub use source::Sources;
 pub use std_modules::listing as stdlib_listing;
 
@@ -103,6 +103,7 @@ pub struct Session<'a> {
     progress: &'a dyn progress::Progress,
     threads: Option<usize>,
     memo: Option<&'a Arc<kept::Memo>>,
+    built: scenario::PeopleBuilt,
 }
 
 /// A run's report and the work its solvers did, in the units of
@@ -125,6 +126,7 @@ impl Default for Session<'_> {
             progress: &progress::NoProgress,
             threads: None,
             memo: None,
+            built: scenario::PeopleBuilt::Everyone,
         }
     }
 }
@@ -160,6 +162,13 @@ impl<'a> Session<'a> {
         }
     }
 
+    /// Building only these of each population's people as persons (a
+    /// shard's, for [`Session::run_shard`]; the first, for
+    /// [`Session::run_merged`]): a scenario so checked runs only those.
+    pub fn building(self, built: scenario::PeopleBuilt) -> Self {
+        Session { built, ..self }
+    }
+
     /// Running the tasks on a pool of `threads` threads (at least 1) of
     /// their own; the answers are the same on every number.
     pub fn threads(self, threads: usize) -> Self {
@@ -183,7 +192,7 @@ impl<'a> Session<'a> {
             loader::load(input, &self.limits, self.also_allowed, &suggestions);
         let result = loaded.and_then(|files| {
             let (data_files, checked) =
-                check::check(&sources, &files, registry, &self.limits, &suggestions);
+                check::check(&sources, &files, registry, (&self.limits, self.built), &suggestions);
             sources.add_data_files(data_files);
             checked
         });
@@ -216,6 +225,34 @@ impl<'a> Session<'a> {
         again: &(dyn Fn() -> Option<Scenario> + Sync),
     ) -> Ran {
         self.on_pool(|memo| run_partly_on_this_pool(scenario, again, self.progress, memo))
+    }
+
+    /// Run shard `shard` of a run of a checked scenario: the shard's people
+    /// of each population, for every task by it ([`Scenario::run_shard`]).
+    pub fn run_shard(
+        &self,
+        scenario: &Scenario,
+        shard: scenario::ShardOf,
+    ) -> Result<Vec<scenario::ShardPart>, Error> {
+        self.on_pool(|memo| scenario.run_shard(shard, self.progress, memo))
+    }
+
+    /// The run of a checked scenario whose populations' people were run by
+    /// shards (`parts`, every shard's): the report a whole run gives
+    /// ([`Scenario::run_merged`]).
+    pub fn run_merged(
+        &self,
+        scenario: &Scenario,
+        parts: &[scenario::ShardPart],
+    ) -> Result<Ran, Error> {
+        self.on_pool(|memo| {
+            let (report, work) = scenario.run_merged(parts, self.progress, memo)?;
+            Ok(Ran {
+                report,
+                work,
+                stopped: None,
+            })
+        })
     }
 
     /// `run` on the session's pool of threads (or rayon's global one),

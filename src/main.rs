@@ -3,6 +3,7 @@
 mod bar;
 mod cli;
 mod man_pages;
+mod shard_command;
 mod signals;
 mod test_command;
 mod watch;

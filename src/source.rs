@@ -123,6 +123,11 @@ impl Sources {
         self.data_files.extend(paths);
     }
 
+    /// The data files the scenario names (meshes, URDFs), as named.
+    pub fn data_paths(&self) -> &[PathBuf] {
+        &self.data_files
+    }
+
     /// The files on disk this evaluation read or tried to read, scenario
     /// files and data files, as paths (watch mode watches them).
     pub fn disk_paths(&self) -> Vec<PathBuf> {

@@ -19,6 +19,9 @@ pub struct TestArgs {
     pub allowed: Vec<PathBuf>,
     /// Print only the scenarios that fail.
     pub quiet: bool,
+    /// Test only the K-th of N equal ranges of the scenarios found (in
+    /// the order of their paths).
+    pub shard: Option<reach::ShardOf>,
     /// How diagnostics are written; `Github` adds a workflow command per
     /// diagnostic and per expectation not met after the summary.
     pub style: DiagnosticStyle,
@@ -51,8 +54,12 @@ pub fn test(registry: &Registry, args: TestArgs) -> i32 {
         limits: args.limits,
         allowed: args.allowed.clone(),
     };
+    let scenarios = match args.shard {
+        Some(shard) => scenarios[shard.people(scenarios.len())].to_vec(),
+        None => scenarios,
+    };
     let outcomes = suite::run_suite(&scenarios, &roots, &options, registry);
-    if outcomes.is_empty() {
+    if outcomes.is_empty() && args.shard.is_none() {
         eprintln!("error: no .reach scenario under the paths given");
         return 1;
     }
@@ -61,12 +68,46 @@ pub fn test(registry: &Registry, args: TestArgs) -> i32 {
         eprint!("{}", annotations(&outcomes));
     }
     if let Some(path) = &args.junit {
-        if let Err(e) = write_junit(path, &suite::junit(&outcomes)) {
+        let shard = args.shard.map(|s| (s.index, s.count));
+        if let Err(e) = write_junit(path, &suite::junit(&outcomes, shard)) {
             eprintln!("error: cannot write {}: {e}", path.display());
             return 1;
         }
     }
     i32::from(outcomes.iter().any(|o| !o.passed()))
+}
+
+/// `reach merge --junit OUT PART...`: the JUnit files of a suite's shards
+/// joined as the whole suite's, written to `out`.
+pub fn merge_junit(out: &std::path::Path, parts: &[PathBuf], limit_bytes: u64) -> i32 {
+    let mut files = Vec::with_capacity(parts.len());
+    for part in parts {
+        let name = part.display().to_string();
+        let text = reach::read_root(part, limit_bytes)
+            .map_err(|e| e.to_string())
+            .and_then(|bytes| String::from_utf8(bytes).map_err(|_| "not UTF-8 text".to_string()));
+        match text {
+            Ok(text) => files.push((name, text)),
+            Err(why) => {
+                eprintln!("error: cannot read {}: {why}", reach::escaped(&name));
+                return 1;
+            }
+        }
+    }
+    let merged = match suite::merge_junit(&files) {
+        Ok(xml) => xml,
+        Err(why) => {
+            eprintln!("error: cannot merge: {}", reach::escaped(&why));
+            return 1;
+        }
+    };
+    match write_junit(out, &merged) {
+        Ok(()) => 0,
+        Err(e) => {
+            eprintln!("error: cannot write {}: {e}", out.display());
+            1
+        }
+    }
 }
 
 fn write_junit(path: &std::path::Path, xml: &str) -> Result<(), String> {

@@ -534,7 +534,7 @@ fn the_library_exports_the_run_api_and_the_plugin_sdk_only() {
         "pub use loader::Input;",
         "pub use machine_diagnostics::{DiagnosticStyle, Finding};",
         "pub use read::read_root;",
-        "pub use scenario::Scenario;",
+        "pub use scenario::{fingerprint, read_shard, write_shard, PeopleBuilt, Scenario, ShardOf, ShardPart};",
         "pub use source::Sources;",
         "pub use std_modules::listing as stdlib_listing;",
         "pub struct Session<'a> {",

@@ -34,6 +34,7 @@ mod population;
 mod properties;
 mod retry;
 mod routes;
+mod shards;
 mod standards;
 mod stdlib;
 mod suite;

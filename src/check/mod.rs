@@ -30,7 +30,7 @@ use crate::limits::Limits;
 use crate::loader::LoadedFile;
 use crate::names::Suggestions;
 use crate::plugin::Registry;
-use crate::scenario::{Scenario, WorkBound};
+use crate::scenario::{PeopleBuilt, Scenario, WorkBound};
 use crate::source::Sources;
 use crate::span::{FileId, Spanned};
 use crate::syntax::ast::{Item, LetDecl};
@@ -44,11 +44,12 @@ pub fn check(
     sources: &Sources,
     files: &[LoadedFile],
     registry: &Registry,
-    limits: &Limits,
+    (limits, built): (&Limits, PeopleBuilt),
     suggestions: &Suggestions,
 ) -> (Vec<PathBuf>, Result<Scenario, Diagnostics>) {
     let root = files.last().map(|f| f.id).unwrap_or_default();
     let mut c = Checker::new(registry, sources, *limits, suggestions);
+    c.cx.built = built;
     for f in files {
         let defaults = c.file_defaults(&f.ast.items);
         c.cx.defaults_of.insert(f.id, defaults);
@@ -115,6 +116,8 @@ struct Context<'a> {
     /// The joints of the people built so far, and whether they passed
     /// their bound (`Checker::within_people_joints`).
     people_joints: (u64, bool),
+    /// Which of each population's people are built as persons.
+    built: PeopleBuilt,
     /// The bytes of mannequins' declarations evaluated to build people so
     /// far, and whether they passed their bound
     /// (`Checker::within_evaluated_text`).
@@ -188,6 +191,7 @@ impl<'a> Checker<'a> {
                 triangles_read: 0,
                 mesh_files: MeshFiles::default(),
                 people_joints: (0, false),
+                built: PeopleBuilt::Everyone,
                 evaluated_text: (0, false),
                 sources,
                 errors: Vec::new(),

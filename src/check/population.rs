@@ -105,7 +105,8 @@ impl<'a> Checker<'a> {
                 continue;
             }
             let start = persons.len();
-            for (i, drawn) in plan.drawn.iter().enumerate() {
+            let built = self.cx.built.range(plan.drawn.len());
+            for (i, drawn) in plan.drawn.iter().enumerate().skip(built.start).take(built.len()) {
                 let member = format!("{}#{}", plan.name, i + 1);
                 let errors = self.cx.errors.len();
                 let built = self.member(&member, &items, drawn, &plan.quantities[i], name.span);
@@ -125,11 +126,12 @@ impl<'a> Checker<'a> {
                     }
                 }
             }
-            if persons.len() - start == plan.drawn.len() {
+            if persons.len() - start == built.len() {
                 join_floor_group(&bases[start..]);
                 out.push(Population {
                     name: plan.name,
                     members: start..persons.len(),
+                    first: built.start,
                     drawn: plan.drawn,
                     seed: plan.seed,
                 });

@@ -33,7 +33,9 @@ pub use map::{MapCell, MapReport};
 pub use not_evaluated::{NotEvaluatedReport, WORK_LIMIT};
 pub use not_placed::NotPlacedReport;
 pub use parts::{deg, fixed, mm, Asked, BaseReport, Names, Posture, BALANCE};
-pub use population::{wilson95, Excluded, PopulationReport, ShareCell, ShareGrid};
+pub use population::{
+    wilson95, Excluded, MapFrame, MemberOutcome, PopulationReport, ShareCell, ShareGrid,
+};
 pub use reach::{quoted, ReachReport};
 pub use reach_and_gaze::ReachAndGazeReport;
 pub use schema::schema_json;

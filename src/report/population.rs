@@ -131,17 +131,35 @@ impl PopulationReport {
     /// The report of a task whose answers, one per person of `population`
     /// in draw order, are `answers`; `name` is the subject's.
     pub fn new(name: &str, population: &Population, answers: &[TaskReport]) -> Self {
-        let people = answers.len();
-        let task = answers.first().map_or("task", |a| a.answer().task);
+        let outcomes: Vec<MemberOutcome> = answers.iter().map(MemberOutcome::of).collect();
+        let frame = answers.iter().find_map(TaskReport::map).map(MapFrame::of);
+        PopulationReport::of_outcomes(name, population, &outcomes, frame.as_ref())
+    }
+
+    /// The report of a task whose people (every one of `population`, in
+    /// draw order) ended as `outcomes`, the first map among them framed as
+    /// `frame`.
+    pub fn of_outcomes(
+        name: &str,
+        population: &Population,
+        outcomes: &[MemberOutcome],
+        frame: Option<&MapFrame>,
+    ) -> Self {
+        let people = outcomes.len();
+        let task = outcomes.first().map_or("task", |o| o.task);
         let mut excluded = Vec::new();
         let mut not_placed = 0;
-        for ((report, drawn), i) in answers.iter().zip(&population.drawn).zip(1..) {
-            let answer = report.answer();
-            if answer.ok {
+        for ((outcome, drawn), i) in outcomes.iter().zip(&population.drawn).zip(1..) {
+            if outcome.ok {
                 continue;
             }
-            not_placed += usize::from(matches!(report, TaskReport::NotPlaced(_)));
-            excluded.push(Excluded::new(&population.name, i, drawn, answer.verdict));
+            not_placed += usize::from(outcome.not_placed);
+            excluded.push(Excluded::new(
+                &population.name,
+                i,
+                drawn,
+                outcome.verdict.clone(),
+            ));
         }
         let accommodated = people - excluded.len();
         let share_of = |k: usize| fixed(k as f64 / people.max(1) as f64, 4);
@@ -157,55 +175,98 @@ impl PopulationReport {
             not_placed,
             ok: accommodated == people,
             excluded,
-            grid: share_grid(answers),
-            cells: map_shares(answers),
+            grid: frame.map(|f| f.grid.clone()),
+            cells: frame.map(|f| map_shares(f, outcomes)),
         }
     }
 }
 
-/// For maps: the grid, from the first member whose map there is.
-fn share_grid(answers: &[TaskReport]) -> Option<ShareGrid> {
-    let m = answers.iter().find_map(TaskReport::map)?;
-    Some(ShareGrid {
-        of: m.of,
-        base: m.base.clone(),
-        view: m.view,
-        step_mm: m.step_mm,
-        corner_mm: m.corner_mm,
-        u_mm: m.u_mm,
-        v_mm: m.v_mm,
-        columns: m.columns,
-        rows: m.rows,
-        seen_from: m.seen_from().map(|x| fixed(x, 4)),
-    })
+/// How one person of a population ended, as much as the population's
+/// report needs: what a shard of a run (`reach run --shard`) keeps of each
+/// of its people for the merge.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MemberOutcome {
+    /// The task as their answer names it (`reach`, `map`, ...).
+    pub task: &'static str,
+    /// Whether the answer holds for them.
+    pub ok: bool,
+    /// Whether their base fits nowhere in the room.
+    pub not_placed: bool,
+    /// Their answer's verdict.
+    pub verdict: String,
+    /// For a map: whether they reach each point, in the map's order.
+    pub reached: Option<Vec<bool>>,
+}
+
+impl MemberOutcome {
+    /// How the person whose answer is `report` ended.
+    pub fn of(report: &TaskReport) -> Self {
+        let answer = report.answer();
+        MemberOutcome {
+            task: answer.task,
+            ok: answer.ok,
+            not_placed: matches!(report, TaskReport::NotPlaced(_)),
+            verdict: answer.verdict,
+            reached: report
+                .map()
+                .map(|m| m.cells.iter().map(|c| c.reachable).collect()),
+        }
+    }
+}
+
+/// The grid of a population's map and its points, from the first of its
+/// people whose map there is (the shares not yet counted).
+#[derive(Clone, Debug, PartialEq)]
+pub struct MapFrame {
+    pub grid: ShareGrid,
+    /// Each point, its share and count 0.
+    pub cells: Vec<ShareCell>,
+}
+
+impl MapFrame {
+    /// The frame of the map `m`.
+    pub fn of(m: &MapReport) -> Self {
+        let grid = ShareGrid {
+            of: m.of,
+            base: m.base.clone(),
+            view: m.view,
+            step_mm: m.step_mm,
+            corner_mm: m.corner_mm,
+            u_mm: m.u_mm,
+            v_mm: m.v_mm,
+            columns: m.columns,
+            rows: m.rows,
+            seen_from: m.seen_from().map(|x| fixed(x, 4)),
+        };
+        let cells = (m.cells.iter())
+            .map(|cell| ShareCell {
+                column: cell.column,
+                row: cell.row,
+                point_mm: cell.point_mm,
+                share: 0.0,
+                reached: 0,
+            })
+            .collect();
+        MapFrame { grid, cells }
+    }
 }
 
 /// For maps: each point's share of the people who reach it (a person
 /// whose base fits nowhere reaches none).
-fn map_shares(answers: &[TaskReport]) -> Option<Vec<ShareCell>> {
-    let maps: Vec<Option<&MapReport>> = answers.iter().map(TaskReport::map).collect();
-    let first = maps.iter().flatten().next()?;
-    let people = answers.len().max(1) as f64;
-    let cells = first
-        .cells
-        .iter()
-        .enumerate()
+fn map_shares(frame: &MapFrame, outcomes: &[MemberOutcome]) -> Vec<ShareCell> {
+    let people = outcomes.len().max(1) as f64;
+    (frame.cells.iter().enumerate())
         .map(|(k, cell)| {
-            let reached = maps
-                .iter()
-                .flatten()
-                .filter(|m| m.cells.get(k).is_some_and(|c| c.reachable))
+            let reached = (outcomes.iter())
+                .filter(|o| o.reached.as_ref().is_some_and(|r| r.get(k) == Some(&true)))
                 .count();
             ShareCell {
-                column: cell.column,
-                row: cell.row,
-                point_mm: cell.point_mm,
                 share: fixed(reached as f64 / people, 4),
                 reached,
+                ..cell.clone()
             }
         })
-        .collect();
-    Some(cells)
+        .collect()
 }
 
 impl Excluded {

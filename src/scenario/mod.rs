@@ -7,10 +7,14 @@
 mod estimate;
 mod expect;
 mod run;
+mod shard;
+mod shard_file;
 
 pub use expect::{ExpectCheck, ExpectSpec};
 pub use estimate::{sample_size, TaskWork, WorkEstimate};
 pub use run::{Ran, Stop};
+pub use shard::{PeopleBuilt, ShardOf, ShardPart};
+pub use shard_file::{fingerprint, read_shard, write_shard};
 
 use std::fmt;
 use std::sync::Arc;

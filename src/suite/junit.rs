@@ -7,9 +7,17 @@ use quick_junit::{NonSuccessKind, Report, TestCase, TestCaseStatus, TestSuite};
 
 use super::{Compared, Golden, Outcome};
 
-/// The outcomes as JUnit XML.
-pub fn junit(outcomes: &[Outcome]) -> String {
-    let mut report = Report::new("reach test");
+/// The name of the JUnit report of a whole suite.
+const NAME: &str = "reach test";
+
+/// The outcomes as JUnit XML; a shard's (`reach test --shard K/N`) named
+/// `reach test shard K/N`, so that the merge knows it.
+pub fn junit(outcomes: &[Outcome], shard: Option<(usize, usize)>) -> String {
+    let name = match shard {
+        Some((k, n)) => format!("{NAME} shard {k}/{n}"),
+        None => NAME.to_string(),
+    };
+    let mut report = Report::new(name);
     for o in outcomes {
         let mut suite = TestSuite::new(safe(&o.path.display().to_string()));
         if let Some(d) = &o.diagnostics {
@@ -76,6 +84,54 @@ fn safe(text: &str) -> String {
         .map(crate::escape::escaped)
         .collect::<Vec<_>>()
         .join("\n")
+}
+
+/// The JUnit files of every shard of a suite (`reach test --shard K/N`,
+/// each K from 1 to N once, in any order, with the name of each file for
+/// what is said of it) joined as the whole suite's file: its test suites
+/// in the order of the shards; or what is wrong with them.
+pub fn merge_junit(files: &[(String, String)]) -> Result<String, String> {
+    let mut by_index: std::collections::BTreeMap<usize, Report> = Default::default();
+    let mut count = None;
+    for (name, xml) in files {
+        let report = Report::deserialize_from_str(xml)
+            .map_err(|e| format!("`{name}` is not JUnit XML: {e}"))?;
+        let shard = (report.name.as_str().strip_prefix(NAME))
+            .and_then(|rest| rest.strip_prefix(" shard "))
+            .and_then(|k_n| crate::scenario::ShardOf::parse(k_n).ok())
+            .ok_or_else(|| format!("`{name}` is not the JUnit file of a shard of `reach test` (its report is named `{}`)", report.name.as_str()))?;
+        if count.is_some_and(|n| n != shard.count) {
+            return Err(format!(
+                "`{name}` is shard {}/{}, the first given of {}",
+                shard.index,
+                shard.count,
+                count.unwrap_or(0)
+            ));
+        }
+        count = Some(shard.count);
+        if by_index.insert(shard.index, report).is_some() {
+            return Err(format!(
+                "`{name}`: shard {}/{} is given twice",
+                shard.index, shard.count
+            ));
+        }
+    }
+    let count = count.unwrap_or(0);
+    let missing: Vec<String> = (1..=count)
+        .filter(|k| !by_index.contains_key(k))
+        .map(|k| format!("{k}/{count}"))
+        .collect();
+    if !missing.is_empty() {
+        return Err(format!(
+            "shard {} of the suite not given",
+            missing.join(", ")
+        ));
+    }
+    let mut whole = Report::new(NAME);
+    for (_, part) in by_index {
+        whole.add_test_suites(part.test_suites);
+    }
+    whole.to_string().map_err(|e| e.to_string())
 }
 
 #[cfg(test)]

@@ -16,7 +16,7 @@ use std::path::{Path, PathBuf};
 use rayon::prelude::*;
 
 pub use golden::{compare, Compared, Tolerance};
-pub use junit::junit;
+pub use junit::{junit, merge_junit};
 
 use crate::error::Diagnostics;
 use crate::limits::Limits;
