@@ -70,7 +70,8 @@ pub use limits::Limits;
 pub use loader::Input;
 pub use machine_diagnostics::{DiagnosticStyle, Finding};
 pub use read::read_root;
-pub use scenario::{fingerprint, read_shard, write_shard, PeopleBuilt, Scenario, ShardOf, ShardPart};
+pub use scenario::{fingerprint, read_shard, write_shard};
+pub use scenario::{PeopleBuilt, Scenario, ShardOf, ShardPart};
 pub use source::Sources;
 pub use std_modules::listing as stdlib_listing;
 
@@ -191,8 +192,13 @@ impl<'a> Session<'a> {
         let (mut sources, loaded) =
             loader::load(input, &self.limits, self.also_allowed, &suggestions);
         let result = loaded.and_then(|files| {
-            let (data_files, checked) =
-                check::check(&sources, &files, registry, (&self.limits, self.built), &suggestions);
+            let (data_files, checked) = check::check(
+                &sources,
+                &files,
+                registry,
+                (&self.limits, self.built),
+                &suggestions,
+            );
             sources.add_data_files(data_files);
             checked
         });
