@@ -9,7 +9,8 @@
 //! between the two largest sizes of each kind.
 //!
 //! `cargo run --release --example bench_scale` (all rows), or with a kind
-//! (`boxes`, `mesh`, `map`, `doors`) to run only those; `--tiny` makes
+//! (`boxes`, `mesh`, `map`, `doors`, `far_boxes`, `far_mesh`: clutter
+//! beyond every reach) to run only those; `--tiny` makes
 //! each size a hundredth (CI runs it so, to see every row run).
 
 use std::fmt::Write as _;
@@ -21,11 +22,13 @@ use reach::plugin::Registry;
 use reach::Input;
 
 /// The sizes of each kind: boxes, triangles, map points, posts.
-const ROWS: [(&str, [usize; 2]); 4] = [
+const ROWS: [(&str, [usize; 2]); 6] = [
     ("boxes", [200, 2_000]),
     ("mesh", [100_000, 1_000_000]),
     ("map", [10_000, 100_000]),
     ("doors", [200, 2_000]),
+    ("far_boxes", [200, 2_000]),
+    ("far_mesh", [100_000, 1_000_000]),
 ];
 
 fn main() {
@@ -81,6 +84,8 @@ fn describe(kind: &str) -> &'static str {
         "boxes" => "box obstacles, wheelchair, 20 targets",
         "mesh" => "one scanned mesh (triangles), wheelchair, 20 targets",
         "doors" => "posts 1 m apart in a hall with a door, manual wheelchair, 1 target",
+        "far_boxes" => "small boxes strewn in 3D through the far half of a 10 m room, wheelchair, 20 targets on a counter at the other end",
+        "far_mesh" => "one mesh of small cubes (triangles) strewn through the far half of a 10 m room, wheelchair, 20 targets on a counter at the other end",
         _ => "map points, wheelchair, JSON report",
     }
 }
@@ -95,6 +100,11 @@ fn write_room(kind: &str, size: usize, dir: &Path) -> std::path::PathBuf {
             mesh_room()
         }
         "doors" => hall(size),
+        "far_boxes" => far_room(&strewn_boxes(size), size),
+        "far_mesh" => {
+            std::fs::write(dir.join("clutter.obj"), strewn_cubes(size)).expect("written");
+            far_room("  mesh clutter from \"clutter.obj\"\n", size)
+        }
         _ => map(size),
     };
     let path = dir.join("scale.reach");
@@ -260,4 +270,80 @@ fn map(n: usize) -> String {
          surface front at (600, 0, 0) size (0, 5000, 2000)\n}}\n{PERSON}\
          map front by ann {{\n  step {step:.3}mm\n  solver incremental {{ starts 1 }}\n}}\n"
     )
+}
+
+/// A 10 m room: a counter at one end with 20 targets along it, and
+/// `clutter` (box or mesh lines) in its far half, out of every reach.
+fn far_room(clutter: &str, _size: usize) -> String {
+    let mut t = String::from(
+        "units mm deg\nuse std::arm\nroom hall {\n  size 10000 x 4000 x 2700\n  \
+         box counter at (0, 0, 0) size (3000, 600, 900)\n",
+    );
+    t.push_str(clutter);
+    let mut names = Vec::new();
+    for k in 0..20 {
+        writeln!(t, "  target t{k} at ({}, 400, 950)", 300 + 120 * k).unwrap();
+        names.push(format!("t{k}"));
+    }
+    t + "}\n" + PERSON + &format!("reach {} by ann\n", names.join(", "))
+}
+
+/// Where the `k`-th thing strewn through the far half goes: x from 5 m to
+/// 9.9 m, y across the room, z from the floor to 2.6 m (a fixed
+/// sequence, the same every run).
+fn strewn(k: usize) -> [f64; 3] {
+    let mut h = (k as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ 0xD1B5_4A32_D192_ED03;
+    let mut next = || {
+        h ^= h >> 33;
+        h = h.wrapping_mul(0xFF51_AFD7_ED55_8CCD);
+        h ^= h >> 33;
+        (h % 1_000_000) as f64 / 1_000_000.0
+    };
+    [5000.0 + 4900.0 * next(), 3900.0 * next(), 2600.0 * next()]
+}
+
+/// `n` boxes of 100 mm strewn through the far half.
+fn strewn_boxes(n: usize) -> String {
+    let mut t = String::new();
+    for k in 0..n {
+        let [x, y, z] = strewn(k);
+        writeln!(
+            t,
+            "  box c{k} at ({x:.0}, {y:.0}, {z:.0}) size (100, 100, 100)"
+        )
+        .unwrap();
+    }
+    t
+}
+
+/// An OBJ (mm) of 50 mm cubes strewn through the far half, about `n`
+/// triangles (12 a cube).
+fn strewn_cubes(n: usize) -> String {
+    let (mut vertices, mut faces) = (String::new(), String::new());
+    const FACES: [[usize; 4]; 6] = [
+        [0, 1, 3, 2],
+        [4, 6, 7, 5],
+        [0, 4, 5, 1],
+        [2, 3, 7, 6],
+        [0, 2, 6, 4],
+        [1, 5, 7, 3],
+    ];
+    for k in 0..n.div_ceil(12) {
+        let [x, y, z] = strewn(k);
+        for c in 0..8 {
+            let (dx, dy, dz) = ((c >> 2) & 1, (c >> 1) & 1, c & 1);
+            let p = [
+                x + 50.0 * dx as f64,
+                y + 50.0 * dy as f64,
+                z + 50.0 * dz as f64,
+            ];
+            writeln!(vertices, "v {:.1} {:.1} {:.1}", p[0], p[1], p[2]).unwrap();
+        }
+        let base = 1 + 8 * k;
+        for [a, b, c, d] in FACES {
+            let [a, b, c, d] = [a + base, b + base, c + base, d + base];
+            writeln!(faces, "f {a} {b} {c}\nf {a} {c} {d}").unwrap();
+        }
+    }
+    vertices + &faces
 }

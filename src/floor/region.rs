@@ -438,6 +438,12 @@ fn inside(a: Rect<f64>, b: Rect<f64>) -> bool {
 
 /// The obstacles any part of `turned` meets with its hip point in `cut`,
 /// each once with the parts that meet it, in the order of their corners.
+/// How many obstacles meet the floor `within` for some part of the
+/// footprint `turned` (those a piece of floor there is cut by).
+pub fn obstacles_meeting(within: Rect<f64>, turned: &Turned, obstacles: &FloorObstacles) -> usize {
+    obstacles_met(cut_of(within), turned, obstacles).len()
+}
+
 fn obstacles_met<'a>(
     cut: Rect<f64>,
     turned: &Turned,

@@ -14,7 +14,7 @@ use geo::{Closest, ClosestPoint, Coord, MultiPolygon, Point, Rect};
 
 use super::layer::overlap;
 use super::obstacles::FloorObstacles;
-use super::region::{admissible_in, shrunk_room, Grown, Turned, Zone};
+use super::region::{admissible_in, obstacles_meeting, shrunk_room, Grown, Turned, Zone};
 use super::work::{unbounded, CutShort, Looked, Work};
 use super::shared_routes::Around;
 use super::{DoorRoutes, Footprint, Inside};
@@ -337,16 +337,9 @@ impl Region {
                     piece: &fresh,
                     shape: &grows,
                 };
-                let empty = match self.free {
-                    None => true,
-                    Some(free) => {
-                        let centre = Point::from(free.center());
-                        let counted = self.nearest_counted(centre, Some(&fresh), &mut own);
-                        counted
-                            .map_err(|cut| work.cut_short_with(cut.work))?
-                            .is_none()
-                    }
-                };
+                let empty = (self.any_piece(&fresh, &mut own))
+                    .map_err(|cut| work.cut_short_with(cut.work))?
+                    .is_none();
                 let found = Emptiness {
                     empty,
                     work: own.done,
@@ -359,6 +352,54 @@ impl Region {
         let (empty, units) = found;
         work.add(units)?;
         Ok(empty)
+    }
+
+    /// A tile whose piece is not empty, none if the region is: the tiles
+    /// no obstacle meets first (whose piece is the whole tile, at no cost),
+    /// then the rest, each group from the room's middle outwards, ring by
+    /// ring, in rows, each charged as the nearest point's search charges
+    /// it. So clutter costs nothing where some floor is clear of it, and
+    /// elsewhere the tiles looked at are those the placements near the
+    /// middle look at too (which tiles are looked at changes the work,
+    /// never whether the region is empty).
+    fn any_piece(
+        &self,
+        fresh: &Fresh<'_>,
+        work: &mut Work<'_>,
+    ) -> Result<Option<(usize, usize)>, CutShort> {
+        let Some(free) = self.free else {
+            return Ok(None);
+        };
+        let (ci, cj) = self.tile_of(free.center().x, free.center().y).unwrap_or((0, 0));
+        let mut order: Vec<(usize, usize, usize, usize)> = (0..self.ny)
+            .flat_map(|j| (0..self.nx).map(move |i| (i, j)))
+            .filter_map(|(i, j)| {
+                let rect = self.tile_rect(i, j)?;
+                let crowded = obstacles_meeting(rect, &self.turned, &self.obstacles) > 0;
+                Some((usize::from(crowded), i.abs_diff(ci).max(j.abs_diff(cj)), j, i))
+            })
+            .collect();
+        order.sort_unstable();
+        let at_once = TILES_A_THREAD * rayon::current_num_threads().max(1);
+        for (k, &(_, _, j, i)) in order.iter().enumerate() {
+            if k % at_once == 0 {
+                let next: Vec<(usize, usize)> = (order[k..order.len().min(k + at_once)].iter())
+                    .map(|&(_, _, j, i)| (i, j))
+                    .collect();
+                self.work_out(&next);
+            }
+            let tile = self.tile(i, j);
+            charge(tile, Some(fresh), work)?;
+            // Not empty as the nearest point's search finds a piece not
+            // empty: it has a point nearest the middle.
+            let middle = Point::from(free.center());
+            let nearest = (tile.inside.bounds_distance_mm(middle))
+                .and_then(|near_mm| closest(tile.inside.region(), near_mm, middle));
+            if nearest.is_some() {
+                return Ok(Some((i, j)));
+            }
+        }
+        Ok(None)
     }
 
     /// The admissible point nearest to `p` (itself if admissible), found
@@ -443,24 +484,7 @@ impl Region {
                     self.work_out(&tiles[k..tiles.len().min(k + at_once)]);
                 }
                 let tile = self.tile(i, j);
-                let (reaching_key, reaching) = tile.reaching;
-                let units = match fresh {
-                    Some(fresh) if !(fresh.piece)(tile.key) => tile.again,
-                    Some(fresh) => (tile.shapes.iter())
-                        .filter(|&(shape, _)| (fresh.shape)(shape))
-                        .fold(tile.work, |sum, (_, units)| sum.saturating_add(units)),
-                    None => tile.work,
-                };
-                let reaching = match fresh {
-                    Some(fresh) if reaching > 0 && !(fresh.shape)(reaching_key) => 0,
-                    _ => reaching,
-                };
-                let own_routes = match fresh {
-                    Some(fresh) if tile.own_routes > 0 && !(fresh.shape)(OWN_ROUTES) => 0,
-                    _ => tile.own_routes,
-                };
-                let units = units.saturating_add(reaching).saturating_add(own_routes);
-                work.add_piece(tile.key, units)?;
+                charge(tile, fresh, work)?;
                 // A piece whose bounds are no nearer than the best cannot
                 // be nearer (nor, by a tie, replace it).
                 let Some(near_mm) = tile.inside.bounds_distance_mm(p) else {
@@ -501,6 +525,29 @@ impl Region {
         }
         geo::unary_union(&pieces)
     }
+}
+
+/// Charge `work` for looking at `tile` (`fresh`: the pieces and shapes a
+/// search is charged in full for; none: every tile in full).
+fn charge(tile: &Tile, fresh: Option<&Fresh<'_>>, work: &mut Work<'_>) -> Result<(), CutShort> {
+    let (reaching_key, reaching) = tile.reaching;
+    let units = match fresh {
+        Some(fresh) if !(fresh.piece)(tile.key) => tile.again,
+        Some(fresh) => (tile.shapes.iter())
+            .filter(|&(shape, _)| (fresh.shape)(shape))
+            .fold(tile.work, |sum, (_, units)| sum.saturating_add(units)),
+        None => tile.work,
+    };
+    let reaching = match fresh {
+        Some(fresh) if reaching > 0 && !(fresh.shape)(reaching_key) => 0,
+        _ => reaching,
+    };
+    let own_routes = match fresh {
+        Some(fresh) if tile.own_routes > 0 && !(fresh.shape)(OWN_ROUTES) => 0,
+        _ => tile.own_routes,
+    };
+    let units = units.saturating_add(reaching).saturating_add(own_routes);
+    work.add_piece(tile.key, units)
 }
 
 /// How many tiles of a ring, for each thread, a search works out at once
@@ -610,18 +657,49 @@ mod tests {
         unkept(&room, &chair, 0.0, None)
     }
 
+    /// The same, with posts a metre apart against the wall of the strip,
+    /// between which the chair still fits: no tile of floor is clear of
+    /// every obstacle, so finding whether the chair fits costs work.
+    fn crowded_to_the_wall_region() -> Region {
+        let mut room = crowded();
+        room.boxes.extend((0..6).map(|k| BoxObstacle {
+            name: format!("w{k}"),
+            corner_mm: Point3::new(5950.0, 1000.0 * f64::from(k), 0.0),
+            size_mm: Vector3::new(50.0, 50.0, 900.0),
+            yaw_rad: 0.0,
+        }));
+        let chair = Footprint::circle(300.0, 900.0);
+        unkept(&room, &chair, 0.0, None)
+    }
+
+    /// Where some tile of floor is clear of every obstacle, finding
+    /// whether a base fits costs nothing (the clear tile is looked at
+    /// first); the nearest floor to the middle would have cost the
+    /// crowded tiles round it.
+    #[test]
+    fn a_tile_clear_of_every_obstacle_answers_whether_a_base_fits_at_no_cost() {
+        let region = crowded_region();
+        let mut work = Work::new(&unbounded);
+        assert_eq!(region.emptiness(&mut work), Ok(false));
+        assert_eq!(work.done, 0);
+        let mut nearest = Work::new(&unbounded);
+        let middle = Point::new(3000.0, 3000.0);
+        assert!(crowded_region().nearest_counted(middle, None, &mut nearest).is_ok());
+        assert!(nearest.done > 10_000, "{}", nearest.done);
+    }
+
     /// Finding out whether a base fits anywhere counts every tile the
     /// search looks at, and is cut short (nothing kept) where that work
     /// would pass what it is allowed; found out, it is charged the same
     /// again without being worked out again.
     #[test]
     fn emptiness_counts_the_tiles_it_looks_at_and_is_cut_short_past_its_allowance() {
-        let region = crowded_region();
+        let region = crowded_to_the_wall_region();
         let mut whole = Work::new(&unbounded);
         assert_eq!(region.emptiness(&mut whole), Ok(false));
         assert!(whole.done > 10_000, "{}", whole.done);
         let short = |units: u64| units < whole.done;
-        let fresh = crowded_region();
+        let fresh = crowded_to_the_wall_region();
         let mut before = Work::new(&short);
         before.add(7).expect("allowed");
         let cut = fresh.emptiness(&mut before).expect_err("cut short");
@@ -638,14 +716,14 @@ mod tests {
     /// pieces that one did not look at, and for looking at the others.
     #[test]
     fn a_room_with_less_in_it_is_searched_only_where_the_wider_found_nothing() {
-        let wider = crowded_region();
+        let wider = crowded_to_the_wall_region();
         let mut whole = Work::new(&unbounded);
         assert_eq!(wider.emptiness(&mut whole), Ok(false));
-        let fits = crowded_region().beside(true, wider.looked());
+        let fits = crowded_to_the_wall_region().beside(true, wider.looked());
         let mut none = Work::new(&unbounded);
         assert_eq!(fits.emptiness(&mut none), Ok(false));
         assert_eq!(none.done, 0);
-        let searched = crowded_region().beside(false, wider.looked());
+        let searched = crowded_to_the_wall_region().beside(false, wider.looked());
         let mut looking = Work::new(&unbounded);
         assert_eq!(searched.emptiness(&mut looking), Ok(false));
         assert!(
