@@ -119,20 +119,10 @@ fn gather(
         }
         by_index.insert(shard.index, (path.clone(), parts));
     }
-    let count = count.unwrap_or(0);
-    let missing: Vec<String> = (1..=count)
-        .filter(|k| !by_index.contains_key(k))
-        .map(|k| format!("{k}/{count}"))
-        .collect();
-    if !missing.is_empty() {
-        let (noun, verb) = if missing.len() == 1 {
-            ("shard", "is")
-        } else {
-            ("shards", "are")
-        };
+    if let Some(words) = ShardOf::missing(count.unwrap_or(0), |k| by_index.contains_key(&k)) {
         return Err(Error::unplaced(ErrorKind::BadShard {
             path: file.display().to_string(),
-            why: format!("{noun} {} of its run {verb} not given", missing.join(", ")),
+            why: format!("{words} (of its run)"),
         }));
     }
     Ok(by_index

@@ -114,7 +114,7 @@ fn a_merge_refuses_shards_missing_repeated_foreign_or_not_shards() {
     .expect("written");
     let not_a_shard = not_a_shard.to_str().expect("UTF-8").to_string();
     let cases: [(Vec<String>, &str); 4] = [
-        (paths[..2].to_vec(), "shard 1/3 of its run is not given"),
+        (paths[..2].to_vec(), "shard 1/3 is not given (of its run)"),
         (
             vec![
                 paths[0].clone(),

@@ -40,6 +40,21 @@ impl ShardOf {
         Ok(ShardOf { index, count })
     }
 
+    /// Which of the `count` shards of a run are not given (`given` says
+    /// whether shard K is), in words: `shard 3/4 is not given`, `shards
+    /// 1/4, 3/4 are not given`; none where every one is.
+    pub fn missing(count: usize, given: impl Fn(usize) -> bool) -> Option<String> {
+        let missing: Vec<String> = (1..=count)
+            .filter(|&k| !given(k))
+            .map(|k| format!("{k}/{count}"))
+            .collect();
+        match missing.len() {
+            0 => None,
+            1 => Some(format!("shard {} is not given", missing[0])),
+            _ => Some(format!("shards {} are not given", missing.join(", "))),
+        }
+    }
+
     /// Its people of a population of `people`: the K-th of N ranges as
     /// equal as can be, in draw order (0 for the first).
     pub fn people(&self, people: usize) -> Range<usize> {
@@ -194,6 +209,16 @@ mod tests {
                 assert_eq!(next, people);
             }
         }
+    }
+
+    #[test]
+    fn the_shards_not_given_are_named() {
+        assert_eq!(ShardOf::missing(3, |k| k != 2), Some("shard 2/3 is not given".into()));
+        assert_eq!(
+            ShardOf::missing(4, |k| k == 2),
+            Some("shards 1/4, 3/4, 4/4 are not given".into())
+        );
+        assert_eq!(ShardOf::missing(2, |_| true), None);
     }
 
     #[test]

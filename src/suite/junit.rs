@@ -6,6 +6,7 @@
 use quick_junit::{NonSuccessKind, Report, TestCase, TestCaseStatus, TestSuite};
 
 use super::{Compared, Golden, Outcome};
+use crate::scenario::ShardOf;
 
 /// The name of the JUnit report of a whole suite.
 const NAME: &str = "reach test";
@@ -98,7 +99,7 @@ pub fn merge_junit(files: &[(String, String)]) -> Result<String, String> {
             .map_err(|e| format!("`{name}` is not JUnit XML: {e}"))?;
         let shard = (report.name.as_str().strip_prefix(NAME))
             .and_then(|rest| rest.strip_prefix(" shard "))
-            .and_then(|k_n| crate::scenario::ShardOf::parse(k_n).ok())
+            .and_then(|k_n| ShardOf::parse(k_n).ok())
             .ok_or_else(|| format!("`{name}` is not the JUnit file of a shard of `reach test` (its report is named `{}`)", report.name.as_str()))?;
         if count.is_some_and(|n| n != shard.count) {
             return Err(format!(
@@ -116,16 +117,8 @@ pub fn merge_junit(files: &[(String, String)]) -> Result<String, String> {
             ));
         }
     }
-    let count = count.unwrap_or(0);
-    let missing: Vec<String> = (1..=count)
-        .filter(|k| !by_index.contains_key(k))
-        .map(|k| format!("{k}/{count}"))
-        .collect();
-    if !missing.is_empty() {
-        return Err(format!(
-            "shard {} of the suite not given",
-            missing.join(", ")
-        ));
+    if let Some(words) = ShardOf::missing(count.unwrap_or(0), |k| by_index.contains_key(&k)) {
+        return Err(format!("{words} (of the suite)"));
     }
     let mut whole = Report::new(NAME);
     for (_, part) in by_index {
