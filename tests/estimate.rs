@@ -101,6 +101,7 @@ fn reach_check_estimate_says_what_to_raise_the_bound_to_and_that_bound_runs_to_t
         .skip_while(|l| !l.contains("share  task"))
         .collect();
     assert!(rows[1].ends_with("reach jar by users"), "{out}");
+    assert!(out.contains("the standards"), "its standard: {out}");
     let raise = out
         .split("`limits { solver_work ")
         .nth(1)

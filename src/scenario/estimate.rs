@@ -43,7 +43,8 @@ pub struct WorkEstimate {
     /// In the order of the file: the tasks estimated before the sample ran
     /// out of the bound (all of them where it did not).
     pub tasks: Vec<TaskWork>,
-    /// The standards' work, where the sample reached them.
+    /// The standards' work, where the scenario has standards and the
+    /// sample reached them.
     pub standards: Option<u64>,
     /// Whether the sample itself needed more than its budget (the tasks
     /// after the last listed were not estimated).
@@ -130,7 +131,7 @@ impl Scenario {
         }
         WorkEstimate {
             tasks,
-            standards: Some(run.spent() - before),
+            standards: (!self.standards.is_empty()).then(|| run.spent() - before),
             stopped: false,
             sample_units: run.spent(),
         }
@@ -204,7 +205,7 @@ impl WorkEstimate {
             let (share, n) = (percent(units, total), rest.len());
             let _ = writeln!(out, "  {:>width$}  {share:>3} %  {n} more tasks", thousands(units));
         }
-        if let Some(units) = self.standards.filter(|_| self.tasks.is_empty() || total > 0) {
+        if let Some(units) = self.standards {
             let share = percent(units, total);
             let _ = writeln!(out, "  {:>width$}  {share:>3} %  the standards", thousands(units));
         }
