@@ -62,7 +62,7 @@ internal_modules! {
     vision
 }
 
-pub use cache::TaskCache;
+pub use cache::{CacheStats, Plan, TaskCache};
 pub use error::{Diagnostics, Error, ErrorKind};
 pub use escape::escaped;
 pub use kept::Memo;

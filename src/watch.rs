@@ -25,6 +25,9 @@ use reach::{Input, Limits};
 
 /// A burst of events ends after this much quiet.
 const QUIET: Duration = Duration::from_millis(25);
+/// How long the tasks a save runs again may take before the answers kept
+/// are shown without them.
+const FIRST_WAIT: Duration = Duration::from_millis(30);
 /// How long a file that vanished (deleted before being written again) is
 /// waited for before it is reported missing.
 const MISSING_GRACE: Duration = Duration::from_millis(500);
@@ -157,9 +160,11 @@ impl State {
         // A run past the bound on solver work is an error like the others.
         // A bar on the terminal for a run that takes more than a second.
         let bar = crate::bar::Bar::new(!self.quiet);
-        let ran = checked.and_then(|scenario| match self.cache.run(&scenario, &bar) {
-            Ok(ran) => Ok((scenario, ran)),
-            Err(e) => Err(reach::Diagnostics::single(e).attach(&sources)),
+        let ran = checked.and_then(|scenario| {
+            match self.run_showing_first(&scenario, formatter, &bar, started) {
+                Ok(ran) => Ok((scenario, ran)),
+                Err(e) => Err(reach::Diagnostics::single(e).attach(&sources)),
+            }
         });
         bar.clear();
         let summary = match ran {
@@ -208,6 +213,57 @@ impl State {
         (sources.disk_paths(), screen)
     }
 
+    /// Run the scenario through the cache; where the tasks that must run
+    /// again have not finished within [`FIRST_WAIT`], show the answers
+    /// kept meanwhile, the others marked as being evaluated.
+    fn run_showing_first(
+        &mut self,
+        scenario: &reach::Scenario,
+        formatter: &dyn FormatPlugin,
+        bar: &crate::bar::Bar,
+        started: Instant,
+    ) -> Result<(Report, reach::CacheStats), reach::Error> {
+        let plan = self.cache.plan(scenario);
+        let first = plan
+            .first_report(scenario)
+            .map(|report| (report, plan.to_run()));
+        let quiet = self.quiet;
+        // The answers kept, the others marked, and a line naming those.
+        let first_screen = |(report, to_run): (Report, Vec<usize>)| {
+            let kept = report.tasks.len() - to_run.len() - scenario.standards.len();
+            let mut screen = String::new();
+            if !quiet {
+                let text = formatter.render(&report, &scenario.format_scene());
+                screen.push_str(&text.unwrap_or_default());
+            }
+            screen.push_str(&format!(
+                "\nfirst answers in {} ms ({kept} kept); evaluating {}\n",
+                started.elapsed().as_millis(),
+                named(&report, &to_run),
+            ));
+            screen
+        };
+        let (terminal, evaluation) = (self.terminal, self.evaluations);
+        let cache = &mut self.cache;
+        let (done, finished) = channel();
+        std::thread::scope(|scope| {
+            let finishing = scope.spawn(move || {
+                let ran = cache.finish(plan, scenario, bar);
+                let _ = done.send(());
+                ran
+            });
+            if let Some(first) = first {
+                if finished.recv_timeout(FIRST_WAIT) == Err(RecvTimeoutError::Timeout) {
+                    let header = format!("=== first answers, evaluation {evaluation} ===");
+                    print_screen(terminal, &header, &first_screen(first));
+                }
+            }
+            finishing
+                .join()
+                .unwrap_or_else(|panic| std::panic::resume_unwind(panic))
+        })
+    }
+
     /// Say at once that a save is being evaluated, and which files
     /// changed: the screen keeps the last results until the new ones are
     /// shown (a terminal), or the line comes before them (a pipe).
@@ -223,14 +279,8 @@ impl State {
 
     /// Replace the screen (terminal) or append after a separator (pipe).
     fn show(&self, screen: &str) {
-        let mut stdout = std::io::stdout().lock();
-        if self.terminal {
-            let _ = write!(stdout, "\x1b[2J\x1b[H");
-        } else {
-            let _ = writeln!(stdout, "=== evaluation {} ===", self.evaluations);
-        }
-        let _ = write!(stdout, "{screen}");
-        let _ = stdout.flush();
+        let header = format!("=== evaluation {} ===", self.evaluations);
+        print_screen(self.terminal, &header, screen);
     }
 
     /// Watch the directories of the scenario's files (and of the root file,
@@ -266,6 +316,18 @@ impl State {
         self.watched_dirs = dirs;
         self.watched_files = files;
     }
+}
+
+/// Replace the screen (`terminal`) or append after the `header` line.
+fn print_screen(terminal: bool, header: &str, screen: &str) {
+    let mut stdout = std::io::stdout().lock();
+    if terminal {
+        let _ = write!(stdout, "\x1b[2J\x1b[H");
+    } else {
+        let _ = writeln!(stdout, "{header}");
+    }
+    let _ = write!(stdout, "{screen}");
+    let _ = stdout.flush();
 }
 
 /// Block until one of `files` (or another `.reach` file beside them, which
@@ -352,18 +414,23 @@ fn expectations(report: &Report) -> String {
 /// "; run again: mug by ann, ..." (at most [`RERUN_NAMED`] named), or
 /// nothing where none or every one was.
 fn rerun(report: &Report, ran: &[usize]) -> String {
-    let tasks = &report.tasks;
-    if ran.is_empty() || ran.len() == tasks.len() {
+    if ran.is_empty() || ran.len() == report.tasks.len() {
         return String::new();
     }
-    let mut names: Vec<String> = (ran.iter().filter_map(|&i| tasks.get(i)))
+    format!("; run again: {}", named(report, ran))
+}
+
+/// The tasks at `positions` of `report`, by name: "mug by ann, ..." (at
+/// most [`RERUN_NAMED`] named).
+fn named(report: &Report, positions: &[usize]) -> String {
+    let mut names: Vec<String> = (positions.iter().filter_map(|&i| report.tasks.get(i)))
         .map(|t| t.answer().label())
         .take(RERUN_NAMED)
         .collect();
-    if ran.len() > RERUN_NAMED {
-        names.push(format!("and {} more", ran.len() - RERUN_NAMED));
+    if positions.len() > RERUN_NAMED {
+        names.push(format!("and {} more", positions.len() - RERUN_NAMED));
     }
-    format!("; run again: {}", names.join(", "))
+    names.join(", ")
 }
 
 /// The most tasks run again the summary names.

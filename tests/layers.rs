@@ -526,7 +526,7 @@ fn the_library_exports_the_run_api_and_the_plugin_sdk_only() {
         "pub mod report;",
         "pub mod suite;",
         // Watch mode's cache of answers, as the binary keeps one.
-        "pub use cache::TaskCache;",
+        "pub use cache::{CacheStats, Plan, TaskCache};",
         "pub use error::{Diagnostics, Error, ErrorKind};",
         "pub use escape::escaped;",
         "pub use kept::Memo;",

@@ -354,3 +354,51 @@ fn watch_quiet_shows_only_what_changed() {
         lines.join("\n")
     );
 }
+
+/// Where a save's tasks take a while (a map whose board moved), the
+/// answers kept are shown first, the others marked as being evaluated and
+/// named, with only the expectations about answers already found; the
+/// whole evaluation follows.
+#[test]
+fn watch_shows_the_answers_kept_while_the_rest_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("desk.reach");
+    let text = |desk_z: u32| {
+        format!(
+            "use std::arm\nroom kitchen {{\n  size 4000 x 4000 x 2500\n  \
+             box counter at (0, 0, 0) size (600, 2800, 900)\n  target mug at (400, 1150, 960)\n  \
+             box desk at (3000, 0, {desk_z}) size (1000, 4000, 20)\n}}\n\
+             person ben {{\n  mannequin right_arm\n  base fixed {{ at (850, 1300, 930) heading 180deg }}\n}}\n\
+             person ann {{\n  mannequin right_arm\n  base wheelchair\n}}\n\
+             reach mug by ben\nmap desk.top by ann {{ step 50mm }}\n\
+             expect ben reaches mug\nexpect ann covers desk.top >= 10 %\n"
+        )
+    };
+    std::fs::write(&file, text(700)).unwrap();
+    let mut w = Watch::start(&file);
+    w.expect("first results", 1);
+    std::fs::write(&file, text(701)).unwrap();
+    w.expect("=== evaluation 2", 1);
+    w.expect("evaluated in", 2);
+    let lines = w.lines.lock().unwrap().clone();
+    let at = |start: &str| lines.iter().position(|l| l.starts_with(start));
+    let all = lines.join("\n");
+    let (first, whole) = (
+        at("=== first answers, evaluation 2 ===").expect(&all),
+        at("=== evaluation 2").expect(&all),
+    );
+    assert!(first < whole, "{all}");
+    let shown = &lines[first..whole];
+    let has = |needle: &str| shown.iter().any(|l| l.contains(needle));
+    assert!(has("2 tasks, 1 ok, 1 evaluating"), "{all}");
+    assert!(has("desk.top by ann: evaluating ..."), "{all}");
+    assert!(has("met      ben reaches mug"), "{all}");
+    assert!(!has("ann covers desk.top"), "{all}");
+    assert!(has("(1 kept); evaluating desk.top by ann"), "{all}");
+    assert!(
+        lines[whole..]
+            .iter()
+            .any(|l| l.contains("met      ann covers desk.top")),
+        "{all}"
+    );
+}

@@ -69,6 +69,43 @@ type Held = ((TaskReport, u64), Option<Arc<touched::Kept>>);
 /// undone after up to this many saves takes its answers from before it.
 const GENERATIONS: usize = 3;
 
+/// Which tasks of a scenario keep an earlier answer ([`TaskCache::plan`]),
+/// to be finished by [`TaskCache::finish`].
+pub struct Plan {
+    keys: Vec<key::TaskKey>,
+    /// Each room's obstacles, as the keys of what a task touched see them.
+    seen: Vec<Vec<touched::Seen>>,
+    /// Each task's key with all of its room's obstacles.
+    whole: Vec<u64>,
+    /// Each task's answer kept from an earlier run, if any.
+    held: Vec<Option<Held>>,
+}
+
+impl Plan {
+    /// The tasks that must run, by their position in the scenario.
+    pub fn to_run(&self) -> Vec<usize> {
+        (0..self.held.len()).filter(|&i| self.held[i].is_none()).collect()
+    }
+
+    /// The report to show while the tasks that must run are running: the
+    /// answers kept, and each other task (and every standard, which looks
+    /// at the tasks' answers) marked as being evaluated; `None` where
+    /// every task keeps its answer, or none does.
+    pub fn first_report(&self, scenario: &Scenario) -> Option<Report> {
+        let kept = self.held.iter().filter(|h| h.is_some()).count();
+        if kept == 0 || kept == self.held.len() {
+            return None;
+        }
+        let tasks = (scenario.tasks.iter().zip(&self.held))
+            .map(|(task, held)| match held {
+                Some(((answer, _), _)) => answer.clone(),
+                None => scenario.evaluating(task),
+            })
+            .collect();
+        Some(scenario.report_evaluating(tasks))
+    }
+}
+
 /// How many tasks a cached run reused and how many it ran, and the work
 /// of all of them (the solver work a fresh run would count).
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -91,6 +128,15 @@ impl TaskCache {
         scenario: &Scenario,
         progress: &dyn Progress,
     ) -> Result<(Report, CacheStats), Error> {
+        let plan = self.plan(scenario);
+        self.finish(plan, scenario, progress)
+    }
+
+    /// Which of the scenario's tasks keep an answer of an earlier run
+    /// and which must run: the first half of [`TaskCache::run`], quick
+    /// (its keys and look-ups), so that watch mode can show the answers
+    /// kept before the rest are found.
+    pub fn plan(&mut self, scenario: &Scenario) -> Plan {
         let mut known = self.placements.clone();
         for older in &self.older_placements {
             for (k, tried) in older {
@@ -114,6 +160,28 @@ impl TaskCache {
         let held: Vec<Option<Held>> = (scenario.tasks.iter().zip(&keys).zip(&whole))
             .map(|((task, k), &whole)| self.held(k, whole, &seen[task.room]))
             .collect();
+        Plan {
+            keys,
+            seen,
+            whole,
+            held,
+        }
+    }
+
+    /// Run the tasks `plan` found no answer for, and report every task:
+    /// the second half of [`TaskCache::run`].
+    pub fn finish(
+        &mut self,
+        plan: Plan,
+        scenario: &Scenario,
+        progress: &dyn Progress,
+    ) -> Result<(Report, CacheStats), Error> {
+        let Plan {
+            keys,
+            seen,
+            whole,
+            held,
+        } = plan;
         let ran_tasks: Vec<usize> = (0..held.len()).filter(|&i| held[i].is_none()).collect();
         let stale: Vec<(&TaskSpec, &key::TaskKey)> = (scenario.tasks.iter().zip(&keys).zip(&held))
             .filter(|(_, h)| h.is_none())

@@ -6,7 +6,7 @@ use std::fmt::Write;
 
 use crate::escape::{escaped, escaped_keeping};
 use crate::plugin::{FormatPlugin, FormatScene, ParamSpec, Plugin};
-use crate::report::{Answer, Report, TaskReport};
+use crate::report::{Answer, Report, TaskReport, EVALUATING, WORK_LIMIT};
 
 pub struct Text;
 
@@ -36,12 +36,15 @@ impl FormatPlugin for Text {
         let ok = answers.iter().filter(|a| a.ok).count();
         let file = escaped(&report.file);
         let noun = if answers.len() == 1 { "task" } else { "tasks" };
-        let unrun = (report.tasks.iter())
-            .filter(|t| matches!(t, TaskReport::NotEvaluated(_)))
-            .count();
-        let unrun = match unrun {
-            0 => String::new(),
-            n => format!(", {n} not evaluated (work limit)"),
+        let unrun = |why: &str| {
+            (report.tasks.iter())
+                .filter(|t| matches!(t, TaskReport::NotEvaluated(n) if n.reason == why))
+                .count()
+        };
+        let unrun = match (unrun(WORK_LIMIT), unrun(EVALUATING)) {
+            (0, 0) => String::new(),
+            (0, n) => format!(", {n} evaluating"),
+            (n, _) => format!(", {n} not evaluated (work limit)"),
         };
         let _ = writeln!(out, "{file}: {} {noun}, {} ok{unrun}\n", answers.len(), ok);
         out.push_str(&table(&answers));

@@ -30,7 +30,7 @@ pub use entry_kind::{Asks, EntryKind, Kind, Tolerance};
 pub use expectation::ExpectationReport;
 pub use gaze::{GazeReport, Sight};
 pub use map::{MapCell, MapReport};
-pub use not_evaluated::{NotEvaluatedReport, WORK_LIMIT};
+pub use not_evaluated::{NotEvaluatedReport, EVALUATING, WORK_LIMIT};
 pub use not_placed::NotPlacedReport;
 pub use parts::{deg, fixed, mm, Asked, BaseReport, Names, Posture, BALANCE};
 pub use population::{

@@ -3,7 +3,9 @@
 //! it finished (the longest run of them, in the order of the file, whose
 //! work fits within the limit: the same on every run and thread count);
 //! each task after them is this entry, so that a long study shows what it
-//! found and says plainly what it did not look at.
+//! found and says plainly what it did not look at. Watch mode's first
+//! answers to a save mark the tasks still running with it too, as being
+//! evaluated.
 
 use std::fmt::Write as _;
 
@@ -25,12 +27,16 @@ pub struct NotEvaluatedReport {
     pub person: String,
     /// Always false: nothing was found.
     pub ok: bool,
-    /// Why it was not evaluated: `work limit`.
+    /// Why it was not evaluated: `work limit`, or (watch mode's first
+    /// answers) `evaluating`.
     pub reason: &'static str,
 }
 
-/// The one reason a task is not evaluated.
+/// The reason of a task the work limit stopped the run before.
 pub const WORK_LIMIT: &str = "work limit";
+/// The reason of a task still running when watch mode shows the answers
+/// it kept.
+pub const EVALUATING: &str = "evaluating";
 
 impl NotEvaluatedReport {
     pub fn new(task: &'static str, name: &str, person: &str) -> Self {
@@ -42,6 +48,22 @@ impl NotEvaluatedReport {
             reason: WORK_LIMIT,
         }
     }
+
+    /// The entry of a task still running.
+    pub fn evaluating(task: &'static str, name: &str, person: &str) -> Self {
+        NotEvaluatedReport {
+            reason: EVALUATING,
+            ..Self::new(task, name, person)
+        }
+    }
+
+    /// The verdict's words: `not evaluated: work limit`, `evaluating ...`.
+    fn words(&self) -> String {
+        match self.reason {
+            EVALUATING => "evaluating ...".to_string(),
+            reason => format!("not evaluated: {reason}"),
+        }
+    }
 }
 
 impl ReportKind for NotEvaluatedReport {
@@ -51,7 +73,7 @@ impl ReportKind for NotEvaluatedReport {
             subject: self.name.clone(),
             person: self.person.clone(),
             ok: false,
-            verdict: format!("not evaluated: {}", self.reason),
+            verdict: self.words(),
             effector: None,
             figures: Vec::new(),
         }
@@ -59,7 +81,11 @@ impl ReportKind for NotEvaluatedReport {
 
     fn details(&self, out: &mut String) {
         let answer = self.answer();
-        let _ = writeln!(out, "\n{}: not evaluated (work limit)", answer.label());
+        let words = match self.reason {
+            EVALUATING => "evaluating ...".to_string(),
+            reason => format!("not evaluated ({reason})"),
+        };
+        let _ = writeln!(out, "\n{}: {words}", answer.label());
     }
 }
 

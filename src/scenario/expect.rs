@@ -51,8 +51,20 @@ impl Scenario {
     }
 }
 
+impl ExpectCheck {
+    /// The report entries the expectation is about.
+    pub fn entries(&self) -> &[usize] {
+        match self {
+            ExpectCheck::Answers { entries, .. }
+            | ExpectCheck::Covers { entries, .. }
+            | ExpectCheck::Share { entries, .. }
+            | ExpectCheck::Meets { entries } => entries,
+        }
+    }
+}
+
 impl ExpectSpec {
-    fn judge(&self, reports: &[TaskReport]) -> ExpectationReport {
+    pub(super) fn judge(&self, reports: &[TaskReport]) -> ExpectationReport {
         let (met, because) = match &self.check {
             ExpectCheck::Answers {
                 entries,

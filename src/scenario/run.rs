@@ -207,6 +207,37 @@ impl Scenario {
         TaskReport::NotEvaluated(NotEvaluatedReport::new(label, task.subject_name(self), self.who(task)))
     }
 
+    /// The entry of `task` while it runs (watch mode's first answers).
+    pub fn evaluating(&self, task: &TaskSpec) -> TaskReport {
+        let label = task_label(&task.kind);
+        let (name, who) = (task.subject_name(self), self.who(task));
+        TaskReport::NotEvaluated(NotEvaluatedReport::evaluating(label, name, who))
+    }
+
+    /// The report to show while some of `tasks` (every task of the file,
+    /// in order) are still being evaluated ([`Scenario::evaluating`]):
+    /// every standard is too (it looks at the tasks' answers), and only
+    /// the expectations about the answers already found are judged.
+    pub fn report_evaluating(&self, mut tasks: Vec<TaskReport>) -> Report {
+        let standards = self.standards.iter().map(|spec| {
+            let room = format!("in {}", self.rooms[spec.room].name);
+            TaskReport::NotEvaluated(NotEvaluatedReport::evaluating("standard", &spec.name, &room))
+        });
+        tasks.extend(standards);
+        let answered = |k: &usize| !matches!(tasks.get(*k), Some(TaskReport::NotEvaluated(_)));
+        let expectations = (self.expectations.iter())
+            .filter(|e| e.check.entries().iter().all(answered))
+            .map(|e| e.judge(&tasks))
+            .collect();
+        Report {
+            schema: SCHEMA_VERSION,
+            file: self.file.clone(),
+            notes: self.notes(),
+            expectations,
+            tasks,
+        }
+    }
+
     /// `task` in words: `map high_far_half by chair_users`.
     pub fn task_words(&self, task: &TaskSpec) -> String {
         let label = task_label(&task.kind);
