@@ -9,6 +9,7 @@
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 
+use crate::count_arg::Count;
 use clap::{ArgMatches, Args, ColorChoice, CommandFactory, FromArgMatches, Parser, Subcommand};
 use reach::escaped;
 use reach::limits::{CEILINGS, DEFAULTS};
@@ -211,50 +212,50 @@ struct Evaluate {
 #[command(next_help_heading = "Limits")]
 struct LimitArgs {
     /// Largest file read: scenario, OBJ mesh, URDF
-    #[arg(long, value_name = "BYTES", default_value_t = DEFAULTS.file_bytes as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.file_bytes as u64))]
+    #[arg(long, value_name = "BYTES", default_value_t = DEFAULTS.file_bytes as u64, value_parser = Count(CEILINGS.file_bytes as u64))]
     max_file_bytes: u64,
     /// Largest scenario file (.reach), the root or a used one
-    #[arg(long, value_name = "BYTES", default_value_t = DEFAULTS.scenario_bytes as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.scenario_bytes as u64))]
+    #[arg(long, value_name = "BYTES", default_value_t = DEFAULTS.scenario_bytes as u64, value_parser = Count(CEILINGS.scenario_bytes as u64))]
     max_scenario_bytes: u64,
     /// Most boxes and meshes in one room
-    #[arg(long, value_name = "N", default_value_t = DEFAULTS.boxes as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.boxes as u64))]
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.boxes as u64, value_parser = Count(CEILINGS.boxes as u64))]
     max_boxes: u64,
     /// Deepest nesting of parentheses and braces
-    #[arg(long, value_name = "LEVELS", default_value_t = DEFAULTS.nesting as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.nesting as u64))]
+    #[arg(long, value_name = "LEVELS", default_value_t = DEFAULTS.nesting as u64, value_parser = Count(CEILINGS.nesting as u64))]
     max_nesting: u64,
     /// Most operands and operators in one expression
-    #[arg(long, value_name = "N", default_value_t = DEFAULTS.expression_terms as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.expression_terms as u64))]
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.expression_terms as u64, value_parser = Count(CEILINGS.expression_terms as u64))]
     max_expression_terms: u64,
     /// Longest chain of constants defined in terms of each other
-    #[arg(long, value_name = "N", default_value_t = DEFAULTS.constant_chain as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.constant_chain as u64))]
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.constant_chain as u64, value_parser = Count(CEILINGS.constant_chain as u64))]
     max_constant_chain: u64,
     /// Longest chain of files using each other
-    #[arg(long, value_name = "N", default_value_t = DEFAULTS.use_chain as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.use_chain as u64))]
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.use_chain as u64, value_parser = Count(CEILINGS.use_chain as u64))]
     max_use_chain: u64,
     /// Longest chain of mannequins naming each other
-    #[arg(long, value_name = "N", default_value_t = DEFAULTS.alias_chain as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.alias_chain as u64))]
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.alias_chain as u64, value_parser = Count(CEILINGS.alias_chain as u64))]
     max_alias_chain: u64,
     /// Most solver starts the tasks may need, counted at their worst
-    #[arg(long, value_name = "N", default_value_t = DEFAULTS.solver_starts as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.solver_starts as u64))]
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.solver_starts as u64, value_parser = Count(CEILINGS.solver_starts as u64))]
     max_solver_starts: u64,
     /// Most work the solvers may do in one run (about a joint moved once
     /// a unit), counted as they work, with the routes from the doors
-    #[arg(long, value_name = "UNITS", default_value_t = DEFAULTS.solver_work, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.solver_work))]
+    #[arg(long, value_name = "UNITS", default_value_t = DEFAULTS.solver_work, value_parser = Count(CEILINGS.solver_work))]
     max_solver_work: u64,
     /// Most people one population may draw, and most persons a scenario
     /// declares
-    #[arg(long, value_name = "N", default_value_t = DEFAULTS.people as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.people as u64))]
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.people as u64, value_parser = Count(CEILINGS.people as u64))]
     max_people: u64,
     /// Most triangles all the meshes of a scenario may hold (a glTF's
     /// instances placed)
-    #[arg(long, value_name = "N", default_value_t = DEFAULTS.triangles as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.triangles as u64))]
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.triangles as u64, value_parser = Count(CEILINGS.triangles as u64))]
     max_triangles: u64,
     /// Most joints in one mannequin (declared, or a URDF's chain)
-    #[arg(long, value_name = "N", default_value_t = DEFAULTS.joints as u64, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.joints as u64))]
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.joints as u64, value_parser = Count(CEILINGS.joints as u64))]
     max_joints: u64,
     /// How many times --max-solver-starts and --max-solver-work a scenario
     /// may raise its own bounds to (`limits { ... }` in the file)
-    #[arg(long, value_name = "TIMES", default_value_t = DEFAULTS.raise, value_parser = clap::value_parser!(u64).range(1..=CEILINGS.raise))]
+    #[arg(long, value_name = "TIMES", default_value_t = DEFAULTS.raise, value_parser = Count(CEILINGS.raise))]
     max_limits_raise: u64,
     /// Also read used files, meshes and URDFs from DIR (by default only
     /// from the scenario's own directory and below); may be repeated

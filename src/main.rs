@@ -2,6 +2,7 @@
 
 mod bar;
 mod cli;
+mod count_arg;
 mod man_pages;
 mod shard_command;
 mod signals;

@@ -35,6 +35,34 @@ fn run_prints_a_table_and_exits_0_even_when_a_target_is_unreachable() {
     );
 }
 
+/// A limit's count is read written out or in scientific notation (as
+/// `reach check --estimate` suggests it), and anything else, or a count
+/// beyond its ceiling, is a usage error naming the flag.
+#[test]
+fn limits_take_counts_written_out_or_in_scientific_notation() {
+    for count in ["250000000", "2.5e8", "25E7"] {
+        let o = reach(&[
+            "check",
+            "--max-solver-work",
+            count,
+            "examples/kitchen.reach",
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{count}: {}", stderr(&o));
+    }
+    for count in ["1.5", "2.55e0", "0", "-3", "1e30", "lots"] {
+        let flag = format!("--max-solver-work={count}");
+        let o = reach(&["check", &flag, "examples/kitchen.reach"]);
+        assert_eq!(o.status.code(), Some(2), "{count}: {}", stderr(&o));
+        let said = stderr(&o);
+        assert!(
+            said.contains(&format!(
+                "`{count}` for --max-solver-work is not a whole number from 1 to"
+            )),
+            "{said}"
+        );
+    }
+}
+
 /// A person whose chair fits nowhere in the room is an answer: the other
 /// person's answers are given, the run exits 0, and `--strict` makes it
 /// exit 3 (not 1, which says the input is wrong) after the same report.

@@ -115,6 +115,15 @@ fn reach_check_estimate_says_what_to_raise_the_bound_to_and_that_bound_runs_to_t
             .code(),
         Some(4)
     );
+    // The flag it names takes the same text (`1.2e9`).
+    let flag = out
+        .split(", or --max-solver-work ")
+        .nth(1)
+        .and_then(|rest| rest.split([' ', ';']).next())
+        .unwrap_or_else(|| panic!("no flag suggested: {out}"));
+    assert_eq!(flag, raise, "{out}");
+    let o = reach(&["run", "-q", "--max-solver-work", flag, file]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     let raised = format!("{}limits {{ solver_work {raise} }}\n", scenario(4));
     std::fs::write(file, raised).expect("written");
     let o = reach(&["run", "-q", "--max-solver-work", bound, file]);
