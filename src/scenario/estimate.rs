@@ -102,19 +102,22 @@ impl Scenario {
                     }
                 }
                 Some(p) => {
-                    let members = &self.populations[p].members;
-                    let sample = sample_size(members.len());
-                    let each: Vec<u64> = (members.start..members.start + sample)
+                    let population = &self.populations[p];
+                    let sample = sample_size(population.len());
+                    // The first people of the draw, those the check built.
+                    let people: Vec<usize> =
+                        (0..sample).filter_map(|i| population.person_of(i)).collect();
+                    let each: Vec<u64> = people
                         .into_par_iter()
                         .map(|person| self.run_member(task, person, progress, &run, charged).1)
                         .collect();
-                    let (units, half_width) = scaled(&each, members.len());
+                    let (units, half_width) = scaled(&each, population.len());
                     TaskWork {
                         label,
                         span: task.span,
                         units,
                         half_width,
-                        sampled: Some((sample, members.len())),
+                        sampled: Some((sample, population.len())),
                     }
                 }
             };

@@ -359,13 +359,8 @@ impl Scenario {
                         (vec![(ran.report, ran.work)], touched)
                     }
                     Job::Member { population, person } => {
-                        let each = by_population[&population]
-                            .iter()
-                            .map(|&k| {
-                                let charges = floor_charges.of(tasks[k]);
-                                self.run_member(tasks[k], person, progress, run, charges)
-                            })
-                            .collect();
+                        let own = by_population[&population].iter().map(|&k| tasks[k]);
+                        let each = self.run_member_tasks(own, person, progress, run, &floor_charges);
                         (each, None)
                     }
                 };
@@ -553,6 +548,21 @@ impl Scenario {
     /// people, where a map's counts its points).
     fn one_point(&self, task: &TaskSpec) -> bool {
         task.task.points(&task.subject_in(&self.rooms[task.room])) <= 1
+    }
+
+    /// Each of `tasks` (by one population, in order) for its member
+    /// `person`, one after another, and the work of each.
+    pub(super) fn run_member_tasks<'a>(
+        &self,
+        tasks: impl Iterator<Item = &'a TaskSpec>,
+        person: usize,
+        progress: &dyn Progress,
+        run: &Arc<RunWork>,
+        charges: &FloorCharges,
+    ) -> Vec<(TaskReport, u64)> {
+        tasks
+            .map(|task| self.run_member(task, person, progress, run, charges.of(task)))
+            .collect()
     }
 
     /// `task` (by a population) for its member `person`, and its work.

@@ -13,7 +13,7 @@ use std::sync::Arc;
 use rayon::prelude::*;
 
 use super::{Scenario, TaskSpec};
-use crate::error::Error;
+use crate::error::{Error, ErrorKind};
 use crate::kept::Memo;
 use crate::meter::RunWork;
 use crate::progress::Progress;
@@ -46,7 +46,7 @@ impl ShardOf {
     pub fn missing(count: usize, given: impl Fn(usize) -> bool) -> Option<String> {
         let missing: Vec<String> = (1..=count)
             .filter(|&k| !given(k))
-            .map(|k| format!("{k}/{count}"))
+            .map(|index| ShardOf { index, count }.to_string())
             .collect();
         match missing.len() {
             0 => None,
@@ -60,6 +60,13 @@ impl ShardOf {
     pub fn people(&self, people: usize) -> Range<usize> {
         let at = |k: usize| k * people / self.count;
         at(self.index - 1)..at(self.index)
+    }
+}
+
+impl std::fmt::Display for ShardOf {
+    /// `K/N`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}/{}", self.index, self.count)
     }
 }
 
@@ -127,16 +134,16 @@ impl Scenario {
         for (p, population) in self.populations.iter().enumerate() {
             let tasks = by_population(p);
             let range = shard.people(population.len());
-            let Some(members) = range.clone().map(|i| population.person_of(i)).collect::<Option<Vec<usize>>>() else {
-                unreachable!("a shard runs on a scenario checked with its people built")
+            let built: Option<Vec<usize>> = range.clone().map(|i| population.person_of(i)).collect();
+            let Some(members) = built else {
+                return Err(not_built(shard, &population.name));
             };
             let answers: Vec<Vec<TaskReport>> = members
                 .into_par_iter()
                 .map(|person| {
-                    (tasks.iter())
-                        .map(|(_, task)| {
-                            (self.run_member(task, person, progress, &run, charges.of(task))).0
-                        })
+                    let own = tasks.iter().map(|(_, task)| *task);
+                    (self.run_member_tasks(own, person, progress, &run, &charges).into_iter())
+                        .map(|(answer, _)| answer)
                         .collect()
                 })
                 .collect();
@@ -189,6 +196,15 @@ impl Scenario {
         let (report, standards) = self.report(tasks, work, memo)?;
         Ok((report, work + standards))
     }
+}
+
+/// The error of a shard run on a scenario whose check did not build that
+/// shard's people of `population` (`Session::building`).
+fn not_built(shard: ShardOf, population: &str) -> Error {
+    Error::unplaced(ErrorKind::Unsupported {
+        what: format!("shard {shard} of population `{population}`, whose people this scenario's check did not build"),
+        help: "check the scenario with this shard's people built (`Session::building` with `PeopleBuilt::Shard`)".to_string(),
+    })
 }
 
 #[cfg(test)]
