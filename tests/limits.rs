@@ -32,6 +32,11 @@ fn a_file_raises_its_own_bound_on_work_within_ten_times_the_command_lines() {
     let o = run_within_1e7(&plain, &[]);
     assert_eq!(o.status.code(), Some(4), "{}", stderr(&o));
     assert!(stderr(&o).contains("solver_work N"), "{}", stderr(&o));
+    assert!(
+        !stderr(&o).contains("the bound this file sets"),
+        "{}",
+        stderr(&o)
+    );
 
     let (_d, raised) = flat_with("limits { solver_work 1e8 }");
     let o = run_within_1e7(&raised, &[]);
@@ -50,14 +55,15 @@ fn a_file_raises_its_own_bound_on_work_within_ten_times_the_command_lines() {
     assert!(matches!(o.status.code(), Some(0 | 3)), "{}", stderr(&o));
 }
 
+/// A bound the file lowered stops the run, and the diagnostic points at
+/// the line that lowered it.
 #[test]
 fn a_file_lowers_its_own_bound_below_the_command_lines() {
     let (_d, lowered) = flat_with("limits { solver_work 1000000 }");
     let o = reach(&["run", lowered.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(4));
-    assert!(
-        stderr(&o).contains("limit of 1,000,000 units"),
-        "{}",
-        stderr(&o)
-    );
+    let err = stderr(&o);
+    assert!(err.contains("limit of 1,000,000 units"), "{err}");
+    assert!(err.contains("the bound this file sets"), "{err}");
+    assert!(err.contains("1 │ limits { solver_work 1000000 }"), "{err}");
 }

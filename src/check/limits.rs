@@ -7,6 +7,7 @@ use super::Checker;
 use crate::error::{Error, ErrorKind};
 use crate::limits::Limits;
 use crate::options::{ParamKind, ParamSpec, Value};
+use crate::span::Span;
 use crate::syntax::ast::LimitsDecl;
 
 /// The bounds a file may set: the option, the command line's flag, and
@@ -60,16 +61,19 @@ impl Checker<'_> {
         // Each checked; the first applied.
         for (k, &(decl, file)) in decls.iter().enumerate() {
             let limits = self.in_file(file, |c| c.limits_of(decl));
-            if let (0, Some(limits)) = (k, limits) {
+            if let (0, Some((limits, work_set_at))) = (k, limits) {
                 self.cx.limits = limits;
+                self.cx.work_set_at = work_set_at;
             }
         }
     }
 
-    /// The bounds `decl` sets, where it sets them within the ceiling.
-    fn limits_of(&mut self, decl: &LimitsDecl) -> Option<Limits> {
+    /// The bounds `decl` sets, where it sets them within the ceiling, and
+    /// where it sets the bound on solver work.
+    fn limits_of(&mut self, decl: &LimitsDecl) -> Option<(Limits, Option<Span>)> {
         let options = self.options("`limits`", &params(), &decl.options, decl.span)?;
         let mut limits = self.cx.limits;
+        let mut work_set_at = None;
         for bound in &BOUNDS {
             let Some(Value::Integer(asked)) = options.get(bound.name) else {
                 continue;
@@ -89,7 +93,11 @@ impl Checker<'_> {
                 continue;
             }
             *(bound.field)(&mut limits) = asked;
+            if bound.name == "solver_work" {
+                let at = decl.options.iter().find(|o| o.name.value == bound.name);
+                work_set_at = Some(at.map_or(decl.span, |o| o.value_span));
+            }
         }
-        Some(limits)
+        Some((limits, work_set_at))
     }
 }

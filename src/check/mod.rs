@@ -32,7 +32,7 @@ use crate::names::Suggestions;
 use crate::plugin::Registry;
 use crate::scenario::{PeopleBuilt, Scenario, WorkBound};
 use crate::source::Sources;
-use crate::span::{FileId, Spanned};
+use crate::span::{FileId, Span, Spanned};
 use crate::syntax::ast::{Item, LetDecl};
 use crate::units::{Quantity, Unit, UnitDefaults};
 
@@ -89,6 +89,7 @@ pub fn check(
             work: WorkBound {
                 limit: c.cx.limits.solver_work,
                 costliest,
+                set_at: c.cx.work_set_at,
             },
         })
     } else {
@@ -122,6 +123,9 @@ struct Context<'a> {
     /// far, and whether they passed their bound
     /// (`Checker::within_evaluated_text`).
     evaluated_text: (u64, bool),
+    /// Where the root file's `limits` sets the bound on solver work, if
+    /// it does.
+    work_set_at: Option<Span>,
     sources: &'a Sources,
     errors: Vec<Error>,
     /// The did-you-mean suggestions the check may still make.
@@ -193,6 +197,7 @@ impl<'a> Checker<'a> {
                 people_joints: (0, false),
                 built: PeopleBuilt::Everyone,
                 evaluated_text: (0, false),
+                work_set_at: None,
                 sources,
                 errors: Vec::new(),
                 suggestions,

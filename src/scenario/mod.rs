@@ -55,6 +55,9 @@ pub struct WorkBound {
     /// The task declaration that may ask the most (by the count of solver
     /// starts, so the same on every run), if there are tasks.
     pub costliest: Option<Span>,
+    /// Where the file's `limits` sets the bound, if it does: a run past
+    /// it points there too.
+    pub set_at: Option<Span>,
 }
 
 impl WorkBound {
@@ -70,18 +73,26 @@ impl WorkBound {
             left,
             first,
         };
-        match span {
+        self.noting_where_set(match span {
             Some(span) => Error::new(kind, span),
             None => Error::unplaced(kind),
-        }
+        })
     }
 
     /// The error of a run past the bound.
     pub fn exceeded(&self) -> Error {
         let kind = ErrorKind::TooMuchWork { limit: self.limit };
-        match self.costliest {
+        self.noting_where_set(match self.costliest {
             Some(span) => Error::new(kind, span),
             None => Error::unplaced(kind),
+        })
+    }
+
+    /// `error` with a note at the file's `limits` where it set the bound.
+    fn noting_where_set(&self, error: Error) -> Error {
+        match self.set_at {
+            Some(span) => error.with_note(span, "the bound this file sets"),
+            None => error,
         }
     }
 }
