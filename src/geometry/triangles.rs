@@ -5,8 +5,6 @@
 //! same solid as one wound outwards; a collision library would take it as
 //! everything outside).
 
-use std::collections::HashMap;
-
 use nalgebra::Point3;
 
 /// The triangles of `triangles` that have an area (and corners within
@@ -20,21 +18,10 @@ pub fn cleaned(vertices: &[Point3<f64>], triangles: &[[u32; 3]]) -> (Vec<[u32; 3
         .copied()
         .filter(|t| has_area(vertices, t))
         .collect();
-    // Counted once for all pieces: triangles sharing an edge are one piece,
-    // so an edge's count is its piece's.
-    let mut directed: HashMap<(u32, u32), u32> = HashMap::new();
-    for t in &kept {
-        for edge in edges(t) {
-            *directed.entry(edge).or_default() += 1;
-        }
-    }
-    let closed_edge =
-        |(a, b): (u32, u32)| directed[&(a, b)] == 1 && directed.get(&(b, a)) == Some(&1);
+    let (pieces, open) = pieces_and_open_edges(&kept);
     let mut every_piece_closed = true;
-    for piece in pieces(&kept) {
-        let closed = piece
-            .iter()
-            .all(|&i| edges(&kept[i]).into_iter().all(closed_edge));
+    for piece in pieces {
+        let closed = piece.iter().all(|&i| !open[i]);
         every_piece_closed &= closed;
         if closed && signed_volume(vertices, &kept, &piece) < 0.0 {
             for &i in &piece {
@@ -70,8 +57,21 @@ fn has_area(vertices: &[Point3<f64>], [a, b, c]: &[u32; 3]) -> bool {
 }
 
 /// The triangles in groups that share edges (connected pieces), each in
-/// ascending order, the pieces by their first triangle.
-fn pieces(triangles: &[[u32; 3]]) -> Vec<Vec<usize>> {
+/// ascending order, the pieces by their first triangle; and for each
+/// triangle whether one of its edges is open: not shared by exactly two
+/// triangles, once in each direction. Found from every edge sorted by its
+/// corners (no hashing: a million-triangle scan has three million edges).
+fn pieces_and_open_edges(triangles: &[[u32; 3]]) -> (Vec<Vec<usize>>, Vec<bool>) {
+    // Each edge as its corners in ascending order, whether it runs the
+    // other way, and its triangle.
+    let mut sides: Vec<(u64, bool, u32)> = Vec::with_capacity(triangles.len() * 3);
+    for (i, t) in triangles.iter().enumerate() {
+        for (a, b) in edges(t) {
+            let undirected = (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
+            sides.push((undirected, a > b, i as u32));
+        }
+    }
+    sides.sort_unstable();
     let mut parent: Vec<usize> = (0..triangles.len()).collect();
     fn root(parent: &mut [usize], mut i: usize) -> usize {
         while parent[i] != i {
@@ -80,32 +80,26 @@ fn pieces(triangles: &[[u32; 3]]) -> Vec<Vec<usize>> {
         }
         i
     }
-    let mut first_with_edge: HashMap<(u32, u32), usize> = HashMap::new();
-    for (i, t) in triangles.iter().enumerate() {
-        for (a, b) in edges(t) {
-            let key = (a.min(b), a.max(b));
-            match first_with_edge.get(&key) {
-                Some(&j) => {
-                    let (ri, rj) = (root(&mut parent, i), root(&mut parent, j));
-                    parent[ri.max(rj)] = ri.min(rj);
-                }
-                None => {
-                    first_with_edge.insert(key, i);
-                }
-            }
+    let mut open = vec![false; triangles.len()];
+    for same in sides.chunk_by(|x, y| x.0 == y.0) {
+        let closed = matches!(same, [(_, false, _), (_, true, _)]);
+        for &(_, _, i) in same {
+            open[i as usize] |= !closed;
+            let (ri, rj) = (root(&mut parent, i as usize), root(&mut parent, same[0].2 as usize));
+            parent[ri.max(rj)] = ri.min(rj);
         }
     }
     let mut groups: Vec<Vec<usize>> = Vec::new();
-    let mut group_of_root: HashMap<usize, usize> = HashMap::new();
+    let mut group_of_root: Vec<usize> = vec![usize::MAX; triangles.len()];
     for i in 0..triangles.len() {
         let r = root(&mut parent, i);
-        let g = *group_of_root.entry(r).or_insert_with(|| {
+        if group_of_root[r] == usize::MAX {
+            group_of_root[r] = groups.len();
             groups.push(Vec::new());
-            groups.len() - 1
-        });
-        groups[g].push(i);
+        }
+        groups[group_of_root[r]].push(i);
     }
-    groups
+    (groups, open)
 }
 
 fn edges([a, b, c]: &[u32; 3]) -> [(u32, u32); 3] {
@@ -154,6 +148,66 @@ pub(crate) fn unit_cube() -> (Vec<Point3<f64>>, Vec<[u32; 3]>) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use proptest::prelude::*;
+    use std::collections::HashMap;
+
+    /// The pieces and open edges counted the plain way: edges in hash
+    /// maps, pieces joined through the first triangle with each edge.
+    fn counted(triangles: &[[u32; 3]]) -> (Vec<Vec<usize>>, Vec<bool>) {
+        let mut directed: HashMap<(u32, u32), u32> = HashMap::new();
+        for t in triangles {
+            for edge in edges(t) {
+                *directed.entry(edge).or_default() += 1;
+            }
+        }
+        let closed = |(a, b): (u32, u32)| directed[&(a, b)] == 1 && directed.get(&(b, a)) == Some(&1);
+        let open = triangles.iter().map(|t| !edges(t).into_iter().all(closed)).collect();
+        let mut piece_of: Vec<usize> = (0..triangles.len()).collect();
+        // Joined until nothing changes: every triangle takes the least
+        // piece of a triangle it shares an edge with.
+        loop {
+            let mut changed = false;
+            for i in 0..triangles.len() {
+                for j in 0..triangles.len() {
+                    let shares = edges(&triangles[i]).iter().any(|&(a, b)| {
+                        edges(&triangles[j]).iter().any(|&(c, d)| (a, b) == (c, d) || (a, b) == (d, c))
+                    });
+                    if shares && piece_of[j] < piece_of[i] {
+                        piece_of[i] = piece_of[j];
+                        changed = true;
+                    }
+                }
+            }
+            if !changed {
+                break;
+            }
+        }
+        let mut pieces: Vec<Vec<usize>> = Vec::new();
+        for i in 0..triangles.len() {
+            match pieces.iter_mut().find(|p| piece_of[p[0]] == piece_of[i]) {
+                Some(p) => p.push(i),
+                None => pieces.push(vec![i]),
+            }
+        }
+        (pieces, open)
+    }
+
+    proptest! {
+        /// Triangles over a few corners, so that edges come again in
+        /// either direction, twice and more: the sorted edges find the
+        /// pieces and open edges the plain count finds.
+        #[test]
+        fn sorted_edges_find_what_counting_finds(
+            triangles in prop::collection::vec((0u32..7, 0u32..7, 0u32..7), 0..24)
+        ) {
+            let triangles: Vec<[u32; 3]> = triangles
+                .into_iter()
+                .filter(|(a, b, c)| a != b && b != c && a != c)
+                .map(|(a, b, c)| [a, b, c])
+                .collect();
+            prop_assert_eq!(pieces_and_open_edges(&triangles), counted(&triangles));
+        }
+    }
 
     #[test]
     fn an_outward_cube_stays_and_an_inward_one_turns() {
