@@ -72,7 +72,7 @@ pub fn watch(
         let read_before = state.watched_files.clone();
         let max_bytes = state.limits.file_bytes;
         let before = fingerprints(&read_before, max_bytes);
-        let (files, screen) = state.evaluate(registry, file, formatter, out);
+        let (files, screen) = state.evaluate(registry, file, formatter, out, (&mut watcher, &root));
         state.rewatch(&mut watcher, &root, files.clone());
         state.show(&screen);
         // Only where this evaluation read the same files is the
@@ -142,13 +142,16 @@ struct State {
 }
 
 impl State {
-    /// Check and run the scenario: the files read, and what to show.
+    /// Check and run the scenario: the files read, and what to show. The
+    /// files read are watched (`watching`) before any answer is shown, the
+    /// first answers included.
     fn evaluate(
         &mut self,
         registry: &Registry,
         file: &Path,
         formatter: &dyn FormatPlugin,
         out: Option<&Path>,
+        (watcher, root): (&mut RecommendedWatcher, &Path),
     ) -> (Vec<PathBuf>, String) {
         let started = Instant::now();
         self.evaluations += 1;
@@ -156,6 +159,7 @@ impl State {
             .limits(self.limits)
             .allowing(&self.also_allowed);
         let (sources, checked) = session.check(Input::Path(file), registry);
+        self.rewatch(watcher, root, sources.disk_paths());
         let mut screen = String::new();
         // A run past the bound on solver work is an error like the others.
         // A bar on the terminal for a run that takes more than a second.
@@ -224,18 +228,15 @@ impl State {
         started: Instant,
     ) -> Result<(Report, reach::CacheStats), reach::Error> {
         let plan = self.cache.plan(scenario);
-        let first = plan
-            .first_report(scenario)
+        // `-q` shows the summaries alone: no first answers.
+        let first = (plan.first_report(scenario))
+            .filter(|_| !self.quiet)
             .map(|report| (report, plan.to_run()));
-        let quiet = self.quiet;
         // The answers kept, the others marked, and a line naming those.
         let first_screen = |(report, to_run): (Report, Vec<usize>)| {
             let kept = report.tasks.len() - to_run.len() - scenario.standards.len();
-            let mut screen = String::new();
-            if !quiet {
-                let text = formatter.render(&report, &scenario.format_scene());
-                screen.push_str(&text.unwrap_or_default());
-            }
+            let text = formatter.render(&report, &scenario.format_scene());
+            let mut screen = text.unwrap_or_default();
             screen.push_str(&format!(
                 "\nfirst answers in {} ms ({kept} kept); evaluating {}\n",
                 started.elapsed().as_millis(),
