@@ -36,23 +36,22 @@ impl TypedValueParser for Count {
 }
 
 /// `text` as a whole number: digits (`250000000`), or a mantissa and a
-/// power of ten whose product is whole (`2.5e8`, `3E6`); none otherwise.
+/// power of ten whose product is whole (`2.5e8`, `3E6`, `.5e1`), with a
+/// `+` before either if need be; none otherwise.
 fn whole(text: &str) -> Option<u64> {
     let text = text.trim();
-    if let Ok(n) = text.parse::<u64>() {
-        return Some(n);
-    }
-    let (mantissa, exponent) = text.split_once(['e', 'E'])?;
-    let exponent: u32 = exponent
-        .strip_prefix('+')
-        .unwrap_or(exponent)
-        .parse()
-        .ok()?;
-    let (units, fraction) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let text = text.strip_prefix('+').unwrap_or(text);
+    let (mantissa, exponent) = match text.split_once(['e', 'E']) {
+        Some((mantissa, exponent)) => (mantissa, exponent.strip_prefix('+').unwrap_or(exponent)),
+        None => (text, "0"),
+    };
     let digits_only = |s: &str| s.bytes().all(|b| b.is_ascii_digit());
-    if units.is_empty() || !digits_only(units) || !digits_only(fraction) {
+    let (units, fraction) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let written = !(units.is_empty() && fraction.is_empty());
+    if !written || !digits_only(units) || !digits_only(fraction) || !digits_only(exponent) {
         return None;
     }
+    let exponent: u32 = exponent.parse().ok()?;
     // The fraction's digits beyond the exponent must be zeros.
     let places = u32::try_from(fraction.len()).ok()?;
     let shift = exponent.checked_sub(places).map_or_else(
@@ -75,8 +74,17 @@ mod tests {
 
     #[test]
     fn counts_are_read_written_out_and_in_scientific_notation() {
-        let table: [(&str, Option<u64>); 14] = [
+        let table: [(&str, Option<u64>); 23] = [
             ("250000000", Some(250_000_000)),
+            ("+2.5e8", Some(250_000_000)),
+            ("100.0", Some(100)),
+            (".5e1", Some(5)),
+            ("1.e3", Some(1_000)),
+            ("2e++8", None),
+            ("++5", None),
+            ("e", None),
+            (".e3", None),
+            ("1e4294967295", None),
             ("2.5e8", Some(250_000_000)),
             ("1.2e9", Some(1_200_000_000)),
             ("3E6", Some(3_000_000)),
