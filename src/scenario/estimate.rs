@@ -107,6 +107,7 @@ impl Scenario {
                     // The first people of the draw, those the check built.
                     let people: Vec<usize> =
                         (0..sample).filter_map(|i| population.person_of(i)).collect();
+                    let sample = people.len();
                     let each: Vec<u64> = people
                         .into_par_iter()
                         .map(|person| self.run_member(task, person, progress, &run, charged).1)

@@ -88,11 +88,13 @@ impl WorkBound {
         })
     }
 
-    /// `error` with a note at the file's `limits` where it set the bound.
+    /// `error` with a note at the file's `limits` where it set the bound
+    /// (an error placed nowhere else, there).
     fn noting_where_set(&self, error: Error) -> Error {
-        match self.set_at {
-            Some(span) => error.with_note(span, "the bound this file sets"),
-            None => error,
+        match (self.set_at, error.span()) {
+            (Some(set), Some(_)) => error.with_note(set, "the bound this file sets"),
+            (Some(set), None) => error.moved_to(set),
+            (None, _) => error,
         }
     }
 }
@@ -280,5 +282,28 @@ impl TaskSpec {
             SubjectRef::Target(i) => &scenario.rooms[self.room].targets[*i].name,
             SubjectRef::Surface(s) => &s.name,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::WorkBound;
+    use crate::span::{FileId, Span};
+
+    /// A run past a bound the file set is placed at the costliest task
+    /// (the note at the bound is `tests/limits.rs`'s), or where the file
+    /// has no task, at the bound itself, so that it is shown.
+    #[test]
+    fn a_bound_the_file_set_is_pointed_at() {
+        let task = Span::new(FileId(0), 10, 20);
+        let limits = Span::new(FileId(0), 30, 40);
+        let bound = |costliest, set_at| WorkBound {
+            limit: 1,
+            costliest,
+            set_at,
+        };
+        assert_eq!(bound(Some(task), Some(limits)).exceeded().span(), Some(task));
+        assert_eq!(bound(None, Some(limits)).exceeded().span(), Some(limits));
+        assert_eq!(bound(None, None).exceeded().span(), None);
     }
 }
