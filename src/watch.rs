@@ -72,8 +72,8 @@ pub fn watch(
         let read_before = state.watched_files.clone();
         let max_bytes = state.limits.file_bytes;
         let before = fingerprints(&read_before, max_bytes);
+        // The evaluation watches the files it read before it shows anything.
         let (files, screen) = state.evaluate(registry, file, formatter, out, (&mut watcher, &root));
-        state.rewatch(&mut watcher, &root, files.clone());
         state.show(&screen);
         // Only where this evaluation read the same files is the
         // fingerprint theirs.

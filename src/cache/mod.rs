@@ -176,13 +176,13 @@ impl TaskCache {
         scenario: &Scenario,
         progress: &dyn Progress,
     ) -> Result<(Report, CacheStats), Error> {
+        let ran_tasks = plan.to_run();
         let Plan {
             keys,
             seen,
             whole,
             held,
         } = plan;
-        let ran_tasks: Vec<usize> = (0..held.len()).filter(|&i| held[i].is_none()).collect();
         let stale: Vec<(&TaskSpec, &key::TaskKey)> = (scenario.tasks.iter().zip(&keys).zip(&held))
             .filter(|(_, h)| h.is_none())
             .map(|(task_key, _)| task_key)
