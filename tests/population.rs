@@ -359,6 +359,74 @@ room kitchen {
     );
 }
 
+/// `member` of the first population of `scenario`, written out by hand
+/// as a person `p` (its mannequin's arguments, profiles and seat height).
+fn member_alone(scenario: &Scenario, member: usize) -> String {
+    let drawn = &scenario.populations[0].drawn[member];
+    let seat = drawn.values.iter().find(|(n, _)| n == "seat").unwrap().1;
+    let profiles: String = drawn
+        .profiles
+        .iter()
+        .map(|p| format!(" profile {p}"))
+        .collect();
+    format!(
+        "person p {{\n  mannequin ansur_adult(\n    {}) {{{profiles} }}\n  base manual_wheelchair {{ seat_height {seat:?}mm }}\n}}\n",
+        arguments_of(scenario, member)
+    )
+}
+
+/// Members of a population share their floor group's bounds (the
+/// routes from the door, whether they fit at each heading, and which
+/// places are on their floor where the bounds decide): each member's
+/// answers are those it gets alone, where it shares nothing.
+#[test]
+fn members_sharing_their_groups_floor_answer_as_each_alone() {
+    let room = "units mm deg
+use std::populations
+room kitchen {
+  size 3500 x 3000 x 2500
+  box counter at (0, 0, 0) size (600, 3000, 900)
+  box island at (1500, 900, 0) size (900, 1000, 900)
+  box bin at (600, 2300, 0) size (400, 400, 700)
+  door hall at (3500, 2400) width 850mm
+  target kettle at (300, 1500, 960)
+  target shelf at (200, 1200, 1350)
+  target island_back at (2300, 1400, 960)
+  target corner at (300, 2750, 960)
+}
+";
+    let tasks = "reach kettle, shelf, island_back, corner by ";
+    let text =
+        format!("{room}population few = manual_wheelchair_users {{ size 4 seed 3 }}\n{tasks}few\n");
+    let (scenario, report) = run(&text);
+    let shares = population_reports(&report);
+    let mut mixed = false;
+    for member in 0..4 {
+        let alone = format!("{room}{}{tasks}p\n", member_alone(&scenario, member));
+        let (_, alone) = run(&alone);
+        let name = format!("few#{}", member + 1);
+        for (share, own) in shares.iter().zip(&alone.tasks) {
+            let own = own.answer();
+            let excluded = share.excluded.iter().find(|e| e.person == name);
+            assert_eq!(
+                excluded.is_none(),
+                own.ok,
+                "{name}, {}: {}",
+                share.name,
+                own.verdict
+            );
+            if let Some(e) = excluded {
+                assert_eq!(e.verdict, own.verdict, "{name}, {}", share.name);
+            }
+        }
+        mixed |= shares
+            .iter()
+            .any(|s| s.excluded.iter().any(|e| e.person == name))
+            && alone.tasks.iter().any(|t| t.answer().ok);
+    }
+    assert!(mixed, "some member reaches some targets and not others");
+}
+
 #[test]
 fn weighted_categories_give_each_person_at_most_one_profile_in_exact_counts() {
     let text = format!(

@@ -9,6 +9,7 @@ mod capability;
 mod descents_tests;
 mod face;
 mod fixed;
+mod bound_floor;
 mod placement;
 mod placing;
 pub mod search;

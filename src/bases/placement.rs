@@ -29,12 +29,13 @@ use rayon::prelude::*;
 
 use super::capability::{Capability, Sample};
 use super::face::face_normal;
+use super::bound_floor::{bound_floor, hash_zone, Searched};
 use super::placing::{Approach, Placing, SIDE_SLACK_MM};
 use super::search::{search, search_retrying_later, Candidate};
 use crate::allowance::{Allowance, Unbounded, Unmetered};
 use crate::floor::{
-    CutShort, DoorRoutes, Doorway, FloorGroup, FloorObstacles, Footprint, Looked, Misfit, Region,
-    Shut, Work,
+    BoundFloor, CutShort, DoorRoutes, Doorway, FloorGroup, FloorObstacles, Footprint, Looked, Misfit, Region,
+    Routes, Shut, Work,
 };
 use crate::geometry::Solid;
 use crate::kept::{Memo, Table};
@@ -48,11 +49,9 @@ use crate::scene::{column_solid, hash_bits, Blocked, OwnBody, Physique, Room};
 /// heading when turning changes nothing).
 type Regions = Vec<(f64, Arc<Region>)>;
 
-/// Whether the base fits at one of `regions`' headings, each region (a
-/// base that does not turn has one for all) found out in full, in
-/// parallel, so that the work, added to `work`, is the same whatever comes
-/// first. Cut short where that work would pass what `work` allows: each
-/// region tells what it has counted as it goes, and checks the sum.
+/// Whether the base fits at one of `regions`' headings, each distinct
+/// region (a base that does not turn has one for all) found out by
+/// [`emptiness_each`].
 fn any_fits(regions: &Regions, work: &mut Work<'_>) -> Result<bool, CutShort> {
     let mut distinct: Vec<&Region> = Vec::new();
     for (_, region) in regions {
@@ -60,9 +59,17 @@ fn any_fits(regions: &Regions, work: &mut Work<'_>) -> Result<bool, CutShort> {
             distinct.push(region);
         }
     }
+    Ok(emptiness_each(&distinct, work)?.contains(&false))
+}
+
+/// Whether each of `regions` is empty, each found out in full, in
+/// parallel, so that the work, added to `work`, is the same whatever
+/// comes first. Cut short where that work would pass what `work` allows:
+/// each region tells what it has counted as it goes, and checks the sum.
+pub(super) fn emptiness_each(regions: &[&Region], work: &mut Work<'_>) -> Result<Vec<bool>, CutShort> {
     let counted = AtomicU64::new(0);
     let outer: &Work<'_> = work;
-    let found: Vec<Result<bool, CutShort>> = distinct
+    let found: Vec<Result<bool, CutShort>> = regions
         .par_iter()
         .map(|region| {
             // The most this region has told: its work asked about so far.
@@ -80,7 +87,7 @@ fn any_fits(regions: &Regions, work: &mut Work<'_>) -> Result<bool, CutShort> {
         return Err(work.cut_short_with(total));
     }
     work.add(total)?;
-    Ok(found.contains(&Ok(false)))
+    Ok(found.into_iter().map(|f| f.unwrap_or(false)).collect())
 }
 
 /// Where the base may be placed in one room, worked out once.
@@ -122,9 +129,29 @@ fn hash_pair(a: u64, b: u64) -> u64 {
 /// `region`, beside what a room with more in it found (`Region::beside`).
 fn hinted(region: Region, there: Option<(bool, Looked)>) -> Arc<Region> {
     Arc::new(match there {
-        Some((fits, paid)) => region.beside(fits, paid),
+        Some((fits, paid)) => {
+            let known = region.known_empty() == Some(false);
+            region.beside(fits || known, paid)
+        }
         None => region,
     })
+}
+
+/// `region` (at heading `k`), told by its group's bounds' floor where it
+/// has one (`bound_floor.rs`): known to fit where the outer fits.
+fn bounded(region: Region, bounds: Option<&BoundFloor>, k: usize) -> Region {
+    let Some(bounds) = bounds else {
+        return region;
+    };
+    let region = match bounds.regions.get(k) {
+        Some(b) => region.bounded_by(b.clone()),
+        None => region,
+    };
+    if bounds.outer_fits.get(k) == Some(&true) {
+        region.beside(true, Looked::default())
+    } else {
+        region
+    }
 }
 
 /// A base that moves on the floor: its footprint, the person's own body
@@ -286,13 +313,7 @@ impl Mobile {
         if let Some(group) = self.group.get() {
             group.hash_into(&mut h);
         }
-        if let Some(zone) = &self.placing.zone {
-            hash_bits(&[zone.min.0, zone.min.1, zone.max.0, zone.max.1], &mut h);
-            if let Some(outline) = &zone.outline {
-                let corners = outline.exterior().coords().flat_map(|c| [c.x, c.y]);
-                hash_bits(&corners.collect::<Vec<f64>>(), &mut h);
-            }
-        }
+        hash_zone(self.placing.zone.as_ref(), &mut h);
         h.finish()
     }
 
@@ -319,10 +340,30 @@ impl Mobile {
             .map_err(|cut| work.cut_short_with(cut.work))?;
         let obstacles = Arc::new(obstacles);
         work.add(obstacles.work())?;
+        let searched = Searched {
+            room,
+            headings,
+            zone,
+        };
+        let group = self.group.get().map(Arc::as_ref);
+        let bound = |routes: Option<&Arc<Routes>>, work: &mut Work<'_>| {
+            let Some(group) = group else {
+                return Ok(None);
+            };
+            let left = |units: u64| work.allows(units);
+            let found = bound_floor(&searched, group, routes, &left, &memo)
+                .map_err(|cut| work.cut_short_with(cut.work))?;
+            let Some((floor, share)) = found else {
+                return Ok(None);
+            };
+            work.add(share)?;
+            Ok::<_, CutShort>(Some(floor))
+        };
+        let outer = bound(None, &mut work)?;
         let region = |k: usize, h: f64| {
             let obstacles = Arc::clone(&obstacles);
             let region = Region::new(room, &self.footprint, h, zone, obstacles, &memo);
-            hinted(region, found_there(hint, k))
+            hinted(bounded(region, outer.as_ref(), k), found_there(hint, k))
         };
         let regions: Regions = if self.footprint.turns() {
             (headings.iter().enumerate())
@@ -335,7 +376,6 @@ impl Mobile {
         let fits = any_fits(&regions, &mut work)?;
         let routes = if fits {
             let left = |units: u64| work.allows(units);
-            let group = self.group.get().map(Arc::as_ref);
             DoorRoutes::of(room, &self.footprint, group, headings, &left, &memo)
                 .map_err(|cut| work.cut_short_with(cut.work))?
         } else {
@@ -351,6 +391,10 @@ impl Mobile {
             });
         };
         work.add(routes_work)?;
+        let outer = match routes.outer_bound() {
+            Some(bound_routes) => bound(Some(bound_routes), &mut work)?,
+            None => None,
+        };
         let routes = Arc::new(routes);
         let reached = |k: usize, h: f64| {
             let obstacles = Arc::clone(&obstacles);
@@ -359,7 +403,7 @@ impl Mobile {
             // The pieces the search for whether it fits at all looked at
             // are those the routes cut: worked out once, charged once.
             let region = region.paid_by(&regions[k].1.looked());
-            hinted(region, found_there(hint, k))
+            hinted(bounded(region, outer.as_ref(), k), found_there(hint, k))
         };
         let regions: Regions = (headings.iter().enumerate())
             .map(|(k, &h)| (h, reached(k, h)))

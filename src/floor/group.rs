@@ -14,6 +14,7 @@ use std::sync::{Arc, Mutex};
 use nalgebra::Vector2;
 
 use super::footprint::convex_hull;
+use super::tiles::Bounds;
 use super::{FloorPart, Footprint, Routes};
 use crate::scene::{hash_bits, Room};
 
@@ -37,6 +38,19 @@ pub struct FloorGroup {
     /// ([`FloorGroup::routes_key`]): worked out by the first member that
     /// asks (two at once may both), kept for the group's life.
     routes: Mutex<HashMap<u64, BoundRoutes>>,
+    /// The bounds' floor by room, headings, zone and routes
+    /// ([`FloorGroup::floor`]).
+    floors: Mutex<HashMap<u64, BoundFloor>>,
+}
+
+/// The floor of a group's bounds in one room: their regions at each
+/// heading searched (in heading order), whether the outer's is not empty
+/// at each, and what finding out cost the whole group.
+#[derive(Clone)]
+pub struct BoundFloor {
+    pub regions: Vec<Bounds>,
+    pub outer_fits: Arc<[bool]>,
+    pub work: u64,
 }
 
 impl std::fmt::Debug for FloorGroup {
@@ -79,6 +93,7 @@ impl FloorGroup {
             inner,
             members: members.len(),
             routes: Mutex::default(),
+            floors: Mutex::default(),
         })
     }
 
@@ -98,15 +113,23 @@ impl FloorGroup {
         key: u64,
         compute: impl FnOnce() -> Result<Option<BoundRoutes>, E>,
     ) -> Result<Option<BoundRoutes>, E> {
-        let lock = || self.routes.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some(found) = lock().get(&key) {
-            return Ok(Some(found.clone()));
-        }
-        let found = compute()?;
-        if let Some(found) = &found {
-            lock().insert(key, found.clone());
-        }
-        Ok(found)
+        kept_or(&self.routes, key, compute)
+    }
+
+    /// The bounds' floor kept by `key`, or `compute`'s, kept where it is
+    /// worked out (not cut short).
+    pub fn floor<E>(
+        &self,
+        key: u64,
+        compute: impl FnOnce() -> Result<Option<BoundFloor>, E>,
+    ) -> Result<Option<BoundFloor>, E> {
+        kept_or(&self.floors, key, compute)
+    }
+
+    /// A member's share of `units` of the group's work (each member is
+    /// charged alike, whichever works it out).
+    pub fn share(&self, units: u64) -> u64 {
+        units.div_ceil(self.members.max(1) as u64)
     }
 
     /// Hashed bit for bit (what a member's floor depends on).
@@ -118,6 +141,25 @@ impl FloorGroup {
         }
         self.members.hash(h);
     }
+}
+
+/// What `map` keeps by `key`, or `compute`'s, kept where it is worked out
+/// (two threads asking at once may both work it out; the first kept
+/// stays).
+fn kept_or<T: Clone, E>(
+    map: &Mutex<HashMap<u64, T>>,
+    key: u64,
+    compute: impl FnOnce() -> Result<Option<T>, E>,
+) -> Result<Option<T>, E> {
+    let lock = || map.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some(found) = lock().get(&key) {
+        return Ok(Some(found.clone()));
+    }
+    let found = compute()?;
+    if let Some(found) = &found {
+        return Ok(Some(lock().entry(key).or_insert_with(|| found.clone()).clone()));
+    }
+    Ok(found)
 }
 
 /// Part `k` of every member held: the convex hull of their outlines with

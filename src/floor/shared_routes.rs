@@ -129,6 +129,15 @@ impl DoorRoutes {
         Ok(Some((DoorRoutes::Shared(Arc::new(routes)), work)))
     }
 
+    /// The routes of the group's outer bound, where these are bounded by
+    /// its group's.
+    pub fn outer_bound(&self) -> Option<&Arc<Routes>> {
+        match self {
+            DoorRoutes::Own(_) => None,
+            DoorRoutes::Shared(s) => Some(&s.outer),
+        }
+    }
+
     /// Whether the base comes in through any door.
     pub fn enters(&self) -> bool {
         match self {

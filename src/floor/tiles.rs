@@ -94,6 +94,20 @@ pub struct Region {
     paid: Looked,
     /// Where the tiles' pieces are kept for other regions and runs.
     memo: Arc<Memo>,
+    /// The regions of the bounds of the group (a population) the
+    /// footprint is one of, at the same heading, where it has them.
+    bounds: Option<Bounds>,
+}
+
+/// The regions of a group's bounds (`group.rs`) at one heading: where the
+/// outer's (which holds every member's footprint) has a point, so does
+/// each member's; where the inner's (which every member's holds) has
+/// none, no member's has. The outer's is cut to its routes where the
+/// member's is cut to its own.
+#[derive(Clone)]
+pub struct Bounds {
+    pub outer: Arc<Region>,
+    pub inner: Arc<Region>,
 }
 
 /// The pieces of `region` a base facing `heading_rad` can get to by
@@ -150,7 +164,26 @@ impl Region {
             routes: None,
             paid: Looked::default(),
             memo: Arc::clone(memo),
+            bounds: None,
         }
+    }
+
+    /// The region, told by `bounds` where they decide whether it holds a
+    /// point (its own tile is then not worked out).
+    pub fn bounded_by(self, bounds: Bounds) -> Self {
+        Region {
+            bounds: Some(bounds),
+            ..self
+        }
+    }
+
+    /// Whether `(x, y)` is inside the region, where its bounds tell.
+    fn by_bounds(&self, x: f64, y: f64) -> Option<bool> {
+        let bounds = self.bounds.as_ref()?;
+        if bounds.outer.contains(x, y) {
+            return Some(true);
+        }
+        (!bounds.inner.contains(x, y)).then_some(false)
     }
 
     /// The part of the region a base can get to from the room's doors
@@ -260,6 +293,9 @@ impl Region {
 
     /// Whether `(x, y)` is inside the region, not on its boundary.
     pub fn contains(&self, x: f64, y: f64) -> bool {
+        if let Some(known) = self.by_bounds(x, y) {
+            return known;
+        }
         self.tile_of(x, y)
             .is_some_and(|(i, j)| self.tile(i, j).inside.contains(x, y))
     }
@@ -267,6 +303,9 @@ impl Region {
     /// Like `contains`, for ruling points out quickly (a point on the
     /// boundary may go either way).
     pub fn roughly_contains(&self, x: f64, y: f64) -> bool {
+        if let Some(known) = self.by_bounds(x, y) {
+            return known;
+        }
         self.tile_of(x, y)
             .is_some_and(|(i, j)| self.tile(i, j).inside.roughly_contains(x, y))
     }
