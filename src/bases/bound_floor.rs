@@ -16,11 +16,20 @@ use std::hash::{Hash, Hasher};
 use std::sync::Arc;
 
 use crate::floor::{
-    BoundFloor, Bounds, CutShort, DoorRoutes, FloorGroup, FloorObstacles, Footprint, Region,
+    emptiness_each, Bounds, CutShort, DoorRoutes, FloorGroup, FloorObstacles, Footprint, Region,
     Routes, Work, Zone,
 };
 use crate::kept::Memo;
 use crate::scene::{hash_bits, Room};
+
+/// The floor of a group's bounds in one room: their regions at each
+/// heading searched (in heading order), whether the outer's is not empty
+/// at each, and what finding out cost the whole group.
+pub struct BoundFloor {
+    pub regions: Vec<Bounds>,
+    pub outer_fits: Vec<bool>,
+    pub work: u64,
+}
 
 /// The room, headings and zone a member's floor is searched in.
 pub struct Searched<'a> {
@@ -39,10 +48,10 @@ pub fn bound_floor(
     routes: Option<&Arc<Routes>>,
     within: &(dyn Fn(u64) -> bool + Sync),
     memo: &Arc<Memo>,
-) -> Result<Option<(BoundFloor, u64)>, CutShort> {
+) -> Result<Option<(Arc<BoundFloor>, u64)>, CutShort> {
     let shared = |units: u64| within(group.share(units));
     let floor = group
-        .floor(key(searched, group, routes.is_some()), || {
+        .shared(key(searched, group, routes.is_some()), || {
             worked_out(searched, group, routes, &shared, memo).map(Some)
         })
         .map_err(|cut| CutShort {
@@ -57,6 +66,7 @@ pub fn bound_floor(
 /// What the bounds' floor is kept by in its group.
 fn key(searched: &Searched<'_>, group: &FloorGroup, routed: bool) -> u64 {
     let mut h = DefaultHasher::new();
+    "the bounds' floor".hash(&mut h);
     group.routes_key(searched.room, searched.headings).hash(&mut h);
     hash_zone(searched.zone, &mut h);
     routed.hash(&mut h);
@@ -87,7 +97,7 @@ fn worked_out(
     let mut work = Work::new(within);
     let outer = regions(searched, &group.outer, routes, &mut work, memo)?;
     let inner = regions(searched, &group.inner, None, &mut work, memo)?;
-    let empty = super::placement::emptiness_each(&outer.iter().collect::<Vec<_>>(), &mut work)?;
+    let empty = emptiness_each(&outer.iter().collect::<Vec<_>>(), &mut work)?;
     let regions = (outer.into_iter().zip(inner))
         .map(|(outer, inner)| Bounds {
             outer: Arc::new(outer),

@@ -19,22 +19,19 @@ use std::collections::hash_map::DefaultHasher;
 use std::collections::HashMap;
 use std::hash::{Hash, Hasher};
 use std::rc::Rc;
-use std::sync::atomic::AtomicU64;
-use std::sync::atomic::Ordering::Relaxed;
 use std::sync::{Arc, Mutex, OnceLock, Weak};
 
 use geo::{MultiPolygon, Point};
 use nalgebra::{Point3, Rotation2, Vector2};
-use rayon::prelude::*;
 
 use super::capability::{Capability, Sample};
 use super::face::face_normal;
-use super::bound_floor::{bound_floor, hash_zone, Searched};
+use super::bound_floor::{bound_floor, hash_zone, BoundFloor, Searched};
 use super::placing::{Approach, Placing, SIDE_SLACK_MM};
 use super::search::{search, search_retrying_later, Candidate};
 use crate::allowance::{Allowance, Unbounded, Unmetered};
 use crate::floor::{
-    BoundFloor, CutShort, DoorRoutes, Doorway, FloorGroup, FloorObstacles, Footprint, Looked, Misfit, Region,
+    emptiness_each, CutShort, DoorRoutes, Doorway, FloorGroup, FloorObstacles, Footprint, Looked, Misfit, Region,
     Routes, Shut, Work,
 };
 use crate::geometry::Solid;
@@ -60,34 +57,6 @@ fn any_fits(regions: &Regions, work: &mut Work<'_>) -> Result<bool, CutShort> {
         }
     }
     Ok(emptiness_each(&distinct, work)?.contains(&false))
-}
-
-/// Whether each of `regions` is empty, each found out in full, in
-/// parallel, so that the work, added to `work`, is the same whatever
-/// comes first. Cut short where that work would pass what `work` allows:
-/// each region tells what it has counted as it goes, and checks the sum.
-pub(super) fn emptiness_each(regions: &[&Region], work: &mut Work<'_>) -> Result<Vec<bool>, CutShort> {
-    let counted = AtomicU64::new(0);
-    let outer: &Work<'_> = work;
-    let found: Vec<Result<bool, CutShort>> = regions
-        .par_iter()
-        .map(|region| {
-            // The most this region has told: its work asked about so far.
-            let told = AtomicU64::new(0);
-            let allowed = |own: u64| {
-                let more = own.saturating_sub(told.fetch_max(own, Relaxed));
-                let all = counted.fetch_add(more, Relaxed).saturating_add(more);
-                outer.allows(all)
-            };
-            region.emptiness(&mut Work::new(&allowed))
-        })
-        .collect();
-    let total = counted.into_inner();
-    if found.iter().any(Result::is_err) {
-        return Err(work.cut_short_with(total));
-    }
-    work.add(total)?;
-    Ok(found.into_iter().map(|f| f.unwrap_or(false)).collect())
 }
 
 /// Where the base may be placed in one room, worked out once.
@@ -363,7 +332,7 @@ impl Mobile {
         let region = |k: usize, h: f64| {
             let obstacles = Arc::clone(&obstacles);
             let region = Region::new(room, &self.footprint, h, zone, obstacles, &memo);
-            hinted(bounded(region, outer.as_ref(), k), found_there(hint, k))
+            hinted(bounded(region, outer.as_deref(), k), found_there(hint, k))
         };
         let regions: Regions = if self.footprint.turns() {
             (headings.iter().enumerate())
@@ -403,7 +372,7 @@ impl Mobile {
             // The pieces the search for whether it fits at all looked at
             // are those the routes cut: worked out once, charged once.
             let region = region.paid_by(&regions[k].1.looked());
-            hinted(bounded(region, outer.as_ref(), k), found_there(hint, k))
+            hinted(bounded(region, outer.as_deref(), k), found_there(hint, k))
         };
         let regions: Regions = (headings.iter().enumerate())
             .map(|(k, &h)| (h, reached(k, h)))

@@ -7,6 +7,7 @@
 //! only where the two leave a place undecided (`shared_routes.rs`).
 
 use std::collections::hash_map::DefaultHasher;
+use std::any::Any;
 use std::collections::HashMap;
 use std::hash::Hasher;
 use std::sync::{Arc, Mutex};
@@ -14,7 +15,6 @@ use std::sync::{Arc, Mutex};
 use nalgebra::Vector2;
 
 use super::footprint::convex_hull;
-use super::tiles::Bounds;
 use super::{FloorPart, Footprint, Routes};
 use crate::scene::{hash_bits, Room};
 
@@ -38,19 +38,9 @@ pub struct FloorGroup {
     /// ([`FloorGroup::routes_key`]): worked out by the first member that
     /// asks (two at once may both), kept for the group's life.
     routes: Mutex<HashMap<u64, BoundRoutes>>,
-    /// The bounds' floor by room, headings, zone and routes
-    /// ([`FloorGroup::floor`]).
-    floors: Mutex<HashMap<u64, BoundFloor>>,
-}
-
-/// The floor of a group's bounds in one room: their regions at each
-/// heading searched (in heading order), whether the outer's is not empty
-/// at each, and what finding out cost the whole group.
-#[derive(Clone)]
-pub struct BoundFloor {
-    pub regions: Vec<Bounds>,
-    pub outer_fits: Arc<[bool]>,
-    pub work: u64,
+    /// What else the members share, by key, of whatever type it is (the
+    /// bounds' floor, `bases/bound_floor.rs`) ([`FloorGroup::shared`]).
+    shared: Mutex<HashMap<u64, Arc<dyn Any + Send + Sync>>>,
 }
 
 impl std::fmt::Debug for FloorGroup {
@@ -93,7 +83,7 @@ impl FloorGroup {
             inner,
             members: members.len(),
             routes: Mutex::default(),
-            floors: Mutex::default(),
+            shared: Mutex::default(),
         })
     }
 
@@ -116,14 +106,25 @@ impl FloorGroup {
         kept_or(&self.routes, key, compute)
     }
 
-    /// The bounds' floor kept by `key`, or `compute`'s, kept where it is
-    /// worked out (not cut short).
-    pub fn floor<E>(
+    /// What the members share kept by `key` (a key for one type of
+    /// value), or `compute`'s, kept where it is worked out (not cut
+    /// short; two threads asking at once may both work it out, and the
+    /// first kept stays).
+    pub fn shared<T: Any + Send + Sync, E>(
         &self,
         key: u64,
-        compute: impl FnOnce() -> Result<Option<BoundFloor>, E>,
-    ) -> Result<Option<BoundFloor>, E> {
-        kept_or(&self.floors, key, compute)
+        compute: impl FnOnce() -> Result<Option<T>, E>,
+    ) -> Result<Option<Arc<T>>, E> {
+        let lock = || self.shared.lock().unwrap_or_else(|e| e.into_inner());
+        let found = lock().get(&key).cloned();
+        if let Some(found) = found.and_then(|f| f.downcast::<T>().ok()) {
+            return Ok(Some(found));
+        }
+        let Some(found) = compute()? else {
+            return Ok(None);
+        };
+        let kept = Arc::clone(lock().entry(key).or_insert_with(|| Arc::new(found)));
+        Ok(kept.downcast::<T>().ok())
     }
 
     /// A member's share of `units` of the group's work (each member is

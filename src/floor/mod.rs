@@ -26,7 +26,7 @@ pub use clear::{
     disc_centre, door_clear_width, knee_limited, route_width, t_space, FreeFloor, RouteFloor,
 };
 pub use footprint::{FloorPart, Footprint};
-pub use group::{BoundFloor, FloorGroup, GROUP_MARGIN_MM};
+pub use group::{FloorGroup, GROUP_MARGIN_MM};
 pub use inside::Inside;
 pub use mesh_cells::{CELL_MM, FLOOR_TOLERANCE_MM};
 pub use misfit::Misfit;
@@ -34,5 +34,5 @@ pub use obstacles::FloorObstacles;
 pub use region::{admissible, Zone};
 pub use routes::{Doorway, Entry, Routes, Shut};
 pub use shared_routes::DoorRoutes;
-pub use tiles::{Bounds, Region};
+pub use tiles::{emptiness_each, Bounds, Region};
 pub use work::{unbounded, CutShort, Looked, Work};

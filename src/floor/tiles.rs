@@ -8,9 +8,12 @@
 
 use std::cell::RefCell;
 use std::collections::HashSet;
+use std::sync::atomic::AtomicU64;
+use std::sync::atomic::Ordering::Relaxed;
 use std::sync::{Arc, OnceLock};
 
 use geo::{Closest, ClosestPoint, Coord, MultiPolygon, Point, Rect};
+use rayon::prelude::*;
 
 use super::layer::overlap;
 use super::obstacles::FloorObstacles;
@@ -108,6 +111,34 @@ pub struct Region {
 pub struct Bounds {
     pub outer: Arc<Region>,
     pub inner: Arc<Region>,
+}
+
+/// Whether each of `regions` is empty, each found out in full, in
+/// parallel, so that the work, added to `work`, is the same whatever
+/// comes first. Cut short where that work would pass what `work` allows:
+/// each region tells what it has counted as it goes, and checks the sum.
+pub fn emptiness_each(regions: &[&Region], work: &mut Work<'_>) -> Result<Vec<bool>, CutShort> {
+    let counted = AtomicU64::new(0);
+    let outer: &Work<'_> = work;
+    let found: Vec<Result<bool, CutShort>> = regions
+        .par_iter()
+        .map(|region| {
+            // The most this region has told: its work asked about so far.
+            let told = AtomicU64::new(0);
+            let allowed = |own: u64| {
+                let more = own.saturating_sub(told.fetch_max(own, Relaxed));
+                let all = counted.fetch_add(more, Relaxed).saturating_add(more);
+                outer.allows(all)
+            };
+            region.emptiness(&mut Work::new(&allowed))
+        })
+        .collect();
+    let total = counted.into_inner();
+    if found.iter().any(Result::is_err) {
+        return Err(work.cut_short_with(total));
+    }
+    work.add(total)?;
+    Ok(found.into_iter().map(|f| f.unwrap_or(false)).collect())
 }
 
 /// The pieces of `region` a base facing `heading_rad` can get to by
