@@ -253,6 +253,10 @@ struct LimitArgs {
     /// Most joints in one mannequin (declared, or a URDF's chain)
     #[arg(long, value_name = "N", default_value_t = DEFAULTS.joints as u64, value_parser = Count(CEILINGS.joints as u64))]
     max_joints: u64,
+    /// Most points the tasks of one run answer together (a map's every
+    /// point once for each person, a population's map once)
+    #[arg(long, value_name = "N", default_value_t = DEFAULTS.map_points, value_parser = Count(CEILINGS.map_points))]
+    max_map_points: u64,
     /// How many times --max-solver-starts and --max-solver-work a scenario
     /// may raise its own bounds to (`limits { ... }` in the file)
     #[arg(long, value_name = "TIMES", default_value_t = DEFAULTS.raise, value_parser = Count(CEILINGS.raise))]
@@ -279,6 +283,7 @@ impl LimitArgs {
             people: self.max_people as usize,
             triangles: self.max_triangles as usize,
             joints: self.max_joints as usize,
+            map_points: self.max_map_points,
             raise: self.max_limits_raise,
         }
     }

@@ -50,6 +50,12 @@ pub struct Limits {
     /// of a URDF from root to tip (each posture check pairs a chain's
     /// solids with each other: quadratic in the joints).
     pub joints: usize,
+    /// Most points the tasks of one run answer together: each point of a
+    /// map once for each person (a population's map once), a reach or gaze
+    /// one. Each point's answer is held in the report and written to
+    /// several files (JSON, HTML, a map's CSV and SVG), all in memory
+    /// until the set is written.
+    pub map_points: u64,
     /// How many times these bounds a scenario may raise its own bounds on
     /// solver starts and work to (`limits { ... }` in the file it runs):
     /// a file from elsewhere runs for hours only where the user says so.
@@ -71,6 +77,7 @@ pub const DEFAULTS: Limits = Limits {
     people: 10_000,
     triangles: 2_000_000,
     joints: 2_000,
+    map_points: 1_000_000,
     raise: 10,
 };
 
@@ -98,5 +105,6 @@ pub const CEILINGS: Limits = Limits {
     people: 1_000_000,
     triangles: 50_000_000,
     joints: 100_000,
+    map_points: 20_000_000,
     raise: 1_000_000,
 };

@@ -1234,6 +1234,33 @@ fn the_triangles_of_all_meshes_count_towards_one_limit() {
     assert!(err.contains("root.reach:5:"), "at the second mesh: {err}");
 }
 
+/// The tasks of a run answer at most `--max-map-points` points together,
+/// each map's once for each person: four maps of 1,000,000 points each
+/// held their answers and every file of them in memory (4 GB) before.
+#[test]
+fn the_points_of_all_maps_count_towards_one_limit() {
+    let text = "units mm deg\nuse std::people\nroom r {\n  size 3000 x 3000 x 2500\n  \
+                surface wall at (0, 500, 600) size (0, 900, 600)\n  target t at (400, 900, 900)\n}\n\
+                person a { mannequin man_50th_seated  base manual_wheelchair }\n\
+                person b { mannequin man_50th_seated  base manual_wheelchair }\n\
+                reach t by a\nmap wall by a, b { step 150mm }\n";
+    let (_dir, path) = scenario_file(text);
+    let (code, _, err) = check(&path, &["--max-map-points", "1"]);
+    assert_eq!(code, Some(1), "{err}");
+    let err = flat(&err);
+    let total: u64 = err
+        .split("points these tasks answer (")
+        .nth(1)
+        .and_then(|rest| rest.split(' ').next())
+        .and_then(|n| n.replace(',', "").parse().ok())
+        .unwrap_or_else(|| panic!("a total in {err}"));
+    // One reach, and the map's points for each of two people.
+    assert!(total > 3 && total % 2 == 1, "{total}");
+    let err = refused_then_accepted(&path, "--max-map-points", total - 1, total);
+    assert!(err.contains("(--max-map-points)"), "{err}");
+    assert!(err.contains("root.reach:11:"), "at the map: {err}");
+}
+
 /// A mannequin has at most `--max-joints` joints, declared or a URDF's
 /// chain, refused before its joints are looked at one by one (60,000
 /// declared joints took 11 s to check and 34 s to run before; 150,000,
