@@ -25,6 +25,7 @@ mod invariance;
 mod layers;
 mod limits;
 mod meshes;
+mod output_checks;
 mod outputs;
 mod parser;
 mod partial;
