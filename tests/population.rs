@@ -302,17 +302,9 @@ room kitchen {
     assert_eq!((grid.columns, grid.rows, grid.view), (2, 10, "elevation"));
     let mut counted = vec![0; cells.len()];
     for person in 0..3 {
-        let drawn = &scenario.populations[0].drawn[person];
-        let seat = drawn.values.iter().find(|(n, _)| n == "seat").unwrap().1;
-        let profiles: String = drawn
-            .profiles
-            .iter()
-            .map(|p| format!(" profile {p}"))
-            .collect();
         let alone = format!(
-            "{room}person p {{\n  mannequin ansur_adult(\n    {}) {{{profiles} }}\n  base manual_wheelchair {{ seat_height {seat:?}mm }}\n}}\n\
-             map front by p {{ step 150mm }}\n",
-            arguments_of(&scenario, person)
+            "{room}{}map front by p {{ step 150mm }}\n",
+            member_alone(&scenario, person)
         );
         let (_, alone) = run(&alone);
         let map = alone.tasks[0].map().expect("a map");
