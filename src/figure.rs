@@ -44,19 +44,21 @@ pub fn person(body: &Body, q: &[f64], pose: BasePose, own: &OwnBody) -> Vec<Pain
         }
     }
     let leaning = leaning_legs(body, q, own);
-    items.extend(own.solids.iter().map(|solid| Painted {
-        shape: shape_in_room(
-            &leaning
-                .iter()
-                .find(|leg| leg.name == solid.name)
-                .unwrap_or(solid)
-                .shape,
-            pose,
-        ),
-        fill: if is_leg(solid) { LEGS } else { BASE }.into(),
-        // The base's parts let the body behind them show through.
-        opacity: if is_leg(solid) { 0.9 } else { 0.45 },
-        label: solid.name.clone(),
+    items.extend(own.solids.iter().map(|solid| {
+        Painted {
+            shape: shape_in_room(
+                &leaning
+                    .iter()
+                    .find(|leg| leg.name == solid.name)
+                    .unwrap_or(solid)
+                    .shape,
+                pose,
+            ),
+            fill: if is_leg(solid) { LEGS } else { BASE }.into(),
+            // The base's parts let the body behind them show through.
+            opacity: if is_leg(solid) { 0.9 } else { 0.45 },
+            label: solid.name.clone(),
+        }
     }));
     items
 }
@@ -74,7 +76,9 @@ fn leaning_legs(body: &Body, q: &[f64], own: &OwnBody) -> Vec<Solid> {
     let chain_q: Vec<f64> = path.iter().map(|&j| q[j]).collect();
     let volumes = body.chain_posed(0, q).volumes(&chain_q);
     match balance.feet_moved_mm(&volumes) {
-        Ok(moved) if moved != nalgebra::Vector2::zeros() => balance.legs().standing_feet_moved(moved),
+        Ok(moved) if moved != nalgebra::Vector2::zeros() => {
+            balance.legs().standing_feet_moved(moved)
+        }
         _ => Vec::new(),
     }
 }

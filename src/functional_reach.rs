@@ -65,7 +65,14 @@ pub fn functional_reach(mannequin: &str, body: &Body) -> Result<FunctionalReach,
     let registry = Registry::builtin();
     let mut farthest_mm = f64::NAN;
     for back_mm in HIPS_BACK_MM {
-        let scenario = scenario(mannequin, legs.hip_height_mm, toe_mm, back_mm, height_mm, arm_forward_mm);
+        let scenario = scenario(
+            mannequin,
+            legs.hip_height_mm,
+            toe_mm,
+            back_mm,
+            height_mm,
+            arm_forward_mm,
+        );
         let input = Input::Text {
             name: "functional_reach.reach",
             text: &scenario,
@@ -91,7 +98,10 @@ pub fn functional_reach(mannequin: &str, body: &Body) -> Result<FunctionalReach,
 fn arm_forward(body: &Body) -> Option<(f64, f64)> {
     let chain = body.chain_named(Some("grip"))?;
     let mut q = vec![0.0; chain.dof()];
-    let flexion = chain.joints.iter().position(|j| j.name == "shoulder_flexion")?;
+    let flexion = chain
+        .joints
+        .iter()
+        .position(|j| j.name == "shoulder_flexion")?;
     q[flexion] = 90f64.to_radians();
     let grip = chain.effector(&q);
     Some((grip.x, body.legs.as_ref()?.hip_height_mm + grip.z))
@@ -106,7 +116,8 @@ fn scenario(
     height_mm: f64,
     arm_forward_mm: f64,
 ) -> String {
-    let mut text = String::from("units mm deg\nuse std::people\nroom gym {\n  size 4000 x 3000 x 2500\n");
+    let mut text =
+        String::from("units mm deg\nuse std::people\nroom gym {\n  size 4000 x 3000 x 2500\n");
     let toe_x = ANKLE_X_MM + toe_mm + 1.0;
     text += &format!("  box toe_stop at ({toe_x}, 1000, 0) size (50, 1000, 150)\n");
     let names: Vec<String> = (0..STEPS).map(|k| format!("t{k}")).collect();
@@ -118,6 +129,9 @@ fn scenario(
     text += &format!(
         "}}\nperson p {{ mannequin {mannequin} base fixed {{ at ({hip_x}, 1500, {hip_height_mm}) heading 0 }} }}\n"
     );
-    text += &format!("reach {} by p {{ hand right tolerance 2mm }}\n", names.join(", "));
+    text += &format!(
+        "reach {} by p {{ hand right tolerance 2mm }}\n",
+        names.join(", ")
+    );
     text
 }

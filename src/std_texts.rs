@@ -27,7 +27,10 @@ pub fn home_of(keyword: &str, name: &str) -> Option<&'static str> {
     let declares = |line: &str| {
         let rest = line.strip_prefix(keyword)?.strip_prefix(' ')?.trim_start();
         let after = rest.strip_prefix(name)?;
-        let ends = after.chars().next().is_none_or(|c| !(c.is_alphanumeric() || c == '_'));
+        let ends = after
+            .chars()
+            .next()
+            .is_none_or(|c| !(c.is_alphanumeric() || c == '_'));
         ends.then_some(())
     };
     MODULES
@@ -45,7 +48,10 @@ mod tests {
         assert_eq!(home_of("mannequin", "woman_5th_seated"), Some("people"));
         assert_eq!(home_of("mannequin", "woman_5th"), Some("people"));
         assert_eq!(home_of("base", "power_wheelchair"), Some("people"));
-        assert_eq!(home_of("population", "manual_wheelchair_users"), Some("populations"));
+        assert_eq!(
+            home_of("population", "manual_wheelchair_users"),
+            Some("populations")
+        );
         assert_eq!(home_of("mannequin", "right_arm"), Some("arm"));
         assert_eq!(home_of("mannequin", "woman_5"), None);
         assert_eq!(home_of("base", "woman_5th"), None);

@@ -67,7 +67,9 @@ pub fn bound_floor(
 fn key(searched: &Searched<'_>, group: &FloorGroup, routed: bool) -> u64 {
     let mut h = DefaultHasher::new();
     "the bounds' floor".hash(&mut h);
-    group.routes_key(searched.room, searched.headings).hash(&mut h);
+    group
+        .routes_key(searched.room, searched.headings)
+        .hash(&mut h);
     hash_zone(searched.zone, &mut h);
     routed.hash(&mut h);
     h.finish()
@@ -136,7 +138,9 @@ fn regions(
             let obstacles = Arc::clone(&obstacles);
             match &routes {
                 None => Region::new(room, footprint, h, zone, obstacles, memo),
-                Some(r) => Region::reached(room, footprint, h, zone, obstacles, Arc::clone(r), memo),
+                Some(r) => {
+                    Region::reached(room, footprint, h, zone, obstacles, Arc::clone(r), memo)
+                }
             }
         })
         .collect())

@@ -4,12 +4,12 @@
 //! mobile base's candidates come from the person's capability map
 //! (`capability.rs`) within what its options allow (`placing.rs`).
 
+mod bound_floor;
 mod capability;
 #[cfg(test)]
 mod descents_tests;
 mod face;
 mod fixed;
-mod bound_floor;
 mod placement;
 mod placing;
 pub mod search;

@@ -24,21 +24,22 @@ use std::sync::{Arc, Mutex, OnceLock, Weak};
 use geo::{MultiPolygon, Point};
 use nalgebra::{Point3, Rotation2, Vector2};
 
+use super::bound_floor::{bound_floor, hash_zone, BoundFloor, Searched};
 use super::capability::{Capability, Sample};
 use super::face::face_normal;
-use super::bound_floor::{bound_floor, hash_zone, BoundFloor, Searched};
 use super::placing::{Approach, Placing, SIDE_SLACK_MM};
 use super::search::{search, search_retrying_later, Candidate};
 use crate::allowance::{Allowance, Unbounded, Unmetered};
 use crate::floor::{
-    emptiness_each, CutShort, DoorRoutes, Doorway, FloorGroup, FloorObstacles, Footprint, Looked, Misfit, Region,
-    Routes, Shut, Work,
+    emptiness_each, CutShort, DoorRoutes, Doorway, FloorGroup, FloorObstacles, Footprint, Looked,
+    Misfit, Region, Routes, Shut, Work,
 };
 use crate::geometry::Solid;
 use crate::kept::{Memo, Table};
 use crate::kinematics::Chain;
 use crate::plugin::{
-    Asked, Base, BasePose, Fit, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Solver, Tries,
+    Asked, Base, BasePose, Fit, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Solver,
+    Tries,
 };
 use crate::scene::{column_solid, hash_bits, Blocked, OwnBody, Physique, Room};
 
@@ -919,7 +920,8 @@ const PLACEMENT_GRID_MM: f64 = 1e-3;
 /// `pose` put on the grid of [`PLACEMENT_GRID_MM`] from `target`: it
 /// moves by at most 0.7 µm.
 fn snapped(pose: BasePose, target: &Point3<f64>) -> BasePose {
-    let snap = |from: f64, at: f64| from + ((at - from) / PLACEMENT_GRID_MM).round() * PLACEMENT_GRID_MM;
+    let snap =
+        |from: f64, at: f64| from + ((at - from) / PLACEMENT_GRID_MM).round() * PLACEMENT_GRID_MM;
     let p = pose.position_mm;
     BasePose {
         position_mm: Point3::new(snap(target.x, p.x), snap(target.y, p.y), p.z),

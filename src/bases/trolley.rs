@@ -118,13 +118,8 @@ impl BasePlugin for Trolley {
             solids.extend(legs.standing());
         }
         let pelvis = person.legs.as_ref().map_or(0.0, |l| l.pelvis_mm);
-        let mut base = Mobile::carrying(
-            solids,
-            person,
-            pelvis,
-            hip_height_mm,
-            s.placing.placing()?,
-        );
+        let mut base =
+            Mobile::carrying(solids, person, pelvis, hip_height_mm, s.placing.placing()?);
         base.own = base.own.standing_placed(person);
         Ok(Box::new(base))
     }

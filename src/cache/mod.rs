@@ -84,7 +84,9 @@ pub struct Plan {
 impl Plan {
     /// The tasks that must run, by their position in the scenario.
     pub fn to_run(&self) -> Vec<usize> {
-        (0..self.held.len()).filter(|&i| self.held[i].is_none()).collect()
+        (0..self.held.len())
+            .filter(|&i| self.held[i].is_none())
+            .collect()
     }
 
     /// The report to show while the tasks that must run are running: the

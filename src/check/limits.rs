@@ -55,7 +55,12 @@ impl Checker<'_> {
     pub(super) fn file_limits(&mut self) {
         let decls = std::mem::take(&mut self.decls.limits);
         for (again, _) in decls.iter().skip(1) {
-            let e = Error::new(ErrorKind::Repeated { what: "`limits`".into() }, again.span);
+            let e = Error::new(
+                ErrorKind::Repeated {
+                    what: "`limits`".into(),
+                },
+                again.span,
+            );
             self.error(e.with_note(decls[0].0.span, "first given here"));
         }
         // Each checked; the first applied.

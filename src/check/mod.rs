@@ -24,7 +24,6 @@ use std::collections::HashMap;
 use std::path::PathBuf;
 
 use crate::error::{Diagnostics, Error, ErrorKind};
-use mesh::MeshFiles;
 use crate::kinematics::Body;
 use crate::limits::Limits;
 use crate::loader::LoadedFile;
@@ -35,6 +34,7 @@ use crate::source::Sources;
 use crate::span::{FileId, Span, Spanned};
 use crate::syntax::ast::{Item, LetDecl};
 use crate::units::{Quantity, Unit, UnitDefaults};
+use mesh::MeshFiles;
 
 use table::Table;
 
@@ -315,7 +315,9 @@ impl<'a> Checker<'a> {
                     self.decls.limits.push((d, f.id));
                     None
                 }
-                Item::Limits(d) => Some(Error::new(ErrorKind::Misplaced { what: "limits" }, d.span)),
+                Item::Limits(d) => {
+                    Some(Error::new(ErrorKind::Misplaced { what: "limits" }, d.span))
+                }
                 Item::Expect(d) if is_root => {
                     self.decls.expects.push((d, f.id));
                     None

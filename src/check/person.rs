@@ -439,7 +439,12 @@ impl Checker<'_> {
             // A person's base may also be a preset of the file or a module
             // it uses.
             let presets: Vec<String> = match kind {
-                PluginKind::Base => self.decls.base_presets.names().map(str::to_string).collect(),
+                PluginKind::Base => self
+                    .decls
+                    .base_presets
+                    .names()
+                    .map(str::to_string)
+                    .collect(),
                 _ => Vec::new(),
             };
             let mut names = self.cx.registry.names(kind);

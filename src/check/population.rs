@@ -106,7 +106,13 @@ impl<'a> Checker<'a> {
             }
             let start = persons.len();
             let built = self.cx.built.range(plan.drawn.len());
-            for (i, drawn) in plan.drawn.iter().enumerate().skip(built.start).take(built.len()) {
+            for (i, drawn) in plan
+                .drawn
+                .iter()
+                .enumerate()
+                .skip(built.start)
+                .take(built.len())
+            {
                 let member = format!("{}#{}", plan.name, i + 1);
                 let errors = self.cx.errors.len();
                 let built = self.member(&member, &items, drawn, &plan.quantities[i], name.span);

@@ -291,7 +291,10 @@ impl Checker<'_> {
             }
             [] => {}
         }
-        if s.value.iter().any(|part| self.failed_face_holder(part, rooms)) {
+        if s.value
+            .iter()
+            .any(|part| self.failed_face_holder(part, rooms))
+        {
             // Its declaration has reported its own error.
             return None;
         }

@@ -255,7 +255,10 @@ impl Obstacles {
             }
         }
         rest.boxes = boxes.into();
-        let meshes = rest.meshes.iter().filter(|m| !removed.contains(&Blocker::Obstacle(m.index)));
+        let meshes = rest
+            .meshes
+            .iter()
+            .filter(|m| !removed.contains(&Blocker::Obstacle(m.index)));
         rest.meshes = meshes.cloned().collect();
         rest.walls.retain(|w| !removed.contains(&Blocker::Wall(*w)));
         rest

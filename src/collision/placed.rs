@@ -123,7 +123,10 @@ impl PlacedObstacles<'_> {
             };
             if let Some(b) = self.obstacles.capsule_hit(&self.in_room(now)) {
                 let placed_so = self.own.feet_placed
-                    && self.obstacles.capsule_hits(&self.in_room(up)).any(|u| u == b);
+                    && self
+                        .obstacles
+                        .capsule_hits(&self.in_room(up))
+                        .any(|u| u == b);
                 if !placed_so {
                     return lost(Tipping::NoFooting);
                 }

@@ -6,8 +6,8 @@
 //! the doors are worked out twice for the whole group, and a member's own
 //! only where the two leave a place undecided (`shared_routes.rs`).
 
-use std::collections::hash_map::DefaultHasher;
 use std::any::Any;
+use std::collections::hash_map::DefaultHasher;
 use std::collections::HashMap;
 use std::hash::Hasher;
 use std::sync::{Arc, Mutex};
@@ -64,9 +64,7 @@ impl FloorGroup {
     pub fn of(members: &[&Footprint]) -> Option<FloorGroup> {
         let first = members.first()?;
         let parts = first.parts.len();
-        let alike = members
-            .iter()
-            .all(|f| f.parts.len() == parts && f.turns());
+        let alike = members.iter().all(|f| f.parts.len() == parts && f.turns());
         if members.len() < 2 || parts == 0 || !alike {
             return None;
         }
@@ -158,7 +156,9 @@ fn kept_or<T: Clone, E>(
     }
     let found = compute()?;
     if let Some(found) = &found {
-        return Ok(Some(lock().entry(key).or_insert_with(|| found.clone()).clone()));
+        return Ok(Some(
+            lock().entry(key).or_insert_with(|| found.clone()).clone(),
+        ));
     }
     Ok(found)
 }
@@ -178,7 +178,10 @@ fn outer_part(members: &[&Footprint], k: usize) -> FloorPart {
     let corners = (members.iter())
         .flat_map(|f| &f.parts[k].outline_mm)
         .flat_map(|c| around.iter().map(move |d| c + d));
-    let lo = members.iter().map(|f| f.parts[k].z_mm[0]).fold(f64::INFINITY, f64::min);
+    let lo = members
+        .iter()
+        .map(|f| f.parts[k].z_mm[0])
+        .fold(f64::INFINITY, f64::min);
     let hi = (members.iter())
         .map(|f| f.parts[k].z_mm[1])
         .fold(f64::NEG_INFINITY, f64::max);
@@ -195,7 +198,10 @@ fn inner_part(members: &[&Footprint], k: usize) -> Option<FloorPart> {
     let lo = (members.iter())
         .map(|f| f.parts[k].z_mm[0])
         .fold(f64::NEG_INFINITY, f64::max);
-    let hi = members.iter().map(|f| f.parts[k].z_mm[1]).fold(f64::INFINITY, f64::min);
+    let hi = members
+        .iter()
+        .map(|f| f.parts[k].z_mm[1])
+        .fold(f64::INFINITY, f64::min);
     let z_mm = [lo + GROUP_MARGIN_MM, hi - GROUP_MARGIN_MM];
     if z_mm[0] >= z_mm[1] {
         return None;
@@ -242,7 +248,8 @@ fn clipped(
         return poly.to_vec();
     }
     // How far left of the moved line a point lies.
-    let side = |p: &Vector2<f64>| (along.x * (p.y - a.y) - along.y * (p.x - a.x)) / length - inset_mm;
+    let side =
+        |p: &Vector2<f64>| (along.x * (p.y - a.y) - along.y * (p.x - a.x)) / length - inset_mm;
     let mut out = Vec::with_capacity(poly.len() + 1);
     for (p, q) in poly.iter().zip(poly.iter().cycle().skip(1)) {
         let (sp, sq) = (side(p), side(q));
@@ -274,12 +281,20 @@ mod tests {
     /// the margin to spare, in outline and in height.
     #[test]
     fn the_bounds_hold_and_are_held_by_every_member() {
-        let members = [chair(400.0, 640.0, 900.0), chair(460.0, 600.0, 1000.0), chair(430.0, 700.0, 950.0)];
+        let members = [
+            chair(400.0, 640.0, 900.0),
+            chair(460.0, 600.0, 1000.0),
+            chair(430.0, 700.0, 950.0),
+        ];
         let refs: Vec<&Footprint> = members.iter().collect();
         let group = FloorGroup::of(&refs).expect("alike footprints");
         for m in &members {
             for (k, part) in m.parts.iter().enumerate() {
-                let shrunk = part.outline_mm.iter().map(|v| v * 0.999).collect::<Vec<_>>();
+                let shrunk = part
+                    .outline_mm
+                    .iter()
+                    .map(|v| v * 0.999)
+                    .collect::<Vec<_>>();
                 let outer = polygon(&group.outer.parts[k].outline_mm);
                 assert!(outer.contains(&polygon(&m.grown(0.9).parts[k].outline_mm)));
                 let inner = &group.inner.parts[k];

@@ -319,10 +319,7 @@ impl Routes {
     /// a hair's area); none where that heading is not followed.
     pub fn reaches_into(&self, heading_rad: f64, piece: &Polygon<f64>) -> Option<bool> {
         let layer = self.layer(heading_rad)?;
-        Some(
-            (layer.pieces())
-                .any(|(n, q)| self.reached[n] && pieces_overlap(q, piece)),
-        )
+        Some((layer.pieces()).any(|(n, q)| self.reached[n] && pieces_overlap(q, piece)))
     }
 
     /// Whether `heading_rad` is one of the headings followed.

@@ -165,7 +165,12 @@ impl DoorRoutes {
     /// operation left, where the routes, followed a hair wider, have no
     /// floor.) `around` gives the floor in a window of a footprint at that
     /// heading, and its work (none where the window is outside the room).
-    pub fn piece_reached(&self, heading_rad: f64, piece: &Polygon<f64>, around: &Around<'_>) -> Decided {
+    pub fn piece_reached(
+        &self,
+        heading_rad: f64,
+        piece: &Polygon<f64>,
+        around: &Around<'_>,
+    ) -> Decided {
         match self {
             DoorRoutes::Own(r) => Decided {
                 reached: r.reaches_into(heading_rad, piece) == Some(true),
@@ -192,7 +197,12 @@ impl SharedRoutes {
     /// same way, in a window about it, followed a hair wider as the
     /// routes are) into floor the outer reaches, reached; else as its own
     /// routes say.
-    fn piece_reached(&self, heading_rad: f64, piece: &Polygon<f64>, around: &Around<'_>) -> Decided {
+    fn piece_reached(
+        &self,
+        heading_rad: f64,
+        piece: &Polygon<f64>,
+        around: &Around<'_>,
+    ) -> Decided {
         let by_bounds = |reached| Decided {
             reached,
             ..Decided::default()
@@ -209,13 +219,22 @@ impl SharedRoutes {
         let mut window_work = 0;
         if let Some(bounds) = piece.bounding_rect() {
             let window = Rect::new(
-                bounds.min() - Coord { x: WINDOW_MM, y: WINDOW_MM },
-                bounds.max() + Coord { x: WINDOW_MM, y: WINDOW_MM },
+                bounds.min()
+                    - Coord {
+                        x: WINDOW_MM,
+                        y: WINDOW_MM,
+                    },
+                bounds.max()
+                    + Coord {
+                        x: WINDOW_MM,
+                        y: WINDOW_MM,
+                    },
             );
             if let Some((free, units)) = around(window, &self.followed) {
                 window_work = units;
                 let runs_on = free.0.iter().any(|q| {
-                    pieces_overlap(q, piece) && self.outer.reaches_into(heading_rad, q) == Some(true)
+                    pieces_overlap(q, piece)
+                        && self.outer.reaches_into(heading_rad, q) == Some(true)
                 });
                 if runs_on {
                     return Decided {
@@ -243,10 +262,18 @@ impl SharedRoutes {
     /// The member's own routes, worked out once.
     fn own(&self) -> &Arc<Routes> {
         self.own.get_or_init(|| {
-            let routes = Routes::of(&self.room, &self.footprint, &self.headings, &unbounded, &self.memo);
+            let routes = Routes::of(
+                &self.room,
+                &self.footprint,
+                &self.headings,
+                &unbounded,
+                &self.memo,
+            );
             match routes {
                 Ok(Some(routes)) => routes,
-                _ => unreachable!("the room has doors, and routes allowed any work are not cut short"),
+                _ => unreachable!(
+                    "the room has doors, and routes allowed any work are not cut short"
+                ),
             }
         })
     }

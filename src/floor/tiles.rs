@@ -18,8 +18,8 @@ use rayon::prelude::*;
 use super::layer::overlap;
 use super::obstacles::FloorObstacles;
 use super::region::{admissible_in, obstacles_meeting, shrunk_room, Grown, Turned, Zone};
-use super::work::{unbounded, CutShort, Looked, Work};
 use super::shared_routes::Around;
+use super::work::{unbounded, CutShort, Looked, Work};
 use super::{DoorRoutes, Footprint, Inside};
 use crate::allowance::Allowance;
 use crate::kept::Memo;
@@ -440,13 +440,20 @@ impl Region {
         let Some(free) = self.free else {
             return Ok(None);
         };
-        let (ci, cj) = self.tile_of(free.center().x, free.center().y).unwrap_or((0, 0));
+        let (ci, cj) = self
+            .tile_of(free.center().x, free.center().y)
+            .unwrap_or((0, 0));
         let mut order: Vec<(usize, usize, usize, usize)> = (0..self.ny)
             .flat_map(|j| (0..self.nx).map(move |i| (i, j)))
             .filter_map(|(i, j)| {
                 let rect = self.tile_rect(i, j)?;
                 let crowded = obstacles_meeting(rect, &self.turned, &self.obstacles) > 0;
-                Some((usize::from(crowded), i.abs_diff(ci).max(j.abs_diff(cj)), j, i))
+                Some((
+                    usize::from(crowded),
+                    i.abs_diff(ci).max(j.abs_diff(cj)),
+                    j,
+                    i,
+                ))
             })
             .collect();
         order.sort_unstable();
@@ -669,7 +676,14 @@ mod tests {
     /// in no memo.
     fn unkept(room: &Room, chair: &Footprint, heading_rad: f64, zone: Option<&Zone>) -> Region {
         let obstacles = Arc::new(FloorObstacles::new(room, chair));
-        Region::new(room, chair, heading_rad, zone, obstacles, &Arc::new(Memo::forgetting()))
+        Region::new(
+            room,
+            chair,
+            heading_rad,
+            zone,
+            obstacles,
+            &Arc::new(Memo::forgetting()),
+        )
     }
     use crate::floor::admissible;
     use crate::scene::BoxObstacle;
@@ -754,7 +768,9 @@ mod tests {
         assert_eq!(work.done, 0);
         let mut nearest = Work::new(&unbounded);
         let middle = Point::new(3000.0, 3000.0);
-        assert!(crowded_region().nearest_counted(middle, None, &mut nearest).is_ok());
+        assert!(crowded_region()
+            .nearest_counted(middle, None, &mut nearest)
+            .is_ok());
         assert!(nearest.done > 10_000, "{}", nearest.done);
     }
 

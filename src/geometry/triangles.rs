@@ -85,7 +85,10 @@ fn pieces_and_open_edges(triangles: &[[u32; 3]]) -> (Vec<Vec<usize>>, Vec<bool>)
         let closed = matches!(same, [(_, false, _), (_, true, _)]);
         for &(_, _, i) in same {
             open[i as usize] |= !closed;
-            let (ri, rj) = (root(&mut parent, i as usize), root(&mut parent, same[0].2 as usize));
+            let (ri, rj) = (
+                root(&mut parent, i as usize),
+                root(&mut parent, same[0].2 as usize),
+            );
             parent[ri.max(rj)] = ri.min(rj);
         }
     }
@@ -160,8 +163,12 @@ mod tests {
                 *directed.entry(edge).or_default() += 1;
             }
         }
-        let closed = |(a, b): (u32, u32)| directed[&(a, b)] == 1 && directed.get(&(b, a)) == Some(&1);
-        let open = triangles.iter().map(|t| !edges(t).into_iter().all(closed)).collect();
+        let closed =
+            |(a, b): (u32, u32)| directed[&(a, b)] == 1 && directed.get(&(b, a)) == Some(&1);
+        let open = triangles
+            .iter()
+            .map(|t| !edges(t).into_iter().all(closed))
+            .collect();
         let mut piece_of: Vec<usize> = (0..triangles.len()).collect();
         // Joined until nothing changes: every triangle takes the least
         // piece of a triangle it shares an edge with.
@@ -170,7 +177,9 @@ mod tests {
             for i in 0..triangles.len() {
                 for j in 0..triangles.len() {
                     let shares = edges(&triangles[i]).iter().any(|&(a, b)| {
-                        edges(&triangles[j]).iter().any(|&(c, d)| (a, b) == (c, d) || (a, b) == (d, c))
+                        edges(&triangles[j])
+                            .iter()
+                            .any(|&(c, d)| (a, b) == (c, d) || (a, b) == (d, c))
                     });
                     if shares && piece_of[j] < piece_of[i] {
                         piece_of[i] = piece_of[j];

@@ -124,7 +124,12 @@ impl Balance {
         let gain = 1.0 - share * self.legs_follow;
         let legs = &self.legs;
         let side_mm = legs.hip_width_mm / 2.0 + legs.foot_radius_mm;
-        let forward = least_move(body.x, legs.toe_ahead_of_ankle_mm(), legs.heel_behind_ankle_mm(), gain);
+        let forward = least_move(
+            body.x,
+            legs.toe_ahead_of_ankle_mm(),
+            legs.heel_behind_ankle_mm(),
+            gain,
+        );
         let sideways = least_move(body.y, side_mm, side_mm, gain);
         let moved = Vector2::new(forward, sideways);
         if moved.norm() <= self.feet_shift_max_mm() {
@@ -260,6 +265,9 @@ mod tests {
         assert_eq!(l.hip_drop_mm(0.0), 0.0);
         let max = Balance::new(l.clone(), 0.0).feet_shift_max_mm();
         let drop = l.hip_drop_mm(max);
-        assert!((drop - 862.0 * (1.0 - LEAN_MAX_RAD.cos())).abs() < 1e-6, "{drop}");
+        assert!(
+            (drop - 862.0 * (1.0 - LEAN_MAX_RAD.cos())).abs() < 1e-6,
+            "{drop}"
+        );
     }
 }

@@ -397,4 +397,3 @@ mod tests {
         assert_eq!(body.chain(0).riders.len(), 1);
     }
 }
-

@@ -457,7 +457,10 @@ mod tests {
             j["accessors"][1]["count"] = serde_json::json!(1u64 << 40);
         }))
         .unwrap_err();
-        assert!(err.to_string().contains("runs past its buffer view"), "{err}");
+        assert!(
+            err.to_string().contains("runs past its buffer view"),
+            "{err}"
+        );
     }
 
     #[test]

@@ -118,7 +118,13 @@ mod tests {
         let t = tally(br#"{"nodes": [{}, {"mesh": 0}], "scene": 0}"#).unwrap();
         // The root, two nodes; values: the root, its two keys, the array,
         // two nodes, the key `mesh` and its 0, and the scene's 0.
-        assert_eq!(t, Tally { objects: 3, values: 9 });
+        assert_eq!(
+            t,
+            Tally {
+                objects: 3,
+                values: 9
+            }
+        );
     }
 
     #[test]

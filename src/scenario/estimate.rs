@@ -58,7 +58,8 @@ impl WorkEstimate {
     /// tasks' half widths added up: the tasks share people, so their
     /// errors are not independent).
     pub fn total(&self) -> (u64, u64) {
-        let sum = |f: fn(&TaskWork) -> u64| self.tasks.iter().map(f).fold(0u64, u64::saturating_add);
+        let sum =
+            |f: fn(&TaskWork) -> u64| self.tasks.iter().map(f).fold(0u64, u64::saturating_add);
         let units = sum(|t| t.units).saturating_add(self.standards.unwrap_or(0));
         (units, sum(|t| t.half_width))
     }
@@ -105,8 +106,9 @@ impl Scenario {
                     let population = &self.populations[p];
                     let sample = sample_size(population.len());
                     // The first people of the draw, those the check built.
-                    let people: Vec<usize> =
-                        (0..sample).filter_map(|i| population.person_of(i)).collect();
+                    let people: Vec<usize> = (0..sample)
+                        .filter_map(|i| population.person_of(i))
+                        .collect();
                     let sample = people.len();
                     let each: Vec<u64> = people
                         .into_par_iter()
@@ -173,7 +175,11 @@ impl WorkEstimate {
         let _ = writeln!(
             out,
             "work {}: {}{} units{range}, {} the bound of {} units",
-            if self.stopped { "of the tasks estimated" } else { "estimated" },
+            if self.stopped {
+                "of the tasks estimated"
+            } else {
+                "estimated"
+            },
             if half > 0 { "about " } else { "" },
             thousands(total),
             share_words(total, limit_units),
@@ -201,17 +207,29 @@ impl WorkEstimate {
             };
             let share = percent(task.units, total);
             let units = thousands(task.units);
-            let _ = writeln!(out, "  {units:>width$}  {share:>3} %  {}{sampled}", task.label);
+            let _ = writeln!(
+                out,
+                "  {units:>width$}  {share:>3} %  {}{sampled}",
+                task.label
+            );
         }
         let rest = &order[order.len().min(LISTED)..];
         if !rest.is_empty() {
             let units: u64 = rest.iter().map(|t| t.units).sum();
             let (share, n) = (percent(units, total), rest.len());
-            let _ = writeln!(out, "  {:>width$}  {share:>3} %  {n} more tasks", thousands(units));
+            let _ = writeln!(
+                out,
+                "  {:>width$}  {share:>3} %  {n} more tasks",
+                thousands(units)
+            );
         }
         if let Some(units) = self.standards {
             let share = percent(units, total);
-            let _ = writeln!(out, "  {:>width$}  {share:>3} %  the standards", thousands(units));
+            let _ = writeln!(
+                out,
+                "  {:>width$}  {share:>3} %  the standards",
+                thousands(units)
+            );
         }
     }
 
@@ -235,7 +253,11 @@ impl WorkEstimate {
         }
         let raise_to = round_up(upper.saturating_add(upper / 10));
         let how = if raise_to <= file_ceiling_units {
-            format!("`limits {{ solver_work {} }}` in the file, or --max-solver-work {}", sci(raise_to), sci(raise_to))
+            format!(
+                "`limits {{ solver_work {} }}` in the file, or --max-solver-work {}",
+                sci(raise_to),
+                sci(raise_to)
+            )
         } else {
             format!(
                 "--max-solver-work {} (more than a file may raise its own bound to, {} units, under --max-limits-raise)",
@@ -243,8 +265,15 @@ impl WorkEstimate {
                 thousands(file_ceiling_units)
             )
         };
-        let stops = if total > limit_units { "a run stops partway" } else { "a run may stop partway" };
-        format!("{stops}: raise the bound to about {} units with {how}; {measured}", thousands(raise_to))
+        let stops = if total > limit_units {
+            "a run stops partway"
+        } else {
+            "a run may stop partway"
+        };
+        format!(
+            "{stops}: raise the bound to about {} units with {how}; {measured}",
+            thousands(raise_to)
+        )
     }
 }
 
@@ -326,7 +355,15 @@ mod tests {
 
     #[test]
     fn a_sample_is_all_of_a_small_population_and_the_root_of_a_large_one() {
-        let table = [(1, 1), (8, 8), (9, 8), (64, 8), (100, 10), (1000, 32), (100_000, 317)];
+        let table = [
+            (1, 1),
+            (8, 8),
+            (9, 8),
+            (64, 8),
+            (100, 10),
+            (1000, 32),
+            (100_000, 317),
+        ];
         for (people, sample) in table {
             assert_eq!(sample_size(people), sample, "{people} people");
         }
@@ -350,7 +387,14 @@ mod tests {
 
     #[test]
     fn a_bound_to_raise_to_is_rounded_up_and_written_as_the_language_reads_it() {
-        let table = [(1, 1, "1"), (99, 99, "99"), (101, 110, "110"), (968_920_123, 970_000_000, "9.7e8"), (1_000_000_000, 1_000_000_000, "1e9"), (1_210_000_001, 1_300_000_000, "1.3e9")];
+        let table = [
+            (1, 1, "1"),
+            (99, 99, "99"),
+            (101, 110, "110"),
+            (968_920_123, 970_000_000, "9.7e8"),
+            (1_000_000_000, 1_000_000_000, "1e9"),
+            (1_210_000_001, 1_300_000_000, "1.3e9"),
+        ];
         for (units, up, written) in table {
             assert_eq!(round_up(units), up, "{units}");
             assert_eq!(sci(up), written, "{up}");

@@ -10,8 +10,8 @@ mod run;
 mod shard;
 mod shard_file;
 
-pub use expect::{ExpectCheck, ExpectSpec};
 pub use estimate::{sample_size, TaskWork, WorkEstimate};
+pub use expect::{ExpectCheck, ExpectSpec};
 pub use run::{Ran, Stop};
 pub use shard::{PeopleBuilt, ShardOf, ShardPart};
 pub use shard_file::{fingerprint, read_shard, write_shard};
@@ -64,7 +64,13 @@ impl WorkBound {
     /// The error of a run the bound stopped partway (`answered` of
     /// `tasks` answered), `at` the first task not evaluated (its
     /// declaration, and it in words) with `left` units left for it.
-    pub fn stopped(&self, at: (Option<Span>, String), answered: usize, tasks: usize, left: u64) -> Error {
+    pub fn stopped(
+        &self,
+        at: (Option<Span>, String),
+        answered: usize,
+        tasks: usize,
+        left: u64,
+    ) -> Error {
         let (span, first) = at;
         let kind = ErrorKind::StoppedPartway {
             limit: self.limit,
@@ -302,7 +308,10 @@ mod tests {
             costliest,
             set_at,
         };
-        assert_eq!(bound(Some(task), Some(limits)).exceeded().span(), Some(task));
+        assert_eq!(
+            bound(Some(task), Some(limits)).exceeded().span(),
+            Some(task)
+        );
         assert_eq!(bound(None, Some(limits)).exceeded().span(), Some(limits));
         assert_eq!(bound(None, None).exceeded().span(), None);
     }

@@ -18,7 +18,8 @@ use crate::meter::{Meter, RunWork};
 use crate::plugin::{Fit, TaskInput};
 use crate::progress::Progress;
 use crate::report::{
-    NotEvaluatedReport, NotPlacedReport, PersonAnswer, PopulationReport, Report, TaskReport, SCHEMA_VERSION,
+    NotEvaluatedReport, NotPlacedReport, PersonAnswer, PopulationReport, Report, TaskReport,
+    SCHEMA_VERSION,
 };
 
 /// One task's answer, what its questions touched of its room (where it
@@ -176,7 +177,8 @@ impl Scenario {
             return self.stopped_at_standards(self.work.limit.saturating_sub(stop.left));
         };
         let first = self.not_evaluated(task).answer().label();
-        self.work.stopped((Some(task.span), first), stop.at, all, stop.left)
+        self.work
+            .stopped((Some(task.span), first), stop.at, all, stop.left)
     }
 
     /// The error of a run of every task of the file (`spent` units of
@@ -187,7 +189,9 @@ impl Scenario {
         let at = (
             first.map(|s| s.span),
             first.map_or_else(String::new, |s| {
-                TaskReport::NotEvaluated(self.standard_not_evaluated(s)).answer().label()
+                TaskReport::NotEvaluated(self.standard_not_evaluated(s))
+                    .answer()
+                    .label()
             }),
         );
         let left = self.work.limit.saturating_sub(spent);
@@ -204,7 +208,11 @@ impl Scenario {
     /// The entry of `task`, which the bound stopped the run before.
     pub fn not_evaluated(&self, task: &TaskSpec) -> TaskReport {
         let label = task_label(&task.kind);
-        TaskReport::NotEvaluated(NotEvaluatedReport::new(label, task.subject_name(self), self.who(task)))
+        TaskReport::NotEvaluated(NotEvaluatedReport::new(
+            label,
+            task.subject_name(self),
+            self.who(task),
+        ))
     }
 
     /// The entry of `task` while it runs (watch mode's first answers).
@@ -221,7 +229,9 @@ impl Scenario {
     pub fn report_evaluating(&self, mut tasks: Vec<TaskReport>) -> Report {
         let standards = self.standards.iter().map(|spec| {
             let room = format!("in {}", self.rooms[spec.room].name);
-            TaskReport::NotEvaluated(NotEvaluatedReport::evaluating("standard", &spec.name, &room))
+            TaskReport::NotEvaluated(NotEvaluatedReport::evaluating(
+                "standard", &spec.name, &room,
+            ))
         });
         tasks.extend(standards);
         let answered = |k: &usize| !matches!(tasks.get(*k), Some(TaskReport::NotEvaluated(_)));
@@ -360,7 +370,8 @@ impl Scenario {
                     }
                     Job::Member { population, person } => {
                         let own = by_population[&population].iter().map(|&k| tasks[k]);
-                        let each = self.run_member_tasks(own, person, progress, run, &floor_charges);
+                        let each =
+                            self.run_member_tasks(own, person, progress, run, &floor_charges);
                         (each, None)
                     }
                 };
@@ -377,7 +388,9 @@ impl Scenario {
                 match job {
                     Job::Alone(k) => whole[*k] = false,
                     Job::Member { population, .. } => {
-                        by_population[population].iter().for_each(|&k| whole[k] = false);
+                        by_population[population]
+                            .iter()
+                            .for_each(|&k| whole[k] = false);
                     }
                 }
                 answers.push(None);
@@ -483,7 +496,9 @@ impl Scenario {
                 let meter = Meter::of(run);
                 let room = spec.room_of_elements(&self.rooms[spec.room]);
                 let mut report = spec.standard.check(&room, &meter);
-                report.notes.extend(spec.except_note(&self.rooms[spec.room]));
+                report
+                    .notes
+                    .extend(spec.except_note(&self.rooms[spec.room]));
                 for element in &mut report.elements {
                     let about = tasks.iter().zip(answers).filter(|(t, _)| {
                         t.room == spec.room && t.subject_name(self) == element.name

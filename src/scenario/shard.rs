@@ -32,7 +32,11 @@ impl ShardOf {
         let (k, n) = text
             .split_once('/')
             .ok_or_else(|| format!("`{text}` is not K/N (as 3/10: the third of ten shards)"))?;
-        let number = |s: &str| s.trim().parse::<usize>().map_err(|_| format!("`{s}` is not a whole number"));
+        let number = |s: &str| {
+            s.trim()
+                .parse::<usize>()
+                .map_err(|_| format!("`{s}` is not a whole number"))
+        };
         let (index, count) = (number(k)?, number(n)?);
         if count == 0 || index == 0 || index > count {
             return Err(format!("shard {index} of {count}: K must be from 1 to N"));
@@ -134,7 +138,8 @@ impl Scenario {
         for (p, population) in self.populations.iter().enumerate() {
             let tasks = by_population(p);
             let range = shard.people(population.len());
-            let built: Option<Vec<usize>> = range.clone().map(|i| population.person_of(i)).collect();
+            let built: Option<Vec<usize>> =
+                range.clone().map(|i| population.person_of(i)).collect();
             let Some(members) = built else {
                 return Err(not_built(shard, &population.name));
             };
@@ -142,9 +147,11 @@ impl Scenario {
                 .into_par_iter()
                 .map(|person| {
                     let own = tasks.iter().map(|(_, task)| *task);
-                    (self.run_member_tasks(own, person, progress, &run, &charges).into_iter())
-                        .map(|(answer, _)| answer)
-                        .collect()
+                    (self
+                        .run_member_tasks(own, person, progress, &run, &charges)
+                        .into_iter())
+                    .map(|(answer, _)| answer)
+                    .collect()
                 })
                 .collect();
             if run.exceeded() {
@@ -174,7 +181,11 @@ impl Scenario {
         progress: &dyn Progress,
         memo: &Arc<Memo>,
     ) -> Result<(Report, u64), Error> {
-        let alone: Vec<&TaskSpec> = self.tasks.iter().filter(|t| t.population.is_none()).collect();
+        let alone: Vec<&TaskSpec> = self
+            .tasks
+            .iter()
+            .filter(|t| t.population.is_none())
+            .collect();
         let ran = self.run_tasks(&alone, progress, memo)?;
         let work: u64 = ran.iter().map(|r| r.work).sum();
         let mut ran = ran.into_iter();
@@ -182,9 +193,12 @@ impl Scenario {
             .map(|(k, task)| match task.population {
                 None => ran.next().expect("an answer per task by a person").report,
                 Some(p) => {
-                    let mine: Vec<&ShardPart> = parts.iter().filter(|part| part.task == k).collect();
-                    let outcomes: Vec<MemberOutcome> =
-                        mine.iter().flat_map(|part| part.outcomes.iter().cloned()).collect();
+                    let mine: Vec<&ShardPart> =
+                        parts.iter().filter(|part| part.task == k).collect();
+                    let outcomes: Vec<MemberOutcome> = mine
+                        .iter()
+                        .flat_map(|part| part.outcomes.iter().cloned())
+                        .collect();
                     let frame = mine.iter().find_map(|part| part.frame.as_ref());
                     let name = task.subject_name(self);
                     let population = &self.populations[p];
@@ -229,7 +243,10 @@ mod tests {
 
     #[test]
     fn the_shards_not_given_are_named() {
-        assert_eq!(ShardOf::missing(3, |k| k != 2), Some("shard 2/3 is not given".into()));
+        assert_eq!(
+            ShardOf::missing(3, |k| k != 2),
+            Some("shard 2/3 is not given".into())
+        );
         assert_eq!(
             ShardOf::missing(4, |k| k == 2),
             Some("shards 1/4, 3/4, 4/4 are not given".into())
@@ -239,7 +256,13 @@ mod tests {
 
     #[test]
     fn a_shard_is_written_k_of_n() {
-        assert_eq!(ShardOf::parse("3/10"), Ok(ShardOf { index: 3, count: 10 }));
+        assert_eq!(
+            ShardOf::parse("3/10"),
+            Ok(ShardOf {
+                index: 3,
+                count: 10
+            })
+        );
         for bad in ["0/3", "4/3", "1/0", "3", "a/3", "1/-2"] {
             assert!(ShardOf::parse(bad).is_err(), "{bad}");
         }

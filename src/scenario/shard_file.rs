@@ -154,7 +154,10 @@ pub fn read_shard(text: &str) -> Result<(ShardOf, String, Vec<ShardPart>), Strin
         return Err(format!("its format is `{}`, not `{FORMAT}`", file.format));
     }
     if file.version != VERSION {
-        return Err(format!("its version is {}, this tool reads {VERSION}", file.version));
+        return Err(format!(
+            "its version is {}, this tool reads {VERSION}",
+            file.version
+        ));
     }
     let shard = ShardOf::parse(&file.shard)?;
     let parts = (file.parts.into_iter())
@@ -171,7 +174,10 @@ fn part_of(part: PartJson) -> Result<ShardPart, String> {
         .map(|o| {
             let reached = o.reached.map(|r| bits(&r)).transpose()?;
             Ok(MemberOutcome {
-                task: known(&o.task, &["reach", "gaze", "map", "gaze_map", "reach+gaze", "task"])?,
+                task: known(
+                    &o.task,
+                    &["reach", "gaze", "map", "gaze_map", "reach+gaze", "task"],
+                )?,
                 ok: o.ok,
                 not_placed: o.not_placed,
                 verdict: o.verdict,
@@ -291,16 +297,28 @@ mod tests {
         };
         let shard = ShardOf { index: 2, count: 5 };
         let text = write_shard(shard, "abc", std::slice::from_ref(&part));
-        assert_eq!(read_shard(&text), Ok((shard, "abc".to_string(), vec![part])));
+        assert_eq!(
+            read_shard(&text),
+            Ok((shard, "abc".to_string(), vec![part]))
+        );
     }
 
     #[test]
     fn a_file_not_written_as_a_shard_is_refused_with_why() {
         let table = [
             ("{}", "not a shard file"),
-            (r#"{"format":"x","version":1,"shard":"1/1","scenario":"","parts":[]}"#, "format is `x`"),
-            (r#"{"format":"reach shard","version":9,"shard":"1/1","scenario":"","parts":[]}"#, "version is 9"),
-            (r#"{"format":"reach shard","version":1,"shard":"2/1","scenario":"","parts":[]}"#, "K must be"),
+            (
+                r#"{"format":"x","version":1,"shard":"1/1","scenario":"","parts":[]}"#,
+                "format is `x`",
+            ),
+            (
+                r#"{"format":"reach shard","version":9,"shard":"1/1","scenario":"","parts":[]}"#,
+                "version is 9",
+            ),
+            (
+                r#"{"format":"reach shard","version":1,"shard":"2/1","scenario":"","parts":[]}"#,
+                "K must be",
+            ),
         ];
         for (text, why) in table {
             let error = read_shard(text).expect_err(text);

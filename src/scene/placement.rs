@@ -45,7 +45,8 @@ impl BasePose {
     /// the hips is no more behind than in front).
     pub fn has_behind(&self, target_room_mm: &Point3<f64>) -> bool {
         let along = self.to_base(target_room_mm).coords.xy();
-        along.norm() > BEHIND_MIN_MM && along.y.atan2(along.x).abs() > BEHIND_BEARING_DEG.to_radians()
+        along.norm() > BEHIND_MIN_MM
+            && along.y.atan2(along.x).abs() > BEHIND_BEARING_DEG.to_radians()
     }
 }
 
@@ -90,7 +91,9 @@ const SEED_GRID_MM: f64 = 1e-3;
 /// of 90 degrees, draws the same starts. (FNV-1a over the coordinates
 /// rounded to [`SEED_GRID_MM`].)
 pub fn seed_in_base_frame(seed: u64, target_base_mm: &Point3<f64>) -> u64 {
-    let cells = target_base_mm.iter().map(|c| (c / SEED_GRID_MM).round() as i64);
+    let cells = target_base_mm
+        .iter()
+        .map(|c| (c / SEED_GRID_MM).round() as i64);
     super::fnv1a(seed, cells.flat_map(i64::to_le_bytes))
 }
 

@@ -77,7 +77,10 @@ impl Under {
             shape: None,
         };
         if !self.has_knee_space(f) {
-            return rule(false, format!("none: the obstruction comes down to {height:.0} mm"));
+            return rule(
+                false,
+                format!("none: the obstruction comes down to {height:.0} mm"),
+            );
         }
         // The narrowing that leaves least room beyond what its height needs.
         let worst = self.narrowings.iter().min_by(|m, n| {

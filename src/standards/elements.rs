@@ -138,9 +138,7 @@ fn support(room: &Room, at: &Point3<f64>, a: &Approached) -> Option<usize> {
     a.under
         .iter()
         .any(|&i| {
-            i != board
-                && top(i) <= bottom - SHELF_GAP_MM
-                && reach(i) >= reach(board) - TOUCHING_MM
+            i != board && top(i) <= bottom - SHELF_GAP_MM && reach(i) >= reach(board) - TOUCHING_MM
         })
         .then_some(board)
 }
@@ -357,8 +355,14 @@ mod tests {
         // The space runs back from the basin's front to the trap box, up
         // to 500 mm, and to the wall above it.
         let n = narrowings(&room, &tap, Vector2::x(), a.depth_mm, 685.0);
-        let trap = Narrowing { depth_mm: 400.0, bottom_mm: 0.0 };
-        let wall = Narrowing { depth_mm: 550.0, bottom_mm: 0.0 };
+        let trap = Narrowing {
+            depth_mm: 400.0,
+            bottom_mm: 0.0,
+        };
+        let wall = Narrowing {
+            depth_mm: 550.0,
+            bottom_mm: 0.0,
+        };
         assert_eq!(n, [trap, wall]);
         // A vanity cabinet as deep as the basin, from the floor, leaves
         // no knee space.

@@ -257,7 +257,8 @@ fn element(m: &Measure<'_>, t: &Target, approach: Approach) -> ElementCheck {
     let ways: Vec<Approached> = sides.iter().map(|&t| approached(m.room, &at, t)).collect();
     // A way whose obstruction runs to the wall leaves the person nowhere
     // to stand (outside the room), unless every way does.
-    let inside = |a: &Approached| wall_distance(m.room, at.xy().coords, a.toward) > a.depth_mm + 1.0;
+    let inside =
+        |a: &Approached| wall_distance(m.room, at.xy().coords, a.toward) > a.depth_mm + 1.0;
     let any_inside = ways.iter().any(inside);
     for a in ways.iter().filter(|a| !any_inside || inside(a)) {
         if approach != Approach::Side {
@@ -306,12 +307,7 @@ fn element(m: &Measure<'_>, t: &Target, approach: Approach) -> ElementCheck {
 /// approaches it.
 fn approach_sides(room: &Room, at: &Point3<f64>) -> Vec<Vector2<f64>> {
     let sides = [Vector2::x(), -Vector2::x(), Vector2::y(), -Vector2::y()];
-    let walls = [
-        at.x,
-        room.size_mm.x - at.x,
-        at.y,
-        room.size_mm.y - at.y,
-    ];
+    let walls = [at.x, room.size_mm.x - at.x, at.y, room.size_mm.y - at.y];
     let on: Vec<Vector2<f64>> = (sides.iter().zip(walls))
         .filter(|&(&out, wall_mm)| {
             wall_mm <= ON_WALL_MM || room.boxes.iter().any(|b| on_box_side(b, at, out))

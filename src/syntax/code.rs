@@ -48,7 +48,10 @@ mod tests {
         let text = "a{ // {\n\"}{\" /* ( */ b}";
         let code: String = code_bytes(text).map(|(_, b)| b as char).collect();
         assert_eq!(code, "a{ \n  b}");
-        let braces: Vec<usize> = code_bytes(text).filter(|(_, b)| *b == b'{').map(|(i, _)| i).collect();
+        let braces: Vec<usize> = code_bytes(text)
+            .filter(|(_, b)| *b == b'{')
+            .map(|(i, _)| i)
+            .collect();
         assert_eq!(braces, [1]);
     }
 }

@@ -194,7 +194,9 @@ fn name_without_comma_after_except(text: &str, pos: usize) -> Option<(usize, usi
     let pos = pos.min(text.len());
     let line_start = text[..pos].rfind('\n').map_or(0, |i| i + 1);
     missing_comma_on_line(text, line_start, pos).or_else(|| {
-        let previous = text[..line_start.checked_sub(1)?].rfind('\n').map_or(0, |i| i + 1);
+        let previous = text[..line_start.checked_sub(1)?]
+            .rfind('\n')
+            .map_or(0, |i| i + 1);
         missing_comma_on_line(text, previous, pos)
     })
 }
@@ -202,7 +204,9 @@ fn name_without_comma_after_except(text: &str, pos: usize) -> Option<(usize, usi
 /// [`name_without_comma_after_except`] on the line that starts at
 /// `line_start`.
 fn missing_comma_on_line(text: &str, line_start: usize, pos: usize) -> Option<(usize, usize)> {
-    let line_end = text[line_start..].find('\n').map_or(text.len(), |i| line_start + i);
+    let line_end = text[line_start..]
+        .find('\n')
+        .map_or(text.len(), |i| line_start + i);
     // The names end at an option block or a comment.
     let line = text[line_start..line_end]
         .split(['{', '/', '"'])

@@ -131,7 +131,9 @@ pub fn hands_of(body: &Body, asked: usize, either: bool) -> Vec<usize> {
 /// How many searches a task makes of its point: one per hand it tries
 /// (`effectors`, the checker's, first; one where it names none).
 pub fn searches(body: &Body, effectors: &[usize], either: bool) -> u64 {
-    effectors.first().map_or(1, |&asked| hands_of(body, asked, either).len() as u64)
+    effectors
+        .first()
+        .map_or(1, |&asked| hands_of(body, asked, either).len() as u64)
 }
 
 #[cfg(test)]

@@ -132,12 +132,20 @@ impl Task for MapTask {
     }
 
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
-        let chains: Vec<Chain> = self.hands(input).map(|e| input.person.body.chain(e)).collect();
+        let chains: Vec<Chain> = self
+            .hands(input)
+            .map(|e| input.person.body.chain(e))
+            .collect();
         let all: Vec<&Chain> = chains.iter().collect();
         let mut points = Vec::new();
         for chain in &chains {
             let lift = hand_lift(&input.subject, chain);
-            points.extend(self.grid.points_mm(&input.subject).into_iter().map(|p| p + lift));
+            points.extend(
+                self.grid
+                    .points_mm(&input.subject)
+                    .into_iter()
+                    .map(|p| p + lift),
+            );
         }
         self.reaching.dependence(&chains[0], &all, points, false)
     }
@@ -168,9 +176,7 @@ impl Task for MapTask {
             let this = map_report(input, surface, &asked, &judge);
             report = Some(match report {
                 None => this,
-                Some(first) => {
-                    first.with_other_hand(this)
-                }
+                Some(first) => first.with_other_hand(this),
             });
         }
         TaskReport::Map(report.expect("a map has at least one hand"))

@@ -678,8 +678,7 @@ fn at_body_edge(grid: &Grid, solved: &[Solved], i: usize) -> bool {
     matches!(
         solved[i].through,
         Some(Blocker::Own(_) | Blocker::Body(_) | Blocker::Balance(_))
-    )
-        && at_edge(grid, solved, i)
+    ) && at_edge(grid, solved, i)
 }
 
 /// Whether point `i` is not reached and has a reached neighbour, in its

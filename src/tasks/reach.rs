@@ -1,19 +1,17 @@
 //! The `reach` task: can this person bring their hand to this target?
 
-use super::hand::{self, hands_of, Hand};
-use super::common::{
-    mix_seed, Common, CommonDecl, Reaching, INCREMENTAL, THOROUGH_RETRY,
-};
+use super::common::{mix_seed, Common, CommonDecl, Reaching, INCREMENTAL, THOROUGH_RETRY};
 use super::gaze::refuses_look_link;
+use super::hand::{self, hands_of, Hand};
 use super::walk_in::reach_walking_in;
 use super::why::{Failed, Found};
-use crate::plugin::{
-    Dependence, EffectorNeed, Obstacles, Options, ParamSpec, Params, Plugin, ReachQuery, Registry, Search,
-    Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
-};
-use crate::report::{ReachReport, TaskReport};
 use crate::error::ErrorKind;
 use crate::kinematics::{Body, Chain};
+use crate::plugin::{
+    Dependence, EffectorNeed, Obstacles, Options, ParamSpec, Params, Plugin, ReachQuery, Registry,
+    Search, Settings, SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
+};
+use crate::report::{ReachReport, TaskReport};
 use crate::scene::Target;
 use nalgebra::Point3;
 

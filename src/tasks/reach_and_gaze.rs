@@ -9,10 +9,10 @@
 use nalgebra::{Point3, Vector2};
 
 use super::common::{mix_seed, Common, CommonDecl, Reaching, THOROUGH_RETRY};
-use super::hand::{self, hands_of, Hand};
 use super::gaze::{
     limit_look, needs_look_link, refuses_look_link, Eyes, GazeObstacles, Looked, Looking,
 };
+use super::hand::{self, hands_of, Hand};
 use super::why::{Failed, Found};
 use crate::collision::{Obstacles, PlacedObstacles};
 use crate::error::ErrorKind;
