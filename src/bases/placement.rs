@@ -99,10 +99,7 @@ fn hash_pair(a: u64, b: u64) -> u64 {
 /// `region`, beside what a room with more in it found (`Region::beside`).
 fn hinted(region: Region, there: Option<(bool, Looked)>) -> Arc<Region> {
     Arc::new(match there {
-        Some((fits, paid)) => {
-            let known = region.known_empty() == Some(false);
-            region.beside(fits || known, paid)
-        }
+        Some((fits, paid)) => region.beside(fits, paid),
         None => region,
     })
 }

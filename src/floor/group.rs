@@ -34,12 +34,12 @@ pub struct FloorGroup {
     /// How many members share the bounds (each is charged its share of
     /// their routes' work).
     pub members: usize,
-    /// The outer's and the inner's routes, by room and headings
-    /// ([`FloorGroup::routes_key`]): worked out by the first member that
-    /// asks (two at once may both), kept for the group's life.
-    routes: Mutex<HashMap<u64, BoundRoutes>>,
-    /// What else the members share, by key, of whatever type it is (the
-    /// bounds' floor, `bases/bound_floor.rs`) ([`FloorGroup::shared`]).
+    /// What the members share, by key, of whatever type it is (the
+    /// outer's and the inner's routes, by room and headings,
+    /// [`FloorGroup::routes_key`]; the bounds' floor,
+    /// `bases/bound_floor.rs`): worked out by the first member that asks
+    /// (two at once may both), kept for the group's life
+    /// ([`FloorGroup::shared`]).
     shared: Mutex<HashMap<u64, Arc<dyn Any + Send + Sync>>>,
 }
 
@@ -80,7 +80,6 @@ impl FloorGroup {
             outer,
             inner,
             members: members.len(),
-            routes: Mutex::default(),
             shared: Mutex::default(),
         })
     }
@@ -101,7 +100,8 @@ impl FloorGroup {
         key: u64,
         compute: impl FnOnce() -> Result<Option<BoundRoutes>, E>,
     ) -> Result<Option<BoundRoutes>, E> {
-        kept_or(&self.routes, key, compute)
+        let kept = self.shared(key, compute)?;
+        Ok(kept.map(|routes| BoundRoutes::clone(&routes)))
     }
 
     /// What the members share kept by `key` (a key for one type of
@@ -140,27 +140,6 @@ impl FloorGroup {
         }
         self.members.hash(h);
     }
-}
-
-/// What `map` keeps by `key`, or `compute`'s, kept where it is worked out
-/// (two threads asking at once may both work it out; the first kept
-/// stays).
-fn kept_or<T: Clone, E>(
-    map: &Mutex<HashMap<u64, T>>,
-    key: u64,
-    compute: impl FnOnce() -> Result<Option<T>, E>,
-) -> Result<Option<T>, E> {
-    let lock = || map.lock().unwrap_or_else(|e| e.into_inner());
-    if let Some(found) = lock().get(&key) {
-        return Ok(Some(found.clone()));
-    }
-    let found = compute()?;
-    if let Some(found) = &found {
-        return Ok(Some(
-            lock().entry(key).or_insert_with(|| found.clone()).clone(),
-        ));
-    }
-    Ok(found)
 }
 
 /// Part `k` of every member held: the convex hull of their outlines with

@@ -357,10 +357,12 @@ impl Region {
     /// taken away, whose search at this heading looked at the pieces
     /// `paid` and found that the base `fits` there: then it fits here,
     /// unsearched; else the search here is charged for the pieces that
-    /// one did not look at, and for looking again at those it did.
+    /// one did not look at, and for looking again at those it did (and
+    /// it fits unsearched if that was known already).
     pub fn beside(self, fits: bool, paid: Looked) -> Self {
         let empty = OnceLock::new();
-        if fits {
+        // A fit already known (from a group's bounds) stays known.
+        if fits || self.known_empty() == Some(false) {
             let _ = empty.set(Emptiness {
                 empty: false,
                 work: 0,
