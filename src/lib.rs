@@ -74,6 +74,7 @@ pub use scenario::{fingerprint, read_shard, write_shard};
 pub use scenario::{PeopleBuilt, Scenario, ShardOf, ShardPart};
 pub use source::Sources;
 pub use std_modules::listing as stdlib_listing;
+pub use stdlib::describe as stdlib_entry;
 
 use std::sync::Arc;
 

@@ -19,3 +19,264 @@ pub fn body(module: &str, name: &str) -> Result<crate::kinematics::Body, crate::
 pub fn chain(module: &str, name: &str) -> Result<crate::kinematics::Chain, crate::Diagnostics> {
     body(module, name).map(|b| b.chain(0))
 }
+
+/// What `reach stdlib NAME` prints: where `name` is declared, the comment
+/// above its declaration (which names the sources of its figures), the
+/// declaration itself and, for a mannequin that needs no parameters, the
+/// body a scenario gets from it: each joint's limits and link, the
+/// effectors and the legs. Where no module declares `name`, the declared
+/// name closest to it, if one is close.
+pub fn describe(name: &str) -> Result<String, Option<String>> {
+    let found = KINDS
+        .iter()
+        .find_map(|k| crate::std_texts::home_of(k, name).map(|m| (*k, m)));
+    let Some((keyword, module)) = found else {
+        let known = declared_names();
+        let suggestions = crate::names::Suggestions::default();
+        return Err(suggestions.suggest(name, known.iter().map(String::as_str)));
+    };
+    let text = crate::std_texts::module(module).unwrap_or_default();
+    let lines: Vec<&str> = text.lines().collect();
+    let at = lines
+        .iter()
+        .position(|l| declares(l, keyword, name))
+        .unwrap_or_default();
+    let mut out = format!("{keyword} {name}: std::{module} (`use std::{module}`)\n\n");
+    // The comment above it, or above the run of one-line declarations of
+    // its kind it is one of (`base manual_wheelchair = ...` and the next).
+    let run_start = lines[..at]
+        .iter()
+        .rposition(|l| !l.starts_with(keyword))
+        .map_or(0, |k| k + 1);
+    let comment_start = lines[..run_start]
+        .iter()
+        .rposition(|l| !l.trim_start().starts_with("//"))
+        .map_or(0, |k| k + 1);
+    for line in &lines[comment_start..run_start] {
+        out.push_str(line);
+        out.push('\n');
+    }
+    let declared = declaration(&lines[at..]);
+    for line in &declared {
+        out.push_str(line);
+        out.push('\n');
+    }
+    if keyword == "base" {
+        out.push_str(&base_defaults(&declared.join("\n")));
+    }
+    if keyword == "mannequin" {
+        let chain = built_from(&declared.join(" "));
+        if !chain.is_empty() {
+            out.push_str(&format!(
+                "\nBuilt from {}: `reach stdlib NAME` shows each, with the sources of its figures \
+                 (docs/references.md gives them in full).\n",
+                chain.join(", then ")
+            ));
+        }
+        out.push('\n');
+        match body(module, name) {
+            Ok(b) => out.push_str(&body_table(&b)),
+            Err(_) => out.push_str(
+                "(its body depends on the parameters a person gives: see the comment above)\n",
+            ),
+        }
+    }
+    Ok(out)
+}
+
+/// The kinds of declaration `reach stdlib NAME` describes.
+const KINDS: [&str; 5] = ["mannequin", "profile", "base", "vision", "population"];
+
+/// Every name the standard library's modules declare, of [`KINDS`].
+fn declared_names() -> Vec<String> {
+    let mut names = Vec::new();
+    for (_, text) in crate::std_texts::MODULES {
+        for line in text.lines() {
+            for keyword in KINDS {
+                let Some(rest) = line.strip_prefix(keyword).and_then(|r| r.strip_prefix(' '))
+                else {
+                    continue;
+                };
+                let name: String = rest
+                    .trim_start()
+                    .chars()
+                    .take_while(|c| c.is_alphanumeric() || *c == '_')
+                    .collect();
+                if !name.is_empty() {
+                    names.push(name);
+                }
+            }
+        }
+    }
+    names
+}
+
+/// The mannequins a mannequin's declaration is built from, in order
+/// (`woman_5th_seated` from `woman_5th`, from `measured`, from
+/// `upper_body`), each as `` `name` ``.
+fn built_from(declared: &str) -> Vec<String> {
+    let mut chain = Vec::new();
+    let mut text = declared.to_string();
+    while let Some(rest) = after_alias_sign(&text) {
+        let next: String = rest
+            .trim_start()
+            .chars()
+            .take_while(|c| c.is_alphanumeric() || *c == '_')
+            .collect();
+        let Some(module) = crate::std_texts::home_of("mannequin", &next) else {
+            break;
+        };
+        if chain.len() > 8 || chain.contains(&format!("`{next}`")) {
+            break;
+        }
+        chain.push(format!("`{next}`"));
+        let lines: Vec<&str> = crate::std_texts::module(module)
+            .unwrap_or_default()
+            .lines()
+            .collect();
+        let Some(at) = lines.iter().position(|l| declares(l, "mannequin", &next)) else {
+            break;
+        };
+        text = declaration(&lines[at..]).join(" ");
+    }
+    chain
+}
+
+/// What follows a declaration's `=` outside its parentheses (the
+/// mannequin it is built from), if it has one.
+fn after_alias_sign(declared: &str) -> Option<&str> {
+    let mut depth = 0i64;
+    for (at, c) in declared.char_indices() {
+        match c {
+            '(' | '{' => depth += 1,
+            ')' | '}' => depth -= 1,
+            '=' if depth == 0 => return Some(&declared[at + 1..]),
+            _ => {}
+        }
+    }
+    None
+}
+
+/// The options a base preset leaves at its plugin's defaults, each with
+/// its value and what it is.
+fn base_defaults(declared: &str) -> String {
+    let plugin: String = declared
+        .split_once('=')
+        .map(|(_, rest)| rest.trim_start())
+        .unwrap_or_default()
+        .chars()
+        .take_while(|c| c.is_alphanumeric() || *c == '_')
+        .collect();
+    let registry = crate::plugin::Registry::builtin();
+    let Some(params) = registry.params(crate::plugin::PluginKind::Base, &plugin) else {
+        return String::new();
+    };
+    let given = |name: &str| {
+        declared
+            .split(|c: char| !(c.is_alphanumeric() || c == '_'))
+            .any(|word| word == name)
+    };
+    let mut out = format!("\nIts other options, at the `{plugin}` plugin's defaults:\n");
+    for param in params.iter().filter(|p| !given(p.name)) {
+        let value = param
+            .default
+            .as_ref()
+            .map_or_else(|| "(none)".to_string(), |v| v.display());
+        out.push_str(&format!(
+            "  {:<22} {:<14} {}\n",
+            param.name, value, param.doc
+        ));
+    }
+    out
+}
+
+/// Whether `line` starts the declaration of `name` as a `keyword`.
+fn declares(line: &str, keyword: &str, name: &str) -> bool {
+    let Some(rest) = line.strip_prefix(keyword).and_then(|r| r.strip_prefix(' ')) else {
+        return false;
+    };
+    rest.trim_start().strip_prefix(name).is_some_and(|after| {
+        after
+            .chars()
+            .next()
+            .is_none_or(|c| !(c.is_alphanumeric() || c == '_'))
+    })
+}
+
+/// The lines of the declaration that starts `lines`: up to the line where
+/// its parentheses and braces (outside comments) are all closed again.
+fn declaration<'t>(lines: &[&'t str]) -> Vec<&'t str> {
+    let mut depth = 0i64;
+    let mut taken = Vec::new();
+    for line in lines {
+        taken.push(*line);
+        let code = line.split("//").next().unwrap_or("");
+        for c in code.chars() {
+            match c {
+                '(' | '{' => depth += 1,
+                ')' | '}' => depth -= 1,
+                _ => {}
+            }
+        }
+        if depth <= 0 {
+            break;
+        }
+    }
+    taken
+}
+
+/// The body's joints (limits and links), effectors and legs, as a table.
+fn body_table(body: &crate::kinematics::Body) -> String {
+    use crate::kinematics::JointKind;
+    let mut out = String::from(
+        "The body a scenario gets: each joint's limits (deg, or mm for a joint that slides), \
+         and the link it moves to the next joint (its length and its solid's radius, mm):\n",
+    );
+    if let Some(stance) = body.posture {
+        out.push_str(&format!("  posture: {}\n", stance.word()));
+    }
+    out.push_str(&format!(
+        "  {:<26} {:>20}  {:>9} {:>8}\n",
+        "joint", "limits", "link", "radius"
+    ));
+    for joint in &body.joints {
+        let (min, max) = match joint.kind {
+            JointKind::Revolute => (joint.min.to_degrees(), joint.max.to_degrees()),
+            JointKind::Prismatic => (joint.min, joint.max),
+        };
+        let unit = if joint.kind == JointKind::Prismatic {
+            " mm"
+        } else {
+            ""
+        };
+        let origin = nalgebra::Point3::from(joint.rest_offset_mm());
+        let link_mm = (joint.axis_frame() * origin).coords.norm();
+        let (link, radius) = match link_mm > 0.05 {
+            true => (
+                format!("{link_mm:.1}"),
+                format!("{:.1}", joint.link.radius_mm),
+            ),
+            false => ("-".to_string(), "-".to_string()),
+        };
+        let limits = format!("{min:.1} to {max:.1}{unit}");
+        out.push_str(&format!(
+            "  {:<26} {limits:>20}  {link:>9} {radius:>8}\n",
+            joint.name
+        ));
+    }
+    let effectors: Vec<String> = body.effectors.iter().map(|e| e.name.clone()).collect();
+    out.push_str(&format!("  effectors: {}\n", effectors.join(", ")));
+    if let Some(legs) = &body.legs {
+        out.push_str(&format!(
+            "  legs: hip {:.0}, knee {:.0}, ankle {:.0} above the floor standing; foot {:.0}; \
+             hips {:.0} apart; seated, the hip point {:.0} above the seat\n",
+            legs.hip_height_mm,
+            legs.knee_height_mm,
+            legs.ankle_height_mm,
+            legs.foot_mm,
+            legs.hip_width_mm,
+            legs.hip_above_seat_mm
+        ));
+    }
+    out
+}

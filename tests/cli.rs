@@ -352,6 +352,36 @@ fn check_reports_ok() {
     assert!(stdout(&o).contains("ok (35 tasks)"), "{}", stdout(&o));
 }
 
+/// `reach check` takes several files, says each one's result, and exits
+/// with the worst.
+#[test]
+fn check_takes_several_files() {
+    let o = reach(&[
+        "check",
+        "examples/kitchen.reach",
+        "tests/errors/syntax_brace_left_open.reach",
+        "examples/galley.reach",
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(
+        stdout(&o).contains("examples/kitchen.reach: ok"),
+        "{}",
+        stdout(&o)
+    );
+    assert!(
+        stdout(&o).contains("examples/galley.reach: ok"),
+        "{}",
+        stdout(&o)
+    );
+    assert!(
+        stderr(&o).contains("syntax_brace_left_open.reach"),
+        "{}",
+        stderr(&o)
+    );
+    let o = reach(&["check", "examples/kitchen.reach", "examples/galley.reach"]);
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+}
+
 #[test]
 fn every_error_file_exits_1_with_a_located_diagnostic() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/errors");
@@ -490,6 +520,47 @@ fn stdlib_lists_people_chairs_and_visions() {
     ] {
         assert!(out.contains(expected), "{expected} missing from\n{out}");
     }
+}
+
+/// `reach stdlib NAME` shows where a name is declared, the comment naming
+/// its sources, the declaration and, for a mannequin, the body it builds;
+/// a base preset's other options at their defaults; a name it does not
+/// declare is an error with the closest one.
+#[test]
+fn stdlib_shows_one_entry_with_its_sources_and_body() {
+    let o = reach(&["stdlib", "woman_5th_seated"]);
+    assert_eq!(o.status.code(), Some(0));
+    let out = stdout(&o);
+    for expected in [
+        "mannequin woman_5th_seated: std::people (`use std::people`)",
+        "mannequin woman_5th_seated = woman_5th seated",
+        "Built from `woman_5th`, then `measured`, then `upper_body`",
+        "posture: seated",
+        "shoulder_flexion",
+        "effectors: grip, eyes, left_grip",
+    ] {
+        assert!(out.contains(expected), "{expected} missing from\n{out}");
+    }
+    // The upper arm of the 5th-percentile woman: shorter than the man's.
+    let upper_arm = |text: &str| -> f64 {
+        let row = text
+            .lines()
+            .find(|l| l.trim_start().starts_with("shoulder_rotation "))
+            .unwrap();
+        row.split_whitespace().nth(4).unwrap().parse().unwrap()
+    };
+    let man = stdout(&reach(&["stdlib", "man_50th"]));
+    assert!(upper_arm(&out) + 20.0 < upper_arm(&man), "{out}\n{man}");
+
+    let base = stdout(&reach(&["stdlib", "power_wheelchair"]));
+    assert!(base.contains("IDeA Center"), "{base}");
+    assert!(base.contains("seat_height 538mm"), "{base}");
+    assert!(base.contains("  width                  660mm"), "{base}");
+
+    let o = reach(&["stdlib", "woman_5"]);
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("did you mean `woman_5th`"), "{err}");
 }
 
 /// Input nested exactly as deep as each limit's ceiling is taken (the
