@@ -107,8 +107,9 @@ enum Command {
     },
     /// Parse and check a scenario without running it.
     Check {
-        /// The .reach scenario file.
-        file: PathBuf,
+        /// The .reach scenario files.
+        #[arg(required = true, value_hint = clap::ValueHint::FilePath)]
+        files: Vec<PathBuf>,
         /// Also estimate the work a run will need, task by task, against
         /// the bound on solver work: runs every task by one person and a
         /// sample of each population's people (the square root of its
@@ -126,6 +127,7 @@ enum Command {
     Test {
         /// Scenario files, or directories searched for .reach files
         /// (default: the current directory).
+        #[arg(value_hint = clap::ValueHint::AnyPath)]
         paths: Vec<PathBuf>,
         /// Write the golden reports that are missing or whose answers
         /// changed (and only those).
@@ -156,8 +158,14 @@ enum Command {
     },
     /// List every plugin with its parameters.
     Plugins,
-    /// List the standard library: mannequins, profiles, bases, visions.
-    Stdlib,
+    /// List the standard library: mannequins, profiles, bases, visions;
+    /// or show one of them.
+    Stdlib {
+        /// A name to show: its declaration, the comment above it that
+        /// names the sources of its figures, and for a mannequin the body
+        /// it builds (each joint's limits and link, the effectors, the legs).
+        name: Option<String>,
+    },
     /// Print the JSON Schema of the report (`--format json`, `--out`).
     Schema,
     /// Print a shell completion script (see the README for where it goes).
@@ -183,6 +191,7 @@ fn shard_of(text: &str) -> Result<reach::ShardOf, String> {
 #[derive(Args)]
 struct Evaluate {
     /// The .reach scenario file.
+    #[arg(value_hint = clap::ValueHint::FilePath)]
     file: PathBuf,
     /// Output format for standard output: text, json or html (glb and maps
     /// are written by --out only).
@@ -345,17 +354,19 @@ pub fn main() -> i32 {
             )
         }
         Command::Check {
-            file,
+            files,
             estimate,
             limits,
             reporting,
-        } => check(
-            &registry,
-            &limits,
-            &file,
-            estimate,
-            &Shown::new(&reporting, colour),
-        ),
+        } => {
+            let shown = Shown::new(&reporting, colour);
+            // Every file is checked; the exit code is the worst.
+            files
+                .iter()
+                .map(|file| check(&registry, &limits, file, estimate, &shown))
+                .max()
+                .unwrap_or(0)
+        }
         Command::Test {
             paths,
             update,
@@ -388,19 +399,48 @@ pub fn main() -> i32 {
             print!("{}", plugins_listing(&registry));
             0
         }
-        Command::Stdlib => {
+        Command::Stdlib { name: None } => {
             print!("{}", reach::stdlib_listing());
             0
         }
+        Command::Stdlib { name: Some(name) } => stdlib_entry(&name),
         Command::Schema => {
             print!("{}", reach::report::schema_json());
             0
         }
         Command::Completions { shell } => {
-            clap_complete::generate(shell, &mut Cli::command(), "reach", &mut std::io::stdout());
-            0
+            let mut script = Vec::new();
+            clap_complete::generate(shell, &mut Cli::command(), "reach", &mut script);
+            if shell == clap_complete::Shell::Bash {
+                script.extend_from_slice(
+                    crate::completion::bash_scenario_files(&Cli::command()).as_bytes(),
+                );
+            }
+            match std::io::stdout().write_all(&script) {
+                Ok(()) => 0,
+                Err(_) => 1,
+            }
         }
         Command::Man { out } => man(out.as_deref()),
+    }
+}
+
+/// `reach stdlib NAME`: the entry, or an error (exit 2) with the closest
+/// name the standard library declares.
+fn stdlib_entry(name: &str) -> i32 {
+    match reach::stdlib_entry(name) {
+        Ok(text) => {
+            print!("{text}");
+            0
+        }
+        Err(suggestion) => {
+            let hint = suggestion.map_or(String::new(), |s| format!(" (did you mean `{s}`?)"));
+            eprintln!(
+                "error: the standard library declares no `{}`{hint}; `reach stdlib` lists its names",
+                reach::escaped(name)
+            );
+            2
+        }
     }
 }
 

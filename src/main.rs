@@ -2,6 +2,7 @@
 
 mod bar;
 mod cli;
+mod completion;
 mod count_arg;
 mod man_pages;
 mod shard_command;

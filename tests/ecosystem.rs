@@ -256,6 +256,37 @@ fn completions_generate_for_each_shell() {
     assert_eq!(o.status.code(), Some(2));
 }
 
+/// In bash, after `reach run` (and `watch`, `check`, `test`) a word that
+/// is not an option completes to the `.reach` files and directories
+/// there, not to the options; an option's value is still clap's.
+#[test]
+fn bash_completes_scenario_files_after_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("reach.bash");
+    std::fs::write(&script, stdout(&reach(&["completions", "bash"]))).unwrap();
+    for name in ["kitchen.reach", "kettle.obj", "keys.txt"] {
+        std::fs::write(dir.path().join(name), "").unwrap();
+    }
+    std::fs::create_dir(dir.path().join("kits")).unwrap();
+    let complete = |words: &str| {
+        let o = std::process::Command::new("bash")
+            .current_dir(dir.path())
+            .arg("-c")
+            .arg(format!(
+                "source reach.bash; COMP_WORDS=({words}); COMP_CWORD=$((${{#COMP_WORDS[@]}}-1)); \
+                 _reach_scenarios reach \"${{COMP_WORDS[-1]}}\" \"${{COMP_WORDS[-2]}}\"; \
+                 printf '%s\\n' \"${{COMPREPLY[@]}}\" | sort"
+            ))
+            .output()
+            .unwrap();
+        String::from_utf8_lossy(&o.stdout).into_owned()
+    };
+    assert_eq!(complete("reach run k"), "kitchen.reach\nkits\n");
+    assert_eq!(complete("reach check a.reach k"), "kitchen.reach\nkits\n");
+    assert_eq!(complete("reach run --fo"), "--format\n");
+    assert!(!complete("reach run --out k").contains("--format"));
+}
+
 #[test]
 fn man_pages_are_roff_for_every_command() {
     let o = reach(&["man"]);
