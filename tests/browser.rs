@@ -7,7 +7,8 @@
 //! reload of `reach watch --out`), one that matches is not.
 //!
 //! Chromium is found as `REACH_CHROMIUM`, or `chromium`, `chromium-browser`
-//! or `google-chrome` on the PATH. Without one the test says so and passes,
+//! or `google-chrome` on the PATH. Without one each test prints "SKIPPED"
+//! in `cargo test`'s output and passes,
 //! unless `REACH_REQUIRE_BROWSER` is set, as `.ci/run` sets it (after
 //! installing Debian's chromium). `REACH_UPDATE_DOCS=1` writes the
 //! screenshots in `docs/` again.
@@ -34,8 +35,12 @@ fn browser() -> Option<PathBuf> {
             std::env::var_os("REACH_REQUIRE_BROWSER").is_none(),
             "REACH_REQUIRE_BROWSER is set and no Chromium was found (REACH_CHROMIUM, or chromium on the PATH)"
         );
-        eprintln!(
-            "browser tests skipped: no Chromium (install Debian's chromium, or set REACH_CHROMIUM)"
+        // Written past the test harness's capture (which takes only
+        // `eprintln!`), so that `cargo test` shows it beside the "ok".
+        use std::io::Write;
+        let _ = writeln!(
+            std::io::stderr(),
+            "SKIPPED: no Chromium (install Debian's chromium, or set REACH_CHROMIUM)"
         );
     }
     found
