@@ -265,3 +265,92 @@ fn a_page_opened_from_disk_sees_a_new_stamp_beside_it() {
         "a new stamp went unseen: {body}"
     );
 }
+
+/// The page's selftest record (`data-selftest`), from its `<body>`.
+fn selftest(chromium: &Path, profile: &Path, page: &str) -> serde_json::Value {
+    let body = body_attributes(chromium, profile, page);
+    assert!(!body.contains("data-errors"), "errors on the page: {body}");
+    let start = body
+        .find("data-selftest=\"")
+        .unwrap_or_else(|| panic!("no selftest in {body}"))
+        + "data-selftest=\"".len();
+    let end = start + body[start..].find("}\"").unwrap() + 1;
+    serde_json::from_str(&body[start..end]).unwrap()
+}
+
+/// Opened without a task in its address, the page shows the whole room
+/// from above a corner, with the two walls on the camera's side cut away
+/// and the other two drawn; `#task=N` opens close on task N (chosen in the
+/// list); `&view=plan` opens on the plan, every wall seen edge on, a
+/// picture unlike the room's. `REACH_UPDATE_DOCS=1` writes the whole
+/// room's screenshot as docs/report-room.png (the README shows it).
+#[test]
+fn the_page_opens_on_the_room_its_walls_cut_away_and_honours_its_address() {
+    let Some(chromium) = browser() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    write_report("examples/kitchen_wheelchair.reach", dir.path());
+    let profile = dir.path().join("profile");
+
+    let room = selftest(&chromium, &profile, &url(dir.path(), "?selftest"));
+    assert_eq!(room["view"], "room", "{room}");
+    assert_eq!(room["selected"], 0, "{room}");
+    let walls: Vec<i64> = serde_json::from_value(room["walls"].clone()).unwrap();
+    assert_eq!(walls.iter().sum::<i64>(), 2, "two walls cut away: {room}");
+
+    let task = selftest(&chromium, &profile, &url(dir.path(), "?selftest#task=7"));
+    assert_eq!(task["view"], "task", "{task}");
+    assert_eq!(task["selected"], 7, "{task}");
+
+    let plan = selftest(
+        &chromium,
+        &profile,
+        &url(dir.path(), "?selftest#task=7&view=plan"),
+    );
+    assert_eq!(plan["view"], "plan", "{plan}");
+    assert_eq!(plan["selected"], 7, "{plan}");
+    assert_eq!(plan["walls"], serde_json::json!([1, 1, 1, 1]), "{plan}");
+
+    let shot = |suffix: &str, name: &str| {
+        let png = dir.path().join(name);
+        headless(&chromium, &profile)
+            .arg(format!("--screenshot={}", png.display()))
+            .arg(url(dir.path(), suffix))
+            .output()
+            .unwrap();
+        assert!(png.is_file(), "no screenshot {name}");
+        png
+    };
+    let room_png = shot("#task=7&view=room", "room.png");
+    let plan_png = shot("#task=7&view=plan", "plan.png");
+    let in_view_pixels = |png: &Path| -> Vec<[u8; 3]> {
+        pixels(png)
+            .into_iter()
+            .filter(|&(x, y, _)| in_view(x, y))
+            .map(|(_, _, rgb)| rgb)
+            .collect()
+    };
+    let (a, b) = (in_view_pixels(&room_png), in_view_pixels(&plan_png));
+    let differ = a.iter().zip(&b).filter(|(p, q)| p != q).count();
+    assert!(
+        differ > a.len() / 5,
+        "the plan looks like the room ({differ} of {} pixels differ)",
+        a.len()
+    );
+    // The room's walls show in the whole room's picture: light grey
+    // (#e3e6eb, lit), neither white nor the furniture's colour.
+    let wall = a
+        .iter()
+        .filter(|p| {
+            let [r, g, b] = p.map(i32::from);
+            (150..235).contains(&r) && (g - r).abs() < 8 && (b - g) >= 0 && (b - g) < 14
+        })
+        .count();
+    assert!(
+        wall > a.len() / 20,
+        "the walls hardly show ({wall} of {} pixels)",
+        a.len()
+    );
+    if std::env::var_os("REACH_UPDATE_DOCS").is_some() {
+        std::fs::copy(shot("", "whole.png"), "docs/report-room.png").unwrap();
+    }
+}

@@ -17,6 +17,7 @@ const COLOURS = {
   surface: 0x4a7bd0,
   door: 0x6b4fbb,
   through: 0xc463c9,
+  wall: 0xe3e6eb,
 };
 
 // How far short a map cell fell, as a colour: green where reached, then
@@ -113,6 +114,8 @@ function buildRoom(room) {
   );
   walls.position.set(x / 2, y / 2, z / 2);
   group.add(walls);
+  const sides = buildWalls(room);
+  sides.forEach((side) => group.add(side.group));
   const obstacles = new Map();
   for (const b of room.boxes) {
     const pivot = new THREE.Group();
@@ -164,7 +167,58 @@ function buildRoom(room) {
     group.add(mesh);
     targets.set(t.name, mesh);
   }
-  return { group, obstacles, targets };
+  return { group, obstacles, targets, sides };
+}
+
+// A door's opening is this high (the ADA's 80 in) unless the room is lower.
+const DOOR_HEIGHT_MM = 2030;
+
+// The room's four walls, each a group of panels round its doors'
+// openings, with a point on it and the normal into the room: a wall
+// between the camera and the room is hidden (cut away) as it turns.
+function buildWalls(room) {
+  const [x, y, z] = room.size;
+  const corners = [[0, 0], [x, 0], [x, y], [0, y]];
+  const material = new THREE.MeshLambertMaterial({
+    color: COLOURS.wall,
+    side: THREE.DoubleSide,
+    polygonOffset: true,
+    polygonOffsetFactor: 1,
+    polygonOffsetUnits: 1,
+  });
+  const up = new THREE.Vector3(0, 0, 1);
+  return corners.map((c, k) => {
+    const p0 = new THREE.Vector3(c[0], c[1], 0);
+    const next = corners[(k + 1) % 4];
+    const p1 = new THREE.Vector3(next[0], next[1], 0);
+    const length = p0.distanceTo(p1);
+    const along = p1.clone().sub(p0).normalize();
+    const inward = up.clone().cross(along);
+    // The doors in this wall, as spans along it.
+    const openings = (room.doors || [])
+      .map((d) => [new THREE.Vector3(d.from[0], d.from[1], 0), new THREE.Vector3(d.to[0], d.to[1], 0)])
+      .filter(([a, b]) => [a, b].every((q) => Math.abs(q.clone().sub(p0).dot(inward)) < 1))
+      .map(([a, b]) => [a.clone().sub(p0).dot(along), b.clone().sub(p0).dot(along)].sort((m, n) => m - n));
+    const doorTop = Math.min(DOOR_HEIGHT_MM, z);
+    const panels = [];
+    let s = 0;
+    for (const [from, to] of openings.sort((m, n) => m[0] - n[0])) {
+      if (from > s) panels.push([s, from, 0, z]);
+      if (doorTop < z) panels.push([from, to, doorTop, z]);
+      s = Math.max(s, to);
+    }
+    if (s < length) panels.push([s, length, 0, z]);
+    const group = new THREE.Group();
+    const basis = new THREE.Matrix4().makeBasis(along, up, along.clone().cross(up));
+    for (const [s0, s1, h0, h1] of panels) {
+      const panel = new THREE.Mesh(new THREE.PlaneGeometry(s1 - s0, h1 - h0), material);
+      panel.applyMatrix4(basis);
+      panel.position.copy(p0).addScaledVector(along, (s0 + s1) / 2).setZ((h0 + h1) / 2);
+      group.add(panel);
+    }
+    group.userData.wall = k;
+    return { group, point: p0, inward };
+  });
 }
 
 // One task's objects: the person, the line of sight, the map's cells and
@@ -215,16 +269,24 @@ function buildTask(task, data) {
     } else {
       m.points.forEach(([x, y], k) => (k === 0 ? shape.moveTo(x, y) : shape.lineTo(x, y)));
     }
+    // Faint fills, so that spaces laid over each other stay apart by
+    // their outlines; a failing space drawn over those that hold.
     const area = new THREE.Mesh(
       new THREE.ShapeGeometry(shape, 48),
-      new THREE.MeshBasicMaterial({ color: colour, transparent: true, opacity: 0.35, side: THREE.DoubleSide, depthWrite: false })
+      new THREE.MeshBasicMaterial({ color: colour, transparent: true, opacity: m.ok ? 0.14 : 0.24, side: THREE.DoubleSide, depthWrite: false })
     );
-    area.position.z = 3;
+    area.position.z = m.ok ? 3 : 5;
+    area.renderOrder = m.ok ? 1 : 2;
     group.add(area);
+    const outline = shape.getPoints(48).map((p) => new THREE.Vector3(p.x, p.y, m.ok ? 4 : 6));
     const edge = new THREE.Line(
-      new THREE.BufferGeometry().setFromPoints(shape.getPoints(48).map((p) => new THREE.Vector3(p.x, p.y, 4))),
-      new THREE.LineBasicMaterial({ color: colour })
+      new THREE.BufferGeometry().setFromPoints(outline),
+      m.ok
+        ? new THREE.LineBasicMaterial({ color: colour })
+        : new THREE.LineDashedMaterial({ color: colour, dashSize: 60, gapSize: 30 })
     );
+    if (!m.ok) edge.computeLineDistances();
+    edge.renderOrder = m.ok ? 1 : 2;
     group.add(edge);
   }
   if (task.cells) {
@@ -264,13 +326,14 @@ function legend(data) {
     ["#ff2d95", "a joint at its limit"],
     ["#ff5a36", "what blocked it"],
     ["#2b6cd6", "line of sight"],
+    ["#e3e6eb", "the room's walls (cut away where they face you)"],
   ];
   if (data.rooms.some((r) => (r.doors || []).length)) {
     rows.push(["#6b4fbb", "a door; dashed: where the base can get to from one"]);
   }
   if (data.tasks.some((t) => (t.marks || []).length)) {
     rows.push(["#2e9e4f", "a standard's rule holds (floor space, element)"]);
-    rows.push(["#d64545", "a standard's rule fails"]);
+    rows.push(["#d64545", "a standard's rule fails (floor space: dashed outline)"]);
   }
   let html = rows
     .map(([c, t]) => `<div class="row"><span class="swatch" style="background:${c}"></span>${t}</div>`)
@@ -289,7 +352,7 @@ function legend(data) {
         .map(([, c, t]) => `<div class="row"><span class="swatch" style="background:${c}"></span>${t}</div>`)
         .join("");
   }
-  document.getElementById("legend").innerHTML = html;
+  document.getElementById("legend-body").innerHTML = html;
 }
 
 // "; expectations: 6 met, 1 NOT met", or nothing.
@@ -347,10 +410,18 @@ export function start(settings, data) {
   const sun = new THREE.DirectionalLight(0xffffff, 1.4);
   sun.position.set(-0.4, -0.8, 1.2);
   scene.add(sun);
+  // Two cameras: in perspective (turned with the mouse), and the plan,
+  // straight down (panned and zoomed only); each with its own controls.
   const camera = new THREE.PerspectiveCamera(45, 1, 10, 200000);
   camera.up.set(0, 0, 1);
   const controls = new OrbitControls(camera, renderer.domElement);
   controls.enableDamping = false;
+  const planCamera = new THREE.OrthographicCamera(-1, 1, 1, -1, 10, 200000);
+  planCamera.up.set(0, 1, 0);
+  const planControls = new OrbitControls(planCamera, renderer.domElement);
+  planControls.enableRotate = false;
+  planControls.screenSpacePanning = true;
+  planControls.enabled = false;
 
   const rooms = data.rooms.map(buildRoom);
   rooms.forEach((r) => scene.add(r.group));
@@ -374,43 +445,83 @@ export function start(settings, data) {
     verdict.className = "verdict";
     verdict.textContent = t.verdict;
     button.append(dot, document.createTextNode(t.label), verdict);
-    button.addEventListener("click", () => select(k));
+    button.addEventListener("click", () => select(k, "task"));
     item.append(button);
     list.append(item);
     return button;
   });
 
-  // Look over the person's shoulder at what the task asked about; a map
-  // from above its surface; a room from a high corner.
-  function frame(room, task) {
-    const [x, y] = room.size;
+  // Over the person's shoulder at what the task asked about; a map from
+  // above its surface.
+  function frameTask(task) {
+    const [x, y] = data.rooms[task.room].size;
     const centre = new THREE.Vector3(x / 2, y / 2, 700);
-    let at = centre, from;
-    if (task && task.cells) {
+    let at, from;
+    if (task.cells) {
       const p = task.cells.points;
       at = p.reduce((s, q) => s.add(v3(q)), new THREE.Vector3()).divideScalar(Math.max(p.length, 1));
       from = at.clone().add(v3(task.cells.u).cross(v3(task.cells.v)).normalize().multiplyScalar(2200));
       from.add(centre.clone().sub(at).setZ(0).normalize().multiplyScalar(1400));
-    } else if (task && task.target && task.base) {
+    } else if (task.target && task.base) {
       const base = v3(task.base), target = v3(task.target);
       at = base.clone().lerp(target, 0.55);
       at.z = Math.max((base.z + target.z) / 2, 600);
-      const back = base.clone().sub(target).setZ(0);
-      if (back.lengthSq() < 1) back.set(-1, -1, 0);
-      back.normalize();
+      const back = backOf(task);
       const side = new THREE.Vector3(-back.y, back.x, 0);
       from = at.clone().add(back.multiplyScalar(1900)).add(side.multiplyScalar(900));
       from.z = at.z + 1500;
     } else {
-      from = new THREE.Vector3(-0.3 * x, -0.6 * y, 1.2 * Math.max(x, y));
+      return frameRoom(data.rooms[task.room], task);
     }
     controls.target.copy(at);
     camera.position.copy(from);
     controls.update();
   }
 
+  // The way from the target back to the person, level: where the camera
+  // stands to look at the task.
+  function backOf(task) {
+    const back = task && task.target && task.base
+      ? v3(task.base).sub(v3(task.target)).setZ(0)
+      : new THREE.Vector3(-0.45, -0.75, 0);
+    if (back.lengthSq() < 1) back.set(-1, -1, 0);
+    return back.normalize();
+  }
+
+  // The whole room in view, from above behind the person (or from a
+  // corner): its bounding sphere fitted within the narrower field.
+  function frameRoom(room, task) {
+    const [x, y, z] = room.size;
+    const centre = new THREE.Vector3(x / 2, y / 2, z / 3);
+    const radius = 0.5 * Math.hypot(x, y, z);
+    const vertical = THREE.MathUtils.degToRad(camera.fov);
+    const horizontal = 2 * Math.atan(Math.tan(vertical / 2) * camera.aspect);
+    const distance = radius / Math.sin(Math.min(vertical, horizontal) / 2);
+    const from = backOf(task).add(new THREE.Vector3(0, 0, 1.1)).normalize();
+    controls.target.copy(centre);
+    camera.position.copy(centre).addScaledVector(from, distance);
+    controls.update();
+  }
+
+  // The plan: straight down on the room, all of it in view.
+  function framePlan(room) {
+    const [x, y, z] = room.size;
+    const aspect = camera.aspect;
+    const half = 0.55 * Math.max(y, x / aspect);
+    Object.assign(planCamera, { left: -half * aspect, right: half * aspect, top: half, bottom: -half, zoom: 1 });
+    planCamera.position.set(x / 2, y / 2, z + 5000);
+    planControls.target.set(x / 2, y / 2, 0);
+    planCamera.updateProjectionMatrix();
+    planControls.update();
+  }
+
+  // What is shown: "task" (close on the task), "room" (the whole room) or
+  // "plan"; and which task.
   let current = -1;
-  function select(k) {
+  let mode = "room";
+  const viewButtons = toolbar((m) => show(m));
+
+  function select(k, how = mode) {
     if (k < 0 || k >= data.tasks.length) return;
     current = k;
     const task = data.tasks[k];
@@ -431,10 +542,27 @@ export function start(settings, data) {
     const blocker = task.blocked_by && room.obstacles.get(task.blocked_by);
     if (blocker) blocker.material.emissive.setHex(COLOURS.blocked);
     buttons.forEach((b, i) => b.classList.toggle("selected", i === k));
+    buttons[k].scrollIntoView({ block: "nearest" });
     const strained = task.strained.map((j) => j.name).join(", ");
     document.getElementById("facts").textContent =
       task.details + (strained ? `\n  at a limit (pink): ${strained}` : "");
-    frame(data.rooms[task.room], task);
+    show(how);
+  }
+
+  // Frame the chosen task as `how` says, and keep it in the address.
+  function show(how) {
+    mode = how;
+    const task = data.tasks[current];
+    const room = data.rooms[task ? task.room : 0] || { size: [3000, 3000, 2500] };
+    controls.enabled = mode !== "plan";
+    planControls.enabled = mode === "plan";
+    if (mode === "plan") framePlan(room);
+    else if (mode === "task" && task) frameTask(task);
+    else frameRoom(room, task);
+    viewButtons.forEach((b) => b.classList.toggle("selected", b.dataset.view === mode));
+    if (current >= 0) {
+      history.replaceState(null, "", `#task=${current}${mode === "task" ? "" : `&view=${mode}`}`);
+    }
     render();
   }
 
@@ -443,38 +571,86 @@ export function start(settings, data) {
     renderer.setSize(w, h);
     camera.aspect = w / Math.max(h, 1);
     camera.updateProjectionMatrix();
+    if (mode === "plan") framePlan(data.rooms[data.tasks[current] ? data.tasks[current].room : 0] || { size: [3000, 3000, 2500] });
     render();
+  }
+
+  // Walls between the camera and the room's inside are cut away; in the
+  // plan every wall is seen edge on.
+  function cutAway() {
+    const eye = mode === "plan" ? null : camera.position;
+    for (const r of rooms) {
+      for (const side of r.sides) {
+        side.group.visible = !eye || eye.clone().sub(side.point).dot(side.inward) >= 0;
+      }
+    }
   }
 
   function render() {
-    renderer.render(scene, camera);
+    cutAway();
+    renderer.render(scene, mode === "plan" ? planCamera : camera);
   }
 
   controls.addEventListener("change", render);
+  planControls.addEventListener("change", render);
   window.addEventListener("resize", resize);
   window.addEventListener("keydown", (e) => {
     const n = Number.parseInt(e.key, 10);
-    if (n >= 1 && n <= 9) select(n - 1);
+    if (n >= 1 && n <= 9) select(n - 1, "task");
+    const views = { r: "room", p: "plan", t: "task" };
+    if (views[e.key]) show(views[e.key]);
+    if (e.key === "l") document.getElementById("legend-box").toggleAttribute("open");
   });
-  window.addEventListener("hashchange", () => select(taskFromHash()));
-  function taskFromHash() {
-    const m = /task=(\d+)/.exec(location.hash);
-    return m ? Number(m[1]) : 0;
-  }
+  window.addEventListener("hashchange", () => {
+    const asked = fromHash();
+    select(asked.task ?? 0, asked.view ?? "task");
+  });
 
   resize();
+  // `#task=N` (from 0, in the order of the list) opens on that task, close
+  // on it; `&view=room` or `&view=plan` as the buttons say. Without it the
+  // page opens on the whole room.
+  const asked = fromHash();
   if (data.tasks.length > 0) {
-    select(Math.min(taskFromHash(), data.tasks.length - 1));
+    const task = Math.min(asked.task ?? 0, data.tasks.length - 1);
+    select(task, asked.view ?? (asked.task === undefined ? "room" : "task"));
   } else {
-    frame(data.rooms[0] || { size: [3000, 3000, 2500] }, null);
-    render();
+    show(asked.view === "plan" ? "plan" : "room");
   }
   status.textContent = "";
   document.body.dataset.readyMs = String(Math.round(performance.now()));
   document.body.dataset.ready = "1";
 
   if (settings.live) poll(settings, selftest);
-  if (selftest) runSelftest(renderer, buttons, render);
+  if (selftest) {
+    runSelftest(renderer, buttons, render, () => ({
+      selected: current,
+      view: mode,
+      walls: rooms[data.tasks[current] ? data.tasks[current].room : 0].sides
+        .map((side) => (side.group.visible ? 1 : 0)),
+    }));
+  }
+}
+
+// The task and view the address asks for: `#task=3&view=plan`.
+function fromHash() {
+  const task = /task=(\d+)/.exec(location.hash);
+  const view = /view=(room|plan|task)/.exec(location.hash);
+  return { task: task ? Number(task[1]) : undefined, view: view ? view[1] : undefined };
+}
+
+// The buttons over the view that choose how it is framed.
+function toolbar(choose) {
+  const bar = document.getElementById("toolbar");
+  return [["task", "Task", "t"], ["room", "Whole room", "r"], ["plan", "Plan", "p"]].map(([view, words, key]) => {
+    const button = document.createElement("button");
+    button.textContent = words;
+    button.title = `${words} (key ${key})`;
+    button.dataset.view = view;
+    button.addEventListener("click", () => choose(view));
+    bar.append(button);
+    return button;
+  });
 }
 
 // Reload when `reach` writes new answers: the stamp file beside the page
@@ -497,7 +673,8 @@ function poll(settings, selftest) {
 
 // For the browser test: the picture's pixels before and after a click on
 // the second task, and how many differ.
-function runSelftest(renderer, buttons, render) {
+function runSelftest(renderer, buttons, render, state) {
+  const shown = state();
   const gl = renderer.getContext();
   const pixels = () => {
     render();
@@ -519,9 +696,10 @@ function runSelftest(renderer, buttons, render) {
       if (Math.abs(after[i] - before[i]) + Math.abs(after[i + 1] - before[i + 1]) +
           Math.abs(after[i + 2] - before[i + 2]) > 30) changed++;
     }
-    buttons[0].click();
+    buttons[shown.selected].click();
   }
   document.body.dataset.selftest = JSON.stringify({
+    ...shown,
     tasks: buttons.length,
     pixels: before.length / 4,
     notWhite: before.length / 4 - white,
