@@ -48,14 +48,16 @@ impl FormatPlugin for Text {
         };
         let _ = writeln!(out, "{file}: {} {noun}, {} ok{unrun}\n", answers.len(), ok);
         out.push_str(&table(&answers));
-        for task in &report.tasks {
-            task.details(&mut out);
-        }
+        // Said under the table, before the details: they bear on every
+        // answer above.
         if !report.notes.is_empty() {
             out.push('\n');
             for note in &report.notes {
                 let _ = writeln!(out, "note: {note}");
             }
+        }
+        for task in &report.tasks {
+            task.details(&mut out);
         }
         expectations(report, &mut out);
         // Names are escaped where they come from (files, URDFs); this

@@ -237,7 +237,7 @@ impl Scenario {
             .into_iter()
             .map(|r| {
                 format!(
-                    "room `{}` has no `door`: a base is placed wherever it fits, and the way there from an entrance is not checked",
+                    "room `{}` has no `door`: a base is placed wherever it fits, even where nothing leads to (behind a counter, in a corner closed in by furniture); declare the room's doors to place it only where it can get to",
                     self.rooms[r].name
                 )
             })
