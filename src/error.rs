@@ -71,6 +71,14 @@ pub enum ErrorKind {
     /// checked: `is` says what it is ("a box", "a target of room `bath`").
     #[error("`{name}` is {is}: `except` names targets of the room checked")]
     NotAnElement { name: String, is: String },
+    /// A standard's fixture option (`water_closet NAME`) naming what is not
+    /// a box of the room checked: `is` says what it is ("a target").
+    #[error("`{name}` is {is}: `{option}` names a box of the room checked")]
+    NotAFixture {
+        name: String,
+        is: String,
+        option: &'static str,
+    },
     #[error("{what} `{name}` is defined twice")]
     Duplicate { what: &'static str, name: String },
     #[error("`{name}` is defined in terms of itself")]
@@ -265,6 +273,7 @@ impl ErrorKind {
             UnknownName { .. }
             | AmbiguousSurface { .. }
             | NotAnElement { .. }
+            | NotAFixture { .. }
             | Duplicate { .. }
             | LetCycle { .. }
             | PresetNamesPlugin { .. } => "reach::name",
@@ -315,6 +324,7 @@ impl ErrorKind {
             UnknownName { what, .. } => format!("no {what} of this name"),
             AmbiguousSurface { .. } => "which room's?".into(),
             NotAnElement { .. } => "not a target of this room".into(),
+            NotAFixture { .. } => "not a box of this room".into(),
             Duplicate { .. } => "defined again here".into(),
             LetCycle { .. } => "used in its own definition".into(),
             PresetNamesPlugin { .. } => "a base plugin's name".into(),

@@ -444,3 +444,244 @@ fn an_unknown_standard_or_room_or_approach_is_a_diagnostic() {
         assert!(rendered.contains(expected), "{tail}: {rendered}");
     }
 }
+
+/// The room rule of `section` (a fixture's) whose rule names `fixture`.
+fn room_rule(report: &StandardReport, section: &str, fixture: &str) -> RuleCheck {
+    report
+        .room_rules
+        .iter()
+        .find(|r| r.section == section && r.rule.contains(&format!("`{fixture}`")))
+        .cloned()
+        .unwrap_or_else(|| panic!("no {section} of {fixture} among {:?}", report.room_rules))
+}
+
+/// A water closet against the wall at y = 0, its side wall x = 0, its
+/// centreline `centre` from that wall, its seat at `seat`; a side bar
+/// from `bar_from` to `bar_to` from the rear wall, its top at `bar_top`,
+/// `bar_gap` off its wall; a rear bar from `rear_from` to `rear_to` along
+/// x; and what else stands in the room.
+struct Toilet {
+    centre: f64,
+    seat: f64,
+    bar_from: f64,
+    bar_to: f64,
+    bar_top: f64,
+    bar_gap: f64,
+    rear_from: f64,
+    rear_to: f64,
+    also: &'static str,
+}
+
+const COMPLIANT: Toilet = Toilet {
+    centre: 430.0,
+    seat: 440.0,
+    bar_from: 305.0,
+    bar_to: 1370.0,
+    bar_top: 878.0,
+    bar_gap: 38.0,
+    rear_from: 125.0,
+    rear_to: 1040.0,
+    also: "",
+};
+
+fn toilet(t: &Toilet) -> StandardReport {
+    let items = format!(
+        "box toilet at ({}, 0, 0) size (360, 700, {})\n\
+         box side_bar at ({}, {}, {}) size (38, {}, 38)\n\
+         box rear_bar at ({}, 38, 860) size ({}, 38, 38)\n{}",
+        t.centre - 180.0,
+        t.seat,
+        t.bar_gap,
+        t.bar_from,
+        t.bar_top - 38.0,
+        t.bar_to - t.bar_from,
+        t.rear_from,
+        t.rear_to - t.rear_from,
+        t.also
+    );
+    checked(
+        &items,
+        "{ water_closet toilet side_grab_bar side_bar rear_grab_bar rear_bar }",
+    )
+}
+
+/// 604.2-604.5 and 609.3-609.4, each at its boundary: the figure the rule
+/// allows holds, 5 mm beyond it fails (the rules take 2 mm of rounding).
+#[test]
+fn a_water_closet_and_its_grab_bars_hold_at_their_figures_and_fail_beyond() {
+    let report = toilet(&COMPLIANT);
+    for (section, fixture) in [
+        ("604.2", "toilet"),
+        ("604.3.1", "toilet"),
+        ("604.4", "toilet"),
+        ("604.5.1", "side_bar"),
+        ("604.5.2", "rear_bar"),
+        ("609.2", "side_bar"),
+        ("609.3", "side_bar"),
+        ("609.4", "side_bar"),
+    ] {
+        let r = room_rule(&report, section, fixture);
+        assert!(r.ok, "{section} of the compliant toilet: {r:?}");
+    }
+    let fails = |t: Toilet, section: &str, fixture: &str| {
+        let r = room_rule(&toilet(&t), section, fixture);
+        assert!(!r.ok, "{section} of {fixture} should fail: {r:?}");
+    };
+    fails(
+        Toilet {
+            centre: 460.0,
+            ..COMPLIANT
+        },
+        "604.2",
+        "toilet",
+    );
+    fails(
+        Toilet {
+            centre: 400.0,
+            ..COMPLIANT
+        },
+        "604.2",
+        "toilet",
+    );
+    fails(
+        Toilet {
+            seat: 490.0,
+            ..COMPLIANT
+        },
+        "604.4",
+        "toilet",
+    );
+    fails(
+        Toilet {
+            seat: 425.0,
+            ..COMPLIANT
+        },
+        "604.4",
+        "toilet",
+    );
+    fails(
+        Toilet {
+            bar_from: 310.0,
+            ..COMPLIANT
+        },
+        "604.5.1",
+        "side_bar",
+    );
+    fails(
+        Toilet {
+            bar_to: 1365.0,
+            ..COMPLIANT
+        },
+        "604.5.1",
+        "side_bar",
+    );
+    fails(
+        Toilet {
+            bar_top: 920.0,
+            ..COMPLIANT
+        },
+        "609.4",
+        "side_bar",
+    );
+    fails(
+        Toilet {
+            bar_top: 835.0,
+            ..COMPLIANT
+        },
+        "609.4",
+        "side_bar",
+    );
+    fails(
+        Toilet {
+            bar_gap: 45.0,
+            ..COMPLIANT
+        },
+        "609.3",
+        "side_bar",
+    );
+    fails(
+        Toilet {
+            rear_from: 130.0,
+            ..COMPLIANT
+        },
+        "604.5.2",
+        "rear_bar",
+    );
+    fails(
+        Toilet {
+            rear_to: 1035.0,
+            ..COMPLIANT
+        },
+        "604.5.2",
+        "rear_bar",
+    );
+    // A vanity inside the 1525 x 1420 mm clearance, and one just outside.
+    let inside = Toilet {
+        also: "box vanity at (1520, 0, 0) size (500, 500, 850)",
+        ..COMPLIANT
+    };
+    let r = room_rule(&toilet(&inside), "604.3.1", "toilet");
+    assert!(!r.ok && r.measured.contains("`vanity`"), "{r:?}");
+    let outside = Toilet {
+        also: "box vanity at (1530, 0, 0) size (500, 500, 850)",
+        ..COMPLIANT
+    };
+    assert!(room_rule(&toilet(&outside), "604.3.1", "toilet").ok);
+}
+
+/// 606.3 a lavatory's rim at most 865 mm; 603.3 a mirror's bottom edge at
+/// most 1015 mm over it, 890 mm elsewhere; 904.4 a counter's portion at
+/// most 915 mm high and 915 mm long (760 mm with knee space under it).
+#[test]
+fn a_lavatory_a_mirror_and_a_service_counter_hold_at_their_figures() {
+    let room = |rim: f64, mirror_x: f64, mirror_bottom: f64| {
+        checked(
+            &format!(
+                "box basin at (1000, 0, {}) size (550, 450, 70)\n\
+                 box mirror at ({mirror_x}, 0, {mirror_bottom}) size (450, 10, 800)",
+                rim - 70.0
+            ),
+            "{ lavatory basin mirror mirror }",
+        )
+    };
+    assert!(room_rule(&room(865.0, 1050.0, 1015.0), "606.3", "basin").ok);
+    assert!(!room_rule(&room(870.0, 1050.0, 1015.0), "606.3", "basin").ok);
+    assert!(room_rule(&room(865.0, 1050.0, 1015.0), "603.3", "mirror").ok);
+    assert!(!room_rule(&room(865.0, 1050.0, 1020.0), "603.3", "mirror").ok);
+    // Away from the lavatory, 890 mm.
+    assert!(!room_rule(&room(865.0, 3000.0, 900.0), "603.3", "mirror").ok);
+    assert!(room_rule(&room(865.0, 3000.0, 890.0), "603.3", "mirror").ok);
+
+    let counter = |items: &str| {
+        room_rule(
+            &checked(items, "{ service_counter low_part }"),
+            "904.4",
+            "low_part",
+        )
+    };
+    let counter_ok = |items: &str| {
+        let r = checked(items, "{ service_counter low_part }");
+        let rule = r
+            .room_rules
+            .iter()
+            .find(|r| r.rule.contains("`low_part`"))
+            .cloned()
+            .unwrap();
+        rule
+    };
+    // Parallel: 915 long, 915 high.
+    assert!(counter_ok("box low_part at (0, 2000, 0) size (600, 915, 915)").ok);
+    assert!(!counter_ok("box low_part at (0, 2000, 0) size (600, 915, 920)").ok);
+    assert!(!counter("box low_part at (0, 2000, 0) size (600, 905, 915)").ok);
+    // Forward: 760 long with knee space under a top at 685 mm and up.
+    let top = "box low_part at (0, 2000, 685) size (600, 760, 40)";
+    assert!(counter_ok(top).ok);
+    // A cupboard under its whole depth takes the knee space; a panel at
+    // the back, 450 mm from the front edge, leaves it.
+    let under = format!("{top}\nbox cupboard at (0, 2000, 0) size (600, 300, 600)");
+    assert!(!counter(&under).ok);
+    let panel = format!("{top}\nbox panel at (450, 2000, 0) size (50, 760, 685)");
+    assert!(counter_ok(&panel).ok);
+    let deep_panel = format!("{top}\nbox panel at (300, 2000, 0) size (50, 760, 685)\nbox panel_2 at (120, 2000, 0) size (50, 760, 685)");
+    assert!(!counter(&deep_panel).ok);
+}

@@ -65,6 +65,9 @@ impl Checker<'_> {
                 return None;
             }
         };
+        if !self.boxes_named(decl, standard.as_ref(), rooms, &checked) {
+            return None;
+        }
         Some(
             checked
                 .into_iter()
@@ -78,6 +81,49 @@ impl Checker<'_> {
                 })
                 .collect(),
         )
+    }
+
+    /// Whether each box the standard's options name is a box of every
+    /// room checked; an error at the option's value where one is not.
+    fn boxes_named(
+        &mut self,
+        decl: &StandardDecl,
+        standard: &dyn Standard,
+        rooms: &[Room],
+        checked: &[usize],
+    ) -> bool {
+        let mut ok = true;
+        for (option, name) in standard.boxes_named() {
+            let span = (decl.options.iter())
+                .find(|o| o.name.value == option)
+                .map_or(decl.span, |o| o.value_span);
+            let Some(&missing) = checked
+                .iter()
+                .find(|&&r| !rooms[r].boxes.iter().any(|b| b.name == name))
+            else {
+                continue;
+            };
+            let error = match what_else(&name, rooms, &[missing]).or_else(|| {
+                (rooms[missing].targets.iter().any(|t| t.name == name))
+                    .then(|| "a target".to_string())
+            }) {
+                Some(is) if is != "a box" => Error::new(
+                    ErrorKind::NotAFixture {
+                        name: name.clone(),
+                        is,
+                        option,
+                    },
+                    span,
+                ),
+                _ => {
+                    let boxes = rooms[missing].boxes.iter().map(|b| b.name.as_str());
+                    self.unknown("box", &name, span, boxes)
+                }
+            };
+            self.error(error);
+            ok = false;
+        }
+        ok
     }
 
     /// The names of `except`: each a target of a room checked (of one of

@@ -21,4 +21,11 @@ pub trait Standard: Send + Sync {
     /// out its floor costs is spent from `allowance`; once that is
     /// exhausted the check may stop short (the run then gives no answer).
     fn check(&self, room: &Room, allowance: &dyn Allowance) -> StandardReport;
+
+    /// The boxes its options name (a water closet, a grab bar), each with
+    /// its option: the checker makes sure each is a box of every room
+    /// checked.
+    fn boxes_named(&self) -> Vec<(&'static str, String)> {
+        Vec::new()
+    }
 }

@@ -21,9 +21,18 @@
 //!   least 915 mm wide from a door to the clear floor space (where the room
 //!   has doors).
 //!
-//! The figures are [`ADA2010`] (`figures.rs`), the rules `rules.rs`'s.
+//! - for the fixtures its options name (each a box): 603.3 a mirror's
+//!   bottom edge, 604.2 a water closet's centreline from the side wall,
+//!   604.3.1 its clearance, 604.4 its seat, 604.5.1 and 604.5.2 its grab
+//!   bars' places, 606.3 a lavatory's rim, 609.2-609.4 each grab bar's
+//!   cross section, space from the wall and height, 904.4 a sales or
+//!   service counter's accessible portion (`fixtures.rs`).
+//!
+//! The figures are [`ADA2010`] (`figures.rs`), the rules `rules.rs`'s and
+//! `fixtures.rs`'s.
 
 use super::figures::ADA2010;
+use super::fixtures::Fixtures;
 use super::rules;
 use crate::allowance::Allowance;
 use crate::bases::Approach;
@@ -40,6 +49,7 @@ pub struct Ada2010;
 #[derive(Clone, Debug, PartialEq)]
 struct Ada2010Settings {
     approach: String,
+    fixtures: Fixtures,
 }
 
 impl Settings for Ada2010Settings {
@@ -52,6 +62,44 @@ impl Settings for Ada2010Settings {
                     "`forward` or `side`: every element must be usable so, with that approach's rules (`any`: either)",
                 )
                 .get(),
+            fixtures: Fixtures {
+                water_closet: p
+                    .optional_name(
+                        "water_closet",
+                        "the box that is the water closet (604.2-604.4: its centreline from the side wall, clearance, seat height)",
+                    )
+                    .get(),
+                side_grab_bar: p
+                    .optional_name(
+                        "side_grab_bar",
+                        "the box that is the side wall's grab bar (604.5.1, 609.2-609.4)",
+                    )
+                    .get(),
+                rear_grab_bar: p
+                    .optional_name(
+                        "rear_grab_bar",
+                        "the box that is the rear wall's grab bar (604.5.2, 609.2-609.4)",
+                    )
+                    .get(),
+                lavatory: p
+                    .optional_name(
+                        "lavatory",
+                        "the box that is the lavatory or sink (606.3: its rim's height)",
+                    )
+                    .get(),
+                mirror: p
+                    .optional_name(
+                        "mirror",
+                        "the box that is the mirror's reflecting surface (603.3: its bottom edge)",
+                    )
+                    .get(),
+                service_counter: p
+                    .optional_name(
+                        "service_counter",
+                        "the box that is the accessible portion of a sales or service counter (904.4)",
+                    )
+                    .get(),
+            },
         }
     }
 }
@@ -62,7 +110,7 @@ impl Plugin for Ada2010 {
     }
 
     fn doc(&self) -> &'static str {
-        "the 2010 ADA Standards: turning space (304), reach ranges (308), clear floor space (305), knee clearance (306), route widths (403.5.1), door widths (404.2.3)"
+        "the 2010 ADA Standards: turning space (304), reach ranges (308), clear floor space (305), knee clearance (306), route widths (403.5.1), door widths (404.2.3); for the fixtures named: mirrors (603.3), water closets (604.2-604.5), lavatories (606.3), grab bars (609.2-609.4), service counters (904.4)"
     }
 
     fn params(&self) -> Vec<ParamSpec> {
@@ -73,15 +121,26 @@ impl Plugin for Ada2010 {
 impl StandardPlugin for Ada2010 {
     fn configure(&self, options: &Options) -> Result<Box<dyn Standard>, SettingsError> {
         let settings = Ada2010Settings::from_options(options)?;
-        Ok(Box::new(Checked(Approach::parse(&settings.approach)?)))
+        Ok(Box::new(Checked {
+            approach: Approach::parse(&settings.approach)?,
+            fixtures: settings.fixtures,
+        }))
     }
 }
 
-/// The configured standard: the approaches it may use.
-struct Checked(Approach);
+/// The configured standard: the approaches it may use, and the room's
+/// fixtures its options name.
+struct Checked {
+    approach: Approach,
+    fixtures: Fixtures,
+}
 
 impl Standard for Checked {
     fn check(&self, room: &Room, allowance: &dyn Allowance) -> StandardReport {
-        rules::check(&ADA2010, self.0, room, allowance)
+        rules::check(&ADA2010, self.approach, room, allowance, &self.fixtures)
+    }
+
+    fn boxes_named(&self) -> Vec<(&'static str, String)> {
+        self.fixtures.named()
     }
 }

@@ -8,6 +8,7 @@ mod ada2010;
 mod clearance;
 mod elements;
 mod figures;
+mod fixtures;
 mod rules;
 
 pub use ada2010::Ada2010;

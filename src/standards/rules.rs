@@ -18,6 +18,7 @@ use nalgebra::{Point3, Vector2};
 use super::clearance::Under;
 use super::elements::{approached, crossing_within, wall_distance, Approached};
 use super::figures::Figures;
+use super::fixtures::{self, Fixtures};
 use crate::allowance::Allowance;
 use crate::bases::Approach;
 use crate::floor::{
@@ -38,6 +39,9 @@ const ROUTE_MOST: f64 = 3000.0;
 /// narrows it.
 const DOOR_REVEAL: f64 = 20.0;
 
+/// What the fixtures' rules leave out, said where fixtures are named.
+const FIXTURES_NOTE: &str = "fixtures: checked are 603.3, 604.2, 604.3.1, 604.4, 604.5.1, 604.5.2, 606.3, 609.2-609.4 and 904.4 as named; not checked are 603.2 (the room's turning space is 304), 603.4 coat hooks and shelves, 604.6 flush controls and 604.7 dispensers (targets, where declared, are checked as elements), 604.8 stalls, 606.2 (the lavatory's targets are elements, with their knee clearance), 606.5 exposed pipes, 609.5-609.8 (surfaces, fittings, strength), 904.3 check-out aisles and 904.5 food service lines";
+
 /// Standard `f`'s rules on `room`, every element usable by `approach`;
 /// the floors worked out are charged to `meter`.
 pub fn check(
@@ -45,6 +49,7 @@ pub fn check(
     approach: Approach,
     room: &Room,
     allowance: &dyn Allowance,
+    fixtures: &Fixtures,
 ) -> StandardReport {
     // Floor under an element counts only so deep (306).
     let knees = knee_limited(room, f.knee_high_mm, f.knee_deepest_mm);
@@ -57,6 +62,9 @@ pub fn check(
             "the room has no `door`: routes ({}) are not checked",
             f.sections.route
         ));
+    }
+    if *fixtures != Fixtures::default() {
+        notes.push(FIXTURES_NOTE.to_string());
     }
     if !room.meshes.is_empty() {
         notes.push(
@@ -72,6 +80,7 @@ pub fn check(
         notes,
         room_rules: std::iter::once(turning_space(f, &knees, routes.as_ref(), allowance))
             .chain(room.doors.iter().map(|d| door_width(f, room, d)))
+            .chain(fixtures::check(room, fixtures))
             .collect(),
         elements: {
             let measure = Measure {
