@@ -79,6 +79,14 @@ pub enum ErrorKind {
         is: String,
         option: &'static str,
     },
+    /// A standard without `in` names a fixture that some room it checks
+    /// lacks.
+    #[error("`{name}` is a box of room `{home}`, not of room `{room}`: without `in`, the standard checks every room")]
+    FixtureNotInEveryRoom {
+        name: String,
+        room: String,
+        home: String,
+    },
     #[error("{what} `{name}` is defined twice")]
     Duplicate { what: &'static str, name: String },
     #[error("`{name}` is defined in terms of itself")]
@@ -274,6 +282,7 @@ impl ErrorKind {
             | AmbiguousSurface { .. }
             | NotAnElement { .. }
             | NotAFixture { .. }
+            | FixtureNotInEveryRoom { .. }
             | Duplicate { .. }
             | LetCycle { .. }
             | PresetNamesPlugin { .. } => "reach::name",
@@ -325,6 +334,7 @@ impl ErrorKind {
             AmbiguousSurface { .. } => "which room's?".into(),
             NotAnElement { .. } => "not a target of this room".into(),
             NotAFixture { .. } => "not a box of this room".into(),
+            FixtureNotInEveryRoom { .. } => "named for every room".into(),
             Duplicate { .. } => "defined again here".into(),
             LetCycle { .. } => "used in its own definition".into(),
             PresetNamesPlugin { .. } => "a base plugin's name".into(),
@@ -388,6 +398,9 @@ impl ErrorKind {
             ),
             BadNumber { .. } | NotFinite => Some("numbers must be finite and at most 2^53 (9007199254740992)".into()),
             ImportCycle { chain, .. } => Some(format!("the cycle: {}", chain.join(" -> "))),
+            FixtureNotInEveryRoom { home, .. } => {
+                Some(format!("check that room alone: `standard ... in {home} {{ ... }}`"))
+            }
             UnknownStdModule {
                 suggestion,
                 available,

@@ -180,7 +180,11 @@ proptest! {
                 prop_assert!(!diagnostics.render(true).is_empty());
             }
             Ok(scenario) => match reach::run(&scenario) {
-                Ok(report) => prop_assert_eq!(report.tasks.len(), scenario.tasks.len()),
+                // Each task's answer, then each standard's.
+                Ok(report) => prop_assert_eq!(
+                    report.tasks.len(),
+                    scenario.tasks.len() + scenario.standards.len()
+                ),
                 // A run past the bound on solver work is refused as a whole.
                 Err(e) => prop_assert!(matches!(e.kind(), ErrorKind::TooMuchWork { .. }), "{e}"),
             },

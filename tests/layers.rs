@@ -516,7 +516,7 @@ fn every_static_is_listed_with_what_it_holds() {
 /// with the reason it belongs to a program that uses the library.
 #[test]
 fn the_library_exports_the_run_api_and_the_plugin_sdk_only() {
-    const EXPORTED: [&str; 21] = [
+    const EXPORTED: [&str; 22] = [
         // What a run takes and gives, and the plugin SDK.
         "pub mod limits;",
         "pub mod machine_diagnostics;",
@@ -538,6 +538,7 @@ fn the_library_exports_the_run_api_and_the_plugin_sdk_only() {
         "pub use scenario::{PeopleBuilt, Scenario, ShardOf, ShardPart};",
         "pub use source::Sources;",
         "pub use std_modules::listing as stdlib_listing;",
+        "pub use stdlib::describe as stdlib_entry;",
         "pub struct Session<'a> {",
         "pub struct Ran {",
     ];

@@ -676,12 +676,84 @@ fn a_lavatory_a_mirror_and_a_service_counter_hold_at_their_figures() {
     // Forward: 760 long with knee space under a top at 685 mm and up.
     let top = "box low_part at (0, 2000, 685) size (600, 760, 40)";
     assert!(counter_ok(top).ok);
-    // A cupboard under its whole depth takes the knee space; a panel at
-    // the back, 450 mm from the front edge, leaves it.
+    // A cupboard under its whole depth takes the knee space; so does a
+    // panel 100 mm behind its front (the edge away from its wall).
     let under = format!("{top}\nbox cupboard at (0, 2000, 0) size (600, 300, 600)");
     assert!(!counter(&under).ok);
-    let panel = format!("{top}\nbox panel at (450, 2000, 0) size (50, 760, 685)");
+    let behind_front = format!("{top}\nbox panel at (450, 2000, 0) size (50, 760, 685)");
+    assert!(!counter(&behind_front).ok);
+    // Free-standing (a reception's lowered top), either long edge may be
+    // the front: a panel 450 mm behind one leaves knee space; panels
+    // within 430 mm of both do not.
+    let free = "box low_part at (1000, 2000, 685) size (600, 760, 40)";
+    let panel = format!("{free}\nbox panel at (1450, 2000, 0) size (50, 760, 685)");
     assert!(counter_ok(&panel).ok);
-    let deep_panel = format!("{top}\nbox panel at (300, 2000, 0) size (50, 760, 685)\nbox panel_2 at (120, 2000, 0) size (50, 760, 685)");
-    assert!(!counter(&deep_panel).ok);
+    let both = format!("{free}\nbox panel at (1300, 2000, 0) size (50, 760, 685)\nbox panel_2 at (1120, 2000, 0) size (50, 760, 685)");
+    assert!(!counter(&both).ok);
+}
+
+/// What a designer's bathrooms showed wrong once: a rear bar on the wall
+/// facing the toilet, a bar turned off its wall, a 140 mm round bar, a
+/// mirror across the room from the lavatory, a dispenser in the
+/// clearance, a toilet's tank as a box of its own, a counter whose depth
+/// is longer than its front.
+#[test]
+fn fixtures_are_held_to_their_own_walls_and_shapes() {
+    let with = |also: &'static str| Toilet { also, ..COMPLIANT };
+    // The rear bar on the far wall, facing the toilet.
+    let far = checked(
+        "box toilet at (250, 0, 0) size (360, 700, 440)\n\
+         box rear_bar at (125, 5924, 860) size (950, 38, 38)",
+        "{ water_closet toilet rear_grab_bar rear_bar }",
+    );
+    let r = room_rule(&far, "604.5.2", "rear_bar");
+    assert!(!r.ok && r.measured.contains("not the rear wall"), "{r:?}");
+    // A side bar turned 5 deg off its wall.
+    let turned = checked(
+        "box toilet at (250, 0, 0) size (360, 700, 440)\n\
+         box side_bar at (38, 290, 840) size (38, 1090, 38) rotate -5deg",
+        "{ water_closet toilet side_grab_bar side_bar }",
+    );
+    for section in ["604.5.1", "609.3"] {
+        let r = room_rule(&turned, section, "side_bar");
+        assert!(!r.ok && r.measured.contains("turned 5 deg"), "{r:?}");
+    }
+    // 30 by 40 mm: 140 mm round, more than 609.2.2's 122 mm.
+    let flat = checked(
+        "box side_bar at (38, 300, 840) size (30, 1070, 40)",
+        "{ side_grab_bar side_bar }",
+    );
+    assert!(!room_rule(&flat, "609.2", "side_bar").ok);
+    // A mirror on the wall across from the lavatory: 890 mm.
+    let across = checked(
+        "box basin at (1650, 0, 780) size (550, 450, 70)\n\
+         box mirror at (1700, 5990, 1000) size (450, 10, 800)",
+        "{ lavatory basin mirror mirror }",
+    );
+    let r = room_rule(&across, "603.3", "mirror");
+    assert!(!r.ok && r.measured.contains("not over a lavatory"), "{r:?}");
+    // A paper dispenser on the side wall, off the floor: allowed in the
+    // clearance (604.3.2); a cabinet on the floor there is not.
+    let dispenser = toilet(&with("box paper at (0, 900, 600) size (120, 150, 150)"));
+    assert!(room_rule(&dispenser, "604.3.1", "toilet").ok);
+    let cabinet = toilet(&with("box cabinet at (0, 900, 0) size (120, 150, 600)"));
+    assert!(!room_rule(&cabinet, "604.3.1", "toilet").ok);
+    // The bowl 250 mm off the rear wall, its tank behind it.
+    let bowl = checked(
+        "box toilet at (240, 250, 0) size (380, 450, 440)\n\
+         box tank at (230, 0, 0) size (400, 250, 760)",
+        "{ water_closet toilet water_closet_tank tank }",
+    );
+    for section in ["604.2", "604.3.1", "604.4"] {
+        let r = room_rule(&bowl, section, "toilet");
+        assert!(r.ok, "{section}: {r:?}");
+    }
+    // Against the wall at y = 0, 600 mm of front and 950 mm deep: too
+    // short for either approach.
+    let deep = checked(
+        "box counter at (1000, 0, 0) size (600, 950, 900)",
+        "{ service_counter counter }",
+    );
+    let r = room_rule(&deep, "904.4", "counter");
+    assert!(!r.ok && r.measured.starts_with("600 mm long"), "{r:?}");
 }

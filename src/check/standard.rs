@@ -93,20 +93,44 @@ impl Checker<'_> {
         checked: &[usize],
     ) -> bool {
         let mut ok = true;
+        let mut seen: Vec<(&'static str, String)> = Vec::new();
         for (option, name) in standard.boxes_named() {
             let span = (decl.options.iter())
                 .find(|o| o.name.value == option)
                 .map_or(decl.span, |o| o.value_span);
+            if let Some((first, _)) = seen.iter().find(|(_, n)| *n == name) {
+                let what = format!("box `{name}` as a fixture (by `{first}` and `{option}`)");
+                self.error(Error::new(ErrorKind::Repeated { what }, span));
+                ok = false;
+                continue;
+            }
+            seen.push((option, name.clone()));
             let Some(&missing) = checked
                 .iter()
                 .find(|&&r| !rooms[r].boxes.iter().any(|b| b.name == name))
             else {
                 continue;
             };
-            let error = match what_else(&name, rooms, &[missing]).or_else(|| {
-                (rooms[missing].targets.iter().any(|t| t.name == name))
-                    .then(|| "a target".to_string())
-            }) {
+            let elsewhere = (rooms.iter().enumerate())
+                .find(|(k, r)| *k != missing && r.boxes.iter().any(|b| b.name == name))
+                .map(|(_, r)| r.name.clone());
+            if let (Some(home), None) = (&elsewhere, &decl.room) {
+                let error = ErrorKind::FixtureNotInEveryRoom {
+                    name: name.clone(),
+                    room: rooms[missing].name.clone(),
+                    home: home.clone(),
+                };
+                self.error(Error::new(error, span));
+                ok = false;
+                continue;
+            }
+            let is = elsewhere.map(|home| format!("a box of room `{home}`"));
+            let error = match is
+                .or_else(|| what_else(&name, rooms, &[missing]))
+                .or_else(|| {
+                    (rooms[missing].targets.iter().any(|t| t.name == name))
+                        .then(|| "a target".to_string())
+                }) {
                 Some(is) if is != "a box" => Error::new(
                     ErrorKind::NotAFixture {
                         name: name.clone(),

@@ -69,6 +69,12 @@ impl Settings for Ada2010Settings {
                         "the box that is the water closet (604.2-604.4: its centreline from the side wall, clearance, seat height)",
                     )
                     .get(),
+                water_closet_tank: p
+                    .optional_name(
+                        "water_closet_tank",
+                        "the box that is the water closet's tank, where it is a box of its own (part of the water closet for its walls and clearance)",
+                    )
+                    .get(),
                 side_grab_bar: p
                     .optional_name(
                         "side_grab_bar",

@@ -14,6 +14,9 @@ use crate::scene::{BoxObstacle, Room};
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Fixtures {
     pub water_closet: Option<String>,
+    /// The water closet's tank, where it is a box of its own: part of the
+    /// water closet for its walls and its clearance, not for its seat.
+    pub water_closet_tank: Option<String>,
     pub side_grab_bar: Option<String>,
     pub rear_grab_bar: Option<String>,
     pub lavatory: Option<String>,
@@ -26,6 +29,7 @@ impl Fixtures {
     pub fn named(&self) -> Vec<(&'static str, String)> {
         [
             ("water_closet", &self.water_closet),
+            ("water_closet_tank", &self.water_closet_tank),
             ("side_grab_bar", &self.side_grab_bar),
             ("rear_grab_bar", &self.rear_grab_bar),
             ("lavatory", &self.lavatory),
@@ -57,12 +61,19 @@ mod ada {
     pub const REAR_BAR_LONG: f64 = 915.0;
     pub const REAR_BAR_WALL_SIDE: f64 = 305.0;
     pub const REAR_BAR_OPEN_SIDE: f64 = 610.0;
-    /// 609.2: a bar's cross section: round, or another shape of this
-    /// perimeter and no wider than its largest.
+    /// 609.2: a bar's cross section: round, 1 1/4 to 2 in across
+    /// (609.2.1), or another shape 4 to 4.8 in round and at most 2 in
+    /// across (609.2.2).
     pub const ROUND: (f64, f64) = (32.0, 51.0);
-    pub const PERIMETER: (f64, f64) = (100.0, 160.0);
+    pub const PERIMETER: (f64, f64) = (100.0, 122.0);
     /// 609.3: the space between a bar and its wall.
     pub const FROM_WALL: f64 = 38.0;
+    /// 604.3.2: a box on a wall, off the floor and at most this deep (a
+    /// dispenser, a coat hook, a shelf) may stand in the clearance.
+    pub const ACCESSORY_DEEP: f64 = 200.0;
+    pub const ACCESSORY_OFF_FLOOR: f64 = 380.0;
+    /// A box this close to a wall is on it.
+    pub const ON_WALL: f64 = 50.0;
     /// 609.4: the top of the gripping surface.
     pub const BAR_HEIGHT: (f64, f64) = (840.0, 915.0);
     /// 606.3: a lavatory's rim or counter surface, at most.
@@ -122,6 +133,31 @@ fn plan(b: &BoxObstacle) -> Plan {
         bottom: b.corner_mm.z,
         top: b.corner_mm.z + b.size_mm.z,
     }
+}
+
+/// The bounds of two outlines together.
+fn union(a: Plan, b: Plan) -> Plan {
+    Plan {
+        min: [a.min[0].min(b.min[0]), a.min[1].min(b.min[1])],
+        max: [a.max[0].max(b.max[0]), a.max[1].max(b.max[1])],
+        bottom: a.bottom.min(b.bottom),
+        top: a.top.max(b.top),
+    }
+}
+
+/// How far the box is turned off the room's walls, degrees (0 to 45).
+fn off_square_deg(b: &BoxObstacle) -> f64 {
+    let quarter = std::f64::consts::FRAC_PI_2;
+    let off = b.yaw_rad.rem_euclid(quarter);
+    off.min(quarter - off).to_degrees()
+}
+
+/// A box turned more than this off the walls is not square to them.
+const SQUARE_DEG: f64 = 1.0;
+
+/// Whether two outlines overlap on the floor (by more than the rounding).
+fn overlap(a: &Plan, b: &Plan) -> bool {
+    (0..2).all(|k| a.min[k] < b.max[k] - ROUNDING_MM && b.min[k] + ROUNDING_MM < a.max[k])
 }
 
 /// A wall of the room: `axis` 0 is a wall across x (at x = 0 or at the
@@ -237,10 +273,14 @@ pub fn check(room: &Room, fixtures: &Fixtures) -> Vec<RuleCheck> {
 /// (their spans along the mirror's wall overlap) or not.
 fn mirror_rule(room: &Room, mirror: &BoxObstacle, lavatory: Option<&BoxObstacle>) -> RuleCheck {
     let m = plan(mirror);
-    let along = 1 - nearest_wall(room, &m).axis;
+    let wall = nearest_wall(room, &m);
+    let along = 1 - wall.axis;
     let over = lavatory.is_some_and(|l| {
         let l = plan(l);
-        l.min[along] < m.max[along] && m.min[along] < l.max[along] && l.top <= m.bottom
+        nearest_wall(room, &l) == wall
+            && l.min[along] < m.max[along]
+            && m.min[along] < l.max[along]
+            && l.top <= m.bottom
     });
     let (high, where_) = match over {
         true => (ada::MIRROR_OVER_LAVATORY, "over the lavatory"),
@@ -275,7 +315,8 @@ fn wc_walls(room: &Room, p: &Plan) -> (Wall, Wall) {
 /// 604.4 the seat height; 604.5 the grab bars' places where named.
 fn water_closet(room: &Room, wc: &BoxObstacle, fixtures: &Fixtures) -> Vec<RuleCheck> {
     let p = plan(wc);
-    let (rear, side) = wc_walls(room, &p);
+    let whole = named(room, &fixtures.water_closet_tank).map_or(p, |t| union(p, plan(t)));
+    let (rear, side) = wc_walls(room, &whole);
     let centre = 0.5 * (p.min[side.axis] + p.max[side.axis]);
     let from_side = side.from(room, centre);
     let mut rules = vec![
@@ -306,7 +347,7 @@ fn water_closet(room: &Room, wc: &BoxObstacle, fixtures: &Fixtures) -> Vec<RuleC
         rules.push(side_bar_place(room, bar, rear, side));
     }
     if let Some(bar) = named(room, &fixtures.rear_grab_bar) {
-        rules.push(rear_bar_place(room, bar, side, from_side));
+        rules.push(rear_bar_place(room, bar, (rear, side), from_side));
     }
     rules
 }
@@ -325,31 +366,40 @@ fn clearance(room: &Room, wc: &BoxObstacle, (rear, side): (Wall, Wall), f: &Fixt
     (lo[rear.axis], hi[rear.axis]) = span(rear, ada::CLEARANCE_DEEP);
     let allowed = [
         Some(&wc.name),
+        f.water_closet_tank.as_ref(),
         f.side_grab_bar.as_ref(),
         f.rear_grab_bar.as_ref(),
     ];
     let inside = (0..2).all(|a| lo[a] >= -ROUNDING_MM && hi[a] <= room.size_mm[a] + ROUNDING_MM);
-    let mut standing: Vec<&str> = room
+    let area = Plan {
+        min: lo,
+        max: hi,
+        bottom: 0.0,
+        top: ada::HEADROOM,
+    };
+    let mut standing: Vec<&BoxObstacle> = room
         .boxes
         .iter()
-        .filter(|b| !allowed.contains(&Some(&b.name)))
-        .filter(|b| {
-            let q = plan(b);
-            q.bottom < ada::HEADROOM
-                && (0..2).all(|a| q.min[a] < hi[a] - ROUNDING_MM && lo[a] + ROUNDING_MM < q.max[a])
-        })
-        .map(|b| b.name.as_str())
+        .filter(|b| !allowed.contains(&Some(&b.name)) && !accessory(room, b))
+        .filter(|b| plan(b).bottom < ada::HEADROOM && overlap(&plan(b), &area))
         .collect();
-    standing.sort_unstable();
-    let measured = match (inside, standing.is_empty()) {
+    standing.sort_unstable_by(|a, b| a.name.cmp(&b.name));
+    let names: Vec<&str> = standing.iter().map(|b| b.name.as_str()).collect();
+    let measured = match (inside, names.len()) {
         (false, _) => format!(
-            "the room is {:.0} by {:.0} mm there",
-            room.size_mm[side.axis].min(ada::CLEARANCE_WIDE),
-            room.size_mm[rear.axis].min(ada::CLEARANCE_DEEP)
+            "the room is {:.0} mm from the side wall by {:.0} mm from the rear wall",
+            room.size_mm[side.axis], room.size_mm[rear.axis]
         ),
-        (true, true) => "clear".to_string(),
-        (true, false) => format!("`{}` stands in it", standing.join("`, `")),
+        (true, 0) => "clear (wall-mounted accessories allowed, 604.3.2)".to_string(),
+        (true, 1) => format!("`{}` stands in it", names[0]),
+        (true, _) => format!("`{}` stand in it", names.join("`, `")),
     };
+    // A bar-like box not named as one: say how to name it.
+    let hint = match standing.iter().any(|b| bar_like(b)) {
+        true => " (a grab bar is named by `side_grab_bar` or `rear_grab_bar`)",
+        false => "",
+    };
+    let measured = format!("{measured}{hint}");
     RuleCheck {
         shape: Some(FloorShape::Polygon {
             points_mm: vec![
@@ -373,11 +423,31 @@ fn clearance(room: &Room, wc: &BoxObstacle, (rear, side): (Wall, Wall), f: &Fixt
     }
 }
 
+/// 604.3.2: a box on a wall, off the floor and shallow (a dispenser, a
+/// coat hook, a shelf), which the clearance may overlap.
+fn accessory(room: &Room, b: &BoxObstacle) -> bool {
+    let p = plan(b);
+    let wall = nearest_wall(room, &p);
+    let deep = p.max[wall.axis] - p.min[wall.axis];
+    wall.gap(room, &p) <= ada::ON_WALL
+        && p.bottom >= ada::ACCESSORY_OFF_FLOOR
+        && deep <= ada::ACCESSORY_DEEP
+}
+
+/// Whether a box is shaped like a grab bar: long, and at most 51 mm
+/// across both ways.
+fn bar_like(b: &BoxObstacle) -> bool {
+    let mut sizes = [b.size_mm.x, b.size_mm.y, b.size_mm.z];
+    sizes.sort_by(f64::total_cmp);
+    sizes[1] <= ada::ROUND.1 + ROUNDING_MM && sizes[2] >= 300.0
+}
+
 /// 604.5.1: the side wall's bar, at least 1065 mm long, from at most
 /// 305 mm from the rear wall to at least 1370 mm from it, on the side wall.
 fn side_bar_place(room: &Room, bar: &BoxObstacle, rear: Wall, side: Wall) -> RuleCheck {
     let p = plan(bar);
     let on_side = nearest_wall(room, &p) == side;
+    let turned = off_square_deg(bar);
     let (near, far) = {
         let (a, b) = (
             rear.from(room, p.min[rear.axis]),
@@ -387,12 +457,16 @@ fn side_bar_place(room: &Room, bar: &BoxObstacle, rear: Wall, side: Wall) -> Rul
     };
     let long = far - near;
     let ok = on_side
+        && turned <= SQUARE_DEG
         && long >= ada::SIDE_BAR_LONG - ROUNDING_MM
         && near <= ada::SIDE_BAR_FROM_REAR + ROUNDING_MM
         && far >= ada::SIDE_BAR_REACHES - ROUNDING_MM;
-    let measured = match on_side {
-        true => format!("{long:.0} mm long, from {near:.0} to {far:.0} mm from the rear wall"),
-        false => format!("on {}, not the side wall", nearest_wall(room, &p).name()),
+    let measured = match (on_side, turned <= SQUARE_DEG) {
+        (true, true) => {
+            format!("{long:.0} mm long, from {near:.0} to {far:.0} mm from the rear wall")
+        }
+        (true, false) => format!("turned {turned:.0} deg off the side wall"),
+        (false, _) => format!("on {}, not the side wall", nearest_wall(room, &p).name()),
     };
     rule(
         "604.5.1",
@@ -411,8 +485,15 @@ fn side_bar_place(room: &Room, bar: &BoxObstacle, rear: Wall, side: Wall) -> Rul
 /// 604.5.2: the rear wall's bar, at least 915 mm long, reaching 305 mm
 /// from the water closet's centreline towards the side wall and 610 mm
 /// towards the open side.
-fn rear_bar_place(room: &Room, bar: &BoxObstacle, side: Wall, centre_from_side: f64) -> RuleCheck {
+fn rear_bar_place(
+    room: &Room,
+    bar: &BoxObstacle,
+    (rear, side): (Wall, Wall),
+    centre_from_side: f64,
+) -> RuleCheck {
     let p = plan(bar);
+    let wall = nearest_wall(room, &p);
+    let turned = off_square_deg(bar);
     let (a, b) = (
         side.from(room, p.min[side.axis]),
         side.from(room, p.max[side.axis]),
@@ -421,18 +502,25 @@ fn rear_bar_place(room: &Room, bar: &BoxObstacle, side: Wall, centre_from_side: 
     let wall_side = centre_from_side - near;
     let open_side = far - centre_from_side;
     let long = far - near;
-    let ok = long >= ada::REAR_BAR_LONG - ROUNDING_MM
+    let ok = wall == rear
+        && turned <= SQUARE_DEG
+        && long >= ada::REAR_BAR_LONG - ROUNDING_MM
         && wall_side >= ada::REAR_BAR_WALL_SIDE - ROUNDING_MM
         && open_side >= ada::REAR_BAR_OPEN_SIDE - ROUNDING_MM;
+    let measured = match (wall == rear, turned <= SQUARE_DEG) {
+        (false, _) => format!("on {}, not the rear wall", wall.name()),
+        (true, false) => format!("turned {turned:.0} deg off the rear wall"),
+        (true, true) => format!(
+            "{long:.0} mm long, {wall_side:.0} mm to the side wall's side of the centreline and {open_side:.0} mm to the open side"
+        ),
+    };
     rule(
         "604.5.2",
         &format!("rear wall grab bar, `{}`", bar.name),
         ok,
+        measured,
         format!(
-            "{long:.0} mm long, {wall_side:.0} mm to the side wall's side of the centreline and {open_side:.0} mm to the open side"
-        ),
-        format!(
-            "at least {:.0} mm long, at least {:.0} mm to the wall's side and {:.0} mm to the open side",
+            "on the rear wall, at least {:.0} mm long, at least {:.0} mm to the wall's side and {:.0} mm to the open side",
             ada::REAR_BAR_LONG,
             ada::REAR_BAR_WALL_SIDE,
             ada::REAR_BAR_OPEN_SIDE
@@ -452,14 +540,23 @@ fn grab_bar(room: &Room, bar: &BoxObstacle) -> Vec<RuleCheck> {
     let perimeter = 2.0 * (a + b);
     let shaped = within(ada::PERIMETER, perimeter) && b <= ada::ROUND.1 + ROUNDING_MM;
     let gap = wall.gap(room, &p);
+    let turned = off_square_deg(bar);
+    let spaced = turned <= SQUARE_DEG && (gap - ada::FROM_WALL).abs() <= ROUNDING_MM;
+    let space = match turned <= SQUARE_DEG {
+        true => format!("{gap:.0} mm from {}", wall.name()),
+        false => format!(
+            "turned {turned:.0} deg off {}: its space from it varies",
+            wall.name()
+        ),
+    };
     vec![
         rule(
             "609.2",
             &format!("grab bar's cross section, `{}`", bar.name),
             round || shaped,
-            format!("{a:.0} by {b:.0} mm, {perimeter:.0} mm round"),
+            format!("{a:.0} by {b:.0} mm, its perimeter {perimeter:.0} mm"),
             format!(
-                "{:.0} to {:.0} mm across, or {:.0} to {:.0} mm round and at most {:.0} mm across",
+                "{:.0} to {:.0} mm across (round), or a perimeter of {:.0} to {:.0} mm and at most {:.0} mm across",
                 ada::ROUND.0,
                 ada::ROUND.1,
                 ada::PERIMETER.0,
@@ -470,8 +567,8 @@ fn grab_bar(room: &Room, bar: &BoxObstacle) -> Vec<RuleCheck> {
         rule(
             "609.3",
             &format!("grab bar's space from the wall, `{}`", bar.name),
-            (gap - ada::FROM_WALL).abs() <= ROUNDING_MM,
-            format!("{gap:.0} mm from {}", wall.name()),
+            spaced,
+            space,
             format!("{:.0} mm (within {ROUNDING_MM:.0} mm)", ada::FROM_WALL),
         ),
         rule(
@@ -484,11 +581,15 @@ fn grab_bar(room: &Room, bar: &BoxObstacle) -> Vec<RuleCheck> {
     ]
 }
 
-/// Whether the strip under the counter along one of its long edges
+/// Whether the strip under the counter along its edge across `across`
 /// (`far`: the one away from the origin), as deep as toe clearance must be
 /// (306.2.3: 430 mm, or the counter's depth), holds no box below 685 mm.
-fn knee_strip_free(room: &Room, counter: &BoxObstacle, p: &Plan, far: bool) -> bool {
-    let across = usize::from(p.max[0] - p.min[0] > p.max[1] - p.min[1]);
+fn knee_strip_free(
+    room: &Room,
+    counter: &BoxObstacle,
+    p: &Plan,
+    (across, far): (usize, bool),
+) -> bool {
     let deep = ada::TOE_DEEP.min(p.max[across] - p.min[across]);
     let (mut lo, mut hi) = (p.min, p.max);
     match far {
@@ -510,12 +611,24 @@ fn knee_strip_free(room: &Room, counter: &BoxObstacle, p: &Plan, far: bool) -> b
 /// long edges).
 fn service_counter(room: &Room, counter: &BoxObstacle) -> RuleCheck {
     let p = plan(counter);
-    let long = (p.max[0] - p.min[0]).max(p.max[1] - p.min[1]);
+    let wall = nearest_wall(room, &p);
+    let against = wall.gap(room, &p) <= ada::ON_WALL;
+    // Its front: along its wall where it stands against one (the edge
+    // away from it), else its longer side (either edge).
+    let across = match against {
+        true => wall.axis,
+        false => usize::from(p.max[0] - p.min[0] > p.max[1] - p.min[1]),
+    };
+    let long = p.max[1 - across] - p.min[1 - across];
     let low = p.top <= ada::COUNTER_HIGH + ROUNDING_MM;
+    let fronts: Vec<bool> = match against {
+        true => vec![!wall.far],
+        false => vec![false, true],
+    };
     let knees_free = p.bottom >= ada::KNEE_HIGH - ROUNDING_MM
-        && [false, true]
+        && fronts
             .into_iter()
-            .any(|far| knee_strip_free(room, counter, &p, far));
+            .any(|far| knee_strip_free(room, counter, &p, (across, far)));
     let parallel = low && long >= ada::COUNTER_LONG_PARALLEL - ROUNDING_MM;
     let forward = low && knees_free && long >= ada::COUNTER_LONG_FORWARD - ROUNDING_MM;
     let (section, measured) = match (parallel, forward) {
