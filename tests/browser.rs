@@ -176,6 +176,15 @@ fn pixels(path: &Path) -> Vec<(usize, usize, [u8; 3])> {
         .collect()
 }
 
+/// The RGB pixels of a PNG that fall in the 3D view.
+fn view_pixels(path: &Path) -> Vec<[u8; 3]> {
+    pixels(path)
+        .into_iter()
+        .filter(|&(x, y, _)| in_view(x, y))
+        .map(|(_, _, rgb)| rgb)
+        .collect()
+}
+
 /// Pixels near the person's skin (`figure::SKIN`, #e8b48a, as lit).
 fn skin(p: &[u8; 3]) -> bool {
     let [r, g, b] = p.map(i32::from);
@@ -210,11 +219,7 @@ fn screenshots_show_the_person_and_each_targets_result() {
             "no screenshot: {}",
             String::from_utf8_lossy(&o.stderr)
         );
-        let p: Vec<[u8; 3]> = pixels(&png)
-            .into_iter()
-            .filter(|&(x, y, _)| in_view(x, y))
-            .map(|(_, _, rgb)| rgb)
-            .collect();
+        let p = view_pixels(&png);
         let skin_share = p.iter().filter(|q| skin(q)).count() as f64 / p.len() as f64;
         assert!(
             skin_share > 0.01,
@@ -322,14 +327,7 @@ fn the_page_opens_on_the_room_its_walls_cut_away_and_honours_its_address() {
     };
     let room_png = shot("#task=7&view=room", "room.png");
     let plan_png = shot("#task=7&view=plan", "plan.png");
-    let in_view_pixels = |png: &Path| -> Vec<[u8; 3]> {
-        pixels(png)
-            .into_iter()
-            .filter(|&(x, y, _)| in_view(x, y))
-            .map(|(_, _, rgb)| rgb)
-            .collect()
-    };
-    let (a, b) = (in_view_pixels(&room_png), in_view_pixels(&plan_png));
+    let (a, b) = (view_pixels(&room_png), view_pixels(&plan_png));
     let differ = a.iter().zip(&b).filter(|(p, q)| p != q).count();
     assert!(
         differ > a.len() / 5,
