@@ -14,6 +14,7 @@ pub fn bash_scenario_files(command: &clap::Command) -> String {
         .get_subcommands()
         .filter(|s| SCENARIO_COMMANDS.contains(&s.get_name()))
         .flat_map(|s| s.get_arguments())
+        .chain(command.get_arguments())
         .filter(|a| !a.is_positional() && a.get_action().takes_values())
         .flat_map(|a| {
             let long = a.get_long().map(|l| format!("--{l}"));
@@ -40,7 +41,8 @@ _reach_scenarios() {{
     esac
     _reach "$@"
 }}
-complete -F _reach_scenarios -o bashdefault -o default reach
+complete -F _reach_scenarios -o nosort -o bashdefault -o default reach 2>/dev/null \
+    || complete -F _reach_scenarios -o bashdefault -o default reach
 "#,
         commands = SCENARIO_COMMANDS.join("`, `"),
         alternatives = SCENARIO_COMMANDS.join("|"),

@@ -27,6 +27,16 @@ pub fn chain(module: &str, name: &str) -> Result<crate::kinematics::Chain, crate
 /// effectors and the legs. Where no module declares `name`, the declared
 /// name closest to it, if one is close.
 pub fn describe(name: &str) -> Result<String, Option<String>> {
+    // A module's name: its part of the listing.
+    let module = name.strip_prefix("std::").unwrap_or(name);
+    if crate::std_texts::module(module).is_some() {
+        let listing = crate::std_modules::listing();
+        let part = listing
+            .split("\n\n")
+            .find(|p| p.starts_with(&format!("std::{module}\n")))
+            .unwrap_or_default();
+        return Ok(format!("{part}\n"));
+    }
     let found = KINDS
         .iter()
         .find_map(|k| crate::std_texts::home_of(k, name).map(|m| (*k, m)));
@@ -225,46 +235,57 @@ fn declaration<'t>(lines: &[&'t str]) -> Vec<&'t str> {
     taken
 }
 
-/// The body's joints (limits and links), effectors and legs, as a table.
+/// The body's joints (limits, which way is positive, the link each
+/// moves), effectors and legs, as a table.
 fn body_table(body: &crate::kinematics::Body) -> String {
     use crate::kinematics::JointKind;
     let mut out = String::from(
-        "The body a scenario gets: each joint's limits (deg, or mm for a joint that slides), \
-         and the link it moves to the next joint (its length and its solid's radius, mm):\n",
+        "The body a scenario gets: each joint's limits (deg, or mm for a joint that slides; \
+         0 is standing upright, the arm hanging, palm forward, looking ahead), which way is \
+         positive, and the link the joint moves, from its centre to the next joint's \
+         (its length and its solid's radius, mm):\n",
     );
     if let Some(stance) = body.posture {
         out.push_str(&format!("  posture: {}\n", stance.word()));
     }
     out.push_str(&format!(
-        "  {:<26} {:>20}  {:>9} {:>8}\n",
-        "joint", "limits", "link", "radius"
+        "  {:<24} {:>18}  {:<34} {}\n",
+        "joint", "limits", "positive", "link it moves"
     ));
     for joint in &body.joints {
-        let (min, max) = match joint.kind {
-            JointKind::Revolute => (joint.min.to_degrees(), joint.max.to_degrees()),
-            JointKind::Prismatic => (joint.min, joint.max),
-        };
-        let unit = if joint.kind == JointKind::Prismatic {
-            " mm"
-        } else {
-            ""
+        let (min, max, unit) = match joint.kind {
+            JointKind::Revolute => (joint.min.to_degrees(), joint.max.to_degrees(), ""),
+            JointKind::Prismatic => (joint.min, joint.max, " mm"),
         };
         let origin = nalgebra::Point3::from(joint.rest_offset_mm());
         let link_mm = (joint.axis_frame() * origin).coords.norm();
-        let (link, radius) = match link_mm > 0.05 {
-            true => (
-                format!("{link_mm:.1}"),
-                format!("{:.1}", joint.link.radius_mm),
+        let link = match link_mm > 0.05 {
+            true => format!(
+                "{} {link_mm:.1} (radius {:.1})",
+                joint.link.name, joint.link.radius_mm
             ),
-            false => ("-".to_string(), "-".to_string()),
+            false => "-".to_string(),
         };
         let limits = format!("{min:.1} to {max:.1}{unit}");
         out.push_str(&format!(
-            "  {:<26} {limits:>20}  {link:>9} {radius:>8}\n",
-            joint.name
+            "  {:<24} {limits:>18}  {:<34} {link}\n",
+            joint.name,
+            positive_way(&joint.name)
         ));
     }
-    let effectors: Vec<String> = body.effectors.iter().map(|e| e.name.clone()).collect();
+    let effectors: Vec<String> = body
+        .effectors
+        .iter()
+        .map(|e| match e.joint {
+            Some(j) => format!(
+                "{} ({:.1} past {})",
+                e.name,
+                e.offset_mm.norm(),
+                body.joints[j].name
+            ),
+            None => e.name.clone(),
+        })
+        .collect();
     out.push_str(&format!("  effectors: {}\n", effectors.join(", ")));
     if let Some(legs) = &body.legs {
         out.push_str(&format!(
@@ -279,4 +300,28 @@ fn body_table(body: &crate::kinematics::Body) -> String {
         ));
     }
     out
+}
+
+/// Which way a joint of the standard library's bodies turns when its
+/// angle is positive (std::body's and std::people's comments; a left
+/// arm's joints as the right's, mirrored); blank for a joint not known.
+fn positive_way(joint: &str) -> &'static str {
+    match joint.strip_prefix("left_").unwrap_or(joint) {
+        "trunk_flexion" => "leaning forward",
+        "shoulder_elevation" => "the girdle's rise, follows the arm",
+        "shoulder_flexion" => "flexion (forward); - extension",
+        "shoulder_abduction" => "abduction (out to the side)",
+        "shoulder_rotation" => "lateral; - medial rotation",
+        "elbow_flexion" => "flexion",
+        "forearm_rotation" => "supination; - pronation (assumed)",
+        "wrist_flexion" => "flexion (palm-ward); - extension",
+        "wrist_deviation" => "ulnar; - radial deviation",
+        "neck_extension" => "extension (head back); - flexion",
+        "neck_lateral" => "bending to the right",
+        "neck_rotation" => "turning to the left",
+        "eye_pitch" => "looking up",
+        "eye_yaw" => "looking to the left",
+        "look" => "the line of sight's length",
+        _ => "",
+    }
 }

@@ -523,6 +523,22 @@ fn stdlib_lists_people_chairs_and_visions() {
     }
 }
 
+/// The README's first example prints what the README shows.
+#[test]
+fn the_readmes_first_table_is_what_the_kitchen_prints() {
+    let readme = std::fs::read_to_string("README.md").unwrap();
+    let out = stdout(&reach(&["run", "examples/kitchen.reach"]));
+    let table: Vec<&str> = out
+        .lines()
+        .take_while(|l| !l.starts_with("mug by"))
+        .collect();
+    let table = table.join("\n");
+    assert!(
+        readme.contains(table.trim_end()),
+        "README.md's table is not what `reach run examples/kitchen.reach` prints:\n{table}"
+    );
+}
+
 /// `reach stdlib NAME` shows where a name is declared, the comment naming
 /// its sources, the declaration and, for a mannequin, the body it builds;
 /// a base preset's other options at their defaults; a name it does not
@@ -538,7 +554,7 @@ fn stdlib_shows_one_entry_with_its_sources_and_body() {
         "Built from `woman_5th`, then `measured`, then `upper_body`",
         "posture: seated",
         "shoulder_flexion",
-        "effectors: grip, eyes, left_grip",
+        "effectors: grip (67.6 past wrist_deviation), eyes",
     ] {
         assert!(out.contains(expected), "{expected} missing from\n{out}");
     }
@@ -548,8 +564,10 @@ fn stdlib_shows_one_entry_with_its_sources_and_body() {
             .lines()
             .find(|l| l.trim_start().starts_with("shoulder_rotation "))
             .unwrap();
-        row.split_whitespace().nth(4).unwrap().parse().unwrap()
+        let after = row.split("upper arm ").nth(1).unwrap();
+        after.split_whitespace().next().unwrap().parse().unwrap()
     };
+    assert!(out.contains("lateral; - medial rotation"), "{out}");
     let man = stdout(&reach(&["stdlib", "man_50th"]));
     assert!(upper_arm(&out) + 20.0 < upper_arm(&man), "{out}\n{man}");
 
@@ -557,6 +575,12 @@ fn stdlib_shows_one_entry_with_its_sources_and_body() {
     assert!(base.contains("IDeA Center"), "{base}");
     assert!(base.contains("seat_height 538mm"), "{base}");
     assert!(base.contains("  width                  660mm"), "{base}");
+
+    let module = stdout(&reach(&["stdlib", "std::arm"]));
+    assert!(
+        module.starts_with("std::arm\n") && module.contains("right_arm"),
+        "{module}"
+    );
 
     let o = reach(&["stdlib", "woman_5"]);
     assert_eq!(o.status.code(), Some(2));

@@ -285,6 +285,8 @@ fn bash_completes_scenario_files_after_run() {
     assert_eq!(complete("reach check a.reach k"), "kitchen.reach\nkits\n");
     assert_eq!(complete("reach run --fo"), "--format\n");
     assert!(!complete("reach run --out k").contains("--format"));
+    // A global option's value is clap's too.
+    assert_eq!(complete("reach run --color a"), "always\nauto\n");
 }
 
 #[test]

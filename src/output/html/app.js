@@ -496,7 +496,9 @@ export function start(settings, data) {
     const radius = 0.5 * Math.hypot(x, y, z);
     const vertical = THREE.MathUtils.degToRad(camera.fov);
     const horizontal = 2 * Math.atan(Math.tan(vertical / 2) * camera.aspect);
-    const distance = radius / Math.sin(Math.min(vertical, horizontal) / 2);
+    // A little farther than the sphere's fit, for the hint along the
+    // foot of the view.
+    const distance = 1.06 * radius / Math.sin(Math.min(vertical, horizontal) / 2);
     const from = backOf(task).add(new THREE.Vector3(0, 0, 1.1)).normalize();
     controls.target.copy(centre);
     camera.position.copy(centre).addScaledVector(from, distance);
