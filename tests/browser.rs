@@ -287,7 +287,8 @@ fn selftest(chromium: &Path, profile: &Path, page: &str) -> serde_json::Value {
 /// from above a corner, with the two walls on the camera's side cut away
 /// and the other two drawn; `#task=N` opens close on task N (chosen in the
 /// list); `&view=plan` opens on the plan, every wall seen edge on, a
-/// picture unlike the room's. `REACH_UPDATE_DOCS=1` writes the whole
+/// picture unlike the room's; the pointer over a target names it.
+/// `REACH_UPDATE_DOCS=1` writes the whole
 /// room's screenshot as docs/report-room.png (the README shows it).
 #[test]
 fn the_page_opens_on_the_room_its_walls_cut_away_and_honours_its_address() {
@@ -299,6 +300,8 @@ fn the_page_opens_on_the_room_its_walls_cut_away_and_honours_its_address() {
     let room = selftest(&chromium, &profile, &url(dir.path(), "?selftest"));
     assert_eq!(room["view"], "room", "{room}");
     assert_eq!(room["selected"], 0, "{room}");
+    // The pointer over the first target names it.
+    assert_eq!(room["tip"], "counter_front", "{room}");
     let walls: Vec<i64> = serde_json::from_value(room["walls"].clone()).unwrap();
     assert_eq!(walls.iter().sum::<i64>(), 2, "two walls cut away: {room}");
 

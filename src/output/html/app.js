@@ -260,7 +260,9 @@ function buildTask(task, data) {
   for (const m of task.marks || []) {
     const colour = m.ok ? COLOURS.ok : COLOURS.not;
     if (m.kind === "point") {
-      group.add(marker(m.at, 34, colour));
+      const point = marker(m.at, 34, colour);
+      point.userData.name = m.label;
+      group.add(point);
       continue;
     }
     const shape = new THREE.Shape();
@@ -277,6 +279,7 @@ function buildTask(task, data) {
     );
     area.position.z = m.ok ? 3 : 5;
     area.renderOrder = m.ok ? 1 : 2;
+    area.userData.name = m.label;
     group.add(area);
     const outline = shape.getPoints(48).map((p) => new THREE.Vector3(p.x, p.y, m.ok ? 4 : 6));
     const edge = new THREE.Line(
@@ -595,6 +598,27 @@ export function start(settings, data) {
 
   controls.addEventListener("change", render);
   planControls.addEventListener("change", render);
+  // What is under the pointer, named: a target, a box, a mesh, a door, a
+  // standard's floor space or element with what its rule measured.
+  const tip = document.getElementById("tip");
+  const ray = new THREE.Raycaster();
+  renderer.domElement.addEventListener("pointermove", (e) => {
+    const box = renderer.domElement.getBoundingClientRect();
+    const at = new THREE.Vector2(
+      ((e.clientX - box.left) / box.width) * 2 - 1,
+      -((e.clientY - box.top) / box.height) * 2 + 1
+    );
+    ray.setFromCamera(at, mode === "plan" ? planCamera : camera);
+    const shown = [groups[current], ...rooms.map((r) => r.group)].filter((g) => g && g.visible);
+    const hit = ray.intersectObjects(shown, true).find((h) => h.object.userData.name);
+    tip.hidden = !hit;
+    if (hit) {
+      tip.textContent = hit.object.userData.name;
+      tip.style.left = `${e.clientX - box.left + 14}px`;
+      tip.style.top = `${e.clientY - box.top + 14}px`;
+    }
+  });
+  renderer.domElement.addEventListener("pointerleave", () => (tip.hidden = true));
   window.addEventListener("resize", resize);
   window.addEventListener("keydown", (e) => {
     const n = Number.parseInt(e.key, 10);
@@ -625,7 +649,22 @@ export function start(settings, data) {
 
   if (settings.live) poll(settings, selftest);
   if (selftest) {
+    // The pointer over the chosen task's room's first target: its name
+    // should show.
+    const hover = () => {
+      const room = rooms[data.tasks[current] ? data.tasks[current].room : 0];
+      const target = room && room.targets.values().next().value;
+      if (!target) return "";
+      const at = target.position.clone().project(mode === "plan" ? planCamera : camera);
+      const box = renderer.domElement.getBoundingClientRect();
+      renderer.domElement.dispatchEvent(new PointerEvent("pointermove", {
+        clientX: box.left + ((at.x + 1) / 2) * box.width,
+        clientY: box.top + ((1 - at.y) / 2) * box.height,
+      }));
+      return tip.hidden ? "" : tip.textContent;
+    };
     runSelftest(renderer, buttons, render, () => ({
+      tip: hover(),
       selected: current,
       view: mode,
       walls: rooms[data.tasks[current] ? data.tasks[current].room : 0].sides

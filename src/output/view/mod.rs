@@ -502,13 +502,16 @@ fn cells(m: &MapReport) -> CellsView {
 /// What a standard's rules measured, as marks: each rule's shape on the
 /// floor and each element, coloured by whether it holds.
 fn standard_marks(s: &StandardReport) -> Vec<MarkView> {
-    let rules = s
-        .room_rules
-        .iter()
-        .chain(s.elements.iter().flat_map(|e| &e.rules));
+    // Each rule with the element it is about, if one.
+    let rules = (s.room_rules.iter().map(|r| (None, r))).chain(
+        s.elements
+            .iter()
+            .flat_map(|e| e.rules.iter().map(move |r| (Some(&e.name), r))),
+    );
     let mut marks: Vec<MarkView> = rules
-        .filter_map(|r| {
-            let label = format!("{} {}: {}", r.section, r.rule, r.measured);
+        .filter_map(|(element, r)| {
+            let of = element.map_or(String::new(), |name| format!("`{name}`: "));
+            let label = format!("{of}{} {}: {}", r.section, r.rule, r.measured);
             match r.shape.as_ref()? {
                 FloorShape::Polygon { points_mm } => Some(MarkView::Area {
                     label,
