@@ -9,33 +9,38 @@ pub use crate::std_texts::{module, MODULES};
 /// comment and, by kind, the names it declares (mannequins with their
 /// parameters, the plugin a base preset configures).
 pub fn listing() -> String {
+    MODULES
+        .iter()
+        .map(|(name, text)| format!("{}\n", entry(name, text)))
+        .collect()
+}
+
+/// Module `name`'s part of the listing: its name, the first line of its
+/// comment, and the names it declares by kind.
+pub fn entry(name: &str, text: &str) -> String {
     use crate::syntax::ast::Item;
-    let mut out = String::new();
-    for (name, text) in MODULES {
-        out.push_str(&format!("std::{name}\n  {}\n", summary(name, text)));
-        let Ok(file) = crate::syntax::parse_file(crate::span::FileId::default(), text) else {
-            continue;
+    let mut out = format!("std::{name}\n  {}\n", summary(name, text));
+    let Ok(file) = crate::syntax::parse_file(crate::span::FileId::default(), text) else {
+        return out;
+    };
+    let mut kinds: Vec<(&str, Vec<String>)> =
+        ["mannequins", "profiles", "bases", "visions", "populations"]
+            .into_iter()
+            .map(|k| (k, Vec::new()))
+            .collect();
+    for item in &file.items {
+        let (k, entry) = match item {
+            Item::Mannequin(m) => (0, mannequin_entry(m)),
+            Item::Profile(p) => (1, p.name.value.clone()),
+            Item::BasePreset(b) => (2, format!("{} ({})", b.name.value, b.plugin.name.value)),
+            Item::VisionPreset(v) => (3, v.name.value.clone()),
+            Item::Population(p) => (4, p.name.value.clone()),
+            _ => continue,
         };
-        let mut kinds: Vec<(&str, Vec<String>)> =
-            ["mannequins", "profiles", "bases", "visions", "populations"]
-                .into_iter()
-                .map(|k| (k, Vec::new()))
-                .collect();
-        for item in &file.items {
-            let (k, entry) = match item {
-                Item::Mannequin(m) => (0, mannequin_entry(m)),
-                Item::Profile(p) => (1, p.name.value.clone()),
-                Item::BasePreset(b) => (2, format!("{} ({})", b.name.value, b.plugin.name.value)),
-                Item::VisionPreset(v) => (3, v.name.value.clone()),
-                Item::Population(p) => (4, p.name.value.clone()),
-                _ => continue,
-            };
-            kinds[k].1.push(entry);
-        }
-        for (kind, names) in kinds.iter().filter(|(_, n)| !n.is_empty()) {
-            out.push_str(&format!("  {kind}: {}\n", names.join(", ")));
-        }
-        out.push('\n');
+        kinds[k].1.push(entry);
+    }
+    for (kind, names) in kinds.iter().filter(|(_, n)| !n.is_empty()) {
+        out.push_str(&format!("  {kind}: {}\n", names.join(", ")));
     }
     out
 }

@@ -24,19 +24,23 @@ pub fn module(name: &str) -> Option<&'static str> {
 /// `profile`, `base`, `vision`, `population`) at the start of a line, if
 /// one does.
 pub fn home_of(keyword: &str, name: &str) -> Option<&'static str> {
-    let declares = |line: &str| {
-        let rest = line.strip_prefix(keyword)?.strip_prefix(' ')?.trim_start();
-        let after = rest.strip_prefix(name)?;
-        let ends = after
-            .chars()
-            .next()
-            .is_none_or(|c| !(c.is_alphanumeric() || c == '_'));
-        ends.then_some(())
-    };
     MODULES
         .iter()
-        .find(|(_, text)| text.lines().any(|l| declares(l).is_some()))
+        .find(|(_, text)| text.lines().any(|l| declares(l, keyword, name)))
         .map(|(module, _)| *module)
+}
+
+/// Whether `line` starts the declaration of `name` as a `keyword`.
+pub fn declares(line: &str, keyword: &str, name: &str) -> bool {
+    let Some(rest) = line.strip_prefix(keyword).and_then(|r| r.strip_prefix(' ')) else {
+        return false;
+    };
+    rest.trim_start().strip_prefix(name).is_some_and(|after| {
+        after
+            .chars()
+            .next()
+            .is_none_or(|c| !(c.is_alphanumeric() || c == '_'))
+    })
 }
 
 #[cfg(test)]

@@ -29,13 +29,8 @@ pub fn chain(module: &str, name: &str) -> Result<crate::kinematics::Chain, crate
 pub fn describe(name: &str) -> Result<String, Option<String>> {
     // A module's name: its part of the listing.
     let module = name.strip_prefix("std::").unwrap_or(name);
-    if crate::std_texts::module(module).is_some() {
-        let listing = crate::std_modules::listing();
-        let part = listing
-            .split("\n\n")
-            .find(|p| p.starts_with(&format!("std::{module}\n")))
-            .unwrap_or_default();
-        return Ok(format!("{part}\n"));
+    if let Some(text) = crate::std_texts::module(module) {
+        return Ok(crate::std_modules::entry(module, text));
     }
     let found = KINDS
         .iter()
@@ -49,7 +44,7 @@ pub fn describe(name: &str) -> Result<String, Option<String>> {
     let lines: Vec<&str> = text.lines().collect();
     let at = lines
         .iter()
-        .position(|l| declares(l, keyword, name))
+        .position(|l| crate::std_texts::declares(l, keyword, name))
         .unwrap_or_default();
     let mut out = format!("{keyword} {name}: std::{module} (`use std::{module}`)\n\n");
     // The comment above it, or above the run of one-line declarations of
@@ -71,11 +66,12 @@ pub fn describe(name: &str) -> Result<String, Option<String>> {
         out.push_str(line);
         out.push('\n');
     }
+    let declared = declared.join("\n");
     if keyword == "base" {
-        out.push_str(&base_defaults(&declared.join("\n")));
+        out.push_str(&base_defaults(&declared));
     }
     if keyword == "mannequin" {
-        let chain = built_from(&declared.join(" "));
+        let chain = built_from(&declared);
         if !chain.is_empty() {
             out.push_str(&format!(
                 "\nBuilt from {}: `reach stdlib NAME` shows each, with the sources of its figures \
@@ -107,11 +103,7 @@ fn declared_names() -> Vec<String> {
                 else {
                     continue;
                 };
-                let name: String = rest
-                    .trim_start()
-                    .chars()
-                    .take_while(|c| c.is_alphanumeric() || *c == '_')
-                    .collect();
+                let name = leading_name(rest);
                 if !name.is_empty() {
                     names.push(name);
                 }
@@ -128,11 +120,7 @@ fn built_from(declared: &str) -> Vec<String> {
     let mut chain = Vec::new();
     let mut text = declared.to_string();
     while let Some(rest) = after_alias_sign(&text) {
-        let next: String = rest
-            .trim_start()
-            .chars()
-            .take_while(|c| c.is_alphanumeric() || *c == '_')
-            .collect();
+        let next = leading_name(rest);
         let Some(module) = crate::std_texts::home_of("mannequin", &next) else {
             break;
         };
@@ -144,39 +132,46 @@ fn built_from(declared: &str) -> Vec<String> {
             .unwrap_or_default()
             .lines()
             .collect();
-        let Some(at) = lines.iter().position(|l| declares(l, "mannequin", &next)) else {
+        let Some(at) = lines
+            .iter()
+            .position(|l| crate::std_texts::declares(l, "mannequin", &next))
+        else {
             break;
         };
-        text = declaration(&lines[at..]).join(" ");
+        text = declaration(&lines[at..]).join("\n");
     }
     chain
 }
 
-/// What follows a declaration's `=` outside its parentheses (the
-/// mannequin it is built from), if it has one.
+/// What follows a declaration's `=` outside its brackets, comments and
+/// strings (the mannequin or plugin it is built from), if it has one.
 fn after_alias_sign(declared: &str) -> Option<&str> {
     let mut depth = 0i64;
-    for (at, c) in declared.char_indices() {
-        match c {
-            '(' | '{' => depth += 1,
-            ')' | '}' => depth -= 1,
-            '=' if depth == 0 => return Some(&declared[at + 1..]),
+    for (at, b) in crate::syntax::code_bytes(declared) {
+        match b {
+            b'(' | b'{' => depth += 1,
+            b')' | b'}' => depth -= 1,
+            b'=' if depth == 0 => return Some(&declared[at + 1..]),
             _ => {}
         }
     }
     None
 }
 
+/// The name `text` starts with, after any spaces.
+fn leading_name(text: &str) -> String {
+    text.trim_start()
+        .chars()
+        .take_while(|c| c.is_alphanumeric() || *c == '_')
+        .collect()
+}
+
 /// The options a base preset leaves at its plugin's defaults, each with
 /// its value and what it is.
 fn base_defaults(declared: &str) -> String {
-    let plugin: String = declared
-        .split_once('=')
-        .map(|(_, rest)| rest.trim_start())
-        .unwrap_or_default()
-        .chars()
-        .take_while(|c| c.is_alphanumeric() || *c == '_')
-        .collect();
+    let plugin = after_alias_sign(declared)
+        .map(leading_name)
+        .unwrap_or_default();
     let registry = crate::plugin::Registry::builtin();
     let Some(params) = registry.params(crate::plugin::PluginKind::Base, &plugin) else {
         return String::new();
@@ -200,39 +195,24 @@ fn base_defaults(declared: &str) -> String {
     out
 }
 
-/// Whether `line` starts the declaration of `name` as a `keyword`.
-fn declares(line: &str, keyword: &str, name: &str) -> bool {
-    let Some(rest) = line.strip_prefix(keyword).and_then(|r| r.strip_prefix(' ')) else {
-        return false;
-    };
-    rest.trim_start().strip_prefix(name).is_some_and(|after| {
-        after
-            .chars()
-            .next()
-            .is_none_or(|c| !(c.is_alphanumeric() || c == '_'))
-    })
-}
-
 /// The lines of the declaration that starts `lines`: up to the line where
-/// its parentheses and braces (outside comments) are all closed again.
+/// its parentheses and braces (outside comments and strings) are all
+/// closed again.
 fn declaration<'t>(lines: &[&'t str]) -> Vec<&'t str> {
     let mut depth = 0i64;
-    let mut taken = Vec::new();
-    for line in lines {
-        taken.push(*line);
-        let code = line.split("//").next().unwrap_or("");
-        for c in code.chars() {
-            match c {
-                '(' | '{' => depth += 1,
-                ')' | '}' => depth -= 1,
+    for (k, line) in lines.iter().enumerate() {
+        for (_, b) in crate::syntax::code_bytes(line) {
+            match b {
+                b'(' | b'{' => depth += 1,
+                b')' | b'}' => depth -= 1,
                 _ => {}
             }
         }
         if depth <= 0 {
-            break;
+            return lines[..=k].to_vec();
         }
     }
-    taken
+    lines.to_vec()
 }
 
 /// The body's joints (limits, which way is positive, the link each

@@ -3,7 +3,7 @@
 //! beside pest look at (how deep brackets nest, which brace is left open).
 
 /// Each byte of `text` outside comments and strings, with its offset.
-pub(super) fn code_bytes(text: &str) -> impl Iterator<Item = (usize, u8)> + '_ {
+pub fn code_bytes(text: &str) -> impl Iterator<Item = (usize, u8)> + '_ {
     let bytes = text.as_bytes();
     let mut i = 0;
     std::iter::from_fn(move || {

@@ -8,4 +8,5 @@ mod grammar;
 mod parser;
 mod population;
 
+pub use code::code_bytes;
 pub use parser::{parse_file, parse_file_within};
