@@ -131,7 +131,8 @@ impl Checker<'_> {
                     (rooms[missing].targets.iter().any(|t| t.name == name))
                         .then(|| "a target".to_string())
                 }) {
-                Some(is) if is != "a box" => Error::new(
+                // Never "a box": the box is missing from this room.
+                Some(is) => Error::new(
                     ErrorKind::NotAFixture {
                         name: name.clone(),
                         is,
@@ -139,7 +140,7 @@ impl Checker<'_> {
                     },
                     span,
                 ),
-                _ => {
+                None => {
                     let boxes = rooms[missing].boxes.iter().map(|b| b.name.as_str());
                     self.unknown("box", &name, span, boxes)
                 }
