@@ -110,28 +110,32 @@ struct Plan {
 }
 
 fn plan(b: &BoxObstacle) -> Plan {
-    let turn = b.rotation();
-    let corners = [
-        (0.0, 0.0),
-        (b.size_mm.x, 0.0),
-        (0.0, b.size_mm.y),
-        (b.size_mm.x, b.size_mm.y),
-    ]
-    .map(|(x, y)| b.corner_mm.xy().coords + turn * nalgebra::Vector2::new(x, y));
-    let fold = |axis: usize, pick: fn(f64, f64) -> f64, start: f64| {
-        corners.iter().map(|c| c[axis]).fold(start, pick)
-    };
-    Plan {
-        min: [
-            fold(0, f64::min, f64::INFINITY),
-            fold(1, f64::min, f64::INFINITY),
-        ],
-        max: [
-            fold(0, f64::max, f64::NEG_INFINITY),
-            fold(1, f64::max, f64::NEG_INFINITY),
-        ],
+    let (w, d) = (b.size_mm.x, b.size_mm.y);
+    let mut p = Plan {
+        min: [f64::INFINITY; 2],
+        max: [f64::NEG_INFINITY; 2],
         bottom: b.corner_mm.z,
         top: b.corner_mm.z + b.size_mm.z,
+    };
+    for (x, y) in [(0.0, 0.0), (w, 0.0), (0.0, d), (w, d)] {
+        let corner = b.floor_point(nalgebra::Vector2::new(x, y));
+        for k in 0..2 {
+            p.min[k] = p.min[k].min(corner[k]);
+            p.max[k] = p.max[k].max(corner[k]);
+        }
+    }
+    p
+}
+
+impl Plan {
+    /// The part of this outline within `deep` of its edge across `axis`
+    /// (`far`: the edge away from the origin), not clamped to it.
+    fn strip(mut self, axis: usize, far: bool, deep: f64) -> Plan {
+        match far {
+            false => self.max[axis] = self.min[axis] + deep,
+            true => self.min[axis] = self.max[axis] - deep,
+        }
+        self
     }
 }
 
@@ -171,10 +175,17 @@ struct Wall {
 impl Wall {
     /// How far the box is from this wall.
     fn gap(self, room: &Room, p: &Plan) -> f64 {
-        match self.far {
-            false => p.min[self.axis],
-            true => room.size_mm[self.axis] - p.max[self.axis],
-        }
+        self.span(room, p).0
+    }
+
+    /// How far the outline's nearest and farthest edges are from this
+    /// wall.
+    fn span(self, room: &Room, p: &Plan) -> (f64, f64) {
+        let (a, b) = (
+            self.from(room, p.min[self.axis]),
+            self.from(room, p.max[self.axis]),
+        );
+        (a.min(b), a.max(b))
     }
 
     /// How far a coordinate along this wall's normal is from it.
@@ -356,14 +367,18 @@ fn water_closet(room: &Room, wc: &BoxObstacle, fixtures: &Fixtures) -> Vec<RuleC
 /// within the room and clear of every box below the headroom but the
 /// water closet and its grab bars (604.3.2 lets those overlap).
 fn clearance(room: &Room, wc: &BoxObstacle, (rear, side): (Wall, Wall), f: &Fixtures) -> RuleCheck {
-    let span = |wall: Wall, depth: f64| match wall.far {
-        false => (0.0, depth),
-        true => (room.size_mm[wall.axis] - depth, room.size_mm[wall.axis]),
+    let whole = Plan {
+        min: [0.0; 2],
+        max: [room.size_mm.x, room.size_mm.y],
+        bottom: 0.0,
+        top: ada::HEADROOM,
     };
-    let mut lo = [0.0; 2];
-    let mut hi = [0.0; 2];
-    (lo[side.axis], hi[side.axis]) = span(side, ada::CLEARANCE_WIDE);
-    (lo[rear.axis], hi[rear.axis]) = span(rear, ada::CLEARANCE_DEEP);
+    let area = whole.strip(side.axis, side.far, ada::CLEARANCE_WIDE).strip(
+        rear.axis,
+        rear.far,
+        ada::CLEARANCE_DEEP,
+    );
+    let (lo, hi) = (area.min, area.max);
     let allowed = [
         Some(&wc.name),
         f.water_closet_tank.as_ref(),
@@ -371,12 +386,6 @@ fn clearance(room: &Room, wc: &BoxObstacle, (rear, side): (Wall, Wall), f: &Fixt
         f.rear_grab_bar.as_ref(),
     ];
     let inside = (0..2).all(|a| lo[a] >= -ROUNDING_MM && hi[a] <= room.size_mm[a] + ROUNDING_MM);
-    let area = Plan {
-        min: lo,
-        max: hi,
-        bottom: 0.0,
-        top: ada::HEADROOM,
-    };
     let mut standing: Vec<&BoxObstacle> = room
         .boxes
         .iter()
@@ -437,9 +446,16 @@ fn accessory(room: &Room, b: &BoxObstacle) -> bool {
 /// Whether a box is shaped like a grab bar: long, and at most 51 mm
 /// across both ways.
 fn bar_like(b: &BoxObstacle) -> bool {
+    let [_, across, long] = sizes(b);
+    across <= ada::ROUND.1 + ROUNDING_MM && long >= 300.0
+}
+
+/// A box's three sizes, smallest first (a bar's cross section, then its
+/// length).
+fn sizes(b: &BoxObstacle) -> [f64; 3] {
     let mut sizes = [b.size_mm.x, b.size_mm.y, b.size_mm.z];
     sizes.sort_by(f64::total_cmp);
-    sizes[1] <= ada::ROUND.1 + ROUNDING_MM && sizes[2] >= 300.0
+    sizes
 }
 
 /// 604.5.1: the side wall's bar, at least 1065 mm long, from at most
@@ -448,13 +464,7 @@ fn side_bar_place(room: &Room, bar: &BoxObstacle, rear: Wall, side: Wall) -> Rul
     let p = plan(bar);
     let on_side = nearest_wall(room, &p) == side;
     let turned = off_square_deg(bar);
-    let (near, far) = {
-        let (a, b) = (
-            rear.from(room, p.min[rear.axis]),
-            rear.from(room, p.max[rear.axis]),
-        );
-        (a.min(b), a.max(b))
-    };
+    let (near, far) = rear.span(room, &p);
     let long = far - near;
     let ok = on_side
         && turned <= SQUARE_DEG
@@ -494,11 +504,7 @@ fn rear_bar_place(
     let p = plan(bar);
     let wall = nearest_wall(room, &p);
     let turned = off_square_deg(bar);
-    let (a, b) = (
-        side.from(room, p.min[side.axis]),
-        side.from(room, p.max[side.axis]),
-    );
-    let (near, far) = (a.min(b), a.max(b));
+    let (near, far) = side.span(room, &p);
     let wall_side = centre_from_side - near;
     let open_side = far - centre_from_side;
     let long = far - near;
@@ -533,9 +539,7 @@ fn rear_bar_place(
 fn grab_bar(room: &Room, bar: &BoxObstacle) -> Vec<RuleCheck> {
     let p = plan(bar);
     let wall = nearest_wall(room, &p);
-    let mut sizes = [bar.size_mm.x, bar.size_mm.y, bar.size_mm.z];
-    sizes.sort_by(f64::total_cmp);
-    let [a, b, _] = sizes;
+    let [a, b, _] = sizes(bar);
     let round = (a - b).abs() <= ROUNDING_MM && within(ada::ROUND, a) && within(ada::ROUND, b);
     let perimeter = 2.0 * (a + b);
     let shaped = within(ada::PERIMETER, perimeter) && b <= ada::ROUND.1 + ROUNDING_MM;
@@ -591,16 +595,10 @@ fn knee_strip_free(
     (across, far): (usize, bool),
 ) -> bool {
     let deep = ada::TOE_DEEP.min(p.max[across] - p.min[across]);
-    let (mut lo, mut hi) = (p.min, p.max);
-    match far {
-        false => hi[across] = p.min[across] + deep,
-        true => lo[across] = p.max[across] - deep,
-    }
+    let strip = p.strip(across, far, deep);
     !room.boxes.iter().any(|b| {
         let q = plan(b);
-        b.name != counter.name
-            && q.bottom < ada::KNEE_HIGH
-            && (0..2).all(|a| q.min[a] < hi[a] - ROUNDING_MM && lo[a] + ROUNDING_MM < q.max[a])
+        b.name != counter.name && q.bottom < ada::KNEE_HIGH && overlap(&q, &strip)
     })
 }
 
