@@ -554,11 +554,21 @@ export function start(settings, data) {
     show(how);
   }
 
+  // The chosen task's room (the first where no task is chosen), and its
+  // description (a stand-in where the scenario has no room).
+  function roomIndex() {
+    const task = data.tasks[current];
+    return task ? task.room : 0;
+  }
+  function roomData() {
+    return data.rooms[roomIndex()] || { size: [3000, 3000, 2500] };
+  }
+
   // Frame the chosen task as `how` says, and keep it in the address.
   function show(how) {
     mode = how;
     const task = data.tasks[current];
-    const room = data.rooms[task ? task.room : 0] || { size: [3000, 3000, 2500] };
+    const room = roomData();
     controls.enabled = mode !== "plan";
     planControls.enabled = mode === "plan";
     if (mode === "plan") framePlan(room);
@@ -576,7 +586,7 @@ export function start(settings, data) {
     renderer.setSize(w, h);
     camera.aspect = w / Math.max(h, 1);
     camera.updateProjectionMatrix();
-    if (mode === "plan") framePlan(data.rooms[data.tasks[current] ? data.tasks[current].room : 0] || { size: [3000, 3000, 2500] });
+    if (mode === "plan") framePlan(roomData());
     render();
   }
 
@@ -652,7 +662,7 @@ export function start(settings, data) {
     // The pointer over the chosen task's room's first target: its name
     // should show.
     const hover = () => {
-      const room = rooms[data.tasks[current] ? data.tasks[current].room : 0];
+      const room = rooms[roomIndex()];
       const target = room && room.targets.values().next().value;
       if (!target) return "";
       const at = target.position.clone().project(mode === "plan" ? planCamera : camera);
@@ -667,7 +677,7 @@ export function start(settings, data) {
       tip: hover(),
       selected: current,
       view: mode,
-      walls: rooms[data.tasks[current] ? data.tasks[current].room : 0].sides
+      walls: rooms[roomIndex()].sides
         .map((side) => (side.group.visible ? 1 : 0)),
     }));
   }
