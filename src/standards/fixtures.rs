@@ -436,11 +436,16 @@ fn clearance(room: &Room, wc: &BoxObstacle, (rear, side): (Wall, Wall), f: &Fixt
 /// coat hook, a shelf), which the clearance may overlap.
 fn accessory(room: &Room, b: &BoxObstacle) -> bool {
     let p = plan(b);
-    let wall = nearest_wall(room, &p);
-    let deep = p.max[wall.axis] - p.min[wall.axis];
-    wall.gap(room, &p) <= ada::ON_WALL
-        && p.bottom >= ada::ACCESSORY_OFF_FLOOR
-        && deep <= ada::ACCESSORY_DEEP
+    against_wall(room, &p).is_some_and(|wall| {
+        p.bottom >= ada::ACCESSORY_OFF_FLOOR
+            && p.max[wall.axis] - p.min[wall.axis] <= ada::ACCESSORY_DEEP
+    })
+}
+
+/// The wall the outline stands against (within [`ada::ON_WALL`]), if any.
+fn against_wall(room: &Room, p: &Plan) -> Option<Wall> {
+    let wall = nearest_wall(room, p);
+    (wall.gap(room, p) <= ada::ON_WALL).then_some(wall)
 }
 
 /// Whether a box is shaped like a grab bar: long, and at most 51 mm
@@ -609,20 +614,17 @@ fn knee_strip_free(
 /// long edges).
 fn service_counter(room: &Room, counter: &BoxObstacle) -> RuleCheck {
     let p = plan(counter);
-    let wall = nearest_wall(room, &p);
-    let against = wall.gap(room, &p) <= ada::ON_WALL;
     // Its front: along its wall where it stands against one (the edge
     // away from it), else its longer side (either edge).
-    let across = match against {
-        true => wall.axis,
-        false => usize::from(p.max[0] - p.min[0] > p.max[1] - p.min[1]),
+    let (across, fronts) = match against_wall(room, &p) {
+        Some(wall) => (wall.axis, vec![!wall.far]),
+        None => (
+            usize::from(p.max[0] - p.min[0] > p.max[1] - p.min[1]),
+            vec![false, true],
+        ),
     };
     let long = p.max[1 - across] - p.min[1 - across];
     let low = p.top <= ada::COUNTER_HIGH + ROUNDING_MM;
-    let fronts: Vec<bool> = match against {
-        true => vec![!wall.far],
-        false => vec![false, true],
-    };
     let knees_free = p.bottom >= ada::KNEE_HIGH - ROUNDING_MM
         && fronts
             .into_iter()
