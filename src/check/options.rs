@@ -126,6 +126,13 @@ impl Checker<'_> {
             (ParamKind::Plugin(kind), OptionValue::Plugin(p)) => {
                 Value::Plugin(self.plugin_config(kind, p)?)
             }
+            (ParamKind::Names, OptionValue::Names(names)) => {
+                Value::Names(names.iter().map(|n| n.value.clone()).collect())
+            }
+            (ParamKind::Names, OptionValue::Expr(e)) => match &e.kind {
+                ExprKind::Name(name) => Value::Names(vec![name.clone()]),
+                _ => return self.mismatch(spec, "an expression", opt.value_span),
+            },
             (ParamKind::Name, OptionValue::Expr(e)) => match &e.kind {
                 ExprKind::Name(name) => Value::Name(name.clone()),
                 _ => return self.mismatch(spec, "an expression", opt.value_span),
@@ -214,6 +221,7 @@ fn describe(v: &OptionValue) -> String {
         OptionValue::Expr(_) => "a number".into(),
         OptionValue::Vec3(_) => "a point".into(),
         OptionValue::Points(_) => "a list of points".into(),
+        OptionValue::Names(_) => "a list of names".into(),
         OptionValue::Bool(_) => "true or false".into(),
         OptionValue::String(_) => "a string".into(),
         OptionValue::Plugin(_) => "a plugin block".into(),

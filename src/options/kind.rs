@@ -49,6 +49,9 @@ pub enum ParamKind {
     Points,
     /// A name the task resolves itself, such as an effector (`effector eyes`).
     Name,
+    /// Names, one (`carries shelf`) or several (`carries [shelf, tin]`),
+    /// which the checker resolves for the plugin.
+    Names,
     /// Another plugin, by name, with its own option block.
     Plugin(PluginKind),
 }
@@ -65,6 +68,7 @@ impl ParamKind {
             ParamKind::Point => "a point (x, y, z)".into(),
             ParamKind::Points => "a list of points ((x, y, z), ...)".into(),
             ParamKind::Name => "a name".into(),
+            ParamKind::Names => "a name or a list of names [a, b]".into(),
             ParamKind::Plugin(k) => format!("the name of a {}", k.noun()),
         }
     }
@@ -80,6 +84,7 @@ impl ParamKind {
             ParamKind::Point => "point",
             ParamKind::Points => "points",
             ParamKind::Name => "name",
+            ParamKind::Names => "names",
             ParamKind::Plugin(PluginKind::Solver) => "solver",
             ParamKind::Plugin(PluginKind::Base) => "base",
             ParamKind::Plugin(PluginKind::Task) => "task",

@@ -216,6 +216,11 @@ impl<'a> Params<'a> {
         )
     }
 
+    /// A length that must be given.
+    pub fn required_length(&mut self, name: &'static str, doc: &'static str) -> Field<'_, 'a, f64> {
+        self.field(name, ParamKind::Length, None, doc)
+    }
+
     /// A point `(x, y, z)` of lengths that must be given.
     pub fn point(&mut self, name: &'static str, doc: &'static str) -> Field<'_, 'a, Vector3<f64>> {
         self.field(name, ParamKind::Point, None, doc)
@@ -308,6 +313,15 @@ impl<'a> Params<'a> {
         doc: &'static str,
     ) -> Field<'_, 'a, Option<Vec<Vector3<f64>>>> {
         self.optional(name, ParamKind::Points, doc)
+    }
+
+    /// Names (one, or a list `[a, b]`) that may be left out.
+    pub fn optional_names(
+        &mut self,
+        name: &'static str,
+        doc: &'static str,
+    ) -> Field<'_, 'a, Option<Vec<String>>> {
+        self.optional(name, ParamKind::Names, doc)
     }
 
     /// A name that may be left out (the plugin then takes a default of its
@@ -429,6 +443,18 @@ impl FromValue for String {
     }
     fn placeholder() -> Self {
         String::new()
+    }
+}
+
+impl FromValue for Vec<String> {
+    fn from_value(value: &Value) -> Option<Self> {
+        match value {
+            Value::Names(v) => Some(v.clone()),
+            _ => None,
+        }
+    }
+    fn placeholder() -> Self {
+        Vec::new()
     }
 }
 

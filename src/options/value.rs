@@ -20,6 +20,7 @@ pub enum Value {
     Point(Vector3<f64>),
     Points(Vec<Vector3<f64>>),
     Name(String),
+    Names(Vec<String>),
     Plugin(PluginConfig),
 }
 
@@ -38,6 +39,7 @@ impl Value {
                 format!("({})", points.join(", "))
             }
             Value::Name(n) => n.clone(),
+            Value::Names(ns) => format!("[{}]", ns.join(", ")),
             Value::Plugin(c) if c.options.values.is_empty() => c.name.clone(),
             Value::Plugin(c) => {
                 let options: Vec<String> = c
@@ -62,6 +64,7 @@ impl Value {
                 | (ParamKind::Point, Value::Point(_))
                 | (ParamKind::Points, Value::Points(_))
                 | (ParamKind::Name, Value::Name(_))
+                | (ParamKind::Names, Value::Names(_))
                 | (ParamKind::Plugin(_), Value::Plugin(_))
         )
     }
@@ -77,6 +80,7 @@ impl Hash for Value {
             Value::Point(p) => p.iter().for_each(|c| c.to_bits().hash(h)),
             Value::Points(ps) => ps.iter().flatten().for_each(|c| c.to_bits().hash(h)),
             Value::Name(n) => n.hash(h),
+            Value::Names(ns) => ns.hash(h),
             Value::Plugin(c) => c.hash(h),
         }
     }

@@ -59,6 +59,15 @@ pub enum Claim {
     },
     /// `kitchen meets ada2010`.
     Meets { room: Name, standard: Name },
+    /// `advise microwave serves 90 % between 800mm and 1100mm`: every
+    /// advice about the target serves that share at every position
+    /// between the two.
+    Advice {
+        subject: Spanned<Vec<String>>,
+        share: Expr,
+        from: Expr,
+        to: Expr,
+    },
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -547,6 +556,8 @@ pub enum OptionValue {
     Vec3(Vec3Expr),
     /// `((x, y, z), (x, y, z), ...)`.
     Points(Vec<Vec3Expr>),
+    /// `[a, b]`: names, one or more.
+    Names(Vec<Name>),
     Bool(bool),
     String(String),
     Plugin(PluginUse),

@@ -811,6 +811,9 @@ impl Builder {
                     Rule::point_list => {
                         OptionValue::Points(v.into_inner().map(|p| self.vec3(p)).collect())
                     }
+                    Rule::name_list => {
+                        OptionValue::Names(v.into_inner().map(|n| self.name(n)).collect())
+                    }
                     Rule::plugin_block => OptionValue::Plugin(self.plugin_use(v)),
                     Rule::boolean => OptionValue::Bool(v.as_str() == "true"),
                     Rule::string => {
@@ -850,6 +853,19 @@ impl Builder {
                     subject,
                     task,
                     bound,
+                }
+            }
+            Rule::expect_advice => {
+                let mut it = inner.into_inner().skip(1);
+                let subject = self.subject_path(it.next().unwrap());
+                let share = self.expr(it.nth(1).unwrap());
+                let from = self.expr(it.nth(1).unwrap());
+                let to = self.expr(it.nth(1).unwrap());
+                Claim::Advice {
+                    subject,
+                    share,
+                    from,
+                    to,
                 }
             }
             Rule::expect_meets => {
