@@ -19,11 +19,13 @@ impl Registry {
         r.register_task(crate::tasks::ReachAndGaze);
         r.register_task(crate::tasks::Map);
         r.register_task(crate::tasks::GazeMap);
+        r.register_task(crate::tasks::Advise);
         r.register_format(crate::output::Text);
         r.register_format(crate::output::Json);
         r.register_format(crate::output::Html);
         r.register_format(crate::output::GlbFile);
         r.register_format(crate::output::Maps);
+        r.register_format(crate::output::AdviceFiles);
         r.register_standard(crate::standards::Ada2010);
         r
     }

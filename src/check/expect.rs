@@ -9,7 +9,7 @@ use crate::error::{Error, ErrorKind};
 use crate::scenario::{ExpectCheck, ExpectSpec, StandardSpec, TaskSpec};
 use crate::scene::{Person, Population, Room};
 use crate::span::{Name, Spanned};
-use crate::syntax::ast::{Bound, Claim, Comparison, ExpectDecl, Verb};
+use crate::syntax::ast::{Bound, Claim, Comparison, ExpectDecl, Expr, Verb};
 
 /// What an expectation is checked against.
 pub(super) struct Answered<'s> {
@@ -48,6 +48,12 @@ impl Checker<'_> {
                 bound,
             } => self.share_claim(decl, population, subject, task.as_ref(), bound, a)?,
             Claim::Meets { room, standard } => self.meets_claim(decl, room, standard, a)?,
+            Claim::Advice {
+                subject,
+                share,
+                from,
+                to,
+            } => self.advice_claim(decl, subject, share, [from, to], a)?,
         };
         let source = self.cx.sources.get(decl.span.file);
         let line = source
@@ -253,6 +259,49 @@ impl Checker<'_> {
             entries,
             comparison,
             bound,
+        })
+    }
+
+    /// Every advice about the subject, by whomever.
+    fn advice_claim(
+        &mut self,
+        decl: &ExpectDecl,
+        subject: &Spanned<Vec<String>>,
+        share: &Expr,
+        [from, to]: [&Expr; 2],
+        a: &Answered<'_>,
+    ) -> Option<ExpectCheck> {
+        self.known_subject(subject, a)?;
+        let share = self.share(share, "an advice's share");
+        let (from_mm, to_mm) = (self.length(from), self.length(to));
+        let (share, from_mm, to_mm) = (share?, from_mm?, to_mm?);
+        if to_mm < from_mm {
+            self.error(Error::new(
+                ErrorKind::BadExpectation {
+                    what: format!("{to_mm} mm is below {from_mm} mm"),
+                    help: "write the lower position first".into(),
+                },
+                to.span,
+            ));
+            return None;
+        }
+        let name = subject.value.join(".");
+        let entries: Vec<usize> = (a.tasks.iter().enumerate())
+            .filter(|(_, t)| t.kind == "advise" && t.subject_in(&a.rooms[t.room]).name() == name)
+            .map(|(k, _)| k)
+            .collect();
+        if entries.is_empty() {
+            self.nothing_answers(
+                decl,
+                &format!("add `advise {name} by ... {{ from ... to ... }}`"),
+            );
+            return None;
+        }
+        Some(ExpectCheck::Serves {
+            entries,
+            share,
+            from_mm,
+            to_mm,
         })
     }
 

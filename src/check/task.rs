@@ -6,7 +6,7 @@ use std::sync::Arc;
 
 use super::Checker;
 use crate::error::{Error, ErrorKind};
-use crate::plugin::{Base, PluginKind, SubjectKind, Task};
+use crate::plugin::{Base, PluginKind, Subject, SubjectKind, Task};
 use crate::scenario::{SubjectRef, TaskSpec};
 use crate::scene::{Person, Population, Room, FACES};
 use crate::span::{Span, Spanned};
@@ -113,6 +113,12 @@ impl Checker<'_> {
             if let Some(kind) = task.validate(&spec) {
                 self.error(Error::new(kind, at.span));
             }
+            if let Some((option, message)) = task.validate_in(&spec, &rooms[*room]) {
+                let span = option_span(decl, option);
+                let plugin = label.clone();
+                self.error(Error::new(ErrorKind::BadOption { plugin, message }, span));
+            }
+            self.carried(task.as_ref(), decl, &spec, &rooms[*room]);
         }
         let mut tasks = Vec::new();
         for (room, subject) in &subjects {
@@ -132,6 +138,34 @@ impl Checker<'_> {
             }
         }
         Some(tasks)
+    }
+
+    /// Whether each box or target the task carries with its subject is
+    /// one of the subject's room, other than the subject; an error at the
+    /// option's value where one is not.
+    fn carried(&mut self, task: &dyn Task, decl: &TaskDecl, subject: &Subject<'_>, room: &Room) {
+        let span = option_span(decl, "carries");
+        for (k, name) in task.carried().iter().enumerate() {
+            let is_box = room.boxes.iter().any(|b| &b.name == name);
+            let is_target = room.targets.iter().any(|t| &t.name == name);
+            let message = if name == subject.name() {
+                format!("`{name}` is the target moved: `carries` names what moves with it")
+            } else if task.carried()[..k].contains(name) {
+                format!("`{name}` is carried twice")
+            } else if room.meshes.iter().any(|m| &m.name == name) {
+                format!("`{name}` is a mesh: only boxes and targets are carried")
+            } else if is_box || is_target {
+                continue;
+            } else {
+                let names = (room.boxes.iter().map(|b| b.name.as_str()))
+                    .chain(room.targets.iter().map(|t| t.name.as_str()));
+                let error = self.unknown("box or target", name, span, names);
+                self.error(error);
+                continue;
+            };
+            let plugin = format!("task `{}`", decl.kind.value);
+            self.error(Error::new(ErrorKind::BadOption { plugin, message }, span));
+        }
     }
 
     /// Each effector the task names, for each person: an index into the
@@ -387,4 +421,12 @@ impl Checker<'_> {
             });
         declared && !built
     }
+}
+
+/// Where option `name` of `decl` is written: its value, or the task where
+/// it is not given.
+fn option_span(decl: &TaskDecl, name: &str) -> Span {
+    (decl.options.iter())
+        .find(|o| o.name.value == name)
+        .map_or(decl.span, |o| o.value_span)
 }

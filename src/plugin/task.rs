@@ -136,6 +136,18 @@ pub trait Task: Send + Sync {
     fn validate(&self, _subject: &Subject<'_>) -> Option<ErrorKind> {
         None
     }
+    /// The other boxes and targets of the subject's room its options name
+    /// (an advice's element, moved with its target): the checker makes
+    /// sure each is one.
+    fn carried(&self) -> Vec<String> {
+        Vec::new()
+    }
+    /// A check of the task on its subject in its room (an advice's
+    /// positions inside it): the option the problem is about, and the
+    /// problem, which the checker reports at that option.
+    fn validate_in(&self, _subject: &Subject<'_>, _room: &Room) -> Option<(&'static str, String)> {
+        None
+    }
     /// A check of one person's chain to effector `need` (an index into
     /// [`Task::effectors`]): a gaze needs a look link. Reported at the
     /// person's name.
@@ -168,4 +180,12 @@ pub trait Task: Send + Sync {
         false
     }
     fn run(&self, input: &TaskInput<'_>) -> TaskReport;
+    /// Why the person of `input` does not reach point `at` of the task
+    /// (an advice's position), in the words of a reach's verdict: asked
+    /// after a population's run of only the people whose answer there a
+    /// report shows (those who drop out at an advised range's end). None
+    /// for a task with no such points.
+    fn explain(&self, _input: &TaskInput<'_>, _at: usize) -> Option<String> {
+        None
+    }
 }

@@ -14,8 +14,8 @@ use serde::Deserialize;
 use serde_json::Value;
 
 use super::{
-    Answer, GazeReport, MapReport, NotEvaluatedReport, NotPlacedReport, PopulationReport,
-    ReachAndGazeReport, ReachReport, StandardReport, TaskReport, Why,
+    AdviceReport, Answer, GazeReport, MapReport, NotEvaluatedReport, NotPlacedReport,
+    PopulationReport, ReachAndGazeReport, ReachReport, StandardReport, TaskReport, Why,
 };
 
 /// Floats within these count as unchanged.
@@ -84,6 +84,7 @@ pub enum Kind {
     NotEvaluated,
     Population,
     Standard,
+    Advice,
 }
 
 impl Kind {
@@ -103,6 +104,7 @@ impl Kind {
             TaskReport::NotEvaluated(_) => Kind::NotEvaluated,
             TaskReport::Population(_) => Kind::Population,
             TaskReport::Standard(_) => Kind::Standard,
+            TaskReport::Advice(_) => Kind::Advice,
         }
     }
 
@@ -117,6 +119,7 @@ impl Kind {
             Kind::NotEvaluated => NotEvaluatedReport::asks(entry),
             Kind::Population => PopulationReport::asks(entry),
             Kind::Standard => StandardReport::asks(entry),
+            Kind::Advice => AdviceReport::asks(entry),
         }
     }
 
@@ -131,6 +134,7 @@ impl Kind {
             Kind::NotEvaluated => NotEvaluatedReport::verdict_words(entry),
             Kind::Population => PopulationReport::verdict_words(entry),
             Kind::Standard => StandardReport::verdict_words(entry),
+            Kind::Advice => AdviceReport::verdict_words(entry),
         }
     }
 
@@ -151,6 +155,7 @@ impl Kind {
             Kind::NotEvaluated => NotEvaluatedReport::changes,
             Kind::Population => PopulationReport::changes,
             Kind::Standard => StandardReport::changes,
+            Kind::Advice => AdviceReport::changes,
         };
         changes(old, new, answer, who, tol)
     }

@@ -10,6 +10,7 @@
 //! with golden reports read that answer. [`TaskReport`] is the enum serde
 //! writes, tagged by kind.
 
+mod advice;
 mod answer;
 mod entry_kind;
 mod expectation;
@@ -25,6 +26,10 @@ mod schema;
 mod standard;
 mod why;
 
+pub use advice::{
+    AdviceFrame, AdvicePoint, AdviceReport, AdviceStandard, Because, PositionAnswer, RangeEnd,
+    ServedRange,
+};
 pub use answer::{Answer, Figure};
 pub use entry_kind::{Asks, EntryKind, Kind, Tolerance};
 pub use expectation::ExpectationReport;
@@ -91,6 +96,21 @@ impl Report {
         }
     }
 
+    /// The advices, by target, in the order each target first comes.
+    pub fn advices_by_target(&self) -> Vec<(String, Vec<&AdviceReport>)> {
+        let mut out: Vec<(String, Vec<&AdviceReport>)> = Vec::new();
+        for task in &self.tasks {
+            let TaskReport::Advice(a) = task else {
+                continue;
+            };
+            match out.iter_mut().find(|(name, _)| *name == a.name) {
+                Some((_, each)) => each.push(a),
+                None => out.push((a.name.clone(), vec![a])),
+            }
+        }
+        out
+    }
+
     /// Whether every expectation is met.
     pub fn expectations_met(&self) -> bool {
         self.expectations.iter().all(|e| e.met)
@@ -123,6 +143,8 @@ pub enum TaskReport {
     Population(Box<PopulationReport>),
     /// A room checked against a building standard's rules.
     Standard(Box<StandardReport>),
+    /// An element moved along an axis: where it serves whom.
+    Advice(Box<AdviceReport>),
 }
 
 /// What every kind of task report says of itself.
@@ -164,6 +186,7 @@ impl TaskReport {
             TaskReport::NotEvaluated(n) => n,
             TaskReport::Population(p) => p.as_ref(),
             TaskReport::Standard(s) => s.as_ref(),
+            TaskReport::Advice(a) => a.as_ref(),
         }
     }
 

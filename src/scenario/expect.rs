@@ -41,6 +41,14 @@ pub enum ExpectCheck {
     },
     /// Each standard's rules all hold.
     Meets { entries: Vec<usize> },
+    /// Each advice serves at least `share` at every position from
+    /// `from_mm` to `to_mm`.
+    Serves {
+        entries: Vec<usize>,
+        share: f64,
+        from_mm: f64,
+        to_mm: f64,
+    },
 }
 
 impl Scenario {
@@ -58,7 +66,8 @@ impl ExpectCheck {
             ExpectCheck::Answers { entries, .. }
             | ExpectCheck::Covers { entries, .. }
             | ExpectCheck::Share { entries, .. }
-            | ExpectCheck::Meets { entries } => entries,
+            | ExpectCheck::Meets { entries }
+            | ExpectCheck::Serves { entries, .. } => entries,
         }
     }
 }
@@ -88,6 +97,15 @@ impl ExpectSpec {
                 (comparison.holds(value, *bound), r.answer().verdict)
             }),
             ExpectCheck::Meets { entries } => all(entries, reports, meets),
+            ExpectCheck::Serves {
+                entries,
+                share,
+                from_mm,
+                to_mm,
+            } => all(entries, reports, |r| match r {
+                TaskReport::Advice(a) => a.serves_between(*share, *from_mm, *to_mm),
+                other => (false, other.answer().verdict),
+            }),
         };
         ExpectationReport {
             expect: self.text.clone(),

@@ -4,6 +4,7 @@
 //! run looks no name up. Spans remain only where a run may still need to
 //! point back at the text.
 
+mod advice;
 mod estimate;
 mod expect;
 mod run;

@@ -18,8 +18,8 @@ use crate::meter::{Meter, RunWork};
 use crate::plugin::{Fit, TaskInput};
 use crate::progress::Progress;
 use crate::report::{
-    NotEvaluatedReport, NotPlacedReport, PersonAnswer, PopulationReport, Report, TaskReport,
-    SCHEMA_VERSION,
+    AdviceReport, NotEvaluatedReport, NotPlacedReport, PersonAnswer, PopulationReport, Report,
+    TaskReport, SCHEMA_VERSION,
 };
 
 /// One task's answer, what its questions touched of its room (where it
@@ -49,6 +49,7 @@ fn task_label(kind: &str) -> &'static str {
         "gaze" => "gaze",
         "map" => "map",
         "gaze_map" => "gaze_map",
+        "advise" => "advise",
         _ => "task",
     }
 }
@@ -406,7 +407,8 @@ impl Scenario {
             }
             answers.push(Some(each.into_iter().map(|(report, _)| report).collect()));
         }
-        let reports = self.gather(tasks, &by_population, &jobs, answers, &whole);
+        let asking = (progress, run, work.as_mut_slice());
+        let reports = self.gather(tasks, &by_population, &jobs, answers, &whole, asking);
         reports
             .into_iter()
             .zip(touched)
@@ -460,6 +462,7 @@ impl Scenario {
         let mut standards = if stopped {
             Vec::new()
         } else {
+            self.advise_beside_standards(&mut tasks, &run);
             self.run_standards(&all, &tasks, &run)
         };
         let checked = !stopped && !run.exceeded();
@@ -531,7 +534,9 @@ impl Scenario {
         jobs: &[Job],
         found: Vec<Option<Vec<TaskReport>>>,
         whole: &[bool],
+        asking: (&dyn Progress, &Arc<RunWork>, &mut [u64]),
     ) -> Vec<Option<TaskReport>> {
+        let (progress, run, work) = asking;
         let mut reports: Vec<Option<TaskReport>> = vec![None; tasks.len()];
         // Each population task's answers, person by person in draw order.
         let mut answers: BTreeMap<usize, Vec<TaskReport>> = BTreeMap::new();
@@ -553,8 +558,17 @@ impl Scenario {
             let task = tasks[k];
             let population = &self.populations[task.population.expect("a population task")];
             let name = task.subject_name(self);
-            let report = PopulationReport::new(name, population, &answers);
-            reports[k] = Some(TaskReport::Population(Box::new(report)));
+            reports[k] = Some(match AdviceReport::members(population, &answers) {
+                Some((frame, members)) => {
+                    let (advice, spent) =
+                        self.population_advice(task, (&frame, members), progress, run);
+                    work[k] += spent;
+                    TaskReport::Advice(Box::new(advice))
+                }
+                None => TaskReport::Population(Box::new(PopulationReport::new(
+                    name, population, &answers,
+                ))),
+            });
         }
         reports
     }

@@ -127,6 +127,19 @@ impl Scenario {
         progress: &dyn Progress,
         memo: &Arc<Memo>,
     ) -> Result<Vec<ShardPart>, Error> {
+        if let Some(advice) = self
+            .tasks
+            .iter()
+            .find(|t| t.kind == "advise" && t.population.is_some())
+        {
+            return Err(Error::new(
+                ErrorKind::Unsupported {
+                    what: "a run split into shards with an `advise` task by a population".to_string(),
+                    help: "run it whole: a shard keeps whether each person reaches, not why at each position an advice's range ends".to_string(),
+                },
+                advice.span,
+            ));
+        }
         let run = RunWork::keeping(self.work.limit, Arc::clone(memo));
         let charges = self.floor_charges();
         let by_population = |p: usize| -> Vec<(usize, &TaskSpec)> {

@@ -53,6 +53,24 @@ impl Room {
         (0..3).all(|i| p[i] >= 0.0 && p[i] <= self.size_mm[i])
     }
 
+    /// This room with the boxes and targets named `names` moved by
+    /// `delta_mm` along axis `axis` (0, 1, 2: x, y, z): an element moved
+    /// as one (`advise`).
+    pub fn moved(&self, names: &[&str], axis: usize, delta_mm: f64) -> Room {
+        let mut moved = self.clone();
+        for b in moved
+            .boxes
+            .iter_mut()
+            .filter(|b| names.contains(&b.name.as_str()))
+        {
+            b.corner_mm[axis] += delta_mm;
+        }
+        for t in (moved.targets.iter_mut()).filter(|t| names.contains(&t.name.as_str())) {
+            t.position_mm[axis] += delta_mm;
+        }
+        moved
+    }
+
     /// The name of obstacle `index`: the boxes, then the meshes.
     pub fn obstacle_name(&self, index: usize) -> &str {
         match self.boxes.get(index) {

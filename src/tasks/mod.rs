@@ -2,6 +2,7 @@
 //! is configured from its options into a [`crate::plugin::Task`], which
 //! runs on what the checker resolved.
 
+mod advise;
 mod common;
 mod gaze;
 mod gaze_map;
@@ -14,6 +15,7 @@ mod reach_and_gaze;
 mod walk_in;
 mod why;
 
+pub use advise::Advise;
 pub use common::{mix_seed, Common};
 pub use gaze::Gaze;
 pub use gaze_map::GazeMap;

@@ -68,20 +68,54 @@ impl TaskPlugin for Reach {
         options: &Options,
         plugins: &Registry,
     ) -> Result<Box<dyn Task>, SettingsError> {
-        let ReachSettings { mut common, hand } = ReachSettings::from_options(options)?;
-        let either = Hand::resolve(hand.as_deref(), &mut common)?;
-        Ok(Box::new(ReachTask {
-            reaching: Reaching::new(common, plugins)?,
-            either,
-        }))
+        let settings = ReachSettings::from_options(options)?;
+        Ok(Box::new(ReachTask::new(settings, plugins)?))
     }
 }
 
 /// A configured reach: with the effector asked for alone, or `either`
 /// hand (its twin too, where the mannequin has one).
-struct ReachTask {
+pub(super) struct ReachTask {
     reaching: Reaching,
     either: bool,
+}
+
+impl ReachTask {
+    /// The reach `settings` configure, its solvers built from `plugins`.
+    pub(super) fn new(settings: ReachSettings, plugins: &Registry) -> Result<Self, SettingsError> {
+        let ReachSettings { mut common, hand } = settings;
+        let either = Hand::resolve(hand.as_deref(), &mut common)?;
+        Ok(ReachTask {
+            reaching: Reaching::new(common, plugins)?,
+            either,
+        })
+    }
+
+    /// The reach of `input`'s target, with either hand as configured;
+    /// where it fails, why only if `explain` (finding why searches again
+    /// without the room, the body and the limits: the most costly part of
+    /// a failed reach).
+    pub(super) fn reach(&self, input: &TaskInput<'_>, explain: bool) -> ReachReport {
+        let Subject::Target(target) = input.subject else {
+            unreachable!("the checker gives a reach a target")
+        };
+        // The room's obstacles, once for either hand.
+        let obstacles = self.reaching.obstacles(input);
+        let mut best: Option<ReachReport> = None;
+        for effector in self.hands_of(&input.person.body, input.effectors[0]) {
+            let report = self.reach_with(input, target, effector, obstacles.as_ref(), explain);
+            // For a verdict alone, the first hand that reaches will do.
+            let done = report.ok && input.verdict_only;
+            best = Some(match best {
+                Some(kept) if !better(&report, &kept, &target.position_mm) => kept,
+                _ => report,
+            });
+            if done {
+                break;
+            }
+        }
+        best.expect("a reach has at least one hand")
+    }
 }
 
 impl Task for ReachTask {
@@ -124,25 +158,7 @@ impl Task for ReachTask {
     }
 
     fn run(&self, input: &TaskInput<'_>) -> TaskReport {
-        let Subject::Target(target) = input.subject else {
-            unreachable!("the checker gives a reach a target")
-        };
-        // The room's obstacles, once for either hand.
-        let obstacles = self.reaching.obstacles(input);
-        let mut best: Option<ReachReport> = None;
-        for effector in self.hands_of(&input.person.body, input.effectors[0]) {
-            let report = self.reach_with(input, target, effector, obstacles.as_ref());
-            // For a verdict alone, the first hand that reaches will do.
-            let done = report.ok && input.verdict_only;
-            best = Some(match best {
-                Some(kept) if !better(&report, &kept, &target.position_mm) => kept,
-                _ => report,
-            });
-            if done {
-                break;
-            }
-        }
-        TaskReport::Reach(best.expect("a reach has at least one hand"))
+        TaskReport::Reach(self.reach(input, true))
     }
 }
 
@@ -170,13 +186,14 @@ impl ReachTask {
 
     /// The reach of `target` with effector `effector`, kept out of
     /// `obstacles` (none: collisions are not checked), and where it fails,
-    /// why.
+    /// why (if `explain`).
     fn reach_with(
         &self,
         input: &TaskInput<'_>,
         target: &Target,
         effector: usize,
         obstacles: Option<&Obstacles>,
+        explain: bool,
     ) -> ReachReport {
         let reaching = &self.reaching;
         let chain = input.person.body.chain(effector);
@@ -204,7 +221,7 @@ impl ReachTask {
         let solver = reaching.solver.as_ref();
         let mut placement = reach_walking_in(prepared.as_ref(), &query, &chain, solver);
         let mut why = Vec::new();
-        if !placement.solution.reaches(reaching.common.tolerance_mm) {
+        if explain && !placement.solution.reaches(reaching.common.tolerance_mm) {
             let failed = Failed {
                 reaching,
                 input,
