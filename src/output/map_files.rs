@@ -15,6 +15,7 @@ use std::fmt::Write;
 use nalgebra::{Vector2, Vector3};
 
 use super::colours::{cell_colour, share_colour, MISSED, REACHED, SEEN, SHARES, SHORT, THROUGH};
+use super::ticks::nice_step;
 use super::view::RoomView;
 use crate::escape::markup;
 use crate::report::{quoted, MapCell, MapReport, PopulationReport, ShareCell, ShareGrid, BALANCE};
@@ -507,17 +508,6 @@ fn bases(s: &mut String, bases_mm_deg: &[[f64; 3]], scale: &Scale) {
             py - 12.0 * sin
         );
     }
-}
-
-/// A round step (1, 2 or 5 times a power of ten) for ticks at least
-/// `min_mm` apart.
-fn nice_step(min_mm: f64) -> f64 {
-    let power = 10f64.powf(min_mm.max(1e-9).log10().floor());
-    [1.0, 2.0, 5.0, 10.0]
-        .iter()
-        .map(|k| k * power)
-        .find(|&step| step >= min_mm)
-        .unwrap_or(10.0 * power)
 }
 
 /// The drawing's frame and round ticks along both sides.

@@ -1,6 +1,8 @@
 //! Output formats, each a plugin that makes its files of a report, and
 //! the set of all of them that `--out DIR` writes.
 
+mod advice_files;
+mod advice_plot;
 pub mod colours;
 mod files;
 pub mod glb;
@@ -14,8 +16,10 @@ mod maps;
 mod placing;
 mod seal;
 mod text;
+mod ticks;
 pub mod view;
 
+pub use advice_files::AdviceFiles;
 pub use files::{output_set, write_outputs, write_set, Written};
 pub use glb_file::GlbFile;
 pub use html::Html;

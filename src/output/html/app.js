@@ -549,8 +549,13 @@ export function start(settings, data) {
     buttons.forEach((b, i) => b.classList.toggle("selected", i === k));
     buttons[k].scrollIntoView({ block: "nearest" });
     const strained = task.strained.map((j) => j.name).join(", ");
-    document.getElementById("facts").textContent =
-      task.details + (strained ? `\n  at a limit (pink): ${strained}` : "");
+    const facts = document.getElementById("facts");
+    facts.textContent = task.details + (strained ? `\n  at a limit (pink): ${strained}` : "");
+    // An advice's plot over the view: SVG the report made, its words
+    // escaped there.
+    const plotBox = document.getElementById("plot-box");
+    plotBox.hidden = !task.plot;
+    plotBox.innerHTML = task.plot || "";
     show(how);
   }
 

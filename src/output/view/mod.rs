@@ -7,6 +7,7 @@
 //! a limit. Numbers are rounded (0.1 mm, 0.1 degree) so the page is the
 //! same bytes on every run.
 
+use super::advice_plot;
 use nalgebra::{IsometryMatrix3, Point3, Vector3};
 use serde::Serialize;
 
@@ -130,6 +131,9 @@ pub struct TaskView {
     /// The obstacle a posture or a line of sight met.
     pub blocked_by: Option<String>,
     pub cells: Option<CellsView>,
+    /// An advice's plot (every group's share against the position), SVG.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub plot: Option<String>,
     /// What a standard's rules measured: areas and circles on the floor,
     /// elements, each green where its rule holds and red where not.
     pub marks: Vec<MarkView>,
@@ -206,6 +210,13 @@ pub struct CellsView {
 
 /// The view's data for `report` over `scene`.
 pub fn view_data(report: &Report, scene: &FormatScene<'_>) -> ViewData {
+    let advices = report.advices_by_target();
+    let plot = |task: &TaskReport| match task {
+        TaskReport::Advice(a) => (advices.iter())
+            .find(|(name, _)| *name == a.name)
+            .map(|(_, each)| advice_plot::svg(each)),
+        _ => None,
+    };
     ViewData {
         title: report.file.clone(),
         rooms: room_views(scene.rooms),
@@ -213,7 +224,10 @@ pub fn view_data(report: &Report, scene: &FormatScene<'_>) -> ViewData {
             .tasks
             .iter()
             .zip(&scene.tasks)
-            .map(|(task, place)| task_view(task, place, scene))
+            .map(|(task, place)| TaskView {
+                plot: plot(task),
+                ..task_view(task, place, scene)
+            })
             .collect(),
         share_bands: SHARES
             .iter()
@@ -334,6 +348,7 @@ fn task_view(task: &TaskReport, place: &TaskPlace, scene: &FormatScene<'_>) -> T
         sight: None,
         blocked_by: None,
         cells: None,
+        plot: None,
         marks: Vec::new(),
         routes: Vec::new(),
     };
@@ -378,6 +393,8 @@ fn task_view(task: &TaskReport, place: &TaskPlace, scene: &FormatScene<'_>) -> T
         // each point's.
         TaskReport::Population(p) => view.cells = share_cells(p),
         TaskReport::Standard(s) => view.marks = standard_marks(s),
+        // The target where it serves the most.
+        TaskReport::Advice(a) => view.target = a.best_target_mm(),
     }
     if let Some(&(base, _)) = postures.first() {
         let person = place.person;
