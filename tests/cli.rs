@@ -158,6 +158,7 @@ macro_rules! identical_across_threads {
 }
 
 identical_across_threads! {
+    identical_json_advice: "advice.reach",
     identical_json_bathroom: "bathroom.reach",
     identical_json_client_kitchen: "client_kitchen.reach",
     identical_json_flat_12: "flat_12.reach",

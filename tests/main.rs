@@ -1,6 +1,7 @@
 //! The integration tests, one binary: each module is the file of its name
 //! under tests/ (ARCHITECTURE.md says what each checks).
 
+mod advice;
 mod bases;
 mod beyond;
 mod body;
