@@ -47,14 +47,19 @@ fn registering_adds_to_the_listing_and_validates_options() {
 
 #[test]
 fn every_plugin_builds_from_its_declared_defaults() {
-    use reach::plugin::{Options, ParamSpec, Value};
+    use reach::plugin::{Options, ParamKind, ParamSpec, Value};
     use reach::report::Report;
-    // Options at their defaults; a required one (a fixed base's `at`) gets a
-    // point. Every plugin must build from them without an error.
+    // Options at their defaults; a required one (a fixed base's `at`, an
+    // advice's `from` and `to`) gets a value of its kind. Every plugin
+    // must build from them without an error.
     let fill = |params: Vec<ParamSpec>| {
         let mut o = Options::defaults(&params);
         for p in params.iter().filter(|p| p.default.is_none() && !p.optional) {
-            o = o.set(p.name, Value::Point(Default::default()));
+            let value = match p.kind {
+                ParamKind::Length => Value::Length(1000.0),
+                _ => Value::Point(Default::default()),
+            };
+            o = o.set(p.name, value);
         }
         o
     };

@@ -297,6 +297,29 @@ impl Checker<'_> {
             );
             return None;
         }
+        // Positions along two axes are not one range.
+        let along = |k: usize| {
+            (a.tasks[k].options.iter())
+                .find(|(n, _)| *n == "along")
+                .map(|(_, v)| v.display())
+        };
+        let mut axes: Vec<String> = entries.iter().filter_map(|&k| along(k)).collect();
+        axes.sort();
+        axes.dedup();
+        if axes.len() > 1 {
+            self.error(Error::new(
+                ErrorKind::BadExpectation {
+                    what: format!(
+                        "`{name}` is advised along {}: which positions?",
+                        axes.join(" and ")
+                    ),
+                    help: "pin one axis per target: advise the other with a target of its own"
+                        .into(),
+                },
+                subject.span,
+            ));
+            return None;
+        }
         Some(ExpectCheck::Serves {
             entries,
             share,

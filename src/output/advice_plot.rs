@@ -66,6 +66,7 @@ pub fn svg(advices: &[&AdviceReport]) -> String {
         .filter(|a| a.population)
         .map(|a| a.serves)
         .collect();
+    asked.sort_by(f64::total_cmp);
     asked.dedup();
     for share in asked {
         let _ = writeln!(

@@ -44,8 +44,8 @@ pub struct AdviceReport {
     pub serves: f64,
     /// `full`: every position solved for every person; `bracketed`: a
     /// coarse scan, then each change between its positions bisected (a
-    /// stretch shorter than the coarse step between two positions with
-    /// the same answer is not looked for).
+    /// stretch shorter than the coarse step between two solved positions
+    /// can be missed).
     pub scan: &'static str,
     /// The positions, in order: the target's coordinate on the axis.
     pub points: Vec<AdvicePoint>,
@@ -264,8 +264,14 @@ impl AdviceReport {
     /// `frame` is `answers`.
     pub fn person(frame: &AdviceFrame, who: &str, answers: &[PositionAnswer]) -> Self {
         let members = [(who.to_string(), answers.to_vec())];
-        let mut report = Self::of_people(frame, who, false, &members);
-        report.serves = 1.0;
+        // A person is served where they reach it, whatever share the
+        // task asks of a population.
+        let reached = AdviceFrame {
+            serves: 1.0,
+            ..frame.clone()
+        };
+        let mut report = Self::of_people(&reached, who, false, &members);
+        report.asked = frame.serves;
         for (point, answer) in report.points.iter_mut().zip(answers) {
             point.ci95 = None;
             point.verdict = answer.verdict.clone().filter(|_| !answer.reached);
@@ -458,9 +464,9 @@ impl AdviceReport {
                 ),
             );
         }
-        let least = (inside.iter())
-            .min_by(|a, b| a.share.total_cmp(&b.share))
-            .expect("positions inside the range");
+        let Some(least) = (inside.iter()).min_by(|a, b| a.share.total_cmp(&b.share)) else {
+            return (false, format!("{} has no position there", self.who));
+        };
         let ok = least.share >= share - 1e-9;
         let words = format!(
             "{} {} at {} mm",

@@ -288,7 +288,7 @@ mod tests {
             .iter()
             .map(|k| text(&k["properties"]["kind"], "const"))
             .collect();
-        assert_eq!(tags.len(), 8, "{tags:?}");
+        assert_eq!(tags.len(), 9, "{tags:?}");
         for tag in tags {
             let entry = serde_json::json!({ "kind": tag });
             assert!(Kind::of(&entry).is_some(), "`{tag}` is not a Kind");

@@ -96,16 +96,25 @@ impl Report {
         }
     }
 
-    /// The advices, by target, in the order each target first comes.
+    /// The advices, by target and axis, in the order each first comes,
+    /// each group named after its target (and its axis, where the target
+    /// is advised along another axis too: `kettle-x`).
     pub fn advices_by_target(&self) -> Vec<(String, Vec<&AdviceReport>)> {
         let mut out: Vec<(String, Vec<&AdviceReport>)> = Vec::new();
         for task in &self.tasks {
             let TaskReport::Advice(a) = task else {
                 continue;
             };
-            match out.iter_mut().find(|(name, _)| *name == a.name) {
+            let same = |e: &[&AdviceReport]| e[0].name == a.name && e[0].along == a.along;
+            match out.iter_mut().find(|(_, e)| same(e)) {
                 Some((_, each)) => each.push(a),
                 None => out.push((a.name.clone(), vec![a])),
+            }
+        }
+        for k in 0..out.len() {
+            let twin = (0..out.len()).any(|j| j != k && out[j].1[0].name == out[k].1[0].name);
+            if twin {
+                out[k].0 = format!("{}-{}", out[k].1[0].name, out[k].1[0].along);
             }
         }
         out

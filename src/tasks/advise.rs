@@ -10,13 +10,11 @@
 //! `bracketed` scan solves every `coarse`-th position, then bisects each
 //! change between two of them, so a person's ends are found with a few
 //! solves instead of one per position; a stretch shorter than the coarse
-//! step between two positions that answer alike is not looked for (the
-//! `full` scan solves every position). Where a person does not reach a
+//! step that lies between two solved positions (reached or not, where
+//! they answer alike or where the bisection passes it by) can be missed
+//! (the `full` scan solves every position). Where a person does not reach a
 //! position next to one they reach, why is found as a reach finds it:
 //! those are the words of the advice's range ends.
-
-use std::collections::BTreeMap;
-use std::sync::{Arc, Mutex};
 
 use super::reach::ReachTask;
 use crate::error::ErrorKind;
@@ -87,11 +85,11 @@ impl Settings for AdviseSettings {
                 .name(
                     "scan",
                     "bracketed",
-                    "`bracketed`: every `coarse`-th position solved, then each change between two bisected (a stretch shorter than the coarse step between two positions that answer alike is not looked for); `full`: every position solved",
+                    "`bracketed`: every `coarse`-th position solved, then each change between two bisected (a stretch shorter than the coarse step between two solved positions can be missed); `full`: every position solved",
                 )
                 .get(),
             coarse: p
-                .integer("coarse", 4, "for a bracketed scan: the positions between two solved first")
+                .integer("coarse", 4, "for a bracketed scan: every `coarse`-th position is solved first, then each change between two is bisected")
                 .range(2.0, 100.0)
                 .get(),
         }
@@ -162,13 +160,16 @@ impl TaskPlugin for Advise {
                 ),
             ));
         }
-        let count = steps.round() as usize + 1;
-        if count > MAX_POSITIONS {
+        // Compared before it is a count: a span of light years is refused,
+        // not wrapped round.
+        if steps.round() + 1.0 > MAX_POSITIONS as f64 {
+            let count = steps.round() + 1.0;
             return Err(SettingsError::invalid(
                 "step",
                 format!("{count} positions: at most {MAX_POSITIONS} (take a longer step)"),
             ));
         }
+        let count = steps.round() as usize + 1;
         Ok(Box::new(AdviseTask {
             reach: ReachTask::new(s.reach, plugins)?,
             carries: s.carries.unwrap_or_default(),
@@ -180,13 +181,9 @@ impl TaskPlugin for Advise {
             serves: s.serves,
             full,
             coarse: s.coarse as usize,
-            rooms: Mutex::new(BTreeMap::new()),
         }))
     }
 }
-
-/// The rooms with the element at each position, by room and target.
-type Moved = BTreeMap<(String, String), Arc<Vec<Room>>>;
 
 /// A configured advice.
 struct AdviseTask {
@@ -199,8 +196,6 @@ struct AdviseTask {
     serves: f64,
     full: bool,
     coarse: usize,
-    /// The rooms moved, made once for every person.
-    rooms: Mutex<Moved>,
 }
 
 const AXES: [&str; 3] = ["x", "y", "z"];
@@ -265,24 +260,27 @@ impl Task for AdviseTask {
         let Subject::Target(target) = input.subject else {
             return None;
         };
-        let rooms = self.moved_rooms(input.room, &target.name);
         let index = input
             .room
             .targets
             .iter()
             .position(|t| t.name == target.name)?;
-        self.answer_at(input, rooms.get(at)?, index, true).verdict
+        let room = self.moved_room(input.room, &target.name, at)?;
+        self.answer_at(input, &room, index, true).verdict
     }
 
     fn run(&self, input: &TaskInput<'_>) -> TaskReport {
         let Subject::Target(target) = input.subject else {
             unreachable!("the checker gives an advice a target")
         };
-        let rooms = self.moved_rooms(input.room, &target.name);
         let index = (input.room.targets.iter())
             .position(|t| t.name == target.name)
             .expect("the subject is a target of its room");
-        let at = |k: usize, explain: bool| self.answer_at(input, &rooms[k], index, explain);
+        let at = |k: usize, explain: bool| {
+            let room =
+                (self.moved_room(input.room, &target.name, k)).expect("a position of the scan");
+            self.answer_at(input, &room, index, explain)
+        };
         // A population's member is asked why afterwards, and only where
         // their population's report shows it (`Task::explain`).
         let explain = !input.verdict_only;
@@ -308,22 +306,14 @@ impl Task for AdviseTask {
 }
 
 impl AdviseTask {
-    /// `room` with the element (target `name` and what it carries) at each
-    /// position, made once.
-    fn moved_rooms(&self, room: &Room, name: &str) -> Arc<Vec<Room>> {
-        let key = (room.name.clone(), name.to_string());
-        let mut kept = self.rooms.lock().unwrap_or_else(|e| e.into_inner());
-        let rooms = kept.entry(key).or_insert_with(|| {
-            let declared = (room.targets.iter())
-                .find(|t| t.name == name)
-                .map_or(0.0, |t| t.position_mm[self.axis]);
-            Arc::new(
-                (self.positions_mm.iter())
-                    .map(|&at| room.moved(&self.element(name), self.axis, at - declared))
-                    .collect(),
-            )
-        });
-        Arc::clone(rooms)
+    /// `room` with the element (target `name` and what it carries) at
+    /// position `k`: made for each solve and dropped after it (a room's
+    /// meshes are copied with it, so rooms for every position are not
+    /// kept).
+    fn moved_room(&self, room: &Room, name: &str, k: usize) -> Option<Room> {
+        let declared = room.targets.iter().find(|t| t.name == name)?.position_mm[self.axis];
+        let at = self.positions_mm.get(k)?;
+        Some(room.moved(&self.element(name), self.axis, at - declared))
     }
 
     /// The names moved as one: target `name` and what it carries.

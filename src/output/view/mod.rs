@@ -213,7 +213,7 @@ pub fn view_data(report: &Report, scene: &FormatScene<'_>) -> ViewData {
     let advices = report.advices_by_target();
     let plot = |task: &TaskReport| match task {
         TaskReport::Advice(a) => (advices.iter())
-            .find(|(name, _)| *name == a.name)
+            .find(|(_, each)| each.iter().any(|e| std::ptr::eq(*e, a.as_ref())))
             .map(|(_, each)| advice_plot::svg(each)),
         _ => None,
     };
