@@ -12,6 +12,7 @@ use serde::Serialize;
 use serde_json::Value;
 
 use super::entry_kind::{text, Asks, EntryKind, Tolerance};
+use super::population::percent;
 use super::{fixed, mm, wilson95, Answer, Figure, ReportKind, TaskReport};
 use crate::scene::Population;
 
@@ -595,16 +596,6 @@ fn best_point(points: &[AdvicePoint]) -> Option<AdvicePoint> {
     let mut best = points[(longest.0 + longest.1) / 2].clone();
     best.verdict = None;
     Some(best)
-}
-
-/// `92 %` with one decimal where it matters.
-fn percent(share: f64) -> String {
-    let p = share * 100.0;
-    if (p - p.round()).abs() < 0.05 {
-        format!("{p:.0} %")
-    } else {
-        format!("{p:.1} %")
-    }
 }
 
 impl ReportKind for AdviceReport {

@@ -299,7 +299,7 @@ impl Excluded {
 }
 
 /// `92 %` with one decimal where it matters.
-fn percent(share: f64) -> String {
+pub(super) fn percent(share: f64) -> String {
     let p = share * 100.0;
     if (p - p.round()).abs() < 0.05 {
         format!("{p:.0} %")
