@@ -43,6 +43,7 @@ fn run(text: &str) -> (AdviceReport, f64, u64) {
     let registry = Registry::builtin();
     let limits = Limits {
         solver_work: 1000 * Limits::default().solver_work,
+        solver_starts: 1000 * Limits::default().solver_starts,
         ..Limits::default()
     };
     let session = reach::Session::default().limits(limits);
