@@ -3,8 +3,8 @@
 //! height of a wall-mounted microwave in a kitchen with a door, at 61
 //! heights (700 to 1600 mm in 15 mm steps). Prints the bracketed scan's
 //! wall time; with `full`, a full scan's too (a solve at every height for
-//! every person), and whether the two agree within one step, person by
-//! person (the shares at every height, and the served ranges' ends).
+//! every person), and whether the two agree within one step (as many
+//! people reach each height, and the served ranges' ends).
 //!
 //! `cargo run --release --example bench_advice -- [PEOPLE] [full]`
 //! (1000 people, bracketed only, by default).

@@ -1,6 +1,6 @@
 //! Advice (`advise`): the bracketed scan answers as a full scan of every
-//! position does, person by person, in a kitchen with a door, manual
-//! wheelchair users reaching with either hand; a person's advice is where
+//! position does (as many people reach each position), in a kitchen with
+//! a door, manual wheelchair users reaching with either hand; a person's advice is where
 //! their own reach answers yes; expectations on advice are judged; bad
 //! advice options are diagnostics at the option.
 
