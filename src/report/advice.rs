@@ -290,18 +290,12 @@ impl AdviceReport {
         Self::of_people(frame, who, true, members)
     }
 
-    /// The advice for `population`, whose people (in draw order) answered
-    /// `answers`: their advices, or for one whose base fits nowhere in the
-    /// room as declared, that answer at every position. None where no
-    /// one's answer is an advice (no positions are known).
-    pub fn of_members(population: &Population, answers: &[TaskReport]) -> Option<Self> {
-        let (frame, members) = Self::members(population, answers)?;
-        Some(Self::population(&frame, &population.name, &members))
-    }
-
     /// The frame of `population`'s advice, whose people (in draw order)
-    /// answered `answers`, and each one's name and answer at each
-    /// position (as [`AdviceReport::of_members`] takes them).
+    /// answered `answers` (their advices, or for one whose base fits
+    /// nowhere in the room as declared, that answer at every position),
+    /// and each one's name and answer at each position, as
+    /// [`AdviceReport::population`] takes them; none where no one's answer
+    /// is an advice (no positions are known).
     #[allow(clippy::type_complexity)]
     pub fn members(
         population: &Population,
@@ -409,8 +403,7 @@ impl AdviceReport {
             })
             .collect();
         let serves = frame.serves;
-        let served =
-            |k: usize| people > 0 && points[k].reached as f64 >= serves * people as f64 - 1e-9;
+        let served = |k: usize| serving(points[k].reached, people, serves);
         let ranges = runs(points.len(), served)
             .into_iter()
             .map(|(first, last)| ServedRange {
@@ -492,11 +485,7 @@ impl AdviceReport {
             return Vec::new();
         };
         let serves_at = |a: &AdviceReport, at: f64| {
-            (a.points.iter()).any(|p| {
-                p.at_mm == at
-                    && p.reached as f64 >= a.serves * a.people as f64 - 1e-9
-                    && a.people > 0
-            })
+            (a.points.iter()).any(|p| p.at_mm == at && serving(p.reached, a.people, a.serves))
         };
         let points = &first.points;
         runs(points.len(), |k| {
@@ -517,6 +506,12 @@ impl AdviceReport {
             .collect();
         each.join(", ")
     }
+}
+
+/// Whether `reached` of `people` is at least the share `serves` (none of
+/// no one).
+fn serving(reached: usize, people: usize, serves: f64) -> bool {
+    people > 0 && reached as f64 >= serves * people as f64 - 1e-9
 }
 
 /// `800-1120 mm`, or `800 mm` for one position.
