@@ -103,3 +103,44 @@ fn an_expectation_on_advice_holds_only_where_every_position_serves() {
         .because
         .contains("scans 900-1700 mm only"));
 }
+
+#[test]
+fn a_cart_moved_in_front_of_the_door_shuts_the_chair_out_there_only() {
+    // The floor is another at each position where the element meets the
+    // chair's footprint: here where the cart stands before the door.
+    let text = "units mm deg
+use std::people
+room kitchen {
+  size 3600 x 3000 x 2500
+  door entrance at (3600, 1500) width 900mm
+  box cart at (3150, 200, 0) size (450, 700, 750)
+  target cup at (3350, 550, 760)
+}
+person ann { mannequin woman_5th_seated base manual_wheelchair }
+advise cup by ann { carries cart along y from 550mm to 2450mm step 100mm scan full }
+";
+    let (_, report) = run(text);
+    let advice = advices(&report)[0];
+    let shut = "the base cannot get in from a door with it there";
+    for point in &advice.points {
+        // The cart is 700 mm long along y, its cup in the middle; the
+        // door spans 1050-1950 mm. Clear of the door, the chair gets in;
+        // across its middle, it cannot (between, it depends on the
+        // chair's width).
+        let (near, far) = (point.at_mm - 350.0, point.at_mm + 350.0);
+        if far <= 1050.0 || near >= 1950.0 {
+            assert_eq!(point.reached, 1, "at {} mm", point.at_mm);
+        }
+        if near <= 1500.0 && 1500.0 <= far {
+            assert_eq!(point.reached, 0, "at {} mm", point.at_mm);
+        }
+    }
+    let ends: Vec<_> = (advice.ranges.iter())
+        .flat_map(|r| [&r.low_end, &r.high_end])
+        .flatten()
+        .collect();
+    assert!(!ends.is_empty());
+    for end in ends {
+        assert_eq!(end.because[0].verdict, shut, "{end:?}");
+    }
+}
