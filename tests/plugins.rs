@@ -91,6 +91,7 @@ fn every_plugin_builds_from_its_declared_defaults() {
             notes: Vec::new(),
             tasks: Vec::new(),
             expectations: Vec::new(),
+            advised_together: Vec::new(),
         };
         let scene = reach::plugin::FormatScene::empty();
         let text = p.render(&empty, &scene);

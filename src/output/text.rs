@@ -59,6 +59,12 @@ impl FormatPlugin for Text {
         for task in &report.tasks {
             task.details(&mut out);
         }
+        if !report.advised_together.is_empty() {
+            out.push('\n');
+            for together in &report.advised_together {
+                let _ = writeln!(out, "advised together: {}", together.words());
+            }
+        }
         expectations(report, &mut out);
         // Names are escaped where they come from (files, URDFs); this
         // keeps the terminal safe whatever a report carries.

@@ -11,6 +11,7 @@
 //! writes, tagged by kind.
 
 mod advice;
+mod advised_together;
 mod answer;
 mod entry_kind;
 mod expectation;
@@ -30,6 +31,7 @@ pub use advice::{
     AdviceFrame, AdvicePoint, AdviceReport, AdviceStandard, Because, PositionAnswer, RangeEnd,
     ServedRange,
 };
+pub use advised_together::{AdvisedTogether, Span};
 pub use answer::{Answer, Figure};
 pub use entry_kind::{Asks, EntryKind, Kind, Tolerance};
 pub use expectation::ExpectationReport;
@@ -68,6 +70,10 @@ pub struct Report {
     /// has none).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub expectations: Vec<ExpectationReport>,
+    /// Where an element is advised for two or more groups: the positions
+    /// that serve every one (left out when there is none).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub advised_together: Vec<AdvisedTogether>,
 }
 
 impl Report {
@@ -80,6 +86,7 @@ impl Report {
             notes,
             tasks,
             expectations,
+            advised_together,
         } = self;
         Report {
             schema: *schema,
@@ -93,31 +100,13 @@ impl Report {
                 })
                 .collect(),
             expectations: expectations.clone(),
+            advised_together: advised_together.clone(),
         }
     }
 
-    /// The advices, by target and axis, in the order each first comes,
-    /// each group named after its target (and its axis, where the target
-    /// is advised along another axis too: `kettle-x`).
+    /// The advices, by target and axis ([`advised_together::by_target`]).
     pub fn advices_by_target(&self) -> Vec<(String, Vec<&AdviceReport>)> {
-        let mut out: Vec<(String, Vec<&AdviceReport>)> = Vec::new();
-        for task in &self.tasks {
-            let TaskReport::Advice(a) = task else {
-                continue;
-            };
-            let same = |e: &[&AdviceReport]| e[0].name == a.name && e[0].along == a.along;
-            match out.iter_mut().find(|(_, e)| same(e)) {
-                Some((_, each)) => each.push(a),
-                None => out.push((a.name.clone(), vec![a])),
-            }
-        }
-        for k in 0..out.len() {
-            let twin = (0..out.len()).any(|j| j != k && out[j].1[0].name == out[k].1[0].name);
-            if twin {
-                out[k].0 = format!("{}-{}", out[k].1[0].name, out[k].1[0].along);
-            }
-        }
-        out
+        advised_together::by_target(&self.tasks)
     }
 
     /// Whether every expectation is met.

@@ -18,6 +18,7 @@ use crate::meter::{Meter, RunWork};
 use crate::plugin::{Fit, TaskInput};
 use crate::progress::Progress;
 use crate::report::{
+    AdvisedTogether,
     AdviceReport, NotEvaluatedReport, NotPlacedReport, PersonAnswer, PopulationReport, Report,
     TaskReport, SCHEMA_VERSION,
 };
@@ -245,6 +246,7 @@ impl Scenario {
             file: self.file.clone(),
             notes: self.notes(),
             expectations,
+            advised_together: AdvisedTogether::of(&tasks),
             tasks,
         }
     }
@@ -477,6 +479,7 @@ impl Scenario {
             file: self.file.clone(),
             notes: self.notes(),
             expectations: self.judge(&tasks),
+            advised_together: AdvisedTogether::of(&tasks),
             tasks,
         };
         let work = if checked { run.spent() - spent } else { 0 };
