@@ -104,11 +104,8 @@ fn an_expectation_on_advice_holds_only_where_every_position_serves() {
         .contains("scans 900-1700 mm only"));
 }
 
-#[test]
-fn a_cart_moved_in_front_of_the_door_shuts_the_chair_out_there_only() {
-    // The floor is another at each position where the element meets the
-    // chair's footprint: here where the cart stands before the door.
-    let text = "units mm deg
+/// A cart with a cup on it, moved along the wall with the kitchen's door.
+const CART: &str = "units mm deg
 use std::people
 room kitchen {
   size 3600 x 3000 x 2500
@@ -119,7 +116,12 @@ room kitchen {
 person ann { mannequin woman_5th_seated base manual_wheelchair }
 advise cup by ann { carries cart along y from 550mm to 2450mm step 100mm scan full }
 ";
-    let (_, report) = run(text);
+
+#[test]
+fn a_cart_moved_in_front_of_the_door_shuts_the_chair_out_there_only() {
+    // The floor is another at each position where the element meets the
+    // chair's footprint: here where the cart stands before the door.
+    let (_, report) = run(CART);
     let advice = advices(&report)[0];
     let shut = "the base cannot get in from a door with it there";
     for point in &advice.points {
@@ -143,4 +145,26 @@ advise cup by ann { carries cart along y from 550mm to 2450mm step 100mm scan fu
     for end in ends {
         assert_eq!(end.because[0].verdict, shut, "{end:?}");
     }
+}
+
+#[test]
+fn the_page_draws_the_element_where_it_serves_the_most() {
+    let (scenario, report) = run(CART);
+    let advice = advices(&report)[0];
+    let best = advice.best.as_ref().expect("ann reaches the cup somewhere");
+    let view = reach::output::view::view_data(&report, &scenario.format_scene());
+    let task = &view.tasks[0];
+    let advised = task
+        .advised
+        .as_ref()
+        .expect("the cup where it serves the most");
+    assert_eq!(advised.at, [3350.0, best.at_mm, 760.0]);
+    // The cart, moved as the cup is: its centre 350 mm along from its
+    // corner, the cup in its middle.
+    let [cart] = task.solids.as_slice() else {
+        panic!("one box drawn: {}", task.solids.len())
+    };
+    let json = serde_json::to_value(cart).unwrap();
+    assert_eq!(json["centre"][1].as_f64(), Some(best.at_mm));
+    assert_eq!(json["half"][1].as_f64(), Some(350.0));
 }

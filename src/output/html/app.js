@@ -247,6 +247,13 @@ function buildTask(task, data) {
     group.add(line([s.eyes, s.target], s.ok ? COLOURS.sight : COLOURS.not, false));
     group.add(sphere(s.eyes, 12, COLOURS.sight));
   }
+  // An advice: its target where it serves the most (its boxes are among
+  // the solids, see-through green).
+  if (task.advised) {
+    const point = marker(task.advised.at, 34, COLOURS.ok);
+    point.userData.name = task.advised.name;
+    group.add(point);
+  }
   for (const j of task.strained) {
     group.add(marker(j.at, 30, COLOURS.strained));
   }
@@ -333,6 +340,9 @@ function legend(data) {
   ];
   if (data.rooms.some((r) => (r.doors || []).length)) {
     rows.push(["#6b4fbb", "a door; dashed: where the base can get to from one"]);
+  }
+  if (data.tasks.some((t) => t.advised)) {
+    rows.push(["#2e9e4f", "an advice: the element where it serves the most (see-through)"]);
   }
   if (data.tasks.some((t) => (t.marks || []).length)) {
     rows.push(["#2e9e4f", "a standard's rule holds (floor space, element)"]);
@@ -543,7 +553,9 @@ export function start(settings, data) {
     const subject = task.label.split(" ")[1];
     const target = room.targets.get(subject);
     // A task not evaluated leaves its target as it is: nothing was found.
-    if (target && !task.not_evaluated) target.material.color.setHex(task.ok ? COLOURS.ok : COLOURS.not);
+    // An advice leaves it as declared: its answer is the green element
+    // where it serves the most, and the plot.
+    if (target && !task.not_evaluated && !task.plot) target.material.color.setHex(task.ok ? COLOURS.ok : COLOURS.not);
     const blocker = task.blocked_by && room.obstacles.get(task.blocked_by);
     if (blocker) blocker.material.emissive.setHex(COLOURS.blocked);
     buttons.forEach((b, i) => b.classList.toggle("selected", i === k));

@@ -19,7 +19,8 @@ use crate::geometry::{Cuboid, Shape};
 use crate::kinematics::{Body, JointKind};
 use crate::plugin::{FormatScene, TaskPlace};
 use crate::report::{
-    fixed, FloorShape, MapReport, PopulationReport, Report, StandardReport, TaskReport,
+    fixed, AdviceReport, FloorShape, MapReport, PopulationReport, Report, StandardReport,
+    TaskReport,
 };
 use crate::scene::{BasePose, Door, Room, Wall};
 use simplify::simplified;
@@ -134,6 +135,10 @@ pub struct TaskView {
     /// An advice's plot (every group's share against the position), SVG.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub plot: Option<String>,
+    /// An advice's target where it serves the most (its boxes are drawn
+    /// there among `solids`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub advised: Option<Labelled>,
     /// What a standard's rules measured: areas and circles on the floor,
     /// elements, each green where its rule holds and red where not.
     pub marks: Vec<MarkView>,
@@ -349,6 +354,7 @@ fn task_view(task: &TaskReport, place: &TaskPlace, scene: &FormatScene<'_>) -> T
         blocked_by: None,
         cells: None,
         plot: None,
+        advised: None,
         marks: Vec::new(),
         routes: Vec::new(),
     };
@@ -393,8 +399,18 @@ fn task_view(task: &TaskReport, place: &TaskPlace, scene: &FormatScene<'_>) -> T
         // each point's.
         TaskReport::Population(p) => view.cells = share_cells(p),
         TaskReport::Standard(s) => view.marks = standard_marks(s),
-        // The target where it serves the most.
-        TaskReport::Advice(a) => view.target = a.best_target_mm(),
+        // The element where it serves the most.
+        TaskReport::Advice(a) => {
+            let room = &scene.rooms[place.room];
+            view.target = a.best_target_mm();
+            view.solids = advised_boxes(a, room);
+            view.advised = (a.best_target_mm())
+                .zip(a.best.as_ref())
+                .map(|(at, best)| Labelled {
+                    name: format!("{} at {} mm: the advised position", a.name, best.at_mm),
+                    at,
+                });
+        }
     }
     if let Some(&(base, _)) = postures.first() {
         let person = place.person;
@@ -469,6 +485,29 @@ fn strained(body: &Body, q: &[f64], pose: BasePose, moved: &[&str]) -> Vec<Label
     }
     marks
 }
+
+/// The boxes advice `a` moves with its target, where they stand with the
+/// target at its best position: see-through green over the room's own.
+fn advised_boxes(a: &AdviceReport, room: &Room) -> Vec<SolidView> {
+    let Some(best) = &a.best else {
+        return Vec::new();
+    };
+    let Some(axis) = ["x", "y", "z"].iter().position(|&n| n == a.along) else {
+        return Vec::new();
+    };
+    (room.boxes.iter())
+        .filter(|b| a.carries.contains(&b.name))
+        .map(|b| {
+            let mut cuboid = b.cuboid();
+            cuboid.centre[axis] += best.at_mm - a.declared_mm;
+            let name = format!("{} with the target at {} mm", b.name, best.at_mm);
+            solid_view(Shape::Cuboid(cuboid), name, ADVISED_COLOUR.into(), 0.45)
+        })
+        .collect()
+}
+
+/// The element at its advised position (the page's "reached" green).
+const ADVISED_COLOUR: &str = "#2e9e4f";
 
 fn solid_view(shape: Shape, name: String, color: String, opacity: f64) -> SolidView {
     match shape {
