@@ -48,6 +48,11 @@ pub struct AdviceReport {
     /// stretch shorter than the coarse step between two solved positions
     /// can be missed).
     pub scan: &'static str,
+    /// Of a bracketed scan: how many of the people answered it with more
+    /// than one stretch of positions reached (a band with a hole, where the
+    /// coarse step may pass others by), and were scanned again in full.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub rescanned: usize,
     /// The positions, in order: the target's coordinate on the axis.
     pub points: Vec<AdvicePoint>,
     /// The runs of positions that serve at least `serves`, in order.
@@ -257,6 +262,9 @@ pub struct AdviceFrame {
     pub step_mm: f64,
     pub serves: f64,
     pub scan: &'static str,
+    /// How many people a bracketed scan solved at every position (their
+    /// band had a hole).
+    pub rescanned: usize,
     pub positions_mm: Vec<f64>,
 }
 
@@ -322,7 +330,16 @@ impl AdviceReport {
                 (name, each)
             })
             .collect();
-        Some((first.frame(), members))
+        let rescanned = (answers.iter())
+            .filter(|a| matches!(a, TaskReport::Advice(x) if x.rescanned > 0))
+            .count();
+        Some((
+            AdviceFrame {
+                rescanned,
+                ..first.frame()
+            },
+            members,
+        ))
     }
 
     /// Who drops out at each end of each served range: (index into the
@@ -368,6 +385,7 @@ impl AdviceReport {
             step_mm: self.step_mm,
             serves: self.asked,
             scan: self.scan,
+            rescanned: self.rescanned,
             positions_mm: self.points.iter().map(|p| p.at_mm).collect(),
         }
     }
@@ -428,6 +446,7 @@ impl AdviceReport {
             step_mm: mm(frame.step_mm),
             serves: fixed(serves, 4),
             scan: frame.scan,
+            rescanned: frame.rescanned,
             asked: frame.serves,
             standards: Vec::new(),
             ok: !ranges.is_empty(),
@@ -506,6 +525,10 @@ impl AdviceReport {
             .collect();
         each.join(", ")
     }
+}
+
+fn is_zero(n: &usize) -> bool {
+    *n == 0
 }
 
 /// Whether `reached` of `people` is at least the share `serves` (none of
@@ -648,6 +671,16 @@ impl ReportKind for AdviceReport {
             }
         );
         let _ = writeln!(out, "  {}", self.series());
+        if self.rescanned > 0 {
+            let whom = match self.population {
+                true => format!("{} of {} people", self.rescanned, self.people),
+                false => self.who.clone(),
+            };
+            let _ = writeln!(
+                out,
+                "  {whom}: more than one stretch reached, so every position solved (a hole the coarse step passes by is found)"
+            );
+        }
         for range in &self.ranges {
             let _ = writeln!(
                 out,
@@ -853,6 +886,7 @@ mod tests {
             step_mm: 100.0,
             serves,
             scan: "full",
+            rescanned: 0,
             positions_mm: positions.to_vec(),
         }
     }
@@ -907,5 +941,29 @@ mod tests {
         assert!(report.points[0].ci95.is_none());
         let none = AdviceReport::person(&frame(&at, 0.9), "ann", &answers("000"));
         assert!(!none.ok && none.best.is_none());
+    }
+
+    #[test]
+    fn a_person_scanned_again_in_full_is_said_so() {
+        let at = [600.0, 700.0, 800.0];
+        let holed = AdviceFrame {
+            scan: "bracketed",
+            rescanned: 1,
+            ..frame(&at, 0.9)
+        };
+        let mut out = String::new();
+        AdviceReport::person(&holed, "ann", &answers("101")).details(&mut out);
+        assert!(
+            out.contains("ann: more than one stretch reached, so every position solved"),
+            "{out}"
+        );
+        let json =
+            serde_json::to_value(AdviceReport::person(&holed, "ann", &answers("101"))).unwrap();
+        assert_eq!(json["rescanned"], 1);
+        let one = AdviceReport::person(&frame(&at, 0.9), "ann", &answers("110"));
+        assert!(serde_json::to_value(one)
+            .unwrap()
+            .get("rescanned")
+            .is_none());
     }
 }

@@ -108,6 +108,7 @@ mod tests {
             step_mm: 100.0,
             serves,
             scan: "full",
+            rescanned: 0,
             positions_mm: vec![600.0, 700.0, 800.0, 900.0, 1000.0, 1100.0],
         }
     }

@@ -284,7 +284,7 @@ impl Task for AdviseTask {
         // A population's member is asked why afterwards, and only where
         // their population's report shows it (`Task::explain`).
         let explain = !input.verdict_only;
-        let answers = scan(self.positions_mm.len(), self.full, self.coarse, explain, at);
+        let (answers, holed) = scan(self.positions_mm.len(), self.full, self.coarse, explain, at);
         let frame = AdviceFrame {
             name: target.name.clone(),
             base: input.person.base.name.clone(),
@@ -295,6 +295,7 @@ impl Task for AdviseTask {
             step_mm: self.step_mm,
             serves: self.serves,
             scan: if self.full { "full" } else { "bracketed" },
+            rescanned: usize::from(holed),
             positions_mm: self.positions_mm.clone(),
         };
         TaskReport::Advice(Box::new(AdviceReport::person(
@@ -361,23 +362,30 @@ impl AdviseTask {
 
 /// Each of `n` positions answered by `at(k, explain)`: every one (`full`),
 /// or every `coarse`-th and the last, then each change between two of
-/// them bisected; then, where `explain`, each position not reached next
-/// to one reached answered again with why.
+/// them bisected, and where that finds more than one stretch reached (a
+/// band with a hole: where there is one, the coarse step may have passed
+/// others by), every position; then, where `explain`, each position not
+/// reached next to one reached answered again with why. With whether a
+/// bracketed scan fell back to solving every position.
 fn scan(
     n: usize,
     full: bool,
     coarse: usize,
     explain: bool,
     at: impl Fn(usize, bool) -> PositionAnswer,
-) -> Vec<PositionAnswer> {
+) -> (Vec<PositionAnswer>, bool) {
     let mut answers: Vec<Option<PositionAnswer>> = vec![None; n];
     let stride = if full { 1 } else { coarse.max(1) };
     let mut solved: Vec<usize> = (0..n).step_by(stride).collect();
     if solved.last() != Some(&(n - 1)) {
         solved.push(n - 1);
     }
+    // Which positions were solved (the others are filled in as their
+    // neighbours answer).
+    let mut asked = vec![false; n];
     for &k in &solved {
         answers[k] = Some(at(k, false));
+        asked[k] = true;
     }
     let reached = |a: &[Option<PositionAnswer>], k: usize| a[k].as_ref().is_some_and(|x| x.reached);
     for pair in solved.windows(2) {
@@ -389,6 +397,7 @@ fn scan(
                 let answer = at(mid, false);
                 let same = answer.reached == low;
                 answers[mid] = Some(answer);
+                asked[mid] = true;
                 if same {
                     lo = mid;
                 } else {
@@ -408,6 +417,13 @@ fn scan(
             }
         }
     }
+    let stretches = (0..n)
+        .filter(|&k| reached(&answers, k) && (k == 0 || !reached(&answers, k - 1)))
+        .count();
+    let holed = !full && stretches > 1;
+    for k in (0..n).filter(|&k| holed && !asked[k]) {
+        answers[k] = Some(at(k, false));
+    }
     let mut answers: Vec<PositionAnswer> = answers
         .into_iter()
         .map(|a| a.expect("every position answered"))
@@ -420,7 +436,7 @@ fn scan(
             answers[k] = at(k, true);
         }
     }
-    answers
+    (answers, holed)
 }
 
 #[cfg(test)]
@@ -430,9 +446,15 @@ mod tests {
 
     /// `bits`' answers, counting the solves.
     fn scanned(bits: &str, full: bool, coarse: usize) -> (String, usize) {
+        let (got, solves, _) = scanned_holed(bits, full, coarse);
+        (got, solves)
+    }
+
+    /// `scanned`, and whether the scan fell back to every position.
+    fn scanned_holed(bits: &str, full: bool, coarse: usize) -> (String, usize, bool) {
         let solves = Cell::new(0);
         let b: Vec<bool> = bits.chars().map(|c| c == '1').collect();
-        let answers = scan(b.len(), full, coarse, true, |k, _| {
+        let (answers, holed) = scan(b.len(), full, coarse, true, |k, _| {
             solves.set(solves.get() + 1);
             PositionAnswer {
                 reached: b[k],
@@ -443,7 +465,7 @@ mod tests {
             .iter()
             .map(|a| if a.reached { '1' } else { '0' })
             .collect();
-        (got, solves.get())
+        (got, solves.get(), holed)
     }
 
     #[test]
@@ -473,5 +495,19 @@ mod tests {
         ] {
             assert_eq!(scanned(band, false, 4).0, band);
         }
+    }
+
+    #[test]
+    fn a_hole_the_coarse_step_sees_makes_the_scan_solve_every_position() {
+        // The hole at 8-9 is seen between coarse positions 4 and 12; the
+        // one at 3 lies between two that answer alike, and only the full
+        // scan it falls back to finds it: 13 solves, and 3 for why at the
+        // positions not reached next to one reached.
+        let holed = "1110111100111";
+        assert_eq!(scanned_holed(holed, false, 4), (holed.to_string(), 13 + 3, true));
+        // One stretch: no fallback.
+        let (band, _, fell_back) = scanned_holed("0001111000000", false, 4);
+        assert_eq!((band.as_str(), fell_back), ("0001111000000", false));
+        assert!(!scanned_holed(holed, true, 4).2, "a full scan does not fall back");
     }
 }
