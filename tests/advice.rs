@@ -168,3 +168,21 @@ fn the_page_draws_the_element_where_it_serves_the_most() {
     assert_eq!(json["centre"][1].as_f64(), Some(best.at_mm));
     assert_eq!(json["half"][1].as_f64(), Some(350.0));
 }
+
+#[test]
+fn an_element_declared_before_the_door_is_advised_as_one_declared_clear_of_it() {
+    // Declared where it shuts the chair out, the cart is still moved to
+    // every position, and each answers as before.
+    let (_, clear) = run(CART);
+    let before_the_door = CART
+        .replace("cart at (3150, 200, 0)", "cart at (3150, 1150, 0)")
+        .replace("cup at (3350, 550, 760)", "cup at (3350, 1500, 760)");
+    let (_, shut) = run(&before_the_door);
+    let reached = |r: &Report| -> Vec<(f64, usize)> {
+        (advices(r)[0].points.iter())
+            .map(|p| (p.at_mm, p.reached))
+            .collect()
+    };
+    assert_eq!(reached(&shut), reached(&clear));
+    assert_eq!(advices(&shut)[0].declared_mm, 1500.0);
+}

@@ -144,12 +144,9 @@ pub struct Mobile {
 /// How many chains' maps a base remembers it was prepared for.
 const CAPABILITIES_REMEMBERED: usize = 4;
 
-/// Something worked out once per room and shared by every task there,
-/// whichever thread asks first. A room is known by its floor's key
-/// ([`Mobile::floor_key`]), not its name: an advice moves an element
-/// about a room that keeps its name, and its floor is another at each
-/// position where the element meets the base's footprint.
-struct ByRoom<T>(Mutex<HashMap<u64, Arc<OnceLock<T>>>>);
+/// Something worked out once per room (by its name) and shared by every
+/// task there, whichever thread asks first.
+struct ByRoom<T>(Mutex<HashMap<String, Arc<OnceLock<T>>>>);
 
 impl<T> Default for ByRoom<T> {
     fn default() -> Self {
@@ -158,11 +155,10 @@ impl<T> Default for ByRoom<T> {
 }
 
 impl<T> ByRoom<T> {
-    /// The cell of the room whose floor's key is `key`, to be filled by
-    /// whoever asks first.
-    fn cell(&self, key: u64) -> Arc<OnceLock<T>> {
+    /// `room`'s cell, to be filled by whoever asks first.
+    fn cell(&self, room: &Room) -> Arc<OnceLock<T>> {
         let mut by_room = self.0.lock().unwrap_or_else(|e| e.into_inner());
-        Arc::clone(by_room.entry(key).or_default())
+        Arc::clone(by_room.entry(room.name.clone()).or_default())
     }
 }
 
@@ -234,8 +230,7 @@ impl Mobile {
         wider: Option<&Room>,
         allowance: &dyn Allowance,
     ) -> Arc<OnceLock<Floor>> {
-        let room_key = self.floor_key(room);
-        let cell = self.floors.cell(room_key);
+        let cell = self.floors.cell(room);
         // Not `get_or_init`: the routes work out a heading's tiles in
         // parallel, and a thread waiting for them may take up another task
         // of this person, which would ask for this cell from inside its own
@@ -243,12 +238,11 @@ impl Mobile {
         // out; the first kept stays (it measured 0.3 s slower on
         // kitchen_wheelchair, too).
         if cell.get().is_none() {
-            let mut key = room_key;
+            let mut key = self.floor_key(room);
             let hint = wider.map(|w| {
-                let wider_key = self.floor_key(w);
                 // Its work depends on the hint: kept apart.
-                key = hash_pair(key, wider_key);
-                self.floors.cell(wider_key)
+                key = hash_pair(key, self.floor_key(w));
+                self.floors.cell(w)
             });
             let hint = hint.as_ref().and_then(|c| c.get());
             let floor = FLOORS.get_or_try(&allowance.memo(), key, || {
@@ -425,7 +419,7 @@ impl Mobile {
                 footprint_mm: self.footprint.size_mm(),
             });
         }
-        let cell = self.misfits.cell(self.floor_key(room));
+        let cell = self.misfits.cell(room);
         if cell.get().is_none() {
             let flight = allowance.flight(hash_pair(self.floor_key(room), MISFIT));
             let within = |units: u64| flight.within(units);
@@ -497,7 +491,7 @@ impl Mobile {
     /// What finding how much smaller the base would fit in `room` cost
     /// (0 where it fits, or it was not looked for).
     fn misfit_work(&self, room: &Room) -> u64 {
-        self.misfits.cell(self.floor_key(room)).get().map_or(0, |&(_, work)| work)
+        self.misfits.cell(room).get().map_or(0, |&(_, work)| work)
     }
 }
 
@@ -534,8 +528,12 @@ impl Base for Mobile {
         self.fit_within(room, Some(beside), allowance)
     }
 
+    fn floor_key(&self, room: &Room) -> Option<u64> {
+        Some(Mobile::floor_key(self, room))
+    }
+
     fn floor_work(&self, room: &Room) -> u64 {
-        let cell = self.floors.cell(self.floor_key(room));
+        let cell = self.floors.cell(room);
         let floor = cell.get().map_or(0, |floor| floor.work);
         floor.saturating_add(self.misfit_work(room))
     }

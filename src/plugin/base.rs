@@ -276,6 +276,12 @@ pub trait Base: Send + Sync {
     fn floor_work_beside(&self, room: &Room, _beside: &Room) -> u64 {
         self.floor_work(room)
     }
+    /// What the base's floor in `room` depends on, hashed (none: it has
+    /// no floor): two rooms with the same key have the same floor, and
+    /// its work is done once ([`Base::floor_work`]).
+    fn floor_key(&self, _room: &Room) -> Option<u64> {
+        None
+    }
     /// Whether the scenario puts the base outside the room, which the
     /// checker refuses: asked before the run, so cheaply (no floor is
     /// worked out).

@@ -179,6 +179,12 @@ pub trait Task: Send + Sync {
     fn records_touches(&self) -> bool {
         false
     }
+    /// Whether the task moves things about its room and checks where the
+    /// base fits at each arrangement itself (an advice): then where the
+    /// base fits nowhere in the room as declared, it still runs.
+    fn places_itself(&self) -> bool {
+        false
+    }
     fn run(&self, input: &TaskInput<'_>) -> TaskReport;
     /// Why the person of `input` does not reach point `at` of the task
     /// (an advice's position), in the words of a reach's verdict: asked

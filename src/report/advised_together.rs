@@ -31,10 +31,20 @@ pub struct Span {
 
 impl AdvisedTogether {
     /// One entry for each element advised for two or more groups, in the
-    /// order each element first comes in `tasks`.
+    /// order each element first comes in `tasks`; none for a target an
+    /// advice about which has no answer (a run stopped before it): which
+    /// positions serve every group cannot be told.
     pub fn of(tasks: &[TaskReport]) -> Vec<AdvisedTogether> {
+        let unanswered = |name: &str| {
+            (tasks.iter()).any(|t| {
+                let answer = t.answer();
+                !matches!(t, TaskReport::Advice(_))
+                    && answer.task == "advise"
+                    && answer.subject == name
+            })
+        };
         (by_target(tasks).into_iter())
-            .filter(|(_, advices)| advices.len() > 1)
+            .filter(|(_, advices)| advices.len() > 1 && !unanswered(&advices[0].name))
             .map(|(name, advices)| AdvisedTogether {
                 name,
                 along: advices[0].along,
@@ -46,7 +56,7 @@ impl AdvisedTogether {
             .collect()
     }
 
-    /// `microwave_handle, for every group (manual_users, ann):
+    /// `microwave_handle's z, serving every group (manual_users, ann):
     /// 700-1450 mm`.
     pub fn words(&self) -> String {
         let ranges: Vec<String> = (self.ranges.iter())

@@ -18,9 +18,8 @@ use crate::meter::{Meter, RunWork};
 use crate::plugin::{Fit, TaskInput};
 use crate::progress::Progress;
 use crate::report::{
-    AdvisedTogether,
-    AdviceReport, NotEvaluatedReport, NotPlacedReport, PersonAnswer, PopulationReport, Report,
-    TaskReport, SCHEMA_VERSION,
+    AdviceReport, AdvisedTogether, NotEvaluatedReport, NotPlacedReport, PersonAnswer,
+    PopulationReport, Report, TaskReport, SCHEMA_VERSION,
 };
 
 /// One task's answer, what its questions touched of its room (where it
@@ -693,6 +692,8 @@ impl Scenario {
             meter.charge(input.base.floor_work(input.room));
         }
         let report = match fit {
+            // It checks each arrangement of its room itself.
+            Fit::Nowhere(_) | Fit::Shut(_) if task.task.places_itself() => task.task.run(&input),
             Fit::Nowhere(misfit) => TaskReport::NotPlaced(NotPlacedReport::new(
                 label, subject, person, base, room, &misfit,
             )),

@@ -55,9 +55,15 @@ impl Room {
 
     /// This room with the boxes and targets named `names` moved by
     /// `delta_mm` along axis `axis` (0, 1, 2: x, y, z): an element moved
-    /// as one (`advise`).
+    /// as one (`advise`). Its name is another for each move (a base keeps
+    /// its floor by the room's name, and the element may change the
+    /// floor); it is never shown.
     pub fn moved(&self, names: &[&str], axis: usize, delta_mm: f64) -> Room {
         let mut moved = self.clone();
+        moved.name = format!(
+            "{}\u{0}{names:?} moved {delta_mm} mm along {axis}",
+            self.name
+        );
         for b in moved
             .boxes
             .iter_mut()

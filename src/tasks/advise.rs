@@ -16,6 +16,8 @@
 //! position next to one they reach, why is found as a reach finds it:
 //! those are the words of the advice's range ends.
 
+use std::cell::RefCell;
+
 use super::reach::ReachTask;
 use crate::error::ErrorKind;
 use crate::kinematics::{Body, Chain};
@@ -256,6 +258,12 @@ impl Task for AdviseTask {
         dependence
     }
 
+    /// Each position's floor is another where the element meets the
+    /// base: the fit is checked there ([`AdviseTask::answer_at`]).
+    fn places_itself(&self) -> bool {
+        true
+    }
+
     fn explain(&self, input: &TaskInput<'_>, at: usize) -> Option<String> {
         let Subject::Target(target) = input.subject else {
             return None;
@@ -266,7 +274,8 @@ impl Task for AdviseTask {
             .iter()
             .position(|t| t.name == target.name)?;
         let room = self.moved_room(input.room, &target.name, at)?;
-        self.answer_at(input, &room, index, true).verdict
+        let floors = Floors::of(input);
+        self.answer_at(input, &room, index, true, &floors).verdict
     }
 
     fn run(&self, input: &TaskInput<'_>) -> TaskReport {
@@ -276,10 +285,11 @@ impl Task for AdviseTask {
         let index = (input.room.targets.iter())
             .position(|t| t.name == target.name)
             .expect("the subject is a target of its room");
+        let floors = Floors::of(input);
         let at = |k: usize, explain: bool| {
             let room =
                 (self.moved_room(input.room, &target.name, k)).expect("a position of the scan");
-            self.answer_at(input, &room, index, explain)
+            self.answer_at(input, &room, index, explain, &floors)
         };
         // A population's member is asked why afterwards, and only where
         // their population's report shows it (`Task::explain`).
@@ -325,19 +335,31 @@ impl AdviseTask {
     }
 
     /// Whether the person of `input` reaches target `index` of `room` (the
-    /// element at one position), and where not and `explain`, why.
+    /// element at one position), and where not and `explain`, why; the
+    /// base's floor there charged to the run where `floors` has not met
+    /// it yet. Once the run is past its work, nothing is looked for (the
+    /// run stops, and this answer is not kept).
     fn answer_at(
         &self,
         input: &TaskInput<'_>,
         room: &Room,
         index: usize,
         explain: bool,
+        floors: &Floors,
     ) -> PositionAnswer {
         let not = |verdict: &str| PositionAnswer {
             reached: false,
             verdict: Some(verdict.to_string()),
         };
-        match input.base.fit(room, input.allowance) {
+        if input.allowance.exhausted() {
+            return PositionAnswer {
+                reached: false,
+                verdict: None,
+            };
+        }
+        let fit = input.base.fit(room, input.allowance);
+        floors.charge(input, room);
+        match fit {
             Fit::Nowhere(_) => return not("the base fits nowhere in the room with it there"),
             Fit::Shut(_) => return not("the base cannot get in from a door with it there"),
             Fit::Fits | Fit::Outside => {}
@@ -357,6 +379,34 @@ impl AdviseTask {
             reached: report.ok,
             verdict: (!report.ok && explain).then(|| report.verdict()),
         }
+    }
+}
+
+/// The floors an advice's positions have met, each charged to the run
+/// once (the declared room's is the task's own, which the run charges):
+/// where the element meets the base's footprint, its floor is another,
+/// worked out afresh.
+struct Floors(RefCell<Vec<u64>>);
+
+impl Floors {
+    /// None met but the declared room's, of `input`.
+    fn of(input: &TaskInput<'_>) -> Self {
+        Floors(RefCell::new(
+            input.base.floor_key(input.room).into_iter().collect(),
+        ))
+    }
+
+    /// `room`'s floor (worked out by the fit) charged, where it is one
+    /// not met before.
+    fn charge(&self, input: &TaskInput<'_>, room: &Room) {
+        let Some(key) = input.base.floor_key(room) else {
+            return;
+        };
+        if self.0.borrow().contains(&key) {
+            return;
+        }
+        self.0.borrow_mut().push(key);
+        input.allowance.spend(input.base.floor_work(room));
     }
 }
 
@@ -504,10 +554,16 @@ mod tests {
         // scan it falls back to finds it: 13 solves, and 3 for why at the
         // positions not reached next to one reached.
         let holed = "1110111100111";
-        assert_eq!(scanned_holed(holed, false, 4), (holed.to_string(), 13 + 3, true));
+        assert_eq!(
+            scanned_holed(holed, false, 4),
+            (holed.to_string(), 13 + 3, true)
+        );
         // One stretch: no fallback.
         let (band, _, fell_back) = scanned_holed("0001111000000", false, 4);
         assert_eq!((band.as_str(), fell_back), ("0001111000000", false));
-        assert!(!scanned_holed(holed, true, 4).2, "a full scan does not fall back");
+        assert!(
+            !scanned_holed(holed, true, 4).2,
+            "a full scan does not fall back"
+        );
     }
 }
