@@ -104,7 +104,9 @@ impl Report {
         }
     }
 
-    /// The advices, by target and axis ([`advised_together::by_target`]).
+    /// The advices, by target and axis, each group named after its target
+    /// (and its axis, where the target is advised along another axis too:
+    /// `kettle-x`).
     pub fn advices_by_target(&self) -> Vec<(String, Vec<&AdviceReport>)> {
         advised_together::by_target(&self.tasks)
     }
