@@ -872,10 +872,12 @@ fn num(v: &Value) -> f64 {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
-    fn frame(positions: &[f64], serves: f64) -> AdviceFrame {
+    /// A microwave's frame at `positions`, serving `serves` (the other
+    /// report tests' too).
+    pub(in crate::report) fn frame(positions: &[f64], serves: f64) -> AdviceFrame {
         AdviceFrame {
             name: "microwave".into(),
             base: "wheelchair".into(),

@@ -108,18 +108,11 @@ mod tests {
     use crate::report::{AdviceFrame, PositionAnswer};
 
     fn frame(name: &str, along: &'static str, serves: f64) -> AdviceFrame {
+        let positions = [600.0, 700.0, 800.0, 900.0, 1000.0, 1100.0];
         AdviceFrame {
             name: name.into(),
-            base: "wheelchair".into(),
-            carries: Vec::new(),
             along,
-            target_mm: [300.0, 500.0, 900.0],
-            declared_mm: 900.0,
-            step_mm: 100.0,
-            serves,
-            scan: "full",
-            rescanned: 0,
-            positions_mm: vec![600.0, 700.0, 800.0, 900.0, 1000.0, 1100.0],
+            ..crate::report::advice::tests::frame(&positions, serves)
         }
     }
 
