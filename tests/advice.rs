@@ -186,3 +186,121 @@ fn an_element_declared_before_the_door_is_advised_as_one_declared_clear_of_it() 
     assert_eq!(reached(&shut), reached(&clear));
     assert_eq!(advices(&shut)[0].declared_mm, 1500.0);
 }
+
+/// `CART`'s cup advised over a grid: along the wall with the door, and
+/// at three distances from it.
+fn cart_grid(scan: &str) -> String {
+    CART.replace(
+        "along y from 550mm to 2450mm step 100mm scan full",
+        &format!(
+            "along y from 550mm to 2350mm step 300mm across x across_from 2350mm across_to 3350mm across_step 500mm scan {scan}"
+        ),
+    )
+}
+
+#[test]
+fn each_line_of_a_grid_answers_as_a_line_with_the_element_declared_there() {
+    let (_, grid) = run(&cart_grid("bracketed"));
+    let grid = advices(&grid)[0];
+    assert_eq!(grid.rows.len(), 3);
+    for row in &grid.rows {
+        let across = row.across.as_ref().expect("a line of the grid");
+        let dx = across.at_mm - 3350.0;
+        let line = CART
+            .replace(
+                "cart at (3150, 200, 0)",
+                &format!("cart at ({}, 200, 0)", 3150.0 + dx),
+            )
+            .replace(
+                "cup at (3350, 550, 760)",
+                &format!("cup at ({}, 550, 760)", across.at_mm),
+            )
+            .replace("step 100mm scan full", "step 300mm")
+            .replace("2450mm", "2350mm");
+        let (_, alone) = run(&line);
+        let alone = advices(&alone)[0];
+        let answers = |a: &AdviceReport| -> Vec<(f64, usize, Option<String>)> {
+            (a.points.iter())
+                .map(|p| (p.at_mm, p.reached, p.verdict.clone()))
+                .collect()
+        };
+        assert_eq!(answers(row), answers(alone), "at x {} mm", across.at_mm);
+        assert_eq!(row.ranges, alone.ranges, "at x {} mm", across.at_mm);
+    }
+    // Away from the wall with the door, the cart no longer shuts the
+    // chair out: somewhere the lines differ.
+    let reached =
+        |k: usize| -> Vec<usize> { grid.rows[k].points.iter().map(|p| p.reached).collect() };
+    assert!(
+        reached(0) != reached(2),
+        "{:?} {:?}",
+        reached(0),
+        reached(2)
+    );
+    // The grid is told by its line that serves the most.
+    let best = grid.best.as_ref().expect("reached somewhere");
+    let most = |r: &AdviceReport| r.points.iter().filter(|p| p.reached > 0).count();
+    assert!(grid.rows.iter().all(|r| most(r) <= most(grid)));
+    assert!(grid.best_target_mm().is_some_and(|at| at[1] == best.at_mm));
+}
+
+#[test]
+fn a_population_s_grid_asks_why_at_each_line_s_own_positions() {
+    let people = "population users = manual_wheelchair_users { size 4 seed 5 }";
+    let grid = "along z from 700mm to 1700mm step 100mm across y across_from 2450mm across_to 2950mm across_step 250mm";
+    let text = kitchen(people, "users", grid)
+        + "expect advise microwave_handle serves 100 % between 1000mm and 1100mm\n"
+        + "expect advise microwave_handle serves 100 % between 700mm and 1700mm\n";
+    let (_, report) = run(&text);
+    let advice = advices(&report)[0];
+    assert_eq!(advice.rows.len(), 3);
+    // The last line is the element as declared (y 2950 mm): the same as
+    // the advice along one line.
+    let (_, line) = run(&kitchen(
+        people,
+        "users",
+        "along z from 700mm to 1700mm step 100mm",
+    ));
+    let line = advices(&line)[0];
+    let row = &advice.rows[2];
+    assert_eq!(row.points, line.points);
+    assert_eq!(row.ranges, line.ranges);
+    assert!(
+        line.ranges
+            .iter()
+            .any(|r| r.low_end.is_some() || r.high_end.is_some()),
+        "someone drops out within the scan: the test is of a real end"
+    );
+    let met: Vec<bool> = report.expectations.iter().map(|e| e.met).collect();
+    assert_eq!(met, [true, false], "{:?}", report.expectations);
+    assert!(
+        report.expectations[1]
+            .because
+            .starts_with("no line across serves it"),
+        "{:?}",
+        report.expectations[1]
+    );
+}
+
+#[test]
+fn a_grid_has_a_picture_and_a_table_of_its_own() {
+    let (scenario, report) = run(&cart_grid("bracketed"));
+    let grid = advices(&report)[0];
+    let registry = reach::plugin::Registry::builtin();
+    let format = registry.format("advice").expect("the advice format");
+    let files = format.files(&report, &scenario.format_scene());
+    let names: Vec<&str> = files.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(names, ["advice-cup-ann.svg", "advice-cup-ann.csv"]);
+    let csv = String::from_utf8(files[1].1.clone()).unwrap();
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines[0], "x_mm,y_mm,reached,share");
+    // A line per position: 3 across, 7 along.
+    assert_eq!(lines.len(), 1 + 3 * 7);
+    let reached = (grid.rows.iter().flat_map(|r| &r.points)).filter(|p| p.reached > 0);
+    let listed = lines[1..].iter().filter(|l| l.ends_with(",1,1"));
+    assert_eq!(reached.count(), listed.count());
+    let svg = String::from_utf8(files[0].1.clone()).unwrap();
+    // A cell per position, each saying who reaches it there.
+    assert_eq!(svg.matches("<title>y ").count(), 3 * 7, "{svg}");
+    assert!(svg.contains("serves the most: y "), "{svg}");
+}

@@ -1,10 +1,12 @@
-//! The format `advice`: for each target an `advise` task moves, the plot
-//! of who reaches it at each position (`advice_plot.rs`) as SVG, and the
-//! shares as CSV, one column per group, written by `--out`.
+//! The format `advice`: for each target an `advise` task moves along a
+//! line, the plot of who reaches it at each position (`advice_plot.rs`) as
+//! SVG, and the shares as CSV, one column per group; for each advice over
+//! a grid, its picture (`advice_grid_plot.rs`) and its shares as CSV, one
+//! line per position. Written by `--out`.
 
 use std::fmt::Write;
 
-use super::advice_plot;
+use super::{advice_grid_plot, advice_plot};
 use crate::plugin::{FormatPlugin, FormatScene, ParamSpec, Plugin};
 use crate::report::{AdviceReport, Report};
 
@@ -35,6 +37,14 @@ impl FormatPlugin for AdviceFiles {
                 advice_plot::svg(&advices).into_bytes(),
             ));
             files.push((format!("{stem}.csv"), csv(&advices).into_bytes()));
+        }
+        for grid in report.advice_grids() {
+            let stem = format!("advice-{}-{}", clean(&grid.name), clean(&grid.who));
+            files.push((
+                format!("{stem}.svg"),
+                advice_grid_plot::svg(grid).into_bytes(),
+            ));
+            files.push((format!("{stem}.csv"), grid_csv(grid).into_bytes()));
         }
         files
     }
@@ -71,6 +81,20 @@ fn csv(advices: &[&AdviceReport]) -> String {
             );
         }
         out.push('\n');
+    }
+    out
+}
+
+/// One line per position of the grid: across, along, how many reach it
+/// there and the share.
+fn grid_csv(grid: &AdviceReport) -> String {
+    let across = grid.across.as_ref().map_or("across", |a| a.axis);
+    let mut out = format!("{across}_mm,{}_mm,reached,share\n", grid.along);
+    for row in &grid.rows {
+        let at = row.across.as_ref().map_or(0.0, |a| a.at_mm);
+        for p in &row.points {
+            let _ = writeln!(out, "{at},{},{},{}", p.at_mm, p.reached, p.share);
+        }
     }
     out
 }

@@ -2,6 +2,7 @@
 //! the set of all of them that `--out DIR` writes.
 
 mod advice_files;
+mod advice_grid_plot;
 mod advice_plot;
 pub mod colours;
 mod files;

@@ -13,6 +13,7 @@ use serde_json::Value;
 
 use super::entry_kind::{text, Asks, EntryKind, Tolerance};
 use super::population::percent;
+use super::Across;
 use super::{fixed, mm, wilson95, Answer, Figure, ReportKind, TaskReport};
 use crate::scene::Population;
 
@@ -53,6 +54,11 @@ pub struct AdviceReport {
     /// coarse step may pass others by), and were scanned again in full.
     #[serde(skip_serializing_if = "is_zero")]
     pub rescanned: usize,
+    /// For an element moved over a grid: the second axis, and where on it
+    /// this line of positions lies (for the grid as a whole, the line that
+    /// serves the most: one of `rows`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub across: Option<Across>,
     /// The positions, in order: the target's coordinate on the axis.
     pub points: Vec<AdvicePoint>,
     /// The runs of positions that serve at least `serves`, in order.
@@ -68,6 +74,10 @@ pub struct AdviceReport {
     /// each position, beside the served ranges.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub standards: Vec<AdviceStandard>,
+    /// For a grid: each line along `along`, in order across, an advice of
+    /// its own (its `across` says where it lies; none of them has rows).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub rows: Vec<AdviceReport>,
     /// The share the task asked (a person's `serves` is 1; this is what
     /// their population's advice asks).
     #[serde(skip)]
@@ -266,6 +276,8 @@ pub struct AdviceFrame {
     /// band had a hole).
     pub rescanned: usize,
     pub positions_mm: Vec<f64>,
+    /// For a line of a grid: where across it lies.
+    pub across: Option<Across>,
 }
 
 impl AdviceReport {
@@ -387,6 +399,7 @@ impl AdviceReport {
             scan: self.scan,
             rescanned: self.rescanned,
             positions_mm: self.points.iter().map(|p| p.at_mm).collect(),
+            across: self.across.clone(),
         }
     }
 
@@ -449,6 +462,8 @@ impl AdviceReport {
             rescanned: frame.rescanned,
             asked: frame.serves,
             standards: Vec::new(),
+            across: frame.across.clone(),
+            rows: Vec::new(),
             ok: !ranges.is_empty(),
             points,
             ranges,
@@ -459,7 +474,12 @@ impl AdviceReport {
     /// Whether every position from `from_mm` to `to_mm` (within half a
     /// step) serves at least `share`, and in words the first that does
     /// not (or the range's least share).
-    pub fn serves_between(&self, share: f64, from_mm: f64, to_mm: f64) -> (bool, String) {
+    pub(super) fn line_serves_between(
+        &self,
+        share: f64,
+        from_mm: f64,
+        to_mm: f64,
+    ) -> (bool, String) {
         let half = self.step_mm / 2.0;
         let inside: Vec<&AdvicePoint> = (self.points.iter())
             .filter(|p| p.at_mm >= from_mm - half && p.at_mm <= to_mm + half)
@@ -537,8 +557,13 @@ fn serving(reached: usize, people: usize, serves: f64) -> bool {
     people > 0 && reached as f64 >= serves * people as f64 - 1e-9
 }
 
+/// 0, 1, 2 for `x`, `y`, `z`.
+pub(super) fn axis_index(axis: &str) -> Option<usize> {
+    ["x", "y", "z"].iter().position(|a| *a == axis)
+}
+
 /// `800-1120 mm`, or `800 mm` for one position.
-fn span_words(from_mm: f64, to_mm: f64) -> String {
+pub(super) fn span_words(from_mm: f64, to_mm: f64) -> String {
     if from_mm == to_mm {
         format!("{from_mm} mm")
     } else {
@@ -548,7 +573,7 @@ fn span_words(from_mm: f64, to_mm: f64) -> String {
 
 /// The runs of consecutive indices below `n` where `inside` holds, as
 /// (first, last).
-fn runs(n: usize, inside: impl Fn(usize) -> bool) -> Vec<(usize, usize)> {
+pub(super) fn runs(n: usize, inside: impl Fn(usize) -> bool) -> Vec<(usize, usize)> {
     let mut out: Vec<(usize, usize)> = Vec::new();
     for k in (0..n).filter(|&k| inside(k)) {
         match out.last_mut() {
@@ -656,9 +681,16 @@ impl ReportKind for AdviceReport {
     }
 
     fn details(&self, out: &mut String) {
+        let grid = match &self.across {
+            Some(across) if !self.rows.is_empty() => format!(
+                " and across {} in steps of {} mm",
+                across.axis, across.step_mm
+            ),
+            _ => String::new(),
+        };
         let _ = writeln!(
             out,
-            "\nadvise {} by {}: moved along {} in steps of {} mm ({} scan), carrying {}",
+            "\nadvise {} by {}: moved along {} in steps of {} mm{grid} ({} scan), carrying {}",
             self.name,
             self.who,
             self.along,
@@ -670,6 +702,22 @@ impl ReportKind for AdviceReport {
                 self.carries.join(", ")
             }
         );
+        if !self.rows.is_empty() {
+            self.rows_lines(out);
+        }
+        self.line_details(out);
+    }
+
+    fn share(&self) -> Option<f64> {
+        self.best.as_ref().map(|b| b.share)
+    }
+}
+
+impl AdviceReport {
+    /// The lines of `details` about one line of positions: each
+    /// position's share, the served ranges and their ends, the standards
+    /// and the best.
+    fn line_details(&self, out: &mut String) {
         let _ = writeln!(out, "  {}", self.series());
         if self.rescanned > 0 {
             let whom = match self.population {
@@ -723,25 +771,38 @@ impl ReportKind for AdviceReport {
         }
     }
 
-    fn share(&self) -> Option<f64> {
-        self.best.as_ref().map(|b| b.share)
-    }
-}
-
-impl AdviceReport {
-    /// The target moved to the position that serves the most.
+    /// The target moved to the position that serves the most (on a grid,
+    /// across too).
     pub fn best_target_mm(&self) -> Option<[f64; 3]> {
         let best = self.best.as_ref()?;
-        let axis = ["x", "y", "z"].iter().position(|a| *a == self.along)?;
         let mut at = self.target_mm;
-        at[axis] = best.at_mm;
+        at[axis_index(self.along)?] = best.at_mm;
+        if let Some(across) = &self.across {
+            at[axis_index(across.axis)?] = across.at_mm;
+        }
         Some(at)
     }
 
-    /// `the target's z, declared at 950 mm`.
+    /// Where the target serves the most, in words: `at 950 mm` (on a
+    /// grid: `at z 950 mm, x 300 mm`); none where no one reaches it.
+    pub fn best_words(&self) -> Option<String> {
+        let best = self.best.as_ref()?;
+        Some(match &self.across {
+            Some(a) => format!(
+                "at {} {} mm, {} {} mm",
+                self.along, best.at_mm, a.axis, a.at_mm
+            ),
+            None => format!("at {} mm", best.at_mm),
+        })
+    }
+
+    /// `the target's z, declared at 950 mm` (on a grid: `the target's z
+    /// at x 300 mm, declared at 950 mm`).
     fn along_words(&self) -> String {
+        let across = (self.across.as_ref())
+            .map_or(String::new(), |a| format!(" at {} {} mm", a.axis, a.at_mm));
         format!(
-            "{}'s {}, declared at {} mm",
+            "{}'s {}{across}, declared at {} mm",
             self.name, self.along, self.declared_mm
         )
     }
@@ -890,6 +951,7 @@ pub(super) mod tests {
             scan: "full",
             rescanned: 0,
             positions_mm: positions.to_vec(),
+            across: None,
         }
     }
 

@@ -78,15 +78,20 @@ impl AdvisedTogether {
     }
 }
 
-/// The advices of `tasks`, by target and axis, in the order each first
-/// comes, each group named after its target (and its axis, where the
-/// target is advised along another axis too: `kettle-x`).
+/// The advices of `tasks` along one line, by target and axis, in the
+/// order each first comes, each group named after its target (and its
+/// axis, where the target is advised along another axis too: `kettle-x`).
+/// Grids are not among them: each is plotted on its own, and is served
+/// together with no other.
 pub fn by_target(tasks: &[TaskReport]) -> Vec<(String, Vec<&AdviceReport>)> {
     let mut out: Vec<(String, Vec<&AdviceReport>)> = Vec::new();
     for task in tasks {
         let TaskReport::Advice(a) = task else {
             continue;
         };
+        if !a.rows.is_empty() {
+            continue;
+        }
         let same = |e: &[&AdviceReport]| e[0].name == a.name && e[0].along == a.along;
         match out.iter_mut().find(|(_, e)| same(e)) {
             Some((_, each)) => each.push(a),

@@ -11,6 +11,7 @@
 //! writes, tagged by kind.
 
 mod advice;
+mod advice_grid;
 mod advised_together;
 mod answer;
 mod entry_kind;
@@ -31,6 +32,7 @@ pub use advice::{
     AdviceFrame, AdvicePoint, AdviceReport, AdviceStandard, Because, PositionAnswer, RangeEnd,
     ServedRange,
 };
+pub use advice_grid::{rows_of, Across};
 pub use advised_together::{AdvisedTogether, Span};
 pub use answer::{Answer, Figure};
 pub use entry_kind::{Asks, EntryKind, Kind, Tolerance};
@@ -104,11 +106,19 @@ impl Report {
         }
     }
 
-    /// The advices, by target and axis, each group named after its target
-    /// (and its axis, where the target is advised along another axis too:
-    /// `kettle-x`).
+    /// The advices along one line, by target and axis, each group named
+    /// after its target (and its axis, where the target is advised along
+    /// another axis too: `kettle-x`); grids are [`Report::advice_grids`].
     pub fn advices_by_target(&self) -> Vec<(String, Vec<&AdviceReport>)> {
         advised_together::by_target(&self.tasks)
+    }
+
+    /// The advices over a grid, in the order of the file.
+    pub fn advice_grids(&self) -> impl Iterator<Item = &AdviceReport> {
+        self.tasks.iter().filter_map(|t| match t {
+            TaskReport::Advice(a) if !a.rows.is_empty() => Some(a.as_ref()),
+            _ => None,
+        })
     }
 
     /// Whether every expectation is met.

@@ -6,30 +6,64 @@
 
 use std::sync::Arc;
 
+use nalgebra::Vector3;
 use rayon::prelude::*;
 
 use super::{Scenario, TaskSpec};
 use crate::meter::{Meter, RunWork};
 use crate::plugin::TaskInput;
 use crate::progress::Progress;
-use crate::report::{AdviceFrame, AdviceReport, AdviceStandard, PositionAnswer, TaskReport};
+use crate::report::{
+    rows_of, AdviceFrame, AdviceReport, AdviceStandard, PositionAnswer, TaskReport,
+};
 
 impl Scenario {
-    /// The advice of population task `task`, whose people answered
-    /// `members` in `frame`: the served ranges, and why each person who
-    /// drops out at a range's end does not reach it there (asked now, of
-    /// them alone: [`crate::plugin::Task::explain`]); with the work that
-    /// asking took, told to `run`.
-    pub(super) fn population_advice(
+    /// The advice of population task `task`, whose people (in draw order)
+    /// answered `answers`, line by line where it is a grid; with the work
+    /// asking why took ([`Scenario::population_advice`]); none where no
+    /// one's answer is an advice.
+    pub(super) fn population_advice_of(
+        &self,
+        task: &TaskSpec,
+        answers: &[TaskReport],
+        progress: &dyn Progress,
+        run: &Arc<RunWork>,
+    ) -> Option<(AdviceReport, u64)> {
+        let population = &self.populations[task.population.expect("a population task")];
+        let Some(lines) = rows_of(answers) else {
+            let (frame, members) = AdviceReport::members(population, answers)?;
+            return Some(self.population_advice(task, (&frame, members), 0, progress, run));
+        };
+        let mut rows = Vec::new();
+        let mut spent = 0;
+        for (row, line) in lines.iter().enumerate() {
+            let (frame, members) = AdviceReport::members(population, line)?;
+            let first = row * frame.positions_mm.len();
+            let (advice, work) =
+                self.population_advice(task, (&frame, members), first, progress, run);
+            rows.push(advice);
+            spent += work;
+        }
+        Some((AdviceReport::grid(rows), spent))
+    }
+
+    /// The advice of population task `task` on one line of positions (the
+    /// first of which is the task's position `first_position`), whose people
+    /// answered `members` in `frame`: the served ranges, and why each
+    /// person who drops out at a range's end does not reach it there
+    /// (asked now, of them alone: [`crate::plugin::Task::explain`]); with
+    /// the work that asking took, told to `run`.
+    fn population_advice(
         &self,
         task: &TaskSpec,
         (frame, mut members): (&AdviceFrame, Vec<(String, Vec<PositionAnswer>)>),
+        first_position: usize,
         progress: &dyn Progress,
         run: &Arc<RunWork>,
     ) -> (AdviceReport, u64) {
         let population = &self.populations[task.population.expect("a population task")];
-        let first = AdviceReport::population(frame, &population.name, &members);
-        let asked = first.dropped(&members);
+        let unexplained = AdviceReport::population(frame, &population.name, &members);
+        let asked = unexplained.dropped(&members);
         let people: Vec<usize> = population.members.clone().collect();
         let found: Vec<(Option<String>, u64)> = (asked.par_iter())
             .map(|&(m, at)| {
@@ -44,7 +78,7 @@ impl Scenario {
                     allowance: &meter,
                     ..self.input(&spec, progress)
                 };
-                let why = task.task.explain(&input, at);
+                let why = task.task.explain(&input, first_position + at);
                 (why, meter.spent())
             })
             .collect();
@@ -66,11 +100,21 @@ impl Scenario {
             let TaskReport::Advice(advice) = task else {
                 continue;
             };
-            let beside: Vec<AdviceStandard> = (self.standards.iter())
-                .filter(|s| s.room == spec.room)
-                .filter_map(|s| self.standard_beside(s, spec.room, advice, run))
-                .collect();
-            advice.standards = beside;
+            let beside = |line: &AdviceReport| -> Vec<AdviceStandard> {
+                (self.standards.iter())
+                    .filter(|s| s.room == spec.room)
+                    .filter_map(|s| self.standard_beside(s, spec.room, line, run))
+                    .collect()
+            };
+            if advice.rows.is_empty() {
+                advice.standards = beside(advice);
+                continue;
+            }
+            let mut rows = std::mem::take(&mut advice.rows);
+            for row in &mut rows {
+                row.standards = beside(row);
+            }
+            **advice = AdviceReport::grid(rows);
         }
     }
 
@@ -88,12 +132,20 @@ impl Scenario {
             return None;
         }
         let room = &self.rooms[room];
-        let axis = ["x", "y", "z"].iter().position(|a| *a == advice.along)?;
+        let axis = |name: &str| ["x", "y", "z"].iter().position(|a| *a == name);
+        let along = axis(advice.along)?;
+        let mut across_mm = Vector3::zeros();
+        if let Some(across) = &advice.across {
+            let k = axis(across.axis)?;
+            across_mm[k] = across.at_mm - advice.target_mm[k];
+        }
         let mut names: Vec<&str> = vec![advice.name.as_str()];
         names.extend(advice.carries.iter().map(String::as_str));
         let rules: Vec<Option<(String, String, bool)>> = (advice.points.par_iter())
             .map(|point| {
-                let moved = room.moved(&names, axis, point.at_mm - advice.declared_mm);
+                let mut by_mm = across_mm;
+                by_mm[along] = point.at_mm - advice.declared_mm;
+                let moved = room.moved(&names, by_mm);
                 let meter = Meter::of(run);
                 let report = spec.standard.check(&spec.room_of_elements(&moved), &meter);
                 let element = report

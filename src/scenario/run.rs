@@ -18,8 +18,8 @@ use crate::meter::{Meter, RunWork};
 use crate::plugin::{Fit, TaskInput};
 use crate::progress::Progress;
 use crate::report::{
-    AdviceReport, AdvisedTogether, NotEvaluatedReport, NotPlacedReport, PersonAnswer,
-    PopulationReport, Report, TaskReport, SCHEMA_VERSION,
+    AdvisedTogether, NotEvaluatedReport, NotPlacedReport, PersonAnswer, PopulationReport, Report,
+    TaskReport, SCHEMA_VERSION,
 };
 
 /// One task's answer, what its questions touched of its room (where it
@@ -560,17 +560,17 @@ impl Scenario {
             let task = tasks[k];
             let population = &self.populations[task.population.expect("a population task")];
             let name = task.subject_name(self);
-            reports[k] = Some(match AdviceReport::members(population, &answers) {
-                Some((frame, members)) => {
-                    let (advice, spent) =
-                        self.population_advice(task, (&frame, members), progress, run);
-                    work[k] += spent;
-                    TaskReport::Advice(Box::new(advice))
-                }
-                None => TaskReport::Population(Box::new(PopulationReport::new(
-                    name, population, &answers,
-                ))),
-            });
+            reports[k] = Some(
+                match self.population_advice_of(task, &answers, progress, run) {
+                    Some((advice, spent)) => {
+                        work[k] += spent;
+                        TaskReport::Advice(Box::new(advice))
+                    }
+                    None => TaskReport::Population(Box::new(PopulationReport::new(
+                        name, population, &answers,
+                    ))),
+                },
+            );
         }
         reports
     }

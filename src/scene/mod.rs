@@ -54,25 +54,24 @@ impl Room {
     }
 
     /// This room with the boxes and targets named `names` moved by
-    /// `delta_mm` along axis `axis` (0, 1, 2: x, y, z): an element moved
-    /// as one (`advise`). Its name is another for each move (a base keeps
-    /// its floor by the room's name, and the element may change the
-    /// floor); it is never shown.
-    pub fn moved(&self, names: &[&str], axis: usize, delta_mm: f64) -> Room {
+    /// `by_mm`: an element moved as one (`advise`). Its name is another
+    /// for each move (a base keeps its floor by the room's name, and the
+    /// element may change the floor); it is never shown.
+    pub fn moved(&self, names: &[&str], by_mm: Vector3<f64>) -> Room {
         let mut moved = self.clone();
         moved.name = format!(
-            "{}\u{0}{names:?} moved {delta_mm} mm along {axis}",
-            self.name
+            "{}\u{0}{names:?} moved by ({}, {}, {}) mm",
+            self.name, by_mm.x, by_mm.y, by_mm.z
         );
         for b in moved
             .boxes
             .iter_mut()
             .filter(|b| names.contains(&b.name.as_str()))
         {
-            b.corner_mm[axis] += delta_mm;
+            b.corner_mm += by_mm;
         }
         for t in (moved.targets.iter_mut()).filter(|t| names.contains(&t.name.as_str())) {
-            t.position_mm[axis] += delta_mm;
+            t.position_mm += by_mm;
         }
         moved
     }

@@ -18,6 +18,8 @@
 
 use std::cell::RefCell;
 
+use nalgebra::Point3;
+
 use super::reach::ReachTask;
 use crate::error::ErrorKind;
 use crate::kinematics::{Body, Chain};
@@ -25,7 +27,7 @@ use crate::plugin::{
     Dependence, EffectorNeed, Fit, Options, ParamSpec, Params, Plugin, Registry, Settings,
     SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
 };
-use crate::report::{AdviceFrame, AdviceReport, PositionAnswer, TaskReport};
+use crate::report::{Across, AdviceFrame, AdviceReport, PositionAnswer, TaskReport};
 use crate::scene::Room;
 
 /// The plugin `advise`.
@@ -46,6 +48,11 @@ pub struct AdviseSettings {
     pub serves: f64,
     pub scan: String,
     pub coarse: i64,
+    /// A second axis, for a grid.
+    pub across: Option<String>,
+    pub across_from_mm: Option<f64>,
+    pub across_to_mm: Option<f64>,
+    pub across_step_mm: Option<f64>,
 }
 
 impl Settings for AdviseSettings {
@@ -94,6 +101,22 @@ impl Settings for AdviseSettings {
                 .integer("coarse", 4, "for a bracketed scan: every `coarse`-th position is solved first, then each change between two is bisected")
                 .range(2.0, 100.0)
                 .get(),
+            across: p
+                .optional_name(
+                    "across",
+                    "a second axis of the room, for a grid: at each position across (`across_from` to `across_to`), the element is moved along `along` as without it",
+                )
+                .get(),
+            across_from_mm: p
+                .optional_length("across_from", "for a grid: the target's first position across")
+                .get(),
+            across_to_mm: p
+                .optional_length("across_to", "for a grid: the target's last position across")
+                .get(),
+            across_step_mm: p
+                .optional_length("across_step", "for a grid: between two positions across (`step` where left out)")
+                .range(1.0, 1000.0)
+                .get(),
         }
     }
 }
@@ -104,7 +127,7 @@ impl Plugin for Advise {
     }
 
     fn doc(&self) -> &'static str {
-        "where along one axis to put the target (and the boxes that carry it) so that the person, or a share of the population, reaches it"
+        "where along one axis, or over a grid of two, to put the target (and the boxes that carry it) so that the person, or a share of the population, reaches it"
     }
 
     fn params(&self) -> Vec<ParamSpec> {
@@ -123,17 +146,6 @@ impl TaskPlugin for Advise {
         plugins: &Registry,
     ) -> Result<Box<dyn Task>, SettingsError> {
         let s = AdviseSettings::from_options(options)?;
-        let axis = match s.along.as_str() {
-            "x" => 0,
-            "y" => 1,
-            "z" => 2,
-            other => {
-                return Err(SettingsError::invalid(
-                    "along",
-                    format!("`{other}` is not an axis of the room: use `x`, `y` or `z`"),
-                ))
-            }
-        };
         let full = match s.scan.as_str() {
             "full" => true,
             "bracketed" => false,
@@ -144,42 +156,51 @@ impl TaskPlugin for Advise {
                 ))
             }
         };
-        let span = s.to_mm - s.from_mm;
-        if span < 0.0 {
-            return Err(SettingsError::invalid(
-                "to",
-                format!("`to` ({} mm) is below `from` ({} mm)", s.to_mm, s.from_mm),
-            ));
-        }
-        let steps = span / s.step_mm;
-        if (steps - steps.round()).abs() > 1e-6 {
-            let last = s.from_mm + steps.floor() * s.step_mm;
-            return Err(SettingsError::invalid(
-                "to",
-                format!(
-                    "`to` is not a whole number of steps from `from`: {} mm is (or take another step)",
-                    last
-                ),
-            ));
-        }
-        // Compared before it is a count: a span of light years is refused,
-        // not wrapped round.
-        if steps.round() + 1.0 > MAX_POSITIONS as f64 {
-            let count = steps.round() + 1.0;
-            return Err(SettingsError::invalid(
-                "step",
-                format!("{count} positions: at most {MAX_POSITIONS} (take a longer step)"),
-            ));
-        }
-        let count = steps.round() as usize + 1;
+        let along = Line::new(&s.along, s.from_mm, s.to_mm, s.step_mm, ALONG, 1)?;
+        let across = match (&s.across, s.across_from_mm, s.across_to_mm) {
+            (None, None, None) if s.across_step_mm.is_some() => {
+                return Err(SettingsError::invalid(
+                    "across_step",
+                    "a step across is for a grid: give it `across x` (or `y`, `z`), `across_from` and `across_to`",
+                ))
+            }
+            (None, None, None) => None,
+            (Some(axis), Some(from), Some(to)) => {
+                let step = s.across_step_mm.unwrap_or(s.step_mm);
+                let line = Line::new(axis, from, to, step, ACROSS, along.positions_mm.len())?;
+                if line.axis == along.axis {
+                    return Err(SettingsError::invalid(
+                        "across",
+                        format!("`{axis}` is the axis `along` moves the element on: take another"),
+                    ));
+                }
+                Some(line)
+            }
+            (None, ..) => {
+                let option = if s.across_from_mm.is_some() { "across_from" } else { "across_to" };
+                return Err(SettingsError::invalid(
+                    option,
+                    "a grid needs its second axis: `across x` (or `y`, `z`)",
+                ));
+            }
+            (Some(_), None, _) => {
+                return Err(SettingsError::invalid(
+                    "across",
+                    "a grid needs `across_from` and `across_to`: where its lines across begin and end",
+                ))
+            }
+            (Some(_), _, None) => {
+                return Err(SettingsError::invalid(
+                    "across",
+                    "a grid needs `across_to`: where its lines across end",
+                ))
+            }
+        };
         Ok(Box::new(AdviseTask {
             reach: ReachTask::new(s.reach, plugins)?,
             carries: s.carries.unwrap_or_default(),
-            axis,
-            positions_mm: (0..count)
-                .map(|k| s.from_mm + k as f64 * s.step_mm)
-                .collect(),
-            step_mm: s.step_mm,
+            along,
+            across,
             serves: s.serves,
             full,
             coarse: s.coarse as usize,
@@ -187,14 +208,100 @@ impl TaskPlugin for Advise {
     }
 }
 
-/// A configured advice.
-struct AdviseTask {
-    reach: ReachTask,
-    carries: Vec<String>,
+/// The options that set one line of positions.
+struct LineOptions {
+    axis: &'static str,
+    to: &'static str,
+    step: &'static str,
+}
+
+const ALONG: LineOptions = LineOptions {
+    axis: "along",
+    to: "to",
+    step: "step",
+};
+
+const ACROSS: LineOptions = LineOptions {
+    axis: "across",
+    to: "across_to",
+    step: "across_step",
+};
+
+/// The positions of the element on one axis of the room.
+struct Line {
     /// 0, 1, 2: x, y, z.
     axis: usize,
     positions_mm: Vec<f64>,
     step_mm: f64,
+}
+
+impl Line {
+    /// From `from_mm` to `to_mm` in steps of `step_mm` on `axis`, set by
+    /// `options`; refused where, with `times` positions for each of its
+    /// own (the lines along, for the positions across), the scan would
+    /// pass [`MAX_POSITIONS`].
+    fn new(
+        axis: &str,
+        from_mm: f64,
+        to_mm: f64,
+        step_mm: f64,
+        options: LineOptions,
+        times: usize,
+    ) -> Result<Line, SettingsError> {
+        let Some(index) = AXES.iter().position(|a| *a == axis) else {
+            return Err(SettingsError::invalid(
+                options.axis,
+                format!("`{axis}` is not an axis of the room: use `x`, `y` or `z`"),
+            ));
+        };
+        let span = to_mm - from_mm;
+        if span < 0.0 {
+            return Err(SettingsError::invalid(
+                options.to,
+                format!(
+                    "`{}` ({to_mm} mm) is below its start ({from_mm} mm)",
+                    options.to
+                ),
+            ));
+        }
+        let steps = span / step_mm;
+        if (steps - steps.round()).abs() > 1e-6 {
+            let last = from_mm + steps.floor() * step_mm;
+            return Err(SettingsError::invalid(
+                options.to,
+                format!(
+                    "`{}` is not a whole number of steps from its start: {} mm is (or take another step)",
+                    options.to, last
+                ),
+            ));
+        }
+        // Compared before it is a count: a span of light years is refused,
+        // not wrapped round.
+        let count = (steps.round() + 1.0) * times as f64;
+        if count > MAX_POSITIONS as f64 {
+            let grid = if times > 1 { " over the grid" } else { "" };
+            return Err(SettingsError::invalid(
+                options.step,
+                format!("{count} positions{grid}: at most {MAX_POSITIONS} (take a longer step)"),
+            ));
+        }
+        Ok(Line {
+            axis: index,
+            positions_mm: (0..=steps.round() as usize)
+                .map(|k| from_mm + k as f64 * step_mm)
+                .collect(),
+            step_mm,
+        })
+    }
+}
+
+/// A configured advice.
+struct AdviseTask {
+    reach: ReachTask,
+    carries: Vec<String>,
+    along: Line,
+    /// For a grid: the positions across, a line along at each.
+    across: Option<Line>,
     serves: f64,
     full: bool,
     coarse: usize,
@@ -220,20 +327,28 @@ impl Task for AdviseTask {
         let Subject::Target(target) = subject else {
             return None;
         };
-        let size = room.size_mm[self.axis];
-        let outside = (self.positions_mm.iter()).find(|&&at| !(0.0..=size).contains(&at))?;
-        let option = if *outside < 0.0 { "from" } else { "to" };
-        Some((
-            option,
-            format!(
-                "`{}` at {} {} mm is outside room `{}` (0 to {} mm on that axis)",
-                target.name, AXES[self.axis], outside, room.name, size
-            ),
-        ))
+        let lines = std::iter::once((&self.along, ["from", "to"]))
+            .chain((self.across.iter()).map(|a| (a, ["across_from", "across_to"])));
+        for (line, [below, above]) in lines {
+            let size = room.size_mm[line.axis];
+            let Some(outside) = (line.positions_mm.iter()).find(|&&at| !(0.0..=size).contains(&at))
+            else {
+                continue;
+            };
+            let option = if *outside < 0.0 { below } else { above };
+            return Some((
+                option,
+                format!(
+                    "`{}` at {} {} mm is outside room `{}` (0 to {} mm on that axis)",
+                    target.name, AXES[line.axis], outside, room.name, size
+                ),
+            ));
+        }
+        None
     }
 
     fn points(&self, _subject: &Subject<'_>) -> u64 {
-        self.positions_mm.len() as u64
+        (self.along.positions_mm.len() * self.lines()) as u64
     }
 
     fn starts_per_point(&self, placements: Tries) -> u64 {
@@ -247,12 +362,9 @@ impl Task for AdviseTask {
     fn dependence(&self, input: &TaskInput<'_>) -> Dependence {
         let mut dependence = self.reach.dependence(input);
         if let Subject::Target(target) = input.subject {
-            dependence.points_mm = (self.positions_mm.iter())
-                .map(|&at| {
-                    let mut p = target.position_mm;
-                    p[self.axis] = at;
-                    p
-                })
+            let n = self.along.positions_mm.len() * self.lines();
+            dependence.points_mm = (0..n)
+                .filter_map(|k| self.position_mm(&target.position_mm, k))
                 .collect();
         }
         dependence
@@ -294,37 +406,69 @@ impl Task for AdviseTask {
         // A population's member is asked why afterwards, and only where
         // their population's report shows it (`Task::explain`).
         let explain = !input.verdict_only;
-        let (answers, holed) = scan(self.positions_mm.len(), self.full, self.coarse, explain, at);
-        let frame = AdviceFrame {
-            name: target.name.clone(),
-            base: input.person.base.name.clone(),
-            carries: self.carries.clone(),
-            along: AXES[self.axis],
-            target_mm: target.position_mm.coords.into(),
-            declared_mm: target.position_mm[self.axis],
-            step_mm: self.step_mm,
-            serves: self.serves,
-            scan: if self.full { "full" } else { "bracketed" },
-            rescanned: usize::from(holed),
-            positions_mm: self.positions_mm.clone(),
+        let n = self.along.positions_mm.len();
+        let line = |row: usize| {
+            let (answers, holed) = scan(n, self.full, self.coarse, explain, |k, why| {
+                at(row * n + k, why)
+            });
+            let frame = AdviceFrame {
+                name: target.name.clone(),
+                base: input.person.base.name.clone(),
+                carries: self.carries.clone(),
+                along: AXES[self.along.axis],
+                target_mm: target.position_mm.coords.into(),
+                declared_mm: target.position_mm[self.along.axis],
+                step_mm: self.along.step_mm,
+                serves: self.serves,
+                scan: if self.full { "full" } else { "bracketed" },
+                rescanned: usize::from(holed),
+                positions_mm: self.along.positions_mm.clone(),
+                across: (self.across.as_ref()).map(|a| Across {
+                    axis: AXES[a.axis],
+                    at_mm: a.positions_mm[row],
+                    step_mm: a.step_mm,
+                }),
+            };
+            AdviceReport::person(&frame, &input.person.name, &answers)
         };
-        TaskReport::Advice(Box::new(AdviceReport::person(
-            &frame,
-            &input.person.name,
-            &answers,
-        )))
+        let advice = match &self.across {
+            None => line(0),
+            Some(_) => AdviceReport::grid((0..self.lines()).map(line).collect()),
+        };
+        TaskReport::Advice(Box::new(advice))
     }
 }
 
 impl AdviseTask {
+    /// How many lines along the element is moved on: 1, or one for each
+    /// position across of a grid.
+    fn lines(&self) -> usize {
+        self.across.as_ref().map_or(1, |a| a.positions_mm.len())
+    }
+
+    /// Where position `k` puts the target declared at `declared_mm`: on a
+    /// grid, position `k % n` of line `k / n` (`n` positions along); none
+    /// past the last.
+    fn position_mm(&self, declared_mm: &Point3<f64>, k: usize) -> Option<Point3<f64>> {
+        let n = self.along.positions_mm.len();
+        let mut at = *declared_mm;
+        at[self.along.axis] = *self.along.positions_mm.get(k % n)?;
+        match &self.across {
+            Some(across) => at[across.axis] = *across.positions_mm.get(k / n)?,
+            None if k >= n => return None,
+            None => {}
+        }
+        Some(at)
+    }
+
     /// `room` with the element (target `name` and what it carries) at
-    /// position `k`: made for each solve and dropped after it (a room's
-    /// meshes are copied with it, so rooms for every position are not
-    /// kept).
+    /// position `k` ([`AdviseTask::position_mm`]): made for each solve
+    /// and dropped after it (a room's meshes are copied with it, so rooms
+    /// for every position are not kept).
     fn moved_room(&self, room: &Room, name: &str, k: usize) -> Option<Room> {
-        let declared = room.targets.iter().find(|t| t.name == name)?.position_mm[self.axis];
-        let at = self.positions_mm.get(k)?;
-        Some(room.moved(&self.element(name), self.axis, at - declared))
+        let declared = room.targets.iter().find(|t| t.name == name)?.position_mm;
+        let at = self.position_mm(&declared, k)?;
+        Some(room.moved(&self.element(name), at - declared))
     }
 
     /// The names moved as one: target `name` and what it carries.

@@ -7,7 +7,7 @@
 //! a limit. Numbers are rounded (0.1 mm, 0.1 degree) so the page is the
 //! same bytes on every run.
 
-use super::advice_plot;
+use super::{advice_grid_plot, advice_plot};
 use nalgebra::{IsometryMatrix3, Point3, Vector3};
 use serde::Serialize;
 
@@ -217,6 +217,7 @@ pub struct CellsView {
 pub fn view_data(report: &Report, scene: &FormatScene<'_>) -> ViewData {
     let advices = report.advices_by_target();
     let plot = |task: &TaskReport| match task {
+        TaskReport::Advice(a) if !a.rows.is_empty() => Some(advice_grid_plot::svg(a)),
         TaskReport::Advice(a) => (advices.iter())
             .find(|(_, each)| each.iter().any(|e| std::ptr::eq(*e, a.as_ref())))
             .map(|(_, each)| advice_plot::svg(each)),
@@ -405,9 +406,9 @@ fn task_view(task: &TaskReport, place: &TaskPlace, scene: &FormatScene<'_>) -> T
             view.target = a.best_target_mm();
             view.solids = advised_boxes(a, room);
             view.advised = (a.best_target_mm())
-                .zip(a.best.as_ref())
-                .map(|(at, best)| Labelled {
-                    name: format!("{} at {} mm: the advised position", a.name, best.at_mm),
+                .zip(a.best_words())
+                .map(|(at, words)| Labelled {
+                    name: format!("{} {words}: the advised position", a.name),
                     at,
                 });
         }
@@ -489,18 +490,16 @@ fn strained(body: &Body, q: &[f64], pose: BasePose, moved: &[&str]) -> Vec<Label
 /// The boxes advice `a` moves with its target, where they stand with the
 /// target at its best position: see-through green over the room's own.
 fn advised_boxes(a: &AdviceReport, room: &Room) -> Vec<SolidView> {
-    let Some(best) = &a.best else {
+    let (Some(best_mm), Some(words)) = (a.best_target_mm(), a.best_words()) else {
         return Vec::new();
     };
-    let Some(axis) = ["x", "y", "z"].iter().position(|&n| n == a.along) else {
-        return Vec::new();
-    };
+    let by_mm = Vector3::from(best_mm) - Vector3::from(a.target_mm);
     (room.boxes.iter())
         .filter(|b| a.carries.contains(&b.name))
         .map(|b| {
             let mut cuboid = b.cuboid();
-            cuboid.centre[axis] += best.at_mm - a.declared_mm;
-            let name = format!("{} with the target at {} mm", b.name, best.at_mm);
+            cuboid.centre += by_mm;
+            let name = format!("{} with the target {words}", b.name);
             solid_view(Shape::Cuboid(cuboid), name, ADVISED_COLOUR.into(), 0.45)
         })
         .collect()
