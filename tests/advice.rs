@@ -290,7 +290,10 @@ fn a_grid_has_a_picture_and_a_table_of_its_own() {
     let format = registry.format("advice").expect("the advice format");
     let files = format.files(&report, &scenario.format_scene());
     let names: Vec<&str> = files.iter().map(|(n, _)| n.as_str()).collect();
-    assert_eq!(names, ["advice-cup-ann.svg", "advice-cup-ann.csv"]);
+    assert_eq!(
+        names,
+        ["advice-grid-cup-yx-ann.svg", "advice-grid-cup-yx-ann.csv"]
+    );
     let csv = String::from_utf8(files[1].1.clone()).unwrap();
     let lines: Vec<&str> = csv.lines().collect();
     assert_eq!(lines[0], "x_mm,y_mm,reached,share");
@@ -303,4 +306,30 @@ fn a_grid_has_a_picture_and_a_table_of_its_own() {
     // A cell per position, each saying who reaches it there.
     assert_eq!(svg.matches("<title>y ").count(), 3 * 7, "{svg}");
     assert!(svg.contains("serves the most: y "), "{svg}");
+}
+
+#[test]
+fn an_advice_in_a_room_the_chair_fits_nowhere_in_says_so() {
+    // Too narrow for the chair with or without the shelf: the room, not
+    // where the shelf goes, keeps it out, and the answer says so.
+    let text = "units mm deg
+use std::people
+room hall {
+  size 700 x 1000 x 2500
+  box shelf at (0, 100, 1000) size (300, 400, 20)
+  target jar at (250, 300, 1060)
+}
+person bob { mannequin man_50th_seated base manual_wheelchair }
+advise jar by bob { carries shelf along x from 100mm to 400mm step 150mm }
+";
+    let (_, report) = run(text);
+    let TaskReport::NotPlaced(not) = &report.tasks[0] else {
+        panic!("not placed: {:?}", report.tasks[0])
+    };
+    assert!(!not.ok);
+    assert!(
+        report.tasks[0].answer().verdict.contains("NOT fit"),
+        "{:?}",
+        report.tasks[0].answer()
+    );
 }

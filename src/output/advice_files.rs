@@ -2,7 +2,7 @@
 //! line, the plot of who reaches it at each position (`advice_plot.rs`) as
 //! SVG, and the shares as CSV, one column per group; for each advice over
 //! a grid, its picture (`advice_grid_plot.rs`) and its shares as CSV, one
-//! line per position. Written by `--out`.
+//! line per position (`advice-grid-TARGET-ZX-WHO`: along z, across x). Written by `--out`.
 
 use std::fmt::Write;
 
@@ -38,8 +38,29 @@ impl FormatPlugin for AdviceFiles {
             ));
             files.push((format!("{stem}.csv"), csv(&advices).into_bytes()));
         }
+        // `advice-grid-` keeps a grid's files apart from a line's (a
+        // target's name has no `-`); two grids of one target by one group
+        // along the same axes are numbered.
+        let mut stems: Vec<String> = Vec::new();
         for grid in report.advice_grids() {
-            let stem = format!("advice-{}-{}", clean(&grid.name), clean(&grid.who));
+            let axes = format!(
+                "{}{}",
+                grid.along,
+                grid.across.as_ref().map_or("", |a| a.axis)
+            );
+            let first = format!(
+                "advice-grid-{}-{axes}-{}",
+                clean(&grid.name),
+                clean(&grid.who)
+            );
+            let mut stem = first.clone();
+            for k in 2.. {
+                if !stems.contains(&stem) {
+                    break;
+                }
+                stem = format!("{first}-{k}");
+            }
+            stems.push(stem.clone());
             files.push((
                 format!("{stem}.svg"),
                 advice_grid_plot::svg(grid).into_bytes(),
@@ -97,4 +118,66 @@ fn grid_csv(grid: &AdviceReport) -> String {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::plugin::FormatScene;
+    use crate::report::{Across, AdviceFrame, PositionAnswer, TaskReport};
+
+    /// A grid of `name` by ann along `along`, across x.
+    fn grid(name: &str, along: &'static str) -> TaskReport {
+        let line = |at_mm: f64| {
+            let frame = AdviceFrame {
+                name: name.into(),
+                base: "wheelchair".into(),
+                carries: Vec::new(),
+                along,
+                target_mm: [300.0, 500.0, 900.0],
+                declared_mm: 900.0,
+                step_mm: 100.0,
+                serves: 0.9,
+                scan: "full",
+                rescanned: 0,
+                positions_mm: vec![800.0, 900.0],
+                across: Some(Across {
+                    axis: "x",
+                    at_mm,
+                    step_mm: 100.0,
+                }),
+            };
+            let reached = PositionAnswer {
+                reached: true,
+                verdict: None,
+            };
+            AdviceReport::person(&frame, "ann", &[reached.clone(), reached])
+        };
+        TaskReport::Advice(Box::new(AdviceReport::grid(vec![line(200.0), line(300.0)])))
+    }
+
+    #[test]
+    fn two_grids_of_one_target_by_one_person_are_written_apart() {
+        let report = Report {
+            schema: 1,
+            file: "x".into(),
+            notes: Vec::new(),
+            tasks: vec![grid("jar", "z"), grid("jar", "z"), grid("jar", "y")],
+            expectations: Vec::new(),
+            advised_together: Vec::new(),
+        };
+        let files = AdviceFiles.files(&report, &FormatScene::empty());
+        let names: Vec<&str> = files.iter().map(|(n, _)| n.as_str()).collect();
+        assert_eq!(
+            names,
+            [
+                "advice-grid-jar-zx-ann.svg",
+                "advice-grid-jar-zx-ann.csv",
+                "advice-grid-jar-zx-ann-2.svg",
+                "advice-grid-jar-zx-ann-2.csv",
+                "advice-grid-jar-yx-ann.svg",
+                "advice-grid-jar-yx-ann.csv",
+            ]
+        );
+    }
 }

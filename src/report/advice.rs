@@ -61,6 +61,10 @@ pub struct AdviceReport {
     pub across: Option<Across>,
     /// The positions, in order: the target's coordinate on the axis.
     pub points: Vec<AdvicePoint>,
+    /// For a population: who reach it at no position, grouped by their
+    /// answer (a base that does not fit in the room, or none asked).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub nowhere: Vec<Because>,
     /// The runs of positions that serve at least `serves`, in order.
     pub ranges: Vec<ServedRange>,
     /// The position that serves the most (the middle of the longest run
@@ -445,7 +449,12 @@ impl AdviceReport {
             })
             .collect::<Vec<_>>();
         let best = best_point(&points);
+        let nowhere = match population {
+            true => reached_nowhere(members),
+            false => Vec::new(),
+        };
         AdviceReport {
+            nowhere,
             task: "advise",
             name: frame.name.clone(),
             who: who.to_string(),
@@ -584,6 +593,36 @@ pub(super) fn runs(n: usize, inside: impl Fn(usize) -> bool) -> Vec<(usize, usiz
     out
 }
 
+/// Who of `members` reach it at no position, by their answer (the first
+/// one given; where none was asked, that they reach it nowhere).
+fn reached_nowhere(members: &[(String, Vec<PositionAnswer>)]) -> Vec<Because> {
+    let mut because: Vec<Because> = Vec::new();
+    for (name, answers) in members.iter().filter(|(_, a)| !a.iter().any(|x| x.reached)) {
+        let verdict = (answers.iter().find_map(|a| a.verdict.clone()))
+            .unwrap_or_else(|| "NOT reached at any position scanned".into());
+        tally(&mut because, verdict, name);
+    }
+    because.sort_by_key(|b| std::cmp::Reverse(b.people));
+    because
+}
+
+/// `name` counted under `verdict` (named among the first few).
+fn tally(because: &mut Vec<Because>, verdict: String, name: &str) {
+    match because.iter_mut().find(|b| b.verdict == verdict) {
+        Some(b) => {
+            b.people += 1;
+            if b.who.len() < NAMED {
+                b.who.push(name.to_string());
+            }
+        }
+        None => because.push(Because {
+            verdict,
+            people: 1,
+            who: vec![name.to_string()],
+        }),
+    }
+}
+
 /// The end of a range at `edge` (its last position that serves), whose
 /// next position outside is `beyond`: who reaches `edge` but not `beyond`,
 /// by their answer there.
@@ -601,19 +640,7 @@ fn end(
         }
         dropped += 1;
         let verdict = (answers[beyond].verdict.clone()).unwrap_or_else(|| "NOT reachable".into());
-        match because.iter_mut().find(|b| b.verdict == verdict) {
-            Some(b) => {
-                b.people += 1;
-                if b.who.len() < NAMED {
-                    b.who.push(name.clone());
-                }
-            }
-            None => because.push(Because {
-                verdict,
-                people: 1,
-                who: vec![name.clone()],
-            }),
-        }
+        tally(&mut because, verdict, name);
     }
     // The most common first; equal counts in the order first met.
     because.sort_by_key(|b| std::cmp::Reverse(b.people));
@@ -719,6 +746,20 @@ impl AdviceReport {
     /// and the best.
     fn line_details(&self, out: &mut String) {
         let _ = writeln!(out, "  {}", self.series());
+        for b in &self.nowhere {
+            let more = b.people.saturating_sub(b.who.len());
+            let extra = match more {
+                0 => String::new(),
+                _ => format!(" and {more} more"),
+            };
+            let _ = writeln!(
+                out,
+                "  reached nowhere by {} ({}{extra}): {}",
+                b.people,
+                b.who.join(", "),
+                b.verdict
+            );
+        }
         if self.rescanned > 0 {
             let whom = match self.population {
                 true => format!("{} of {} people", self.rescanned, self.people),
@@ -989,6 +1030,48 @@ pub(super) mod tests {
         assert!(!report.serves_between(0.75, 700.0, 1000.0).0);
         // Past the scan: not met, whatever the shares.
         assert!(!report.serves_between(0.0, 500.0, 900.0).0);
+    }
+
+    #[test]
+    fn who_reach_it_nowhere_are_named_with_their_answer() {
+        let at = [600.0, 700.0];
+        let shut = |name: &str| {
+            let not = PositionAnswer {
+                reached: false,
+                verdict: Some("does NOT fit in the room".into()),
+            };
+            (name.to_string(), vec![not.clone(), not])
+        };
+        let members = vec![
+            ("p#1".to_string(), answers("11")),
+            shut("p#2"),
+            ("p#3".to_string(), answers("00")),
+            shut("p#4"),
+        ];
+        let report = AdviceReport::population(&frame(&at, 0.25), "p", &members);
+        let nowhere: Vec<(&str, usize, &[String])> = (report.nowhere.iter())
+            .map(|b| (b.verdict.as_str(), b.people, b.who.as_slice()))
+            .collect();
+        assert_eq!(
+            nowhere,
+            [
+                (
+                    "does NOT fit in the room",
+                    2,
+                    &["p#2".to_string(), "p#4".to_string()][..]
+                ),
+                ("NOT reachable: out of reach", 1, &["p#3".to_string()][..]),
+            ]
+        );
+        let mut out = String::new();
+        report.details(&mut out);
+        assert!(
+            out.contains("reached nowhere by 2 (p#2, p#4): does NOT fit in the room"),
+            "{out}"
+        );
+        // A person's own answer says so: no group of one.
+        let alone = AdviceReport::person(&frame(&at, 0.9), "ann", &answers("00"));
+        assert!(alone.nowhere.is_empty());
     }
 
     #[test]

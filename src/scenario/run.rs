@@ -687,13 +687,27 @@ impl Scenario {
         let label = task_label(&task.kind);
         let (subject, person) = (input.subject.name(), &input.person.name);
         let (base, room) = (&input.person.base.name, &input.room.name);
-        let fit = input.base.fit(input.room, &meter);
+        let mut fit = input.base.fit(input.room, &meter);
         if charges.floor {
             meter.charge(input.base.floor_work(input.room));
         }
+        // A task that moves what its subject carries checks each
+        // arrangement of its room itself, unless the base is kept out
+        // with the element gone too (the room is the cause, not where the
+        // element is).
+        let mut places_itself = task.task.places_itself();
+        if places_itself && matches!(fit, Fit::Nowhere(_) | Fit::Shut(_)) {
+            let mut element = task.task.carried();
+            element.push(subject.to_string());
+            let bare = input.room.without_boxes(&element);
+            let bare_fit = input.base.fit(&bare, &meter);
+            meter.charge(input.base.floor_work(&bare));
+            if matches!(bare_fit, Fit::Nowhere(_) | Fit::Shut(_)) {
+                (fit, places_itself) = (bare_fit, false);
+            }
+        }
         let report = match fit {
-            // It checks each arrangement of its room itself.
-            Fit::Nowhere(_) | Fit::Shut(_) if task.task.places_itself() => task.task.run(&input),
+            Fit::Nowhere(_) | Fit::Shut(_) if places_itself => task.task.run(&input),
             Fit::Nowhere(misfit) => TaskReport::NotPlaced(NotPlacedReport::new(
                 label, subject, person, base, room, &misfit,
             )),

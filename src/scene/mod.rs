@@ -76,6 +76,16 @@ impl Room {
         moved
     }
 
+    /// This room without the boxes named `names` (an element taken out,
+    /// to tell whether it or the room keeps a base out). Its name is
+    /// another, never shown, as [`Room::moved`]'s is.
+    pub fn without_boxes(&self, names: &[String]) -> Room {
+        let mut bare = self.clone();
+        bare.name = format!("{}\u{0}without {names:?}", self.name);
+        bare.boxes.retain(|b| !names.contains(&b.name));
+        bare
+    }
+
     /// The name of obstacle `index`: the boxes, then the meshes.
     pub fn obstacle_name(&self, index: usize) -> &str {
         match self.boxes.get(index) {
