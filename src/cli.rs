@@ -156,6 +156,13 @@ enum Command {
         #[command(flatten)]
         reporting: Reporting,
     },
+    /// Serve the Language Server Protocol over standard input and output:
+    /// an editor's open .reach files checked as `reach check` checks them,
+    /// their diagnostics shown as you type (docs/editors.md).
+    Lsp {
+        #[command(flatten)]
+        limits: LimitArgs,
+    },
     /// List every plugin with its parameters.
     Plugins,
     /// List the standard library: mannequins, profiles, bases, visions;
@@ -366,6 +373,18 @@ pub fn main() -> i32 {
                 .map(|file| check(&registry, &limits, file, estimate, &shown))
                 .max()
                 .unwrap_or(0)
+        }
+        Command::Lsp { limits } => {
+            let session = reach::Session::default()
+                .limits(limits.limits())
+                .allowing(&limits.allow_path);
+            match crate::lsp::serve_stdio(session, &registry) {
+                Ok(()) => 0,
+                Err(e) => {
+                    eprintln!("reach lsp: {}", escaped(&e.to_string()));
+                    1
+                }
+            }
         }
         Command::Test {
             paths,

@@ -33,7 +33,17 @@ pub struct Loaded {
 /// Where the root of a scenario comes from.
 pub enum Input<'a> {
     Path(&'a Path),
-    Text { name: &'a str, text: &'a str },
+    Text {
+        name: &'a str,
+        text: &'a str,
+    },
+    /// A file on disk as an editor holds it, edits not yet saved: read
+    /// as the file at `path` would be (its `use`s from its directory,
+    /// under the same policy), with `text` in place of what is on disk.
+    Edited {
+        path: &'a Path,
+        text: &'a str,
+    },
 }
 
 /// Load the scenario. On failure the diagnostics come with the sources they
@@ -53,7 +63,7 @@ pub fn load(
         stack: Vec::new(),
     };
     let root = match input {
-        Input::Path(path) => Some(path),
+        Input::Path(path) | Input::Edited { path, .. } => Some(path),
         Input::Text { .. } => None,
     };
     loader.loaded.sources.allowed = Allowed::around(root, also_allowed);
@@ -70,6 +80,7 @@ pub fn load(
             );
             loader.parse_and_follow(id, Key::Memory);
         }
+        Input::Edited { path, text } => loader.load_edited(path, text),
     }
     let Loader { loaded, errors, .. } = loader;
     let result = if errors.is_empty() {
@@ -169,6 +180,29 @@ impl Loader<'_> {
             .sources
             .add(shown, Origin::Path(path.to_path_buf()), as_lines(text));
         self.parse_and_follow(id, key);
+    }
+
+    /// The root file at `path` with the editor's `text`, within the
+    /// same bound on its size as the file on disk.
+    fn load_edited(&mut self, path: &Path, text: &str) {
+        let shown = path.display().to_string();
+        let limit = self.limits.file_bytes.min(self.limits.scenario_bytes);
+        if text.len() as u64 > limit {
+            let flag = if self.limits.scenario_bytes < self.limits.file_bytes {
+                "--max-scenario-bytes"
+            } else {
+                "--max-file-bytes"
+            };
+            let what = format!("`{shown}`");
+            let limit = format!("{limit} bytes ({flag})");
+            return self.fail(ErrorKind::TooLarge { what, limit }, None);
+        }
+        let id = self.loaded.sources.add(
+            shown,
+            Origin::Path(path.to_path_buf()),
+            as_lines(text.to_string()),
+        );
+        self.parse_and_follow(id, Key::Disk(canonical(path)));
     }
 
     /// Keep the file (invalid bytes replaced) so the diagnostic can show

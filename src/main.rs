@@ -4,6 +4,7 @@ mod bar;
 mod cli;
 mod completion;
 mod count_arg;
+mod lsp;
 mod man_pages;
 mod shard_command;
 mod signals;

@@ -30,6 +30,15 @@ pub struct SourceFile {
 }
 
 impl SourceFile {
+    /// The file on disk it was read from (none for the standard
+    /// library's modules and text handed to the library).
+    pub fn path(&self) -> Option<&std::path::Path> {
+        match &self.origin {
+            Origin::Path(p) => Some(p),
+            Origin::Std(_) | Origin::Memory => None,
+        }
+    }
+
     /// The byte offset at which each line starts: 0, and each offset after
     /// a line feed.
     pub fn line_starts(&self) -> &[usize] {

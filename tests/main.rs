@@ -25,6 +25,7 @@ mod independent;
 mod invariance;
 mod layers;
 mod limits;
+mod lsp;
 mod meshes;
 mod output_checks;
 mod outputs;
