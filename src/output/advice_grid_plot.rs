@@ -7,6 +7,7 @@
 
 use std::fmt::Write;
 
+use super::advice_plot::page_start;
 use super::ticks::nice_step;
 use crate::escape::markup;
 use crate::report::{AdvicePoint, AdviceReport};
@@ -70,24 +71,11 @@ pub fn svg(grid: &AdviceReport) -> String {
     let scale = (plot_w / (h1 - h0).max(1e-9)).min(plot_h / (v1 - v0).max(1e-9));
     let x = |mm: f64| LEFT + (mm - h0) * scale;
     let y = |mm: f64| TOP + (v1 - mm) * scale;
-    let mut s = String::new();
-    let _ = writeln!(
-        s,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{HEIGHT}" viewBox="0 0 {WIDTH} {HEIGHT}" font-family="sans-serif" font-size="12">"#
-    );
-    let _ = writeln!(
-        s,
-        r#"<rect width="{WIDTH}" height="{HEIGHT}" fill="white"/>"#
-    );
     let title = format!(
         "advise {} by {}: who reaches it, by its {name_h} and {name_v} (mm)",
         grid.name, grid.who
     );
-    let _ = writeln!(
-        s,
-        r#"<text x="{LEFT}" y="22" font-size="15" font-weight="bold">{}</text>"#,
-        markup(&title)
-    );
+    let mut s = page_start((WIDTH, HEIGHT), LEFT, &title);
     // A person's cells are reached or not: no outline says more.
     let serves =
         |p: &AdvicePoint| grid.population && p.reached > 0 && p.share >= grid.serves - 1e-9;

@@ -32,24 +32,11 @@ pub fn svg(advices: &[&AdviceReport]) -> String {
     let plot_h = HEIGHT - TOP - BOTTOM;
     let x = |mm: f64| LEFT + (mm - x0) / (x1 - x0).max(1e-9) * plot_w;
     let y = |share: f64| TOP + (1.0 - share) * plot_h;
-    let mut s = String::new();
-    let _ = writeln!(
-        s,
-        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{HEIGHT}" viewBox="0 0 {WIDTH} {HEIGHT}" font-family="sans-serif" font-size="12">"#
-    );
-    let _ = writeln!(
-        s,
-        r#"<rect width="{WIDTH}" height="{HEIGHT}" fill="white"/>"#
-    );
     let title = format!(
         "advise {}: who reaches it, by its {} (mm)",
         first.name, first.along
     );
-    let _ = writeln!(
-        s,
-        r#"<text x="{LEFT}" y="22" font-size="15" font-weight="bold">{}</text>"#,
-        markup(&title)
-    );
+    let mut s = page_start((WIDTH, HEIGHT), LEFT, &title);
     // The positions that serve every group: shaded.
     for (from, to) in AdviceReport::served_together(advices) {
         let _ = writeln!(
@@ -144,6 +131,26 @@ pub fn svg(advices: &[&AdviceReport]) -> String {
         key_y + 4.0
     );
     s.push_str("</svg>\n");
+    s
+}
+
+/// An advice picture's opening: the `svg` element `width` by `height`,
+/// a white ground and `title` at `left`.
+pub(super) fn page_start((width, height): (f64, f64), left: f64, title: &str) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        r#"<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}" viewBox="0 0 {width} {height}" font-family="sans-serif" font-size="12">"#
+    );
+    let _ = writeln!(
+        s,
+        r#"<rect width="{width}" height="{height}" fill="white"/>"#
+    );
+    let _ = writeln!(
+        s,
+        r#"<text x="{left}" y="22" font-size="15" font-weight="bold">{}</text>"#,
+        markup(title)
+    );
     s
 }
 
