@@ -153,14 +153,7 @@ impl Loader<'_> {
                 Err(e) => return self.not_utf8(path, shown, e),
             },
             Err(ReadError::TooLarge { limit_bytes }) => {
-                let what = format!("`{shown}`");
-                let flag = if self.limits.scenario_bytes < self.limits.file_bytes {
-                    "--max-scenario-bytes"
-                } else {
-                    "--max-file-bytes"
-                };
-                let limit = format!("{limit_bytes} bytes ({flag})");
-                return self.fail(ErrorKind::TooLarge { what, limit }, used_at);
+                return self.too_large(&shown, limit_bytes, used_at);
             }
             Err(e) => {
                 // Watched all the same: it may appear, or its directory.
@@ -188,14 +181,7 @@ impl Loader<'_> {
         let shown = path.display().to_string();
         let limit = self.limits.file_bytes.min(self.limits.scenario_bytes);
         if text.len() as u64 > limit {
-            let flag = if self.limits.scenario_bytes < self.limits.file_bytes {
-                "--max-scenario-bytes"
-            } else {
-                "--max-file-bytes"
-            };
-            let what = format!("`{shown}`");
-            let limit = format!("{limit} bytes ({flag})");
-            return self.fail(ErrorKind::TooLarge { what, limit }, None);
+            return self.too_large(&shown, limit, None);
         }
         let id = self.loaded.sources.add(
             shown,
@@ -203,6 +189,19 @@ impl Loader<'_> {
             as_lines(text.to_string()),
         );
         self.parse_and_follow(id, Key::Disk(canonical(path)));
+    }
+
+    /// Scenario file `shown` is larger than `limit_bytes`: the error
+    /// names the option that raises the bound.
+    fn too_large(&mut self, shown: &str, limit_bytes: u64, used_at: Option<Span>) {
+        let flag = if self.limits.scenario_bytes < self.limits.file_bytes {
+            "--max-scenario-bytes"
+        } else {
+            "--max-file-bytes"
+        };
+        let what = format!("`{shown}`");
+        let limit = format!("{limit_bytes} bytes ({flag})");
+        self.fail(ErrorKind::TooLarge { what, limit }, used_at);
     }
 
     /// Keep the file (invalid bytes replaced) so the diagnostic can show
@@ -304,10 +303,8 @@ impl Loader<'_> {
 
     /// `rel` as seen from the directory of file `from`.
     fn relative_to(&self, from: FileId, rel: &str) -> PathBuf {
-        let base = match &self.loaded.sources.get(from).origin {
-            Origin::Path(p) => p.parent().map(Path::to_path_buf).unwrap_or_default(),
-            _ => PathBuf::new(),
-        };
+        let file = self.loaded.sources.get(from);
+        let base = file.path().and_then(Path::parent).unwrap_or(Path::new(""));
         base.join(rel)
     }
 }

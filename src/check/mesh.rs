@@ -18,7 +18,6 @@ use crate::error::{thousands, Error, ErrorKind};
 use crate::meshfile::{self, MeshFileError, MeshFormat, RawMesh, UpAxis};
 use crate::read::{self, FileKind};
 use crate::scene::MeshObstacle;
-use crate::source::Origin;
 use crate::span::Spanned;
 use crate::syntax::ast::MeshDecl;
 use crate::units::Unit;
@@ -261,10 +260,8 @@ impl Checker<'_> {
     /// `relative` against the directory of the file being checked (the
     /// working directory for text not read from disk).
     pub(super) fn relative_to_file(&self, relative: &str) -> PathBuf {
-        let dir = match &self.cx.sources.get(self.cx.file).origin {
-            Origin::Path(p) => p.parent().map(Path::to_path_buf).unwrap_or_default(),
-            _ => PathBuf::new(),
-        };
+        let file = self.cx.sources.get(self.cx.file);
+        let dir = file.path().and_then(Path::parent).unwrap_or(Path::new(""));
         dir.join(relative)
     }
 }
