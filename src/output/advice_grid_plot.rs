@@ -10,7 +10,7 @@ use std::fmt::Write;
 use super::advice_plot::page_start;
 use super::ticks::nice_step;
 use crate::escape::markup;
-use crate::report::{AdvicePoint, AdviceReport};
+use crate::report::{axis_index, AdvicePoint, AdviceReport};
 
 const WIDTH: f64 = 760.0;
 const HEIGHT: f64 = 520.0;
@@ -198,8 +198,7 @@ fn marks(
     along_up: bool,
     (x, y): (&dyn Fn(f64) -> f64, &dyn Fn(f64) -> f64),
 ) {
-    let across = grid.across.as_ref().map_or("", |a| a.axis);
-    let k = ["x", "y", "z"].iter().position(|a| *a == across);
+    let k = (grid.across.as_ref()).and_then(|a| axis_index(a.axis));
     let declared_across = k.map_or(0.0, |k| grid.target_mm[k]);
     let on_page = |along_mm: f64, across_mm: f64| match along_up {
         true => (x(across_mm), y(along_mm)),

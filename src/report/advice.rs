@@ -144,6 +144,19 @@ pub struct Because {
     pub who: Vec<String>,
 }
 
+impl Because {
+    /// How many, and the first few by name: `7 (manual_users#2,
+    /// manual_users#5 and 5 more)`.
+    fn named(&self) -> String {
+        let more = self.people.saturating_sub(self.who.len());
+        let extra = match more {
+            0 => String::new(),
+            _ => format!(" and {more} more"),
+        };
+        format!("{} ({}{extra})", self.people, self.who.join(", "))
+    }
+}
+
 /// A standard's rule for the element, checked at each position.
 #[derive(Clone, Debug, PartialEq, Serialize, schemars::JsonSchema)]
 pub struct AdviceStandard {
@@ -532,9 +545,8 @@ impl AdviceReport {
         let Some(first) = advices.first() else {
             return Vec::new();
         };
-        let serves_at = |a: &AdviceReport, at: f64| {
-            (a.points.iter()).any(|p| p.at_mm == at && serving(p.reached, a.people, a.serves))
-        };
+        let serves_at =
+            |a: &AdviceReport, at: f64| (a.points.iter()).any(|p| p.at_mm == at && a.serves_at(p));
         let points = &first.points;
         runs(points.len(), |k| {
             advices.iter().all(|a| serves_at(a, points[k].at_mm))
@@ -544,8 +556,13 @@ impl AdviceReport {
         .collect()
     }
 
+    /// Whether `point`, one of this advice's, serves the share asked.
+    pub fn serves_at(&self, point: &AdvicePoint) -> bool {
+        serving(point.reached, self.people, self.serves)
+    }
+
     /// The served ranges in words: `800-1120 mm`, `nowhere`.
-    fn ranges_words(&self) -> String {
+    pub(super) fn ranges_words(&self) -> String {
         if self.ranges.is_empty() {
             return "nowhere".into();
         }
@@ -566,8 +583,8 @@ fn serving(reached: usize, people: usize, serves: f64) -> bool {
     people > 0 && reached as f64 >= serves * people as f64 - 1e-9
 }
 
-/// 0, 1, 2 for `x`, `y`, `z`.
-pub(super) fn axis_index(axis: &str) -> Option<usize> {
+/// 0, 1, 2 for the room's axis `x`, `y`, `z`.
+pub fn axis_index(axis: &str) -> Option<usize> {
     ["x", "y", "z"].iter().position(|a| *a == axis)
 }
 
@@ -747,18 +764,7 @@ impl AdviceReport {
     fn line_details(&self, out: &mut String) {
         let _ = writeln!(out, "  {}", self.series());
         for b in &self.nowhere {
-            let more = b.people.saturating_sub(b.who.len());
-            let extra = match more {
-                0 => String::new(),
-                _ => format!(" and {more} more"),
-            };
-            let _ = writeln!(
-                out,
-                "  reached nowhere by {} ({}{extra}): {}",
-                b.people,
-                b.who.join(", "),
-                b.verdict
-            );
+            let _ = writeln!(out, "  reached nowhere by {}: {}", b.named(), b.verdict);
         }
         if self.rescanned > 0 {
             let whom = match self.population {
@@ -893,16 +899,9 @@ impl AdviceReport {
         };
         let _ = writeln!(out, "    {side} it, at {what}");
         for b in &end.because {
-            let names = if self.population {
-                let more = b.people.saturating_sub(b.who.len());
-                let extra = if more > 0 {
-                    format!(" and {more} more")
-                } else {
-                    String::new()
-                };
-                format!("{} ({}{extra}): ", b.people, b.who.join(", "))
-            } else {
-                String::new()
+            let names = match self.population {
+                true => format!("{}: ", b.named()),
+                false => String::new(),
             };
             let _ = writeln!(out, "      {names}{}", b.verdict);
         }

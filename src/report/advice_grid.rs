@@ -8,7 +8,7 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::advice::{runs, span_words};
+use super::advice::runs;
 use super::population::percent;
 use super::{AdviceReport, TaskReport};
 
@@ -62,13 +62,7 @@ impl AdviceReport {
     pub(super) fn rows_lines(&self, out: &mut String) {
         for row in &self.rows {
             let Some(across) = &row.across else { continue };
-            let ranges: Vec<String> = (row.ranges.iter())
-                .map(|r| span_words(r.from_mm, r.to_mm))
-                .collect();
-            let served = match ranges.is_empty() {
-                true => "served nowhere".to_string(),
-                false => format!("served {}", ranges.join(", ")),
-            };
+            let served = format!("served {}", row.ranges_words());
             let tail = match (row.population, &row.best) {
                 (true, Some(b)) => format!("; most {} at {} mm", percent(b.share), b.at_mm),
                 (true, None) => "; no one reaches it".to_string(),

@@ -29,8 +29,8 @@ mod standard;
 mod why;
 
 pub use advice::{
-    AdviceFrame, AdvicePoint, AdviceReport, AdviceStandard, Because, PositionAnswer, RangeEnd,
-    ServedRange,
+    axis_index, AdviceFrame, AdvicePoint, AdviceReport, AdviceStandard, Because, PositionAnswer,
+    RangeEnd, ServedRange,
 };
 pub use advice_grid::{rows_of, Across};
 pub use advised_together::{AdvisedTogether, Span};

@@ -14,7 +14,7 @@ use crate::meter::{Meter, RunWork};
 use crate::plugin::TaskInput;
 use crate::progress::Progress;
 use crate::report::{
-    rows_of, AdviceFrame, AdviceReport, AdviceStandard, PositionAnswer, TaskReport,
+    axis_index, rows_of, AdviceFrame, AdviceReport, AdviceStandard, PositionAnswer, TaskReport,
 };
 
 impl Scenario {
@@ -132,11 +132,10 @@ impl Scenario {
             return None;
         }
         let room = &self.rooms[room];
-        let axis = |name: &str| ["x", "y", "z"].iter().position(|a| *a == name);
-        let along = axis(advice.along)?;
+        let along = axis_index(advice.along)?;
         let mut across_mm = Vector3::zeros();
         if let Some(across) = &advice.across {
-            let k = axis(across.axis)?;
+            let k = axis_index(across.axis)?;
             across_mm[k] = across.at_mm - advice.target_mm[k];
         }
         let mut names: Vec<&str> = vec![advice.name.as_str()];

@@ -27,7 +27,7 @@ use crate::plugin::{
     Dependence, EffectorNeed, Fit, Options, ParamSpec, Params, Plugin, Registry, Settings,
     SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
 };
-use crate::report::{Across, AdviceFrame, AdviceReport, PositionAnswer, TaskReport};
+use crate::report::{axis_index, Across, AdviceFrame, AdviceReport, PositionAnswer, TaskReport};
 use crate::scene::Room;
 
 /// The plugin `advise`.
@@ -248,7 +248,7 @@ impl Line {
         options: LineOptions,
         times: usize,
     ) -> Result<Line, SettingsError> {
-        let Some(index) = AXES.iter().position(|a| *a == axis) else {
+        let Some(index) = axis_index(axis) else {
             return Err(SettingsError::invalid(
                 options.axis,
                 format!("`{axis}` is not an axis of the room: use `x`, `y` or `z`"),
