@@ -77,8 +77,7 @@ pub fn svg(grid: &AdviceReport) -> String {
     );
     let mut s = page_start((WIDTH, HEIGHT), LEFT, &title);
     // A person's cells are reached or not: no outline says more.
-    let serves =
-        |p: &AdvicePoint| grid.population && p.reached > 0 && p.share >= grid.serves - 1e-9;
+    let serves = |p: &AdvicePoint| grid.population && grid.serves_at(p);
     for cell in &cells {
         let (h, v) = page(cell);
         let p = cell.point;
