@@ -26,6 +26,9 @@ pub struct Memo {
     /// A memo that keeps nothing: every value is worked out afresh (the
     /// allowance of a bench or a test of one computation).
     forgets: bool,
+    /// Set by [`Memo::cancel`]: every run keeping values here stops as a
+    /// run past its bound on work stops, and gives no answer.
+    cancelled: std::sync::atomic::AtomicBool,
 }
 
 impl std::fmt::Debug for Memo {
@@ -43,7 +46,28 @@ impl Memo {
         Memo {
             tables: Mutex::default(),
             forgets: true,
+            cancelled: Default::default(),
         }
+    }
+
+    /// Stop the runs that keep values here (an editor's run that the
+    /// next edit makes stale): each stops as a run past its bound stops,
+    /// with an error and no answer, and keeps only values worked out
+    /// whole. Until [`Memo::resume`].
+    pub fn cancel(&self) {
+        self.cancelled
+            .store(true, std::sync::atomic::Ordering::Relaxed);
+    }
+
+    /// Let runs keeping values here run again.
+    pub fn resume(&self) {
+        self.cancelled
+            .store(false, std::sync::atomic::Ordering::Relaxed);
+    }
+
+    /// Whether [`Memo::cancel`] stopped the runs.
+    pub fn cancelled(&self) -> bool {
+        self.cancelled.load(std::sync::atomic::Ordering::Relaxed)
     }
 
     fn lock(&self) -> MutexGuard<'_, HashMap<&'static str, Arc<dyn Any + Send + Sync>>> {

@@ -118,9 +118,9 @@ impl RunWork {
     }
 
     /// Whether the run has spent more than its limit (or a flight found
-    /// that it will).
+    /// that it will), or was cancelled ([`Memo::cancel`]).
     pub fn exceeded(&self) -> bool {
-        self.spent() > self.limit || self.stopped.load(Ordering::Relaxed)
+        self.spent() > self.limit || self.stopped.load(Ordering::Relaxed) || self.memo.cancelled()
     }
 
     fn flights(&self) -> std::sync::MutexGuard<'_, Flights> {

@@ -120,6 +120,12 @@ pub struct CacheStats {
 }
 
 impl TaskCache {
+    /// What its runs keep (floors, routes, capability maps): through it,
+    /// a run in flight is cancelled ([`Memo::cancel`]).
+    pub fn memo(&self) -> Arc<Memo> {
+        Arc::clone(&self.memo)
+    }
+
     /// Run the scenario, reusing the results of tasks whose inputs have not
     /// changed; afterwards the cache holds this run's results, and by full
     /// key those of the `GENERATIONS` runs before it. The
