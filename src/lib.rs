@@ -37,6 +37,8 @@ pub mod plugin;
 pub mod progress;
 pub mod report;
 pub mod suite;
+// What an editor asks of a scenario: the language server's library.
+pub mod editor;
 
 /// Modules that are the crate's own: private, but public (and hidden from
 /// the docs) where the `internals` feature is on, which only the crate's
@@ -188,23 +190,56 @@ impl<'a> Session<'a> {
         input: Input<'_>,
         registry: &Registry,
     ) -> (Sources, Result<Scenario, Diagnostics>) {
+        let (sources, _, checked) = self.check_loaded(input, registry);
+        (sources, checked)
+    }
+
+    /// Check a scenario as [`Session::check`] does, and outline the names
+    /// its files declare and use, for an editor.
+    pub fn analyse(&self, input: Input<'_>, registry: &Registry) -> editor::Analysis {
+        let (sources, files, checked) = self.check_loaded(input, registry);
+        let outline = files.map(|files| {
+            let asts = files.iter().map(|f| (f.id, &f.ast));
+            editor::Outline::of(asts, registry)
+        });
+        editor::Analysis {
+            sources,
+            outline,
+            checked,
+        }
+    }
+
+    /// Load and check: the sources, the files parsed (none where one
+    /// does not parse) and the check.
+    fn check_loaded(
+        &self,
+        input: Input<'_>,
+        registry: &Registry,
+    ) -> (
+        Sources,
+        Option<Vec<loader::LoadedFile>>,
+        Result<Scenario, Diagnostics>,
+    ) {
         // One budget of did-you-mean suggestions for the whole check.
         let suggestions = names::Suggestions::default();
         let (mut sources, loaded) =
             loader::load(input, &self.limits, self.also_allowed, &suggestions);
-        let result = loaded.and_then(|files| {
-            let (data_files, checked) = check::check(
-                &sources,
-                &files,
-                registry,
-                (&self.limits, self.built),
-                &suggestions,
-            );
-            sources.add_data_files(data_files);
-            checked
-        });
+        let (files, result) = match loaded {
+            Ok(files) => {
+                let (data_files, checked) = check::check(
+                    &sources,
+                    &files,
+                    registry,
+                    (&self.limits, self.built),
+                    &suggestions,
+                );
+                sources.add_data_files(data_files);
+                (Some(files), checked)
+            }
+            Err(d) => (None, Err(d)),
+        };
         let result = result.map_err(|d| d.attach(&sources));
-        (sources, result)
+        (sources, files, result)
     }
 
     /// Run every task of a checked scenario, in parallel; the report lists

@@ -217,7 +217,7 @@ fn declaration<'t>(lines: &[&'t str]) -> Vec<&'t str> {
 
 /// The body's joints (limits, which way is positive, the link each
 /// moves), effectors and legs, as a table.
-fn body_table(body: &crate::kinematics::Body) -> String {
+pub fn body_table(body: &crate::kinematics::Body) -> String {
     use crate::kinematics::JointKind;
     let mut out = String::from(
         "The body a scenario gets: each joint's limits (deg, or mm for a joint that slides; \

@@ -516,7 +516,7 @@ fn every_static_is_listed_with_what_it_holds() {
 /// with the reason it belongs to a program that uses the library.
 #[test]
 fn the_library_exports_the_run_api_and_the_plugin_sdk_only() {
-    const EXPORTED: [&str; 22] = [
+    const EXPORTED: [&str; 23] = [
         // What a run takes and gives, and the plugin SDK.
         "pub mod limits;",
         "pub mod machine_diagnostics;",
@@ -525,6 +525,8 @@ fn the_library_exports_the_run_api_and_the_plugin_sdk_only() {
         "pub mod progress;",
         "pub mod report;",
         "pub mod suite;",
+        // What an editor asks of a scenario: `reach lsp` is its client.
+        "pub mod editor;",
         // Watch mode's cache of answers, as the binary keeps one.
         "pub use cache::{CacheStats, Plan, TaskCache};",
         "pub use error::{Diagnostics, Error, ErrorKind};",

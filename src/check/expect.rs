@@ -63,6 +63,7 @@ impl Checker<'_> {
             text: decl.text.clone(),
             at: format!("{}:{line}", source.name),
             check,
+            span: decl.span,
         })
     }
 

@@ -35,7 +35,7 @@ const BOUNDS: [Bound; 2] = [
 ];
 
 /// The option block's parameters: each bound, optional.
-fn params() -> Vec<ParamSpec> {
+pub fn params() -> Vec<ParamSpec> {
     BOUNDS
         .iter()
         .map(|b| ParamSpec {

@@ -36,6 +36,7 @@ use crate::syntax::ast::{Item, LetDecl};
 use crate::units::{Quantity, Unit, UnitDefaults};
 use mesh::MeshFiles;
 
+pub use limits::params as limits_params;
 use table::Table;
 
 /// Check the loaded files (dependencies first, the root file last); also

@@ -13,6 +13,8 @@ pub struct ExpectSpec {
     /// `file:line` where it is written.
     pub at: String,
     pub check: ExpectCheck,
+    /// The `expect` declaration.
+    pub span: crate::span::Span,
 }
 
 /// What an expectation asks of which report entries (by index: the tasks,

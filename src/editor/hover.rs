@@ -1,0 +1,388 @@
+//! What a place in a scenario is, in Markdown, for an editor's hover: a
+//! name's declaration and what the check made of it (a target's place in
+//! its room, a box's corner and size, a person's body joint by joint and
+//! base with every option, a population's people; a standard library
+//! declaration as `reach stdlib NAME` describes it, with the sources of
+//! its figures), a plugin's or an option's doc, a number's value in mm or
+//! deg.
+
+use super::outline::{Found, OptionOwner, Outline, Symbol, SymbolKind};
+use crate::options::{ParamSpec, PluginKind, Settings};
+use crate::plugin::Registry;
+use crate::scenario::Scenario;
+use crate::source::Sources;
+use crate::span::FileId;
+use crate::syntax::ast::UseTarget;
+use crate::units::Unit;
+
+/// What hover shows at byte `offset` of file `file` (its index in
+/// `sources`; none where the place is nothing it knows).
+pub fn hover(
+    (sources, file, offset): (&Sources, usize, usize),
+    outline: Option<&Outline>,
+    scenario: Option<&Scenario>,
+    registry: &Registry,
+) -> Option<String> {
+    let file = FileId(u32::try_from(file).ok()?);
+    if file.0 as usize >= sources.len() {
+        return None;
+    }
+    let text = sources.get(file).text.as_str();
+    if let Some(number) = number_at(text, offset) {
+        return Some(number);
+    }
+    let found = outline?.at(file, offset)?;
+    let about = About {
+        sources,
+        scenario,
+        registry,
+    };
+    match found {
+        Found::Declaration(symbol) => Some(about.symbol(symbol)),
+        Found::Use(reference, symbols) => match symbols.as_slice() {
+            [] => std_declaration(&reference.name, reference.kinds)
+                .or_else(|| Some(format!("`{}`: not declared in these files", reference.name))),
+            found => Some(
+                found
+                    .iter()
+                    .map(|s| about.symbol(s))
+                    .collect::<Vec<_>>()
+                    .join("\n\n---\n\n"),
+            ),
+        },
+        Found::Plugin(p) => about.plugin(p.kind, &p.name),
+        Found::Option(o) => about.option(&o.owner, &o.name),
+        Found::Module(u) => Some(match &u.target {
+            UseTarget::Std(module) => {
+                crate::std_modules::entry(module, crate::std_texts::module(module)?)
+            }
+            UseTarget::Path(path) => format!("`{path}`: read from the directory of this file"),
+        }),
+    }
+}
+
+/// A standard library declaration of one of `kinds` named `name`, as
+/// `reach stdlib NAME` describes it.
+fn std_declaration(name: &str, kinds: &[SymbolKind]) -> Option<String> {
+    let described = kinds.iter().any(|k| {
+        matches!(
+            k,
+            SymbolKind::Mannequin
+                | SymbolKind::Profile
+                | SymbolKind::BasePreset
+                | SymbolKind::VisionPreset
+                | SymbolKind::Population
+        )
+    });
+    if !described {
+        return None;
+    }
+    crate::stdlib::describe(name)
+        .ok()
+        .map(|text| format!("```text\n{text}```"))
+}
+
+struct About<'a> {
+    sources: &'a Sources,
+    scenario: Option<&'a Scenario>,
+    registry: &'a Registry,
+}
+
+impl About<'_> {
+    fn symbol(&self, symbol: &Symbol) -> String {
+        let source = self.sources.get(symbol.span.file);
+        let text = source.text.as_str();
+        let whole = text
+            .get(symbol.whole.start as usize..symbol.whole.end as usize)
+            .unwrap_or_default();
+        let first_line = whole.lines().next().unwrap_or_default();
+        let line = source.line_column(symbol.span.start as usize).0;
+        let within = symbol
+            .container
+            .as_ref()
+            .map(|c| format!(" in `{c}`"))
+            .unwrap_or_default();
+        let mut out = format!(
+            "```reach\n{first_line}\n```\n{} `{}`{within}, {}:{line}",
+            symbol.kind.word(),
+            symbol.name,
+            source.name
+        );
+        if let Some(values) = self.values(symbol) {
+            out.push_str("\n\n");
+            out.push_str(&values);
+        }
+        out
+    }
+
+    /// What the check made of the declaration, where it checked.
+    fn values(&self, symbol: &Symbol) -> Option<String> {
+        if let Some(std) = self.std_entry(symbol) {
+            return Some(std);
+        }
+        let scenario = self.scenario?;
+        let room = || {
+            let name = symbol.container.as_deref()?;
+            scenario.rooms.iter().find(|r| r.name == name)
+        };
+        match symbol.kind {
+            SymbolKind::Room => {
+                let room = scenario.rooms.iter().find(|r| r.name == symbol.name)?;
+                Some(format!(
+                    "{} x {} x {} mm; {} boxes, {} meshes, {} targets, {} surfaces, {} doors",
+                    mm(room.size_mm.x),
+                    mm(room.size_mm.y),
+                    mm(room.size_mm.z),
+                    room.boxes.len(),
+                    room.meshes.len(),
+                    room.targets.len(),
+                    room.surfaces.len(),
+                    room.doors.len()
+                ))
+            }
+            SymbolKind::Target => {
+                let target = room()?.targets.iter().find(|t| t.name == symbol.name)?;
+                let p = target.position_mm;
+                Some(format!(
+                    "at ({}, {}, {}) mm in the room",
+                    mm(p.x),
+                    mm(p.y),
+                    mm(p.z)
+                ))
+            }
+            SymbolKind::Box => {
+                let b = room()?.boxes.iter().find(|b| b.name == symbol.name)?;
+                let (c, s) = (b.corner_mm, b.size_mm);
+                Some(format!(
+                    "corner ({}, {}, {}) mm, size {} x {} x {} mm, top at {} mm{}",
+                    mm(c.x),
+                    mm(c.y),
+                    mm(c.z),
+                    mm(s.x),
+                    mm(s.y),
+                    mm(s.z),
+                    mm(c.z + s.z),
+                    if b.yaw_rad != 0.0 {
+                        format!(", turned {} deg", mm(b.yaw_rad.to_degrees()))
+                    } else {
+                        String::new()
+                    }
+                ))
+            }
+            SymbolKind::Person => self.person(scenario, &symbol.name),
+            SymbolKind::Population => self.population(scenario, &symbol.name),
+            SymbolKind::BasePreset => self.base_preset(symbol),
+            _ => None,
+        }
+    }
+
+    /// A declaration of the standard library's: its entry of `reach
+    /// stdlib`.
+    fn std_entry(&self, symbol: &Symbol) -> Option<String> {
+        let source = self.sources.get(symbol.span.file);
+        if !matches!(source.origin, crate::source::Origin::Std(_)) {
+            return None;
+        }
+        let entry = crate::stdlib::describe(&symbol.name).ok()?;
+        Some(format!("```text\n{entry}```"))
+    }
+
+    fn person(&self, scenario: &Scenario, name: &str) -> Option<String> {
+        let person = scenario.persons.iter().find(|p| p.name == name)?;
+        let mut out = format!("mannequin `{}`", person.mannequin);
+        if crate::std_texts::home_of("mannequin", &person.mannequin).is_some() {
+            out.push_str(&format!(
+                " (the standard library's: `reach stdlib {}` gives the sources of its figures)",
+                person.mannequin
+            ));
+        }
+        out.push_str(&format!("; base `{}`", person.base.name));
+        let options: Vec<String> = (person.base.options.iter())
+            .map(|(k, v)| format!("{k} {}", v.display()))
+            .collect();
+        if !options.is_empty() {
+            out.push_str(&format!(" {{ {} }}", options.join(", ")));
+        }
+        out.push_str("\n\n```text\n");
+        out.push_str(&crate::stdlib::body_table(&person.body));
+        out.push_str("```");
+        Some(out)
+    }
+
+    fn population(&self, scenario: &Scenario, name: &str) -> Option<String> {
+        let population = scenario.populations.iter().find(|p| p.name == name)?;
+        let drawn = &population.drawn;
+        let women = drawn.iter().filter(|d| d.female).count();
+        let statures: Vec<f64> = drawn.iter().map(|d| d.stature_mm).collect();
+        let least = statures.iter().copied().fold(f64::INFINITY, f64::min);
+        let most = statures.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let first = scenario.persons.get(population.members.start)?;
+        Some(format!(
+            "{} people drawn from ANSUR II (seed {}), {women} women; statures {} to {} mm; \
+             mannequin `{}`, base `{}`",
+            drawn.len(),
+            population.seed,
+            mm(least),
+            mm(most),
+            first.mannequin,
+            first.base.name
+        ))
+    }
+
+    /// A preset's options, each given or at its plugin's default.
+    fn base_preset(&self, symbol: &Symbol) -> Option<String> {
+        let scenario = self.scenario?;
+        let person = scenario.persons.iter().find(|p| {
+            let source = self.sources.get(symbol.span.file);
+            let declared = &source.text[symbol.whole.start as usize..symbol.whole.end as usize];
+            declared.contains(&format!("= {}", p.base.name))
+        });
+        let plugin = person.map(|p| p.base.name.clone())?;
+        let params = self.registry.params(PluginKind::Base, &plugin)?;
+        Some(options_table(&params))
+    }
+
+    fn plugin(&self, kind: PluginKind, name: &str) -> Option<String> {
+        let plugin = (self.registry.of_kind(kind).into_iter()).find(|p| p.name() == name)?;
+        let mut out = format!("{} plugin `{name}`: {}", kind.noun(), plugin.doc());
+        let params = plugin.params();
+        if !params.is_empty() {
+            out.push_str("\n\n");
+            out.push_str(&options_table(&params));
+        }
+        Some(out)
+    }
+
+    fn option(&self, owner: &OptionOwner, name: &str) -> Option<String> {
+        let (params, whose) = match owner {
+            OptionOwner::Plugin(kind, plugin) => (
+                self.registry.params(*kind, plugin)?,
+                format!("{} `{plugin}`", kind.noun()),
+            ),
+            OptionOwner::Vision => (crate::scene::Vision::params(), "`vision`".into()),
+            OptionOwner::Limits => (crate::check::limits_params(), "`limits`".into()),
+        };
+        let param = params.iter().find(|p| p.name == name)?;
+        Some(format!(
+            "option `{name}` of {whose}\n\n{}",
+            option_line(param)
+        ))
+    }
+}
+
+/// Each option: its kind, its default, its doc.
+fn options_table(params: &[ParamSpec]) -> String {
+    let rows: Vec<String> = params
+        .iter()
+        .map(|p| format!("- `{}`: {}", p.name, option_line(p)))
+        .collect();
+    rows.join("\n")
+}
+
+fn option_line(param: &ParamSpec) -> String {
+    let default = match (&param.default, param.optional) {
+        (Some(v), _) => format!("default {}", v.display()),
+        (None, true) => "optional".into(),
+        (None, false) => "required".into(),
+    };
+    format!("{} ({default}): {}", param.kind.describe(), param.doc)
+}
+
+/// A length or an angle as hover shows it: to 0.1, without a trailing
+/// `.0`.
+fn mm(value: f64) -> String {
+    let rounded = (value * 10.0).round() / 10.0;
+    if rounded == rounded.trunc() {
+        format!("{}", rounded as i64)
+    } else {
+        format!("{rounded:.1}")
+    }
+}
+
+/// A number written at `offset`, with its unit: what it is in mm or deg
+/// (or, bare, what the file's `units` make it).
+fn number_at(text: &str, offset: usize) -> Option<String> {
+    let bytes = text.as_bytes();
+    let is_part = |b: u8| b.is_ascii_alphanumeric() || b == b'.' || b == b'_';
+    let mut start = offset.min(text.len());
+    while start > 0 && is_part(bytes[start - 1]) {
+        start -= 1;
+    }
+    let mut end = offset.min(text.len());
+    while end < bytes.len() && is_part(bytes[end]) {
+        end += 1;
+    }
+    let token = text.get(start..end)?;
+    if !token.starts_with(|c: char| c.is_ascii_digit()) {
+        return None;
+    }
+    let digits_end = number_end(token);
+    let value: f64 = token[..digits_end].parse().ok()?;
+    let mut unit_text = &token[digits_end..];
+    if unit_text.is_empty() && text[end..].trim_start_matches([' ', '\t']).starts_with('%') {
+        unit_text = "%";
+    }
+    if unit_text.is_empty() {
+        let (length, angle) = file_units(text);
+        return Some(format!(
+            "`{token}`: no unit, so the file's: {token} {length} where a length is meant, \
+             {token} {angle} where an angle is (`units` sets them)"
+        ));
+    }
+    let unit = match unit_text {
+        "%" => Unit::Percent,
+        other => Unit::parse(other)?,
+    };
+    let internal = value * unit.to_internal();
+    Some(match unit {
+        Unit::Percent => format!("`{token}`: a share, {}", internal),
+        u if u.is_length() => format!("`{token}` = {} mm", mm(internal)),
+        _ => format!("`{token}` = {} deg", trimmed(internal.to_degrees())),
+    })
+}
+
+/// Where a number's digits (and decimals, and exponent) end.
+fn number_end(token: &str) -> usize {
+    let bytes = token.as_bytes();
+    let mut k = bytes
+        .iter()
+        .take_while(|b| b.is_ascii_digit() || **b == b'.')
+        .count();
+    if matches!(bytes.get(k), Some(b'e' | b'E')) {
+        let mut j = k + 1;
+        if matches!(bytes.get(j), Some(b'+' | b'-')) {
+            j += 1;
+        }
+        if bytes.get(j).is_some_and(u8::is_ascii_digit) {
+            k = j + bytes[j..].iter().take_while(|b| b.is_ascii_digit()).count();
+        }
+    }
+    k
+}
+
+fn trimmed(value: f64) -> String {
+    let text = format!("{value:.4}");
+    text.trim_end_matches('0').trim_end_matches('.').to_string()
+}
+
+/// The file's default units for a length and an angle (`units mm deg`
+/// where it says nothing).
+fn file_units(text: &str) -> (&str, &str) {
+    let mut length = "mm";
+    let mut angle = "deg";
+    for line in text.lines() {
+        let Some(rest) = line.trim().strip_prefix("units ") else {
+            continue;
+        };
+        for word in rest.split_whitespace() {
+            match Unit::parse(word) {
+                Some(u) if u.is_length() => length = u.symbol(),
+                Some(Unit::Deg | Unit::Rad) => {
+                    angle = Unit::parse(word).map_or("deg", Unit::symbol)
+                }
+                _ => {}
+            }
+        }
+    }
+    (length, angle)
+}
