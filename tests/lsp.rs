@@ -3,7 +3,11 @@
 //! document opened with an error (its diagnostic at its place, in UTF-16,
 //! with the CLI's code and help), changed until mended (its diagnostics
 //! cleared), a document whose `use`d file has the error (published to that
-//! file), a request it does not answer, and shutdown.
+//! file), a request it does not answer, and shutdown; completion, hover,
+//! go to definition (into a used file and the standard library's text)
+//! and references on a document that `use`s another; the answers of a run
+//! after a save as code lenses and inlay hints, marked stale once the text
+//! changes, and an `expect` not met as a diagnostic.
 
 use std::io::{BufRead, BufReader, Write};
 use std::path::Path;
@@ -22,7 +26,17 @@ struct Client {
 
 impl Client {
     fn start() -> Client {
-        let mut child = Command::new(env!("CARGO_BIN_EXE_reach"))
+        Client::start_with(&[])
+    }
+
+    /// A server with these variables set (where it serves the standard
+    /// library's text from), its client asking for refreshes.
+    fn start_with(env: &[(&str, &Path)]) -> Client {
+        let mut command = Command::new(env!("CARGO_BIN_EXE_reach"));
+        for (name, value) in env {
+            command.env(name, value);
+        }
+        let mut child = command
             .arg("lsp")
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
@@ -48,7 +62,7 @@ impl Client {
         client.request(
             1,
             "initialize",
-            json!({ "capabilities": {}, "processId": null }),
+            json!({ "capabilities": { "workspace": { "codeLens": { "refreshSupport": true } } }, "processId": null }),
         );
         let answer = client.response(1);
         assert_eq!(
@@ -79,6 +93,12 @@ impl Client {
         self.from_server
             .recv_timeout(Duration::from_secs(60))
             .expect("the server answers")
+    }
+
+    /// Ask, and wait for the answer's result.
+    fn ask(&mut self, id: i64, method: &str, params: Value) -> Value {
+        self.request(id, method, params);
+        self.response(id)["result"].clone()
     }
 
     fn response(&self, id: i64) -> Value {
@@ -217,5 +237,226 @@ fn an_error_in_a_used_file_is_shown_in_that_file() {
     // A request the server does not answer is refused, not ignored.
     client.request(7, "textDocument/rename", json!({}));
     assert_eq!(client.response(7)["error"]["code"], -32601);
+    client.stop();
+}
+
+const USING: &str = "units mm
+use \"parts.reach\"
+use std::people
+room kitchen {
+  size 3m x 3000 x 2500
+  box counter at (0, 0, 0) size (600, 3000, cup_h)
+  target cup at (300, 1500, 950)
+  target jar at (100, 1500, 2400)
+}
+person ann { mannequin woman_5th_seated base wheelchair {  } }
+reach cup, jar by ann
+expect ann reaches jar
+";
+
+/// The position of the `k`-th (0-based) `needle` in `text`, plus `past`
+/// characters (all ASCII here).
+fn at(text: &str, needle: &str, k: usize, past: usize) -> Value {
+    let offset = text.match_indices(needle).nth(k).unwrap().0 + past;
+    let line = text[..offset].matches('\n').count();
+    let character = offset - text[..offset].rfind('\n').map_or(0, |n| n + 1);
+    json!({ "line": line, "character": character })
+}
+
+fn labels(items: &Value) -> Vec<String> {
+    let items = items.as_array().cloned().unwrap_or_default();
+    items
+        .iter()
+        .map(|i| i["label"].as_str().unwrap().to_string())
+        .collect()
+}
+
+#[test]
+fn completion_hover_definition_and_references_know_the_scenarios_names() {
+    let dir = tempfile::tempdir().unwrap();
+    let parts = dir.path().join("parts.reach");
+    std::fs::write(&parts, "units mm\nlet cup_h = 900\n").unwrap();
+    let path = dir.path().join("kitchen.reach");
+    let uri = file_uri(&path);
+    let cache = dir.path().join("cache");
+    let mut client = Client::start_with(&[("XDG_CACHE_HOME", &cache)]);
+    client.open(&uri, USING);
+    let doc = json!({ "uri": uri });
+    let position = |needle: &str, k: usize, past: usize| json!({ "textDocument": doc, "position": at(USING, needle, k, past) });
+    // Names after `by`, units after a number, a plugin's options in its
+    // block (with kind and default), keywords in a room.
+    let by = client.ask(2, "textDocument/completion", position("by ann", 0, 3));
+    assert!(labels(&by).contains(&"ann".to_string()), "{by}");
+    let units = client.ask(3, "textDocument/completion", position("3000 x", 0, 4));
+    assert!(labels(&units).contains(&"mm".to_string()), "{units}");
+    let options = client.ask(
+        4,
+        "textDocument/completion",
+        position("wheelchair {", 0, 13),
+    );
+    let seat = options
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|i| i["label"] == "seat_height");
+    let seat = seat.unwrap_or_else(|| panic!("seat_height in {options}"));
+    assert!(
+        seat["detail"]
+            .as_str()
+            .unwrap()
+            .starts_with("length, default"),
+        "{seat}"
+    );
+    let room = client.ask(5, "textDocument/completion", position("  box", 0, 2));
+    assert!(labels(&room).contains(&"target".to_string()), "{room}");
+    // A mannequin of the standard library the file does not use yet
+    // comes with the `use` it needs.
+    let alone = "room r { size 3000 x 3000 x 2500 }\nperson p { mannequin  }\n";
+    let alone_uri = file_uri(&dir.path().join("alone.reach"));
+    client.open(&alone_uri, alone);
+    let p =
+        json!({ "textDocument": { "uri": alone_uri }, "position": at(alone, "mannequin ", 0, 10) });
+    let mannequins = client.ask(6, "textDocument/completion", p);
+    let woman = mannequins
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|i| i["label"] == "woman_5th_seated");
+    let woman = woman.unwrap_or_else(|| panic!("woman_5th_seated in {mannequins}"));
+    assert_eq!(
+        woman["additionalTextEdits"][0]["newText"],
+        "use std::people\n"
+    );
+
+    // Hover: a target's place, a person's body, a number's value.
+    let cup = client.ask(7, "textDocument/hover", position("cup, jar", 0, 1));
+    let cup = cup["contents"]["value"].as_str().unwrap().to_string();
+    assert!(cup.contains("at (300, 1500, 950) mm"), "{cup}");
+    let ann = client.ask(8, "textDocument/hover", position("person ann", 0, 8));
+    let ann = ann["contents"]["value"].as_str().unwrap().to_string();
+    assert!(
+        ann.contains("woman_5th_seated") && ann.contains("elbow_flexion"),
+        "{ann}"
+    );
+    assert!(
+        ann.contains("base `wheelchair`") && ann.contains("seat_height"),
+        "{ann}"
+    );
+    let metres = client.ask(9, "textDocument/hover", position("3m", 0, 1));
+    assert_eq!(metres["contents"]["value"], "`3m` = 3000 mm");
+
+    // Definition: a constant of the used file, a mannequin of the
+    // standard library (served read-only).
+    let found = client.ask(10, "textDocument/definition", position("cup_h", 0, 1));
+    assert_eq!(found[0]["uri"], file_uri(&parts), "{found}");
+    assert_eq!(
+        found[0]["range"]["start"],
+        json!({ "line": 1, "character": 4 })
+    );
+    let found = client.ask(
+        11,
+        "textDocument/definition",
+        position("woman_5th_seated", 0, 1),
+    );
+    let std_uri = found[0]["uri"].as_str().unwrap().to_string();
+    assert!(std_uri.ends_with("/people.reach"), "{found}");
+    let std_path = url::Url::parse(&std_uri).unwrap().to_file_path().unwrap();
+    assert!(std_path.starts_with(&cache), "{std_path:?}");
+    assert!(std::fs::metadata(&std_path)
+        .unwrap()
+        .permissions()
+        .readonly());
+    let line = found[0]["range"]["start"]["line"].as_u64().unwrap() as usize;
+    let std_text = std::fs::read_to_string(&std_path).unwrap();
+    assert!(std_text
+        .lines()
+        .nth(line)
+        .unwrap()
+        .starts_with("mannequin woman_5th_seated"));
+
+    // References: the declaration, the task and the expectation.
+    let p = json!({
+        "textDocument": doc,
+        "position": at(USING, "target jar", 0, 8),
+        "context": { "includeDeclaration": true },
+    });
+    let found = client.ask(12, "textDocument/references", p);
+    let lines: Vec<u64> = found
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|l| l["range"]["start"]["line"].as_u64().unwrap())
+        .collect();
+    assert_eq!(lines, [7, 10, 11], "{found}");
+    client.stop();
+}
+
+#[test]
+fn a_runs_answers_come_back_as_code_lenses_and_go_stale_on_an_edit() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("parts.reach"),
+        "units mm\nlet cup_h = 900\n",
+    )
+    .unwrap();
+    let uri = file_uri(&dir.path().join("kitchen.reach"));
+    let mut client = Client::start();
+    client.open(&uri, USING);
+    client.notify(
+        "textDocument/didSave",
+        json!({ "textDocument": { "uri": uri } }),
+    );
+    // The run's answers: the `expect` not met published as a diagnostic
+    // on its line, then the client asked to refresh its lenses.
+    let mut unmet = Vec::new();
+    loop {
+        let message = client.next();
+        if message["method"] == "textDocument/publishDiagnostics" {
+            unmet = message["params"]["diagnostics"].as_array().unwrap().clone();
+        }
+        if message["method"] == "workspace/codeLens/refresh" {
+            break;
+        }
+    }
+    assert_eq!(unmet.len(), 1, "{unmet:?}");
+    assert_eq!(unmet[0]["range"]["start"]["line"], 11, "{unmet:?}");
+    let message = unmet[0]["message"].as_str().unwrap();
+    assert!(
+        message.contains("expectation NOT met: ann reaches jar"),
+        "{message}"
+    );
+    let doc = json!({ "textDocument": { "uri": uri } });
+    let lenses = client.ask(2, "textDocument/codeLens", doc.clone());
+    let titles: Vec<String> = lenses
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|l| l["command"]["title"].as_str().unwrap().to_string())
+        .collect();
+    assert_eq!(titles.len(), 2, "{lenses}");
+    assert!(
+        titles[0].starts_with("cup by ann: reachable "),
+        "{titles:?}"
+    );
+    assert!(titles[0].contains(" mm, comfort "), "{titles:?}");
+    assert!(
+        titles[1].starts_with("✗ jar by ann: NOT reachable: out of reach"),
+        "{titles:?}"
+    );
+    assert_eq!(lenses[0]["range"]["start"]["line"], 10);
+    let hints = client.ask(3, "textDocument/inlayHint", json!({
+        "textDocument": { "uri": uri },
+        "range": { "start": { "line": 0, "character": 0 }, "end": { "line": 12, "character": 0 } },
+    }));
+    let label = hints[0]["label"].as_str().unwrap();
+    assert!(
+        label.contains("cup by ann: reachable") && label.contains("jar by ann"),
+        "{hints}"
+    );
+    // An edit: the answers are stale until the next save's run.
+    client.change(&uri, 2, &USING.replace("2400", "2450"));
+    let lenses = client.ask(4, "textDocument/codeLens", doc);
+    let title = lenses[0]["command"]["title"].as_str().unwrap();
+    assert!(title.starts_with("(stale) cup by ann"), "{title}");
     client.stop();
 }

@@ -1,37 +1,54 @@
 //! `reach lsp` (in the binary, beside `reach watch`): a Language Server
-//! Protocol server over standard input and
-//! output, built on `lsp-server` (rust-analyzer's transport: plain
-//! threads and channels, as the rest of the tool is; no async runtime).
-//! Each open `.reach` document is checked as `reach check` checks its file
-//! (the same limits and file policy; its `use`s read from disk, from its
-//! directory) on every change, with the editor's text in place of the
-//! file's, and its diagnostics are published to the files they are in
-//! (`diagnostics.rs`), positions in UTF-16 (`position.rs`).
+//! Protocol server over standard input and output, built on `lsp-server`
+//! (rust-analyzer's transport: plain threads and channels, as the rest of
+//! the tool is; no async runtime). Each open `.reach` document is checked
+//! as `reach check` checks its file (the same limits and file policy; its
+//! `use`s read from disk, from its directory) on every change, with the
+//! editor's text in place of the file's, and its diagnostics are published
+//! to the files they are in (`diagnostics.rs`), positions in UTF-16
+//! (`position.rs`). Completion, hover, definition and references come from
+//! the library's `editor` module (`document.rs`); the standard library's
+//! modules are served read-only (`files.rs`). After a save the scenario
+//! runs in the background (`runner.rs`) and its answers come back as code
+//! lenses and inlay hints, and its unmet `expect`s as diagnostics.
 
 mod diagnostics;
+mod document;
+mod files;
 mod position;
 mod published;
+mod runner;
 mod uri;
 
 use std::collections::BTreeMap;
 use std::error::Error as StdError;
 use std::str::FromStr;
+use std::sync::Arc;
 
-use lsp_server::{Connection, ErrorCode, Message, Notification, Request, Response};
+use crossbeam_channel::{select, unbounded, Sender};
+use lsp_server::{Connection, ErrorCode, Message, Notification, Request, RequestId, Response};
 use lsp_types::notification::{
     DidChangeTextDocument, DidCloseTextDocument, DidOpenTextDocument, DidSaveTextDocument,
     Notification as _, PublishDiagnostics,
 };
+use lsp_types::request::{
+    CodeLensRequest, Completion, GotoDefinition, HoverRequest, InlayHintRequest, References,
+    Request as _,
+};
 use lsp_types::{
+    CodeLensOptions, CodeLensParams, CompletionOptions, CompletionParams,
     DidChangeTextDocumentParams, DidCloseTextDocumentParams, DidOpenTextDocumentParams,
-    InitializeResult, PublishDiagnosticsParams, SaveOptions, ServerCapabilities, ServerInfo,
-    TextDocumentSyncCapability, TextDocumentSyncKind, TextDocumentSyncOptions,
-    TextDocumentSyncSaveOptions, Uri,
+    DidSaveTextDocumentParams, GotoDefinitionParams, HoverParams, HoverProviderCapability,
+    InitializeParams, InitializeResult, InlayHintParams, OneOf, PublishDiagnosticsParams,
+    ReferenceParams, SaveOptions, ServerCapabilities, ServerInfo, TextDocumentSyncCapability,
+    TextDocumentSyncKind, TextDocumentSyncOptions, TextDocumentSyncSaveOptions, Uri,
 };
 
+use document::Document;
 use published::Published;
 use reach::plugin::Registry;
 use reach::{Input, Session};
+use runner::{Answers, Asked, Running};
 
 /// What went wrong with the connection (not with a document: those are
 /// diagnostics).
@@ -47,13 +64,14 @@ pub fn serve_stdio(session: Session<'_>, registry: &Registry) -> Result<(), Serv
 }
 
 /// Serve over `connection`: the handshake, then each message in turn
-/// until `shutdown`.
+/// until `shutdown`, the scenarios run on a thread beside.
 pub fn serve(
     connection: &Connection,
     session: Session<'_>,
     registry: &Registry,
 ) -> Result<(), ServerError> {
-    let (id, _params) = connection.initialize_start()?;
+    let (id, params) = connection.initialize_start()?;
+    let params: InitializeParams = serde_json::from_value(params).unwrap_or_default();
     let result = InitializeResult {
         capabilities: capabilities(),
         server_info: Some(ServerInfo {
@@ -62,30 +80,53 @@ pub fn serve(
         }),
     };
     connection.initialize_finish(id, serde_json::to_value(result)?)?;
-    let mut server = Server {
-        connection,
-        session,
-        registry,
-        open: BTreeMap::new(),
-        published: Published::default(),
-    };
-    for message in &connection.receiver {
-        match message {
-            Message::Request(request) => {
-                if connection.handle_shutdown(&request)? {
-                    return Ok(());
-                }
-                server.refuse(request)?;
-            }
-            Message::Notification(notification) => server.notified(notification)?,
-            Message::Response(_) => {}
+    let (ask, asked) = unbounded::<Asked>();
+    let (answer, answers) = unbounded::<Answers>();
+    let running = Running::default();
+    std::thread::scope(|scope| {
+        let runs = Arc::clone(&running);
+        scope.spawn(move || runner::serve_runs(&asked, &answer, &runs, (session, registry)));
+        let mut server = Server {
+            connection,
+            session,
+            registry,
+            open: BTreeMap::new(),
+            published: Published::default(),
+            ask,
+            running,
+            refresh: refreshes(&params),
+            next_request: 0,
+        };
+        let served = server.serve(&answers);
+        // The run thread ends once nothing more can be asked of it, and
+        // its run in flight is cancelled.
+        let running = Arc::clone(&server.running);
+        drop(server);
+        if let Some((_, memo)) = running.lock().unwrap_or_else(|e| e.into_inner()).as_ref() {
+            memo.cancel();
         }
-    }
-    Ok(())
+        served
+    })
+}
+
+/// Which of the client's views of the answers it asks the server to
+/// refresh once a run is done: code lenses, inlay hints.
+fn refreshes(params: &InitializeParams) -> (bool, bool) {
+    let workspace = params.capabilities.workspace.as_ref();
+    let lenses = workspace
+        .and_then(|w| w.code_lens.as_ref())
+        .and_then(|c| c.refresh_support)
+        .unwrap_or(false);
+    let hints = workspace
+        .and_then(|w| w.inlay_hint.as_ref())
+        .and_then(|c| c.refresh_support)
+        .unwrap_or(false);
+    (lenses, hints)
 }
 
 /// The whole text on every change (a scenario is checked whole anyway),
-/// and a word on save (a file that others `use` changes on disk then).
+/// and a word on save (a file that others `use` changes on disk then; the
+/// scenario runs).
 fn capabilities() -> ServerCapabilities {
     ServerCapabilities {
         text_document_sync: Some(TextDocumentSyncCapability::Options(
@@ -98,6 +139,17 @@ fn capabilities() -> ServerCapabilities {
                 ..TextDocumentSyncOptions::default()
             },
         )),
+        completion_provider: Some(CompletionOptions {
+            trigger_characters: Some([" ", ":", "{", ",", "["].map(String::from).to_vec()),
+            ..CompletionOptions::default()
+        }),
+        hover_provider: Some(HoverProviderCapability::Simple(true)),
+        definition_provider: Some(OneOf::Left(true)),
+        references_provider: Some(OneOf::Left(true)),
+        code_lens_provider: Some(CodeLensOptions {
+            resolve_provider: Some(false),
+        }),
+        inlay_hint_provider: Some(OneOf::Left(true)),
         ..ServerCapabilities::default()
     }
 }
@@ -106,37 +158,90 @@ struct Server<'c, 's> {
     connection: &'c Connection,
     session: Session<'s>,
     registry: &'s Registry,
-    /// Each open document's text, as the editor holds it, by its URI.
-    open: BTreeMap<String, String>,
+    /// Each open document, by its URI.
+    open: BTreeMap<String, Document>,
     published: Published,
+    /// Runs asked of the run thread.
+    ask: Sender<Asked>,
+    running: Running,
+    /// Whether to ask the client to refresh code lenses, inlay hints.
+    refresh: (bool, bool),
+    next_request: i32,
 }
 
 impl Server<'_, '_> {
+    /// Each message of the editor's and each run's answers, until
+    /// `shutdown`.
+    fn serve(&mut self, answers: &crossbeam_channel::Receiver<Answers>) -> Result<(), ServerError> {
+        let receiver = &self.connection.receiver;
+        loop {
+            select! {
+                recv(receiver) -> message => {
+                    let Ok(message) = message else { return Ok(()) };
+                    match message {
+                        Message::Request(request) => {
+                            if self.connection.handle_shutdown(&request)? {
+                                return Ok(());
+                            }
+                            self.answer(request)?;
+                        }
+                        Message::Notification(n) => self.notified(n)?,
+                        Message::Response(_) => {}
+                    }
+                }
+                recv(answers) -> ran => {
+                    if let Ok(ran) = ran {
+                        self.answered(ran)?;
+                    }
+                }
+            }
+        }
+    }
+
     fn notified(&mut self, notification: Notification) -> Result<(), ServerError> {
         match notification.method.as_str() {
             DidOpenTextDocument::METHOD => {
                 let p: DidOpenTextDocumentParams = serde_json::from_value(notification.params)?;
-                let uri = p.text_document.uri.as_str().to_string();
-                self.open.insert(uri.clone(), p.text_document.text);
-                self.check(&uri)
+                let name = p.text_document.uri.as_str().to_string();
+                let analysis = self.analyse(&p.text_document.uri, &p.text_document.text);
+                let document = Document {
+                    uri: p.text_document.uri,
+                    text: p.text_document.text,
+                    edit: 0,
+                    last_outline: analysis.outline.clone(),
+                    analysis,
+                    answers: None,
+                };
+                self.open.insert(name.clone(), document);
+                self.publish_check(&name)?;
+                self.ask_run(&name);
+                Ok(())
             }
             DidChangeTextDocument::METHOD => {
                 let p: DidChangeTextDocumentParams = serde_json::from_value(notification.params)?;
+                let name = p.text_document.uri.as_str().to_string();
                 // Full sync: the last change is the whole text.
-                let uri = p.text_document.uri.as_str().to_string();
                 if let Some(change) = p.content_changes.into_iter().last() {
-                    self.open.insert(uri.clone(), change.text);
+                    self.cancel_run(&name);
+                    if let Some(document) = self.open.get_mut(&name) {
+                        document.text = change.text;
+                        document.edit += 1;
+                    }
                 }
-                self.check(&uri)
+                self.check(&name)
             }
             DidSaveTextDocument::METHOD => {
+                let p: DidSaveTextDocumentParams = serde_json::from_value(notification.params)?;
                 // Another open document may use the file saved.
                 let open: Vec<String> = self.open.keys().cloned().collect();
-                open.iter().try_for_each(|uri| self.check(uri))
+                open.iter().try_for_each(|uri| self.check(uri))?;
+                self.ask_run(p.text_document.uri.as_str());
+                Ok(())
             }
             DidCloseTextDocument::METHOD => {
                 let p: DidCloseTextDocumentParams = serde_json::from_value(notification.params)?;
                 let uri = p.text_document.uri.as_str();
+                self.cancel_run(uri);
                 self.open.remove(uri);
                 let changed = self.published.set(uri, BTreeMap::new());
                 self.publish(changed)
@@ -145,24 +250,172 @@ impl Server<'_, '_> {
         }
     }
 
-    /// Check the open document `uri` and publish what changed.
-    fn check(&mut self, name: &str) -> Result<(), ServerError> {
-        let Some(text) = self.open.get(name) else {
-            return Ok(());
+    /// A request: answered, or refused where the server does not know it.
+    fn answer(&mut self, request: Request) -> Result<(), ServerError> {
+        let id = request.id.clone();
+        let result = match request.method.as_str() {
+            Completion::METHOD => {
+                let p: CompletionParams = serde_json::from_value(request.params)?;
+                let at = p.text_document_position;
+                let items = (self.document(&at.text_document.uri))
+                    .map(|d| d.completion(at.position, self.registry))
+                    .unwrap_or_default();
+                serde_json::to_value(items)?
+            }
+            HoverRequest::METHOD => {
+                let p: HoverParams = serde_json::from_value(request.params)?;
+                let at = p.text_document_position_params;
+                let hover = (self.document(&at.text_document.uri))
+                    .and_then(|d| d.hover(at.position, self.registry));
+                serde_json::to_value(hover)?
+            }
+            GotoDefinition::METHOD => {
+                let p: GotoDefinitionParams = serde_json::from_value(request.params)?;
+                let at = p.text_document_position_params;
+                let found = (self.document(&at.text_document.uri))
+                    .map(|d| d.definition(at.position))
+                    .unwrap_or_default();
+                serde_json::to_value(found)?
+            }
+            References::METHOD => {
+                let p: ReferenceParams = serde_json::from_value(request.params)?;
+                let at = p.text_document_position;
+                let with = p.context.include_declaration;
+                let found = (self.document(&at.text_document.uri))
+                    .map(|d| d.references(at.position, with))
+                    .unwrap_or_default();
+                serde_json::to_value(found)?
+            }
+            CodeLensRequest::METHOD => {
+                let p: CodeLensParams = serde_json::from_value(request.params)?;
+                let lenses = (self.document(&p.text_document.uri))
+                    .map(Document::code_lenses)
+                    .unwrap_or_default();
+                serde_json::to_value(lenses)?
+            }
+            InlayHintRequest::METHOD => {
+                let p: InlayHintParams = serde_json::from_value(request.params)?;
+                let hints = (self.document(&p.text_document.uri))
+                    .map(Document::inlay_hints)
+                    .unwrap_or_default();
+                serde_json::to_value(hints)?
+            }
+            _ => return self.refuse(request),
         };
-        let uri = Uri::from_str(name)?;
-        let path = uri::path_of(&uri);
+        let response = Response::new_ok(id, result);
+        self.connection.sender.send(response.into())?;
+        Ok(())
+    }
+
+    fn document(&self, uri: &Uri) -> Option<&Document> {
+        self.open.get(uri.as_str())
+    }
+
+    /// The check of `text` as the document `uri` (its `use`s from its
+    /// directory where it is a file).
+    fn analyse(&self, uri: &Uri, text: &str) -> reach::editor::Analysis {
+        let path = uri::path_of(uri);
+        let name = uri.as_str();
         let input = match &path {
             Some(path) => Input::Edited { path, text },
             None => Input::Text { name, text },
         };
-        let (sources, checked) = self.session.check(input, self.registry);
-        let found = match checked {
-            Ok(_) => BTreeMap::new(),
-            Err(d) => diagnostics::by_file(&uri, &sources, &d),
+        self.session.analyse(input, self.registry)
+    }
+
+    /// Check the open document `name` again and publish what changed.
+    fn check(&mut self, name: &str) -> Result<(), ServerError> {
+        let Some(document) = self.open.get(name) else {
+            return Ok(());
         };
+        let analysis = self.analyse(&document.uri, &document.text);
+        if let Some(document) = self.open.get_mut(name) {
+            if analysis.outline.is_some() {
+                document.last_outline = analysis.outline.clone();
+            }
+            document.analysis = analysis;
+        }
+        self.publish_check(name)
+    }
+
+    /// Publish the diagnostics of `name`'s last check, and its last run's
+    /// unmet `expect`s (while the text is the one run).
+    fn publish_check(&mut self, name: &str) -> Result<(), ServerError> {
+        let Some(document) = self.open.get(name) else {
+            return Ok(());
+        };
+        let mut found = match &document.analysis.checked {
+            Ok(_) => BTreeMap::new(),
+            Err(d) => diagnostics::by_file(&document.uri, &document.analysis.sources, d),
+        };
+        if let Some(answers) = document
+            .answers
+            .as_ref()
+            .filter(|a| a.edit == document.edit)
+        {
+            if !answers.unmet.is_empty() {
+                let mine = found.entry(name.to_string()).or_default();
+                mine.extend(answers.unmet.iter().cloned());
+            }
+        }
         let changed = self.published.set(name, found);
         self.publish(changed)
+    }
+
+    /// Ask the run thread to run `name`'s scenario, where its check
+    /// passed (cancelling its run in flight).
+    fn ask_run(&mut self, name: &str) {
+        self.cancel_run(name);
+        let Some(document) = self.open.get(name) else {
+            return;
+        };
+        let Ok(scenario) = &document.analysis.checked else {
+            return;
+        };
+        let _ = self.ask.send(Asked {
+            uri: name.to_string(),
+            edit: document.edit,
+            path: uri::path_of(&document.uri),
+            text: document.text.clone(),
+            scenario: scenario.clone(),
+        });
+    }
+
+    /// Cancel `name`'s run in flight, if one is.
+    fn cancel_run(&self, name: &str) {
+        let running = self.running.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some((uri, memo)) = running.as_ref() {
+            if uri == name {
+                memo.cancel();
+            }
+        }
+    }
+
+    /// A run's answers: kept with their document, its unmet `expect`s
+    /// published, the client asked to show them again.
+    fn answered(&mut self, ran: Answers) -> Result<(), ServerError> {
+        let name = ran.uri.clone();
+        let Some(document) = self.open.get_mut(&name) else {
+            return Ok(());
+        };
+        document.answers = Some(ran);
+        self.publish_check(&name)?;
+        let (lenses, hints) = self.refresh;
+        if lenses {
+            self.request_of_client("workspace/codeLens/refresh")?;
+        }
+        if hints {
+            self.request_of_client("workspace/inlayHint/refresh")?;
+        }
+        Ok(())
+    }
+
+    fn request_of_client(&mut self, method: &str) -> Result<(), ServerError> {
+        self.next_request += 1;
+        let id = RequestId::from(format!("reach-{}", self.next_request));
+        let request = Request::new(id, method.to_string(), serde_json::Value::Null);
+        self.connection.sender.send(request.into())?;
+        Ok(())
     }
 
     /// Send each file's diagnostics, as every open document's checks now

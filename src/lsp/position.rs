@@ -33,6 +33,24 @@ impl<'t> LineIndex<'t> {
         Position::new(line as u32, character as u32)
     }
 
+    /// The byte offset of `position` (past a line's end: its end; past
+    /// the last line: the text's end).
+    pub fn offset(&self, position: Position) -> usize {
+        let Some(&start) = self.starts.get(position.line as usize) else {
+            return self.text.len();
+        };
+        let end =
+            (self.starts.get(position.line as usize + 1)).map_or(self.text.len(), |&next| next - 1);
+        let mut units = 0;
+        for (k, c) in self.text[start..end].char_indices() {
+            if units >= position.character as usize {
+                return start + k;
+            }
+            units += c.len_utf16();
+        }
+        end
+    }
+
     /// The range of bytes `start..end`.
     pub fn range(&self, start: usize, end: usize) -> Range {
         Range::new(self.position(start), self.position(end.max(start)))
@@ -60,6 +78,13 @@ mod tests {
             index.position(text.find('😀').unwrap() + 1),
             Position::new(1, 2)
         );
+        // And back.
+        for needle in ["ab", "c", "😀", "x", "last"] {
+            let offset = text.find(needle).unwrap();
+            assert_eq!(index.offset(index.position(offset)), offset, "{needle}");
+        }
+        assert_eq!(index.offset(Position::new(0, 99)), 2, "past a line's end");
+        assert_eq!(index.offset(Position::new(9, 0)), text.len());
         let x = text.find('x').unwrap();
         assert_eq!(
             index.range(x, x + 1),

@@ -1,0 +1,151 @@
+//! The background run that puts the answers beside the lines: after a save
+//! (and on opening), the checked scenario runs on a thread of its own
+//! through the document's own answer cache (watch mode's `TaskCache`),
+//! within the same limits; where the bound on work stops it, the answers
+//! of the tasks before the stop (`Session::run_partly`, on the text
+//! checked afresh). An edit cancels the run in flight ([`reach::Memo::cancel`]):
+//! it stops as a run past its bound does and its answers are dropped. Of
+//! several runs asked for before one starts, each document's last runs.
+
+use std::collections::BTreeMap;
+use std::path::PathBuf;
+use std::sync::{Arc, Mutex};
+
+use crossbeam_channel::{Receiver, Sender};
+use lsp_types::{Diagnostic, DiagnosticSeverity, NumberOrString, Range};
+
+use super::position::LineIndex;
+use reach::plugin::Registry;
+use reach::progress::NoProgress;
+use reach::{Input, Memo, Scenario, Session, TaskCache};
+
+/// A run asked for: the document, its edit count and text when checked,
+/// and the scenario its check gave.
+pub struct Asked {
+    pub uri: String,
+    pub edit: u64,
+    pub path: Option<PathBuf>,
+    pub text: String,
+    pub scenario: Scenario,
+}
+
+/// A run's answers, placed on the lines of the text it ran.
+pub struct Answers {
+    pub uri: String,
+    pub edit: u64,
+    /// Each answer's verdict at its declaration's range.
+    pub lenses: Vec<(Range, bool, String)>,
+    /// The `expect`s not met, as diagnostics.
+    pub unmet: Vec<Diagnostic>,
+    /// Where the bound on work stopped the run, why.
+    pub stopped: Option<String>,
+}
+
+/// The document whose run is in flight, and the memo that cancels it.
+pub type Running = Arc<Mutex<Option<(String, Arc<Memo>)>>>;
+
+/// Run what `asked` brings, one at a time, until it closes; the answers
+/// go to `answers` (a cancelled run's are dropped).
+pub fn serve_runs(
+    asked: &Receiver<Asked>,
+    answers: &Sender<Answers>,
+    running: &Running,
+    (session, registry): (Session<'_>, &Registry),
+) {
+    let mut caches: BTreeMap<String, TaskCache> = BTreeMap::new();
+    while let Ok(first) = asked.recv() {
+        // The last asked of each document.
+        let mut latest: BTreeMap<String, Asked> = BTreeMap::new();
+        latest.insert(first.uri.clone(), first);
+        for more in asked.try_iter() {
+            latest.insert(more.uri.clone(), more);
+        }
+        for (uri, one) in latest {
+            let cache = caches.entry(uri.clone()).or_default();
+            let memo = cache.memo();
+            *lock(running) = Some((uri, Arc::clone(&memo)));
+            let ran = run_one(&one, cache, (session, registry));
+            *lock(running) = None;
+            let cancelled = memo.cancelled();
+            memo.resume();
+            if !cancelled && answers.send(ran).is_err() {
+                return;
+            }
+        }
+    }
+}
+
+fn lock(running: &Running) -> std::sync::MutexGuard<'_, Option<(String, Arc<Memo>)>> {
+    running.lock().unwrap_or_else(|e| e.into_inner())
+}
+
+/// Run one document's scenario: through its cache, or as far as the
+/// bound allows.
+fn run_one(
+    asked: &Asked,
+    cache: &mut TaskCache,
+    (session, registry): (Session<'_>, &Registry),
+) -> Answers {
+    let (report, stopped) = match cache.run(&asked.scenario, &NoProgress) {
+        Ok((report, _)) => (report, None),
+        Err(_) => {
+            let again = || {
+                let input = match &asked.path {
+                    Some(path) => Input::Edited {
+                        path,
+                        text: &asked.text,
+                    },
+                    None => Input::Text {
+                        name: &asked.uri,
+                        text: &asked.text,
+                    },
+                };
+                session.check(input, registry).1.ok()
+            };
+            let ran = session.run_partly(&asked.scenario, &again);
+            (ran.report, ran.stopped.map(|e| e.to_string()))
+        }
+    };
+    let index = LineIndex::new(&asked.text);
+    let range = |span: (u32, u32)| index.range(span.0 as usize, span.1 as usize);
+    let root = root_file(&asked.scenario);
+    let in_root = |file: u32| Some(file) == root;
+    let lenses = reach::editor::verdicts(&asked.scenario, &report)
+        .into_iter()
+        .filter(|v| in_root(v.span.file.0))
+        .map(|v| (first_line(range((v.span.start, v.span.end))), v.ok, v.text))
+        .collect();
+    let unmet = reach::editor::unmet(&asked.scenario, &report)
+        .into_iter()
+        .filter(|u| in_root(u.span.file.0))
+        .map(|u| Diagnostic {
+            range: range((u.span.start, u.span.end)),
+            severity: Some(DiagnosticSeverity::ERROR),
+            code: Some(NumberOrString::String("expectation".into())),
+            source: Some("reach run".into()),
+            message: u.text,
+            ..Diagnostic::default()
+        })
+        .collect();
+    Answers {
+        uri: asked.uri.clone(),
+        edit: asked.edit,
+        lenses,
+        unmet,
+        stopped,
+    }
+}
+
+/// The file the tasks are declared in (the root's: only its tasks run).
+fn root_file(scenario: &Scenario) -> Option<u32> {
+    let task = scenario.tasks.first().map(|t| t.span.file.0);
+    task.or_else(|| scenario.standards.first().map(|s| s.span.file.0))
+}
+
+/// A range cut to its first line (a lens sits on a declaration's line).
+fn first_line(range: Range) -> Range {
+    if range.end.line == range.start.line {
+        return range;
+    }
+    Range::new(range.start, range.start)
+}
