@@ -437,3 +437,40 @@ reach t1, t2 by w
         assert!(!kept_away && !r.why.is_empty(), "{target}: {:?}", r.why);
     }
 }
+
+/// A standing person on a fixed base whose hip point is put lower than
+/// their standing hip height (930 mm for `upper_body`) has their feet in
+/// the floor: every posture loses its balance "no room for the feet", and
+/// the why names what the feet meet, the floor (it named nothing: "blocked
+/// by " and no name). At their hip height the same cup is reached.
+#[test]
+fn feet_put_into_the_floor_by_a_fixed_base_name_the_floor() {
+    let text = |hip_mm: f64| {
+        format!(
+            "units mm
+use std::people
+use std::body
+room kitchen {{
+  size 3000 x 3000 x 2500
+  target cup at (1200, 700, 1300)
+}}
+person ann {{ mannequin upper_body base fixed {{ at (800, 700, {hip_mm}) }} }}
+reach cup by ann
+"
+        )
+    };
+    let low = run(&text(900.0));
+    let cup = reach_of(&low, "cup", "ann");
+    assert!(!cup.ok, "{cup:?}");
+    assert_eq!(
+        cup.why,
+        [Why::Obstacles {
+            names: vec!["the floor".into()],
+            together: false
+        }]
+    );
+    assert_eq!(cup.why[0].short(), "blocked by the floor");
+    let at_hip_height = run(&text(930.0));
+    let cup = reach_of(&at_hip_height, "cup", "ann");
+    assert!(cup.ok && cup.why.is_empty(), "{cup:?}");
+}

@@ -166,7 +166,41 @@ impl PlacedObstacles<'_> {
             add(Blocker::Body(v.owners[i]));
         }
         if let Some(c) = self.balance_hit(chain, &v, end_allowance_mm) {
+            // What keeps the feet from where the balance needs them (a
+            // plinth; the floor, where a fixed base's hips are too low).
+            if c.blocker == Blocker::Balance(Tipping::NoFooting) {
+                self.footing_hits(&v).into_iter().for_each(&mut add);
+            }
             add(c.blocker);
+        }
+        met
+    }
+
+    /// Standing, the room's obstacles and sides the legs meet where the
+    /// balance of `v` puts them (but those a moving base placed them
+    /// against as they are).
+    fn footing_hits(&self, v: &Volumes) -> Vec<Blocker> {
+        let Some(balance) = self.own.balance.as_ref() else {
+            return Vec::new();
+        };
+        let Ok(feet_mm) = balance.feet_moved_mm(v) else {
+            return Vec::new();
+        };
+        let upright = balance.upright_legs();
+        let moved =
+            (feet_mm != Vector2::zeros()).then(|| balance.legs().standing_feet_moved(feet_mm));
+        let mut met = Vec::new();
+        for (up, now) in upright.iter().zip(moved.as_deref().unwrap_or(upright)) {
+            let (Shape::Capsule(up), Shape::Capsule(now)) = (&up.shape, &now.shape) else {
+                continue;
+            };
+            for b in self.obstacles.capsule_hits(&self.in_room(now)) {
+                let placed_so = self.own.feet_placed
+                    && (self.obstacles.capsule_hits(&self.in_room(up))).any(|u| u == b);
+                if !placed_so && !met.contains(&b) {
+                    met.push(b);
+                }
+            }
         }
         met
     }
