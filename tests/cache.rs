@@ -598,3 +598,38 @@ proptest! {
         each_cached_is_fresh(&[("plate.obj", &plate(12))], &texts)?;
     }
 }
+
+/// A run cancelled through the cache's memo (an editor's, by the next
+/// edit) gives no answer, and leaves nothing behind that changes the
+/// answers after it: cancelled before it starts, and at several moments
+/// while it runs, the next run's report is a fresh run's.
+#[test]
+fn a_cancelled_run_gives_no_answer_and_leaves_the_cache_sound() {
+    let text = "use std::people\nroom r {\n  size 3000 x 3000 x 2500\n  door d at (3000, 1500) width 900mm\n  box counter at (0, 0, 0) size (600, 3000, 900)\n  box shelf at (0, 0, 1400) size (350, 3000, 20)\n  target mug at (300, 1500, 950)\n  target tin at (200, 1500, 1420)\n}\nperson ann { mannequin woman_5th_seated base wheelchair }\nperson ben { mannequin man_50th base trolley }\nreach mug, tin by ann, ben\nmap counter.top by ann { step 150mm }\n";
+    let scenario = checked(text).unwrap();
+    let fresh = reach::Session::default().run(&scenario).unwrap().report;
+    let mut cache = TaskCache::default();
+    cache.memo().cancel();
+    assert!(
+        cache.run(&scenario, &NoProgress).is_err(),
+        "cancelled before it starts"
+    );
+    cache.memo().resume();
+    for after_ms in [5, 40, 150] {
+        let mut cache = TaskCache::default();
+        let memo = cache.memo();
+        let cancelling = std::thread::spawn(move || {
+            std::thread::sleep(std::time::Duration::from_millis(after_ms));
+            memo.cancel();
+        });
+        let first = cache.run(&scenario, &NoProgress);
+        cancelling.join().unwrap();
+        if let Ok((report, _)) = &first {
+            // Finished before the cancel came.
+            assert_eq!(json(report), json(&fresh));
+        }
+        cache.memo().resume();
+        let (again, _) = cache.run(&scenario, &NoProgress).unwrap();
+        assert_eq!(json(&again), json(&fresh), "cancelled after {after_ms} ms");
+    }
+}
