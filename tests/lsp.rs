@@ -288,7 +288,15 @@ fn completion_hover_definition_and_references_know_the_scenarios_names() {
     let by = client.ask(2, "textDocument/completion", position("by ann", 0, 3));
     assert!(labels(&by).contains(&"ann".to_string()), "{by}");
     let units = client.ask(3, "textDocument/completion", position("3000 x", 0, 4));
-    assert!(labels(&units).contains(&"mm".to_string()), "{units}");
+    let mm = units
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|i| i["label"] == "mm");
+    let mm = mm.unwrap_or_else(|| panic!("mm in {units}"));
+    // It goes after the digits, and is filtered by the whole word.
+    assert_eq!(mm["textEdit"]["range"]["start"], at(USING, "3000 x", 0, 4));
+    assert_eq!(mm["filterText"], "3000mm");
     let options = client.ask(
         4,
         "textDocument/completion",
@@ -388,6 +396,17 @@ fn completion_hover_definition_and_references_know_the_scenarios_names() {
         .map(|l| l["range"]["start"]["line"].as_u64().unwrap())
         .collect();
     assert_eq!(lines, [7, 10, 11], "{found}");
+    // From the used file, open too: its uses in the file that uses it.
+    let parts_text = std::fs::read_to_string(&parts).unwrap();
+    client.open(&file_uri(&parts), &parts_text);
+    let p = json!({
+        "textDocument": { "uri": file_uri(&parts) },
+        "position": { "line": 1, "character": 5 },
+        "context": { "includeDeclaration": false },
+    });
+    let found = client.ask(13, "textDocument/references", p);
+    assert_eq!(found[0]["uri"], uri, "{found}");
+    assert_eq!(found[0]["range"]["start"]["line"], 5, "{found}");
     client.stop();
 }
 
@@ -453,10 +472,12 @@ fn a_runs_answers_come_back_as_code_lenses_and_go_stale_on_an_edit() {
         label.contains("cup by ann: reachable") && label.contains("jar by ann"),
         "{hints}"
     );
-    // An edit: the answers are stale until the next save's run.
-    client.change(&uri, 2, &USING.replace("2400", "2450"));
+    // An edit: the answers are stale until the next save's run, and move
+    // with their lines.
+    client.change(&uri, 2, &format!("// a line above\n{USING}"));
     let lenses = client.ask(4, "textDocument/codeLens", doc);
     let title = lenses[0]["command"]["title"].as_str().unwrap();
     assert!(title.starts_with("(stale) cup by ann"), "{title}");
+    assert_eq!(lenses[0]["range"]["start"]["line"], 11);
     client.stop();
 }

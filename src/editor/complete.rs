@@ -7,7 +7,8 @@
 
 use super::outline::{Outline, SymbolKind};
 use crate::options::{ParamKind, ParamSpec, PluginKind, Settings};
-use crate::plugin::Registry;
+use crate::plugin::{Registry, SubjectKind};
+use crate::scene::FACES;
 use crate::syntax::code_bytes;
 
 /// What a completion is, for the editor's icon.
@@ -35,6 +36,9 @@ pub struct Completion {
     /// The standard library module that declares it, where the text has
     /// no `use` of it yet.
     pub needs_use: Option<&'static str>,
+    /// Where it is not a whole word: the byte its text replaces from to
+    /// the place (a unit after a number's digits).
+    pub replaces_from: Option<usize>,
 }
 
 /// The units a number may carry.
@@ -75,13 +79,27 @@ pub fn completions(
     let offset = floor_boundary(text, offset);
     let before = &text[..offset];
     let word_start = before
-        .rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
-        .map_or(0, |k| k + 1);
+        .char_indices()
+        .rev()
+        .find(|(_, c)| !(c.is_ascii_alphanumeric() || *c == '_'))
+        .map_or(0, |(k, c)| k + c.len_utf8());
     let word = &before[word_start..];
-    if word.starts_with(|c: char| c.is_ascii_digit()) {
-        return units();
+    if !in_code(text, word_start) {
+        return Vec::new();
     }
-    if before[..word_start].ends_with("std::") {
+    if word.starts_with(|c: char| c.is_ascii_digit()) {
+        // The unit replaces what follows the number's digits.
+        let digits = word.len()
+            - word
+                .trim_start_matches(|c: char| c.is_ascii_digit() || c == '.')
+                .len();
+        let unit_part = &word[digits..];
+        let mut out = units(word_start + digits);
+        out.retain(|c| c.label.starts_with(unit_part));
+        return out;
+    }
+    let head = &before[..word_start];
+    if head.ends_with("std::") {
         return modules();
     }
     let found = Found {
@@ -89,11 +107,31 @@ pub fn completions(
         registry,
         used: used_modules(text),
     };
-    let tokens = tokens_back(&before[..word_start]);
-    let block = block_at(&before[..word_start], registry, outline);
-    let mut out = found.after(&tokens, &block);
+    if let Some(whole) = head.strip_suffix('.') {
+        return found.faces(whole);
+    }
+    let tokens = tokens_back(head);
+    let block = block_at(head, registry, outline);
+    let line_start = head
+        .rsplit('\n')
+        .next()
+        .is_some_and(|l| l.trim().is_empty());
+    let mut out = found.after(&tokens, &block, line_start);
     out.retain(|c| c.label.starts_with(word) && c.label != word);
     out
+}
+
+/// Whether byte `at` of `text` is code (not in a comment or a string).
+fn in_code(text: &str, at: usize) -> bool {
+    let mut last = None;
+    for (k, _) in code_bytes(text) {
+        if k >= at {
+            return k == at || last == Some(at.wrapping_sub(1));
+        }
+        last = Some(k);
+    }
+    // At the end: code where the last byte before it is.
+    at == 0 || last == Some(at - 1)
 }
 
 /// The last char boundary at or before `offset`.
@@ -105,17 +143,27 @@ fn floor_boundary(text: &str, offset: usize) -> usize {
     offset
 }
 
-fn units() -> Vec<Completion> {
+/// The units, each replacing the text from byte `from` (after the
+/// number's digits) to the place.
+fn units(from: usize) -> Vec<Completion> {
     UNITS
         .iter()
         .map(|(unit, what)| Completion {
-            label: unit.to_string(),
-            kind: CompletionKind::Unit,
-            detail: what.to_string(),
-            doc: None,
-            needs_use: None,
+            replaces_from: Some(from),
+            ..plain(unit, CompletionKind::Unit, what)
         })
         .collect()
+}
+
+fn plain(label: &str, kind: CompletionKind, detail: &str) -> Completion {
+    Completion {
+        label: label.to_string(),
+        kind,
+        detail: detail.to_string(),
+        doc: None,
+        needs_use: None,
+        replaces_from: None,
+    }
 }
 
 fn modules() -> Vec<Completion> {
@@ -127,6 +175,7 @@ fn modules() -> Vec<Completion> {
             detail: format!("std::{name}"),
             doc: Some(first_comment(text)),
             needs_use: None,
+            replaces_from: None,
         })
         .collect()
 }
@@ -350,20 +399,17 @@ const POPULATION: [&str; 8] = [
 
 impl Found<'_> {
     /// The candidates after `tokens` (last first) in `block`.
-    fn after(&self, tokens: &[String], block: &Block) -> Vec<Completion> {
+    fn after(&self, tokens: &[String], block: &Block, line_start: bool) -> Vec<Completion> {
         let last = tokens.first().map(String::as_str).unwrap_or("");
         let second = tokens.get(1).map(String::as_str).unwrap_or("");
+        let head = list_head(tokens);
         match (block, last) {
             (_, "by") => self.names(&[SymbolKind::Person, SymbolKind::Population]),
-            (_, ",")
-                if tokens
-                    .iter()
-                    .take_while(|t| *t != "{" && *t != "}")
-                    .any(|t| t == "by") =>
-            {
+            (_, ",") if head == Some("by") => {
                 self.names(&[SymbolKind::Person, SymbolKind::Population])
             }
             (_, "after" | "couple" | "with") => self.names(&[SymbolKind::Joint]),
+            (_, ",") if head == Some("couple") => self.names(&[SymbolKind::Joint]),
             (Block::Overrides, "limits" | "limit" | "neutral" | "weight") => {
                 self.names(&[SymbolKind::Joint])
             }
@@ -385,6 +431,16 @@ impl Found<'_> {
             (Block::Top, "=") if tokens.get(2).is_some_and(|t| t == "base") => {
                 self.plugins(PluginKind::Base)
             }
+            (Block::Top, "use") => ["std::", "\""]
+                .map(|v| value(v, "a module, or a file in quotes"))
+                .to_vec(),
+            (Block::Top, "units") => units(usize::MAX)
+                .into_iter()
+                .map(|c| Completion {
+                    replaces_from: None,
+                    ..c
+                })
+                .collect(),
             (Block::Top, "standard" | "meets") => self.plugins(PluginKind::Standard),
             (Block::Top, "in") if tokens.get(2).is_some_and(|t| t == "standard") => {
                 self.names(&[SymbolKind::Room])
@@ -395,27 +451,76 @@ impl Found<'_> {
                 out.extend(["share", "advise"].map(keyword));
                 out
             }
-            (Block::Top, "reaches" | "sees" | "covers" | "advise") => self.subjects(),
+            (Block::Top, "not") if tokens.get(2).is_some_and(|t| t == "expect") => {
+                ["reaches", "sees", "covers"].map(keyword).to_vec()
+            }
+            (Block::Top, _) if second == "expect" && !line_start => {
+                ["reaches", "sees", "covers", "not", "meets"]
+                    .map(keyword)
+                    .to_vec()
+            }
+            (Block::Top, "reaches" | "sees" | "advise") => self.subjects(SubjectKind::Target),
+            (Block::Top, "covers") => self.subjects(SubjectKind::Surface),
             (Block::Top, "(") if second == "share" => self.names(&[SymbolKind::Population]),
-            (Block::Top, word) if self.is_task(word) => self.subjects(),
-            (Block::Top, ",") if self.in_subjects(tokens) => self.subjects(),
+            (Block::Top, "and") => self.plugins(PluginKind::Task),
+            (Block::Top, word) if self.task(word).is_some() && !line_start => {
+                self.subjects(self.task(word).unwrap_or(SubjectKind::Target))
+            }
+            (Block::Top, ",") if head.is_some_and(|h| self.task(h).is_some()) => self.subjects(
+                head.and_then(|h| self.task(h))
+                    .unwrap_or(SubjectKind::Target),
+            ),
+            // After a task's subjects: `by`, or `and` another task.
+            (Block::Top, _) if !line_start && self.after_subjects(tokens) => {
+                ["by", "and"].map(keyword).to_vec()
+            }
+            (Block::Options(params), _) if line_start => params.iter().map(option).collect(),
             (Block::Options(params), word) => self.in_options(params, word, second),
-            (block, _) if starts_statement(last) => self.statement_start(block),
+            (block, _) if line_start || starts_statement(last) => self.statement_start(block),
             _ => Vec::new(),
         }
     }
 
-    fn is_task(&self, word: &str) -> bool {
-        self.registry.names(PluginKind::Task).contains(&word)
+    /// Whether `tokens` (last first) end a task's subjects: `reach a`,
+    /// `map t.top, b`.
+    fn after_subjects(&self, tokens: &[String]) -> bool {
+        let Some(first) = tokens.first() else {
+            return false;
+        };
+        if !first.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') {
+            return false;
+        }
+        match tokens.get(1).map(String::as_str) {
+            Some(",") => list_head(&tokens[1..]).is_some_and(|h| self.task(h).is_some()),
+            Some(word) => self.task(word).is_some(),
+            None => false,
+        }
     }
 
-    /// Whether the place is in a task's list of subjects (`reach a, `).
-    fn in_subjects(&self, tokens: &[String]) -> bool {
-        let statement = tokens
+    /// The kind of subject task `word` takes, where it is a task.
+    fn task(&self, word: &str) -> Option<SubjectKind> {
+        self.registry.task(word).map(|t| t.subject())
+    }
+
+    /// The faces of the box before a `.`, where `before` ends in one's
+    /// name.
+    fn faces(&self, before: &str) -> Vec<Completion> {
+        let name_start = before
+            .rfind(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .map_or(0, |k| k + 1);
+        let name = &before[name_start..];
+        let is_box = self.outline.is_some_and(|o| {
+            o.names_of(&[SymbolKind::Box, SymbolKind::Mesh])
+                .iter()
+                .any(|s| s.name == name)
+        });
+        if !is_box {
+            return Vec::new();
+        }
+        FACES
             .iter()
-            .take_while(|t| !matches!(t.as_str(), "{" | "}" | "by"));
-        let words: Vec<&String> = statement.collect();
-        words.last().is_some_and(|w| self.is_task(w))
+            .map(|f| value(f, "a face of the box"))
+            .collect()
     }
 
     fn statement_start(&self, block: &Block) -> Vec<Completion> {
@@ -439,7 +544,7 @@ impl Found<'_> {
     /// the option just named takes.
     fn in_options(&self, params: &[ParamSpec], last: &str, second: &str) -> Vec<Completion> {
         if let Some(param) = params.iter().find(|p| p.name == last) {
-            return self.values(param.kind);
+            return self.values(param);
         }
         // `carries [a, ` : more names.
         if last == "[" || (last == "," && second != "{") {
@@ -455,16 +560,23 @@ impl Found<'_> {
         Vec::new()
     }
 
-    fn values(&self, kind: ParamKind) -> Vec<Completion> {
-        match kind {
+    /// The values option `param` takes: `true` or `false`, a plugin, the
+    /// words its doc names in backquotes (`either`, `right`, `left`), else
+    /// for a name an effector (`effector`) or an element of the room.
+    fn values(&self, param: &ParamSpec) -> Vec<Completion> {
+        match param.kind {
             ParamKind::Bool => ["true", "false"].map(|v| value(v, "bool")).to_vec(),
             ParamKind::Plugin(k) => self.plugins(k),
-            ParamKind::Name => self.names(&[
-                SymbolKind::Effector,
-                SymbolKind::Room,
-                SymbolKind::Target,
-                SymbolKind::Surface,
-            ]),
+            ParamKind::Name => {
+                let words = doc_words(param.doc);
+                if !words.is_empty() {
+                    return words.iter().map(|w| value(w, param.name)).collect();
+                }
+                if param.name.contains("effector") {
+                    return self.names(&[SymbolKind::Effector]);
+                }
+                self.names(&[SymbolKind::Box, SymbolKind::Mesh, SymbolKind::Target])
+            }
             ParamKind::Names => {
                 self.names(&[SymbolKind::Box, SymbolKind::Mesh, SymbolKind::Target])
             }
@@ -472,13 +584,15 @@ impl Found<'_> {
         }
     }
 
-    fn subjects(&self) -> Vec<Completion> {
-        self.names(&[
-            SymbolKind::Target,
-            SymbolKind::Surface,
-            SymbolKind::Box,
-            SymbolKind::Mesh,
-        ])
+    /// What a task of this kind may be about: targets, or surfaces and
+    /// boxes (whose faces follow a `.`).
+    fn subjects(&self, kind: SubjectKind) -> Vec<Completion> {
+        match kind {
+            SubjectKind::Target => self.names(&[SymbolKind::Target]),
+            SubjectKind::Surface => {
+                self.names(&[SymbolKind::Surface, SymbolKind::Box, SymbolKind::Mesh])
+            }
+        }
     }
 
     /// The names of `kinds` the files declare, then those the standard
@@ -498,6 +612,7 @@ impl Found<'_> {
                 },
                 doc: None,
                 needs_use: None,
+                replaces_from: None,
             })
             .collect();
         for &kind in kinds {
@@ -512,6 +627,7 @@ impl Found<'_> {
                     detail: format!("{} in std::{module}", kind.word()),
                     doc: None,
                     needs_use: (!used).then_some(module),
+                    replaces_from: None,
                 });
             }
         }
@@ -528,9 +644,37 @@ impl Found<'_> {
                 detail: format!("{} plugin", kind.noun()),
                 doc: Some(p.doc().to_string()),
                 needs_use: None,
+                replaces_from: None,
             })
             .collect()
     }
+}
+
+/// The single words a doc names in backquotes (`` `z` ``, `` `side` ``).
+fn doc_words(doc: &str) -> Vec<&str> {
+    let mut words: Vec<&str> = doc
+        .split('`')
+        .skip(1)
+        .step_by(2)
+        .filter(|w| !w.is_empty() && w.chars().all(|c| c.is_ascii_alphanumeric() || c == '_'))
+        .collect();
+    words.dedup();
+    words
+}
+
+/// The word a list ends back at (`reach a, b, ` -> `reach`; `by ann, `
+/// -> `by`): the token before its first item, where `tokens` (last first)
+/// start with a `,`.
+fn list_head(tokens: &[String]) -> Option<&str> {
+    let mut k = 0;
+    while tokens.get(k).is_some_and(|t| t == ",") {
+        let item = tokens.get(k + 1)?;
+        if !item.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') {
+            return None;
+        }
+        k += 2;
+    }
+    (k > 0).then(|| tokens.get(k).map(String::as_str)).flatten()
 }
 
 /// Whether a statement or an option may start after this token.
@@ -568,23 +712,11 @@ fn std_declared(kind: SymbolKind) -> Vec<(&'static str, String)> {
 }
 
 fn keyword(word: &str) -> Completion {
-    Completion {
-        label: word.to_string(),
-        kind: CompletionKind::Keyword,
-        detail: "keyword".into(),
-        doc: None,
-        needs_use: None,
-    }
+    plain(word, CompletionKind::Keyword, "keyword")
 }
 
 fn value(word: &str, what: &str) -> Completion {
-    Completion {
-        label: word.to_string(),
-        kind: CompletionKind::Value,
-        detail: what.to_string(),
-        doc: None,
-        needs_use: None,
-    }
+    plain(word, CompletionKind::Value, what)
 }
 
 /// An option, with its kind, default and doc.
@@ -600,6 +732,7 @@ fn option(param: &ParamSpec) -> Completion {
         detail: format!("{}, {default}", param.kind.short()),
         doc: Some(param.doc.to_string()),
         needs_use: None,
+        replaces_from: None,
     }
 }
 
@@ -620,12 +753,13 @@ mod tests {
     /// must not.
     #[test]
     fn each_place_offers_what_may_be_typed_there() {
-        let cases: [(&str, &str, &str); 9] = [
+        let cases = [
             ("|", "room", "box"),
             ("room r {\n  |\n}", "target", "room"),
             ("room r { size 3|", "mm", "room"),
-            ("room r { size 3m|", "mm", "box"),
+            ("room r { size 3m|", "mm", "deg"),
             ("use std::|", "people", "room"),
+            ("use |", "std::", "room"),
             ("person p { |", "mannequin", "room"),
             ("person p { mannequin |", "woman_5th_seated", "room"),
             (
@@ -634,17 +768,34 @@ mod tests {
                 "at",
             ),
             ("reach a by p { solver |", "incremental", "reach"),
+            ("reach a by p { hand |", "left", "a"),
+            ("advise a by p { along |", "z", "a"),
+            ("use std::arm\n|", "room", "arm"),
+            ("standard ada2010 in kitchen\n|", "expect", "kitchen"),
+            ("reach a by p, q\n|", "person", "p"),
+            ("reach a |", "by", "room"),
+            ("expect ann |", "reaches", "room"),
+            ("// café |", "", "room"),
         ];
         for (place, wanted, unwanted) in cases {
             let found = offered(place);
-            assert!(
-                found.iter().any(|l| l == wanted),
-                "{place:?}: {wanted} in {found:?}"
-            );
+            let offered_wanted = wanted.is_empty() || found.iter().any(|l| l == wanted);
+            assert!(offered_wanted, "{place:?}: {wanted} in {found:?}");
             assert!(
                 !found.iter().any(|l| l == unwanted),
                 "{place:?}: {unwanted} in {found:?}"
             );
+        }
+    }
+
+    /// Completion is asked as the user types, anywhere: at every place of
+    /// a text with characters of several bytes, it answers.
+    #[test]
+    fn every_place_of_a_text_answers() {
+        let text = "// café, 90°, 3 × 4 😀\nunits mm\nroom r { size 3000 x 3000 x 2500 target é at (1, 2, 3) }\nreach é, x by p { hand l }\n\"ü\" ";
+        let registry = Registry::builtin();
+        for offset in 0..=text.len() + 2 {
+            completions(text, offset, None, &registry);
         }
     }
 }

@@ -40,8 +40,9 @@ pub fn hover(
     match found {
         Found::Declaration(symbol) => Some(about.symbol(symbol)),
         Found::Use(reference, symbols) => match symbols.as_slice() {
-            [] => std_declaration(&reference.name, reference.kinds)
-                .or_else(|| Some(format!("`{}`: not declared in these files", reference.name))),
+            // Not declared: a standard library name the file does not
+            // use, or a word the option takes (`along z`).
+            [] => std_declaration(&reference.name, reference.kinds),
             found => Some(
                 found
                     .iter()
@@ -299,8 +300,9 @@ fn mm(value: f64) -> String {
     }
 }
 
-/// A number written at `offset`, with its unit: what it is in mm or deg
-/// (or, bare, what the file's `units` make it).
+/// A number written at `offset` (in code, not a comment), with its unit:
+/// what it is in mm or deg (or, bare, what the file's `units` make it
+/// where a length or an angle is meant).
 fn number_at(text: &str, offset: usize) -> Option<String> {
     let bytes = text.as_bytes();
     let is_part = |b: u8| b.is_ascii_alphanumeric() || b == b'.' || b == b'_';
@@ -313,20 +315,39 @@ fn number_at(text: &str, offset: usize) -> Option<String> {
         end += 1;
     }
     let token = text.get(start..end)?;
-    if !token.starts_with(|c: char| c.is_ascii_digit()) {
+    if !token.starts_with(|c: char| c.is_ascii_digit()) || !is_code(text, start) {
         return None;
     }
     let digits_end = number_end(token);
-    let value: f64 = token[..digits_end].parse().ok()?;
+    let negative = text[..start].ends_with('-')
+        && !text[..start - 1]
+            .trim_end()
+            .ends_with(|c: char| c.is_ascii_alphanumeric() || c == ')');
+    let sign = if negative { -1.0 } else { 1.0 };
+    let value = sign * token[..digits_end].parse::<f64>().ok()?;
+    let written = if negative {
+        format!("-{token}")
+    } else {
+        token.to_string()
+    };
     let mut unit_text = &token[digits_end..];
     if unit_text.is_empty() && text[end..].trim_start_matches([' ', '\t']).starts_with('%') {
         unit_text = "%";
     }
     if unit_text.is_empty() {
         let (length, angle) = file_units(text);
+        let as_length = value * length.to_internal();
+        let as_angle = (value * angle.to_internal()).to_degrees();
         return Some(format!(
-            "`{token}`: no unit, so the file's: {token} {length} where a length is meant, \
-             {token} {angle} where an angle is (`units` sets them)"
+            "`{written}`: a number without unit ({}). A count or a factor is that number; where a \
+             length is meant it is in the file's `units`, {} {} = {} mm; where an angle is, {} {} = {} deg",
+            trimmed(value),
+            trimmed(value),
+            length.symbol(),
+            mm(as_length),
+            trimmed(value),
+            angle.symbol(),
+            trimmed(as_angle),
         ));
     }
     let unit = match unit_text {
@@ -335,10 +356,15 @@ fn number_at(text: &str, offset: usize) -> Option<String> {
     };
     let internal = value * unit.to_internal();
     Some(match unit {
-        Unit::Percent => format!("`{token}`: a share, {}", internal),
-        u if u.is_length() => format!("`{token}` = {} mm", mm(internal)),
-        _ => format!("`{token}` = {} deg", trimmed(internal.to_degrees())),
+        Unit::Percent => format!("`{written}`: a share, {}", trimmed(internal)),
+        u if u.is_length() => format!("`{written}` = {} mm", mm(internal)),
+        _ => format!("`{written}` = {} deg", trimmed(internal.to_degrees())),
     })
+}
+
+/// Whether byte `at` of `text` is code (not in a comment or a string).
+fn is_code(text: &str, at: usize) -> bool {
+    crate::syntax::code_bytes(text).any(|(k, _)| k == at)
 }
 
 /// Where a number's digits (and decimals, and exponent) end.
@@ -365,21 +391,19 @@ fn trimmed(value: f64) -> String {
     text.trim_end_matches('0').trim_end_matches('.').to_string()
 }
 
-/// The file's default units for a length and an angle (`units mm deg`
-/// where it says nothing).
-fn file_units(text: &str) -> (&str, &str) {
-    let mut length = "mm";
-    let mut angle = "deg";
+/// The file's default units for a length and an angle (mm and deg where
+/// it says nothing).
+fn file_units(text: &str) -> (Unit, Unit) {
+    let mut length = Unit::Mm;
+    let mut angle = Unit::Deg;
     for line in text.lines() {
         let Some(rest) = line.trim().strip_prefix("units ") else {
             continue;
         };
         for word in rest.split_whitespace() {
             match Unit::parse(word) {
-                Some(u) if u.is_length() => length = u.symbol(),
-                Some(Unit::Deg | Unit::Rad) => {
-                    angle = Unit::parse(word).map_or("deg", Unit::symbol)
-                }
+                Some(u) if u.is_length() => length = u,
+                Some(u @ (Unit::Deg | Unit::Rad)) => angle = u,
                 _ => {}
             }
         }

@@ -185,6 +185,9 @@ impl Server<'_, '_> {
                             }
                             self.answer(request)?;
                         }
+                        Message::Notification(n) if n.method == "exit" => {
+                            return Err("`exit` before `shutdown`".into());
+                        }
                         Message::Notification(n) => self.notified(n)?,
                         Message::Response(_) => {}
                     }
@@ -281,10 +284,7 @@ impl Server<'_, '_> {
                 let p: ReferenceParams = serde_json::from_value(request.params)?;
                 let at = p.text_document_position;
                 let with = p.context.include_declaration;
-                let found = (self.document(&at.text_document.uri))
-                    .map(|d| d.references(at.position, with))
-                    .unwrap_or_default();
-                serde_json::to_value(found)?
+                serde_json::to_value(self.references(&at.text_document.uri, at.position, with))?
             }
             CodeLensRequest::METHOD => {
                 let p: CodeLensParams = serde_json::from_value(request.params)?;
@@ -305,6 +305,35 @@ impl Server<'_, '_> {
         let response = Response::new_ok(id, result);
         self.connection.sender.send(response.into())?;
         Ok(())
+    }
+
+    /// The uses of the name at `position` in `uri`, as every open
+    /// document's check sees them, each once.
+    fn references(
+        &self,
+        uri: &Uri,
+        position: lsp_types::Position,
+        with: bool,
+    ) -> Vec<lsp_types::Location> {
+        let Some(asked) = self.document(uri) else {
+            return Vec::new();
+        };
+        let mut found: Vec<lsp_types::Location> = Vec::new();
+        for document in self.open.values() {
+            for location in document.references((uri, &asked.text, position), with) {
+                if !found.contains(&location) {
+                    found.push(location);
+                }
+            }
+        }
+        found.sort_by(|a, b| {
+            (a.uri.as_str(), a.range.start.line, a.range.start.character).cmp(&(
+                b.uri.as_str(),
+                b.range.start.line,
+                b.range.start.character,
+            ))
+        });
+        found
     }
 
     fn document(&self, uri: &Uri) -> Option<&Document> {
@@ -339,7 +368,8 @@ impl Server<'_, '_> {
     }
 
     /// Publish the diagnostics of `name`'s last check, and its last run's
-    /// unmet `expect`s (while the text is the one run).
+    /// unmet `expect`s (moved with their lines, marked stale after an
+    /// edit).
     fn publish_check(&mut self, name: &str) -> Result<(), ServerError> {
         let Some(document) = self.open.get(name) else {
             return Ok(());
@@ -348,15 +378,9 @@ impl Server<'_, '_> {
             Ok(_) => BTreeMap::new(),
             Err(d) => diagnostics::by_file(&document.uri, &document.analysis.sources, d),
         };
-        if let Some(answers) = document
-            .answers
-            .as_ref()
-            .filter(|a| a.edit == document.edit)
-        {
-            if !answers.unmet.is_empty() {
-                let mine = found.entry(name.to_string()).or_default();
-                mine.extend(answers.unmet.iter().cloned());
-            }
+        let unmet = document.unmet();
+        if !unmet.is_empty() {
+            found.entry(name.to_string()).or_default().extend(unmet);
         }
         let changed = self.published.set(name, found);
         self.publish(changed)

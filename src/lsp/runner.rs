@@ -39,6 +39,8 @@ pub struct Answers {
     pub unmet: Vec<Diagnostic>,
     /// Where the bound on work stopped the run, why.
     pub stopped: Option<String>,
+    /// The text run, to move the answers with their lines after an edit.
+    pub text: String,
 }
 
 /// The document whose run is in flight, and the memo that cancels it.
@@ -68,8 +70,13 @@ pub fn serve_runs(
             *lock(running) = None;
             let cancelled = memo.cancelled();
             memo.resume();
-            if !cancelled && answers.send(ran).is_err() {
-                return;
+            match ran {
+                Some(ran) if !cancelled => {
+                    if answers.send(ran).is_err() {
+                        return;
+                    }
+                }
+                _ => {}
             }
         }
     }
@@ -80,14 +87,16 @@ fn lock(running: &Running) -> std::sync::MutexGuard<'_, Option<(String, Arc<Memo
 }
 
 /// Run one document's scenario: through its cache, or as far as the
-/// bound allows.
+/// bound allows; none where it was cancelled.
 fn run_one(
     asked: &Asked,
     cache: &mut TaskCache,
     (session, registry): (Session<'_>, &Registry),
-) -> Answers {
+) -> Option<Answers> {
     let (report, stopped) = match cache.run(&asked.scenario, &NoProgress) {
         Ok((report, _)) => (report, None),
+        // Cancelled: no answers.
+        Err(_) if cache.memo().cancelled() => return None,
         Err(_) => {
             let again = || {
                 let input = match &asked.path {
@@ -127,13 +136,14 @@ fn run_one(
             ..Diagnostic::default()
         })
         .collect();
-    Answers {
+    Some(Answers {
         uri: asked.uri.clone(),
         edit: asked.edit,
         lenses,
         unmet,
         stopped,
-    }
+        text: asked.text.clone(),
+    })
 }
 
 /// The file the tasks are declared in (the root's: only its tasks run).
