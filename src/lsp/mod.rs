@@ -102,7 +102,8 @@ pub fn serve(
         // its run in flight is cancelled.
         let running = Arc::clone(&server.running);
         drop(server);
-        if let Some((_, memo)) = running.lock().unwrap_or_else(|e| e.into_inner()).as_ref() {
+        let runs = running.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some((_, memo)) = runs.in_flight.as_ref() {
             memo.cancel();
         }
         served
@@ -225,11 +226,11 @@ impl Server<'_, '_> {
                 let name = p.text_document.uri.as_str().to_string();
                 // Full sync: the last change is the whole text.
                 if let Some(change) = p.content_changes.into_iter().last() {
-                    self.cancel_run(&name);
                     if let Some(document) = self.open.get_mut(&name) {
                         document.text = change.text;
                         document.edit += 1;
                     }
+                    self.cancel_run(&name);
                 }
                 self.check(&name)
             }
@@ -244,8 +245,8 @@ impl Server<'_, '_> {
             DidCloseTextDocument::METHOD => {
                 let p: DidCloseTextDocumentParams = serde_json::from_value(notification.params)?;
                 let uri = p.text_document.uri.as_str();
-                self.cancel_run(uri);
                 self.open.remove(uri);
+                self.cancel_run(uri);
                 let changed = self.published.set(uri, BTreeMap::new());
                 self.publish(changed)
             }
@@ -405,14 +406,11 @@ impl Server<'_, '_> {
         });
     }
 
-    /// Cancel `name`'s run in flight, if one is.
+    /// Tell the run thread that `name` is at its edit now: its run in
+    /// flight, or asked and not started, is cancelled.
     fn cancel_run(&self, name: &str) {
-        let running = self.running.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some((uri, memo)) = running.as_ref() {
-            if uri == name {
-                memo.cancel();
-            }
-        }
+        let edit = self.open.get(name).map_or(u64::MAX, |d| d.edit);
+        runner::edited(&self.running, name, edit);
     }
 
     /// A run's answers: kept with their document, its unmet `expect`s

@@ -43,8 +43,30 @@ pub struct Answers {
     pub text: String,
 }
 
-/// The document whose run is in flight, and the memo that cancels it.
-pub type Running = Arc<Mutex<Option<(String, Arc<Memo>)>>>;
+/// What the run thread and the editor's share: each open document's edit
+/// count as the editor's messages have it, and the document whose run is
+/// in flight with the memo that cancels it. Under one lock, so that an
+/// edit either comes before a run starts (which is then not started) or
+/// finds it in flight (and cancels it).
+#[derive(Default)]
+pub struct Runs {
+    pub edits: BTreeMap<String, u64>,
+    pub in_flight: Option<(String, Arc<Memo>)>,
+}
+
+pub type Running = Arc<Mutex<Runs>>;
+
+/// Note document `uri`'s edit `edit`, and cancel its run in flight (run
+/// on an earlier text).
+pub fn edited(running: &Running, uri: &str, edit: u64) {
+    let mut runs = lock(running);
+    runs.edits.insert(uri.to_string(), edit);
+    if let Some((flying, memo)) = &runs.in_flight {
+        if flying == uri {
+            memo.cancel();
+        }
+    }
+}
 
 /// Run what `asked` brings, one at a time, until it closes; the answers
 /// go to `answers` (a cancelled run's are dropped).
@@ -65,24 +87,29 @@ pub fn serve_runs(
         for (uri, one) in latest {
             let cache = caches.entry(uri.clone()).or_default();
             let memo = cache.memo();
-            *lock(running) = Some((uri, Arc::clone(&memo)));
+            {
+                let mut runs = lock(running);
+                // Edited since it was asked: not run.
+                if runs.edits.get(&uri) != Some(&one.edit) {
+                    continue;
+                }
+                runs.in_flight = Some((uri, Arc::clone(&memo)));
+            }
             let ran = run_one(&one, cache, (session, registry));
-            *lock(running) = None;
+            lock(running).in_flight = None;
             let cancelled = memo.cancelled();
             memo.resume();
-            match ran {
-                Some(ran) if !cancelled => {
-                    if answers.send(ran).is_err() {
-                        return;
-                    }
-                }
-                _ => {}
+            let Some(ran) = ran.filter(|_| !cancelled) else {
+                continue;
+            };
+            if answers.send(ran).is_err() {
+                return;
             }
         }
     }
 }
 
-fn lock(running: &Running) -> std::sync::MutexGuard<'_, Option<(String, Arc<Memo>)>> {
+fn lock(running: &Running) -> std::sync::MutexGuard<'_, Runs> {
     running.lock().unwrap_or_else(|e| e.into_inner())
 }
 
