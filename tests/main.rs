@@ -20,6 +20,7 @@ mod facing;
 mod gaze;
 mod golden;
 mod hands;
+mod highlighting;
 mod hostile;
 mod independent;
 mod invariance;
