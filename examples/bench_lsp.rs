@@ -3,7 +3,13 @@
 //! again and again (a target moved 1 mm and back, then an unknown name
 //! made and mended), each change timed from the end of writing
 //! `didChange` to the `publishDiagnostics` it causes (a monotonic clock).
-//! Prints each kind of change's least, median and greatest.
+//! Prints each kind of change's least, median and greatest. Then, in a
+//! server of its own, the time from `didOpen` to the code lenses of the
+//! run it starts (the `codeLens` answer after the server's
+//! `workspace/codeLens/refresh`), and from a `didSave` of the same text
+//! (every answer then kept by the document's cache) to its lenses; beside
+//! each, the same run in this process (a fresh `TaskCache`, then the
+//! same cache again), whose difference is what the server adds.
 //!
 //! `cargo build --release && cargo run --release --example bench_lsp -- [CHANGES]`
 //! (20 changes of each kind by default).
@@ -72,6 +78,8 @@ fn main() {
                     "contentChanges": [{ "text": texts[k % 2] }],
                 },
             });
+            // What a run or an earlier change sent is not this change's.
+            while from_server.try_recv().is_ok() {}
             send(&mut stdin, change);
             let start = Instant::now();
             let published = wait_for(&from_server, |m| {
@@ -101,6 +109,97 @@ fn main() {
     wait_for(&from_server, |m| m["id"] == 2);
     send(&mut stdin, json!({ "jsonrpc": "2.0", "method": "exit" }));
     child.wait().unwrap();
+    lenses(&path, &uri, &text);
+}
+
+/// The time from `didOpen`, then from a `didSave`, to the lenses, each
+/// beside the run's own time in this process.
+fn lenses(path: &std::path::Path, uri: &str, text: &str) {
+    let mut child = Command::new(reach_binary())
+        .arg("lsp")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .expect("target/release/reach runs");
+    let mut stdin = child.stdin.take().unwrap();
+    let from_server = messages(BufReader::new(child.stdout.take().unwrap()));
+    let capabilities = json!({ "workspace": { "codeLens": { "refreshSupport": true } } });
+    send(
+        &mut stdin,
+        json!({ "jsonrpc": "2.0", "id": 1, "method": "initialize", "params": { "capabilities": capabilities } }),
+    );
+    wait_for(&from_server, |m| m["id"] == 1);
+    send(
+        &mut stdin,
+        json!({ "jsonrpc": "2.0", "method": "initialized", "params": {} }),
+    );
+    let mut id = 10;
+    let mut to_lenses = |stdin: &mut ChildStdin, start: Instant| {
+        wait_for(&from_server, |m| {
+            m["method"] == "workspace/codeLens/refresh"
+        });
+        id += 1;
+        send(
+            stdin,
+            json!({ "jsonrpc": "2.0", "id": id, "method": "textDocument/codeLens", "params": { "textDocument": { "uri": uri } } }),
+        );
+        let lenses = wait_for(&from_server, |m| m["id"] == id);
+        let count = lenses["result"].as_array().map_or(0, Vec::len);
+        assert!(count > 0, "{lenses}");
+        (start.elapsed(), count)
+    };
+    let document = json!({ "uri": uri, "languageId": "reach", "version": 1, "text": text });
+    send(
+        &mut stdin,
+        json!({ "jsonrpc": "2.0", "method": "textDocument/didOpen", "params": { "textDocument": document } }),
+    );
+    let (opened, count) = to_lenses(&mut stdin, Instant::now());
+    send(
+        &mut stdin,
+        json!({ "jsonrpc": "2.0", "method": "textDocument/didSave", "params": { "textDocument": { "uri": uri } } }),
+    );
+    let (saved, _) = to_lenses(&mut stdin, Instant::now());
+    send(
+        &mut stdin,
+        json!({ "jsonrpc": "2.0", "id": 2, "method": "shutdown" }),
+    );
+    wait_for(&from_server, |m| m["id"] == 2);
+    send(&mut stdin, json!({ "jsonrpc": "2.0", "method": "exit" }));
+    child.wait().unwrap();
+    let (run_cold, run_kept) = run_alone(path);
+    let ms = |d: Duration| d.as_secs_f64() * 1000.0;
+    println!(
+        "didOpen to its {count} lenses: {:.1} ms; the run alone (a fresh cache): {:.1} ms; added {:.1} ms",
+        ms(opened),
+        ms(run_cold),
+        ms(opened) - ms(run_cold)
+    );
+    println!(
+        "didSave of the same text to its lenses: {:.1} ms; the run alone (answers kept): {:.1} ms; added {:.1} ms",
+        ms(saved),
+        ms(run_kept),
+        ms(saved) - ms(run_kept)
+    );
+}
+
+/// The scenario's run in this process, after the server has stopped: with
+/// a fresh cache (the quicker of two), then with that cache again.
+fn run_alone(path: &std::path::Path) -> (Duration, Duration) {
+    let registry = reach::plugin::Registry::builtin();
+    let (_, checked) = reach::check(reach::Input::Path(path), &registry);
+    let scenario = checked.expect("the example checks");
+    let progress = &reach::progress::NoProgress;
+    let mut cold = Duration::MAX;
+    let mut cache = reach::TaskCache::default();
+    for _ in 0..2 {
+        cache = reach::TaskCache::default();
+        let start = Instant::now();
+        cache.run(&scenario, progress).expect("within the bound");
+        cold = cold.min(start.elapsed());
+    }
+    let start = Instant::now();
+    cache.run(&scenario, progress).expect("within the bound");
+    (cold, start.elapsed())
 }
 
 /// The first target's declaration moved 1 mm along x: its name and the
