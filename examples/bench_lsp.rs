@@ -16,7 +16,7 @@
 
 use std::io::{BufRead, BufReader, Write};
 use std::path::PathBuf;
-use std::process::{ChildStdin, Command, Stdio};
+use std::process::{Child, ChildStdin, Command, Stdio};
 use std::sync::mpsc::{channel, Receiver};
 use std::time::{Duration, Instant};
 
@@ -30,23 +30,7 @@ fn main() {
         .expect("run from the repository's root");
     let text = std::fs::read_to_string(&path).unwrap();
     let uri = url::Url::from_file_path(&path).unwrap().to_string();
-    let mut child = Command::new(reach_binary())
-        .arg("lsp")
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .spawn()
-        .expect("target/release/reach runs (cargo build --release)");
-    let mut stdin = child.stdin.take().unwrap();
-    let from_server = messages(BufReader::new(child.stdout.take().unwrap()));
-    send(
-        &mut stdin,
-        json!({ "jsonrpc": "2.0", "id": 1, "method": "initialize", "params": { "capabilities": {} } }),
-    );
-    wait_for(&from_server, |m| m["id"] == 1);
-    send(
-        &mut stdin,
-        json!({ "jsonrpc": "2.0", "method": "initialized", "params": {} }),
-    );
+    let (mut child, mut stdin, from_server) = started(json!({}));
     let document = json!({ "uri": uri, "languageId": "reach", "version": 1, "text": text });
     send(
         &mut stdin,
@@ -115,24 +99,8 @@ fn main() {
 /// The time from `didOpen`, then from a `didSave`, to the lenses, each
 /// beside the run's own time in this process.
 fn lenses(path: &std::path::Path, uri: &str, text: &str) {
-    let mut child = Command::new(reach_binary())
-        .arg("lsp")
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .spawn()
-        .expect("target/release/reach runs");
-    let mut stdin = child.stdin.take().unwrap();
-    let from_server = messages(BufReader::new(child.stdout.take().unwrap()));
     let capabilities = json!({ "workspace": { "codeLens": { "refreshSupport": true } } });
-    send(
-        &mut stdin,
-        json!({ "jsonrpc": "2.0", "id": 1, "method": "initialize", "params": { "capabilities": capabilities } }),
-    );
-    wait_for(&from_server, |m| m["id"] == 1);
-    send(
-        &mut stdin,
-        json!({ "jsonrpc": "2.0", "method": "initialized", "params": {} }),
-    );
+    let (mut child, mut stdin, from_server) = started(capabilities);
     let mut id = 10;
     let mut to_lenses = |stdin: &mut ChildStdin, start: Instant| {
         wait_for(&from_server, |m| {
@@ -200,6 +168,30 @@ fn run_alone(path: &std::path::Path) -> (Duration, Duration) {
     let start = Instant::now();
     cache.run(&scenario, progress).expect("within the bound");
     (cold, start.elapsed())
+}
+
+/// `reach lsp` started and initialized by a client of these
+/// capabilities: the process, its input and its messages.
+fn started(capabilities: Value) -> (Child, ChildStdin, Receiver<Value>) {
+    let mut child = Command::new(reach_binary())
+        .arg("lsp")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .expect("target/release/reach runs (cargo build --release)");
+    let mut stdin = child.stdin.take().unwrap();
+    let from_server = messages(BufReader::new(child.stdout.take().unwrap()));
+    let params = json!({ "capabilities": capabilities });
+    send(
+        &mut stdin,
+        json!({ "jsonrpc": "2.0", "id": 1, "method": "initialize", "params": params }),
+    );
+    wait_for(&from_server, |m| m["id"] == 1);
+    send(
+        &mut stdin,
+        json!({ "jsonrpc": "2.0", "method": "initialized", "params": {} }),
+    );
+    (child, stdin, from_server)
 }
 
 /// The first target's declaration moved 1 mm along x: its name and the

@@ -110,6 +110,17 @@ pub fn completions(
     if let Some(whole) = head.strip_suffix('.') {
         return found.faces(whole);
     }
+    // In a point or a call: the constants an expression may use.
+    if in_parentheses(head) {
+        let tokens = tokens_back(head);
+        let kinds = match tokens.get(1).map(String::as_str) {
+            Some("share") if tokens[0] == "(" => [SymbolKind::Population],
+            _ => [SymbolKind::Constant],
+        };
+        let mut out = found.names(&kinds);
+        out.retain(|c| c.label.starts_with(word) && c.label != word);
+        return out;
+    }
     let tokens = tokens_back(head);
     let block = block_at(head, registry, outline);
     let line_start = head
@@ -121,17 +132,26 @@ pub fn completions(
     out
 }
 
-/// Whether byte `at` of `text` is code (not in a comment or a string).
+/// Whether a place at byte `at` of `text` is in code: what comes just
+/// before it is code (not a comment's or a string's), or a line's end.
 fn in_code(text: &str, at: usize) -> bool {
-    let mut last = None;
-    for (k, _) in code_bytes(text) {
-        if k >= at {
-            return k == at || last == Some(at.wrapping_sub(1));
-        }
-        last = Some(k);
-    }
-    // At the end: code where the last byte before it is.
-    at == 0 || last == Some(at - 1)
+    let Some(before) = text[..at].chars().next_back() else {
+        return true;
+    };
+    let previous = at - before.len_utf8();
+    before == '\n' || code_bytes(text).any(|(k, _)| k == previous)
+}
+
+/// Whether a place is inside parentheses (a point, a call's arguments):
+/// where `before` leaves one open.
+fn in_parentheses(before: &str) -> bool {
+    let depth = code_bytes(before).fold(0i64, |depth, (_, b)| match b {
+        b'(' => depth + 1,
+        b')' => depth - 1,
+        b'{' | b'}' => 0,
+        _ => depth,
+    });
+    depth > 0
 }
 
 /// The last char boundary at or before `offset`.
@@ -567,16 +587,13 @@ impl Found<'_> {
         match param.kind {
             ParamKind::Bool => ["true", "false"].map(|v| value(v, "bool")).to_vec(),
             ParamKind::Plugin(k) => self.plugins(k),
-            ParamKind::Name => {
-                let words = doc_words(param.doc);
-                if !words.is_empty() {
-                    return words.iter().map(|w| value(w, param.name)).collect();
+            ParamKind::Name => match name_choices(param.name) {
+                Some(words) => words.iter().map(|w| value(w, param.name)).collect(),
+                None if param.name.contains("effector") || param.name == "eyes" => {
+                    self.names(&[SymbolKind::Effector])
                 }
-                if param.name.contains("effector") {
-                    return self.names(&[SymbolKind::Effector]);
-                }
-                self.names(&[SymbolKind::Box, SymbolKind::Mesh, SymbolKind::Target])
-            }
+                None => self.names(&[SymbolKind::Box, SymbolKind::Mesh]),
+            },
             ParamKind::Names => {
                 self.names(&[SymbolKind::Box, SymbolKind::Mesh, SymbolKind::Target])
             }
@@ -650,16 +667,16 @@ impl Found<'_> {
     }
 }
 
-/// The single words a doc names in backquotes (`` `z` ``, `` `side` ``).
-fn doc_words(doc: &str) -> Vec<&str> {
-    let mut words: Vec<&str> = doc
-        .split('`')
-        .skip(1)
-        .step_by(2)
-        .filter(|w| !w.is_empty() && w.chars().all(|c| c.is_ascii_alphanumeric() || c == '_'))
-        .collect();
-    words.dedup();
-    words
+/// The words an option that takes a name of the plugin's own takes
+/// (the built-in plugins' `hand`, `along`, `across`, `approach`); none
+/// where its name is of the scenario's (an effector, a box).
+fn name_choices(option: &str) -> Option<&'static [&'static str]> {
+    match option {
+        "hand" => Some(&["either", "right", "left"]),
+        "along" | "across" => Some(&["x", "y", "z"]),
+        "approach" => Some(&["any", "forward", "side"]),
+        _ => None,
+    }
 }
 
 /// The word a list ends back at (`reach a, b, ` -> `reach`; `by ann, `
@@ -776,6 +793,9 @@ mod tests {
             ("reach a |", "by", "room"),
             ("expect ann |", "reaches", "room"),
             ("// café |", "", "room"),
+            ("// a list, |", "", "room"),
+            ("room r { box b at (0, |", "", "size"),
+            ("reach a by p { effector |", "", "a"),
         ];
         for (place, wanted, unwanted) in cases {
             let found = offered(place);

@@ -170,6 +170,33 @@ impl About<'_> {
                     }
                 ))
             }
+            SymbolKind::Door => {
+                let door = room()?.doors.iter().find(|d| d.name == symbol.name)?;
+                use crate::scene::Wall;
+                let (wall, along) = match door.wall {
+                    Wall::XMin => ("x = 0", "y"),
+                    Wall::XMax => ("x = the room's length", "y"),
+                    Wall::YMin => ("y = 0", "x"),
+                    _ => ("y = the room's width", "x"),
+                };
+                Some(format!(
+                    "in the wall {wall}, its middle at {along} = {} mm, {} mm wide",
+                    mm(door.along_mm),
+                    mm(door.width_mm)
+                ))
+            }
+            SymbolKind::Surface => {
+                let surface = room()?.surfaces.iter().find(|s| s.name == symbol.name)?;
+                let (c, u, v) = (surface.corner_mm, surface.u_mm, surface.v_mm);
+                Some(format!(
+                    "corner ({}, {}, {}) mm, {} x {} mm",
+                    mm(c.x),
+                    mm(c.y),
+                    mm(c.z),
+                    mm(u.norm()),
+                    mm(v.norm())
+                ))
+            }
             SymbolKind::Person => self.person(scenario, &symbol.name),
             SymbolKind::Population => self.population(scenario, &symbol.name),
             SymbolKind::BasePreset => self.base_preset(symbol),
@@ -313,6 +340,25 @@ fn number_at(text: &str, offset: usize) -> Option<String> {
     let mut end = offset.min(text.len());
     while end < bytes.len() && is_part(bytes[end]) {
         end += 1;
+    }
+    // An exponent's sign is in the number: `1e-3m`, from either side.
+    let exponent_sign = |k: usize| {
+        matches!(bytes.get(k), Some(b'+' | b'-'))
+            && k >= 2
+            && matches!(bytes[k - 1], b'e' | b'E')
+            && bytes[k - 2].is_ascii_digit()
+    };
+    if start >= 1 && exponent_sign(start - 1) {
+        start -= 1;
+        while start > 0 && is_part(bytes[start - 1]) {
+            start -= 1;
+        }
+    }
+    if exponent_sign(end) {
+        end += 1;
+        while end < bytes.len() && is_part(bytes[end]) {
+            end += 1;
+        }
     }
     let token = text.get(start..end)?;
     if !token.starts_with(|c: char| c.is_ascii_digit()) || !is_code(text, start) {

@@ -100,12 +100,7 @@ pub fn serve(
         let served = server.serve(&answers);
         // The run thread ends once nothing more can be asked of it, and
         // its run in flight is cancelled.
-        let running = Arc::clone(&server.running);
         drop(server);
-        let runs = running.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some((_, memo)) = runs.in_flight.as_ref() {
-            memo.cancel();
-        }
         served
     })
 }
@@ -141,7 +136,7 @@ fn capabilities() -> ServerCapabilities {
             },
         )),
         completion_provider: Some(CompletionOptions {
-            trigger_characters: Some([" ", ":", "{", ",", "["].map(String::from).to_vec()),
+            trigger_characters: Some([" ", ":", "{", ",", "[", "."].map(String::from).to_vec()),
             ..CompletionOptions::default()
         }),
         hover_provider: Some(HoverProviderCapability::Simple(true)),
@@ -180,12 +175,10 @@ impl Server<'_, '_> {
                 recv(receiver) -> message => {
                     let Ok(message) = message else { return Ok(()) };
                     match message {
-                        Message::Request(request) => {
-                            if self.connection.handle_shutdown(&request)? {
-                                return Ok(());
-                            }
-                            self.answer(request)?;
+                        Message::Request(request) if request.method == "shutdown" => {
+                            return self.shut_down(request.id);
                         }
+                        Message::Request(request) => self.answer(request)?,
                         Message::Notification(n) if n.method == "exit" => {
                             return Err("`exit` before `shutdown`".into());
                         }
@@ -200,6 +193,31 @@ impl Server<'_, '_> {
                 }
             }
         }
+    }
+
+    /// `shutdown`: no run starts any more and the one in flight is
+    /// cancelled; answered, then every message until `exit` is let be (a
+    /// client's late answer to a refresh, a `didClose`), a request
+    /// refused.
+    fn shut_down(&self, id: RequestId) -> Result<(), ServerError> {
+        runner::stop(&self.running);
+        let response = Response::new_ok(id, serde_json::Value::Null);
+        self.connection.sender.send(response.into())?;
+        for message in &self.connection.receiver {
+            match message {
+                Message::Notification(n) if n.method == "exit" => return Ok(()),
+                Message::Request(request) => {
+                    let refused = Response::new_err(
+                        request.id,
+                        ErrorCode::InvalidRequest as i32,
+                        "reach lsp is shutting down".into(),
+                    );
+                    self.connection.sender.send(refused.into())?;
+                }
+                _ => {}
+            }
+        }
+        Ok(())
     }
 
     fn notified(&mut self, notification: Notification) -> Result<(), ServerError> {

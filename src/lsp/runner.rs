@@ -52,6 +52,18 @@ pub struct Answers {
 pub struct Runs {
     pub edits: BTreeMap<String, u64>,
     pub in_flight: Option<(String, Arc<Memo>)>,
+    /// Set at `shutdown`: no run starts.
+    pub stopped: bool,
+}
+
+/// At `shutdown`: no run starts any more, and the one in flight is
+/// cancelled.
+pub fn stop(running: &Running) {
+    let mut runs = lock(running);
+    runs.stopped = true;
+    if let Some((_, memo)) = &runs.in_flight {
+        memo.cancel();
+    }
 }
 
 pub type Running = Arc<Mutex<Runs>>;
@@ -89,8 +101,9 @@ pub fn serve_runs(
             let memo = cache.memo();
             {
                 let mut runs = lock(running);
-                // Edited since it was asked: not run.
-                if runs.edits.get(&uri) != Some(&one.edit) {
+                // Edited since it was asked, or the server is shutting
+                // down: not run.
+                if runs.stopped || runs.edits.get(&uri) != Some(&one.edit) {
                     continue;
                 }
                 runs.in_flight = Some((uri, Arc::clone(&memo)));
