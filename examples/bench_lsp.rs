@@ -150,21 +150,19 @@ fn lenses(path: &std::path::Path, uri: &str, text: &str) {
     );
 }
 
-/// The scenario's run in this process, after the server has stopped: with
-/// a fresh cache (the quicker of two), then with that cache again.
+/// The scenario's run in this process, after the server has stopped: the
+/// first in the process, as the server's is in its own (a second run in
+/// one process finds what the first set up once, and is quicker: 3.9 s
+/// against 4.7 s here), with a fresh cache; then that cache again.
 fn run_alone(path: &std::path::Path) -> (Duration, Duration) {
     let registry = reach::plugin::Registry::builtin();
     let (_, checked) = reach::check(reach::Input::Path(path), &registry);
     let scenario = checked.expect("the example checks");
     let progress = &reach::progress::NoProgress;
-    let mut cold = Duration::MAX;
     let mut cache = reach::TaskCache::default();
-    for _ in 0..2 {
-        cache = reach::TaskCache::default();
-        let start = Instant::now();
-        cache.run(&scenario, progress).expect("within the bound");
-        cold = cold.min(start.elapsed());
-    }
+    let start = Instant::now();
+    cache.run(&scenario, progress).expect("within the bound");
+    let cold = start.elapsed();
     let start = Instant::now();
     cache.run(&scenario, progress).expect("within the bound");
     (cold, start.elapsed())
