@@ -30,7 +30,7 @@ fn main() {
         .expect("run from the repository's root");
     let text = std::fs::read_to_string(&path).unwrap();
     let uri = url::Url::from_file_path(&path).unwrap().to_string();
-    let (mut child, mut stdin, from_server) = started(json!({}));
+    let (child, mut stdin, from_server) = started(json!({}));
     let document = json!({ "uri": uri, "languageId": "reach", "version": 1, "text": text });
     send(
         &mut stdin,
@@ -86,13 +86,7 @@ fn main() {
             ms(times[times.len() - 1])
         );
     }
-    send(
-        &mut stdin,
-        json!({ "jsonrpc": "2.0", "id": 2, "method": "shutdown" }),
-    );
-    wait_for(&from_server, |m| m["id"] == 2);
-    send(&mut stdin, json!({ "jsonrpc": "2.0", "method": "exit" }));
-    child.wait().unwrap();
+    stop(child, stdin, &from_server);
     lenses(&path, &uri, &text);
 }
 
@@ -100,7 +94,7 @@ fn main() {
 /// beside the run's own time in this process.
 fn lenses(path: &std::path::Path, uri: &str, text: &str) {
     let capabilities = json!({ "workspace": { "codeLens": { "refreshSupport": true } } });
-    let (mut child, mut stdin, from_server) = started(capabilities);
+    let (child, mut stdin, from_server) = started(capabilities);
     let mut id = 10;
     let mut to_lenses = |stdin: &mut ChildStdin, start: Instant| {
         wait_for(&from_server, |m| {
@@ -127,13 +121,7 @@ fn lenses(path: &std::path::Path, uri: &str, text: &str) {
         json!({ "jsonrpc": "2.0", "method": "textDocument/didSave", "params": { "textDocument": { "uri": uri } } }),
     );
     let (saved, _) = to_lenses(&mut stdin, Instant::now());
-    send(
-        &mut stdin,
-        json!({ "jsonrpc": "2.0", "id": 2, "method": "shutdown" }),
-    );
-    wait_for(&from_server, |m| m["id"] == 2);
-    send(&mut stdin, json!({ "jsonrpc": "2.0", "method": "exit" }));
-    child.wait().unwrap();
+    stop(child, stdin, &from_server);
     let (run_cold, run_kept) = run_alone(path);
     let ms = |d: Duration| d.as_secs_f64() * 1000.0;
     println!(
@@ -190,6 +178,17 @@ fn started(capabilities: Value) -> (Child, ChildStdin, Receiver<Value>) {
         json!({ "jsonrpc": "2.0", "method": "initialized", "params": {} }),
     );
     (child, stdin, from_server)
+}
+
+/// `shutdown`, then `exit`, and the process waited for.
+fn stop(mut child: Child, mut stdin: ChildStdin, from_server: &Receiver<Value>) {
+    send(
+        &mut stdin,
+        json!({ "jsonrpc": "2.0", "id": 2, "method": "shutdown" }),
+    );
+    wait_for(from_server, |m| m["id"] == 2);
+    send(&mut stdin, json!({ "jsonrpc": "2.0", "method": "exit" }));
+    child.wait().unwrap();
 }
 
 /// The first target's declaration moved 1 mm along x: its name and the

@@ -834,11 +834,7 @@ fn plugins_listing(registry: &Registry) -> String {
         for p in registry.of_kind(kind) {
             out.push_str(&format!("  {:<plugin_width$}  {}\n", p.name(), p.doc()));
             for param in p.params() {
-                let default = match &param.default {
-                    Some(v) => format!("default {}", v.display()),
-                    None if param.optional => "optional".to_string(),
-                    None => "required".to_string(),
-                };
+                let default = param.default_words();
                 out.push_str(&format!(
                     "      {:<param_width$}  {:<8} {:<22} {}\n",
                     param.name,

@@ -738,11 +738,7 @@ fn value(word: &str, what: &str) -> Completion {
 
 /// An option, with its kind, default and doc.
 fn option(param: &ParamSpec) -> Completion {
-    let default = match (&param.default, param.optional) {
-        (Some(v), _) => format!("default {}", v.display()),
-        (None, true) => "optional".to_string(),
-        (None, false) => "required".to_string(),
-    };
+    let default = param.default_words();
     Completion {
         label: param.name.to_string(),
         kind: CompletionKind::Option,

@@ -308,11 +308,7 @@ fn options_table(params: &[ParamSpec]) -> String {
 }
 
 fn option_line(param: &ParamSpec) -> String {
-    let default = match (&param.default, param.optional) {
-        (Some(v), _) => format!("default {}", v.display()),
-        (None, true) => "optional".into(),
-        (None, false) => "required".into(),
-    };
+    let default = param.default_words();
     format!("{} ({default}): {}", param.kind.describe(), param.doc)
 }
 

@@ -17,3 +17,15 @@ pub struct ParamSpec {
     pub optional: bool,
     pub doc: &'static str,
 }
+
+impl ParamSpec {
+    /// `default 0.05`, `optional` or `required`: what `reach plugins` and
+    /// an editor say of the option's default.
+    pub fn default_words(&self) -> String {
+        match &self.default {
+            Some(v) => format!("default {}", v.display()),
+            None if self.optional => "optional".to_string(),
+            None => "required".to_string(),
+        }
+    }
+}
