@@ -352,6 +352,16 @@ fn completion_hover_definition_and_references_know_the_scenarios_names() {
         ann.contains("base `wheelchair`") && ann.contains("seat_height"),
         "{ann}"
     );
+    // Her stature and the measurements `measured` built her from.
+    assert!(ann.contains("\n\nstature 1520 mm"), "{ann}");
+    assert!(ann.contains("sitting_height 801.6 mm"), "{ann}");
+    // A constant of the used file: its value.
+    let height = client.ask(90, "textDocument/hover", position("cup_h", 0, 1));
+    let height = height["contents"]["value"].as_str().unwrap().to_string();
+    assert!(
+        height.contains("= 900 (no unit: 900 mm as a length"),
+        "{height}"
+    );
     let metres = client.ask(9, "textDocument/hover", position("3m", 0, 1));
     assert_eq!(metres["contents"]["value"], "`3m` = 3000 mm");
 

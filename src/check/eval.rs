@@ -20,6 +20,15 @@ impl Checker<'_> {
         }
     }
 
+    /// Every constant that has a value, by name (for the editor's hover).
+    pub(super) fn constants(&self) -> Vec<(String, Quantity)> {
+        let mut constants: Vec<(String, Quantity)> = (self.built.let_values.iter())
+            .filter_map(|(name, value)| Some((name.clone(), (*value)?)))
+            .collect();
+        constants.sort_by(|a, b| a.0.cmp(&b.0));
+        constants
+    }
+
     /// The value of constant `name`; `use_span` is where it is used.
     fn let_value(&mut self, name: &str, use_span: Option<Span>) -> Option<Quantity> {
         if let Some(v) = self.built.let_values.get(name) {

@@ -36,6 +36,7 @@ impl Checker<'_> {
             .map(|(n, d, f)| (n.to_string(), d, f))
             .collect();
         for (name, decl, file) in decls {
+            self.built.captured = Some(Vec::new());
             let body = match (&decl.alias, &decl.urdf) {
                 (Some(_), _) if !decl.params.is_empty() => {
                     self.alias_with(decl, file, &[], decl.name.span, 0)
@@ -46,8 +47,25 @@ impl Checker<'_> {
                 (None, Some(urdf)) => self.in_file(file, |c| c.urdf_body(urdf)),
                 (None, None) => self.body_with(decl, file, &[], decl.name.span),
             };
+            if let Some(measures) = self.built.captured.take() {
+                self.built.measures.insert(name.clone(), measures);
+            }
             self.built.bodies.insert(name, body);
         }
+    }
+
+    /// The body of `r` (as [`Self::body_of`]) and the measurements it was
+    /// built from: the parameters of the outermost mannequin with
+    /// parameters, with their values.
+    pub(super) fn measured_body_of(
+        &mut self,
+        r: &MannequinRef,
+        file: FileId,
+    ) -> Option<(Body, Vec<(String, Quantity)>)> {
+        let outer = self.built.captured.replace(Vec::new());
+        let body = self.body_of(r, file, 0);
+        let measures = std::mem::replace(&mut self.built.captured, outer);
+        Some((body?, measures.unwrap_or_default()))
     }
 
     /// The body of mannequin reference `r` (written in `file`): the named
@@ -94,7 +112,13 @@ impl Checker<'_> {
                 ));
                 None
             }
-            None if r.args.is_empty() => self.built.bodies.get(&r.name.value).cloned().flatten(),
+            None if r.args.is_empty() => {
+                if self.built.captured.as_ref().is_some_and(Vec::is_empty) {
+                    let measures = self.built.measures.get(&r.name.value).cloned();
+                    self.built.captured = measures;
+                }
+                self.built.bodies.get(&r.name.value).cloned().flatten()
+            }
             None => {
                 let at = Span {
                     file,
@@ -158,6 +182,11 @@ impl Checker<'_> {
         self.in_file(file, |c| {
             let outer = std::mem::take(&mut c.built.params);
             c.push_params(decl, &given);
+            if c.built.captured.as_ref().is_some_and(Vec::is_empty) {
+                let measures = c.built.params.iter();
+                let measures = measures.filter_map(|(n, v)| Some((n.clone(), (*v)?)));
+                c.built.captured = Some(measures.collect());
+            }
             let met = c.requirements(decl, args, at);
             let body = build(c).filter(|_| met);
             c.built.params = outer;

@@ -78,8 +78,10 @@ pub fn check(
         None
     };
     let result = if c.cx.errors.is_empty() {
+        let constants = c.constants();
         Ok(Scenario {
             file: sources.get(root).name.clone(),
+            constants,
             rooms,
             persons,
             bases,
@@ -168,6 +170,12 @@ struct Built {
     params: Vec<(String, Option<Quantity>)>,
     /// Each target's room and place in it, by name, for the tasks.
     target_index: HashMap<String, (usize, usize)>,
+    /// The measurements each mannequin (named without arguments) was
+    /// built from: its outermost parameters with values.
+    measures: HashMap<String, Vec<(String, Quantity)>>,
+    /// While a person's body is built: the outermost parameters met so
+    /// far (`Some(empty)` until a mannequin with parameters is met).
+    captured: Option<Vec<(String, Quantity)>>,
 }
 
 /// The pass, in phases (`check` runs them in order: declarations, the

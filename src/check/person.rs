@@ -13,6 +13,7 @@ use crate::span::{Name, Span};
 use crate::syntax::ast::{
     self, JointOverride, MannequinRef, OptionDecl, PersonDecl, PersonMannequin,
 };
+use crate::units::Quantity;
 
 /// How many times `--max-joints` the bodies of all a scenario's people
 /// may hold together: 1,000,000 joints by default (a thousand people of
@@ -150,18 +151,20 @@ impl Checker<'_> {
         let body = mannequin.and_then(|m| self.person_body(m));
         let base = base_use.and_then(|b| self.base_config(b));
         let built = match (base_use, base.as_ref(), body.as_ref()) {
-            (Some(b), Some(config), Some(body)) => {
+            (Some(b), Some(config), Some((body, _))) => {
                 self.build_base(&decl.name.value, b, config, &Physique::of(body))
             }
             _ => None,
         };
         let vision = self.person_vision(&decl.visions);
+        let (body, measures) = body?;
         let person = Person {
             name: decl.name.value.clone(),
             mannequin: mannequin?.mannequin.name.value.clone(),
-            body: body?,
+            body,
             base: base?,
             vision: vision?,
+            measures,
         };
         Some((person, built?))
     }
@@ -307,10 +310,11 @@ impl Checker<'_> {
         items.first()
     }
 
-    fn person_body(&mut self, m: &PersonMannequin) -> Option<Body> {
+    /// The person's body and the measurements it was built from.
+    fn person_body(&mut self, m: &PersonMannequin) -> Option<(Body, Vec<(String, Quantity)>)> {
         let file = self.cx.file;
         // A mannequin that failed to build has reported its own errors.
-        let mut body = self.body_of(&m.mannequin, file, 0)?;
+        let (mut body, measures) = self.measured_body_of(&m.mannequin, file)?;
         with_stance(&mut body, m);
         let mut ok = true;
         for o in &m.overrides {
@@ -323,7 +327,7 @@ impl Checker<'_> {
         if ok {
             ok = self.apart_at_rest(&body, &m.mannequin);
         }
-        ok.then_some(body)
+        ok.then_some((body, measures))
     }
 
     /// Whether each of `body`'s chains keeps its solids apart in the

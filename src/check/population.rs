@@ -567,7 +567,8 @@ impl<'a> Checker<'a> {
         b_file: FileId,
         vision: Option<(&'a [PersonVision], FileId)>,
     ) -> Option<(Person, Arc<dyn Base>)> {
-        let mut body = self.in_file(m_file, |c| c.body_of(&m.mannequin, m_file, 0))?;
+        let (mut body, measures) =
+            self.in_file(m_file, |c| c.measured_body_of(&m.mannequin, m_file))?;
         super::person::with_stance(&mut body, m);
         for profile in &drawn.profiles {
             let profile = Name {
@@ -606,6 +607,7 @@ impl<'a> Checker<'a> {
                 body,
                 base: config,
                 vision,
+                measures,
             };
             (person, base)
         })

@@ -13,7 +13,7 @@ use crate::scenario::Scenario;
 use crate::source::Sources;
 use crate::span::FileId;
 use crate::syntax::ast::UseTarget;
-use crate::units::Unit;
+use crate::units::{Dim, Quantity, Unit};
 
 /// What hover shows at byte `offset` of file `file` (its index in
 /// `sources`; none where the place is nothing it knows).
@@ -197,6 +197,11 @@ impl About<'_> {
                     mm(v.norm())
                 ))
             }
+            SymbolKind::Constant => {
+                let constants = scenario.constants.iter();
+                let (_, value) = constants.into_iter().find(|(n, _)| *n == symbol.name)?;
+                Some(format!("= {}", quantity(value)))
+            }
             SymbolKind::Person => self.person(scenario, &symbol.name),
             SymbolKind::Population => self.population(scenario, &symbol.name),
             SymbolKind::BasePreset => self.base_preset(symbol),
@@ -230,6 +235,15 @@ impl About<'_> {
             .collect();
         if !options.is_empty() {
             out.push_str(&format!(" {{ {} }}", options.join(", ")));
+        }
+        if let Some((_, stature)) = person.measures.iter().find(|(n, _)| n == "stature") {
+            out.push_str(&format!("\n\nstature {}", quantity(stature)));
+        }
+        if !person.measures.is_empty() {
+            let measures: Vec<String> = (person.measures.iter())
+                .map(|(name, value)| format!("{name} {}", quantity(value)))
+                .collect();
+            out.push_str(&format!("\n\nbuilt from: {}", measures.join(", ")));
         }
         out.push_str("\n\n```text\n");
         out.push_str(&crate::stdlib::body_table(&person.body));
@@ -310,6 +324,28 @@ fn options_table(params: &[ParamSpec]) -> String {
 fn option_line(param: &ParamSpec) -> String {
     let default = param.default_words();
     format!("{} ({default}): {}", param.kind.describe(), param.doc)
+}
+
+/// A value with its unit: a length in mm, an angle in deg, to 0.1.
+fn quantity(value: &Quantity) -> String {
+    match *value {
+        Quantity::Dimensioned { value, dim } if dim == Dim::LENGTH => format!("{} mm", mm(value)),
+        Quantity::Dimensioned { value, dim } if dim == Dim::ANGLE => {
+            format!("{} deg", mm(value.to_degrees()))
+        }
+        Quantity::Dimensioned { value, dim } if dim == Dim::NONE => trimmed(value),
+        Quantity::Dimensioned { value, dim } => format!("{} ({dim})", trimmed(value)),
+        Quantity::Bare { value, defaults } => {
+            let length = value * defaults.length.to_internal();
+            let angle = (value * defaults.angle.to_internal()).to_degrees();
+            format!(
+                "{} (no unit: {} mm as a length, {} deg as an angle)",
+                trimmed(value),
+                mm(length),
+                mm(angle)
+            )
+        }
+    }
 }
 
 /// A length or an angle as hover shows it: to 0.1, without a trailing

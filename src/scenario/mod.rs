@@ -27,11 +27,14 @@ use crate::plugin::{Base, FormatScene, Standard, Subject, Task, TaskInput, TaskP
 use crate::progress::Progress;
 use crate::scene::{Person, Population, Room, Surface};
 use crate::span::Span;
+use crate::units::Quantity;
 
 #[derive(Clone)]
 pub struct Scenario {
     /// The root file's name as given.
     pub file: String,
+    /// Every `let` constant with its value, by name.
+    pub constants: Vec<(String, Quantity)>,
     pub rooms: Vec<Room>,
     pub persons: Vec<Person>,
     /// Each person's base, built, in the order of `persons`.

@@ -32,6 +32,7 @@ use nalgebra::{Point3, Rotation2, Vector2, Vector3};
 use crate::geometry::Cuboid;
 use crate::kinematics::Body;
 use crate::options::PluginConfig;
+use crate::units::Quantity;
 
 /// A room: the box from the origin to `size_mm`, x and y on the floor, z up.
 #[derive(Clone, Debug, PartialEq)]
@@ -158,4 +159,9 @@ pub struct Person {
     /// The vision settings the person's `vision` gives (only those given):
     /// a gaze task's own come first, then these, then the defaults.
     pub vision: Vision,
+    /// The measurements the body was built from: the parameters of the
+    /// outermost mannequin with parameters (`measured`'s `stature`,
+    /// `sitting_height`, ...) with their values, in declaration order;
+    /// empty for a mannequin without parameters.
+    pub measures: Vec<(String, Quantity)>,
 }
