@@ -440,8 +440,12 @@ fn a_runs_answers_come_back_as_code_lenses_and_go_stale_on_an_edit() {
     // The run's answers: the `expect` not met published as a diagnostic
     // on its line, then the client asked to refresh its lenses.
     let mut unmet = Vec::new();
+    let mut logged = String::new();
     loop {
         let message = client.next();
+        if message["method"] == "window/logMessage" {
+            logged = message["params"]["message"].as_str().unwrap().to_string();
+        }
         if message["method"] == "textDocument/publishDiagnostics" {
             unmet = message["params"]["diagnostics"].as_array().unwrap().clone();
         }
@@ -449,6 +453,12 @@ fn a_runs_answers_come_back_as_code_lenses_and_go_stale_on_an_edit() {
             break;
         }
     }
+    // The run logged with its time and answers.
+    assert!(
+        logged.starts_with("reach: ran kitchen.reach in "),
+        "{logged}"
+    );
+    assert!(logged.ends_with(" ms: 2 answers"), "{logged}");
     assert_eq!(unmet.len(), 1, "{unmet:?}");
     assert_eq!(unmet[0]["range"]["start"]["line"], 11, "{unmet:?}");
     let message = unmet[0]["message"].as_str().unwrap();

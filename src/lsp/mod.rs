@@ -29,7 +29,7 @@ use crossbeam_channel::{select, unbounded, Sender};
 use lsp_server::{Connection, ErrorCode, Message, Notification, Request, RequestId, Response};
 use lsp_types::notification::{
     DidChangeTextDocument, DidCloseTextDocument, DidOpenTextDocument, DidSaveTextDocument,
-    Notification as _, PublishDiagnostics,
+    LogMessage, Notification as _, PublishDiagnostics,
 };
 use lsp_types::request::{
     CodeLensRequest, Completion, GotoDefinition, HoverRequest, InlayHintRequest, References,
@@ -39,9 +39,10 @@ use lsp_types::{
     CodeLensOptions, CodeLensParams, CompletionOptions, CompletionParams,
     DidChangeTextDocumentParams, DidCloseTextDocumentParams, DidOpenTextDocumentParams,
     DidSaveTextDocumentParams, GotoDefinitionParams, HoverParams, HoverProviderCapability,
-    InitializeParams, InitializeResult, InlayHintParams, OneOf, PublishDiagnosticsParams,
-    ReferenceParams, SaveOptions, ServerCapabilities, ServerInfo, TextDocumentSyncCapability,
-    TextDocumentSyncKind, TextDocumentSyncOptions, TextDocumentSyncSaveOptions, Uri,
+    InitializeParams, InitializeResult, InlayHintParams, LogMessageParams, MessageType, OneOf,
+    PublishDiagnosticsParams, ReferenceParams, SaveOptions, ServerCapabilities, ServerInfo,
+    TextDocumentSyncCapability, TextDocumentSyncKind, TextDocumentSyncOptions,
+    TextDocumentSyncSaveOptions, Uri,
 };
 
 use document::Document;
@@ -438,7 +439,14 @@ impl Server<'_, '_> {
         let Some(document) = self.open.get_mut(&name) else {
             return Ok(());
         };
+        let message = ran_message(&ran);
         document.answers = Some(ran);
+        let log = LogMessageParams {
+            typ: MessageType::LOG,
+            message,
+        };
+        let log = Notification::new(LogMessage::METHOD.into(), log);
+        self.connection.sender.send(log.into())?;
         self.publish_check(&name)?;
         let (lenses, hints) = self.refresh;
         if lenses {
@@ -483,4 +491,20 @@ impl Server<'_, '_> {
         self.connection.sender.send(response.into())?;
         Ok(())
     }
+}
+
+/// The line a run's answers are logged with (`window/logMessage`): the
+/// file, the run's time and its answers (`reach: ran kitchen.reach in 412
+/// ms: 6 answers`), and where the bound stopped it, why.
+fn ran_message(ran: &Answers) -> String {
+    let file = ran.uri.rsplit('/').next().unwrap_or(&ran.uri);
+    let answers = match ran.lenses.len() {
+        1 => "1 answer".to_string(),
+        n => format!("{n} answers"),
+    };
+    let mut message = format!("reach: ran {file} in {:.0} ms: {answers}", ran.run_ms);
+    if let Some(why) = &ran.stopped {
+        message.push_str(&format!(" (stopped: {why})"));
+    }
+    message
 }

@@ -10,6 +10,7 @@
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
+use std::time::Instant;
 
 use crossbeam_channel::{Receiver, Sender};
 use lsp_types::{Diagnostic, DiagnosticSeverity, NumberOrString, Range};
@@ -41,6 +42,9 @@ pub struct Answers {
     pub stopped: Option<String>,
     /// The text run, to move the answers with their lines after an edit.
     pub text: String,
+    /// How long the run took (its cache's run, and the partial run after
+    /// it where the bound stopped that), in ms.
+    pub run_ms: f64,
 }
 
 /// What the run thread and the editor's share: each open document's edit
@@ -133,6 +137,7 @@ fn run_one(
     cache: &mut TaskCache,
     (session, registry): (Session<'_>, &Registry),
 ) -> Option<Answers> {
+    let start = Instant::now();
     let (report, stopped) = match cache.run(&asked.scenario, &NoProgress) {
         Ok((report, _)) => (report, None),
         // Cancelled: no answers.
@@ -155,6 +160,7 @@ fn run_one(
             (ran.report, ran.stopped.map(|e| e.to_string()))
         }
     };
+    let run_ms = start.elapsed().as_secs_f64() * 1000.0;
     let index = LineIndex::new(&asked.text);
     let range = |span: (u32, u32)| index.range(span.0 as usize, span.1 as usize);
     let root = root_file(&asked.scenario);
@@ -183,6 +189,7 @@ fn run_one(
         unmet,
         stopped,
         text: asked.text.clone(),
+        run_ms,
     })
 }
 
