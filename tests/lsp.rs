@@ -237,7 +237,7 @@ fn an_error_in_a_used_file_is_shown_in_that_file() {
     );
     assert!(client.diagnostics_for(&file_uri(&parts)).is_empty());
     // A request the server does not answer is refused, not ignored.
-    client.request(7, "textDocument/rename", json!({}));
+    client.request(7, "textDocument/formatting", json!({}));
     assert_eq!(client.response(7)["error"]["code"], -32601);
     client.stop();
 }
@@ -511,5 +511,73 @@ fn a_runs_answers_come_back_as_code_lenses_and_go_stale_on_an_edit() {
         "textDocument/didClose",
         json!({ "textDocument": { "uri": uri } }),
     );
+    client.stop();
+}
+
+#[test]
+fn rename_changes_every_place_a_name_is_written_or_says_why_not() {
+    let dir = tempfile::tempdir().unwrap();
+    let parts = dir.path().join("parts.reach");
+    std::fs::write(&parts, "units mm\nlet cup_h = 900\n").unwrap();
+    let path = dir.path().join("kitchen.reach");
+    let uri = file_uri(&path);
+    let mut client = Client::start();
+    client.open(&uri, USING);
+    client.open(&file_uri(&parts), "units mm\nlet cup_h = 900\n");
+    let doc = json!({ "uri": uri });
+    let at = |needle: &str, past: usize| at(USING, needle, 0, past);
+    // The name at the cursor, from its use.
+    let prepared = client.ask(
+        2,
+        "textDocument/prepareRename",
+        json!({ "textDocument": doc, "position": at("by ann", 4) }),
+    );
+    assert_eq!(prepared["placeholder"], "ann", "{prepared}");
+    assert_eq!(prepared["range"]["start"], at("by ann", 3));
+    // Its declaration and both uses.
+    let rename = |client: &mut Client, id: i64, needle: &str, past: usize, new: &str| {
+        let params = json!({ "textDocument": doc, "position": at(needle, past), "newName": new });
+        client.request(id, "textDocument/rename", params);
+        client.response(id)
+    };
+    let edit = rename(&mut client, 3, "person ann", 8, "bea");
+    let edits = edit["result"]["changes"][uri.as_str()]
+        .as_array()
+        .unwrap()
+        .clone();
+    let starts: Vec<Value> = edits.iter().map(|e| e["range"]["start"].clone()).collect();
+    assert_eq!(
+        starts,
+        [at("person ann", 7), at("by ann", 3), at("expect ann", 7)],
+        "{edit}"
+    );
+    assert!(edits.iter().all(|e| e["newText"] == "bea"), "{edit}");
+    // A constant of the used file: there and here.
+    let edit = rename(&mut client, 4, "cup_h", 1, "cup_height");
+    let changes = edit["result"]["changes"].as_object().unwrap();
+    assert_eq!(changes.len(), 2, "{edit}");
+    assert_eq!(
+        changes[&file_uri(&parts)][0]["range"]["start"],
+        json!({ "line": 1, "character": 4 })
+    );
+    // Refused, with why: a name declared already, a keyword, not a name,
+    // the standard library's, a place with no name.
+    for (id, needle, past, new, why) in [
+        (
+            5,
+            "person ann",
+            8,
+            "cup",
+            "is declared already (target in `kitchen`)",
+        ),
+        (6, "person ann", 8, "room", "is a keyword"),
+        (7, "person ann", 8, "2ann", "is not a name"),
+        (8, "woman_5th_seated", 1, "mum", "is the standard library's"),
+        (9, "reach cup", 1, "run", "no declared name here"),
+    ] {
+        let refused = rename(&mut client, id, needle, past, new);
+        let message = refused["error"]["message"].as_str().unwrap_or_default();
+        assert!(message.contains(why), "{new}: {refused}");
+    }
     client.stop();
 }

@@ -1,13 +1,15 @@
 //! What an editor asks of a scenario (the language server, `reach lsp`,
 //! is its client): the names its files declare and use (`outline.rs`),
 //! what may be typed at a place (`complete.rs`) and what a name, an
-//! option or a number is (`hover.rs`), and a run's answers at the lines
-//! that asked for them (`verdicts.rs`). The protocol itself is the
+//! option or a number is (`hover.rs`), which places a rename changes and
+//! whether the new name may be (`rename.rs`), and a run's answers at the
+//! lines that asked for them (`verdicts.rs`). The protocol itself is the
 //! binary's.
 
 mod complete;
 mod hover;
 mod outline;
+mod rename;
 mod verdicts;
 
 pub use complete::{completions, Completion, CompletionKind};
@@ -15,6 +17,7 @@ pub use hover::hover;
 pub use outline::{
     Found, OptionName, OptionOwner, Outline, PluginName, Reference, Symbol, SymbolKind, UseOf,
 };
+pub use rename::{may_rename_to, renamed_at, written_at, RenameRefused};
 pub use verdicts::{unmet, verdicts, Unmet, Verdict};
 
 pub use crate::syntax::ast::UseTarget;

@@ -16,7 +16,7 @@ use lsp_types::{Diagnostic, DiagnosticSeverity};
 use super::files::{file_of_uri, uri_of_file};
 use super::position::LineIndex;
 use super::runner::Answers;
-use reach::editor::{Analysis, CompletionKind, Found, Outline, SymbolKind};
+use reach::editor::{Analysis, CompletionKind, Found, Outline, RenameRefused, SymbolKind};
 use reach::plugin::Registry;
 
 pub struct Document {
@@ -196,6 +196,41 @@ impl Document {
             .into_iter()
             .filter_map(|p| self.location(p))
             .collect()
+    }
+
+    /// The places a rename at `position` of the file `uri` (whose text the
+    /// editor holds as `text`) to `new` changes, as this document's check
+    /// sees them: none where it did not read that file; refused where the
+    /// name is not one, is the standard library's, or `new` may not be.
+    pub fn rename_places(
+        &self,
+        (uri, text, position): (&Uri, &str, Position),
+        new: Option<&str>,
+    ) -> Result<(Vec<Location>, Range), RenameRefused> {
+        let Some((file, offset)) = self.here_of(uri, text, position) else {
+            return Ok((Vec::new(), Range::default()));
+        };
+        let outline = (self.analysis.outline.as_ref()).ok_or(RenameRefused::DoesNotParse)?;
+        let (symbols, span) = reach::editor::renamed_at(outline, file, offset)?;
+        let sources = &self.analysis.sources;
+        let in_std = |s: &&reach::editor::Symbol| {
+            let (_, source) = sources.iter().nth(s.span.file.0 as usize)?;
+            Some(source.path().is_none() && source.name.starts_with("std::"))
+        };
+        if let Some(std) = symbols.iter().find(|s| in_std(s) == Some(true)) {
+            return Err(RenameRefused::Std {
+                name: std.name.clone(),
+            });
+        }
+        if let Some(new) = new {
+            reach::editor::may_rename_to(outline, &symbols, new)?;
+        }
+        let range = LineIndex::new(text).range(span.start as usize, span.end as usize);
+        let places = reach::editor::written_at(outline, &symbols);
+        let locations = (places.into_iter())
+            .filter_map(|s| self.location((s.file.0 as usize, s.start, s.end)))
+            .collect();
+        Ok((locations, range))
     }
 
     /// Whether the answers shown were run on another text than this.

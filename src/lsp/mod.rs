@@ -17,6 +17,7 @@ mod document;
 mod files;
 mod position;
 mod published;
+mod rename;
 mod runner;
 mod uri;
 
@@ -32,16 +33,16 @@ use lsp_types::notification::{
     LogMessage, Notification as _, PublishDiagnostics,
 };
 use lsp_types::request::{
-    CodeLensRequest, Completion, GotoDefinition, HoverRequest, InlayHintRequest, References,
-    Request as _,
+    CodeLensRequest, Completion, GotoDefinition, HoverRequest, InlayHintRequest,
+    PrepareRenameRequest, References, Rename, Request as _,
 };
 use lsp_types::{
     CodeLensOptions, CodeLensParams, CompletionOptions, CompletionParams,
     DidChangeTextDocumentParams, DidCloseTextDocumentParams, DidOpenTextDocumentParams,
     DidSaveTextDocumentParams, GotoDefinitionParams, HoverParams, HoverProviderCapability,
     InitializeParams, InitializeResult, InlayHintParams, LogMessageParams, MessageType, OneOf,
-    PublishDiagnosticsParams, ReferenceParams, SaveOptions, ServerCapabilities, ServerInfo,
-    TextDocumentSyncCapability, TextDocumentSyncKind, TextDocumentSyncOptions,
+    PublishDiagnosticsParams, ReferenceParams, RenameOptions, SaveOptions, ServerCapabilities,
+    ServerInfo, TextDocumentSyncCapability, TextDocumentSyncKind, TextDocumentSyncOptions,
     TextDocumentSyncSaveOptions, Uri,
 };
 
@@ -74,7 +75,7 @@ pub fn serve(
     let (id, params) = connection.initialize_start()?;
     let params: InitializeParams = serde_json::from_value(params).unwrap_or_default();
     let result = InitializeResult {
-        capabilities: capabilities(),
+        capabilities: capabilities_of(&params),
         server_info: Some(ServerInfo {
             name: "reach".into(),
             version: Some(env!("CARGO_PKG_VERSION").into()),
@@ -106,6 +107,19 @@ pub fn serve(
     })
 }
 
+/// What the server does for the client that sent `params`.
+fn capabilities_of(params: &InitializeParams) -> ServerCapabilities {
+    capabilities(shows_lenses(params))
+}
+
+/// Whether the client shows code lenses: where it does, the answers are
+/// lenses only (not inlay hints too, which VS Code would show beside
+/// them on the same line).
+fn shows_lenses(params: &InitializeParams) -> bool {
+    let document = params.capabilities.text_document.as_ref();
+    document.is_some_and(|d| d.code_lens.is_some())
+}
+
 /// Which of the client's views of the answers it asks the server to
 /// refresh once a run is done: code lenses, inlay hints.
 fn refreshes(params: &InitializeParams) -> (bool, bool) {
@@ -124,7 +138,9 @@ fn refreshes(params: &InitializeParams) -> (bool, bool) {
 /// The whole text on every change (a scenario is checked whole anyway),
 /// and a word on save (a file that others `use` changes on disk then; the
 /// scenario runs).
-fn capabilities() -> ServerCapabilities {
+/// What the server does; the answers as inlay hints only for a client
+/// that does not show code lenses (`lenses` false: Helix).
+fn capabilities(lenses: bool) -> ServerCapabilities {
     ServerCapabilities {
         text_document_sync: Some(TextDocumentSyncCapability::Options(
             TextDocumentSyncOptions {
@@ -146,7 +162,11 @@ fn capabilities() -> ServerCapabilities {
         code_lens_provider: Some(CodeLensOptions {
             resolve_provider: Some(false),
         }),
-        inlay_hint_provider: Some(OneOf::Left(true)),
+        inlay_hint_provider: (!lenses).then_some(OneOf::Left(true)),
+        rename_provider: Some(OneOf::Right(RenameOptions {
+            prepare_provider: Some(true),
+            work_done_progress_options: Default::default(),
+        })),
         ..ServerCapabilities::default()
     }
 }
@@ -277,6 +297,7 @@ impl Server<'_, '_> {
     fn answer(&mut self, request: Request) -> Result<(), ServerError> {
         let id = request.id.clone();
         let result = match request.method.as_str() {
+            PrepareRenameRequest::METHOD | Rename::METHOD => return self.answer_rename(request),
             Completion::METHOD => {
                 let p: CompletionParams = serde_json::from_value(request.params)?;
                 let at = p.text_document_position;
@@ -507,4 +528,25 @@ fn ran_message(ran: &Answers) -> String {
         message.push_str(&format!(" (stopped: {why})"));
     }
     message
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_answers_are_inlay_hints_only_for_a_client_without_code_lenses() {
+        let client = |capabilities: serde_json::Value| {
+            let params = serde_json::json!({ "capabilities": capabilities });
+            let params: InitializeParams = serde_json::from_value(params).unwrap();
+            capabilities_of(&params).inlay_hint_provider.is_some()
+        };
+        // VS Code and Neovim show lenses; Helix shows hints only.
+        assert!(!client(
+            serde_json::json!({ "textDocument": { "codeLens": {} } })
+        ));
+        assert!(client(
+            serde_json::json!({ "textDocument": { "inlayHint": {} } })
+        ));
+    }
 }
