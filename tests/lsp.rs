@@ -497,10 +497,16 @@ fn a_runs_answers_come_back_as_code_lenses_and_go_stale_on_an_edit() {
     // An edit: the answers are stale until the next save's run, and move
     // with their lines.
     client.change(&uri, 2, &format!("// a line above\n{USING}"));
-    let lenses = client.ask(4, "textDocument/codeLens", doc);
+    let lenses = client.ask(4, "textDocument/codeLens", doc.clone());
     let title = lenses[0]["command"]["title"].as_str().unwrap();
     assert!(title.starts_with("(stale) cup by ann"), "{title}");
     assert_eq!(lenses[0]["range"]["start"]["line"], 11);
+    // The edit undone: the text run, so its answers, are back.
+    client.change(&uri, 3, USING);
+    let lenses = client.ask(5, "textDocument/codeLens", doc.clone());
+    let title = lenses[0]["command"]["title"].as_str().unwrap();
+    assert!(title.starts_with("cup by ann"), "{title}");
+    assert_eq!(lenses[0]["range"]["start"]["line"], 10);
     // Saved and shut down at once, as `:wq` does; a message between
     // `shutdown` and `exit` is let be, and the server exits 0.
     client.notify(

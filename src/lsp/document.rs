@@ -234,8 +234,10 @@ impl Document {
     }
 
     /// Whether the answers shown were run on another text than this.
+    /// (By the text, not the edit count: an edit undone brings the run's
+    /// text, and its answers, back.)
     fn stale(&self) -> bool {
-        self.answers.as_ref().is_some_and(|a| a.edit != self.edit)
+        self.answers.as_ref().is_some_and(|a| a.text != self.text)
     }
 
     /// The line of this text that line `line` of the text run is now: the
