@@ -33,7 +33,6 @@ pub struct Asked {
 /// A run's answers, placed on the lines of the text it ran.
 pub struct Answers {
     pub uri: String,
-    pub edit: u64,
     /// Each answer's verdict at its declaration's range.
     pub lenses: Vec<(Range, bool, String)>,
     /// The `expect`s not met, as diagnostics.
@@ -184,7 +183,6 @@ fn run_one(
         .collect();
     Some(Answers {
         uri: asked.uri.clone(),
-        edit: asked.edit,
         lenses,
         unmet,
         stopped,
