@@ -158,7 +158,9 @@ enum Command {
     },
     /// Serve the Language Server Protocol over standard input and output:
     /// an editor's open .reach files checked as `reach check` checks them,
-    /// their diagnostics shown as you type (docs/editors.md).
+    /// their diagnostics shown as you type; completion, hover, definitions,
+    /// references and rename; each saved scenario run, its answers shown
+    /// on the lines that ask them (docs/editors.md).
     Lsp {
         #[command(flatten)]
         limits: LimitArgs,
