@@ -159,8 +159,8 @@ enum Command {
     /// Serve the Language Server Protocol over standard input and output:
     /// an editor's open .reach files checked as `reach check` checks them,
     /// their diagnostics shown as you type; completion, hover, definitions,
-    /// references and rename; each saved scenario run, its answers shown
-    /// on the lines that ask them (docs/editors.md).
+    /// references and rename; each scenario run when opened and when saved,
+    /// its answers shown on the lines that ask them (docs/editors.md).
     Lsp {
         #[command(flatten)]
         limits: LimitArgs,
