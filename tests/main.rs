@@ -36,6 +36,7 @@ mod placement;
 mod plugins;
 mod population;
 mod properties;
+mod rename;
 mod retry;
 mod routes;
 mod shards;
