@@ -60,7 +60,7 @@ impl fmt::Display for RenameRefused {
             }
             RenameRefused::Std { name } => write!(
                 f,
-                "`{name}` is the standard library's, which is read-only: declare your own (`mannequin mine = {name}`) to name it otherwise"
+                "`{name}` is the standard library's, which is read-only: to call it otherwise, declare one of your own in this file (a mannequin, for one: `mannequin mine = {name}`)"
             ),
             RenameRefused::NotAnIdentifier { new } => write!(
                 f,
