@@ -1,30 +1,17 @@
 //! Renaming a declared name: which declarations a place in the text
 //! renames (the name declared there, or the declarations a use there is
 //! to), every place the name is written (the declarations and their
-//! uses), and whether a new name may take its place: an identifier, not a
-//! keyword, and no name declared already (of any kind, anywhere the check
-//! read, the standard library included), so that the rename can neither
-//! fail to parse nor make a use mean another declaration.
+//! uses), and whether a new name may take its place: a name the grammar
+//! takes, not a keyword (`syntax::is_name`, `syntax::is_keyword`), and
+//! no name declared already (of any kind, anywhere the check read, the
+//! standard library included), so that the rename can neither fail to
+//! parse nor make a use mean another declaration.
 
 use std::fmt;
 
 use super::outline::{Found, Outline, Symbol};
 use crate::span::Span;
-
-/// The words the grammar keeps from names (`keyword` in
-/// `grammar/reach.pest`).
-const KEYWORDS: [&str; 10] = [
-    "units",
-    "use",
-    "let",
-    "room",
-    "mannequin",
-    "profile",
-    "person",
-    "by",
-    "true",
-    "false",
-];
+use crate::syntax::{is_keyword, is_name};
 
 /// Why a name is not renamed.
 #[derive(Clone, Debug, PartialEq)]
@@ -122,15 +109,11 @@ pub fn may_rename_to(
     symbols: &[&Symbol],
     new: &str,
 ) -> Result<(), RenameRefused> {
-    let mut chars = new.chars();
-    let starts_well = chars
-        .next()
-        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_');
-    if !starts_well || !chars.all(|c| c.is_ascii_alphanumeric() || c == '_') {
-        return Err(RenameRefused::NotAnIdentifier { new: new.into() });
-    }
-    if KEYWORDS.contains(&new) {
+    if is_keyword(new) {
         return Err(RenameRefused::Keyword { new: new.into() });
+    }
+    if !is_name(new) {
+        return Err(RenameRefused::NotAnIdentifier { new: new.into() });
     }
     let renamed = |s: &Symbol| symbols.iter().any(|r| place(&r.span) == place(&s.span));
     let taken = (outline.symbols.iter()).find(|s| s.name == new && !renamed(s));

@@ -7,6 +7,8 @@ mod expected;
 mod grammar;
 mod parser;
 mod population;
+mod word;
 
 pub use code::code_bytes;
 pub use parser::{parse_file, parse_file_within};
+pub use word::{is_keyword, is_name};
