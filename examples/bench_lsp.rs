@@ -94,7 +94,8 @@ fn main() {
 }
 
 /// The time from `didOpen`, then from a `didSave`, to the lenses, each
-/// beside the run's own time in this process.
+/// beside the run's own time as the server logs it, and the same run in
+/// this process.
 fn lenses(path: &std::path::Path, uri: &str, text: &str) {
     let capabilities = json!({ "workspace": { "codeLens": { "refreshSupport": true } } });
     let (child, mut stdin, from_server) = started(capabilities);

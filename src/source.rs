@@ -39,6 +39,15 @@ impl SourceFile {
         }
     }
 
+    /// The standard library's module it is (`arm` for `std::arm`), if it
+    /// is one.
+    pub fn std_module(&self) -> Option<&str> {
+        match &self.origin {
+            Origin::Std(module) => Some(module),
+            Origin::Path(_) | Origin::Memory => None,
+        }
+    }
+
     /// The byte offset at which each line starts: 0, and each offset after
     /// a line feed.
     pub fn line_starts(&self) -> &[usize] {

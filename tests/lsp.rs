@@ -256,6 +256,18 @@ reach cup, jar by ann
 expect ann reaches jar
 ";
 
+/// The file `USING` uses.
+const PARTS: &str = "units mm\nlet cup_h = 900\n";
+
+/// A directory holding `parts.reach` (`PARTS`), where `USING` is to be
+/// `kitchen.reach`; and the path of `parts.reach`.
+fn with_parts() -> (tempfile::TempDir, std::path::PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    let parts = dir.path().join("parts.reach");
+    std::fs::write(&parts, PARTS).unwrap();
+    (dir, parts)
+}
+
 /// The position of the `k`-th (0-based) `needle` in `text`, plus `past`
 /// characters (all ASCII here).
 fn at(text: &str, needle: &str, k: usize, past: usize) -> Value {
@@ -275,9 +287,7 @@ fn labels(items: &Value) -> Vec<String> {
 
 #[test]
 fn completion_hover_definition_and_references_know_the_scenarios_names() {
-    let dir = tempfile::tempdir().unwrap();
-    let parts = dir.path().join("parts.reach");
-    std::fs::write(&parts, "units mm\nlet cup_h = 900\n").unwrap();
+    let (dir, parts) = with_parts();
     let path = dir.path().join("kitchen.reach");
     let uri = file_uri(&path);
     let cache = dir.path().join("cache");
@@ -424,12 +434,7 @@ fn completion_hover_definition_and_references_know_the_scenarios_names() {
 
 #[test]
 fn a_runs_answers_come_back_as_code_lenses_and_go_stale_on_an_edit() {
-    let dir = tempfile::tempdir().unwrap();
-    std::fs::write(
-        dir.path().join("parts.reach"),
-        "units mm\nlet cup_h = 900\n",
-    )
-    .unwrap();
+    let (dir, _) = with_parts();
     let uri = file_uri(&dir.path().join("kitchen.reach"));
     let mut client = Client::start();
     client.open(&uri, USING);
@@ -522,14 +527,12 @@ fn a_runs_answers_come_back_as_code_lenses_and_go_stale_on_an_edit() {
 
 #[test]
 fn rename_changes_every_place_a_name_is_written_or_says_why_not() {
-    let dir = tempfile::tempdir().unwrap();
-    let parts = dir.path().join("parts.reach");
-    std::fs::write(&parts, "units mm\nlet cup_h = 900\n").unwrap();
+    let (dir, parts) = with_parts();
     let path = dir.path().join("kitchen.reach");
     let uri = file_uri(&path);
     let mut client = Client::start();
     client.open(&uri, USING);
-    client.open(&file_uri(&parts), "units mm\nlet cup_h = 900\n");
+    client.open(&file_uri(&parts), PARTS);
     let doc = json!({ "uri": uri });
     let at = |needle: &str, past: usize| at(USING, needle, 0, past);
     // The name at the cursor, from its use.

@@ -173,8 +173,9 @@ struct Built {
     /// The measurements each mannequin (named without arguments) was
     /// built from: its outermost parameters with values.
     measures: HashMap<String, Vec<(String, Quantity)>>,
-    /// While a person's body is built: the outermost parameters met so
-    /// far (`Some(empty)` until a mannequin with parameters is met).
+    /// While a mannequin's or a person's body is built: the outermost
+    /// parameters met so far (`Some(empty)` until a mannequin with
+    /// parameters is met; `None` when nothing is being measured).
     captured: Option<Vec<(String, Quantity)>>,
 }
 

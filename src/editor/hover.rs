@@ -198,8 +198,8 @@ impl About<'_> {
                 ))
             }
             SymbolKind::Constant => {
-                let constants = scenario.constants.iter();
-                let (_, value) = constants.into_iter().find(|(n, _)| *n == symbol.name)?;
+                let mut constants = scenario.constants.iter();
+                let (_, value) = constants.find(|(n, _)| *n == symbol.name)?;
                 Some(format!("= {}", quantity(value)))
             }
             SymbolKind::Person => self.person(scenario, &symbol.name),
@@ -212,10 +212,8 @@ impl About<'_> {
     /// A declaration of the standard library's: its entry of `reach
     /// stdlib`.
     fn std_entry(&self, symbol: &Symbol) -> Option<String> {
-        let source = self.sources.get(symbol.span.file);
-        if !matches!(source.origin, crate::source::Origin::Std(_)) {
-            return None;
-        }
+        // Only where it is declared in a module of the library.
+        self.sources.get(symbol.span.file).std_module()?;
         let entry = crate::stdlib::describe(&symbol.name).ok()?;
         Some(format!("```text\n{entry}```"))
     }

@@ -31,6 +31,15 @@ pub struct Document {
     pub answers: Option<Answers>,
 }
 
+/// What a rename changes, as one document's check sees it.
+pub struct Renamed {
+    /// Every place the name is written.
+    pub places: Vec<Location>,
+    /// The name where the rename was asked.
+    pub range: Range,
+    pub name: String,
+}
+
 /// A span's file and bytes, as the editor's library gives them.
 type Place = (usize, u32, u32);
 
@@ -198,26 +207,26 @@ impl Document {
             .collect()
     }
 
-    /// The places a rename at `position` of the file `uri` (whose text the
+    /// What a rename at `position` of the file `uri` (whose text the
     /// editor holds as `text`) to `new` changes, as this document's check
-    /// sees them: none where it did not read that file; refused where the
+    /// sees it: nothing where it did not read that file; refused where the
     /// name is not one, is the standard library's, or `new` may not be.
     pub fn rename_places(
         &self,
         (uri, text, position): (&Uri, &str, Position),
         new: Option<&str>,
-    ) -> Result<(Vec<Location>, Range), RenameRefused> {
+    ) -> Result<Option<Renamed>, RenameRefused> {
         let Some((file, offset)) = self.here_of(uri, text, position) else {
-            return Ok((Vec::new(), Range::default()));
+            return Ok(None);
         };
         let outline = (self.analysis.outline.as_ref()).ok_or(RenameRefused::DoesNotParse)?;
         let (symbols, span) = reach::editor::renamed_at(outline, file, offset)?;
         let sources = &self.analysis.sources;
         let in_std = |s: &&reach::editor::Symbol| {
-            let (_, source) = sources.iter().nth(s.span.file.0 as usize)?;
-            Some(source.path().is_none() && source.name.starts_with("std::"))
+            let source = sources.iter().nth(s.span.file.0 as usize);
+            source.is_some_and(|(_, f)| f.std_module().is_some())
         };
-        if let Some(std) = symbols.iter().find(|s| in_std(s) == Some(true)) {
+        if let Some(std) = symbols.iter().find(|s| in_std(s)) {
             return Err(RenameRefused::Std {
                 name: std.name.clone(),
             });
@@ -227,10 +236,14 @@ impl Document {
         }
         let range = LineIndex::new(text).range(span.start as usize, span.end as usize);
         let places = reach::editor::written_at(outline, &symbols);
-        let locations = (places.into_iter())
+        let places = (places.into_iter())
             .filter_map(|s| self.location((s.file.0 as usize, s.start, s.end)))
             .collect();
-        Ok((locations, range))
+        Ok(Some(Renamed {
+            places,
+            range,
+            name: symbols[0].name.clone(),
+        }))
     }
 
     /// Whether the answers shown were run on another text than this.

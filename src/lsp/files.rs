@@ -48,7 +48,7 @@ pub fn uri_of_file(sources: &Sources, index: usize, root: &Uri) -> Option<Uri> {
     if let Some(path) = file.path() {
         return uri_of_path(path);
     }
-    match file.name.strip_prefix("std::") {
+    match file.std_module() {
         Some(module) => uri_of_path(&served_module(module, &file.text)?),
         None => Some(root.clone()),
     }
@@ -62,13 +62,12 @@ pub fn file_of_uri(sources: &Sources, uri: &Uri, root: &Uri) -> Option<usize> {
         .iter()
         .position(|(_, file)| match (file.path(), &wanted) {
             (Some(path), Some(wanted)) => canonical(path) == *wanted,
-            (None, _) if file.name.starts_with("std::") => {
-                let module = &file.name["std::".len()..];
-                wanted
+            (None, _) => match file.std_module() {
+                Some(module) => wanted
                     .as_ref()
-                    .is_some_and(|w| *w == canonical(&std_dir().join(format!("{module}.reach"))))
-            }
-            (None, _) => uri == root,
+                    .is_some_and(|w| *w == canonical(&std_dir().join(format!("{module}.reach")))),
+                None => uri == root,
+            },
             _ => false,
         })
 }

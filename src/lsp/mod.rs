@@ -75,7 +75,7 @@ pub fn serve(
     let (id, params) = connection.initialize_start()?;
     let params: InitializeParams = serde_json::from_value(params).unwrap_or_default();
     let result = InitializeResult {
-        capabilities: capabilities_of(&params),
+        capabilities: capabilities(&params),
         server_info: Some(ServerInfo {
             name: "reach".into(),
             version: Some(env!("CARGO_PKG_VERSION").into()),
@@ -107,11 +107,6 @@ pub fn serve(
     })
 }
 
-/// What the server does for the client that sent `params`.
-fn capabilities_of(params: &InitializeParams) -> ServerCapabilities {
-    capabilities(shows_lenses(params))
-}
-
 /// Whether the client shows code lenses: where it does, the answers are
 /// lenses only (not inlay hints too, which VS Code would show beside
 /// them on the same line).
@@ -135,12 +130,13 @@ fn refreshes(params: &InitializeParams) -> (bool, bool) {
     (lenses, hints)
 }
 
-/// The whole text on every change (a scenario is checked whole anyway),
-/// and a word on save (a file that others `use` changes on disk then; the
-/// scenario runs).
-/// What the server does; the answers as inlay hints only for a client
-/// that does not show code lenses (`lenses` false: Helix).
-fn capabilities(lenses: bool) -> ServerCapabilities {
+/// What the server does for the client that sent `params`: the whole
+/// text on every change (a scenario is checked whole anyway), and a word
+/// on save (a file that others `use` changes on disk then; the scenario
+/// runs); the answers as inlay hints only for a client that does not show
+/// code lenses (Helix).
+fn capabilities(params: &InitializeParams) -> ServerCapabilities {
+    let lenses = shows_lenses(params);
     ServerCapabilities {
         text_document_sync: Some(TextDocumentSyncCapability::Options(
             TextDocumentSyncOptions {
@@ -536,10 +532,10 @@ mod tests {
 
     #[test]
     fn the_answers_are_inlay_hints_only_for_a_client_without_code_lenses() {
-        let client = |capabilities: serde_json::Value| {
-            let params = serde_json::json!({ "capabilities": capabilities });
+        let client = |shows: serde_json::Value| {
+            let params = serde_json::json!({ "capabilities": shows });
             let params: InitializeParams = serde_json::from_value(params).unwrap();
-            capabilities_of(&params).inlay_hint_provider.is_some()
+            capabilities(&params).inlay_hint_provider.is_some()
         };
         // VS Code and Neovim show lenses; Helix shows hints only.
         assert!(!client(

@@ -8,11 +8,11 @@ use std::collections::HashMap;
 use lsp_server::{ErrorCode, Request, Response};
 use lsp_types::request::{PrepareRenameRequest, Request as _};
 use lsp_types::{
-    Location, PrepareRenameResponse, Range, RenameParams, TextDocumentPositionParams, TextEdit,
-    Uri, WorkspaceEdit,
+    PrepareRenameResponse, RenameParams, TextDocumentPositionParams, TextEdit, Uri, WorkspaceEdit,
 };
 use reach::editor::RenameRefused;
 
+use super::document::Renamed;
 use super::position::LineIndex;
 use super::{Server, ServerError};
 
@@ -36,20 +36,10 @@ impl Server<'_, '_> {
         let id = request.id.clone();
         let answer = if request.method == PrepareRenameRequest::METHOD {
             let p: TextDocumentPositionParams = serde_json::from_value(request.params)?;
-            let range = self.renamed(&p, None).map(|(_, range)| range);
-            range
-                .map(|range| {
-                    let placeholder = self.document(&p.text_document.uri).map(|d| {
-                        let index = LineIndex::new(&d.text);
-                        let (start, end) = (index.offset(range.start), index.offset(range.end));
-                        d.text[start..end].to_string()
-                    });
-                    match placeholder {
-                        Some(placeholder) => {
-                            PrepareRenameResponse::RangeWithPlaceholder { range, placeholder }
-                        }
-                        None => PrepareRenameResponse::Range(range),
-                    }
+            self.renamed(&p, None)
+                .map(|renamed| PrepareRenameResponse::RangeWithPlaceholder {
+                    range: renamed.range,
+                    placeholder: renamed.name,
                 })
                 .map(serde_json::to_value)
         } else {
@@ -72,37 +62,35 @@ impl Server<'_, '_> {
         Ok(())
     }
 
-    /// The places a rename at `at` (to `new`, where given) changes, from
-    /// every open document's check, each once; and the range of the name
-    /// at `at`.
+    /// What a rename at `at` (to `new`, where given) changes: the places
+    /// from every open document's check, each once.
     fn renamed(
         &self,
         at: &TextDocumentPositionParams,
         new: Option<&str>,
-    ) -> Result<(Vec<Location>, Range), Refused> {
+    ) -> Result<Renamed, Refused> {
         let uri = &at.text_document.uri;
         let asked = self
             .document(uri)
             .ok_or(Refused::Name(RenameRefused::NotAName))?;
-        let (mut places, range) = asked.rename_places((uri, &asked.text, at.position), new)?;
-        for document in self.open.values() {
-            let more = match document.rename_places((uri, &asked.text, at.position), new) {
-                Ok((more, _)) => more,
+        let here = (uri, asked.text.as_str(), at.position);
+        let mut renamed =
+            (asked.rename_places(here, new)?).ok_or(Refused::Name(RenameRefused::NotAName))?;
+        for document in self.open.values().filter(|d| d.uri != *uri) {
+            let more = match document.rename_places(here, new) {
+                Ok(more) => more.map(|r| r.places).unwrap_or_default(),
                 // Another document that does not parse: its uses are not
                 // known (its check will say the name is unknown).
                 Err(RenameRefused::DoesNotParse) => continue,
                 Err(refused) => return Err(refused.into()),
             };
             for location in more {
-                if !places.contains(&location) {
-                    places.push(location);
+                if !renamed.places.contains(&location) {
+                    renamed.places.push(location);
                 }
             }
         }
-        if places.is_empty() {
-            return Err(Refused::Name(RenameRefused::NotAName));
-        }
-        Ok((places, range))
+        Ok(renamed)
     }
 
     /// The edit of a rename; refused where the renamed text of the
@@ -114,9 +102,9 @@ impl Server<'_, '_> {
     #[allow(clippy::mutable_key_type)]
     fn rename(&self, p: &RenameParams) -> Result<WorkspaceEdit, Refused> {
         let at = &p.text_document_position;
-        let (places, _) = self.renamed(at, Some(&p.new_name))?;
+        let renamed = self.renamed(at, Some(&p.new_name))?;
         let mut changes: HashMap<Uri, Vec<TextEdit>> = HashMap::new();
-        for place in &places {
+        for place in &renamed.places {
             let edit = TextEdit::new(place.range, p.new_name.clone());
             changes.entry(place.uri.clone()).or_default().push(edit);
         }
