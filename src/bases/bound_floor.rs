@@ -39,19 +39,22 @@ pub struct Searched<'a> {
 }
 
 /// The floor of `group`'s bounds at each of `searched`'s headings; the
-/// outer's cut to `routes` (its own routes from the doors) where they are
-/// given. With the member's share of the work; cut short where that share
+/// outer's cut to `routes` (its own routes from the doors, or those of a
+/// room with more in it, which reach no farther; with their key) where
+/// they are given. With the member's share of the work; cut short where that share
 /// would pass what `within` allows.
 pub fn bound_floor(
     searched: &Searched<'_>,
     group: &FloorGroup,
-    routes: Option<&Arc<Routes>>,
+    routes: Option<(&Arc<Routes>, u64)>,
     within: &(dyn Fn(u64) -> bool + Sync),
     memo: &Arc<Memo>,
 ) -> Result<Option<(Arc<BoundFloor>, u64)>, CutShort> {
     let shared = |units: u64| within(group.share(units));
+    let routes_key = routes.map(|(_, key)| key);
+    let routes = routes.map(|(routes, _)| routes);
     let floor = group
-        .shared(key(searched, group, routes.is_some()), || {
+        .shared(key(searched, group, routes_key), || {
             worked_out(searched, group, routes, &shared, memo).map(Some)
         })
         .map_err(|cut| CutShort {
@@ -63,8 +66,9 @@ pub fn bound_floor(
     }))
 }
 
-/// What the bounds' floor is kept by in its group.
-fn key(searched: &Searched<'_>, group: &FloorGroup, routed: bool) -> u64 {
+/// What the bounds' floor is kept by in its group: the room, and the
+/// bounds' routes it is cut to, by their key, where it is.
+fn key(searched: &Searched<'_>, group: &FloorGroup, routed: Option<u64>) -> u64 {
     let mut h = DefaultHasher::new();
     "the bounds' floor".hash(&mut h);
     group

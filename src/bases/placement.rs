@@ -41,7 +41,7 @@ use crate::plugin::{
     Asked, Base, BasePose, Fit, Hips, IkSolution, Placement, PreparedBase, ReachQuery, Solver,
     Tries,
 };
-use crate::scene::{column_solid, hash_bits, Blocked, OwnBody, Physique, Room};
+use crate::scene::{column_solid, hash_bits, Blocked, OwnBody, Physique, Room, Sweep};
 
 /// The admissible region at each heading searched (one region for every
 /// heading when turning changes nothing).
@@ -58,6 +58,17 @@ fn any_fits(regions: &Regions, work: &mut Work<'_>) -> Result<bool, CutShort> {
         }
     }
     Ok(emptiness_each(&distinct, work)?.contains(&false))
+}
+
+/// What is known of rooms related to the one a floor is worked out in.
+#[derive(Clone, Copy, Default)]
+struct Related<'a> {
+    /// The room with more in it (obstacles or doors this one has taken
+    /// away), whose floor is worked out: at each heading where the base
+    /// fits there, it fits here, unsearched.
+    wider: Option<&'a Room>,
+    /// The bounds of the rooms of an element's moves, this one among them.
+    sweep: Option<&'a Sweep>,
 }
 
 /// Where the base may be placed in one room, worked out once.
@@ -218,16 +229,14 @@ impl Mobile {
     /// its routes cost told to `meter`; cut short once the run would pass
     /// its work: nowhere then, and kept by no other run).
     fn floor(&self, room: &Room, allowance: &dyn Allowance) -> Arc<OnceLock<Floor>> {
-        self.floor_within(room, None, allowance)
+        self.floor_within(room, Related::default(), allowance)
     }
 
-    /// `floor`, for a room that is `wider` (whose floor is worked out)
-    /// with obstacles or doors taken away: at each heading where the base
-    /// fits there, it fits here, unsearched.
+    /// `floor`, told what is known of rooms `related` to this one.
     fn floor_within(
         &self,
         room: &Room,
-        wider: Option<&Room>,
+        related: Related<'_>,
         allowance: &dyn Allowance,
     ) -> Arc<OnceLock<Floor>> {
         let cell = self.floors.cell(room);
@@ -239,14 +248,18 @@ impl Mobile {
         // kitchen_wheelchair, too).
         if cell.get().is_none() {
             let mut key = self.floor_key(room);
-            let hint = wider.map(|w| {
+            if let Some(sweep) = related.sweep {
+                // Its work depends on the sweep's bounds: kept apart.
+                key = hash_pair(key, sweep.key);
+            }
+            let hint = related.wider.map(|w| {
                 // Its work depends on the hint: kept apart.
                 key = hash_pair(key, self.floor_key(w));
                 self.floors.cell(w)
             });
             let hint = hint.as_ref().and_then(|c| c.get());
             let floor = FLOORS.get_or_try(&allowance.memo(), key, || {
-                self.compute_floor(room, hint, key, allowance)
+                self.compute_floor(room, hint, related.sweep, key, allowance)
             });
             match floor {
                 Ok(floor) => _ = cell.set(floor),
@@ -287,11 +300,14 @@ impl Mobile {
     /// The admissible regions, one per heading searched; where the room
     /// has doors, cut to what the base can get to from one
     /// (`floor/routes.rs`). Where `hint` is the floor of this room with
-    /// more in it, each heading it fits at is not searched.
+    /// more in it, each heading it fits at is not searched; where `sweep`
+    /// bounds the rooms of an element's moves, the routes are bounded by
+    /// its two rooms' (`floor/shared_routes.rs`).
     fn compute_floor(
         &self,
         room: &Room,
         hint: Option<&Floor>,
+        sweep: Option<&Sweep>,
         key: u64,
         allowance: &dyn Allowance,
     ) -> Result<Floor, CutShort> {
@@ -317,7 +333,7 @@ impl Mobile {
         // tiles cost more there than they save a population of tens
         // (bench_population's kitchen without its door, 10.4 -> 13.3 s).
         let bounded_by = group.filter(|_| !room.doors.is_empty());
-        let bound = |routes: Option<&Arc<Routes>>, work: &mut Work<'_>| {
+        let bound = |routes: Option<(&Arc<Routes>, u64)>, work: &mut Work<'_>| {
             let Some(group) = bounded_by else {
                 return Ok(None);
             };
@@ -347,7 +363,7 @@ impl Mobile {
         let fits = any_fits(&regions, &mut work)?;
         let routes = if fits {
             let left = |units: u64| work.allows(units);
-            DoorRoutes::of(room, &self.footprint, group, headings, &left, &memo)
+            DoorRoutes::of(room, &self.footprint, group, sweep, headings, &left, &memo)
                 .map_err(|cut| work.cut_short_with(cut.work))?
         } else {
             None
@@ -395,13 +411,13 @@ impl Mobile {
     /// routes cut short where they would take the run past its work, and
     /// the run then stopped).
     pub fn fit(&self, room: &Room, allowance: &dyn Allowance) -> Fit {
-        self.fit_within(room, None, allowance)
+        self.fit_within(room, Related::default(), allowance)
     }
 
-    /// `fit`, for a room that is `wider` with obstacles or doors taken
-    /// away ([`Mobile::floor_within`]).
-    fn fit_within(&self, room: &Room, wider: Option<&Room>, allowance: &dyn Allowance) -> Fit {
-        let cell = self.floor_within(room, wider, allowance);
+    /// `fit`, told what is known of rooms `related` to this one
+    /// ([`Mobile::floor_within`]).
+    fn fit_within(&self, room: &Room, related: Related<'_>, allowance: &dyn Allowance) -> Fit {
+        let cell = self.floor_within(room, related, allowance);
         let Some(floor) = cell.get() else {
             return Fit::Fits;
         };
@@ -525,7 +541,19 @@ impl Base for Mobile {
     }
 
     fn fit_beside(&self, room: &Room, beside: &Room, allowance: &dyn Allowance) -> Fit {
-        self.fit_within(room, Some(beside), allowance)
+        let related = Related {
+            wider: Some(beside),
+            ..Related::default()
+        };
+        self.fit_within(room, related, allowance)
+    }
+
+    fn fit_in_sweep(&self, room: &Room, sweep: &Sweep, allowance: &dyn Allowance) -> Fit {
+        let related = Related {
+            sweep: Some(sweep),
+            ..Related::default()
+        };
+        self.fit_within(room, related, allowance)
     }
 
     fn floor_key(&self, room: &Room) -> Option<u64> {

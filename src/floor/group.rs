@@ -86,11 +86,7 @@ impl FloorGroup {
 
     /// What the bounds' routes in `room` at `headings` are kept by.
     pub fn routes_key(&self, room: &Room, headings: &[f64]) -> u64 {
-        let mut h = DefaultHasher::new();
-        self.outer.hash_with_floor(room, &mut h);
-        self.inner.hash_with_floor(room, &mut h);
-        hash_bits(headings, &mut h);
-        h.finish()
+        bounds_key(&self.outer, room, &self.inner, room, headings)
     }
 
     /// The bounds' routes kept by `key`, or `compute`'s, kept where they
@@ -140,6 +136,23 @@ impl FloorGroup {
         }
         self.members.hash(h);
     }
+}
+
+/// What the routes of bounds are kept by: footprint `outer`'s in room
+/// `more`, `inner`'s in room `less` (the same room, but where an
+/// element's moves are bounded, `scene::Sweep`), at `headings`.
+pub fn bounds_key(
+    outer: &Footprint,
+    more: &Room,
+    inner: &Footprint,
+    less: &Room,
+    headings: &[f64],
+) -> u64 {
+    let mut h = DefaultHasher::new();
+    outer.hash_with_floor(more, &mut h);
+    inner.hash_with_floor(less, &mut h);
+    hash_bits(headings, &mut h);
+    h.finish()
 }
 
 /// Part `k` of every member held: the convex hull of their outlines with

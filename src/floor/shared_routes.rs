@@ -9,19 +9,23 @@
 //! the piece runs on, in a window about it, into floor the outer reaches,
 //! reached; else the member's own routes tell, worked out then, once.
 //! What the window and the member's own routes cost is charged with the
-//! tile. The answers are the member's own routes' (this file's property
-//! test compares them).
+//! tile. Where the room is one of those an element's moves make
+//! (`advise`), the outer's routes are those of the sweep's room with the
+//! element over all its moves and the inner's those of the room without
+//! it (`scene::Sweep`), worked out once for every position; a base
+//! without a group is bounded so by its own footprint. The answers are
+//! the member's own routes' (this file's property tests compare them).
 
 use std::sync::{Arc, OnceLock};
 
 use geo::{BoundingRect, Coord, MultiPolygon, Polygon, Rect};
 
-use super::group::FloorGroup;
+use super::group::{bounds_key, FloorGroup};
 use super::routes::{needs_mm, pieces_overlap, Doorway, Entry, Routes, HAIR_MM};
 use super::work::{unbounded, CutShort};
 use super::Footprint;
 use crate::kept::Memo;
-use crate::scene::Room;
+use crate::scene::{Room, Sweep};
 
 /// How far beyond a piece of floor the window its floor is followed in
 /// reaches (where the bounds leave it undecided): a pocket beside a
@@ -56,6 +60,8 @@ pub struct Decided {
 pub struct SharedRoutes {
     outer: Arc<Routes>,
     inner: Arc<Routes>,
+    /// What the bounds are kept by (`group::bounds_key`).
+    key: u64,
     /// The room, its footprint and headings, for its own routes.
     room: Room,
     footprint: Footprint,
@@ -70,16 +76,17 @@ pub struct SharedRoutes {
 impl DoorRoutes {
     /// The routes of `footprint` (one of `group`'s members, where it has
     /// one) in `room`, followed at `headings`; none where the room has no
-    /// door. The bounds are shared where the group has them, the room no
-    /// meshes (whose copy would cost as much as the routes) and the outer
-    /// bound comes in by every door (a member then does too); else the
-    /// footprint's own. Cut short as [`Routes::of`] is, the bounds
+    /// door. The bounds are shared where the group has them (or `sweep`
+    /// bounds the room), the room has no meshes (whose copy would cost as
+    /// much as the routes) and the outer bound comes in by every door (a
+    /// member then does too); else the footprint's own. Cut short as [`Routes::of`] is, the bounds
     /// counted at the member's share of their work. The work to charge
     /// the member comes with them.
     pub fn of(
         room: &Room,
         footprint: &Footprint,
         group: Option<&FloorGroup>,
+        sweep: Option<&Sweep>,
         headings: &[f64],
         within: &(dyn Fn(u64) -> bool + Sync),
         memo: &Arc<Memo>,
@@ -91,16 +98,28 @@ impl DoorRoutes {
                 (DoorRoutes::Own(r), work)
             }))
         };
-        let Some(group) = group.filter(|_| room.meshes.is_empty()) else {
+        if !room.meshes.is_empty() {
             return own(within);
+        }
+        // The bounds: the group's footprints (or the base's own, bounded
+        // only by the sweep), the outer in the sweep's room with more in
+        // it, the inner in the one with less.
+        let (outer_fp, inner_fp, members) = match (group, sweep) {
+            (Some(g), _) => (&g.outer, &g.inner, g.members),
+            (None, Some(_)) => (footprint, footprint, 1),
+            (None, None) => return own(within),
         };
-        let n = group.members.max(1) as u64;
+        let (more, less) = sweep.map_or((room, room), |s| (&s.swept, &s.without));
+        let n = members.max(1) as u64;
         let share = |units: u64| units.div_ceil(n);
         let shared = |units: u64| within(share(units));
-        let bound = |f: &Footprint| Routes::of(room, f, headings, &shared, memo);
-        let bounds = group.routes(group.routes_key(room, headings), || {
-            Ok::<_, CutShort>(bound(&group.outer)?.zip(bound(&group.inner)?))
-        })?;
+        let bound = |f: &Footprint, r: &Room| Routes::of(r, f, headings, &shared, memo);
+        let compute = || Ok::<_, CutShort>(bound(outer_fp, more)?.zip(bound(inner_fp, less)?));
+        let key = bounds_key(outer_fp, more, inner_fp, less, headings);
+        let bounds = match group {
+            Some(group) => group.routes(key, compute)?,
+            None => compute()?,
+        };
         let Some((outer, inner)) = bounds else {
             return own(within);
         };
@@ -118,6 +137,7 @@ impl DoorRoutes {
         let routes = SharedRoutes {
             outer,
             inner,
+            key,
             room: room.clone(),
             footprint: footprint.clone(),
             followed: footprint.grown(HAIR_MM),
@@ -129,12 +149,12 @@ impl DoorRoutes {
         Ok(Some((DoorRoutes::Shared(Arc::new(routes)), work)))
     }
 
-    /// The routes of the group's outer bound, where these are bounded by
-    /// its group's.
-    pub fn outer_bound(&self) -> Option<&Arc<Routes>> {
+    /// The routes of the outer bound, where these are bounded, and what
+    /// the bounds are kept by.
+    pub fn outer_bound(&self) -> Option<(&Arc<Routes>, u64)> {
         match self {
             DoorRoutes::Own(_) => None,
-            DoorRoutes::Shared(s) => Some(&s.outer),
+            DoorRoutes::Shared(s) => Some((&s.outer, s.key)),
         }
     }
 
@@ -341,30 +361,90 @@ mod tests {
     }
 
     /// Each member's floor at four headings, cut to its routes: the same
-    /// from the group's bounds as from its own routes, piece for piece.
-    fn same_floor(room: &Room, members: &[Footprint]) -> Result<bool, TestCaseError> {
+    /// from the group's bounds as from its own routes, piece for piece;
+    /// where `sweep` bounds the room, from the group's bounds in the
+    /// sweep's rooms, and from its own in them, too. Whether the bounds
+    /// were used for any member.
+    fn same_floor(
+        room: &Room,
+        members: &[Footprint],
+        sweep: Option<&Sweep>,
+    ) -> Result<bool, TestCaseError> {
         let refs: Vec<&Footprint> = members.iter().collect();
         let group = FloorGroup::of(&refs).expect("alike chairs");
         let headings = [0.0, FRAC_PI_2, 2.0 * FRAC_PI_2, 3.0 * FRAC_PI_2];
         let memo = Arc::new(Memo::default());
         let mut shared_any = false;
         for f in members {
-            let of = |group| DoorRoutes::of(room, f, group, &headings, &unbounded, &memo);
-            let (own, _) = of(None).expect("unbounded").expect("a door");
-            let (shared, _) = of(Some(&group)).expect("unbounded").expect("a door");
-            shared_any |= matches!(shared, DoorRoutes::Shared(_));
-            prop_assert_eq!(own.doors(), shared.doors());
-            let (own, shared) = (Arc::new(own), Arc::new(shared));
+            let of = |group, sweep| {
+                let routes = DoorRoutes::of(room, f, group, sweep, &headings, &unbounded, &memo);
+                routes.expect("unbounded").expect("a door").0
+            };
+            let own = Arc::new(of(None, None));
+            let mut bounded = vec![of(Some(&group), sweep)];
+            bounded.extend(sweep.map(|s| of(None, Some(s))));
             let obstacles = Arc::new(FloorObstacles::new(room, f));
-            for h in headings {
-                let floor = |routes: &Arc<DoorRoutes>| {
-                    let (obstacles, routes) = (Arc::clone(&obstacles), Arc::clone(routes));
-                    Region::reached(room, f, h, None, obstacles, routes, &memo).whole()
-                };
-                prop_assert_eq!(floor(&own), floor(&shared), "heading {}", h.to_degrees());
+            for shared in bounded {
+                shared_any |= matches!(shared, DoorRoutes::Shared(_));
+                prop_assert_eq!(own.doors(), shared.doors());
+                let shared = Arc::new(shared);
+                for h in headings {
+                    let floor = |routes: &Arc<DoorRoutes>| {
+                        let (obstacles, routes) = (Arc::clone(&obstacles), Arc::clone(routes));
+                        Region::reached(room, f, h, None, obstacles, routes, &memo).whole()
+                    };
+                    prop_assert_eq!(floor(&own), floor(&shared), "heading {}", h.to_degrees());
+                }
             }
         }
         Ok(shared_any)
+    }
+
+    /// Random boxes: (corner on the floor, size on the floor, whether high
+    /// (700 to 900 mm, knee space under it) or from the floor to 1000 mm).
+    type Boxes = Vec<((f64, f64), (f64, f64), bool)>;
+
+    fn boxes() -> impl Strategy<Value = Boxes> {
+        prop::collection::vec(
+            (
+                (0.0..4000.0f64, 300.0..3600.0f64),
+                (200.0..1500.0f64, 200.0..900.0f64),
+                prop::bool::ANY,
+            ),
+            2..7,
+        )
+    }
+
+    fn placed(boxes: Boxes) -> Vec<([f64; 2], [f64; 2], [f64; 2])> {
+        boxes
+            .into_iter()
+            .map(|((x, y), (w, d), high)| {
+                let z = if high { [700.0, 900.0] } else { [0.0, 1000.0] };
+                ([x, y], [w, d], z)
+            })
+            .collect()
+    }
+
+    type Sizes = Vec<(f64, f64, f64, f64)>;
+
+    /// Four chairs' front, back, width and knee height.
+    fn sizes() -> impl Strategy<Value = Sizes> {
+        prop::collection::vec(
+            (
+                550.0..700.0f64,
+                350.0..550.0f64,
+                560.0..720.0f64,
+                450.0..650.0f64,
+            ),
+            4,
+        )
+    }
+
+    fn chairs(sizes: Sizes) -> Vec<Footprint> {
+        sizes
+            .into_iter()
+            .map(|(front, back, width, knee)| chair(front, back, width, knee))
+            .collect()
     }
 
     proptest! {
@@ -378,24 +458,35 @@ mod tests {
         #[test]
         fn a_members_floor_from_the_groups_bounds_is_its_own(
             door_x in 700.0..3800.0f64,
-            boxes in prop::collection::vec(
-                ((0.0..4000.0f64, 300.0..3600.0f64), (200.0..1500.0f64, 200.0..900.0f64), prop::bool::ANY),
-                2..7,
-            ),
-            sizes in prop::collection::vec((550.0..700.0f64, 350.0..550.0f64, 560.0..720.0f64, 450.0..650.0f64), 4),
+            boxes in boxes(),
+            sizes in sizes(),
         ) {
-            let boxes: Vec<([f64; 2], [f64; 2], [f64; 2])> = boxes
-                .into_iter()
-                .map(|((x, y), (w, d), high)| {
-                    let z = if high { [700.0, 900.0] } else { [0.0, 1000.0] };
-                    ([x, y], [w, d], z)
-                })
-                .collect();
-            let members: Vec<Footprint> = sizes
-                .into_iter()
-                .map(|(front, back, width, knee)| chair(front, back, width, knee))
-                .collect();
-            same_floor(&room(door_x, &boxes), &members)?;
+            same_floor(&room(door_x, &placed(boxes)), &chairs(sizes), None)?;
+        }
+
+        /// An element (a box 100 to 400 mm high) moved up and down among
+        /// random boxes: at each of its heights, a member's floor from the
+        /// bounds in the rooms of its sweep (the group's footprints' and
+        /// its own) is its own.
+        #[test]
+        fn a_members_floor_from_the_bounds_of_an_elements_sweep_is_its_own(
+            door_x in 700.0..3800.0f64,
+            boxes in boxes(),
+            element in ((0.0..4000.0f64, 300.0..3600.0f64), (200.0..1000.0f64, 200.0..800.0f64), 100.0..400.0f64),
+            heights in prop::collection::vec(0.0..1200.0f64, 1..4),
+            sizes in sizes(),
+        ) {
+            let ((x, y), (w, d), high) = element;
+            let mut placed = placed(boxes);
+            placed.push(([x, y], [w, d], [0.0, high]));
+            let room = room(door_x, &placed);
+            let name = format!("b{}", placed.len() - 1);
+            let moves: Vec<Vector3<f64>> = heights.iter().map(|&z| Vector3::new(0.0, 0.0, z)).collect();
+            let sweep = Sweep::of(&room, &[name.as_str()], &moves).expect("a sweep");
+            let members = chairs(sizes);
+            for by in moves {
+                same_floor(&room.moved(&[name.as_str()], by), &members, Some(&sweep))?;
+            }
         }
     }
 
@@ -413,7 +504,7 @@ mod tests {
             chair(650.0, 450.0, 700.0, 600.0),
             chair(620.0, 420.0, 640.0, 550.0),
         ];
-        let shared = same_floor(&room(2000.0, &boxes), &members);
+        let shared = same_floor(&room(2000.0, &boxes), &members, None);
         assert!(matches!(shared, Ok(true)), "{shared:?}");
     }
 }

@@ -16,7 +16,9 @@ use geo::MultiPolygon;
 use crate::allowance::Allowance;
 use crate::floor::{Footprint, Misfit, Shut};
 use crate::kinematics::{Chain, Stance};
-use crate::scene::{seed_in_base_frame, BasePose, Blocked, OwnBody, Physique, Placement, Room};
+use crate::scene::{
+    seed_in_base_frame, BasePose, Blocked, OwnBody, Physique, Placement, Room, Sweep,
+};
 
 /// How hard a base looks for a placement.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -258,6 +260,13 @@ pub trait Base: Send + Sync {
     /// `beside`'s has been found: the base fits wherever it fitted there,
     /// which need not be searched again.
     fn fit_beside(&self, room: &Room, _beside: &Room, allowance: &dyn Allowance) -> Fit {
+        self.fit(room, allowance)
+    }
+    /// [`Base::fit`] in `room`, one of the rooms an element's moves make
+    /// (`advise`), which `sweep` bounds: what the base gets to from the
+    /// doors in every one of them is bounded by what it gets to in the
+    /// sweep's two rooms, worked out once (the answer is `fit`'s).
+    fn fit_in_sweep(&self, room: &Room, _sweep: &Sweep, allowance: &dyn Allowance) -> Fit {
         self.fit(room, allowance)
     }
     /// What working out where the base may stand in `room` cost, in units

@@ -12,6 +12,7 @@ mod placement;
 mod population;
 mod room_hash;
 mod surface;
+mod sweep;
 mod vision;
 
 pub use door::Door;
@@ -25,6 +26,7 @@ pub use placement::{
 pub use population::{Drawn, Population};
 pub use room_hash::hash_bits;
 pub use surface::{Grid, GridCell, Surface, FACES};
+pub use sweep::Sweep;
 pub use vision::Vision;
 
 use nalgebra::{Point3, Rotation2, Vector2, Vector3};

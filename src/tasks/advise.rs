@@ -18,7 +18,7 @@
 
 use std::cell::RefCell;
 
-use nalgebra::Point3;
+use nalgebra::{Point3, Vector3};
 
 use super::reach::ReachTask;
 use crate::error::ErrorKind;
@@ -28,7 +28,7 @@ use crate::plugin::{
     SettingsError, Subject, SubjectKind, Task, TaskInput, TaskPlugin, Tries,
 };
 use crate::report::{axis_index, Across, AdviceFrame, AdviceReport, PositionAnswer, TaskReport};
-use crate::scene::Room;
+use crate::scene::{Room, Sweep};
 
 /// The plugin `advise`.
 pub struct Advise;
@@ -386,7 +386,7 @@ impl Task for AdviseTask {
             .iter()
             .position(|t| t.name == target.name)?;
         let room = self.moved_room(input.room, &target.name, at)?;
-        let floors = Floors::of(input);
+        let floors = Floors::of(input, self.sweep(input.room, &target.name));
         self.answer_at(input, &room, index, true, &floors).verdict
     }
 
@@ -397,7 +397,7 @@ impl Task for AdviseTask {
         let index = (input.room.targets.iter())
             .position(|t| t.name == target.name)
             .expect("the subject is a target of its room");
-        let floors = Floors::of(input);
+        let floors = Floors::of(input, self.sweep(input.room, &target.name));
         let at = |k: usize, explain: bool| {
             let room =
                 (self.moved_room(input.room, &target.name, k)).expect("a position of the scan");
@@ -471,6 +471,18 @@ impl AdviseTask {
         Some(room.moved(&self.element(name), at - declared))
     }
 
+    /// The bounds of the rooms the element (target `name` and what it
+    /// carries) makes at every position ([`Sweep`]).
+    fn sweep(&self, room: &Room, name: &str) -> Option<Sweep> {
+        let declared = room.targets.iter().find(|t| t.name == name)?.position_mm;
+        let n = self.along.positions_mm.len() * self.lines();
+        let moves: Vec<Vector3<f64>> = (0..n)
+            .filter_map(|k| self.position_mm(&declared, k))
+            .map(|at| at - declared)
+            .collect();
+        Sweep::of(room, &self.element(name), &moves)
+    }
+
     /// The names moved as one: target `name` and what it carries.
     fn element<'a>(&'a self, name: &'a str) -> Vec<&'a str> {
         std::iter::once(name)
@@ -501,7 +513,10 @@ impl AdviseTask {
                 verdict: None,
             };
         }
-        let fit = input.base.fit(room, input.allowance);
+        let fit = match &floors.sweep {
+            Some(sweep) => input.base.fit_in_sweep(room, sweep, input.allowance),
+            None => input.base.fit(room, input.allowance),
+        };
         floors.charge(input, room);
         match fit {
             Fit::Nowhere(_) => return not("the base fits nowhere in the room with it there"),
@@ -529,15 +544,20 @@ impl AdviseTask {
 /// The floors an advice's positions have met, each charged to the run
 /// once (the declared room's is the task's own, which the run charges):
 /// where the element meets the base's footprint, its floor is another,
-/// worked out afresh.
-struct Floors(RefCell<Vec<u64>>);
+/// worked out afresh, its routes from the doors bounded by those of the
+/// rooms of the element's `sweep`.
+struct Floors {
+    met: RefCell<Vec<u64>>,
+    sweep: Option<Sweep>,
+}
 
 impl Floors {
     /// None met but the declared room's, of `input`.
-    fn of(input: &TaskInput<'_>) -> Self {
-        Floors(RefCell::new(
-            input.base.floor_key(input.room).into_iter().collect(),
-        ))
+    fn of(input: &TaskInput<'_>, sweep: Option<Sweep>) -> Self {
+        Floors {
+            met: RefCell::new(input.base.floor_key(input.room).into_iter().collect()),
+            sweep,
+        }
     }
 
     /// `room`'s floor (worked out by the fit) charged, where it is one
@@ -546,10 +566,10 @@ impl Floors {
         let Some(key) = input.base.floor_key(room) else {
             return;
         };
-        if self.0.borrow().contains(&key) {
+        if self.met.borrow().contains(&key) {
             return;
         }
-        self.0.borrow_mut().push(key);
+        self.met.borrow_mut().push(key);
         input.allowance.spend(input.base.floor_work(room));
     }
 }
