@@ -16,7 +16,7 @@ use crate::error::ErrorKind;
 use crate::kinematics::{Body, Chain};
 use crate::progress::Progress;
 use crate::report::{Names, TaskReport};
-use crate::scene::{Person, Room, Surface, Target};
+use crate::scene::{Person, Room, Surface, Sweep, Target};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum SubjectKind {
@@ -184,6 +184,13 @@ pub trait Task: Send + Sync {
     /// base fits nowhere in the room as declared, it still runs.
     fn places_itself(&self) -> bool {
         false
+    }
+    /// Where the task moves things about its room: the bounds of every
+    /// arrangement it makes of `room` with `subject`, the room as declared
+    /// among them ([`Sweep`]), for the base's floor in each to be bounded
+    /// by (`Base::fit_in_sweep`; the answers are the same).
+    fn sweep(&self, _room: &Room, _subject: &Subject<'_>) -> Option<Sweep> {
+        None
     }
     fn run(&self, input: &TaskInput<'_>) -> TaskReport;
     /// Why the person of `input` does not reach point `at` of the task

@@ -687,7 +687,10 @@ impl Scenario {
         let label = task_label(&task.kind);
         let (subject, person) = (input.subject.name(), &input.person.name);
         let (base, room) = (&input.person.base.name, &input.room.name);
-        let mut fit = input.base.fit(input.room, &meter);
+        let mut fit = match task.task.sweep(input.room, &input.subject) {
+            Some(sweep) => input.base.fit_in_sweep(input.room, &sweep, &meter),
+            None => input.base.fit(input.room, &meter),
+        };
         if charges.floor {
             meter.charge(input.base.floor_work(input.room));
         }

@@ -376,6 +376,13 @@ impl Task for AdviseTask {
         true
     }
 
+    fn sweep(&self, room: &Room, subject: &Subject<'_>) -> Option<Sweep> {
+        let Subject::Target(target) = subject else {
+            return None;
+        };
+        self.element_sweep(room, &target.name)
+    }
+
     fn explain(&self, input: &TaskInput<'_>, at: usize) -> Option<String> {
         let Subject::Target(target) = input.subject else {
             return None;
@@ -386,7 +393,7 @@ impl Task for AdviseTask {
             .iter()
             .position(|t| t.name == target.name)?;
         let room = self.moved_room(input.room, &target.name, at)?;
-        let floors = Floors::of(input, self.sweep(input.room, &target.name));
+        let floors = Floors::of(input, self.element_sweep(input.room, &target.name));
         self.answer_at(input, &room, index, true, &floors).verdict
     }
 
@@ -397,7 +404,7 @@ impl Task for AdviseTask {
         let index = (input.room.targets.iter())
             .position(|t| t.name == target.name)
             .expect("the subject is a target of its room");
-        let floors = Floors::of(input, self.sweep(input.room, &target.name));
+        let floors = Floors::of(input, self.element_sweep(input.room, &target.name));
         let at = |k: usize, explain: bool| {
             let room =
                 (self.moved_room(input.room, &target.name, k)).expect("a position of the scan");
@@ -472,13 +479,15 @@ impl AdviseTask {
     }
 
     /// The bounds of the rooms the element (target `name` and what it
-    /// carries) makes at every position ([`Sweep`]).
-    fn sweep(&self, room: &Room, name: &str) -> Option<Sweep> {
+    /// carries) makes at every position, and of `room` as declared
+    /// ([`Sweep`]).
+    fn element_sweep(&self, room: &Room, name: &str) -> Option<Sweep> {
         let declared = room.targets.iter().find(|t| t.name == name)?.position_mm;
         let n = self.along.positions_mm.len() * self.lines();
         let moves: Vec<Vector3<f64>> = (0..n)
             .filter_map(|k| self.position_mm(&declared, k))
             .map(|at| at - declared)
+            .chain([Vector3::zeros()])
             .collect();
         Sweep::of(room, &self.element(name), &moves)
     }
