@@ -1073,6 +1073,22 @@ fn through_a_door(unique: &str) -> String {
     )
 }
 
+/// A cup on a board by a door, reached and advised at once, and advised
+/// again over other heights: the room as declared and each position's
+/// room have one floor for the plain reach and one for each advice
+/// (bounded by its element's sweep, `scene::Sweep`), so that what the run
+/// charges for them does not depend on which was worked out first.
+fn advised_beside_a_reach() -> String {
+    shelf_room(
+        "  target cup at (300, 1500, 1100)\n  box board at (0, 1300, 1080) size (400, 400, 20)\n  door d at (3000, 1500) width 900mm\n",
+        "person ann { mannequin right_arm base wheelchair }
+reach cup by ann
+advise cup by ann { carries board along z from 950mm to 1250mm step 100mm }
+advise cup by ann { carries board along z from 1050mm to 1350mm step 100mm }
+",
+    )
+}
+
 /// A hall of `size_mm` with posts 300 mm apart in `columns` columns
 /// from x = 300 mm, and a cup among them: with 15 columns in 6 m the
 /// chair fits only along one wall, far from the cup (the search for that
@@ -1126,7 +1142,14 @@ fn metered_run_of(input: Input<'_>, limit: u64, threads: usize) -> Result<u64, r
 #[test]
 fn a_run_stays_within_the_bound_or_passes_it_whatever_the_threads() {
     let (far_floor, no_floor) = (hall_of_posts(6000, 15), hall_of_posts(3000, 9));
-    for text in [metered(), through_a_door("bound"), far_floor, no_floor] {
+    let texts = [
+        metered(),
+        through_a_door("bound"),
+        far_floor,
+        no_floor,
+        advised_beside_a_reach(),
+    ];
+    for text in texts {
         let work = metered_run(&text, u64::MAX / 2, 1).expect("within the bound");
         assert!(work > 100_000, "{work}");
         runs_at_its_work_and_stops_one_unit_under(&text, work);

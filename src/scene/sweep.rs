@@ -13,7 +13,7 @@ use std::hash::{Hash, Hasher};
 
 use nalgebra::Vector3;
 
-use super::{hash_bits, Room};
+use super::{hash_bits, BoxObstacle, Room};
 
 /// The rooms that bound the rooms of an element's moves.
 #[derive(Clone, Debug)]
@@ -28,19 +28,24 @@ pub struct Sweep {
 
 impl Sweep {
     /// The bounds of `room` with the boxes named `names` moved by each of
-    /// `moves_mm`; none where there is no move, or a turned box moves
-    /// across the floor (its sweep is no box).
+    /// `moves_mm`; none where there is no move, no box among `names`, or
+    /// a turned one (the routes of the room without it would follow other
+    /// headings than those of a room with it: `floor/routes.rs`,
+    /// `followed_headings`), or where the room has meshes (whose routes
+    /// are not bounded, `DoorRoutes::of`, and whose copies would cost).
     pub fn of(room: &Room, names: &[&str], moves_mm: &[Vector3<f64>]) -> Option<Sweep> {
         let first = moves_mm.first()?;
+        let carried = |b: &&BoxObstacle| names.contains(&b.name.as_str());
+        let boxes: Vec<&BoxObstacle> = room.boxes.iter().filter(carried).collect();
+        let turned = boxes.iter().any(|b| b.yaw_rad != 0.0);
+        if boxes.is_empty() || turned || !room.meshes.is_empty() {
+            return None;
+        }
         let (least, most) =
             (moves_mm.iter()).fold((*first, *first), |(lo, hi), m| (lo.inf(m), hi.sup(m)));
         let mut swept = room.clone();
         swept.name = format!("{}\u{0}{names:?} swept", room.name);
         for b in (swept.boxes.iter_mut()).filter(|b| names.contains(&b.name.as_str())) {
-            let across_floor = least.xy() != most.xy();
-            if b.yaw_rad != 0.0 && across_floor {
-                return None;
-            }
             b.corner_mm += least;
             b.size_mm += most - least;
         }
@@ -60,6 +65,16 @@ impl Sweep {
             swept,
             without,
         })
+    }
+
+    /// `room` (one of the rooms the sweep bounds) named for the sweep: a
+    /// base keeps a room's floor by its name, and a floor bounded by one
+    /// sweep costs other work than the same room's alone or bounded by
+    /// another sweep (what is charged must not depend on which was worked
+    /// out first).
+    pub fn named(&self, mut room: Room) -> Room {
+        room.name = format!("{}\u{0}within sweep {:x}", room.name, self.key);
+        room
     }
 }
 
@@ -103,12 +118,23 @@ mod tests {
     }
 
     #[test]
-    fn a_turned_box_swept_across_the_floor_has_no_sweep() {
+    fn a_turned_box_no_box_or_no_move_has_no_sweep() {
         let up = [0.0, 100.0].map(|z| Vector3::new(0.0, 0.0, z));
         let along = [0.0, 100.0].map(|x| Vector3::new(x, 0.0, 0.0));
-        assert!(Sweep::of(&room(0.3), &["microwave"], &up).is_some());
-        assert!(Sweep::of(&room(0.3), &["microwave"], &along).is_none());
+        assert!(Sweep::of(&room(0.0), &["microwave"], &up).is_some());
         assert!(Sweep::of(&room(0.0), &["microwave"], &along).is_some());
+        // Without it, the room's routes would not follow its headings.
+        assert!(Sweep::of(&room(0.3), &["microwave"], &up).is_none());
         assert!(Sweep::of(&room(0.0), &["microwave"], &[]).is_none());
+        assert!(Sweep::of(&room(0.0), &["a target"], &up).is_none());
+    }
+
+    #[test]
+    fn a_room_named_for_a_sweep_is_named_for_no_other() {
+        let up = |z: f64| [0.0, z].map(|z| Vector3::new(0.0, 0.0, z));
+        let sweep = |z: f64| Sweep::of(&room(0.0), &["microwave"], &up(z)).expect("a sweep");
+        let named = |s: &Sweep| s.named(room(0.0)).name;
+        assert_ne!(named(&sweep(100.0)), named(&sweep(200.0)));
+        assert_ne!(named(&sweep(100.0)), room(0.0).name);
     }
 }

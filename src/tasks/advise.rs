@@ -392,8 +392,8 @@ impl Task for AdviseTask {
             .targets
             .iter()
             .position(|t| t.name == target.name)?;
-        let room = self.moved_room(input.room, &target.name, at)?;
         let floors = Floors::of(input, self.element_sweep(input.room, &target.name));
+        let room = self.moved_room(input.room, &target.name, at, floors.sweep.as_ref())?;
         self.answer_at(input, &room, index, true, &floors).verdict
     }
 
@@ -407,7 +407,8 @@ impl Task for AdviseTask {
         let floors = Floors::of(input, self.element_sweep(input.room, &target.name));
         let at = |k: usize, explain: bool| {
             let room =
-                (self.moved_room(input.room, &target.name, k)).expect("a position of the scan");
+                (self.moved_room(input.room, &target.name, k, floors.sweep.as_ref()))
+                    .expect("a position of the scan");
             self.answer_at(input, &room, index, explain, &floors)
         };
         // A population's member is asked why afterwards, and only where
@@ -469,13 +470,18 @@ impl AdviseTask {
     }
 
     /// `room` with the element (target `name` and what it carries) at
-    /// position `k` ([`AdviseTask::position_mm`]): made for each solve
-    /// and dropped after it (a room's meshes are copied with it, so rooms
-    /// for every position are not kept).
-    fn moved_room(&self, room: &Room, name: &str, k: usize) -> Option<Room> {
+    /// position `k` ([`AdviseTask::position_mm`]), named for the `sweep`
+    /// that bounds it where there is one ([`Sweep::named`]): made for
+    /// each solve and dropped after it (a room's meshes are copied with
+    /// it, so rooms for every position are not kept).
+    fn moved_room(&self, room: &Room, name: &str, k: usize, sweep: Option<&Sweep>) -> Option<Room> {
         let declared = room.targets.iter().find(|t| t.name == name)?.position_mm;
         let at = self.position_mm(&declared, k)?;
-        Some(room.moved(&self.element(name), at - declared))
+        let moved = room.moved(&self.element(name), at - declared);
+        Some(match sweep {
+            Some(sweep) => sweep.named(moved),
+            None => moved,
+        })
     }
 
     /// The bounds of the rooms the element (target `name` and what it
