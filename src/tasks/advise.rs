@@ -406,9 +406,8 @@ impl Task for AdviseTask {
             .expect("the subject is a target of its room");
         let floors = Floors::of(input, self.element_sweep(input.room, &target.name));
         let at = |k: usize, explain: bool| {
-            let room =
-                (self.moved_room(input.room, &target.name, k, floors.sweep.as_ref()))
-                    .expect("a position of the scan");
+            let room = (self.moved_room(input.room, &target.name, k, floors.sweep.as_ref()))
+                .expect("a position of the scan");
             self.answer_at(input, &room, index, explain, &floors)
         };
         // A population's member is asked why afterwards, and only where
