@@ -621,7 +621,9 @@ impl Scenario {
     /// For each task of the scenario (by its address), whether it is
     /// charged the work of its person's floor in its room
     /// ([`Base::floor_work`](crate::plugin::Base::floor_work)): the first task of the scenario in that room
-    /// by the same person (or population), whichever runs first and
+    /// by the same person (or population), and for a task that moves
+    /// things about it, the first with its sweep (`Task::sweep`),
+    /// whichever runs first and
     /// whichever answers a watch reuses, so that every task's work is the
     /// same on every run; and whether it is charged its base's getting
     /// ready for its effectors ([`Base::prepare_work`](crate::plugin::Base::prepare_work)): the first task by
@@ -646,8 +648,12 @@ impl Scenario {
         let first = (self.tasks.iter())
             .map(|t| {
                 let person = t.population.is_none().then_some(t.person);
+                // A task bounded by a sweep has a floor of the sweep's own
+                // in the room as declared (`Sweep::named`).
+                let room = &self.rooms[t.room];
+                let sweep = t.task.sweep(room, &t.subject_in(room)).map(|s| s.key);
                 let charges = Charges {
-                    floor: floors.insert((t.room, t.population, person)),
+                    floor: floors.insert((t.room, t.population, person, sweep)),
                     prepare: prepared.insert((t.population, person, t.effectors.clone())),
                 };
                 (std::ptr::from_ref(t) as usize, charges)

@@ -532,6 +532,13 @@ impl AdviseTask {
             None => input.base.fit(room, input.allowance),
         };
         floors.charge(input, room);
+        if input.allowance.exhausted() {
+            // The run stops: nothing more is worked out for this answer.
+            return PositionAnswer {
+                reached: false,
+                verdict: None,
+            };
+        }
         match fit {
             Fit::Nowhere(_) => return not("the base fits nowhere in the room with it there"),
             Fit::Shut(_) => return not("the base cannot get in from a door with it there"),
