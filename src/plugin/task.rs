@@ -187,7 +187,7 @@ pub trait Task: Send + Sync {
     }
     /// Where the task moves things about its room: the bounds of every
     /// arrangement it makes of `room` with `subject`, the room as declared
-    /// among them ([`Sweep`]), for the base's floor in each to be bounded
+    /// among them (`scene::Sweep`), for the base's floor in each to be bounded
     /// by (`Base::fit_in_sweep`; the answers are the same).
     fn sweep(&self, _room: &Room, _subject: &Subject<'_>) -> Option<Sweep> {
         None
