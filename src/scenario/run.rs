@@ -695,23 +695,16 @@ impl Scenario {
         let (base, room) = (&input.person.base.name, &input.room.name);
         // A task that moves things about the room has the room as declared
         // bounded by its sweep, under a name of the sweep's own.
-        let mut fit = match task.task.sweep(input.room, &input.subject) {
-            Some(sweep) => {
-                let declared = sweep.named(input.room.clone());
-                let fit = input.base.fit_in_sweep(&declared, &sweep, &meter);
-                if charges.floor {
-                    meter.charge(input.base.floor_work(&declared));
-                }
-                fit
-            }
-            None => {
-                let fit = input.base.fit(input.room, &meter);
-                if charges.floor {
-                    meter.charge(input.base.floor_work(input.room));
-                }
-                fit
-            }
+        let sweep = task.task.sweep(input.room, &input.subject);
+        let named = sweep.as_ref().map(|s| s.named(input.room.clone()));
+        let fitted = named.as_ref().unwrap_or(input.room);
+        let mut fit = match &sweep {
+            Some(sweep) => input.base.fit_in_sweep(fitted, sweep, &meter),
+            None => input.base.fit(fitted, &meter),
         };
+        if charges.floor {
+            meter.charge(input.base.floor_work(fitted));
+        }
         // A task that moves what its subject carries checks each
         // arrangement of its room itself, unless the base is kept out
         // with the element gone too (the room is the cause, not where the
