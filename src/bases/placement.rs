@@ -650,6 +650,10 @@ pub struct PreparedMobile<'a> {
 
 /// Two sampled placements at one heading closer than this are one.
 const APART_MM: f64 = 40.0;
+/// A heading the base may face, as a turn and in radians, and its
+/// region.
+type Facing<'a> = (Rotation2<f64>, f64, &'a Region);
+
 /// The heights below and above a target's within which samples are first
 /// taken, and how they are widened while fewer than `FEW` are found: up
 /// first (a hand above the target need only come down to it), then down.
@@ -771,17 +775,29 @@ impl PreparedMobile<'_> {
         }
         let approach = self.mobile.placing.approach;
         let face = self.face(target);
+        // The headings that face the target as the approach asks, each
+        // turned once for every sample.
+        let facing: Vec<Facing<'_>> = (self.regions())
+            .filter(|(heading, _)| approach.faces(*heading, face))
+            .map(|(heading, region)| (Rotation2::new(*heading), *heading, &**region))
+            .collect();
         let mut scanned: Vec<BasePose> = Vec::new();
         let mut found: Vec<Candidate> = Vec::new();
         for sample in near {
-            let admitted = approach.admits(&sample.effector_mm, self.half_width_mm);
-            if !admitted || !capability.clear(sample) {
+            if !approach.admits(&sample.effector_mm, self.half_width_mm) {
                 continue;
             }
             // A sample's headings are taken all or none, so that which
             // placements are tried does not depend on which heading comes
-            // first (the room turned by 90 degrees tries the same).
-            let (here_scanned, here_found) = self.sample_at_headings(query, sample, face, &scanned);
+            // first (the room turned by 90 degrees tries the same). A
+            // sample that puts the base nowhere new adds nothing, clear or
+            // not: whether its posture is clear of the body (the costlier
+            // test) is asked only of one that does.
+            let here_scanned = self.sample_at_headings(query, sample, &facing, &scanned);
+            if here_scanned.is_empty() || !capability.clear(sample) {
+                continue;
+            }
+            let here_found = self.clear_of_room(query, sample, &here_scanned);
             if found.len() + here_found.len() > SEEDED
                 || scanned.len() + here_scanned.len() > SCANNED
             {
@@ -796,28 +812,20 @@ impl PreparedMobile<'_> {
         found
     }
 
-    /// The placements of capability sample `sample` at each heading the
-    /// approach and the floor admit, not at a place of `scanned`: those
-    /// looked at, and of them those whose posture is clear of the room.
+    /// The placements of capability sample `sample` at each heading of
+    /// `facing` that the floor admits, not at a place of `scanned`.
     fn sample_at_headings(
         &self,
         query: &ReachQuery<'_>,
         sample: &Sample,
-        face: Option<Vector2<f64>>,
+        facing: &[Facing<'_>],
         scanned: &[BasePose],
-    ) -> (Vec<BasePose>, Vec<Candidate>) {
+    ) -> Vec<BasePose> {
         let target = &query.target_room_mm;
-        let approach = self.mobile.placing.approach;
         let hand = sample.effector_mm.xy();
-        let q = self.capability.q(sample);
-        // The sample's solids, worked out once for every heading.
-        let mut volumes = None;
-        let (mut looked, mut found) = (Vec::new(), Vec::new());
-        for (heading, region) in self.regions() {
-            if !approach.faces(*heading, face) {
-                continue;
-            }
-            let offset = Rotation2::new(*heading) * hand;
+        let mut looked = Vec::new();
+        for (turn, heading, region) in facing {
+            let offset = turn * hand;
             let (x, y) = (target.x - offset.x, target.y - offset.y);
             let pose = self.pose_at(x, y, *heading);
             // The quick count first, the exact test (which would count
@@ -829,19 +837,35 @@ impl PreparedMobile<'_> {
                 continue;
             }
             looked.push(pose);
-            let clear = query.obstacles.is_none() || {
+        }
+        looked
+    }
+
+    /// The placements of `looked` (of capability sample `sample`) whose
+    /// posture is clear of the room, each a candidate started from it.
+    fn clear_of_room(
+        &self,
+        query: &ReachQuery<'_>,
+        sample: &Sample,
+        looked: &[BasePose],
+    ) -> Vec<Candidate> {
+        let q = self.capability.q(sample);
+        // The sample's solids, worked out once for every heading.
+        let mut volumes = None;
+        let mut clear = |pose: BasePose| {
+            query.obstacles.is_none() || {
                 let v = volumes.get_or_insert_with(|| self.chain.volumes(q));
                 let problem = query.problem(self.chain, pose);
                 problem.collision_of_charged(v).is_none()
-            };
-            if clear {
-                found.push(Candidate {
-                    start: Some(q.to_vec()),
-                    ..Candidate::at(pose)
-                });
             }
-        }
-        (looked, found)
+        };
+        (looked.iter().copied())
+            .filter(|&pose| clear(pose))
+            .map(|pose| Candidate {
+                start: Some(q.to_vec()),
+                ..Candidate::at(pose)
+            })
+            .collect()
     }
 
     /// For each heading that faces the target as the approach asks, the
