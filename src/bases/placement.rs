@@ -146,10 +146,10 @@ pub struct Mobile {
     /// The capability maps of the chains it was last prepared for, while
     /// something else holds them ([`Mobile::capability_of`]).
     capabilities: Mutex<Vec<(Chain, Weak<Capability>)>>,
-    /// The bounds of the footprints of the group (a population) it is one
-    /// of, whose routes from the doors it shares
-    /// ([`Base::join_floor_group`]).
-    group: OnceLock<Arc<FloorGroup>>,
+    /// The bounds of the footprints of the groups (of a population) it is
+    /// one of, the widest first, whose routes from the doors it shares
+    /// ([`Base::join_floor_groups`]).
+    groups: OnceLock<Vec<Arc<FloorGroup>>>,
 }
 
 /// How many chains' maps a base remembers it was prepared for.
@@ -199,7 +199,7 @@ impl Mobile {
             floors: ByRoom::default(),
             misfits: ByRoom::default(),
             capabilities: Mutex::default(),
-            group: OnceLock::new(),
+            groups: OnceLock::new(),
         }
     }
 
@@ -290,7 +290,7 @@ impl Mobile {
         let mut h = DefaultHasher::new();
         self.footprint.hash_with_floor(room, &mut h);
         hash_bits(&self.placing.headings, &mut h);
-        if let Some(group) = self.group.get() {
+        for group in self.groups.get().into_iter().flatten() {
             group.hash_into(&mut h);
         }
         hash_zone(self.placing.zone.as_ref(), &mut h);
@@ -328,7 +328,9 @@ impl Mobile {
             headings,
             zone,
         };
-        let group = self.group.get().map(Arc::as_ref);
+        let groups = self.groups.get().map_or(&[][..], Vec::as_slice);
+        // The bounds' floor is the tightest group's.
+        let group = groups.last().map(Arc::as_ref);
         // In a room without doors a member's floor is its own: the bounds'
         // tiles cost more there than they save a population of tens
         // (bench_population's kitchen without its door, 10.4 -> 13.3 s).
@@ -363,7 +365,7 @@ impl Mobile {
         let fits = any_fits(&regions, &mut work)?;
         let routes = if fits {
             let left = |units: u64| work.allows(units);
-            DoorRoutes::of(room, &self.footprint, group, sweep, headings, &left, &memo)
+            DoorRoutes::of(room, &self.footprint, groups, sweep, headings, &left, &memo)
                 .map_err(|cut| work.cut_short_with(cut.work))?
         } else {
             None
@@ -608,8 +610,8 @@ impl Base for Mobile {
         )))
     }
 
-    fn join_floor_group(&self, group: &Arc<FloorGroup>) {
-        let _ = self.group.set(Arc::clone(group));
+    fn join_floor_groups(&self, groups: &[Arc<FloorGroup>]) {
+        let _ = self.groups.set(groups.to_vec());
     }
 
     fn enclosing(&self, room: &Room, heading_rad: f64, hip_mm: (f64, f64)) -> Vec<usize> {

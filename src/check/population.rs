@@ -696,7 +696,11 @@ fn categorised(categories: &[(String, f64)], size: usize, seed: u64) -> Vec<(usi
 /// width), each sharing the routes from a room's doors by its
 /// footprints' bounds, where they are alike enough to be bounded
 /// (`FloorGroup::of`). The tighter the bounds, the fewer places they
-/// leave to a member's own routes.
+/// leave to a member's own routes. A population of more first shares the
+/// bounds of all its members: where those decide (most of a room whose
+/// doors and passages every member's base gets through), their routes
+/// are worked out once for the whole population; where they do not, the
+/// tighter group's decide, as if there were no wider one.
 fn join_floor_group(members: &[Arc<dyn Base>]) {
     let Some(footprints) = members
         .iter()
@@ -714,16 +718,22 @@ fn join_floor_group(members: &[Arc<dyn Base>]) {
             .then(a.cmp(&b))
     });
     let groups = order.len().div_ceil(FLOOR_GROUP).max(1);
+    let everyone = (groups > 1)
+        .then(|| crate::floor::FloorGroup::of(&footprints))
+        .flatten()
+        .map(Arc::new);
     for k in 0..groups {
         // Even shares, in order of size.
         let part = &order[k * order.len() / groups..(k + 1) * order.len() / groups];
         let alike: Vec<&crate::floor::Footprint> = part.iter().map(|&i| footprints[i]).collect();
-        let Some(group) = crate::floor::FloorGroup::of(&alike) else {
+        let tight = crate::floor::FloorGroup::of(&alike).map(Arc::new);
+        let joined: Vec<Arc<crate::floor::FloorGroup>> =
+            everyone.iter().chain(&tight).cloned().collect();
+        if joined.is_empty() {
             continue;
-        };
-        let group = Arc::new(group);
+        }
         for &i in part {
-            members[i].join_floor_group(&group);
+            members[i].join_floor_groups(&joined);
         }
     }
 }

@@ -7,9 +7,11 @@
 //! member), and not reached where it overlaps none the inner bound reaches
 //! (no way is clear for the inner, so none for the member); else, where
 //! the piece runs on, in a window about it, into floor the outer reaches,
-//! reached; else the member's own routes tell, worked out then, once.
-//! What the window and the member's own routes cost is charged with the
-//! tile. Where the room is one of those an element's moves make
+//! reached; else the next, tighter group's bounds tell in the same way
+//! (a member is in a group of the whole population and in one of the
+//! members most alike it), and past the last the member's own routes,
+//! each worked out then, once. What the window, the tighter bounds and
+//! the member's own routes cost is charged with the tile. Where the room is one of those an element's moves make
 //! (`advise`), the outer's routes are those of the sweep's room with the
 //! element over all its moves and the inner's those of the room without
 //! it (`scene::Sweep`), worked out once for every position; a base
@@ -70,22 +72,31 @@ pub struct SharedRoutes {
     headings: Vec<f64>,
     memo: Arc<Memo>,
     own: OnceLock<Arc<Routes>>,
+    /// The member's tighter groups, which tell (in order) where these
+    /// bounds leave a piece undecided, and the sweep they are bounded by.
+    tighter: Vec<Arc<FloorGroup>>,
+    sweep: Option<Sweep>,
+    /// The routes the tighter groups bound, and the member's share of
+    /// their work, worked out once (where there are tighter groups).
+    next: OnceLock<(DoorRoutes, u64)>,
     doors: Vec<Doorway>,
 }
 
 impl DoorRoutes {
-    /// The routes of `footprint` (one of `group`'s members, where it has
-    /// one) in `room`, followed at `headings`; none where the room has no
-    /// door. The bounds are shared where the group has them (or `sweep`
-    /// bounds the room), the room has no meshes (whose copy would cost as
-    /// much as the routes) and the outer bound comes in by every door (a
-    /// member then does too); else the footprint's own. Cut short as [`Routes::of`] is, the bounds
-    /// counted at the member's share of their work. The work to charge
-    /// the member comes with them.
+    /// The routes of `footprint` (a member of each of `groups`, the
+    /// widest first, where it has any) in `room`, followed at `headings`;
+    /// none where the room has no door. The bounds are shared where the
+    /// first group has them (or, without a group, `sweep` bounds the
+    /// room), the room has no meshes (whose copy would cost as much as the
+    /// routes) and the outer bound comes in by every door (a member then
+    /// does too); else the next group's, and past the last the
+    /// footprint's own. Cut short as [`Routes::of`] is, the bounds counted
+    /// at the member's share of their work. The work to charge the member
+    /// comes with them.
     pub fn of(
         room: &Room,
         footprint: &Footprint,
-        group: Option<&FloorGroup>,
+        groups: &[Arc<FloorGroup>],
         sweep: Option<&Sweep>,
         headings: &[f64],
         within: &(dyn Fn(u64) -> bool + Sync),
@@ -104,6 +115,16 @@ impl DoorRoutes {
         // The bounds: the group's footprints (or the base's own, bounded
         // only by the sweep), the outer in the sweep's room with more in
         // it, the inner in the one with less.
+        let (group, tighter) = match groups.split_first() {
+            Some((first, tighter)) => (Some(&**first), tighter),
+            None => (None, groups),
+        };
+        // Where these bounds do not serve, the tighter groups', or past
+        // the last, the footprint's own.
+        let next = |within: &(dyn Fn(u64) -> bool + Sync)| match tighter {
+            [] => own(within),
+            _ => Self::of(room, footprint, tighter, sweep, headings, within, memo),
+        };
         let (outer_fp, inner_fp, members) = match (group, sweep) {
             (Some(g), _) => (&g.outer, &g.inner, g.members),
             (None, Some(_)) => (footprint, footprint, 1),
@@ -121,11 +142,11 @@ impl DoorRoutes {
             None => compute()?,
         };
         let Some((outer, inner)) = bounds else {
-            return own(within);
+            return next(within);
         };
         let through = |d: &Doorway| d.comes_in == Entry::Through;
         if !outer.doors.iter().all(through) {
-            return own(within);
+            return next(within);
         }
         let doors = (room.doors.iter().zip(&outer.doors))
             .map(|(door, bound)| Doorway {
@@ -144,6 +165,9 @@ impl DoorRoutes {
             headings: headings.to_vec(),
             memo: Arc::clone(memo),
             own: OnceLock::new(),
+            tighter: tighter.to_vec(),
+            sweep: sweep.cloned(),
+            next: OnceLock::new(),
             doors,
         };
         Ok(Some((DoorRoutes::Shared(Arc::new(routes)), work)))
@@ -215,8 +239,8 @@ impl SharedRoutes {
     /// (the outer's reached floor overlaps the piece: reached; the
     /// inner's does not: not); else, where the piece runs on (facing the
     /// same way, in a window about it, followed a hair wider as the
-    /// routes are) into floor the outer reaches, reached; else as its own
-    /// routes say.
+    /// routes are) into floor the outer reaches, reached; else as the
+    /// tighter groups' bounds or its own routes say.
     fn piece_reached(
         &self,
         heading_rad: f64,
@@ -228,7 +252,7 @@ impl SharedRoutes {
             ..Decided::default()
         };
         if !self.inner.follows(heading_rad) || !self.outer.follows(heading_rad) {
-            return self.own_reached(heading_rad, piece, 0);
+            return self.own_reached(heading_rad, piece, 0, around);
         }
         if self.outer.reaches_into(heading_rad, piece) == Some(true) {
             return by_bounds(true);
@@ -236,47 +260,74 @@ impl SharedRoutes {
         if self.inner.reaches_into(heading_rad, piece) != Some(true) {
             return by_bounds(false);
         }
-        let mut window_work = 0;
-        if let Some(bounds) = piece.bounding_rect() {
-            let window = Rect::new(
-                bounds.min()
-                    - Coord {
-                        x: WINDOW_MM,
-                        y: WINDOW_MM,
-                    },
-                bounds.max()
-                    + Coord {
-                        x: WINDOW_MM,
-                        y: WINDOW_MM,
-                    },
-            );
-            if let Some((free, units)) = around(window, &self.followed) {
-                window_work = units;
-                let runs_on = free.0.iter().any(|q| {
-                    pieces_overlap(q, piece)
-                        && self.outer.reaches_into(heading_rad, q) == Some(true)
-                });
-                if runs_on {
-                    return Decided {
-                        reached: true,
-                        window_work,
-                        own_work: 0,
-                    };
-                }
+        let found = window_about(piece).and_then(|window| around(window, &self.followed));
+        let window_work = found.as_ref().map_or(0, |(_, units)| *units);
+        if let Some((free, _)) = &found {
+            let runs_on = free.0.iter().any(|q| {
+                pieces_overlap(q, piece) && self.outer.reaches_into(heading_rad, q) == Some(true)
+            });
+            if runs_on {
+                return Decided {
+                    reached: true,
+                    window_work,
+                    own_work: 0,
+                };
             }
         }
-        self.own_reached(heading_rad, piece, window_work)
+        // The tighter bounds look in the same window (the same piece, the
+        // same footprint): it is handed on, its work counted once.
+        let seen = |_: Rect<f64>, _: &Footprint| found.as_ref().map(|(free, _)| (free.clone(), 0));
+        self.own_reached(heading_rad, piece, window_work, &seen)
     }
 
     /// Whether the member's own routes reach into `piece` facing
-    /// `heading_rad`, with their work and the window's.
-    fn own_reached(&self, heading_rad: f64, piece: &Polygon<f64>, window_work: u64) -> Decided {
+    /// `heading_rad` (told by its tighter groups' bounds where it has
+    /// any, with `around`), with their work and the window's.
+    fn own_reached(
+        &self,
+        heading_rad: f64,
+        piece: &Polygon<f64>,
+        window_work: u64,
+        around: &Around<'_>,
+    ) -> Decided {
+        if !self.tighter.is_empty() {
+            let (routes, work) = self.tighter_routes();
+            let decided = routes.piece_reached(heading_rad, piece, around);
+            return Decided {
+                reached: decided.reached,
+                window_work: window_work.saturating_add(decided.window_work),
+                own_work: work.saturating_add(decided.own_work),
+            };
+        }
         let own = self.own();
         Decided {
             reached: own.reaches_into(heading_rad, piece) == Some(true),
             window_work,
             own_work: own.work,
         }
+    }
+
+    /// The routes the member's tighter groups bound (or, where those do
+    /// not serve, its own), and its share of their work (charged as its
+    /// own routes' would be), worked out once.
+    fn tighter_routes(&self) -> &(DoorRoutes, u64) {
+        self.next.get_or_init(|| {
+            let routes = DoorRoutes::of(
+                &self.room,
+                &self.footprint,
+                &self.tighter,
+                self.sweep.as_ref(),
+                &self.headings,
+                &unbounded,
+                &self.memo,
+            );
+            match routes {
+                Ok(Some(routes)) => routes,
+                _ => unreachable!(
+                    "the room has doors, and routes allowed any work are not cut short"
+                ),
+            }
+        })
     }
 
     /// The member's own routes, worked out once.
@@ -297,6 +348,17 @@ impl SharedRoutes {
             }
         })
     }
+}
+
+/// The window about `piece` its floor is followed in: its bounds and
+/// [`WINDOW_MM`] beyond on each side; none for an empty piece.
+fn window_about(piece: &Polygon<f64>) -> Option<Rect<f64>> {
+    let bounds = piece.bounding_rect()?;
+    let beyond = Coord {
+        x: WINDOW_MM,
+        y: WINDOW_MM,
+    };
+    Some(Rect::new(bounds.min() - beyond, bounds.max() + beyond))
 }
 
 #[cfg(test)]
@@ -361,28 +423,37 @@ mod tests {
     }
 
     /// Each member's floor at four headings, cut to its routes: the same
-    /// from the group's bounds as from its own routes, piece for piece;
-    /// where `sweep` bounds the room, from the group's bounds in the
-    /// sweep's rooms, and from its own in them, too. Whether the bounds
-    /// were used for any member.
+    /// from the group's bounds as from its own routes, piece for piece,
+    /// and from the bounds of the whole group and then of the half it is
+    /// in (of at least two members); where `sweep` bounds the
+    /// room, from those bounds in the sweep's rooms, and from its own in
+    /// them, too. Whether the bounds were used for any member.
     fn same_floor(
         room: &Room,
         members: &[Footprint],
         sweep: Option<&Sweep>,
     ) -> Result<bool, TestCaseError> {
         let refs: Vec<&Footprint> = members.iter().collect();
-        let group = FloorGroup::of(&refs).expect("alike chairs");
+        let group = Arc::new(FloorGroup::of(&refs).expect("alike chairs"));
+        // Each half of at least two members.
+        let (n, half) = (refs.len(), refs.len() / 2);
+        let halves = [&refs[..half.max(2)], &refs[n - (n - half).max(2)..]]
+            .map(|part| Arc::new(FloorGroup::of(part).expect("alike chairs")));
         let headings = [0.0, FRAC_PI_2, 2.0 * FRAC_PI_2, 3.0 * FRAC_PI_2];
         let memo = Arc::new(Memo::default());
         let mut shared_any = false;
-        for f in members {
-            let of = |group, sweep| {
-                let routes = DoorRoutes::of(room, f, group, sweep, &headings, &unbounded, &memo);
+        for (k, f) in members.iter().enumerate() {
+            let of = |groups: &[Arc<FloorGroup>], sweep| {
+                let routes = DoorRoutes::of(room, f, groups, sweep, &headings, &unbounded, &memo);
                 routes.expect("unbounded").expect("a door").0
             };
-            let own = Arc::new(of(None, None));
-            let mut bounded = vec![of(Some(&group), sweep)];
-            bounded.extend(sweep.map(|s| of(None, Some(s))));
+            let own = Arc::new(of(&[], None));
+            let tighter = Arc::clone(&halves[usize::from(k >= half)]);
+            let mut bounded = vec![
+                of(&[Arc::clone(&group)], sweep),
+                of(&[Arc::clone(&group), tighter], sweep),
+            ];
+            bounded.extend(sweep.map(|s| of(&[], Some(s))));
             let obstacles = Arc::new(FloorObstacles::new(room, f));
             for shared in bounded {
                 shared_any |= matches!(shared, DoorRoutes::Shared(_));

@@ -341,11 +341,12 @@ pub trait Base: Send + Sync {
     fn unzoned(&self) -> Option<Box<dyn Base>> {
         None
     }
-    /// Join the group (a population's members) whose footprints `group`
-    /// bounds: a base that moves then shares the routes from a room's
-    /// doors with the group's other members, its answers its own
-    /// (`floor/shared_routes.rs`). Nothing for a base that does not move.
-    fn join_floor_group(&self, _group: &std::sync::Arc<crate::floor::FloorGroup>) {}
+    /// Join the groups (of a population's members) whose footprints
+    /// `groups` bound, the widest first: a base that moves then shares
+    /// the routes from a room's doors with each group's other members,
+    /// its answers its own (`floor/shared_routes.rs`). Nothing for a base
+    /// that does not move.
+    fn join_floor_groups(&self, _groups: &[std::sync::Arc<crate::floor::FloorGroup>]) {}
     /// Where the room has doors, the obstacles (boxes, then meshes, by
     /// index) that close in the floor the base, facing `heading_rad` (one
     /// of its headings) with its hip at `hip_mm`, cannot get to from a
