@@ -130,7 +130,7 @@ impl DoorRoutes {
             (None, Some(_)) => (footprint, footprint, 1),
             (None, None) => return own(within),
         };
-        let (more, less) = sweep.map_or((room, room), |s| (&s.swept, &s.without));
+        let (more, less): (&Room, &Room) = sweep.map_or((room, room), |s| (&s.swept, &s.without));
         let n = members.max(1) as u64;
         let share = |units: u64| units.div_ceil(n);
         let shared = |units: u64| within(share(units));

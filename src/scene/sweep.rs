@@ -10,6 +10,7 @@
 
 use std::collections::hash_map::DefaultHasher;
 use std::hash::{Hash, Hasher};
+use std::sync::Arc;
 
 use nalgebra::Vector3;
 
@@ -18,10 +19,11 @@ use super::{hash_bits, BoxObstacle, Room};
 /// The rooms that bound the rooms of an element's moves.
 #[derive(Clone, Debug)]
 pub struct Sweep {
-    /// Each of the element's boxes stretched over all its moves.
-    pub swept: Room,
+    /// Each of the element's boxes stretched over all its moves (shared
+    /// by the copies of the sweep a population's members' routes keep).
+    pub swept: Arc<Room>,
     /// Without the element's boxes.
-    pub without: Room,
+    pub without: Arc<Room>,
     /// Both, hashed (what is worked out from them is kept by it).
     pub key: u64,
 }
@@ -62,8 +64,8 @@ impl Sweep {
         }
         Some(Sweep {
             key: h.finish(),
-            swept,
-            without,
+            swept: Arc::new(swept),
+            without: Arc::new(without),
         })
     }
 
