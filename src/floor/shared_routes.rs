@@ -321,12 +321,7 @@ impl SharedRoutes {
                 &unbounded,
                 &self.memo,
             );
-            match routes {
-                Ok(Some(routes)) => routes,
-                _ => unreachable!(
-                    "the room has doors, and routes allowed any work are not cut short"
-                ),
-            }
+            worked_out(routes)
         })
     }
 
@@ -340,13 +335,17 @@ impl SharedRoutes {
                 &unbounded,
                 &self.memo,
             );
-            match routes {
-                Ok(Some(routes)) => routes,
-                _ => unreachable!(
-                    "the room has doors, and routes allowed any work are not cut short"
-                ),
-            }
+            worked_out(routes)
         })
+    }
+}
+
+/// Routes of a room with doors, allowed any work: there, never cut short
+/// and never none.
+fn worked_out<T>(routes: Result<Option<T>, CutShort>) -> T {
+    match routes {
+        Ok(Some(routes)) => routes,
+        _ => unreachable!("the room has doors, and routes allowed any work are not cut short"),
     }
 }
 
