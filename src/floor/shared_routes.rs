@@ -54,6 +54,10 @@ pub struct Decided {
     pub reached: bool,
     /// The member's floor in a window about the piece.
     pub window_work: u64,
+    /// The member's share of its tighter groups' bounds, where they were
+    /// asked (0 where not): the same for every piece of one member that
+    /// asks them.
+    pub tighter_work: u64,
     /// The member's own routes, where they were asked (0 where not).
     pub own_work: u64,
 }
@@ -144,9 +148,12 @@ impl DoorRoutes {
         let Some((outer, inner)) = bounds else {
             return next(within);
         };
+        let work = share(outer.work.saturating_add(inner.work));
         let through = |d: &Doorway| d.comes_in == Entry::Through;
         if !outer.doors.iter().all(through) {
-            return next(within);
+            // Worked out, though they do not serve: charged all the same.
+            let next = next(within)?;
+            return Ok(next.map(|(routes, units)| (routes, units.saturating_add(work))));
         }
         let doors = (room.doors.iter().zip(&outer.doors))
             .map(|(door, bound)| Doorway {
@@ -154,7 +161,6 @@ impl DoorRoutes {
                 ..bound.clone()
             })
             .collect();
-        let work = share(outer.work.saturating_add(inner.work));
         let routes = SharedRoutes {
             outer,
             inner,
@@ -270,7 +276,7 @@ impl SharedRoutes {
                 return Decided {
                     reached: true,
                     window_work,
-                    own_work: 0,
+                    ..Decided::default()
                 };
             }
         }
@@ -296,13 +302,15 @@ impl SharedRoutes {
             return Decided {
                 reached: decided.reached,
                 window_work: window_work.saturating_add(decided.window_work),
-                own_work: work.saturating_add(decided.own_work),
+                tighter_work: work.saturating_add(decided.tighter_work),
+                own_work: decided.own_work,
             };
         }
         let own = self.own();
         Decided {
             reached: own.reaches_into(heading_rad, piece) == Some(true),
             window_work,
+            tighter_work: 0,
             own_work: own.work,
         }
     }

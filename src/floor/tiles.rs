@@ -55,15 +55,29 @@ struct Tile {
     /// a search is charged it by, once, whether or not the piece was
     /// paid for.
     reaching: (u64, u64),
-    /// What the member's own routes cost, where a piece here asked them
-    /// (0 where none did): charged once to a search, by [`OWN_ROUTES`],
+    /// What the member's tighter groups' bounds and its own routes cost,
+    /// where a piece here asked them (0 where none did): each charged
+    /// once to a search, by [`TIGHTER_ROUTES`] and [`OWN_ROUTES`],
     /// however many tiles asked them.
-    own_routes: u64,
+    asked: Asked,
+}
+
+/// What a tile's pieces asked beyond the widest bounds: the member's
+/// share of its tighter groups' bounds, and its own routes' work (each
+/// the same for every piece of one member that asks it, or 0).
+#[derive(Clone, Copy, Debug, Default)]
+struct Asked {
+    tighter: u64,
+    own: u64,
 }
 
 /// The key a search is charged a member's own routes by
-/// (`Tile::own_routes`): a search is one member's.
+/// (`Tile::asked`): a search is one member's.
 const OWN_ROUTES: u64 = 0x6f77_6e5f_726f_7574;
+
+/// The key a search is charged a member's share of its tighter groups'
+/// bounds by (`Tile::asked`).
+const TIGHTER_ROUTES: u64 = 0x7469_6768_7465_7272;
 
 /// Whether a region is empty, and what finding out cost (every tile its
 /// search looked at, and those tiles' pieces).
@@ -144,25 +158,26 @@ pub fn emptiness_each(regions: &[&Region], work: &mut Work<'_>) -> Result<Vec<bo
 /// The pieces of `region` a base facing `heading_rad` can get to by
 /// `routes` (a piece is reached whole or not at all), and the work of
 /// finding out beyond the floor's: the windows' about its pieces, and the
-/// member's own routes' where any piece asked them
-/// (`DoorRoutes::piece_reached`).
+/// member's tighter groups' bounds' and own routes' where any piece asked
+/// them (`DoorRoutes::piece_reached`).
 fn reached_pieces(
     region: MultiPolygon<f64>,
     routes: &DoorRoutes,
     heading_rad: f64,
     around: &Around<'_>,
-) -> (MultiPolygon<f64>, u64, u64) {
-    let (mut windows, mut own) = (0u64, 0u64);
+) -> (MultiPolygon<f64>, u64, Asked) {
+    let (mut windows, mut asked) = (0u64, Asked::default());
     let mut kept = Vec::with_capacity(region.0.len());
     for piece in region.0 {
         let decided = routes.piece_reached(heading_rad, &piece, around);
         windows = windows.saturating_add(decided.window_work);
-        own = own.max(decided.own_work);
+        asked.tighter = asked.tighter.max(decided.tighter_work);
+        asked.own = asked.own.max(decided.own_work);
         if decided.reached {
             kept.push(piece);
         }
     }
-    (MultiPolygon::new(kept), windows, own)
+    (MultiPolygon::new(kept), windows, asked)
 }
 
 impl Region {
@@ -269,9 +284,9 @@ impl Region {
                 let found = admissible_in(within, &turned, &self.obstacles, &grown, &self.memo);
                 Some((found.free, found.work))
             };
-            let (piece, windows, own_routes) = match &self.routes {
+            let (piece, windows, asked) = match &self.routes {
                 Some((routes, heading_rad)) => reached_pieces(piece, routes, *heading_rad, &around),
-                None => (piece, 0, 0),
+                None => (piece, 0, Asked::default()),
             };
             let inside = Inside::new(piece);
             let corners = geo::CoordsIter::coords_count(inside.region()) as u64;
@@ -288,7 +303,7 @@ impl Region {
                 again: finding.saturating_add(corners),
                 shapes,
                 reaching: (reaching_key, windows),
-                own_routes,
+                asked,
             }
         })
     }
@@ -621,11 +636,14 @@ fn charge(tile: &Tile, fresh: Option<&Fresh<'_>>, work: &mut Work<'_>) -> Result
         Some(fresh) if reaching > 0 && !(fresh.shape)(reaching_key) => 0,
         _ => reaching,
     };
-    let own_routes = match fresh {
-        Some(fresh) if tile.own_routes > 0 && !(fresh.shape)(OWN_ROUTES) => 0,
-        _ => tile.own_routes,
+    // Each once to a search, whichever tile asked it first.
+    let once = |units: u64, key: u64| match fresh {
+        Some(fresh) if units > 0 && !(fresh.shape)(key) => 0,
+        _ => units,
     };
-    let units = units.saturating_add(reaching).saturating_add(own_routes);
+    let asked =
+        once(tile.asked.tighter, TIGHTER_ROUTES).saturating_add(once(tile.asked.own, OWN_ROUTES));
+    let units = units.saturating_add(reaching).saturating_add(asked);
     work.add_piece(tile.key, units)
 }
 
