@@ -11,12 +11,13 @@
 //! (a member is in a group of the whole population and in one of the
 //! members most alike it), and past the last the member's own routes,
 //! each worked out then, once. What the window, the tighter bounds and
-//! the member's own routes cost is charged with the tile. Where the room is one of those an element's moves make
-//! (`advise`), the outer's routes are those of the sweep's room with the
-//! element over all its moves and the inner's those of the room without
-//! it (`scene::Sweep`), worked out once for every position; a base
-//! without a group is bounded so by its own footprint. The answers are
-//! the member's own routes' (this file's property tests compare them).
+//! the member's own routes cost is charged with the tile. Where the room
+//! is one of those an element's moves make (`advise`), the outer's routes
+//! are those of the sweep's room with the element over all its moves and
+//! the inner's those of the room without it (`scene::Sweep`), worked out
+//! once for every position; a base without a group is bounded so by its
+//! own footprint. The answers are the member's own routes' (this file's
+//! property tests compare them).
 
 use std::sync::{Arc, OnceLock};
 

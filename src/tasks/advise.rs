@@ -521,11 +521,14 @@ impl AdviseTask {
             reached: false,
             verdict: Some(verdict.to_string()),
         };
+        // Once the run is past its work it stops: nothing more is worked
+        // out for this answer, which is not kept.
+        let stopped = PositionAnswer {
+            reached: false,
+            verdict: None,
+        };
         if input.allowance.exhausted() {
-            return PositionAnswer {
-                reached: false,
-                verdict: None,
-            };
+            return stopped;
         }
         let fit = match &floors.sweep {
             Some(sweep) => input.base.fit_in_sweep(room, sweep, input.allowance),
@@ -533,11 +536,7 @@ impl AdviseTask {
         };
         floors.charge(input, room);
         if input.allowance.exhausted() {
-            // The run stops: nothing more is worked out for this answer.
-            return PositionAnswer {
-                reached: false,
-                verdict: None,
-            };
+            return stopped;
         }
         match fit {
             Fit::Nowhere(_) => return not("the base fits nowhere in the room with it there"),
