@@ -59,7 +59,7 @@ macro_rules! internal_modules {
 internal_modules! {
     allowance ansur bases builtin cache calibration check collision engine
     error escape excerpt figure floor functional_reach geometry kept kinematics loader
-    meshfile meter names options picture read scenario
+    meshfile meter names once options picture read scenario
     scene solvers source span standards std_modules std_texts stdlib syntax tasks units
     vision
 }

@@ -28,6 +28,7 @@ use super::routes::{needs_mm, pieces_overlap, Doorway, Entry, Routes, HAIR_MM};
 use super::work::{unbounded, CutShort};
 use super::Footprint;
 use crate::kept::Memo;
+use crate::once::get_or_compute;
 use crate::scene::{Room, Sweep};
 
 /// How far beyond a piece of floor the window its floor is followed in
@@ -320,7 +321,7 @@ impl SharedRoutes {
     /// not serve, its own), and its share of their work (charged as its
     /// own routes' would be), worked out once.
     fn tighter_routes(&self) -> &(DoorRoutes, u64) {
-        self.next.get_or_init(|| {
+        get_or_compute(&self.next, || {
             let routes = DoorRoutes::of(
                 &self.room,
                 &self.footprint,
@@ -336,7 +337,7 @@ impl SharedRoutes {
 
     /// The member's own routes, worked out once.
     fn own(&self) -> &Arc<Routes> {
-        self.own.get_or_init(|| {
+        get_or_compute(&self.own, || {
             let routes = Routes::of(
                 &self.room,
                 &self.footprint,

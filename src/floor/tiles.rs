@@ -23,6 +23,7 @@ use super::work::{unbounded, CutShort, Looked, Work};
 use super::{DoorRoutes, Footprint, Inside};
 use crate::allowance::Allowance;
 use crate::kept::Memo;
+use crate::once::get_or_compute;
 use crate::scene::Room;
 
 /// The side of a tile, for rooms up to `MAX_TILES` of them.
@@ -262,7 +263,7 @@ impl Region {
 
     /// Tile `(i, j)`'s piece of the region, and its work.
     fn tile(&self, i: usize, j: usize) -> &Tile {
-        self.tiles[j * self.nx + i].get_or_init(|| {
+        get_or_compute(&self.tiles[j * self.nx + i], || {
             let piece = self
                 .tile_rect(i, j)
                 .map(|r| admissible_in(r, &self.turned, &self.obstacles, &self.grown, &self.memo));
