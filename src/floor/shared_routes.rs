@@ -260,7 +260,7 @@ impl SharedRoutes {
             ..Decided::default()
         };
         if !self.inner.follows(heading_rad) || !self.outer.follows(heading_rad) {
-            return self.own_reached(heading_rad, piece, 0, around);
+            return self.reached_past_bounds(heading_rad, piece, 0, around);
         }
         if self.outer.reaches_into(heading_rad, piece) == Some(true) {
             return by_bounds(true);
@@ -285,13 +285,14 @@ impl SharedRoutes {
         // The tighter bounds look in the same window (the same piece, the
         // same footprint): it is handed on, its work counted once.
         let seen = |_: Rect<f64>, _: &Footprint| found.as_ref().map(|(free, _)| (free.clone(), 0));
-        self.own_reached(heading_rad, piece, window_work, &seen)
+        self.reached_past_bounds(heading_rad, piece, window_work, &seen)
     }
 
-    /// Whether the member's own routes reach into `piece` facing
-    /// `heading_rad` (told by its tighter groups' bounds where it has
-    /// any, with `around`), with their work and the window's.
-    fn own_reached(
+    /// Whether `piece` facing `heading_rad` is reached where these
+    /// bounds leave it open: by the member's tighter groups' bounds where
+    /// it has any (looking with `around`), and past them by its own
+    /// routes; with their work and the window's.
+    fn reached_past_bounds(
         &self,
         heading_rad: f64,
         piece: &Polygon<f64>,
