@@ -1,7 +1,10 @@
 //! Advice (`advise`): the bracketed scan answers as a full scan of every
 //! position does (as many people reach each position), in a kitchen with
 //! a door, manual wheelchair users reaching with either hand; a person's advice is where
-//! their own reach answers yes; expectations on advice are judged; bad
+//! their own reach answers yes, and over random kitchens it counts the
+//! people a population's reach of each position counts (the advice's
+//! search passes over placements proved out of reach, the reach's does
+//! not); expectations on advice are judged; bad
 //! advice options are diagnostics at the option.
 
 use reach::report::{AdviceReport, Report, TaskReport};
@@ -332,4 +335,55 @@ advise jar by bob { carries shelf along x from 100mm to 400mm step 150mm }
         "{:?}",
         report.tasks[0].answer()
     );
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig {
+        cases: 10,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(61),
+        ..proptest::prelude::ProptestConfig::default()
+    })]
+
+    /// An advice asks at each position whether people reach, without why,
+    /// and its search passes over placements a proof puts out of reach;
+    /// a population's reach asks each member why, and searches them all.
+    /// Both must count the same people at a point of a random kitchen.
+    #[test]
+    fn an_advice_counts_the_people_a_reach_of_each_position_counts(
+        x_mm in 100.0..3400.0f64,
+        y_mm in 100.0..2900.0f64,
+        z_mm in 950.0..1750.0f64,
+        seed in 0u64..1000,
+    ) {
+        let (x_mm, y_mm, z_mm) = (x_mm.round(), y_mm.round(), z_mm.round());
+        let above_mm = z_mm + 150.0;
+        let room = format!(
+            "units mm deg
+use std::populations
+limits {{ solver_work 2e9 }}
+room kitchen {{
+  size 3600 x 3000 x 2500
+  door entrance at (3600, 1500) width 900mm
+  box counter at (0, 0, 0) size (600, 2400, 900)
+  box island at (1500, 900, 0) size (900, 1000, 900)
+  target low at ({x_mm}, {y_mm}, {z_mm})
+  target high at ({x_mm}, {y_mm}, {above_mm})
+}}
+population users = manual_wheelchair_users {{ size 3 seed {seed} }}
+"
+        );
+        let advice = format!(
+            "{room}advise low by users {{ along z from {z_mm}mm to {above_mm}mm step 150mm scan full }}\n"
+        );
+        let (_, advised) = run(&advice);
+        let (_, reached) = run(&format!("{room}reach low, high by users\n"));
+        let counts: Vec<usize> = (reached.tasks.iter())
+            .map(|t| match t {
+                TaskReport::Population(p) => p.accommodated,
+                other => panic!("not a population's reach: {other:?}"),
+            })
+            .collect();
+        let points: Vec<usize> = advices(&advised)[0].points.iter().map(|p| p.reached).collect();
+        proptest::prop_assert_eq!(points, counts, "at ({}, {}, {}) and 150 mm above", x_mm, y_mm, z_mm);
+    }
 }

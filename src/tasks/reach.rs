@@ -5,6 +5,7 @@ use super::gaze::refuses_look_link;
 use super::hand::{self, hands_of, Hand};
 use super::walk_in::reach_walking_in;
 use super::why::{Failed, Found};
+use crate::engine::KeptProofs;
 use crate::error::ErrorKind;
 use crate::kinematics::{Body, Chain};
 use crate::plugin::{
@@ -94,7 +95,9 @@ impl ReachTask {
     /// The reach of `input`'s target, with either hand as configured;
     /// where it fails, why only if `explain` (finding why searches again
     /// without the room, the body and the limits: the most costly part of
-    /// a failed reach).
+    /// a failed reach). Without `explain`, only whether it reaches is to
+    /// be read: a failed report's closest placement may be another than
+    /// the one an explained reach keeps (`reach_with`).
     pub(super) fn reach(&self, input: &TaskInput<'_>, explain: bool) -> ReachReport {
         let Subject::Target(target) = input.subject else {
             unreachable!("the checker gives a reach a target")
@@ -206,8 +209,15 @@ impl ReachTask {
             Search::MostComfortable
         };
         let own = input.base.own_body();
+        // Asked for whether it reaches alone (not why), the search passes
+        // over the placements a proof puts out of reach: their descents
+        // could not reach, so whether any placement does is the same, but
+        // the closest of a failed search may be another, so a reach that
+        // is explained searches them all.
+        let proofs = (!explain).then(|| KeptProofs::new(&chain, own, input.allowance));
         let query = ReachQuery {
             solves: (input.solves).map(|s| s.of(&chain, obstacles, own)),
+            proofs: proofs.as_ref(),
             ..reaching.query(
                 target.position_mm,
                 seed,
