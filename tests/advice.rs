@@ -11,19 +11,23 @@ use reach::report::{AdviceReport, Report, TaskReport};
 
 use crate::body::run;
 
+/// The start of the kitchen of `examples/advice.reach`: its size, door
+/// and counter (the room's block left open).
+const KITCHEN: &str = "units mm deg
+use std::people
+use std::populations
+limits { solver_work 2e9 }
+room kitchen {
+  size 3600 x 3000 x 2500
+  door entrance at (3600, 1500) width 900mm
+  box counter at (0, 0, 0) size (600, 2400, 900)
+";
+
 /// The kitchen of `examples/advice.reach`, its microwave advised by
 /// `who` with `options`.
 fn kitchen(people: &str, who: &str, options: &str) -> String {
     format!(
-        "units mm deg
-use std::people
-use std::populations
-limits {{ solver_work 2e9 }}
-room kitchen {{
-  size 3600 x 3000 x 2500
-  door entrance at (3600, 1500) width 900mm
-  box counter at (0, 0, 0) size (600, 2400, 900)
-  box microwave       at (0, 2500, 1000) size (400, 500, 300)
+        "{KITCHEN}  box microwave       at (0, 2500, 1000) size (400, 500, 300)
   box microwave_shelf at (0, 2500, 980)  size (450, 500, 20)
   target microwave_handle at (420, 2950, 1150)
 }}
@@ -358,14 +362,7 @@ proptest::proptest! {
         let (x_mm, y_mm, z_mm) = (x_mm.round(), y_mm.round(), z_mm.round());
         let above_mm = z_mm + 150.0;
         let room = format!(
-            "units mm deg
-use std::populations
-limits {{ solver_work 2e9 }}
-room kitchen {{
-  size 3600 x 3000 x 2500
-  door entrance at (3600, 1500) width 900mm
-  box counter at (0, 0, 0) size (600, 2400, 900)
-  box island at (1500, 900, 0) size (900, 1000, 900)
+            "{KITCHEN}  box island at (1500, 900, 0) size (900, 1000, 900)
   target low at ({x_mm}, {y_mm}, {z_mm})
   target high at ({x_mm}, {y_mm}, {above_mm})
 }}
