@@ -7,6 +7,7 @@
 //! not); expectations on advice are judged; bad
 //! advice options are diagnostics at the option.
 
+use proptest::prelude::*;
 use reach::report::{AdviceReport, Report, TaskReport};
 
 use crate::body::run;
@@ -341,11 +342,11 @@ advise jar by bob { carries shelf along x from 100mm to 400mm step 150mm }
     );
 }
 
-proptest::proptest! {
-    #![proptest_config(proptest::prelude::ProptestConfig {
+proptest! {
+    #![proptest_config(ProptestConfig {
         cases: 10,
         rng_seed: proptest::test_runner::RngSeed::Fixed(61),
-        ..proptest::prelude::ProptestConfig::default()
+        ..ProptestConfig::default()
     })]
 
     /// An advice asks at each position whether people reach, without why,
@@ -381,6 +382,6 @@ population users = manual_wheelchair_users {{ size 3 seed {seed} }}
             })
             .collect();
         let points: Vec<usize> = advices(&advised)[0].points.iter().map(|p| p.reached).collect();
-        proptest::prop_assert_eq!(points, counts, "at ({}, {}, {}) and 150 mm above", x_mm, y_mm, z_mm);
+        prop_assert_eq!(points, counts, "at ({}, {}, {}) and 150 mm above", x_mm, y_mm, z_mm);
     }
 }
